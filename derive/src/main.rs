@@ -1,94 +1,69 @@
-use thinjkr_derive::{ansatz, model::Derivation, sym::plain};
-fn main() {
-    let t = std::time::Instant::now();
-    for a in ansatz::ALL {
-        let d = match Derivation::new(a) {
-            Ok(d) => d,
-            Err(e) => {
-                println!("{}: ERROR {e}", a.id);
-                continue;
+//! `thinjkr-derive`: `check [--json]` holds the paper's printed claims
+//! against the derivation; `generate` writes the generated Rust code and the
+//! reports in `docs/`.
+
+use std::process::ExitCode;
+use thinjkr_derive::{ansatz, claims, model::Derivation};
+
+fn usage() -> ExitCode {
+    eprintln!("usage: thinjkr-derive check [--json] | generate");
+    ExitCode::from(2)
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("check") => {
+            let json = args.iter().any(|a| a == "--json");
+            let d = match Derivation::new(&ansatz::PAPER) {
+                Ok(d) => d,
+                Err(e) => {
+                    eprintln!("derivation failed: {e}");
+                    return ExitCode::FAILURE;
+                }
+            };
+            let results = match claims::check_all(&d) {
+                Ok(r) => r,
+                Err(e) => {
+                    eprintln!("check failed: {e}");
+                    return ExitCode::FAILURE;
+                }
+            };
+            if json {
+                println!("{}", serde_json::to_string_pretty(&results).expect("serialisable"));
+            } else {
+                println!("{:<14} {:<10} {:<8} note", "id", "verdict", "method");
+                for r in &results {
+                    println!("{:<14} {:<10} {:<8} {}", r.id, r.verdict.as_str(), format!("{:?}", r.method).to_lowercase(), r.note);
+                }
             }
-        };
-        println!("== {} ({:?})", a.id, t.elapsed());
-        for l in &d.laplace {
-            println!("(6) {:?}: {}", l.monomial, plain(&l.residual));
+            ExitCode::SUCCESS
         }
-        println!("(8) {}", plain(&d.force));
-        println!("(9) {}", plain(&d.normal_derivative.value()));
-        for (n, v) in &d.collocation {
-            println!("(10) {n} = {}", plain(v));
-        }
-        println!("(11) {}", plain(&d.normal_derivative_collocated.value()));
-        println!(
-            "crit {:?}",
-            d.extrema
-                .critical_points
-                .iter()
-                .map(plain)
-                .collect::<Vec<_>>()
-        );
-        println!(
-            "umax {} umin {}",
-            plain(&d.extrema.u_max),
-            plain(&d.extrema.u_min)
-        );
-        println!("eta {}", plain(&d.eta));
-        println!("(14) {}", plain(&d.bc_error));
-        println!("(13) xi = {}", plain(&d.xi_adhesion));
-        println!("p0 = {}", plain(&d.p0_explicit));
-        for x in &d.xi {
-            println!("(15) {}", plain(x));
-        }
-        for r in &d.residuals {
-            println!("(19/20) {}", plain(r));
-        }
-        println!("(18) {}", plain(&d.fbar_reduced));
-        if let Some(b) = &d.branch {
-            println!(
-                "branch X {}\n  Y {}",
-                plain(&b.abar_cubed),
-                plain(&b.dbar_abar)
-            );
-        }
-        let l = match &d.limits {
-            Ok(l) => l,
-            Err(e) => {
-                println!("limits: {e}");
-                continue;
+        Some("generate") => {
+            let t = std::time::Instant::now();
+            let outputs = match thinjkr_derive::generate::outputs() {
+                Ok(o) => o,
+                Err(e) => {
+                    eprintln!("generation failed: {e}");
+                    return ExitCode::FAILURE;
+                }
+            };
+            let root = thinjkr_derive::generate::workspace_root();
+            match thinjkr_derive::generate::write_all(&root, &outputs) {
+                Ok(changed) => {
+                    for o in &outputs {
+                        let mark = if changed.contains(&o.path) { "updated" } else { "unchanged" };
+                        println!("{mark:>9} {}", o.path.display());
+                    }
+                    eprintln!("generated {} files in {:.3} s", outputs.len(), t.elapsed().as_secs_f64());
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("could not write: {e}");
+                    ExitCode::FAILURE
+                }
             }
-        };
-        println!(
-            "axi eta1 {} dbar {} fbar {} crit {} {} {}",
-            plain(&l.axisymmetric.eta_at_1),
-            plain(&l.axisymmetric.dbar),
-            plain(&l.axisymmetric.fbar),
-            plain(&l.axisymmetric.critical.0),
-            plain(&l.axisymmetric.critical.1),
-            plain(&l.axisymmetric.critical.2)
-        );
-        println!(
-            "(22) {}  (23) {}",
-            plain(&l.axisymmetric.delta),
-            plain(&l.axisymmetric.force)
-        );
-        println!(
-            "zf dbar {} a3 {} rho {}",
-            plain(&l.zero_force.dbar),
-            plain(&l.zero_force.abar_cubed),
-            plain(&l.zero_force.rho)
-        );
-        println!("nonadh rho {}", plain(&l.non_adhesive_rho));
-        println!(
-            "nc exact delta {} a2 {}",
-            plain(&l.near_circular_exact.delta),
-            plain(&l.near_circular_exact.a2)
-        );
-        println!(
-            "nc model s1 {} etap {} xi0 {}",
-            plain(&l.near_circular_model.s1),
-            plain(&l.near_circular_model.eta_prime_1),
-            plain(&l.near_circular_model.xi0)
-        );
+        }
+        _ => usage(),
     }
-    println!("total {:?}", t.elapsed());
 }

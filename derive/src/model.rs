@@ -139,11 +139,7 @@ impl Derivation {
         nondimensional::check_dimensionless(&fbar, "the force")?;
         let fbar_reduced = simplify(&subs(&fbar, "xi", &xi[0]));
         let branch = nondimensional::branch(&residuals);
-        let rho_from_xi = if xi.len() == 3 {
-            solve_linear(&(&xi[1] - &xi[2]), "rho")
-        } else {
-            None
-        };
+        let rho_from_xi = rho_eliminating_abar(&xi);
         // Step 5: limits.
         let limits = Limits::new(&eta, &residuals, &xi[0], &fbar, &fbar_reduced);
         Ok(Derivation {
@@ -170,6 +166,17 @@ impl Derivation {
             limits,
         })
     }
+}
+
+/// The Appendix's display before (38): (15)₂ and (15)₃ with a common ξ,
+/// ā³ eliminated, solved for ρ.
+fn rho_eliminating_abar(xi: &[Atom]) -> Option<Atom> {
+    if xi.len() != 3 {
+        return None;
+    }
+    let x = limits::solve_abar_cubed(&(ex("xi") - &xi[1]))?;
+    let e3 = simplify(&subs(&(ex("xi") - &xi[2]), "abar", &ex("XX^(1/3)")));
+    solve_linear(&subs(&e3, "XX", &x), "rho")
 }
 
 fn trace(step: &str) {

@@ -378,15 +378,7 @@ pub fn thaw(e: &Atom, table: &[(String, Atom)]) -> Atom {
 /// agrees with a rational of denominator at most 1000 to 1e-15 is returned
 /// exactly, any other as a 30-digit float.
 pub fn value_at(e: &Atom, name: &str, point: i64) -> Result<Atom, String> {
-    let exact = simplify(&normalize_radicals(&simplify(&subs(
-        e,
-        name,
-        &Atom::num(point),
-    ))));
-    if eval_prec(&exact, &[], 40)
-        .map(f64::is_finite)
-        .unwrap_or(false)
-    {
+    if let Some(exact) = exact_value_at(e, name, point) {
         return Ok(exact);
     }
     let h = ex("10^-30");
@@ -397,15 +389,7 @@ pub fn value_at(e: &Atom, name: &str, point: i64) -> Result<Atom, String> {
 /// d e/d name at `name = point` by a central difference (step 1e-30, 120
 /// digits) of [`value_at`]-style one-sided values; rounded as in [`value_at`].
 pub fn derivative_at(e: &Atom, name: &str, point: i64) -> Result<Atom, String> {
-    let exact = simplify(&normalize_radicals(&simplify(&subs(
-        &diff(e, name),
-        name,
-        &Atom::num(point),
-    ))));
-    if eval_prec(&exact, &[], 40)
-        .map(f64::is_finite)
-        .unwrap_or(false)
-    {
+    if let Some(exact) = exact_value_at(&diff(e, name), name, point) {
         return Ok(exact);
     }
     let at = |k: i64| {
@@ -420,6 +404,17 @@ pub fn derivative_at(e: &Atom, name: &str, point: i64) -> Result<Atom, String> {
     let d1 = (p1 - m1) / 2e-30;
     let d2 = (p2 - m2) / 4e-30;
     numeric_limit(d1, d2)
+}
+
+/// The exact value at a point, unless the denominator vanishes there.
+fn exact_value_at(e: &Atom, name: &str, point: i64) -> Option<Atom> {
+    let (_, den) = num_den(e);
+    let d = eval_prec(&den, &[(name, Atom::num(point))], 40).ok()?;
+    if d.abs() < 1e-30 {
+        return None;
+    }
+    let exact = simplify(&normalize_radicals(&simplify(&subs(e, name, &Atom::num(point)))));
+    eval_prec(&exact, &[], 40).ok().filter(|v| v.is_finite()).map(|_| exact)
 }
 
 fn numeric_limit(lo: f64, hi: f64) -> Result<Atom, String> {

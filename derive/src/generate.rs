@@ -1,0 +1,55 @@
+//! Everything the derivation writes into the repository, produced in memory
+//! by one function so that the `generate` command and the freshness test
+//! (rust-analyzer's `ensure_file_contents` pattern) share it.
+//!
+//! Owns: the list of generated files. May use: every other module.
+
+use crate::{ansatz, claims, model::Derivation, report};
+use std::path::{Path, PathBuf};
+
+/// One generated file: path relative to the workspace root, and contents.
+pub struct Output {
+    /// Path relative to the workspace root.
+    pub path: PathBuf,
+    /// Full contents.
+    pub contents: String,
+}
+
+/// Derive every ansatz, check the paper's claims, and render every file.
+pub fn outputs() -> Result<Vec<Output>, String> {
+    let paper = Derivation::new(&ansatz::PAPER)?;
+    let others = ansatz::ALL
+        .iter()
+        .filter(|a| a.id != ansatz::PAPER.id)
+        .map(Derivation::new)
+        .collect::<Result<Vec<_>, _>>()?;
+    let results = claims::check_all(&paper)?;
+    let mut out = vec![
+        Output { path: "docs/derivation.md".into(), contents: report::derivation_md(&paper, &others, &results) },
+        Output { path: "docs/errata.md".into(), contents: report::errata_md(&results) },
+    ];
+    let all: Vec<&Derivation> = std::iter::once(&paper).chain(others.iter()).collect();
+    out.extend(crate::codegen::outputs(&all)?);
+    Ok(out)
+}
+
+/// The workspace root (the parent of this crate's directory).
+pub fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("derive/ has a parent").to_path_buf()
+}
+
+/// Write every output under `root`; returns the paths that changed.
+pub fn write_all(root: &Path, outputs: &[Output]) -> std::io::Result<Vec<PathBuf>> {
+    let mut changed = Vec::new();
+    for o in outputs {
+        let p = root.join(&o.path);
+        if std::fs::read_to_string(&p).ok().as_deref() != Some(o.contents.as_str()) {
+            if let Some(dir) = p.parent() {
+                std::fs::create_dir_all(dir)?;
+            }
+            std::fs::write(&p, &o.contents)?;
+            changed.push(o.path.clone());
+        }
+    }
+    Ok(changed)
+}
