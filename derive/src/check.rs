@@ -79,7 +79,10 @@ fn domain(name: &str) -> (f64, f64) {
 struct Lcg(u64);
 impl Lcg {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((self.0 >> 11) as f64) / ((1u64 << 53) as f64)
     }
 }
@@ -129,7 +132,11 @@ pub fn compare(printed: &Atom, derived: &Atom, seed: u64) -> Comparison {
                 let scale = vp.abs().max(vd.abs()).max(1e-300);
                 let rel = (vp - vd).abs() / scale;
                 if sample.is_none() || rel > max_rel {
-                    let desc = point.iter().map(|(n, v)| format!("{n}={v}")).collect::<Vec<_>>().join(", ");
+                    let desc = point
+                        .iter()
+                        .map(|(n, v)| format!("{n}={v}"))
+                        .collect::<Vec<_>>()
+                        .join(", ");
                     sample = Some((desc, vp, vd));
                 }
                 max_rel = max_rel.max(rel);
@@ -144,7 +151,16 @@ pub fn compare(printed: &Atom, derived: &Atom, seed: u64) -> Comparison {
     } else {
         Verdict::Differs
     };
-    Comparison { verdict, method: if exact { Method::Exact } else { Method::Numeric }, max_rel_diff: max_rel, sample }
+    Comparison {
+        verdict,
+        method: if exact {
+            Method::Exact
+        } else {
+            Method::Numeric
+        },
+        max_rel_diff: max_rel,
+        sample,
+    }
 }
 
 /// A numeric statement "x ≈ printed" with the printed number of decimals:

@@ -44,7 +44,9 @@ fn mapped(printed: &str) -> Atom {
 }
 
 fn seed(id: &str) -> u64 {
-    id.bytes().fold(1469598103934665603u64, |h, b| (h ^ b as u64).wrapping_mul(1099511628211))
+    id.bytes().fold(1469598103934665603u64, |h, b| {
+        (h ^ b as u64).wrapping_mul(1099511628211)
+    })
 }
 
 fn describe(c: &Comparison) -> String {
@@ -116,12 +118,23 @@ fn expr_claim(
     }
 }
 
-fn numeric_claim(id: &str, source: &str, printed: &str, holds: bool, derived: String, note: String) -> ClaimResult {
+fn numeric_claim(
+    id: &str,
+    source: &str,
+    printed: &str,
+    holds: bool,
+    derived: String,
+    note: String,
+) -> ClaimResult {
     let note = format!("derived: {derived}; {note}");
     ClaimResult {
         id: id.into(),
         source: source.into(),
-        verdict: if holds { Verdict::Holds } else { Verdict::Differs },
+        verdict: if holds {
+            Verdict::Holds
+        } else {
+            Verdict::Differs
+        },
         method: Method::Solve,
         printed: printed.into(),
         derived,
@@ -143,62 +156,309 @@ fn failed(id: &str, source: &str, printed: &str, why: String) -> ClaimResult {
 
 /// The IDs the checker must cover, in the order of the paper.
 pub const REQUIRED_IDS: &[&str] = &[
-    "6.1", "6.2", "6.3", "8", "9", "10", "11", "13", "15.1", "15.2", "15.3", "18", "19", "20", "22", "23", "25.1",
-    "25.2", "26", "27", "28", "29", "30", "36", "37", "38", "39", "sec4.Fc", "sec4.ac", "sec4.dc", "sec6.p0",
-    "sec6.p", "sec6.error", "fig2.bound", "fig7.pulloff", "fig7.heavy", "appendix.36",
+    "6.1",
+    "6.2",
+    "6.3",
+    "8",
+    "9",
+    "10",
+    "11",
+    "13",
+    "15.1",
+    "15.2",
+    "15.3",
+    "18",
+    "19",
+    "20",
+    "22",
+    "23",
+    "25.1",
+    "25.2",
+    "26",
+    "27",
+    "28",
+    "29",
+    "30",
+    "36",
+    "37",
+    "38",
+    "39",
+    "sec4.Fc",
+    "sec4.ac",
+    "sec4.dc",
+    "sec6.p0",
+    "sec6.p",
+    "sec6.error",
+    "fig2.bound",
+    "fig7.pulloff",
+    "fig7.heavy",
+    "appendix.36",
 ];
 
 /// Check every claim against the derivation of the paper's ansatz.
 pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
-    let l = d.limits.as_ref().map_err(|e| format!("limits of the paper's ansatz failed: {e}"))?;
+    let l = d
+        .limits
+        .as_ref()
+        .map_err(|e| format!("limits of the paper's ansatz failed: {e}"))?;
     let mut out = Vec::new();
     let lap = |k: usize| d.laplace[k].residual.clone();
     let with_eta = |e: &Atom| simplify(&subs(e, "eta", &d.eta));
     let dim = |e: &Atom| subs(e, "L", &ex("(g*R1/m)^(1/3)"));
     let u_rules = [("sint", ex("u^(1/2)")), ("cost", ex("(1-u)^(1/2)"))];
 
-    out.push(expr_claim("6.1", "Eq. (6), line 1", "1/a^2 + 1/b^2 + A + B - m*delta/(2*p0)", &[], &lap(0), Some("delta"), "derived: coefficient of 1 in Δp − m(φ − δ)"));
-    out.push(expr_claim("6.2", "Eq. (6), line 2", "A/b^2 + 6*A/a^2 + B/a^2 - m/(4*p0*R1)", &[], &lap(1), Some("m"), "derived: coefficient of x²"));
-    out.push(expr_claim("6.3", "Eq. (6), line 3", "A/b^2 + 6*B/b^2 + B/a^2 - m/(4*p0*R2)", &[], &lap(2), Some("m"), "derived: coefficient of y²"));
-    out.push(expr_claim("8", "Eq. (8)", "pi*a*b*p0/12*(6 - A*a^2 - B*b^2)", &[], &d.force, None, &second_route_force(d)));
-    out.push(expr_claim("9", "Eq. (9)", "2*p0/(a*b)*(a^2*sint^2 + b^2*cost^2)^(1/2)*(A*a^2*cost^2 + B*b^2*sint^2 - 1)", &u_rules, &d.normal_derivative.value(), None, "sin²t written u; derived as −∇p·∇E/|∇E| on x = a cos t, y = b sin t"));
+    out.push(expr_claim(
+        "6.1",
+        "Eq. (6), line 1",
+        "1/a^2 + 1/b^2 + A + B - m*delta/(2*p0)",
+        &[],
+        &lap(0),
+        Some("delta"),
+        "derived: coefficient of 1 in Δp − m(φ − δ)",
+    ));
+    out.push(expr_claim(
+        "6.2",
+        "Eq. (6), line 2",
+        "A/b^2 + 6*A/a^2 + B/a^2 - m/(4*p0*R1)",
+        &[],
+        &lap(1),
+        Some("m"),
+        "derived: coefficient of x²",
+    ));
+    out.push(expr_claim(
+        "6.3",
+        "Eq. (6), line 3",
+        "A/b^2 + 6*B/b^2 + B/a^2 - m/(4*p0*R2)",
+        &[],
+        &lap(2),
+        Some("m"),
+        "derived: coefficient of y²",
+    ));
+    out.push(expr_claim(
+        "8",
+        "Eq. (8)",
+        "pi*a*b*p0/12*(6 - A*a^2 - B*b^2)",
+        &[],
+        &d.force,
+        None,
+        &second_route_force(d),
+    ));
+    out.push(expr_claim(
+        "9",
+        "Eq. (9)",
+        "2*p0/(a*b)*(a^2*sint^2 + b^2*cost^2)^(1/2)*(A*a^2*cost^2 + B*b^2*sint^2 - 1)",
+        &u_rules,
+        &d.normal_derivative.value(),
+        None,
+        "sin²t written u; derived as −∇p·∇E/|∇E| on x = a cos t, y = b sin t",
+    ));
     out.push(claim_10(d));
-    out.push(expr_claim("11", "Eq. (11)", "2*p0/(s*a*xi)*(sint^2 + s^2*cost^2)^(1/2)*(cost^2 + s*sint^2)", &u_rules, &d.normal_derivative_collocated.value(), None, ""));
-    let crit = d.extrema.critical_points.iter().map(plain).collect::<Vec<_>>().join(", ");
+    out.push(expr_claim(
+        "11",
+        "Eq. (11)",
+        "2*p0/(s*a*xi)*(sint^2 + s^2*cost^2)^(1/2)*(cost^2 + s*sint^2)",
+        &u_rules,
+        &d.normal_derivative_collocated.value(),
+        None,
+        "",
+    ));
+    let crit = d
+        .extrema
+        .critical_points
+        .iter()
+        .map(plain)
+        .collect::<Vec<_>>()
+        .join(", ");
     out.push(expr_claim("13", "Eq. (13)", "4*p0/(3^(3/2)*a*(2*m*dg)^(1/2))*(s^2 + s + 1)^(3/2)/(s*(s + 1))", &[], &d.xi_adhesion, None, &format!("maximum of (11) at sin²t = {} (the only interior root of d(∂p/∂ν)²/du); minimum at sin²t = {}, i.e. at the apexes", crit, plain(&d.extrema.u_min))));
-    out.push(expr_claim("15.1", "Eq. (15), line 1", "1/(2*(s^2 + 1))*(eta*s^2*dbar*abar - s - s^2)", &[], &d.xi[0], None, ""));
-    out.push(expr_claim("15.2", "Eq. (15), line 2", "(eta*s^2*abar^3 - 2*(6*s^2 + s + 1))/(4*(3*s^2 + 1))", &[], &d.xi[1], None, ""));
-    out.push(expr_claim("15.3", "Eq. (15), line 3", "(eta*s^4*abar^3 - 2*rho*s*(s^2 + s + 6))/(4*rho*(s^2 + 3))", &[], &d.xi[2], None, ""));
-    out.push(expr_claim("16", "Eq. (16)", "2*(s^2 + s + 1)^(3/2)/(3^(3/2)*s*(s + 1))", &[], &d.eta, None, "derived: η = max ∂p/∂ν / its apex value; (14) = η − 1"));
+    out.push(expr_claim(
+        "15.1",
+        "Eq. (15), line 1",
+        "1/(2*(s^2 + 1))*(eta*s^2*dbar*abar - s - s^2)",
+        &[],
+        &d.xi[0],
+        None,
+        "",
+    ));
+    out.push(expr_claim(
+        "15.2",
+        "Eq. (15), line 2",
+        "(eta*s^2*abar^3 - 2*(6*s^2 + s + 1))/(4*(3*s^2 + 1))",
+        &[],
+        &d.xi[1],
+        None,
+        "",
+    ));
+    out.push(expr_claim(
+        "15.3",
+        "Eq. (15), line 3",
+        "(eta*s^4*abar^3 - 2*rho*s*(s^2 + s + 6))/(4*rho*(s^2 + 3))",
+        &[],
+        &d.xi[2],
+        None,
+        "",
+    ));
+    out.push(expr_claim(
+        "16",
+        "Eq. (16)",
+        "2*(s^2 + s + 1)^(3/2)/(3^(3/2)*s*(s + 1))",
+        &[],
+        &d.eta,
+        None,
+        "derived: η = max ∂p/∂ν / its apex value; (14) = η − 1",
+    ));
     out.push(expr_claim("18", "Eq. (18)", "pi*3^(1/2)*abar^3*(2*s^2*abar*dbar - (s + 1)^3)*s^2*(s + 1)/(16*(s^2 + 1)*(s^2 + s + 1)^(3/2))", &[], &with_eta(&d.fbar_reduced), None, &format!("derived F̄ = {}; the printed form lacks the factor η(s) in front of 2s²āδ̄ (equal only at s = 1). {}", plain(&d.fbar_reduced), second_route_force_bar(d))));
     out.push(expr_claim("19", "Eq. (19)", "abar^3 - 2*dbar*(3*s^2 + 1)/(s^2 + 1)*abar - 2*(3*s^4 - 2*s^3 + 6*s^2 + 1)/(s^2*(s^2 + 1)*eta)", &[], &d.residuals[0], Some("dbar"), ""));
     out.push(expr_claim("20", "Eq. (20)", "abar^3 - 2*rho*dbar*(s^2 + 3)/(s^2*(s^2 + 1))*abar - 2*rho*(s^4 + 6*s^2 - 2*s + 3)/(s^3*(s^2 + 1)*eta)", &[], &d.residuals[1], Some("dbar"), ""));
     let ax = &l.axisymmetric;
     out.push(expr_claim("22", "Eq. (22)", "a^2/(4*R) - 2/a*(2*dg/m)^(1/2)", &[("R", ex("R1"))], &dim(&ax.delta), None, "derived from (19) at ρ = s = 1, η(1) = 1, then (17); second route: the exact radial solution of (2)–(3) gives the same δ (see claim 37)"));
-    out.push(expr_claim("23", "Eq. (23)", "pi*m/48*a^4*(a^2/(2*R) - 12/a*(2*dg/m)^(1/2))", &[("R", ex("R1"))], &dim(&ax.force), None, ""));
+    out.push(expr_claim(
+        "23",
+        "Eq. (23)",
+        "pi*m/48*a^4*(a^2/(2*R) - 12/a*(2*dg/m)^(1/2))",
+        &[("R", ex("R1"))],
+        &dim(&ax.force),
+        None,
+        "",
+    ));
     out.push(expr_claim("25.1", "Eq. (25), first relation", "abar^2/4 - 2^(4/3)/abar", &[], &ax.dbar, None, "derived δ̄ = ā²/4 − 2/ā; substituting (24) into (22) gives 2/ā, not 2^(4/3)/ā (a factor 2^(1/3) on the adhesive term)"));
-    out.push(expr_claim("25.2", "Eq. (25), second relation", "pi/96*abar^4*(abar^2 - 24/abar)", &[], &ax.fbar, None, ""));
-    out.push(expr_claim("sec4.Fc", "Section 4, critical force", "-3*pi/2", &[], &ax.critical.1, None, "minimum of F̄(ā) from dF̄/dā = 0"));
-    out.push(decimal_checked(expr_claim("sec4.ac", "Section 4, critical radius", "2^(2/3)*3^(1/3)", &[], &ax.critical.0, None, ""), &ax.critical.0, "2.2894"));
+    out.push(expr_claim(
+        "25.2",
+        "Eq. (25), second relation",
+        "pi/96*abar^4*(abar^2 - 24/abar)",
+        &[],
+        &ax.fbar,
+        None,
+        "",
+    ));
+    out.push(expr_claim(
+        "sec4.Fc",
+        "Section 4, critical force",
+        "-3*pi/2",
+        &[],
+        &ax.critical.1,
+        None,
+        "minimum of F̄(ā) from dF̄/dā = 0",
+    ));
+    out.push(decimal_checked(
+        expr_claim(
+            "sec4.ac",
+            "Section 4, critical radius",
+            "2^(2/3)*3^(1/3)",
+            &[],
+            &ax.critical.0,
+            None,
+            "",
+        ),
+        &ax.critical.0,
+        "2.2894",
+    ));
     out.push(decimal_checked(expr_claim("sec4.dc", "Section 4, critical approach", "2^(-2/3)*3^(2/3) - 2^(2/3)*3^(-1/3)", &[], &ax.critical.2, None, "the printed value follows the printed (25)₁; with the derived δ̄(ā) it is (9/4)^(1/3) − (2/3)^(1/3)"), &ax.critical.2, "0.2097"));
-    out.push(expr_claim("26", "Eq. (26)", "(s + 1)^3/(2*s^2)", &[], &with_eta(&subs(&ex("abar*dbar"), "dbar", &l.zero_force.dbar)), None, &format!("compared as ā δ̄; derived ā δ̄ = {} (η(s) missing in print, as in (18))", plain(&simplify(&subs(&ex("abar*dbar"), "dbar", &l.zero_force.dbar))))).with_printed_rule("abar*dbar", "(s + 1)^3/(2*s^2)"));
-    out.push(expr_claim("27", "Eq. (27)", "3/s^2*(s^3 + 5*s^2 + s + 1)", &[], &with_eta(&l.zero_force.abar_cubed), None, &format!("compared as ā³; derived ā³ = {}", plain(&l.zero_force.abar_cubed))));
-    out.push(expr_claim("28", "Eq. (28)", "s^2*(s^3 + 5*s^2 + s + 1)/(s^3 + s^2 + 5*s + 1)", &[], &l.zero_force.rho, None, "η cancels between (19) and (20), so (28) holds although (26), (27) differ"));
+    out.push(
+        expr_claim(
+            "26",
+            "Eq. (26)",
+            "(s + 1)^3/(2*s^2)",
+            &[],
+            &with_eta(&subs(&ex("abar*dbar"), "dbar", &l.zero_force.dbar)),
+            None,
+            &format!(
+                "compared as ā δ̄; derived ā δ̄ = {} (η(s) missing in print, as in (18))",
+                plain(&simplify(&subs(
+                    &ex("abar*dbar"),
+                    "dbar",
+                    &l.zero_force.dbar
+                )))
+            ),
+        )
+        .with_printed_rule("abar*dbar", "(s + 1)^3/(2*s^2)"),
+    );
+    out.push(expr_claim(
+        "27",
+        "Eq. (27)",
+        "3/s^2*(s^3 + 5*s^2 + s + 1)",
+        &[],
+        &with_eta(&l.zero_force.abar_cubed),
+        None,
+        &format!(
+            "compared as ā³; derived ā³ = {}",
+            plain(&l.zero_force.abar_cubed)
+        ),
+    ));
+    out.push(expr_claim(
+        "28",
+        "Eq. (28)",
+        "s^2*(s^3 + 5*s^2 + s + 1)/(s^3 + s^2 + 5*s + 1)",
+        &[],
+        &l.zero_force.rho,
+        None,
+        "η cancels between (19) and (20), so (28) holds although (26), (27) differ",
+    ));
     out.push(claim_29(l));
     out.push(claim_30(l));
     let nce = &l.near_circular_exact;
     out.push(expr_claim("36", "Eq. (36)", "a0/3*(1 - 4*R/a0^3*(2*dg/m)^(1/2))^(-1)", &[], &nce.a2, None, "derived by an independent first-order perturbation of the free-boundary problem (2)–(3) with gap (31), contour r = a₀ + μ a₂ cos 2θ"));
-    out.push(expr_claim("37", "Eq. (37)", "a0^2/(4*R) - 2/a0*(2*dg/m)^(1/2)", &[], &nce.delta, None, "zeroth order of the same perturbation"));
+    out.push(expr_claim(
+        "37",
+        "Eq. (37)",
+        "a0^2/(4*R) - 2/a0*(2*dg/m)^(1/2)",
+        &[],
+        &nce.delta,
+        None,
+        "zeroth order of the same perturbation",
+    ));
     let ncm = &l.near_circular_model;
-    let a2_rule = ("a2", ex("a0") * ex("-1/2") * subs(&ncm.s1, "abar0", &ex("a0")));
-    out.push(expr_claim("38", "Eq. (38)", "(9*a2 - 4*a0)/(4*(a0 - 3*a2))", &[a2_rule, ("a0", ex("abar0"))], &ncm.xi0, None, "a₂/a₀ taken from the model's own expansion (ds/dμ = −2a₂/a₀ by (35)); derived ξ at μ = 0"));
+    let a2_rule = (
+        "a2",
+        ex("a0") * ex("-1/2") * subs(&ncm.s1, "abar0", &ex("a0")),
+    );
+    out.push(expr_claim(
+        "38",
+        "Eq. (38)",
+        "(9*a2 - 4*a0)/(4*(a0 - 3*a2))",
+        &[a2_rule, ("a0", ex("abar0"))],
+        &ncm.xi0,
+        None,
+        "a₂/a₀ taken from the model's own expansion (ds/dμ = −2a₂/a₀ by (35)); derived ξ at μ = 0",
+    ));
     out.push(expr_claim("39", "Eq. (39)", "(1/(a0*delta))*(2*dg/m)^(1/2) - s^2*eta*(1 + mu*a2/a0)/(s*(1 + s) + 2*xi*(1 + s^2))", &[("a2", ex("r2*a0")), ("a0", ex("abar*L/(1 + mu*r2)")), ("delta", ex("dbar*L^2/R1")), ("g", ex("m*L^3/R1")), ("xi", d.xi[0].clone())], &Atom::num(0), None, "with a = a₀(1 + μ a₂/a₀) and ξ from (15)₁ the two sides are identical (exactly, not only to first order)"));
     let dbar0 = subs(&ax.dbar, "abar", &ex("abar0"));
-    out.push(expr_claim("appendix.rho", "Appendix, display before (38)", "s^2*(6*s^2 + s + 1 + 2*xi*(1 + 3*s^2))/(s*(s^2 + s + 6) + 2*xi*(3 + s^2))", &[], d.rho_from_xi.as_ref().unwrap_or(&Atom::num(0)), None, "derived: ā³ eliminated between (15)₂ and (15)₃ at a common ξ, solved for ρ"));
-    out.push(expr_claim("appendix.a2", "Appendix, display before the end", "(2*q + 1)/(3*q + 3)", &[("q", ex("1/abar0") / &dbar0)], &(ex("-1/2") * &ncm.s1), None, "q = √(2Δγ/m)/(a₀δ) = 1/(ā₀δ̄₀); derived a₂/a₀ = −(ds/dμ)/2 from the model"));
+    out.push(expr_claim(
+        "appendix.rho",
+        "Appendix, display before (38)",
+        "s^2*(6*s^2 + s + 1 + 2*xi*(1 + 3*s^2))/(s*(s^2 + s + 6) + 2*xi*(3 + s^2))",
+        &[],
+        d.rho_from_xi.as_ref().unwrap_or(&Atom::num(0)),
+        None,
+        "derived: ā³ eliminated between (15)₂ and (15)₃ at a common ξ, solved for ρ",
+    ));
+    out.push(expr_claim(
+        "appendix.a2",
+        "Appendix, display before the end",
+        "(2*q + 1)/(3*q + 3)",
+        &[("q", ex("1/abar0") / &dbar0)],
+        &(ex("-1/2") * &ncm.s1),
+        None,
+        "q = √(2Δγ/m)/(a₀δ) = 1/(ā₀δ̄₀); derived a₂/a₀ = −(ds/dμ)/2 from the model",
+    ));
     out.push(expr_claim("appendix.36", "Appendix: the model reduces to (36)", "-2/3*(1 - 4*R/a0^3*(2*dg/m)^(1/2))^(-1)", &[("a0", ex("abar0*L")), ("g", ex("m*L^3/R"))], &ncm.s1, None, &format!("ds/dμ at μ = 0 from expanding (19)–(20) (η'(1) = {}) against −2a₂/a₀ with a₂ from (36)", plain(&ncm.eta_prime_1))));
-    out.push(expr_claim("sec6.p0", "Section 6, p₀", "3^(3/2)*xi*a*(2*m*dg)^(1/2)*s*(s + 1)/(4*(s^2 + s + 1)^(3/2))", &[], &d.p0_explicit, None, ""));
-    out.push(expr_claim("sec6.p", "Section 6, p(x, y)", "p0*(1 - x^2/a^2 - y^2/b^2)*(1 - x^2/a^2*(1 + 1/xi) - y^2/b^2*(1 + s/xi))", &[("b", ex("s*a"))], &d.pressure_collocated, None, ""));
+    out.push(expr_claim(
+        "sec6.p0",
+        "Section 6, p₀",
+        "3^(3/2)*xi*a*(2*m*dg)^(1/2)*s*(s + 1)/(4*(s^2 + s + 1)^(3/2))",
+        &[],
+        &d.p0_explicit,
+        None,
+        "",
+    ));
+    out.push(expr_claim(
+        "sec6.p",
+        "Section 6, p(x, y)",
+        "p0*(1 - x^2/a^2 - y^2/b^2)*(1 - x^2/a^2*(1 + 1/xi) - y^2/b^2*(1 + s/xi))",
+        &[("b", ex("s*a"))],
+        &d.pressure_collocated,
+        None,
+        "",
+    ));
     out.extend(figure_claims(d));
     Ok(out)
 }
@@ -233,11 +493,32 @@ fn decimal_checked(mut c: ClaimResult, derived: &Atom, printed_decimal: &str) ->
 /// (10): the printed A, B are those of the derived collocation, and they
 /// make the apex values of (9) equal.
 fn claim_10(d: &Derivation) -> ClaimResult {
-    let a = d.collocation.iter().find(|(n, _)| n == "A").map(|x| x.1.clone()).unwrap_or_default();
-    let b = d.collocation.iter().find(|(n, _)| n == "B").map(|x| x.1.clone()).unwrap_or_default();
+    let a = d
+        .collocation
+        .iter()
+        .find(|(n, _)| n == "A")
+        .map(|x| x.1.clone())
+        .unwrap_or_default();
+    let b = d
+        .collocation
+        .iter()
+        .find(|(n, _)| n == "B")
+        .map(|x| x.1.clone())
+        .unwrap_or_default();
     let ca = expr_claim("10", "", "1/a^2*(1 + 1/xi)", &[], &a, None, "");
-    let mut cb = expr_claim("10", "Eq. (10)", "1/b^2*(1 + b/(a*xi))", &[("b", ex("s*a"))], &b, None, "");
-    let nd = d.normal_derivative.subs_all(&[("b", ex("s*a"))]).subs_all(&[("A", ex("(1 + 1/xi)/a^2")), ("B", ex("(1 + s/xi)/(s*a)^2"))]);
+    let mut cb = expr_claim(
+        "10",
+        "Eq. (10)",
+        "1/b^2*(1 + b/(a*xi))",
+        &[("b", ex("s*a"))],
+        &b,
+        None,
+        "",
+    );
+    let nd = d
+        .normal_derivative
+        .subs_all(&[("b", ex("s*a"))])
+        .subs_all(&[("A", ex("(1 + 1/xi)/a^2")), ("B", ex("(1 + s/xi)/(s*a)^2"))]);
     let equal = crate::check::compare(&nd.at(&Atom::num(0)), &nd.at(&Atom::num(1)), 10);
     cb.printed = "A = 1/a^2*(1 + 1/xi), B = 1/b^2*(1 + b/(a*xi))".into();
     cb.derived = format!("A = {}, B = {}", plain(&a), plain(&b));
@@ -248,7 +529,11 @@ fn claim_10(d: &Derivation) -> ClaimResult {
         "A: {}; B: {}; with the printed (10), (9) at t = 0 and t = π/2: {}",
         ca.note,
         cb.note,
-        if equal.verdict == Verdict::Holds { "equal (exact)" } else { "not equal" }
+        if equal.verdict == Verdict::Holds {
+            "equal (exact)"
+        } else {
+            "not equal"
+        }
     );
     cb
 }
@@ -257,7 +542,15 @@ fn claim_10(d: &Derivation) -> ClaimResult {
 fn claim_29(l: &Limits) -> ClaimResult {
     let printed = "1/6*(((1 - rho)^2 + 36*rho)^(1/2) - 1 + rho)";
     let derived_rho_of_printed = subs(&l.non_adhesive_rho, "s", &ex(printed).pow_half());
-    let mut c = expr_claim("29", "Eq. (29)", "rho", &[], &derived_rho_of_printed, None, "");
+    let mut c = expr_claim(
+        "29",
+        "Eq. (29)",
+        "rho",
+        &[],
+        &derived_rho_of_printed,
+        None,
+        "",
+    );
     c.printed = format!("s^2 = {printed}");
     c.derived = format!("rho = {}", plain(&l.non_adhesive_rho));
     c.note = format!("the printed s² substituted into the derived relation ρ(s) of the limit Δγ → 0 (ā → ∞ at fixed δ̄/ā²): {}", c.note);
@@ -283,7 +576,11 @@ fn claim_30(l: &Limits) -> ClaimResult {
         let mut worst: (f64, f64) = (0.0, 0.0);
         for k in 0..2000 {
             let rho = 0.4 + 0.6 * (k as f64 + 0.5) / 2000.0;
-            let s = bisect(|s| rho_s.eval(&BTreeMap::from([("s", s)])).unwrap_or(f64::NAN) - rho, 1e-6, 1.0)?;
+            let s = bisect(
+                |s| rho_s.eval(&BTreeMap::from([("s", s)])).unwrap_or(f64::NAN) - rho,
+                1e-6,
+                1.0,
+            )?;
             let sa = approx.eval(&BTreeMap::from([("rho", rho)]))?;
             let e = ((sa - s) / s).abs();
             if e > worst.0 {
@@ -346,7 +643,8 @@ fn second_route_force_bar(d: &Derivation) -> String {
         let dbar = solve_linear(&(ex("xi") - &d.xi[0]), "dbar").ok_or("dbar")?;
         let dbar = Ir::from_atom(&simplify(&subs(&dbar, "eta", &d.eta)))?.eval(&env)?;
         env.insert("dbar", dbar);
-        let derived = Ir::from_atom(&simplify(&subs(&d.fbar_reduced, "eta", &d.eta)))?.eval(&env)?;
+        let derived =
+            Ir::from_atom(&simplify(&subs(&d.fbar_reduced, "eta", &d.eta)))?.eval(&env)?;
         let printed = Ir::from_atom(&ex("pi*3^(1/2)*abar^3*(2*s^2*abar*dbar - (s + 1)^3)*s^2*(s + 1)/(16*(s^2 + 1)*(s^2 + s + 1)^(3/2))"))?.eval(&env)?;
         Ok(format!("Second route: quadrature of the collocated pressure at s = 0.8, ξ = 1.7, ā = 3 gives F̄ = {quad:.10}; derived (18) {derived:.10}; printed (18) {printed:.10}"))
     };
@@ -364,7 +662,13 @@ fn quadrature_over_ellipse(p: &Ir, env: &mut BTreeMap<&str, f64>, a: f64, b: f64
             let t = 2.0 * std::f64::consts::PI * (k as f64) / nt as f64;
             env.insert("x", a * r * t.cos());
             env.insert("y", b * r * t.sin());
-            total += 0.5 * wi * (2.0 * std::f64::consts::PI / nt as f64) * a * b * r * p.eval(env).unwrap_or(f64::NAN);
+            total += 0.5
+                * wi
+                * (2.0 * std::f64::consts::PI / nt as f64)
+                * a
+                * b
+                * r
+                * p.eval(env).unwrap_or(f64::NAN);
         }
     }
     total
@@ -403,7 +707,10 @@ fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
     let bound = || -> Result<ClaimResult, String> {
         let e = Ir::from_atom(&d.bc_error)?;
         let at = |s: f64| e.eval(&BTreeMap::from([("s", s)])).unwrap_or(f64::NAN);
-        let worst = (0..=4000).map(|k| 0.6 + 0.4 * k as f64 / 4000.0).map(|s| (at(s), s)).fold((0.0, 0.0), |m, v| if v.0 > m.0 { v } else { m });
+        let worst = (0..=4000)
+            .map(|k| 0.6 + 0.4 * k as f64 / 4000.0)
+            .map(|s| (at(s), s))
+            .fold((0.0, 0.0), |m, v| if v.0 > m.0 { v } else { m });
         let at06 = crate::sym::eval_prec(&d.bc_error, &[("s", crate::sym::rat(3, 5))], 30)?;
         let threshold = bisect(|s| at(s) - 0.1, 0.3, 0.99)?;
         Ok(numeric_claim(
@@ -421,7 +728,9 @@ fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
             ),
         ))
     };
-    out.push(bound().unwrap_or_else(|e| failed("fig2.bound", "Fig. 2", "(14) < 10 % for s ≥ 0.6", e)));
+    out.push(
+        bound().unwrap_or_else(|e| failed("fig2.bound", "Fig. 2", "(14) < 10 % for s ≥ 0.6", e)),
+    );
     // fig7: pull-off and heavy load at ρ = 0.8.
     let fig7 = || -> Result<(ClaimResult, ClaimResult), String> {
         let c = Curve::new(d, 0.8)?;
@@ -461,7 +770,12 @@ fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
             out.push(b);
         }
         Err(e) => {
-            out.push(failed("fig7.pulloff", "Fig. 7", "s ≈ 0.895 at F̄ ≈ −4.21", e.clone()));
+            out.push(failed(
+                "fig7.pulloff",
+                "Fig. 7",
+                "s ≈ 0.895 at F̄ ≈ −4.21",
+                e.clone(),
+            ));
             out.push(failed("fig7.heavy", "Fig. 7", "s ≈ 0.93 at F̄ = 10", e));
         }
     }

@@ -25,8 +25,14 @@ pub fn outputs() -> Result<Vec<Output>, String> {
         .collect::<Result<Vec<_>, _>>()?;
     let results = claims::check_all(&paper)?;
     let mut out = vec![
-        Output { path: "docs/derivation.md".into(), contents: report::derivation_md(&paper, &others, &results) },
-        Output { path: "docs/errata.md".into(), contents: report::errata_md(&results) },
+        Output {
+            path: "docs/derivation.md".into(),
+            contents: report::derivation_md(&paper, &others, &results),
+        },
+        Output {
+            path: "docs/errata.md".into(),
+            contents: report::errata_md(&results),
+        },
     ];
     let all: Vec<&Derivation> = std::iter::once(&paper).chain(others.iter()).collect();
     out.extend(crate::codegen::outputs(&all)?);
@@ -35,7 +41,10 @@ pub fn outputs() -> Result<Vec<Output>, String> {
 
 /// The workspace root (the parent of this crate's directory).
 pub fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("derive/ has a parent").to_path_buf()
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("derive/ has a parent")
+        .to_path_buf()
 }
 
 /// Write every output under `root`; returns the paths that changed.

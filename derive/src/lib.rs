@@ -10,17 +10,17 @@
 //! symbolica thread per user at a time: call this crate from one thread only.
 
 pub mod ansatz;
+pub mod check;
+pub mod claims;
+pub mod codegen;
 pub mod contour;
 pub mod force;
+pub mod generate;
 pub mod ir;
 pub mod limits;
 pub mod model;
 pub mod nondimensional;
+pub mod numeric;
+pub mod report;
 pub mod sym;
 pub mod thin_layer;
-pub mod check;
-pub mod claims;
-pub mod numeric;
-pub mod codegen;
-pub mod generate;
-pub mod report;

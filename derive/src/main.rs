@@ -30,11 +30,20 @@ fn main() -> ExitCode {
                 }
             };
             if json {
-                println!("{}", serde_json::to_string_pretty(&results).expect("serialisable"));
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&results).expect("serialisable")
+                );
             } else {
                 println!("{:<14} {:<10} {:<8} note", "id", "verdict", "method");
                 for r in &results {
-                    println!("{:<14} {:<10} {:<8} {}", r.id, r.verdict.as_str(), format!("{:?}", r.method).to_lowercase(), r.note);
+                    println!(
+                        "{:<14} {:<10} {:<8} {}",
+                        r.id,
+                        r.verdict.as_str(),
+                        format!("{:?}", r.method).to_lowercase(),
+                        r.note
+                    );
                 }
             }
             ExitCode::SUCCESS
@@ -52,10 +61,18 @@ fn main() -> ExitCode {
             match thinjkr_derive::generate::write_all(&root, &outputs) {
                 Ok(changed) => {
                     for o in &outputs {
-                        let mark = if changed.contains(&o.path) { "updated" } else { "unchanged" };
+                        let mark = if changed.contains(&o.path) {
+                            "updated"
+                        } else {
+                            "unchanged"
+                        };
                         println!("{mark:>9} {}", o.path.display());
                     }
-                    eprintln!("generated {} files in {:.3} s", outputs.len(), t.elapsed().as_secs_f64());
+                    eprintln!(
+                        "generated {} files in {:.3} s",
+                        outputs.len(),
+                        t.elapsed().as_secs_f64()
+                    );
                     ExitCode::SUCCESS
                 }
                 Err(e) => {

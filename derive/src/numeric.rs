@@ -44,7 +44,10 @@ pub struct State {
 impl Curve {
     /// Build the evaluators for `rho` from a derivation with a branch.
     pub fn new(d: &Derivation, rho: f64) -> Result<Curve, String> {
-        let b = d.branch.as_ref().ok_or("the residuals have no explicit branch in s")?;
+        let b = d
+            .branch
+            .as_ref()
+            .ok_or("the residuals have no explicit branch in s")?;
         let eta = |e| simplify(&subs(e, "eta", &d.eta));
         let limits = d.limits.as_ref().map_err(|e| e.clone())?;
         Ok(Curve {
@@ -72,7 +75,13 @@ impl Curve {
         v.insert("dbar", dbar);
         let fbar = self.fbar.eval(&v).ok()?;
         let bc_error = self.bc_error.eval(&v).ok()?;
-        Some(State { s, abar, dbar, fbar, bc_error })
+        Some(State {
+            s,
+            abar,
+            dbar,
+            fbar,
+            bc_error,
+        })
     }
 
     /// s∞(ρ): the non-adhesive aspect ratio, where ā → ∞ on the branch.
@@ -99,7 +108,11 @@ impl Curve {
             let val = key(&st);
             if let (Some((s1, v1)), Some((_, v2))) = (prev, prev2) {
                 if v1 < v2 && v1 <= val {
-                    let sm = golden(|s| self.at(s).map(|st| key(&st)).unwrap_or(f64::INFINITY), s1 - h, s1 + h);
+                    let sm = golden(
+                        |s| self.at(s).map(|st| key(&st)).unwrap_or(f64::INFINITY),
+                        s1 - h,
+                        s1 + h,
+                    );
                     return self.at(sm).ok_or_else(|| "minimum off the branch".into());
                 }
             }
@@ -110,7 +123,11 @@ impl Curve {
     }
 
     /// The first state (walking from s∞ down) where `key` crosses `target`.
-    pub fn first_crossing(&self, key: impl Fn(&State) -> f64, target: f64) -> Result<State, String> {
+    pub fn first_crossing(
+        &self,
+        key: impl Fn(&State) -> f64,
+        target: f64,
+    ) -> Result<State, String> {
         let s_inf = self.s_inf()?;
         let n = 4000;
         let h = s_inf / n as f64;
@@ -121,7 +138,11 @@ impl Curve {
             let val = key(&st) - target;
             if let Some((sp, vp)) = prev {
                 if vp.signum() != val.signum() {
-                    let sc = bisect(|s| self.at(s).map(|st| key(&st) - target).unwrap_or(f64::NAN), s, sp)?;
+                    let sc = bisect(
+                        |s| self.at(s).map(|st| key(&st) - target).unwrap_or(f64::NAN),
+                        s,
+                        sp,
+                    )?;
                     return self.at(sc).ok_or_else(|| "crossing off the branch".into());
                 }
             }

@@ -413,8 +413,15 @@ fn exact_value_at(e: &Atom, name: &str, point: i64) -> Option<Atom> {
     if d.abs() < 1e-30 {
         return None;
     }
-    let exact = simplify(&normalize_radicals(&simplify(&subs(e, name, &Atom::num(point)))));
-    eval_prec(&exact, &[], 40).ok().filter(|v| v.is_finite()).map(|_| exact)
+    let exact = simplify(&normalize_radicals(&simplify(&subs(
+        e,
+        name,
+        &Atom::num(point),
+    ))));
+    eval_prec(&exact, &[], 40)
+        .ok()
+        .filter(|v| v.is_finite())
+        .map(|_| exact)
 }
 
 fn numeric_limit(lo: f64, hi: f64) -> Result<Atom, String> {

@@ -19,8 +19,16 @@ fn results() -> Vec<thinjkr_derive::claims::ClaimResult> {
 fn every_required_id_has_a_verdict_and_a_method() {
     let r = results();
     for id in REQUIRED_IDS {
-        let c = r.iter().find(|c| c.id == *id).unwrap_or_else(|| panic!("claim {id} missing"));
-        assert_ne!(c.verdict, Verdict::Unverified, "claim {id} unverified: {}", c.note);
+        let c = r
+            .iter()
+            .find(|c| c.id == *id)
+            .unwrap_or_else(|| panic!("claim {id} missing"));
+        assert_ne!(
+            c.verdict,
+            Verdict::Unverified,
+            "claim {id} unverified: {}",
+            c.note
+        );
     }
     let json = serde_json::to_value(&r).expect("serialises");
     for obj in json.as_array().expect("array") {
@@ -37,7 +45,29 @@ fn verdicts_match_the_hand_derivation() {
     for id in ["18", "25.1", "26", "27", "sec4.dc"] {
         assert_eq!(verdict(id), Verdict::Differs, "{id}");
     }
-    for id in ["6.1", "6.2", "6.3", "8", "9", "10", "11", "13", "15.1", "19", "20", "22", "23", "25.2", "28", "29", "36", "37", "appendix.36", "sec4.Fc", "sec4.ac"] {
+    for id in [
+        "6.1",
+        "6.2",
+        "6.3",
+        "8",
+        "9",
+        "10",
+        "11",
+        "13",
+        "15.1",
+        "19",
+        "20",
+        "22",
+        "23",
+        "25.2",
+        "28",
+        "29",
+        "36",
+        "37",
+        "appendix.36",
+        "sec4.Fc",
+        "sec4.ac",
+    ] {
         assert_eq!(verdict(id), Verdict::Holds, "{id}");
     }
 }
@@ -46,11 +76,19 @@ fn verdicts_match_the_hand_derivation() {
 fn the_comparison_tells_a_changed_coefficient_from_an_identity() {
     // (19) solved for δ̄, and the same with one coefficient changed.
     let d = ex("(abar^3 - 2*(3*s^4 - 2*s^3 + 6*s^2 + 1)/(s^2*(s^2 + 1)*eta))*(s^2 + 1)/(2*(3*s^2 + 1)*abar)");
-    let same = ex("(abar^2/2)*(s^2 + 1)/(3*s^2 + 1) - (3*s^4 - 2*s^3 + 6*s^2 + 1)/(s^2*eta*(3*s^2 + 1)*abar)");
+    let same = ex(
+        "(abar^2/2)*(s^2 + 1)/(3*s^2 + 1) - (3*s^4 - 2*s^3 + 6*s^2 + 1)/(s^2*eta*(3*s^2 + 1)*abar)",
+    );
     let changed = ex("(abar^3 - 2*(3*s^4 - 2*s^3 + 6*s^2 + 2)/(s^2*(s^2 + 1)*eta))*(s^2 + 1)/(2*(3*s^2 + 1)*abar)");
     assert_eq!(compare(&same, &d, 1).verdict, Verdict::Holds);
     assert_eq!(compare(&changed, &d, 1).verdict, Verdict::Differs);
     // a radical identity that needs the numeric tier or radical normalisation
-    assert_eq!(compare(&ex("3^(3/2)/3^(1/2)"), &ex("3"), 2).verdict, Verdict::Holds);
-    assert_eq!(compare(&ex("2^(4/3)"), &ex("2"), 3).verdict, Verdict::Differs);
+    assert_eq!(
+        compare(&ex("3^(3/2)/3^(1/2)"), &ex("3"), 2).verdict,
+        Verdict::Holds
+    );
+    assert_eq!(
+        compare(&ex("2^(4/3)"), &ex("2"), 3).verdict,
+        Verdict::Differs
+    );
 }

@@ -24,6 +24,10 @@ fn generation_is_deterministic() {
     assert_eq!(a.len(), b.len());
     for (x, y) in a.iter().zip(&b) {
         assert_eq!(x.path, y.path);
-        assert!(x.contents == y.contents, "{} differs between two runs", x.path.display());
+        assert!(
+            x.contents == y.contents,
+            "{} differs between two runs",
+            x.path.display()
+        );
     }
 }

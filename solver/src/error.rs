@@ -1,0 +1,53 @@
+//! Typed errors of the solver: bad input names the parameter and its allowed
+//! range; non-convergence says where.
+//!
+//! Owns: [`Error`]. May use: nothing else in the crate.
+
+/// Everything that can go wrong in thinjkr.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Error {
+    /// A parameter outside its allowed range.
+    #[error("parameter {name} = {value} is outside its allowed range {range}")]
+    OutOfRange {
+        /// The parameter's name.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// The allowed range, in words.
+        range: &'static str,
+    },
+    /// Newton's method did not converge.
+    #[error("no convergence after {iterations} iterations at a_bar = {a_bar}, s = {s} (residual norm {residual:e}); {context}")]
+    NoConvergence {
+        /// Iterations done.
+        iterations: usize,
+        /// Last iterate ā.
+        a_bar: f64,
+        /// Last iterate s.
+        s: f64,
+        /// Last residual norm.
+        residual: f64,
+        /// What was being solved.
+        context: String,
+    },
+    /// The model has no state for the given input.
+    #[error("no contact state: {0}")]
+    NoState(String),
+}
+
+/// Shorthand.
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Check `lo < value <= hi` (or `lo <= value` with `closed_low`), finite.
+pub(crate) fn check_range(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    range: &'static str,
+) -> Result<f64> {
+    if value.is_finite() && ok {
+        Ok(value)
+    } else {
+        Err(Error::OutOfRange { name, value, range })
+    }
+}

@@ -1,0 +1,116 @@
+//! Damped Newton's method for the two residuals (19)–(20) in (ā, s), with a
+//! backtracking line search on ‖r‖² that also keeps the iterate inside the
+//! domain ā > 0, 0 < s ≤ 1.
+//!
+//! Owns: [`NewtonConfig`], [`solve`]. May use: `error`, nalgebra.
+
+use crate::error::{Error, Result};
+use nalgebra::{Matrix2, Vector2};
+
+/// Controls of Newton's method.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NewtonConfig {
+    /// Converged when the scaled residual norm is below this.
+    pub tolerance: f64,
+    /// Iteration limit.
+    pub max_iterations: usize,
+    /// Smallest line-search step before giving up.
+    pub min_step: f64,
+}
+
+impl Default for NewtonConfig {
+    fn default() -> Self {
+        NewtonConfig {
+            tolerance: 1e-12,
+            max_iterations: 60,
+            min_step: 1e-10,
+        }
+    }
+}
+
+/// A converged solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Solution {
+    /// ā.
+    pub a_bar: f64,
+    /// s.
+    pub s: f64,
+    /// Iterations used.
+    pub iterations: usize,
+    /// Final residual norm (scaled by 1 + ā³).
+    pub residual: f64,
+}
+
+/// Solve `f(ā, s) = 0` from `start`, where `f` returns the residuals and the
+/// Jacobian ∂r/∂(ā, s). Residuals are scaled by 1 + ā³ (they are monic in ā³).
+pub fn solve(
+    f: impl Fn(f64, f64) -> ([f64; 2], [[f64; 2]; 2]),
+    start: (f64, f64),
+    config: &NewtonConfig,
+    context: &str,
+) -> Result<Solution> {
+    let (mut a, mut s) = start;
+    let norm = |r: [f64; 2], a: f64| (r[0].hypot(r[1])) / (1.0 + a * a * a);
+    let (mut r, mut j) = f(a, s);
+    let mut rn = norm(r, a);
+    for it in 0..config.max_iterations {
+        if rn.is_finite() && rn < config.tolerance {
+            return Ok(Solution {
+                a_bar: a,
+                s,
+                iterations: it,
+                residual: rn,
+            });
+        }
+        let jm = Matrix2::new(j[0][0], j[0][1], j[1][0], j[1][1]);
+        let step = jm.lu().solve(&Vector2::new(-r[0], -r[1]));
+        let Some(step) = step.filter(|d| d.iter().all(|x| x.is_finite())) else {
+            break;
+        };
+        let mut lambda = 1.0;
+        let mut accepted = false;
+        while lambda >= config.min_step {
+            let (an, sn) = (a + lambda * step[0], s + lambda * step[1]);
+            if an > 0.0 && sn > 0.0 && sn <= 1.0 + 1e-12 {
+                let (rt, jt) = f(an, sn.min(1.0));
+                let rtn = norm(rt, an);
+                if rtn.is_finite() && rtn < rn * (1.0 - 1e-4 * lambda) {
+                    a = an;
+                    s = sn.min(1.0);
+                    r = rt;
+                    j = jt;
+                    rn = rtn;
+                    accepted = true;
+                    break;
+                }
+            }
+            lambda *= 0.5;
+        }
+        if !accepted {
+            if rn < config.tolerance * 1e3 {
+                return Ok(Solution {
+                    a_bar: a,
+                    s,
+                    iterations: it,
+                    residual: rn,
+                });
+            }
+            break;
+        }
+    }
+    if rn.is_finite() && rn < config.tolerance {
+        return Ok(Solution {
+            a_bar: a,
+            s,
+            iterations: config.max_iterations,
+            residual: rn,
+        });
+    }
+    Err(Error::NoConvergence {
+        iterations: config.max_iterations,
+        a_bar: a,
+        s,
+        residual: rn,
+        context: context.to_string(),
+    })
+}
