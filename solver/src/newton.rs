@@ -16,6 +16,14 @@ pub struct NewtonConfig {
     pub max_iterations: usize,
     /// Smallest line-search step before giving up.
     pub min_step: f64,
+    /// Also converged when the full Newton step is below this (relative to
+    /// 1 + |x|), or a Newton iteration no longer halves the residual, while
+    /// the scaled residual is below `stall_residual`: the residual has then
+    /// reached the round-off floor of its f64 evaluation (quadratic
+    /// convergence would halve it many times over).
+    pub step_tolerance: f64,
+    /// See `step_tolerance`.
+    pub stall_residual: f64,
 }
 
 impl Default for NewtonConfig {
@@ -24,6 +32,8 @@ impl Default for NewtonConfig {
             tolerance: 1e-12,
             max_iterations: 60,
             min_step: 1e-10,
+            step_tolerance: 1e-13,
+            stall_residual: 1e-8,
         }
     }
 }
@@ -67,6 +77,17 @@ pub fn solve(
         let Some(step) = step.filter(|d| d.iter().all(|x| x.is_finite())) else {
             break;
         };
+        if step[0].abs() <= config.step_tolerance * (1.0 + a.abs())
+            && step[1].abs() <= config.step_tolerance
+            && rn < config.stall_residual
+        {
+            return Ok(Solution {
+                a_bar: a,
+                s,
+                iterations: it,
+                residual: rn,
+            });
+        }
         let mut lambda = 1.0;
         let mut accepted = false;
         while lambda >= config.min_step {
@@ -75,6 +96,14 @@ pub fn solve(
                 let (rt, jt) = f(an, sn.min(1.0));
                 let rtn = norm(rt, an);
                 if rtn.is_finite() && rtn < rn * (1.0 - 1e-4 * lambda) {
+                    if rn < config.stall_residual && rtn > 0.5 * rn {
+                        return Ok(Solution {
+                            a_bar: an,
+                            s: sn.min(1.0),
+                            iterations: it + 1,
+                            residual: rtn,
+                        });
+                    }
                     a = an;
                     s = sn.min(1.0);
                     r = rt;
