@@ -3,14 +3,23 @@
 //! Popov, Tribology Letters 64:12, 2016), solved with Newton's method on
 //! residuals, Jacobians and model functions generated from a symbolic
 //! derivation (crate `thinjkr-derive`). No symbolic algebra at run time.
+//!
+//! The equations are the derived ones: where the paper's printed formulas
+//! differ ((18), (25)₁, (26), (27); see `docs/errata.md`), the derived forms
+//! are used.
 
 #![deny(missing_docs)]
 
+pub mod contact;
+pub mod curve;
 pub mod error;
 #[allow(missing_docs)]
 pub mod generated;
+pub mod limits;
 pub mod model;
 pub mod newton;
+pub mod units;
 
+pub use contact::{Contact, State};
 pub use error::{Error, Result};
 pub use model::{Apex45, Model, Paper};

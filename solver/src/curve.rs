@@ -1,0 +1,231 @@
+//! The whole force–displacement curve, including its unstable part, traced
+//! by pseudo-arclength continuation in (ā, s, δ̄). The solution set of
+//! (19)–(20) folds in δ̄ and in ā, so no single variable parametrises it
+//! everywhere; the arclength does. Tangent: the null vector of the 2 × 3
+//! Jacobian [∂r/∂(ā, s) | ∂r/∂δ̄] (generated), i.e. the cross product of its
+//! rows. Corrector: Newton on (19), (20) plus the arclength condition.
+//! Folds are reported where a tangent component (dā, dδ̄) or dF̄ changes sign.
+//!
+//! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `model`, `error`.
+
+use crate::contact::{Contact, State};
+use crate::error::{check_range, Error, Result};
+use crate::model::Model;
+use nalgebra::{Matrix3, Vector3};
+use serde::{Deserialize, Serialize};
+
+/// What folds at a fold point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FoldKind {
+    /// A minimum of F̄: pull-off under load control.
+    Load,
+    /// A turning point in δ̄.
+    Displacement,
+    /// A turning point in ā (the contact size).
+    ContactSize,
+}
+
+/// A fold of the solution curve.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Fold {
+    /// Which quantity turns.
+    pub kind: FoldKind,
+    /// The state at the fold (nearest traced point).
+    pub state: State,
+}
+
+/// A traced curve.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Curve {
+    /// States in order along the curve, from large approach downwards.
+    pub states: Vec<State>,
+    /// The folds met on the way.
+    pub folds: Vec<Fold>,
+}
+
+/// Trace the curve of `contact` from δ̄ = `delta_start` (on the stable
+/// branch) past pull-off and the folds, and return `points` states spaced
+/// evenly in arclength.
+pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) -> Result<Curve> {
+    check_range("points", points as f64, points >= 2, "2 or more")?;
+    let rho = contact.rho();
+    let start = contact.at_displacement(delta_start)?;
+    if rho >= 1.0 - 1e-12 {
+        // s ≡ 1: the exact axisymmetric curve, parametrised by ā.
+        let states: Vec<State> = (0..points)
+            .map(|k| {
+                let a = start.a * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
+                contact.at_contact_size(a).map(|v| v[0])
+            })
+            .collect::<Result<_>>()?;
+        let folds = vec![Fold {
+            kind: FoldKind::Load,
+            state: contact.pull_off_load()?,
+        }];
+        return Ok(Curve { states, folds });
+    }
+    let f = |z: &Vector3<f64>| -> ([f64; 2], [[f64; 3]; 2]) {
+        let (r, j) = M::residuals_and_jacobian(z[0], z[1], rho, z[2]);
+        let d = M::residuals_d_delta(z[0], z[1], rho, z[2]);
+        (r, [[j[0][0], j[0][1], d[0]], [j[1][0], j[1][1], d[1]]])
+    };
+    // variables scaled so that a unit step means a comparable change
+    let scale = Vector3::new(start.a, 0.1, start.delta.abs().max(1.0));
+    let tangent = |z: &Vector3<f64>, prev: Option<&Vector3<f64>>| -> Vector3<f64> {
+        let (_, j) = f(z);
+        let r1 = Vector3::new(j[0][0] * scale[0], j[0][1] * scale[1], j[0][2] * scale[2]);
+        let r2 = Vector3::new(j[1][0] * scale[0], j[1][1] * scale[1], j[1][2] * scale[2]);
+        let mut t = r1.cross(&r2).normalize();
+        match prev {
+            Some(p) if t.dot(p) < 0.0 => t = -t,
+            None if t[2] > 0.0 => t = -t, // start towards smaller δ̄
+            _ => {}
+        }
+        t
+    };
+    let to_z = |st: &State| Vector3::new(st.a / scale[0], st.s / scale[1], st.delta / scale[2]);
+    let from_z = |w: &Vector3<f64>| Vector3::new(w[0] * scale[0], w[1] * scale[1], w[2] * scale[2]);
+    let mut w = to_z(&start);
+    let mut t = tangent(&from_z(&w), None);
+    let mut h = 0.01;
+    let mut trail: Vec<(Vector3<f64>, Vector3<f64>)> = vec![(w, t)];
+    let max_steps = 20_000;
+    let mut passed_fold = false;
+    for _ in 0..max_steps {
+        let mut accepted = None;
+        for _ in 0..30 {
+            let wp = w + t * h;
+            let mut wc = wp;
+            let mut ok = false;
+            for _ in 0..20 {
+                let z = from_z(&wc);
+                if !(z[0] > 0.0 && z[1] > 0.0 && z[1] <= 1.0) {
+                    break;
+                }
+                let (r, j) = f(&z);
+                let arc = t.dot(&(wc - wp));
+                let m = Matrix3::new(
+                    j[0][0] * scale[0],
+                    j[0][1] * scale[1],
+                    j[0][2] * scale[2],
+                    j[1][0] * scale[0],
+                    j[1][1] * scale[1],
+                    j[1][2] * scale[2],
+                    t[0],
+                    t[1],
+                    t[2],
+                );
+                let Some(dw) = m.lu().solve(&Vector3::new(-r[0], -r[1], -arc)) else {
+                    break;
+                };
+                wc += dw;
+                if dw.norm() < 1e-12 {
+                    ok = true;
+                    break;
+                }
+            }
+            if ok {
+                accepted = Some(wc);
+                break;
+            }
+            h *= 0.5;
+        }
+        let Some(wn) = accepted else {
+            return Err(Error::NoConvergence {
+                iterations: 20,
+                a_bar: from_z(&w)[0],
+                s: from_z(&w)[1],
+                residual: f64::NAN,
+                context: format!(
+                    "pseudo-arclength corrector at delta_bar = {}",
+                    from_z(&w)[2]
+                ),
+            });
+        };
+        let tn = tangent(&from_z(&wn), Some(&t));
+        w = wn;
+        t = tn;
+        h = (h * 1.3).min(0.05);
+        trail.push((w, t));
+        let z = from_z(&w);
+        if t[0] > 0.0 {
+            passed_fold = true; // the contact size grows again
+        }
+        if z[1] < 0.05 || (passed_fold && z[0] > start.a) {
+            break;
+        }
+    }
+    // states and folds
+    let states_all: Vec<State> = trail
+        .iter()
+        .map(|(w, _)| {
+            let z = from_z(w);
+            let mut st = contact_state(contact, z);
+            st.beyond_size_fold = false;
+            st
+        })
+        .collect();
+    let mut folds = Vec::new();
+    let mut beyond = false;
+    for k in 1..trail.len() {
+        let (t0, t1) = (trail[k - 1].1, trail[k].1);
+        if t0[0].signum() != t1[0].signum() {
+            folds.push(Fold {
+                kind: FoldKind::ContactSize,
+                state: states_all[k],
+            });
+            beyond = true;
+        }
+        if t0[2].signum() != t1[2].signum() {
+            folds.push(Fold {
+                kind: FoldKind::Displacement,
+                state: states_all[k],
+            });
+        }
+        if k + 1 < trail.len() {
+            let (f0, f1, f2) = (
+                states_all[k - 1].force,
+                states_all[k].force,
+                states_all[k + 1].force,
+            );
+            if f1 < f0 && f1 <= f2 {
+                folds.push(Fold {
+                    kind: FoldKind::Load,
+                    state: states_all[k],
+                });
+            }
+        }
+        let _ = beyond;
+    }
+    // mark states beyond the first contact-size fold
+    let mut marked = states_all.clone();
+    if let Some(k) = trail
+        .windows(2)
+        .position(|p| p[0].1[0].signum() != p[1].1[0].signum())
+    {
+        for st in marked.iter_mut().skip(k + 1) {
+            st.beyond_size_fold = true;
+        }
+    }
+    // resample evenly in arclength
+    let mut arc = vec![0.0];
+    for k in 1..trail.len() {
+        arc.push(arc[k - 1] + (trail[k].0 - trail[k - 1].0).norm());
+    }
+    let total = *arc.last().unwrap_or(&0.0);
+    let mut states = Vec::with_capacity(points);
+    let mut j = 0;
+    for i in 0..points {
+        let target = total * i as f64 / (points - 1) as f64;
+        while j + 1 < arc.len() && arc[j + 1] < target {
+            j += 1;
+        }
+        states.push(marked[j.min(marked.len() - 1)]);
+    }
+    Ok(Curve { states, folds })
+}
+
+fn contact_state<M: Model>(contact: &Contact<M>, z: Vector3<f64>) -> State {
+    contact.state_from(z[0], z[1], z[2])
+}

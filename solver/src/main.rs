@@ -1,0 +1,315 @@
+//! `thinjkr`: the approximate JKR model of coated cylinders from the command
+//! line. With no arguments it prints the paper's ρ = 0.8 example.
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::process::ExitCode;
+use thinjkr::curve::trace;
+use thinjkr::units::Cylinders;
+use thinjkr::{Contact, State};
+
+/// Approximate JKR contact of thin incompressible coatings on rigid cylinders
+/// (Argatov, Mishuris & Popov 2016), dimensionless as in Eq. (17) unless
+/// `physical` is used.
+#[derive(Parser)]
+#[command(
+    version,
+    about,
+    after_help = "Examples:\n  thinjkr solve --rho 0.8 --delta 2\n  thinjkr solve --rho 0.8 --force -2 --json\n  thinjkr pull-off --rho 0.8 --control displacement\n  thinjkr zero-force --rho 0.9\n  thinjkr curve --rho 0.8 --points 50 --format csv\n  thinjkr physical --file contact.toml --force 1e-3"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// One state at given δ̄, F̄ or ā.
+    #[command(
+        after_help = "Examples:\n  thinjkr solve --rho 0.8 --delta 2\n  thinjkr solve --rho 0.8 --a 3 --json"
+    )]
+    Solve {
+        /// Radii ratio ρ = R2/R1 in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        /// Approach δ̄.
+        #[arg(long, allow_hyphen_values = true, group = "control")]
+        delta: Option<f64>,
+        /// Force F̄ (the stable state).
+        #[arg(long, allow_hyphen_values = true, group = "control")]
+        force: Option<f64>,
+        /// Major semi-axis ā (all states with this size).
+        #[arg(long, allow_hyphen_values = true, group = "control")]
+        a: Option<f64>,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Pull-off (minimum force under load control; end of the stable branch under displacement control).
+    #[command(
+        name = "pull-off",
+        after_help = "Example:\n  thinjkr pull-off --rho 0.8 --control displacement --json"
+    )]
+    PullOff {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        /// Control.
+        #[arg(long, value_enum, default_value_t = Control::Load)]
+        control: Control,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The zero-force state (Section 5).
+    #[command(
+        name = "zero-force",
+        after_help = "Example:\n  thinjkr zero-force --rho 0.8 --json"
+    )]
+    ZeroForce {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The force–displacement curve including its unstable part.
+    #[command(
+        after_help = "Example:\n  thinjkr curve --rho 0.8 --points 100 --format csv > curve.csv"
+    )]
+    Curve {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        /// Number of points.
+        #[arg(long, default_value_t = 100)]
+        points: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+    },
+    /// Physical inputs (SI units), from flags or a TOML file with the same keys.
+    #[command(
+        after_help = "Example:\n  thinjkr physical --r1 0.01 --r2 0.01 --theta-deg 60 --h1 1e-4 --h2 1e-4 --g1 1e6 --g2 1e6 --work-of-adhesion 0.05 --force 0"
+    )]
+    Physical {
+        /// TOML file with r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion.
+        #[arg(long)]
+        file: Option<std::path::PathBuf>,
+        #[arg(long)]
+        r1: Option<f64>,
+        #[arg(long)]
+        r2: Option<f64>,
+        #[arg(long)]
+        theta_deg: Option<f64>,
+        #[arg(long)]
+        h1: Option<f64>,
+        #[arg(long)]
+        h2: Option<f64>,
+        #[arg(long)]
+        g1: Option<f64>,
+        #[arg(long)]
+        g2: Option<f64>,
+        #[arg(long)]
+        work_of_adhesion: Option<f64>,
+        /// Force [N] (the stable state); without it, pull-off.
+        #[arg(long, allow_hyphen_values = true)]
+        force: Option<f64>,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Control {
+    Load,
+    Displacement,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Format {
+    Csv,
+    Json,
+}
+
+fn json(st: &State) -> serde_json::Value {
+    serde_json::json!({
+        "delta": st.delta, "force": st.force, "a": st.a, "s": st.s, "b": st.b, "rho": st.rho,
+        "xi": st.xi, "p0": st.p0, "shape_a": st.shape_a, "shape_b": st.shape_b,
+        "bc_error": st.bc_error, "outside_stated_range": st.outside_stated_range,
+        "beyond_size_fold": st.beyond_size_fold,
+    })
+}
+
+fn show(label: &str, st: &State) {
+    println!(
+        "{label}: a = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, xi = {:.6}, p0 = {:.6}, error (14) = {:.4} %{}{}",
+        st.a,
+        st.s,
+        st.delta,
+        st.force,
+        st.xi,
+        st.p0,
+        100.0 * st.bc_error,
+        if st.outside_stated_range { " [rho < 0.8: outside the paper's stated range]" } else { "" },
+        if st.beyond_size_fold { " [beyond the contact-size fold]" } else { "" }
+    );
+}
+
+fn emit(label: &str, st: &State, as_json: bool) {
+    if as_json {
+        println!("{}", json(st));
+    } else {
+        show(label, st);
+    }
+}
+
+fn run(cli: Cli) -> thinjkr::Result<()> {
+    match cli.command {
+        None => {
+            let c = Contact::new(0.8)?;
+            println!("thinjkr: the paper's example, rho = R2/R1 = 0.8 (dimensionless, Eq. (17)); derived forms of (18), (26), (27)");
+            show("pull-off (load control)        ", &c.pull_off_load()?);
+            show(
+                "pull-off (displacement control)",
+                &c.pull_off_displacement()?,
+            );
+            show("zero force                     ", &c.zero_force()?);
+        }
+        Some(Command::Solve {
+            rho,
+            delta,
+            force,
+            a,
+            json: j,
+        }) => {
+            let c = Contact::new(rho)?;
+            match (delta, force, a) {
+                (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j),
+                (_, Some(f), _) => emit("state", &c.at_load(f)?, j),
+                (_, _, Some(a)) => {
+                    let states = c.at_contact_size(a)?;
+                    if states.is_empty() {
+                        return Err(thinjkr::Error::NoState(format!(
+                            "no state with a = {a} at rho = {rho}"
+                        )));
+                    }
+                    if j {
+                        let v: Vec<_> = states.iter().map(json).collect();
+                        println!(
+                            "{}",
+                            if v.len() == 1 {
+                                v[0].clone()
+                            } else {
+                                serde_json::Value::Array(v)
+                            }
+                        );
+                    } else {
+                        states.iter().for_each(|s| show("state", s));
+                    }
+                }
+                _ => {
+                    return Err(thinjkr::Error::NoState(
+                        "give one of --delta, --force, --a".into(),
+                    ))
+                }
+            }
+        }
+        Some(Command::PullOff {
+            rho,
+            control,
+            json: j,
+        }) => {
+            let c = Contact::new(rho)?;
+            let st = match control {
+                Control::Load => c.pull_off_load()?,
+                Control::Displacement => c.pull_off_displacement()?,
+            };
+            emit("pull-off", &st, j);
+        }
+        Some(Command::ZeroForce { rho, json: j }) => {
+            emit("zero force", &Contact::new(rho)?.zero_force()?, j)
+        }
+        Some(Command::Curve {
+            rho,
+            points,
+            format,
+        }) => {
+            let c = Contact::new(rho)?;
+            let curve = trace(&c, points, 20.0)?;
+            match format {
+                Format::Json => {
+                    println!("{}", serde_json::to_string(&curve).expect("serialisable"))
+                }
+                Format::Csv => {
+                    println!("delta,force,a,s,bc_error,beyond_size_fold");
+                    for st in &curve.states {
+                        println!(
+                            "{},{},{},{},{},{}",
+                            st.delta, st.force, st.a, st.s, st.bc_error, st.beyond_size_fold
+                        );
+                    }
+                }
+            }
+        }
+        Some(Command::Physical {
+            file,
+            r1,
+            r2,
+            theta_deg,
+            h1,
+            h2,
+            g1,
+            g2,
+            work_of_adhesion,
+            force,
+        }) => {
+            let cyl = match file {
+                Some(p) => {
+                    let text = std::fs::read_to_string(&p).map_err(|e| {
+                        thinjkr::Error::NoState(format!("cannot read {}: {e}", p.display()))
+                    })?;
+                    toml::from_str::<Cylinders>(&text).map_err(|e| {
+                        thinjkr::Error::NoState(format!("bad TOML in {}: {e}", p.display()))
+                    })?
+                }
+                None => {
+                    let need = |n: &'static str, v: Option<f64>| {
+                        v.ok_or(thinjkr::Error::OutOfRange {
+                            name: n,
+                            value: f64::NAN,
+                            range: "required",
+                        })
+                    };
+                    Cylinders {
+                        r1: need("r1", r1)?,
+                        r2: need("r2", r2)?,
+                        theta_deg: need("theta_deg", theta_deg)?,
+                        h1: need("h1", h1)?,
+                        h2: need("h2", h2)?,
+                        g1: need("g1", g1)?,
+                        g2: need("g2", g2)?,
+                        work_of_adhesion: need("work_of_adhesion", work_of_adhesion)?,
+                    }
+                }
+            };
+            let st = match force {
+                Some(f) => cyl.at_load(f)?,
+                None => cyl.pull_off()?,
+            };
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&st).expect("serialisable")
+            );
+        }
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("thinjkr: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,158 @@
+//! Physical units: a contact given by cylinder radii r₁, r₂, the crossing
+//! angle θ of their axes, coating thicknesses h₁, h₂, out-of-plane shear
+//! moduli G'₁, G'₂ and the work of adhesion Δγ, in SI units. Converted to the
+//! model's variables by (1) (R₁, R₂ from r₁, r₂, θ), (4) (m) and (17).
+//!
+//! Owns: [`Cylinders`], [`PhysicalState`]. May use: `contact`, `error`.
+
+use crate::contact::{Contact, State};
+use crate::error::{check_range, Result};
+use serde::{Deserialize, Serialize};
+
+/// Two coated cylinders in SI units.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Cylinders {
+    /// Radius r₁ of cylinder 1 [m].
+    pub r1: f64,
+    /// Radius r₂ of cylinder 2 [m].
+    pub r2: f64,
+    /// Crossing angle θ between the axes [degrees], in (0, 90].
+    pub theta_deg: f64,
+    /// Coating thickness h₁ [m].
+    pub h1: f64,
+    /// Coating thickness h₂ [m].
+    pub h2: f64,
+    /// Out-of-plane shear modulus G'₁ [Pa].
+    pub g1: f64,
+    /// Out-of-plane shear modulus G'₂ [Pa].
+    pub g2: f64,
+    /// Work of adhesion Δγ [J/m²].
+    pub work_of_adhesion: f64,
+}
+
+/// The derived model parameters of a [`Cylinders`] contact.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Scales {
+    /// Principal radius R₁ ≥ R₂ of the gap (1) [m].
+    pub big_r1: f64,
+    /// Principal radius R₂ [m].
+    pub big_r2: f64,
+    /// ρ = R₂/R₁ (21).
+    pub rho: f64,
+    /// m of (4) [Pa/m³].
+    pub m: f64,
+    /// Length scale L = (2R₁²Δγ/m)^(1/6) of (17) [m].
+    pub length: f64,
+    /// Approach scale (2Δγ/(mR₁))^(1/3) of (17) [m].
+    pub approach: f64,
+    /// Force scale 2R₁Δγ of (17) [N].
+    pub force: f64,
+    /// Pressure scale √(2mΔγ) L [Pa].
+    pub pressure: f64,
+}
+
+/// A state in SI units.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PhysicalState {
+    /// The dimensionless state.
+    pub state: State,
+    /// Major semi-axis a [m].
+    pub a: f64,
+    /// Minor semi-axis b [m].
+    pub b: f64,
+    /// Approach δ [m].
+    pub delta: f64,
+    /// Force F [N].
+    pub force: f64,
+    /// Maximum pressure p₀ [Pa].
+    pub p0: f64,
+    /// max(h₁, h₂)/a: the asymptotic model's small parameter.
+    pub h_over_a: f64,
+}
+
+fn positive(name: &'static str, v: f64) -> Result<f64> {
+    check_range(name, v, v > 0.0, "finite and > 0")
+}
+
+impl Cylinders {
+    /// Validate the inputs and compute R₁, R₂, ρ, m and the scales of (17).
+    /// 1/R₁ + 1/R₂ = 1/r₁ + 1/r₂ and R₁R₂ = r₁r₂/sin²θ, with R₂ ≤ R₁.
+    pub fn scales(&self) -> Result<Scales> {
+        let r1 = positive("r1", self.r1)?;
+        let r2 = positive("r2", self.r2)?;
+        let th = check_range(
+            "theta_deg",
+            self.theta_deg,
+            self.theta_deg > 0.0 && self.theta_deg <= 90.0,
+            "(0, 90] degrees",
+        )?;
+        let h1 = positive("h1", self.h1)?;
+        let h2 = positive("h2", self.h2)?;
+        let g1 = positive("g1", self.g1)?;
+        let g2 = positive("g2", self.g2)?;
+        let dg = positive("work_of_adhesion", self.work_of_adhesion)?;
+        let sin2 = th.to_radians().sin().powi(2);
+        // curvatures k = 1/R are the roots of k² − (1/r1 + 1/r2) k + sin²θ/(r1 r2) = 0
+        let sum = 1.0 / r1 + 1.0 / r2;
+        let prod = sin2 / (r1 * r2);
+        let disc = (sum * sum - 4.0 * prod).max(0.0).sqrt();
+        let (k_small, k_big) = (0.5 * (sum - disc), 0.5 * (sum + disc));
+        let big_r1 = 1.0 / k_small;
+        let big_r2 = 1.0 / k_big;
+        let m = 1.0 / (h1.powi(3) / (3.0 * g1) + h2.powi(3) / (3.0 * g2));
+        let length = (2.0 * big_r1 * big_r1 * dg / m).powf(1.0 / 6.0);
+        Ok(Scales {
+            big_r1,
+            big_r2,
+            rho: (big_r2 / big_r1).min(1.0),
+            m,
+            length,
+            approach: (2.0 * dg / (m * big_r1)).cbrt(),
+            force: 2.0 * big_r1 * dg,
+            pressure: (2.0 * m * dg).sqrt() * length,
+        })
+    }
+
+    /// The dimensionless model for this contact.
+    pub fn contact(&self) -> Result<(Contact, Scales)> {
+        let sc = self.scales()?;
+        Ok((Contact::new(sc.rho)?, sc))
+    }
+
+    /// Convert a dimensionless state to SI units.
+    pub fn to_physical(&self, sc: &Scales, st: State) -> PhysicalState {
+        PhysicalState {
+            state: st,
+            a: st.a * sc.length,
+            b: st.b * sc.length,
+            delta: st.delta * sc.approach,
+            force: st.force * sc.force,
+            p0: st.p0 * sc.pressure,
+            h_over_a: self.h1.max(self.h2) / (st.a * sc.length),
+        }
+    }
+
+    /// The state at approach `delta` [m].
+    pub fn at_displacement(&self, delta: f64) -> Result<PhysicalState> {
+        let (c, sc) = self.contact()?;
+        Ok(self.to_physical(
+            &sc,
+            c.at_displacement(check_range("delta", delta, true, "finite")? / sc.approach)?,
+        ))
+    }
+
+    /// The stable state at force `force` [N].
+    pub fn at_load(&self, force: f64) -> Result<PhysicalState> {
+        let (c, sc) = self.contact()?;
+        Ok(self.to_physical(
+            &sc,
+            c.at_load(check_range("force", force, true, "finite")? / sc.force)?,
+        ))
+    }
+
+    /// Pull-off under load control.
+    pub fn pull_off(&self) -> Result<PhysicalState> {
+        let (c, sc) = self.contact()?;
+        Ok(self.to_physical(&sc, c.pull_off_load()?))
+    }
+}
