@@ -14,6 +14,7 @@ pub mod contact;
 pub mod curve;
 pub mod error;
 #[allow(missing_docs)]
+#[rustfmt::skip]
 pub mod generated;
 pub mod limits;
 pub mod model;

@@ -20,32 +20,19 @@ pub fn eta(s: f64) -> f64 {
     let t10 = s.powi(7);
     let t11 = s.powi(9);
     (-0.1111111111111111
-        * ((t0 * t1)
-            + (18.0 * t0 * t1 * t2)
-            + (111.0 * t0 * t1 * t3)
-            + (356.0 * t0 * t1 * t4)
-            + (663.0 * t0 * t1 * s.powi(8))
-            + (650.0 * t0 * t1 * s.powi(10))
-            + (249.0 * t0 * t1 * s.powi(12))
-            - (8.0 * t1 * s * t6)
-            - (64.0 * t1 * t7 * t6)
-            - (176.0 * t1 * t8 * t6)
-            - (96.0 * t1 * t8 * t9)
-            - (224.0 * t1 * t10 * t6)
-            - (288.0 * t1 * t10 * t9)
-            - (72.0 * t1 * t11 * t6)
-            - (384.0 * t1 * t11 * t9)
+        * ((t0 * t1) + (18.0 * t0 * t1 * t2) + (111.0 * t0 * t1 * t3)
+            + (356.0 * t0 * t1 * t4) + (663.0 * t0 * t1 * s.powi(8))
+            + (650.0 * t0 * t1 * s.powi(10)) + (249.0 * t0 * t1 * s.powi(12))
+            - (8.0 * t1 * s * t6) - (64.0 * t1 * t7 * t6) - (176.0 * t1 * t8 * t6)
+            - (96.0 * t1 * t8 * t9) - (224.0 * t1 * t10 * t6) - (288.0 * t1 * t10 * t9)
+            - (72.0 * t1 * t11 * t6) - (384.0 * t1 * t11 * t9)
             + (32.0 * t1 * s.powi(11) * t6))
-        / (s * (-1.0 + s)
-            * (1.0 + s)
-            * t5
+        / (s * (-1.0 + s) * (1.0 + s) * t5
             * ((1.0 - (2.0 * t0 * s * t6) + (3.0 * t2)).sqrt()
                 * (1.0 - (2.0 * t0 * s * t6) + (3.0 * t2)))
             * (1.0 - (t0 * s * t6) + t2).sqrt()
             * (1.0 - (2.0 * t0 * s * t6) - (6.0 * t0 * t7 * t6) - (8.0 * t0 * t8 * t6)
-                + (5.0 * t2)
-                + (15.0 * t3)
-                + (11.0 * t4))
+                + (5.0 * t2) + (15.0 * t3) + (11.0 * t4))
                 .sqrt()))
 }
 /// dη/ds, derivative of Eq. (16).
@@ -63,9 +50,7 @@ pub fn eta_s(s: f64) -> f64 {
     let t8 = s.powi(4);
     let t9 = s.powi(6);
     let t10 = (1.0 - (2.0 * t0 * s * t4) - (6.0 * t0 * t6 * t4) - (8.0 * t0 * t7 * t4)
-        + (5.0 * t2)
-        + (15.0 * t8)
-        + (11.0 * t9));
+        + (5.0 * t2) + (15.0 * t8) + (11.0 * t9));
     let t11 = (1.0 - (2.0 * t0 * s * t4) + (3.0 * t2));
     let t12 = (t3.sqrt() * t3);
     let t13 = (t3.sqrt() * t3.powi(2));
@@ -165,109 +150,66 @@ pub fn eta_s(s: f64) -> f64 {
             - (58224.0 * t0 * t1 * t20 * t4 * t11 * t5)
             - (1792.0 * t0 * t1 * t20 * t12 * t11 * t5)
             - (16178.0 * t0 * t1 * s.powi(22) * t4 * t11 * t5)
-            + (2.0 * t0 * t1 * t4 * t11 * t5 * t10)
-            - (12.0 * t1 * s * t3 * t5 * t10)
-            - (4.0 * t1 * s * t3 * t11 * t5)
-            - (2.0 * t1 * s * t3 * t11 * t10)
-            - (360.0 * t1 * t6 * t3 * t5 * t10)
-            - (188.0 * t1 * t6 * t3 * t11 * t5)
-            + (256.0 * t1 * t6 * t3 * t11 * t5 * t10)
-            - (52.0 * t1 * t6 * t3 * t11 * t10)
-            - (12.0 * t1 * t6 * t5 * t10)
-            - (4.0 * t1 * t6 * t11 * t5)
-            + (16.0 * t1 * t6 * t11 * t5 * t10)
-            - (2.0 * t1 * t6 * t11 * t10)
-            - (2472.0 * t1 * t7 * t3 * t5 * t10)
-            - (2288.0 * t1 * t7 * t3 * t11 * t5)
+            + (2.0 * t0 * t1 * t4 * t11 * t5 * t10) - (12.0 * t1 * s * t3 * t5 * t10)
+            - (4.0 * t1 * s * t3 * t11 * t5) - (2.0 * t1 * s * t3 * t11 * t10)
+            - (360.0 * t1 * t6 * t3 * t5 * t10) - (188.0 * t1 * t6 * t3 * t11 * t5)
+            + (256.0 * t1 * t6 * t3 * t11 * t5 * t10) - (52.0 * t1 * t6 * t3 * t11 * t10)
+            - (12.0 * t1 * t6 * t5 * t10) - (4.0 * t1 * t6 * t11 * t5)
+            + (16.0 * t1 * t6 * t11 * t5 * t10) - (2.0 * t1 * t6 * t11 * t10)
+            - (2472.0 * t1 * t7 * t3 * t5 * t10) - (2288.0 * t1 * t7 * t3 * t11 * t5)
             + (1472.0 * t1 * t7 * t3 * t11 * t5 * t10)
-            - (348.0 * t1 * t7 * t3 * t11 * t10)
-            - (216.0 * t1 * t7 * t5 * t10)
-            - (84.0 * t1 * t7 * t11 * t5)
-            + (128.0 * t1 * t7 * t11 * t5 * t10)
-            - (36.0 * t1 * t7 * t11 * t10)
-            + (768.0 * t1 * t7 * t21 * t11 * t5 * t10)
-            - (7080.0 * t1 * t22 * t3 * t5 * t10)
-            - (12800.0 * t1 * t22 * t3 * t11 * t5)
+            - (348.0 * t1 * t7 * t3 * t11 * t10) - (216.0 * t1 * t7 * t5 * t10)
+            - (84.0 * t1 * t7 * t11 * t5) + (128.0 * t1 * t7 * t11 * t5 * t10)
+            - (36.0 * t1 * t7 * t11 * t10) + (768.0 * t1 * t7 * t21 * t11 * t5 * t10)
+            - (7080.0 * t1 * t22 * t3 * t5 * t10) - (12800.0 * t1 * t22 * t3 * t11 * t5)
             + (3520.0 * t1 * t22 * t3 * t11 * t5 * t10)
-            - (1012.0 * t1 * t22 * t3 * t11 * t10)
-            - (1320.0 * t1 * t22 * t5 * t10)
-            - (672.0 * t1 * t22 * t11 * t5)
-            + (336.0 * t1 * t22 * t11 * t5 * t10)
-            - (220.0 * t1 * t22 * t11 * t10)
-            - (1728.0 * t1 * t22 * t21 * t5 * t10)
+            - (1012.0 * t1 * t22 * t3 * t11 * t10) - (1320.0 * t1 * t22 * t5 * t10)
+            - (672.0 * t1 * t22 * t11 * t5) + (336.0 * t1 * t22 * t11 * t5 * t10)
+            - (220.0 * t1 * t22 * t11 * t10) - (1728.0 * t1 * t22 * t21 * t5 * t10)
             - (960.0 * t1 * t22 * t21 * t11 * t5)
             + (3456.0 * t1 * t22 * t21 * t11 * t5 * t10)
-            - (192.0 * t1 * t22 * t21 * t11 * t10)
-            - (9504.0 * t1 * t23 * t3 * t5 * t10)
+            - (192.0 * t1 * t22 * t21 * t11 * t10) - (9504.0 * t1 * t23 * t3 * t5 * t10)
             - (39080.0 * t1 * t23 * t3 * t11 * t5)
             + (2880.0 * t1 * t23 * t3 * t11 * t5 * t10)
-            - (1424.0 * t1 * t23 * t3 * t11 * t10)
-            - (4056.0 * t1 * t23 * t5 * t10)
-            - (2960.0 * t1 * t23 * t11 * t5)
-            + (320.0 * t1 * t23 * t11 * t5 * t10)
-            - (676.0 * t1 * t23 * t11 * t10)
-            - (5184.0 * t1 * t23 * t21 * t5 * t10)
+            - (1424.0 * t1 * t23 * t3 * t11 * t10) - (4056.0 * t1 * t23 * t5 * t10)
+            - (2960.0 * t1 * t23 * t11 * t5) + (320.0 * t1 * t23 * t11 * t5 * t10)
+            - (676.0 * t1 * t23 * t11 * t10) - (5184.0 * t1 * t23 * t21 * t5 * t10)
             - (8640.0 * t1 * t23 * t21 * t11 * t5)
             + (6144.0 * t1 * t23 * t21 * t11 * t5 * t10)
-            - (576.0 * t1 * t23 * t21 * t11 * t10)
-            - (1656.0 * t1 * t24 * t3 * t5 * t10)
+            - (576.0 * t1 * t23 * t21 * t11 * t10) - (1656.0 * t1 * t24 * t3 * t5 * t10)
             - (67736.0 * t1 * t24 * t3 * t11 * t5)
             + (192.0 * t1 * t24 * t3 * t11 * t5 * t10)
-            - (380.0 * t1 * t24 * t3 * t11 * t10)
-            - (6624.0 * t1 * t24 * t5 * t10)
-            - (8024.0 * t1 * t24 * t11 * t5)
-            - (208.0 * t1 * t24 * t11 * t5 * t10)
-            - (1104.0 * t1 * t24 * t11 * t10)
-            - (5184.0 * t1 * t24 * t21 * t5 * t10)
+            - (380.0 * t1 * t24 * t3 * t11 * t10) - (6624.0 * t1 * t24 * t5 * t10)
+            - (8024.0 * t1 * t24 * t11 * t5) - (208.0 * t1 * t24 * t11 * t5 * t10)
+            - (1104.0 * t1 * t24 * t11 * t10) - (5184.0 * t1 * t24 * t21 * t5 * t10)
             - (26496.0 * t1 * t24 * t21 * t11 * t5)
             - (1152.0 * t1 * t24 * t21 * t11 * t5 * t10)
-            - (576.0 * t1 * t24 * t21 * t11 * t10)
-            + (9576.0 * t1 * t25 * t3 * t5 * t10)
+            - (576.0 * t1 * t24 * t21 * t11 * t10) + (9576.0 * t1 * t25 * t3 * t5 * t10)
             - (54848.0 * t1 * t25 * t3 * t11 * t5)
             - (2304.0 * t1 * t25 * t3 * t11 * t5 * t10)
-            + (1340.0 * t1 * t25 * t3 * t11 * t10)
-            - (3528.0 * t1 * t25 * t5 * t10)
-            - (13208.0 * t1 * t25 * t11 * t5)
-            - (512.0 * t1 * t25 * t11 * t5 * t10)
-            - (588.0 * t1 * t25 * t11 * t10)
-            + (5184.0 * t1 * t25 * t21 * t5 * t10)
+            + (1340.0 * t1 * t25 * t3 * t11 * t10) - (3528.0 * t1 * t25 * t5 * t10)
+            - (13208.0 * t1 * t25 * t11 * t5) - (512.0 * t1 * t25 * t11 * t5 * t10)
+            - (588.0 * t1 * t25 * t11 * t10) + (5184.0 * t1 * t25 * t21 * t5 * t10)
             - (33408.0 * t1 * t25 * t21 * t11 * t5)
             - (3072.0 * t1 * t25 * t21 * t11 * t5 * t10)
-            + (576.0 * t1 * t25 * t21 * t11 * t10)
-            + (9096.0 * t1 * t26 * t3 * t5 * t10)
+            + (576.0 * t1 * t25 * t21 * t11 * t10) + (9096.0 * t1 * t26 * t3 * t5 * t10)
             + (16928.0 * t1 * t26 * t3 * t11 * t5)
             - (1920.0 * t1 * t26 * t3 * t11 * t5 * t10)
-            + (1444.0 * t1 * t26 * t3 * t11 * t10)
-            + (4968.0 * t1 * t26 * t5 * t10)
-            - (10704.0 * t1 * t26 * t11 * t5)
-            - (144.0 * t1 * t26 * t11 * t5 * t10)
-            + (828.0 * t1 * t26 * t11 * t10)
-            + (6912.0 * t1 * t26 * t21 * t5 * t10)
-            + (2112.0 * t1 * t26 * t21 * t11 * t5)
-            + (768.0 * t1 * t26 * t21 * t11 * t10)
-            + (2412.0 * t1 * t27 * t3 * t5 * t10)
-            + (78412.0 * t1 * t27 * t3 * t11 * t5)
-            + (434.0 * t1 * t27 * t3 * t11 * t10)
-            + (7800.0 * t1 * t27 * t5 * t10)
-            + (2864.0 * t1 * t27 * t11 * t5)
-            + (64.0 * t1 * t27 * t11 * t5 * t10)
-            + (1300.0 * t1 * t27 * t11 * t10)
-            + (42048.0 * t1 * t27 * t21 * t11 * t5)
-            + (63796.0 * t1 * t28 * t3 * t11 * t5)
-            + (2988.0 * t1 * t28 * t5 * t10)
-            + (15420.0 * t1 * t28 * t11 * t5)
-            + (498.0 * t1 * t28 * t11 * t10)
+            + (1444.0 * t1 * t26 * t3 * t11 * t10) + (4968.0 * t1 * t26 * t5 * t10)
+            - (10704.0 * t1 * t26 * t11 * t5) - (144.0 * t1 * t26 * t11 * t5 * t10)
+            + (828.0 * t1 * t26 * t11 * t10) + (6912.0 * t1 * t26 * t21 * t5 * t10)
+            + (2112.0 * t1 * t26 * t21 * t11 * t5) + (768.0 * t1 * t26 * t21 * t11 * t10)
+            + (2412.0 * t1 * t27 * t3 * t5 * t10) + (78412.0 * t1 * t27 * t3 * t11 * t5)
+            + (434.0 * t1 * t27 * t3 * t11 * t10) + (7800.0 * t1 * t27 * t5 * t10)
+            + (2864.0 * t1 * t27 * t11 * t5) + (64.0 * t1 * t27 * t11 * t5 * t10)
+            + (1300.0 * t1 * t27 * t11 * t10) + (42048.0 * t1 * t27 * t21 * t11 * t5)
+            + (63796.0 * t1 * t28 * t3 * t11 * t5) + (2988.0 * t1 * t28 * t5 * t10)
+            + (15420.0 * t1 * t28 * t11 * t5) + (498.0 * t1 * t28 * t11 * t10)
             + (25344.0 * t1 * t28 * t21 * t11 * t5)
-            + (17808.0 * t1 * t29 * t3 * t11 * t5)
-            + (13388.0 * t1 * t29 * t11 * t5)
+            + (17808.0 * t1 * t29 * t3 * t11 * t5) + (13388.0 * t1 * t29 * t11 * t5)
             + (3984.0 * t1 * s.powi(23) * t11 * t5))
-        / (t2
-            * (-1.0 + s).powi(2)
-            * (1.0 + s).powi(2)
-            * t13
-            * (t11.sqrt() * t11.powi(2))
-            * (t5.sqrt() * t5)
-            * (t10.sqrt() * t10)))
+        / (t2 * (-1.0 + s).powi(2) * (1.0 + s).powi(2) * t13 * (t11.sqrt() * t11.powi(2))
+            * (t5.sqrt() * t5) * (t10.sqrt() * t10)))
 }
 /// Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
 #[inline]
@@ -286,41 +228,35 @@ pub fn bc_error(s: f64) -> f64 {
     let t10 = s.powi(4);
     let t11 = s.powi(6);
     let t12 = (1.0 - (2.0 * t0 * s * t3) - (6.0 * t0 * t8 * t3) - (8.0 * t0 * t9 * t3)
-        + (5.0 * t1)
-        + (15.0 * t10)
-        + (11.0 * t11));
+        + (5.0 * t1) + (15.0 * t10) + (11.0 * t11));
     let t13 = t12.sqrt();
     let t14 = 1.7320508075688772;
     let t15 = (t2.sqrt() * t2);
     let t16 = s.powi(7);
     let t17 = s.powi(9);
     (0.1111111111111111
-        * (-(18.0 * t0 * s * t3 * t5 * t7 * t13)
-            + (t0 * t14)
-            + (18.0 * t0 * t14 * t1)
-            + (111.0 * t0 * t14 * t10)
-            + (356.0 * t0 * t14 * t11)
-            + (663.0 * t0 * t14 * s.powi(8))
-            + (650.0 * t0 * t14 * s.powi(10))
-            + (249.0 * t0 * t14 * s.powi(12))
-            + (18.0 * t0 * t8 * t3 * t5 * t7 * t13)
-            - (8.0 * t14 * s * t3)
-            - (64.0 * t14 * t8 * t3)
-            - (176.0 * t14 * t9 * t3)
-            - (96.0 * t14 * t9 * t15)
-            - (224.0 * t14 * t16 * t3)
-            - (288.0 * t14 * t16 * t15)
-            - (72.0 * t14 * t17 * t3)
-            - (384.0 * t14 * t17 * t15)
-            + (32.0 * t14 * s.powi(11) * t3)
-            - (9.0 * t10 * t5 * t7 * t13)
-            + (9.0 * t5 * t7 * t13))
+        * (-(18.0 * t0 * s * t3 * t5 * t7 * t13) + (t0 * t14) + (18.0 * t0 * t14 * t1)
+            + (111.0 * t0 * t14 * t10) + (356.0 * t0 * t14 * t11)
+            + (663.0 * t0 * t14 * s.powi(8)) + (650.0 * t0 * t14 * s.powi(10))
+            + (249.0 * t0 * t14 * s.powi(12)) + (18.0 * t0 * t8 * t3 * t5 * t7 * t13)
+            - (8.0 * t14 * s * t3) - (64.0 * t14 * t8 * t3) - (176.0 * t14 * t9 * t3)
+            - (96.0 * t14 * t9 * t15) - (224.0 * t14 * t16 * t3)
+            - (288.0 * t14 * t16 * t15) - (72.0 * t14 * t17 * t3)
+            - (384.0 * t14 * t17 * t15) + (32.0 * t14 * s.powi(11) * t3)
+            - (9.0 * t10 * t5 * t7 * t13) + (9.0 * t5 * t7 * t13))
         / ((-1.0 + s) * (1.0 + s) * (1.0 - (2.0 * t0 * s * t3) + t1) * t5 * t7 * t13))
 }
 /// Residuals (19), (20) with η = η(s) and η' = dη/ds passed in.
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
-pub fn residuals_eta(abar: f64, s: f64, rho: f64, dbar: f64, eta: f64, eta_s: f64) -> [f64; 2] {
+pub fn residuals_eta(
+    abar: f64,
+    s: f64,
+    rho: f64,
+    dbar: f64,
+    eta: f64,
+    eta_s: f64,
+) -> [f64; 2] {
     let t0 = 1.4142135623730951;
     let t1 = s.powi(3);
     let t2 = s.powi(2);
@@ -331,27 +267,14 @@ pub fn residuals_eta(abar: f64, s: f64, rho: f64, dbar: f64, eta: f64, eta_s: f6
     let t7 = s.powi(6);
     [
         ((-2.0 + (8.0 * t0 * t1 * t4) - (18.0 * t2) - (2.0 * t2 * eta * abar * dbar)
-            + (t2 * eta * t5)
-            - (22.0 * t6)
-            - (8.0 * t6 * eta * abar * dbar)
-            + (2.0 * t6 * eta * t5)
-            - (6.0 * t7)
-            - (6.0 * t7 * eta * abar * dbar)
-            + (t7 * eta * t5))
-            / (t2 * eta * t3.powi(2))),
-        (((6.0 * rho)
-            - (12.0 * t0 * s * rho * t4)
-            - (24.0 * t0 * t1 * rho * t4)
-            - (4.0 * t0 * s.powi(5) * rho * t4)
-            - (6.0 * t2 * eta * abar * dbar * rho)
-            + (22.0 * t2 * rho)
-            - (8.0 * t6 * eta * abar * dbar * rho)
-            + (t6 * eta * t5)
-            + (18.0 * t6 * rho)
-            - (2.0 * t7 * eta * abar * dbar * rho)
-            + (2.0 * t7 * eta * t5)
-            + (2.0 * t7 * rho)
-            + (s.powi(8) * eta * t5))
+            + (t2 * eta * t5) - (22.0 * t6) - (8.0 * t6 * eta * abar * dbar)
+            + (2.0 * t6 * eta * t5) - (6.0 * t7) - (6.0 * t7 * eta * abar * dbar)
+            + (t7 * eta * t5)) / (t2 * eta * t3.powi(2))),
+        (((6.0 * rho) - (12.0 * t0 * s * rho * t4) - (24.0 * t0 * t1 * rho * t4)
+            - (4.0 * t0 * s.powi(5) * rho * t4) - (6.0 * t2 * eta * abar * dbar * rho)
+            + (22.0 * t2 * rho) - (8.0 * t6 * eta * abar * dbar * rho) + (t6 * eta * t5)
+            + (18.0 * t6 * rho) - (2.0 * t7 * eta * abar * dbar * rho)
+            + (2.0 * t7 * eta * t5) + (2.0 * t7 * rho) + (s.powi(8) * eta * t5))
             / (t6 * eta * t3.powi(2))),
     ]
 }
@@ -375,85 +298,51 @@ pub fn residuals_and_jacobian_eta(
     let t6 = s.powi(4);
     let t7 = s.powi(6);
     let t8 = (-2.0 + (8.0 * t0 * t1 * t4) - (18.0 * t2) - (2.0 * t2 * eta * abar * dbar)
-        + (t2 * eta * t5)
-        - (22.0 * t6)
-        - (8.0 * t6 * eta * abar * dbar)
-        + (2.0 * t6 * eta * t5)
-        - (6.0 * t7)
-        - (6.0 * t7 * eta * abar * dbar)
+        + (t2 * eta * t5) - (22.0 * t6) - (8.0 * t6 * eta * abar * dbar)
+        + (2.0 * t6 * eta * t5) - (6.0 * t7) - (6.0 * t7 * eta * abar * dbar)
         + (t7 * eta * t5));
     let t9 = s.powi(5);
     let t10 = s.powi(8);
-    let t11 = ((6.0 * rho)
-        - (12.0 * t0 * s * rho * t4)
-        - (24.0 * t0 * t1 * rho * t4)
-        - (4.0 * t0 * t9 * rho * t4)
-        - (6.0 * t2 * eta * abar * dbar * rho)
-        + (22.0 * t2 * rho)
-        - (8.0 * t6 * eta * abar * dbar * rho)
-        + (t6 * eta * t5)
-        + (18.0 * t6 * rho)
-        - (2.0 * t7 * eta * abar * dbar * rho)
-        + (2.0 * t7 * eta * t5)
-        + (2.0 * t7 * rho)
-        + (t10 * eta * t5));
+    let t11 = ((6.0 * rho) - (12.0 * t0 * s * rho * t4) - (24.0 * t0 * t1 * rho * t4)
+        - (4.0 * t0 * t9 * rho * t4) - (6.0 * t2 * eta * abar * dbar * rho)
+        + (22.0 * t2 * rho) - (8.0 * t6 * eta * abar * dbar * rho) + (t6 * eta * t5)
+        + (18.0 * t6 * rho) - (2.0 * t7 * eta * abar * dbar * rho)
+        + (2.0 * t7 * eta * t5) + (2.0 * t7 * rho) + (t10 * eta * t5));
     let t12 = abar.powi(2);
     [
         (t8 / (t2 * eta * t3.powi(2))),
         (t11 / (t6 * eta * t3.powi(2))),
         ((-(2.0 * t2 * eta * dbar) + (3.0 * t2 * eta * t12) - (8.0 * t6 * eta * dbar)
-            + (6.0 * t6 * eta * t12)
-            - (6.0 * t7 * eta * dbar)
-            + (3.0 * t7 * eta * t12))
+            + (6.0 * t6 * eta * t12) - (6.0 * t7 * eta * dbar) + (3.0 * t7 * eta * t12))
             / (t2 * eta * t3.powi(2))),
         ((eta_s
             * (((-(2.0 * t2 * abar * dbar) + (t2 * t5) - (8.0 * t6 * abar * dbar)
-                + (2.0 * t6 * t5)
-                - (6.0 * t7 * abar * dbar)
-                + (t7 * t5))
-                / (t2 * eta * t3.powi(2)))
-                - (t8 / (t2 * eta.powi(2) * t3.powi(2)))))
+                + (2.0 * t6 * t5) - (6.0 * t7 * abar * dbar) + (t7 * t5))
+                / (t2 * eta * t3.powi(2))) - (t8 / (t2 * eta.powi(2) * t3.powi(2)))))
             - (4.0 * t8 / (s * eta * t3.powi(3)))
-            + ((-(36.0 * s) - (4.0 * s * eta * abar * dbar)
-                + (2.0 * s * eta * t5)
-                + (24.0 * t0 * t2 * t4)
-                + (8.0 * t0 * t6 / (t4))
-                - (88.0 * t1)
-                - (32.0 * t1 * eta * abar * dbar)
-                + (8.0 * t1 * eta * t5)
-                - (36.0 * t9)
-                - (36.0 * t9 * eta * abar * dbar)
-                + (6.0 * t9 * eta * t5))
-                / (t2 * eta * t3.powi(2)))
-            - (2.0 * t8 / (t1 * eta * t3.powi(2)))),
-        ((-(6.0 * t2 * eta * dbar * rho) - (8.0 * t6 * eta * dbar * rho) + (3.0 * t6 * eta * t12)
-            - (2.0 * t7 * eta * dbar * rho)
-            + (6.0 * t7 * eta * t12)
-            + (3.0 * t10 * eta * t12))
+            + ((-(36.0 * s) - (4.0 * s * eta * abar * dbar) + (2.0 * s * eta * t5)
+                + (24.0 * t0 * t2 * t4) + (8.0 * t0 * t6 / (t4)) - (88.0 * t1)
+                - (32.0 * t1 * eta * abar * dbar) + (8.0 * t1 * eta * t5) - (36.0 * t9)
+                - (36.0 * t9 * eta * abar * dbar) + (6.0 * t9 * eta * t5))
+                / (t2 * eta * t3.powi(2))) - (2.0 * t8 / (t1 * eta * t3.powi(2)))),
+        ((-(6.0 * t2 * eta * dbar * rho) - (8.0 * t6 * eta * dbar * rho)
+            + (3.0 * t6 * eta * t12) - (2.0 * t7 * eta * dbar * rho)
+            + (6.0 * t7 * eta * t12) + (3.0 * t10 * eta * t12))
             / (t6 * eta * t3.powi(2))),
         ((eta_s
-            * (((-(6.0 * t2 * abar * dbar * rho) - (8.0 * t6 * abar * dbar * rho) + (t6 * t5)
-                - (2.0 * t7 * abar * dbar * rho)
-                + (2.0 * t7 * t5)
-                + (t10 * t5))
-                / (t6 * eta * t3.powi(2)))
+            * (((-(6.0 * t2 * abar * dbar * rho) - (8.0 * t6 * abar * dbar * rho)
+                + (t6 * t5) - (2.0 * t7 * abar * dbar * rho) + (2.0 * t7 * t5)
+                + (t10 * t5)) / (t6 * eta * t3.powi(2)))
                 - (t11 / (t6 * eta.powi(2) * t3.powi(2)))))
             - (4.0 * t11 / (t1 * eta * t3.powi(3)))
             + ((-(12.0 * s * eta * abar * dbar * rho) + (44.0 * s * rho)
-                - (12.0 * t0 * rho * t4)
-                - (72.0 * t0 * t2 * rho * t4)
-                - (12.0 * t0 * t2 * rho / (t4))
-                - (20.0 * t0 * t6 * rho * t4)
-                - (24.0 * t0 * t6 * rho / (t4))
-                - (4.0 * t0 * t7 * rho / (t4))
-                - (32.0 * t1 * eta * abar * dbar * rho)
-                + (4.0 * t1 * eta * t5)
-                + (72.0 * t1 * rho)
-                - (12.0 * t9 * eta * abar * dbar * rho)
-                + (12.0 * t9 * eta * t5)
-                + (12.0 * t9 * rho)
-                + (8.0 * s.powi(7) * eta * t5))
-                / (t6 * eta * t3.powi(2)))
+                - (12.0 * t0 * rho * t4) - (72.0 * t0 * t2 * rho * t4)
+                - (12.0 * t0 * t2 * rho / (t4)) - (20.0 * t0 * t6 * rho * t4)
+                - (24.0 * t0 * t6 * rho / (t4)) - (4.0 * t0 * t7 * rho / (t4))
+                - (32.0 * t1 * eta * abar * dbar * rho) + (4.0 * t1 * eta * t5)
+                + (72.0 * t1 * rho) - (12.0 * t9 * eta * abar * dbar * rho)
+                + (12.0 * t9 * eta * t5) + (12.0 * t9 * rho)
+                + (8.0 * s.powi(7) * eta * t5)) / (t6 * eta * t3.powi(2)))
             - (4.0 * t11 / (t9 * eta * t3.powi(2)))),
     ]
 }
@@ -474,10 +363,8 @@ pub fn residuals_d_dbar_eta(
     [
         ((-(2.0 * t0 * eta * abar) - (8.0 * t1 * eta * abar) - (6.0 * t2 * eta * abar))
             / (t0 * eta * (1.0 + t0).powi(2))),
-        ((-(6.0 * t0 * eta * abar * rho)
-            - (8.0 * t1 * eta * abar * rho)
-            - (2.0 * t2 * eta * abar * rho))
-            / (t1 * eta * (1.0 + t0).powi(2))),
+        ((-(6.0 * t0 * eta * abar * rho) - (8.0 * t1 * eta * abar * rho)
+            - (2.0 * t2 * eta * abar * rho)) / (t1 * eta * (1.0 + t0).powi(2))),
     ]
 }
 /// ξ from the first line of Eq. (15).
@@ -487,9 +374,9 @@ pub fn xi(abar: f64, s: f64, dbar: f64, eta: f64) -> f64 {
     let t0 = s.powi(2);
     let t1 = (1.0 + t0);
     let t2 = s.powi(4);
-    (0.5 * (1.0 - (2.0 * 1.4142135623730951 * s * t1.sqrt()) + (t0 * eta * abar * dbar) - t2
-        + (t2 * eta * abar * dbar))
-        / (t1.powi(2)))
+    (0.5
+        * (1.0 - (2.0 * 1.4142135623730951 * s * t1.sqrt()) + (t0 * eta * abar * dbar)
+            - t2 + (t2 * eta * abar * dbar)) / (t1.powi(2)))
 }
 /// F̄ of Eq. (18) in its derived form (the printed (18) lacks η(s); see docs/errata.md).
 #[inline]
@@ -508,8 +395,7 @@ pub fn force_bar(abar: f64, s: f64, dbar: f64, eta: f64) -> f64 {
             + (::core::f64::consts::PI * s * t2)
             + (::core::f64::consts::PI * s.powi(3) * eta * t5 * dbar)
             + (::core::f64::consts::PI * t6 * eta * t5 * dbar)
-            - (::core::f64::consts::PI * t6 * t2))
-        / (eta * t3.powi(2)))
+            - (::core::f64::consts::PI * t6 * t2)) / (eta * t3.powi(2)))
 }
 /// F̄ in terms of ξ: Eq. (8) with (10), (13), (17).
 #[inline]
@@ -521,8 +407,7 @@ pub fn force_bar_xi(abar: f64, s: f64, xi: f64, eta: f64) -> f64 {
     (-0.020833333333333332
         * ((4.0 * 1.4142135623730951 * ::core::f64::consts::PI * t0 * t1 * t2.sqrt())
             - (8.0 * ::core::f64::consts::PI * xi * s * t1)
-            - (8.0 * ::core::f64::consts::PI * xi * s.powi(3) * t1))
-        / (eta * t2))
+            - (8.0 * ::core::f64::consts::PI * xi * s.powi(3) * t1)) / (eta * t2))
 }
 /// p₀/(√(2mΔγ) L) with L = (2R₁²Δγ/m)^(1/6): Section 6's p₀ = √(2mΔγ) a ξ/(2η).
 #[inline]
@@ -548,22 +433,14 @@ pub fn laplace_system(
     let t1 = a.powi(2);
     [
         (-1.0
-            * ((2.0 * p0 * t0)
-                + (2.0 * t1 * shape_a * p0 * t0)
-                + (2.0 * t1 * p0)
-                + (2.0 * t1 * p0 * t0 * shape_b)
-                - (t1 * t0 * m * delta))
-            / (t1 * t0)),
-        (0.5 * ((24.0 * shape_a * p0 * t0 * r1)
-            + (4.0 * p0 * t0 * shape_b * r1)
-            + (4.0 * t1 * shape_a * p0 * r1)
-            - (t1 * t0 * m))
-            / (t1 * t0 * r1)),
-        (0.5 * ((4.0 * p0 * t0 * shape_b * r2)
-            + (4.0 * t1 * shape_a * p0 * r2)
-            + (24.0 * t1 * p0 * shape_b * r2)
-            - (t1 * t0 * m))
-            / (t1 * t0 * r2)),
+            * ((2.0 * p0 * t0) + (2.0 * t1 * shape_a * p0 * t0) + (2.0 * t1 * p0)
+                + (2.0 * t1 * p0 * t0 * shape_b) - (t1 * t0 * m * delta)) / (t1 * t0)),
+        (0.5
+            * ((24.0 * shape_a * p0 * t0 * r1) + (4.0 * p0 * t0 * shape_b * r1)
+                + (4.0 * t1 * shape_a * p0 * r1) - (t1 * t0 * m)) / (t1 * t0 * r1)),
+        (0.5
+            * ((4.0 * p0 * t0 * shape_b * r2) + (4.0 * t1 * shape_a * p0 * r2)
+                + (24.0 * t1 * p0 * shape_b * r2) - (t1 * t0 * m)) / (t1 * t0 * r2)),
     ]
 }
 /// The force (8): ∫∫ p over the ellipse (7), shape parameters free.
@@ -578,7 +455,14 @@ pub fn force(p0: f64, a: f64, b: f64, shape_a: f64, shape_b: f64) -> f64 {
 /// ∂p/∂ν on Γ₀, Eq. (9), at u = sin²t, shape parameters free.
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
-pub fn normal_derivative(p0: f64, a: f64, b: f64, shape_a: f64, shape_b: f64, u: f64) -> f64 {
+pub fn normal_derivative(
+    p0: f64,
+    a: f64,
+    b: f64,
+    shape_a: f64,
+    shape_b: f64,
+    u: f64,
+) -> f64 {
     let t0 = b.powi(2);
     let t1 = b.powi(4);
     let t2 = u.powi(2);
@@ -586,14 +470,10 @@ pub fn normal_derivative(p0: f64, a: f64, b: f64, shape_a: f64, shape_b: f64, u:
     let t4 = a.powi(4);
     (-2.0
         * ((p0 * t0) - (p0 * t0 * u) - (p0 * t1 * shape_b * u) + (p0 * t1 * shape_b * t2)
-            - (t3 * shape_a * p0 * t0)
-            + (2.0 * t3 * shape_a * p0 * t0 * u)
-            - (t3 * shape_a * p0 * t0 * t2)
-            + (t3 * p0 * u)
-            - (t3 * p0 * t0 * shape_b * t2)
-            - (t4 * shape_a * p0 * u)
-            + (t4 * shape_a * p0 * t2))
-        / (a * b * ((t3 * u) + t0 - (t0 * u)).sqrt()))
+            - (t3 * shape_a * p0 * t0) + (2.0 * t3 * shape_a * p0 * t0 * u)
+            - (t3 * shape_a * p0 * t0 * t2) + (t3 * p0 * u)
+            - (t3 * p0 * t0 * shape_b * t2) - (t4 * shape_a * p0 * u)
+            + (t4 * shape_a * p0 * t2)) / (a * b * ((t3 * u) + t0 - (t0 * u)).sqrt()))
 }
 /// ∂p/∂ν on Γ₀ after collocation, Eq. (11), at u = sin²t.
 #[inline]
@@ -606,13 +486,11 @@ pub fn normal_derivative_collocated(p0: f64, a: f64, s: f64, xi: f64, u: f64) ->
     let t4 = s.powi(3);
     let t5 = (1.0 + t0);
     let t6 = t5.sqrt();
-    (2.0 * ((p0 * u) - (2.0 * p0 * u * t0) - (3.0 * p0 * u * t1) - (2.0 * p0 * t2)
-        + (2.0 * p0 * t2 * t1)
-        + (p0 * t0)
-        + (p0 * t1)
-        + (2.0 * t3 * p0 * u * t4 * t6)
-        + (2.0 * t3 * p0 * t2 * s * t6)
-        - (2.0 * t3 * p0 * t2 * t4 * t6))
+    (2.0
+        * ((p0 * u) - (2.0 * p0 * u * t0) - (3.0 * p0 * u * t1) - (2.0 * p0 * t2)
+            + (2.0 * p0 * t2 * t1) + (p0 * t0) + (p0 * t1)
+            + (2.0 * t3 * p0 * u * t4 * t6) + (2.0 * t3 * p0 * t2 * s * t6)
+            - (2.0 * t3 * p0 * t2 * t4 * t6))
         / (a * xi * s * t5 * (u - (u * t0) + t0).sqrt()))
 }
 /// The shape parameters (A, B) from the collocation, Eq. (10).
@@ -646,27 +524,18 @@ pub fn pressure(x: f64, y: f64, p0: f64, a: f64, s: f64, xi: f64) -> f64 {
     let t10 = s.powi(6);
     let t11 = x.powi(4);
     let t12 = a.powi(4);
-    (0.5 * (-(2.0 * p0 * t0) + (2.0 * p0 * t0 * xi) + (2.0 * p0 * t0 * xi * t1)
-        - (2.0 * p0 * t0 * t1)
-        + (4.0 * t2 * p0 * t0 * s * t4)
-        + (4.0 * t2 * t5 * p0 * t6 * t7 * t4)
-        - (4.0 * t2 * t8 * p0 * t6 * t7 * t4)
-        + (4.0 * t5 * p0 * t6 * xi * t1)
-        + (4.0 * t5 * p0 * t6 * xi * t9)
-        - (4.0 * t5 * t8 * p0 * xi * t9)
-        - (4.0 * t5 * t8 * p0 * xi * t10)
-        - (2.0 * t5 * t8 * p0 * t9)
-        - (2.0 * t5 * t8 * p0 * t10)
-        + (2.0 * t11 * p0 * xi * t9)
-        + (2.0 * t11 * p0 * xi * t10)
-        + (2.0 * t11 * p0 * t9)
-        + (2.0 * t11 * p0 * t10)
-        - (4.0 * t8 * p0 * t6 * xi * t1)
-        - (4.0 * t8 * p0 * t6 * xi * t9)
-        + (2.0 * t8 * p0 * t6 * t1)
-        + (2.0 * t8 * p0 * t6 * t9)
-        + (2.0 * t12 * p0 * xi * t9)
-        + (2.0 * t12 * p0 * xi * t10))
+    (0.5
+        * (-(2.0 * p0 * t0) + (2.0 * p0 * t0 * xi) + (2.0 * p0 * t0 * xi * t1)
+            - (2.0 * p0 * t0 * t1) + (4.0 * t2 * p0 * t0 * s * t4)
+            + (4.0 * t2 * t5 * p0 * t6 * t7 * t4) - (4.0 * t2 * t8 * p0 * t6 * t7 * t4)
+            + (4.0 * t5 * p0 * t6 * xi * t1) + (4.0 * t5 * p0 * t6 * xi * t9)
+            - (4.0 * t5 * t8 * p0 * xi * t9) - (4.0 * t5 * t8 * p0 * xi * t10)
+            - (2.0 * t5 * t8 * p0 * t9) - (2.0 * t5 * t8 * p0 * t10)
+            + (2.0 * t11 * p0 * xi * t9) + (2.0 * t11 * p0 * xi * t10)
+            + (2.0 * t11 * p0 * t9) + (2.0 * t11 * p0 * t10)
+            - (4.0 * t8 * p0 * t6 * xi * t1) - (4.0 * t8 * p0 * t6 * xi * t9)
+            + (2.0 * t8 * p0 * t6 * t1) + (2.0 * t8 * p0 * t6 * t9)
+            + (2.0 * t12 * p0 * xi * t9) + (2.0 * t12 * p0 * xi * t10))
         / (t12 * xi * t9 * t3))
 }
 /// The solution curve at fixed ρ, explicit in s: `[ā³, δ̄ ā]` (both residuals are linear in these); η passed in.
@@ -684,23 +553,13 @@ pub fn branch_eta(s: f64, rho: f64, eta: f64) -> [f64; 2] {
     let t8 = (t7 * rho);
     [
         (-12.0
-            * (rho - (t0 * s * rho * t3) - (6.0 * t0 * t4 * rho * t3) - (t0 * t5 * rho * t3)
-                + (7.0 * t1 * rho)
-                + (7.0 * t6 * rho)
-                + t8)
+            * (rho - (t0 * s * rho * t3) - (6.0 * t0 * t4 * rho * t3)
+                - (t0 * t5 * rho * t3) + (7.0 * t1 * rho) + (7.0 * t6 * rho) + t8)
             / (t1 * eta * t2 * (-(3.0 * rho) + t1 - (t1 * rho) + (3.0 * t6)))),
         (-1.0
-            * ((3.0 * rho)
-                - (6.0 * t0 * s * rho * t3)
-                - (12.0 * t0 * t4 * rho * t3)
-                - (2.0 * t0 * t5 * rho * t3)
-                - (4.0 * t0 * t5 * t3)
-                + t1
-                + (11.0 * t1 * rho)
-                + (9.0 * t6)
-                + (9.0 * t6 * rho)
-                + (11.0 * t7)
-                + t8
+            * ((3.0 * rho) - (6.0 * t0 * s * rho * t3) - (12.0 * t0 * t4 * rho * t3)
+                - (2.0 * t0 * t5 * rho * t3) - (4.0 * t0 * t5 * t3) + t1
+                + (11.0 * t1 * rho) + (9.0 * t6) + (9.0 * t6 * rho) + (11.0 * t7) + t8
                 + (3.0 * s.powi(8)))
             / (t1 * eta * t2 * (-(3.0 * rho) + t1 - (t1 * rho) + (3.0 * t6)))),
     ]

@@ -3,5 +3,5 @@
 //! One module per ansatz, each a set of straight-line `f64` functions derived
 //! symbolically by thinjkr-derive.
 
-pub mod apex45;
 pub mod paper;
+pub mod apex45;

@@ -10,8 +10,8 @@ pub fn eta(s: f64) -> f64 {
     let t0 = 1.7320508075688772;
     let t1 = s.powi(2);
     (0.2222222222222222
-        * (t0 + (2.0 * t0 * s) + (3.0 * t0 * t1) + (2.0 * t0 * s.powi(3)) + (t0 * s.powi(4)))
-        / (s * (1.0 + s) * (1.0 + s + t1).sqrt()))
+        * (t0 + (2.0 * t0 * s) + (3.0 * t0 * t1) + (2.0 * t0 * s.powi(3))
+            + (t0 * s.powi(4))) / (s * (1.0 + s) * (1.0 + s + t1).sqrt()))
 }
 /// dη/ds, derivative of Eq. (16).
 #[inline]
@@ -25,15 +25,9 @@ pub fn eta_s(s: f64) -> f64 {
     let t5 = s.powi(5);
     (-0.1111111111111111
         * ((t0 * s) + (4.0 * t0 * s * t2) + (2.0 * t0 * t2) + (5.0 * t0 * t1)
-            - (2.0 * t0 * t1 * t2)
-            + (11.0 * t0 * t3)
-            - (8.0 * t0 * t3 * t2)
-            + (15.0 * t0 * t4)
-            - (10.0 * t0 * t4 * t2)
-            + (13.0 * t0 * t5)
-            - (4.0 * t0 * t5 * t2)
-            + (7.0 * t0 * s.powi(6))
-            + (2.0 * t0 * s.powi(7)))
+            - (2.0 * t0 * t1 * t2) + (11.0 * t0 * t3) - (8.0 * t0 * t3 * t2)
+            + (15.0 * t0 * t4) - (10.0 * t0 * t4 * t2) + (13.0 * t0 * t5)
+            - (4.0 * t0 * t5 * t2) + (7.0 * t0 * s.powi(6)) + (2.0 * t0 * s.powi(7)))
         / (t1 * (1.0 + s).powi(2) * (t2.sqrt() * t2)))
 }
 /// Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
@@ -45,37 +39,32 @@ pub fn bc_error(s: f64) -> f64 {
     let t2 = t1.sqrt();
     let t3 = 1.7320508075688772;
     (0.1111111111111111
-        * (-(9.0 * s * t2)
-            + (2.0 * t3)
-            + (4.0 * t3 * s)
-            + (6.0 * t3 * t0)
-            + (4.0 * t3 * s.powi(3))
-            + (2.0 * t3 * s.powi(4))
-            - (9.0 * t0 * t2))
+        * (-(9.0 * s * t2) + (2.0 * t3) + (4.0 * t3 * s) + (6.0 * t3 * t0)
+            + (4.0 * t3 * s.powi(3)) + (2.0 * t3 * s.powi(4)) - (9.0 * t0 * t2))
         / (s * (1.0 + s) * t2))
 }
 /// Residuals (19), (20) with η = η(s) and η' = dη/ds passed in.
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
-pub fn residuals_eta(abar: f64, s: f64, rho: f64, dbar: f64, eta: f64, eta_s: f64) -> [f64; 2] {
+pub fn residuals_eta(
+    abar: f64,
+    s: f64,
+    rho: f64,
+    dbar: f64,
+    eta: f64,
+    eta_s: f64,
+) -> [f64; 2] {
     let t0 = s.powi(2);
     let t1 = abar.powi(3);
     let t2 = s.powi(3);
     let t3 = s.powi(4);
     [
-        ((-2.0 - (12.0 * t0) - (2.0 * t0 * eta * abar * dbar) + (t0 * eta * t1) + (4.0 * t2)
-            - (6.0 * t3)
-            - (6.0 * t3 * eta * abar * dbar)
-            + (t3 * eta * t1))
+        ((-2.0 - (12.0 * t0) - (2.0 * t0 * eta * abar * dbar) + (t0 * eta * t1)
+            + (4.0 * t2) - (6.0 * t3) - (6.0 * t3 * eta * abar * dbar) + (t3 * eta * t1))
             / (t0 * eta * (1.0 + t0))),
-        ((-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho)
-            - (6.0 * rho)
-            - (12.0 * t0 * rho)
-            - (2.0 * t2 * eta * abar * dbar * rho)
-            + (t2 * eta * t1)
-            - (2.0 * t3 * rho)
-            + (s.powi(5) * eta * t1))
-            / (t2 * eta * (1.0 + t0))),
+        ((-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho) - (6.0 * rho)
+            - (12.0 * t0 * rho) - (2.0 * t2 * eta * abar * dbar * rho) + (t2 * eta * t1)
+            - (2.0 * t3 * rho) + (s.powi(5) * eta * t1)) / (t2 * eta * (1.0 + t0))),
     ]
 }
 /// Residuals (19), (20) and their Jacobian with respect to (ā, s), side by side: `[r1, r2, ∂r1/∂ā, ∂r1/∂s, ∂r2/∂ā, ∂r2/∂s]`; η and η' passed in.
@@ -93,54 +82,36 @@ pub fn residuals_and_jacobian_eta(
     let t1 = abar.powi(3);
     let t2 = s.powi(3);
     let t3 = s.powi(4);
-    let t4 = (-2.0 - (12.0 * t0) - (2.0 * t0 * eta * abar * dbar) + (t0 * eta * t1) + (4.0 * t2)
-        - (6.0 * t3)
-        - (6.0 * t3 * eta * abar * dbar)
-        + (t3 * eta * t1));
+    let t4 = (-2.0 - (12.0 * t0) - (2.0 * t0 * eta * abar * dbar) + (t0 * eta * t1)
+        + (4.0 * t2) - (6.0 * t3) - (6.0 * t3 * eta * abar * dbar) + (t3 * eta * t1));
     let t5 = (1.0 + t0);
     let t6 = s.powi(5);
-    let t7 = (-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho)
-        - (6.0 * rho)
-        - (12.0 * t0 * rho)
-        - (2.0 * t2 * eta * abar * dbar * rho)
-        + (t2 * eta * t1)
-        - (2.0 * t3 * rho)
-        + (t6 * eta * t1));
+    let t7 = (-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho) - (6.0 * rho)
+        - (12.0 * t0 * rho) - (2.0 * t2 * eta * abar * dbar * rho) + (t2 * eta * t1)
+        - (2.0 * t3 * rho) + (t6 * eta * t1));
     let t8 = abar.powi(2);
     [
         (t4 / (t0 * eta * t5)),
         (t7 / (t2 * eta * t5)),
         ((-(2.0 * t0 * eta * dbar) + (3.0 * t0 * eta * t8) - (6.0 * t3 * eta * dbar)
-            + (3.0 * t3 * eta * t8))
-            / (t0 * eta * t5)),
+            + (3.0 * t3 * eta * t8)) / (t0 * eta * t5)),
         ((eta_s
-            * (((-(2.0 * t0 * abar * dbar) + (t0 * t1) - (6.0 * t3 * abar * dbar) + (t3 * t1))
-                / (t0 * eta * t5))
-                - (t4 / (t0 * eta.powi(2) * t5))))
+            * (((-(2.0 * t0 * abar * dbar) + (t0 * t1) - (6.0 * t3 * abar * dbar)
+                + (t3 * t1)) / (t0 * eta * t5)) - (t4 / (t0 * eta.powi(2) * t5))))
             - (2.0 * t4 / (s * eta * t5.powi(2)))
-            + ((-(24.0 * s) - (4.0 * s * eta * abar * dbar) + (2.0 * s * eta * t1) + (12.0 * t0)
-                - (24.0 * t2)
-                - (24.0 * t2 * eta * abar * dbar)
-                + (4.0 * t2 * eta * t1))
-                / (t0 * eta * t5))
+            + ((-(24.0 * s) - (4.0 * s * eta * abar * dbar) + (2.0 * s * eta * t1)
+                + (12.0 * t0) - (24.0 * t2) - (24.0 * t2 * eta * abar * dbar)
+                + (4.0 * t2 * eta * t1)) / (t0 * eta * t5))
             - (2.0 * t4 / (t2 * eta * t5))),
         ((-(6.0 * s * eta * dbar * rho) - (2.0 * t2 * eta * dbar * rho)
-            + (3.0 * t2 * eta * t8)
-            + (3.0 * t6 * eta * t8))
-            / (t2 * eta * t5)),
+            + (3.0 * t2 * eta * t8) + (3.0 * t6 * eta * t8)) / (t2 * eta * t5)),
         ((eta_s
             * (((-(6.0 * s * abar * dbar * rho) - (2.0 * t2 * abar * dbar * rho)
-                + (t2 * t1)
-                + (t6 * t1))
-                / (t2 * eta * t5))
-                - (t7 / (t2 * eta.powi(2) * t5))))
-            - (2.0 * t7 / (t0 * eta * t5.powi(2)))
+                + (t2 * t1) + (t6 * t1)) / (t2 * eta * t5))
+                - (t7 / (t2 * eta.powi(2) * t5)))) - (2.0 * t7 / (t0 * eta * t5.powi(2)))
             + ((-(24.0 * s * rho) - (6.0 * eta * abar * dbar * rho) + (4.0 * rho)
-                - (6.0 * t0 * eta * abar * dbar * rho)
-                + (3.0 * t0 * eta * t1)
-                - (8.0 * t2 * rho)
-                + (5.0 * t3 * eta * t1))
-                / (t2 * eta * t5))
+                - (6.0 * t0 * eta * abar * dbar * rho) + (3.0 * t0 * eta * t1)
+                - (8.0 * t2 * rho) + (5.0 * t3 * eta * t1)) / (t2 * eta * t5))
             - (3.0 * t7 / (t3 * eta * t5))),
     ]
 }
@@ -157,7 +128,8 @@ pub fn residuals_d_dbar_eta(
 ) -> [f64; 2] {
     let t0 = s.powi(2);
     [
-        ((-(2.0 * t0 * eta * abar) - (6.0 * s.powi(4) * eta * abar)) / (t0 * eta * (1.0 + t0))),
+        ((-(2.0 * t0 * eta * abar) - (6.0 * s.powi(4) * eta * abar))
+            / (t0 * eta * (1.0 + t0))),
         ((-(6.0 * s * eta * abar * rho) - (2.0 * s.powi(3) * eta * abar * rho))
             / (s.powi(3) * eta * (1.0 + t0))),
     ]
@@ -167,7 +139,7 @@ pub fn residuals_d_dbar_eta(
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn xi(abar: f64, s: f64, dbar: f64, eta: f64) -> f64 {
     let t0 = s.powi(2);
-    (0.5 * (-s - t0 + (t0 * eta * abar * dbar)) / (1.0 + t0))
+    (0.5 * (-s - t0 + (t0 * eta * abar * dbar)) / ((1.0 + t0)))
 }
 /// F̄ of Eq. (18) in its derived form (the printed (18) lacks η(s); see docs/errata.md).
 #[inline]
@@ -177,11 +149,11 @@ pub fn force_bar(abar: f64, s: f64, dbar: f64, eta: f64) -> f64 {
     let t1 = s.powi(2);
     let t2 = s.powi(3);
     (0.041666666666666664
-        * (-(::core::f64::consts::PI * s * t0) - (3.0 * ::core::f64::consts::PI * t1 * t0)
+        * (-(::core::f64::consts::PI * s * t0)
+            - (3.0 * ::core::f64::consts::PI * t1 * t0)
             + (2.0 * ::core::f64::consts::PI * t2 * eta * abar.powi(4) * dbar)
             - (3.0 * ::core::f64::consts::PI * t2 * t0)
-            - (::core::f64::consts::PI * s.powi(4) * t0))
-        / (eta * (1.0 + t1)))
+            - (::core::f64::consts::PI * s.powi(4) * t0)) / (eta * (1.0 + t1)))
 }
 /// F̄ in terms of ξ: Eq. (8) with (10), (13), (17).
 #[inline]
@@ -191,8 +163,7 @@ pub fn force_bar_xi(abar: f64, s: f64, xi: f64, eta: f64) -> f64 {
     (0.041666666666666664
         * ((4.0 * ::core::f64::consts::PI * xi * s * t0)
             - (::core::f64::consts::PI * s * t0)
-            - (::core::f64::consts::PI * s.powi(2) * t0))
-        / (eta))
+            - (::core::f64::consts::PI * s.powi(2) * t0)) / (eta))
 }
 /// p₀/(√(2mΔγ) L) with L = (2R₁²Δγ/m)^(1/6): Section 6's p₀ = √(2mΔγ) a ξ/(2η).
 #[inline]
@@ -218,22 +189,14 @@ pub fn laplace_system(
     let t1 = a.powi(2);
     [
         (-1.0
-            * ((2.0 * p0 * t0)
-                + (2.0 * t1 * shape_a * p0 * t0)
-                + (2.0 * t1 * p0)
-                + (2.0 * t1 * p0 * t0 * shape_b)
-                - (t1 * t0 * m * delta))
-            / (t1 * t0)),
-        (0.5 * ((24.0 * shape_a * p0 * t0 * r1)
-            + (4.0 * p0 * t0 * shape_b * r1)
-            + (4.0 * t1 * shape_a * p0 * r1)
-            - (t1 * t0 * m))
-            / (t1 * t0 * r1)),
-        (0.5 * ((4.0 * p0 * t0 * shape_b * r2)
-            + (4.0 * t1 * shape_a * p0 * r2)
-            + (24.0 * t1 * p0 * shape_b * r2)
-            - (t1 * t0 * m))
-            / (t1 * t0 * r2)),
+            * ((2.0 * p0 * t0) + (2.0 * t1 * shape_a * p0 * t0) + (2.0 * t1 * p0)
+                + (2.0 * t1 * p0 * t0 * shape_b) - (t1 * t0 * m * delta)) / (t1 * t0)),
+        (0.5
+            * ((24.0 * shape_a * p0 * t0 * r1) + (4.0 * p0 * t0 * shape_b * r1)
+                + (4.0 * t1 * shape_a * p0 * r1) - (t1 * t0 * m)) / (t1 * t0 * r1)),
+        (0.5
+            * ((4.0 * p0 * t0 * shape_b * r2) + (4.0 * t1 * shape_a * p0 * r2)
+                + (24.0 * t1 * p0 * shape_b * r2) - (t1 * t0 * m)) / (t1 * t0 * r2)),
     ]
 }
 /// The force (8): ∫∫ p over the ellipse (7), shape parameters free.
@@ -248,7 +211,14 @@ pub fn force(p0: f64, a: f64, b: f64, shape_a: f64, shape_b: f64) -> f64 {
 /// ∂p/∂ν on Γ₀, Eq. (9), at u = sin²t, shape parameters free.
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
-pub fn normal_derivative(p0: f64, a: f64, b: f64, shape_a: f64, shape_b: f64, u: f64) -> f64 {
+pub fn normal_derivative(
+    p0: f64,
+    a: f64,
+    b: f64,
+    shape_a: f64,
+    shape_b: f64,
+    u: f64,
+) -> f64 {
     let t0 = b.powi(2);
     let t1 = b.powi(4);
     let t2 = u.powi(2);
@@ -256,14 +226,10 @@ pub fn normal_derivative(p0: f64, a: f64, b: f64, shape_a: f64, shape_b: f64, u:
     let t4 = a.powi(4);
     (-2.0
         * ((p0 * t0) - (p0 * t0 * u) - (p0 * t1 * shape_b * u) + (p0 * t1 * shape_b * t2)
-            - (t3 * shape_a * p0 * t0)
-            + (2.0 * t3 * shape_a * p0 * t0 * u)
-            - (t3 * shape_a * p0 * t0 * t2)
-            + (t3 * p0 * u)
-            - (t3 * p0 * t0 * shape_b * t2)
-            - (t4 * shape_a * p0 * u)
-            + (t4 * shape_a * p0 * t2))
-        / (a * b * ((t3 * u) + t0 - (t0 * u)).sqrt()))
+            - (t3 * shape_a * p0 * t0) + (2.0 * t3 * shape_a * p0 * t0 * u)
+            - (t3 * shape_a * p0 * t0 * t2) + (t3 * p0 * u)
+            - (t3 * p0 * t0 * shape_b * t2) - (t4 * shape_a * p0 * u)
+            + (t4 * shape_a * p0 * t2)) / (a * b * ((t3 * u) + t0 - (t0 * u)).sqrt()))
 }
 /// ∂p/∂ν on Γ₀ after collocation, Eq. (11), at u = sin²t.
 #[inline]
@@ -273,11 +239,8 @@ pub fn normal_derivative_collocated(p0: f64, a: f64, s: f64, xi: f64, u: f64) ->
     let t1 = s.powi(3);
     let t2 = u.powi(2);
     (-2.0
-        * (-(p0 * u) + (2.0 * p0 * u * t0) - (p0 * u * t1) + (p0 * t2)
-            - (p0 * t2 * s)
-            - (p0 * t2 * t0)
-            + (p0 * t2 * t1)
-            - (p0 * t0))
+        * (-(p0 * u) + (2.0 * p0 * u * t0) - (p0 * u * t1) + (p0 * t2) - (p0 * t2 * s)
+            - (p0 * t2 * t0) + (p0 * t2 * t1) - (p0 * t0))
         / (a * xi * s * (u - (u * t0) + t0).sqrt()))
 }
 /// The shape parameters (A, B) from the collocation, Eq. (10).
@@ -285,10 +248,7 @@ pub fn normal_derivative_collocated(p0: f64, a: f64, s: f64, xi: f64, u: f64) ->
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn shape(a: f64, s: f64, xi: f64) -> [f64; 2] {
     let t0 = (1.0 / xi);
-    [
-        ((1.0 + t0) / (a.powi(2))),
-        ((xi + s) / (a.powi(2) * xi * s.powi(2))),
-    ]
+    [((1.0 + t0) / (a.powi(2))), ((xi + s) / (a.powi(2) * xi * s.powi(2)))]
 }
 /// The pressure (5) with the collocation (10): Section 6's p(x, y).
 #[inline]
@@ -302,19 +262,11 @@ pub fn pressure(x: f64, y: f64, p0: f64, a: f64, s: f64, xi: f64) -> f64 {
     let t5 = a.powi(2);
     let t6 = s.powi(4);
     let t7 = x.powi(4);
-    (((p0 * t0 * xi)
-        + (p0 * t0 * s)
-        + (2.0 * t1 * p0 * t2 * xi * t3)
-        + (t1 * p0 * t2 * t3)
-        + (t1 * p0 * t2 * t4)
-        - (2.0 * t1 * t5 * p0 * xi * t6)
-        - (t1 * t5 * p0 * t6)
-        + (t7 * p0 * xi * t6)
-        + (t7 * p0 * t6)
-        - (2.0 * t5 * p0 * t2 * xi * t3)
-        - (t5 * p0 * t2 * t4)
-        + (a.powi(4) * p0 * xi * t6))
-        / (a.powi(4) * xi * t6))
+    (((p0 * t0 * xi) + (p0 * t0 * s) + (2.0 * t1 * p0 * t2 * xi * t3)
+        + (t1 * p0 * t2 * t3) + (t1 * p0 * t2 * t4) - (2.0 * t1 * t5 * p0 * xi * t6)
+        - (t1 * t5 * p0 * t6) + (t7 * p0 * xi * t6) + (t7 * p0 * t6)
+        - (2.0 * t5 * p0 * t2 * xi * t3) - (t5 * p0 * t2 * t4)
+        + (a.powi(4) * p0 * xi * t6)) / (a.powi(4) * xi * t6))
 }
 /// The solution curve at fixed ρ, explicit in s: `[ā³, δ̄ ā]` (both residuals are linear in these); η passed in.
 #[inline]
@@ -325,13 +277,13 @@ pub fn branch_eta(s: f64, rho: f64, eta: f64) -> [f64; 2] {
     let t2 = s.powi(4);
     let t3 = s.powi(5);
     [
-        (6.0 * ((s * rho) - rho - (6.0 * t0 * rho) + (6.0 * t1 * rho) - (t2 * rho) + (t3 * rho))
+        (6.0
+            * ((s * rho) - rho - (6.0 * t0 * rho) + (6.0 * t1 * rho) - (t2 * rho)
+                + (t3 * rho))
             / (t0 * eta * (-(3.0 * rho) + t0 - (t0 * rho) + (3.0 * t2)))),
         (-1.0
             * (s + (2.0 * s * rho) - (3.0 * rho) - (6.0 * t0 * rho) + (6.0 * t1)
-                - (2.0 * t2)
-                - (t2 * rho)
-                + (3.0 * t3))
+                - (2.0 * t2) - (t2 * rho) + (3.0 * t3))
             / (s * eta * (-(3.0 * rho) + t0 - (t0 * rho) + (3.0 * t2)))),
     ]
 }
@@ -340,7 +292,7 @@ pub fn branch_eta(s: f64, rho: f64, eta: f64) -> [f64; 2] {
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn non_adhesive_rho(s: f64) -> f64 {
     let t0 = s.powi(2);
-    ((t0 + (3.0 * s.powi(4))) / (3.0 + t0))
+    ((t0 + (3.0 * s.powi(4))) / ((3.0 + t0)))
 }
 /// ρ(s) at zero force: Eq. (28).
 #[inline]
@@ -348,7 +300,7 @@ pub fn non_adhesive_rho(s: f64) -> f64 {
 pub fn zero_force_rho(s: f64) -> f64 {
     let t0 = s.powi(2);
     let t1 = s.powi(3);
-    ((t0 + t1 + (5.0 * s.powi(4)) + s.powi(5)) / (1.0 + (5.0 * s) + t0 + t1))
+    ((t0 + t1 + (5.0 * s.powi(4)) + s.powi(5)) / ((1.0 + (5.0 * s) + t0 + t1)))
 }
 /// ā³ at zero force, derived form of Eq. (27) (with η; the printed (27) lacks it).
 #[inline]
@@ -375,5 +327,5 @@ pub fn axisymmetric_force_bar(abar: f64) -> f64 {
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn near_circular_ds_dmu(abar0: f64) -> f64 {
     let t0 = abar0.powi(3);
-    (-0.6666666666666666 * t0 / (-4.0 + t0))
+    (-0.6666666666666666 * t0 / ((-4.0 + t0)))
 }
