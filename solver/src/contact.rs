@@ -166,9 +166,9 @@ impl<M: Model> Contact<M> {
         let mut out: Vec<State> = Vec::with_capacity(n);
         let mut fold_seen = false;
         for k in 1..n {
-            // denser near s∞, where ā → ∞
-            let t = k as f64 / n as f64;
-            let s = s_inf * (1.0 - t * t);
+            // logarithmic in s∞ − s, from 1e-13 s∞ to s∞: near ρ = 1 the
+            // whole physical branch lies within O(1 − ρ) of s∞
+            let s = s_inf - s_inf * 10f64.powf(-13.0 * (1.0 - k as f64 / n as f64));
             let Some(mut st) = self.state_at_s(s) else {
                 continue;
             };

@@ -88,7 +88,9 @@ pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) ->
     let from_z = |w: &Vector3<f64>| Vector3::new(w[0] * scale[0], w[1] * scale[1], w[2] * scale[2]);
     let mut w = to_z(&start);
     let mut t = tangent(&from_z(&w), None);
-    let mut h = 0.01;
+    // the trace is at least four times finer than the output
+    let h_max = (0.5 / points as f64).min(0.05);
+    let mut h = h_max.min(0.01);
     let mut trail: Vec<(Vector3<f64>, Vector3<f64>)> = vec![(w, t)];
     let max_steps = 20_000;
     let mut passed_fold = false;
@@ -146,7 +148,7 @@ pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) ->
         let tn = tangent(&from_z(&wn), Some(&t));
         w = wn;
         t = tn;
-        h = (h * 1.3).min(0.05);
+        h = (h * 1.3).min(h_max);
         trail.push((w, t));
         let z = from_z(&w);
         if t[0] > 0.0 {
