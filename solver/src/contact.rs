@@ -197,6 +197,15 @@ impl<M: Model> Contact<M> {
         Ok(st)
     }
 
+    /// The explicit branch state at `s`, flagged, polished by Newton.
+    fn polish_at_s(&self, s: f64, beyond_size_fold: bool, what: &str) -> Result<State> {
+        let mut guess = self
+            .state_at_s(s)
+            .ok_or_else(|| Error::NoState(format!("{what}: off the branch at s = {s}")))?;
+        guess.beyond_size_fold = beyond_size_fold;
+        self.polish(&guess, what)
+    }
+
     /// Along the walk, all crossings of `key(state) = target`, each refined
     /// by bisection in s on the explicit branch and polished by Newton.
     fn crossings(
@@ -210,25 +219,16 @@ impl<M: Model> Contact<M> {
         for w in walk.windows(2) {
             let (f0, f1) = (key(&w[0]) - target, key(&w[1]) - target);
             if f0.signum() != f1.signum() && f0.is_finite() && f1.is_finite() {
-                let (mut lo, mut hi) = (w[1].s, w[0].s);
-                let flo = key(&w[1]) - target;
-                for _ in 0..100 {
-                    let mid = 0.5 * (lo + hi);
-                    let fm = self
-                        .state_at_s(mid)
-                        .map(|st| key(&st) - target)
-                        .unwrap_or(f64::NAN);
-                    if fm.signum() == flo.signum() {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                let mut guess = self
-                    .state_at_s(0.5 * (lo + hi))
-                    .ok_or_else(|| Error::NoState(format!("{what}: off the branch")))?;
-                guess.beyond_size_fold = w[1].beyond_size_fold;
-                out.push(self.polish(&guess, what)?);
+                let s = bisect(
+                    |s| {
+                        self.state_at_s(s)
+                            .map(|st| key(&st) - target)
+                            .unwrap_or(f64::NAN)
+                    },
+                    w[1].s,
+                    w[0].s,
+                )?;
+                out.push(self.polish_at_s(s, w[1].beyond_size_fold, what)?);
             }
         }
         Ok(out)
@@ -256,11 +256,7 @@ impl<M: Model> Contact<M> {
                         lo = x1;
                     }
                 }
-                let mut guess = self
-                    .state_at_s(0.5 * (lo + hi))
-                    .ok_or_else(|| Error::NoState(format!("{what}: off the branch")))?;
-                guess.beyond_size_fold = walk[k].beyond_size_fold;
-                return self.polish(&guess, what);
+                return self.polish_at_s(0.5 * (lo + hi), walk[k].beyond_size_fold, what);
             }
         }
         Err(Error::NoState(format!(

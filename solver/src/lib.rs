@@ -13,6 +13,7 @@
 pub mod contact;
 pub mod curve;
 pub mod error;
+pub mod figures;
 #[allow(missing_docs)]
 #[rustfmt::skip]
 pub mod generated;
@@ -20,6 +21,9 @@ pub mod limits;
 pub mod model;
 pub mod newton;
 pub mod units;
+
+#[doc = include_str!("../../docs/guide.md")]
+pub mod guide {}
 
 pub use contact::{Contact, State};
 pub use error::{Error, Result};

@@ -88,6 +88,13 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,
     },
+    /// Draw the paper's Figures 2–9 and the crossing-angle figure as SVG.
+    #[command(after_help = "Example:\n  thinjkr figures --out docs/figures")]
+    Figures {
+        /// Output directory.
+        #[arg(long)]
+        out: std::path::PathBuf,
+    },
     /// Physical inputs (SI units), from flags or a TOML file with the same keys.
     #[command(
         after_help = "Example:\n  thinjkr physical --r1 0.01 --r2 0.01 --theta-deg 60 --h1 1e-4 --h2 1e-4 --g1 1e6 --g2 1e6 --work-of-adhesion 0.05 --force 0"
@@ -131,12 +138,7 @@ enum Format {
 }
 
 fn json(st: &State) -> serde_json::Value {
-    serde_json::json!({
-        "delta": st.delta, "force": st.force, "a": st.a, "s": st.s, "b": st.b, "rho": st.rho,
-        "xi": st.xi, "p0": st.p0, "shape_a": st.shape_a, "shape_b": st.shape_b,
-        "bc_error": st.bc_error, "outside_stated_range": st.outside_stated_range,
-        "beyond_size_fold": st.beyond_size_fold,
-    })
+    serde_json::to_value(st).expect("a state serialises")
 }
 
 fn show(label: &str, st: &State) {
@@ -248,6 +250,11 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                         );
                     }
                 }
+            }
+        }
+        Some(Command::Figures { out }) => {
+            for p in thinjkr::figures::write(&out)? {
+                println!("{}", p.display());
             }
         }
         Some(Command::Physical {

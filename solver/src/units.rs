@@ -12,42 +12,42 @@ use serde::{Deserialize, Serialize};
 /// Two coated cylinders in SI units.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Cylinders {
-    /// Radius r₁ of cylinder 1 [m].
+    /// Radius r₁ of cylinder 1 (m).
     pub r1: f64,
-    /// Radius r₂ of cylinder 2 [m].
+    /// Radius r₂ of cylinder 2 (m).
     pub r2: f64,
-    /// Crossing angle θ between the axes [degrees], in (0, 90].
+    /// Crossing angle θ between the axes (degrees), in (0, 90].
     pub theta_deg: f64,
-    /// Coating thickness h₁ [m].
+    /// Coating thickness h₁ (m).
     pub h1: f64,
-    /// Coating thickness h₂ [m].
+    /// Coating thickness h₂ (m).
     pub h2: f64,
-    /// Out-of-plane shear modulus G'₁ [Pa].
+    /// Out-of-plane shear modulus G'₁ (Pa).
     pub g1: f64,
-    /// Out-of-plane shear modulus G'₂ [Pa].
+    /// Out-of-plane shear modulus G'₂ (Pa).
     pub g2: f64,
-    /// Work of adhesion Δγ [J/m²].
+    /// Work of adhesion Δγ (J/m²).
     pub work_of_adhesion: f64,
 }
 
 /// The derived model parameters of a [`Cylinders`] contact.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Scales {
-    /// Principal radius R₁ ≥ R₂ of the gap (1) [m].
+    /// Principal radius R₁ ≥ R₂ of the gap (1) (m).
     pub big_r1: f64,
-    /// Principal radius R₂ [m].
+    /// Principal radius R₂ (m).
     pub big_r2: f64,
     /// ρ = R₂/R₁ (21).
     pub rho: f64,
-    /// m of (4) [Pa/m³].
+    /// m of (4) (Pa/m³).
     pub m: f64,
-    /// Length scale L = (2R₁²Δγ/m)^(1/6) of (17) [m].
+    /// Length scale L = (2R₁²Δγ/m)^(1/6) of (17) (m).
     pub length: f64,
-    /// Approach scale (2Δγ/(mR₁))^(1/3) of (17) [m].
+    /// Approach scale (2Δγ/(mR₁))^(1/3) of (17) (m).
     pub approach: f64,
-    /// Force scale 2R₁Δγ of (17) [N].
+    /// Force scale 2R₁Δγ of (17) (N).
     pub force: f64,
-    /// Pressure scale √(2mΔγ) L [Pa].
+    /// Pressure scale √(2mΔγ) L (Pa).
     pub pressure: f64,
 }
 
@@ -56,15 +56,15 @@ pub struct Scales {
 pub struct PhysicalState {
     /// The dimensionless state.
     pub state: State,
-    /// Major semi-axis a [m].
+    /// Major semi-axis a (m).
     pub a: f64,
-    /// Minor semi-axis b [m].
+    /// Minor semi-axis b (m).
     pub b: f64,
-    /// Approach δ [m].
+    /// Approach δ (m).
     pub delta: f64,
-    /// Force F [N].
+    /// Force F (N).
     pub force: f64,
-    /// Maximum pressure p₀ [Pa].
+    /// Maximum pressure p₀ (Pa).
     pub p0: f64,
     /// max(h₁, h₂)/a: the asymptotic model's small parameter.
     pub h_over_a: f64,
@@ -132,7 +132,7 @@ impl Cylinders {
         }
     }
 
-    /// The state at approach `delta` [m].
+    /// The state at approach `delta` (m).
     pub fn at_displacement(&self, delta: f64) -> Result<PhysicalState> {
         let (c, sc) = self.contact()?;
         Ok(self.to_physical(
@@ -141,7 +141,7 @@ impl Cylinders {
         ))
     }
 
-    /// The stable state at force `force` [N].
+    /// The stable state at force `force` (N).
     pub fn at_load(&self, force: f64) -> Result<PhysicalState> {
         let (c, sc) = self.contact()?;
         Ok(self.to_physical(

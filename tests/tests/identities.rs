@@ -64,8 +64,18 @@ fn near_circular_agreement_rate() {
     let l = paper().limits.as_ref().unwrap();
     for a0 in [2.6, 3.5, 6.0] {
         let delta0 = a0 * a0 / 4.0 - 2.0 / a0; // (22) at the mean radius R, derived form of (25)₁
-        // a₂/a₀ from the exact perturbation (36), nondimensional: R = m = L = 1, g = 1
-        let a2 = eval_prec(&l.near_circular_exact.a2, &[("a0", q(a0)), ("R", rat(1, 1)), ("m", rat(1, 1)), ("g", rat(1, 1))], 30).unwrap();
+                                               // a₂/a₀ from the exact perturbation (36), nondimensional: R = m = L = 1, g = 1
+        let a2 = eval_prec(
+            &l.near_circular_exact.a2,
+            &[
+                ("a0", q(a0)),
+                ("R", rat(1, 1)),
+                ("m", rat(1, 1)),
+                ("g", rat(1, 1)),
+            ],
+            30,
+        )
+        .unwrap();
         let slope = -2.0 * a2 / a0;
         let err = |mu: f64| {
             let rho = (1.0 - mu) / (1.0 + mu);
@@ -77,7 +87,10 @@ fn near_circular_agreement_rate() {
         let e: Vec<f64> = [0.02, 0.01, 0.005].iter().map(|&m| err(m)).collect();
         for k in 0..2 {
             let ratio = e[k] / e[k + 1];
-            assert!((3.5..4.5).contains(&ratio), "a0 = {a0}: error ratio {ratio} (errors {e:?})");
+            assert!(
+                (3.5..4.5).contains(&ratio),
+                "a0 = {a0}: error ratio {ratio} (errors {e:?})"
+            );
         }
     }
 }
@@ -91,7 +104,11 @@ fn axisymmetric_limit() {
     for delta in [-1.0, 0.0, 0.3, 2.0, 10.0] {
         let st = c.at_displacement(delta).unwrap();
         assert_eq!(st.s, 1.0);
-        assert_relative_eq!(st.delta, st.a * st.a / 4.0 - 2.0 / st.a, max_relative = 1e-12);
+        assert_relative_eq!(
+            st.delta,
+            st.a * st.a / 4.0 - 2.0 / st.a,
+            max_relative = 1e-12
+        );
         let f = std::f64::consts::PI / 96.0 * st.a.powi(4) * (st.a * st.a - 24.0 / st.a);
         assert_relative_eq!(st.force, f, max_relative = 1e-12, epsilon = 1e-12);
         assert!(st.bc_error.abs() < 1e-15);
@@ -100,9 +117,15 @@ fn axisymmetric_limit() {
     assert_relative_eq!(po.force, -1.5 * std::f64::consts::PI, max_relative = 1e-12);
     assert_relative_eq!(po.a, 12f64.cbrt(), max_relative = 1e-12);
     // the model is continuous as ρ → 1
-    let near = Contact::new(1.0 - 1e-7).unwrap().at_displacement(2.0).unwrap();
+    let near = Contact::new(1.0 - 1e-7)
+        .unwrap()
+        .at_displacement(2.0)
+        .unwrap();
     let exact = c.at_displacement(2.0).unwrap();
-    assert!((near.s - 1.0).abs() < 1e-5 && (near.a - exact.a).abs() < 1e-5 * exact.a, "{near:?} vs {exact:?}");
+    assert!(
+        (near.s - 1.0).abs() < 1e-5 && (near.a - exact.a).abs() < 1e-5 * exact.a,
+        "{near:?} vs {exact:?}"
+    );
     let near_po = Contact::new(1.0 - 1e-6).unwrap().pull_off_load().unwrap();
     assert!((near_po.force - po.force).abs() < 1e-4);
 }
@@ -118,20 +141,39 @@ fn curve_is_continuous_and_solves_the_equations() {
         // continuity: doubling the number of points halves the largest jump
         let max_jump = |n: usize| {
             let cv = thinjkr::curve::trace(&c, n, 20.0).unwrap();
-            cv.states.windows(2).map(|w| (w[1].force - w[0].force).abs()).fold(0.0, f64::max)
+            cv.states
+                .windows(2)
+                .map(|w| (w[1].force - w[0].force).abs())
+                .fold(0.0, f64::max)
         };
         let (j1, j2) = (max_jump(500), max_jump(1000));
-        assert!(j2 < 0.7 * j1, "rho {rho}: largest F̄ jump {j1} with 500 points, {j2} with 1000");
+        assert!(
+            j2 < 0.7 * j1,
+            "rho {rho}: largest F̄ jump {j1} with 500 points, {j2} with 1000"
+        );
         for st in &curve.states {
-            let (r, _) = <thinjkr::Paper as thinjkr::Model>::residuals_and_jacobian(st.a, st.s, rho, st.delta);
+            let (r, _) = <thinjkr::Paper as thinjkr::Model>::residuals_and_jacobian(
+                st.a, st.s, rho, st.delta,
+            );
             assert!(r[0].hypot(r[1]) < 1e-8 * (1.0 + st.a.powi(3)));
             assert!(st.force.is_finite() && st.a > 0.0 && st.s > 0.0 && st.s <= 1.0);
         }
-        let min_f = curve.states.iter().map(|s| s.force).fold(f64::INFINITY, f64::min);
-        assert!(min_f >= po.force - 1e-6 && min_f < po.force + 0.05, "rho {rho}: {min_f} vs pull-off {}", po.force);
+        let min_f = curve
+            .states
+            .iter()
+            .map(|s| s.force)
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            min_f >= po.force - 1e-6 && min_f < po.force + 0.05,
+            "rho {rho}: {min_f} vs pull-off {}",
+            po.force
+        );
         let kinds: Vec<_> = curve.folds.iter().map(|f| f.kind).collect();
         assert!(kinds.contains(&thinjkr::curve::FoldKind::Load), "{kinds:?}");
-        assert!(kinds.contains(&thinjkr::curve::FoldKind::ContactSize), "{kinds:?}");
+        assert!(
+            kinds.contains(&thinjkr::curve::FoldKind::ContactSize),
+            "{kinds:?}"
+        );
     }
 }
 
@@ -142,7 +184,12 @@ fn contact_size_control() {
     let c = Contact::new(0.8).unwrap();
     let st = c.at_displacement(2.0).unwrap();
     let by_size = c.at_contact_size(st.a).unwrap();
-    assert!(by_size.iter().any(|x| (x.s - st.s).abs() < 1e-9 && (x.delta - 2.0).abs() < 1e-8), "{by_size:?}");
+    assert!(
+        by_size
+            .iter()
+            .any(|x| (x.s - st.s).abs() < 1e-9 && (x.delta - 2.0).abs() < 1e-8),
+        "{by_size:?}"
+    );
     // below the fold of the contact size there is no state
     let fold = c.size_fold().unwrap();
     assert!(c.at_contact_size(0.9 * fold.a).unwrap().is_empty());
@@ -151,15 +198,40 @@ fn contact_size_control() {
 /// The dimensional and the nondimensional APIs agree.
 #[test]
 fn physical_units_agree_with_dimensionless() {
-    let cyl = Cylinders { r1: 0.01, r2: 0.02, theta_deg: 70.0, h1: 1e-4, h2: 2e-4, g1: 1e6, g2: 5e5, work_of_adhesion: 0.05 };
+    let cyl = Cylinders {
+        r1: 0.01,
+        r2: 0.02,
+        theta_deg: 70.0,
+        h1: 1e-4,
+        h2: 2e-4,
+        g1: 1e6,
+        g2: 5e5,
+        work_of_adhesion: 0.05,
+    };
     let sc = cyl.scales().unwrap();
     assert!(sc.big_r2 <= sc.big_r1);
-    assert_relative_eq!(1.0 / sc.big_r1 + 1.0 / sc.big_r2, 1.0 / 0.01 + 1.0 / 0.02, max_relative = 1e-12);
-    assert_relative_eq!(sc.big_r1 * sc.big_r2, 0.01 * 0.02 / 70f64.to_radians().sin().powi(2), max_relative = 1e-12);
+    assert_relative_eq!(
+        1.0 / sc.big_r1 + 1.0 / sc.big_r2,
+        1.0 / 0.01 + 1.0 / 0.02,
+        max_relative = 1e-12
+    );
+    assert_relative_eq!(
+        sc.big_r1 * sc.big_r2,
+        0.01 * 0.02 / 70f64.to_radians().sin().powi(2),
+        max_relative = 1e-12
+    );
     let phys = cyl.pull_off().unwrap();
     let dimless = Contact::new(sc.rho).unwrap().pull_off_load().unwrap();
-    assert_relative_eq!(phys.force, dimless.force * 2.0 * sc.big_r1 * 0.05, max_relative = 1e-9);
-    assert_relative_eq!(phys.a, dimless.a * (2.0 * sc.big_r1.powi(2) * 0.05 / sc.m).powf(1.0 / 6.0), max_relative = 1e-9);
+    assert_relative_eq!(
+        phys.force,
+        dimless.force * 2.0 * sc.big_r1 * 0.05,
+        max_relative = 1e-9
+    );
+    assert_relative_eq!(
+        phys.a,
+        dimless.a * (2.0 * sc.big_r1.powi(2) * 0.05 / sc.m).powf(1.0 / 6.0),
+        max_relative = 1e-9
+    );
     let at_f = cyl.at_load(0.5 * phys.force).unwrap();
     assert_relative_eq!(at_f.force, 0.5 * phys.force, max_relative = 1e-7);
     assert!(at_f.h_over_a > 0.0);
@@ -178,17 +250,56 @@ fn bad_inputs_are_typed_errors() {
     for rho in [0.0, -0.5, 1.5, f64::NAN, f64::INFINITY] {
         assert_eq!(names(Contact::new(rho).unwrap_err()), "rho");
     }
-    let good = Cylinders { r1: 0.01, r2: 0.01, theta_deg: 60.0, h1: 1e-4, h2: 1e-4, g1: 1e6, g2: 1e6, work_of_adhesion: 0.05 };
+    let good = Cylinders {
+        r1: 0.01,
+        r2: 0.01,
+        theta_deg: 60.0,
+        h1: 1e-4,
+        h2: 1e-4,
+        g1: 1e6,
+        g2: 1e6,
+        work_of_adhesion: 0.05,
+    };
     let cases: Vec<(&str, Cylinders)> = vec![
         ("r1", Cylinders { r1: -1.0, ..good }),
-        ("r2", Cylinders { r2: f64::NAN, ..good }),
-        ("theta_deg", Cylinders { theta_deg: 0.0, ..good }),
-        ("theta_deg", Cylinders { theta_deg: 120.0, ..good }),
+        (
+            "r2",
+            Cylinders {
+                r2: f64::NAN,
+                ..good
+            },
+        ),
+        (
+            "theta_deg",
+            Cylinders {
+                theta_deg: 0.0,
+                ..good
+            },
+        ),
+        (
+            "theta_deg",
+            Cylinders {
+                theta_deg: 120.0,
+                ..good
+            },
+        ),
         ("h1", Cylinders { h1: 0.0, ..good }),
-        ("h2", Cylinders { h2: f64::INFINITY, ..good }),
+        (
+            "h2",
+            Cylinders {
+                h2: f64::INFINITY,
+                ..good
+            },
+        ),
         ("g1", Cylinders { g1: -3.0, ..good }),
         ("g2", Cylinders { g2: 0.0, ..good }),
-        ("work_of_adhesion", Cylinders { work_of_adhesion: 0.0, ..good }),
+        (
+            "work_of_adhesion",
+            Cylinders {
+                work_of_adhesion: 0.0,
+                ..good
+            },
+        ),
     ];
     for (name, cyl) in cases {
         assert_eq!(names(cyl.pull_off().unwrap_err()), name);
@@ -214,11 +325,23 @@ fn sweep_converges_or_reports_no_state() {
             match c.at_displacement(delta) {
                 Ok(st) => {
                     solved += 1;
-                    for v in [st.a, st.s, st.delta, st.force, st.xi, st.p0, st.bc_error, st.shape_a, st.shape_b] {
+                    for v in [
+                        st.a,
+                        st.s,
+                        st.delta,
+                        st.force,
+                        st.xi,
+                        st.p0,
+                        st.bc_error,
+                        st.shape_a,
+                        st.shape_b,
+                    ] {
                         assert!(v.is_finite(), "rho {rho} delta {delta}: {st:?}");
                     }
                 }
-                Err(Error::NoState(_)) => assert!(delta < 1.0, "rho {rho}: no state at delta {delta}"),
+                Err(Error::NoState(_)) => {
+                    assert!(delta < 1.0, "rho {rho}: no state at delta {delta}")
+                }
                 Err(e) => panic!("rho {rho} delta {delta}: {e}"),
             }
         }

@@ -1,0 +1,105 @@
+//! The CLI as a user meets it: the guide's examples print what the guide
+//! shows, JSON has the documented keys and round-trips through serde, CSV has
+//! a header row, errors go to stderr with a non-zero exit status.
+
+use std::process::Command;
+
+fn thinjkr(args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(args)
+        .output()
+        .expect("runs");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn guide_examples_print_what_the_guide_shows() {
+    let guide =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/guide.md")).unwrap();
+    let lines: Vec<&str> = guide.lines().collect();
+    let mut checked = 0;
+    for (k, line) in lines.iter().enumerate() {
+        if let Some(cmd) = line.strip_prefix("$ thinjkr ") {
+            let args: Vec<&str> = cmd.split_whitespace().collect();
+            let (ok, out, err) = thinjkr(&args);
+            assert!(ok, "{cmd}: {err}");
+            let expected = lines.get(k + 1).copied().unwrap_or("");
+            if !expected.starts_with('$') && !expected.starts_with("```") {
+                assert_eq!(out.trim(), expected.trim(), "guide example `{cmd}`");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 2);
+}
+
+#[test]
+fn default_run_prints_the_paper_example() {
+    let (ok, out, _) = thinjkr(&[]);
+    assert!(ok);
+    assert!(out.contains("pull-off (load control)") && out.contains("zero force"));
+    assert!(out.contains("force = -4.188856"), "{out}");
+}
+
+#[test]
+fn json_has_the_keys_and_round_trips() {
+    for args in [
+        vec!["solve", "--rho", "0.8", "--delta", "2", "--json"],
+        vec!["solve", "--rho", "0.8", "--force", "-1", "--json"],
+        vec!["pull-off", "--rho", "0.8", "--json"],
+        vec![
+            "pull-off",
+            "--rho",
+            "0.8",
+            "--control",
+            "displacement",
+            "--json",
+        ],
+        vec!["zero-force", "--rho", "0.8", "--json"],
+    ] {
+        let (ok, out, err) = thinjkr(&args);
+        assert!(ok, "{args:?}: {err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        for key in ["delta", "force", "a", "s"] {
+            assert!(v[key].is_f64(), "{args:?}: key {key} in {out}");
+        }
+        let state: thinjkr::State = serde_json::from_str(&out).unwrap();
+        assert_eq!(serde_json::to_value(state).unwrap(), v);
+    }
+    let (ok, out, _) = thinjkr(&[
+        "curve", "--rho", "0.8", "--points", "20", "--format", "json",
+    ]);
+    assert!(ok);
+    let curve: thinjkr::curve::Curve = serde_json::from_str(&out).unwrap();
+    assert_eq!(curve.states.len(), 20);
+}
+
+#[test]
+fn csv_has_a_header() {
+    let (ok, out, _) = thinjkr(&["curve", "--rho", "0.8", "--points", "10"]);
+    assert!(ok);
+    let mut lines = out.lines();
+    assert_eq!(
+        lines.next(),
+        Some("delta,force,a,s,bc_error,beyond_size_fold")
+    );
+    assert_eq!(lines.count(), 10);
+}
+
+#[test]
+fn errors_go_to_stderr_with_failure() {
+    for args in [
+        vec!["solve", "--rho", "1.5", "--delta", "1"],
+        vec!["solve", "--rho", "0.8", "--force", "-10"],
+        vec!["zero-force", "--rho", "0"],
+    ] {
+        let (ok, out, err) = thinjkr(&args);
+        assert!(!ok, "{args:?}");
+        assert!(out.is_empty());
+        assert!(err.contains("error"), "{err}");
+    }
+}

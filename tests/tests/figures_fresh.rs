@@ -1,0 +1,26 @@
+//! The committed figures in docs/figures/ equal what `thinjkr figures`
+//! draws now (deterministic output). On a mismatch the fresh file is written
+//! and the test fails: review and commit (or run
+//! `cargo run --release -p thinjkr -- figures --out docs/figures`).
+
+#[test]
+fn figures_are_fresh_and_deterministic() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures");
+    let a = thinjkr::figures::all().expect("figures draw");
+    let b = thinjkr::figures::all().expect("figures draw twice");
+    assert!(a.len() >= 9, "{} figures", a.len());
+    assert_eq!(a, b, "figure output is not deterministic");
+    let mut stale = Vec::new();
+    for (name, svg) in &a {
+        let p = dir.join(name);
+        if std::fs::read_to_string(&p).ok().as_deref() != Some(svg.as_str()) {
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(&p, svg).unwrap();
+            stale.push(*name);
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "stale figures rewritten, commit them: {stale:?}"
+    );
+}
