@@ -62,7 +62,14 @@ fn count(e: &Ir, counts: &mut HashMap<String, usize>) {
         }
     }
     match e {
-        Ir::Add(v) | Ir::Mul(v) => v.iter().for_each(|t| count(t, counts)),
+        Ir::Mul(v) => {
+            v.iter().for_each(|t| count(t, counts));
+            // a product's denominator is a candidate for sharing as a whole
+            if let Some(d) = denominator(v) {
+                count(&d, counts);
+            }
+        }
+        Ir::Add(v) => v.iter().for_each(|t| count(t, counts)),
         Ir::Pow(b, _, _) => count(b, counts),
         _ => {}
     }
@@ -133,12 +140,7 @@ impl Emitter {
                 if den.is_empty() {
                     return quote!((#n));
                 }
-                let mut d = TokenStream::new();
-                for (i, f) in den.iter().enumerate() {
-                    let inv = reciprocal(f);
-                    let t = self.emit(&inv);
-                    d = if i == 0 { quote!(#t) } else { quote!(#d * #t) };
-                }
+                let d = self.emit(&denominator(factors).expect("non-empty denominator"));
                 quote!((#n / (#d)))
             }
             Ir::Pow(b, p, q) if matches!(**b, Ir::Rational(..)) => {
@@ -228,6 +230,21 @@ fn split_sign(t: &Ir) -> (bool, Ir) {
             (false, t.clone())
         }
         _ => (false, t.clone()),
+    }
+}
+
+/// The product of the reciprocal factors of a product, inverted (`None` if
+/// there are none); a single factor stands alone.
+fn denominator(factors: &[Ir]) -> Option<Ir> {
+    let mut d: Vec<Ir> = factors
+        .iter()
+        .filter(|f| is_reciprocal(f))
+        .map(reciprocal)
+        .collect();
+    match d.len() {
+        0 => None,
+        1 => d.pop(),
+        _ => Some(Ir::Mul(d)),
     }
 }
 
@@ -321,7 +338,8 @@ fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
     };
     let mut fs = vec![
         Function { name: "eta", doc: "η(s) of Eq. (16): the maximum of ∂p/∂ν on the contour over its apex value.".into(), params: vec!["s"], outputs: vec![d.eta.clone()] },
-        Function { name: "eta_s", doc: "dη/ds, derivative of Eq. (16).".into(), params: vec!["s"], outputs: vec![eta_s] },
+        Function { name: "eta_s", doc: "dη/ds, derivative of Eq. (16).".into(), params: vec!["s"], outputs: vec![eta_s.clone()] },
+        Function { name: "eta_and_eta_s", doc: "`[η, dη/ds]` of Eq. (16), side by side (shared subexpressions computed once).".into(), params: vec!["s"], outputs: vec![d.eta.clone(), eta_s] },
         Function { name: "bc_error", doc: "Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.".into(), params: vec!["s"], outputs: vec![d.bc_error.clone()] },
         Function { name: "residuals_eta", doc: "Residuals (19), (20) with η = η(s) and η' = dη/ds passed in.".into(), params: state.clone(), outputs: r.clone() },
         Function { name: "residuals_and_jacobian_eta", doc: "Residuals (19), (20) and their Jacobian with respect to (ā, s), side by side: `[r1, r2, ∂r1/∂ā, ∂r1/∂s, ∂r2/∂ā, ∂r2/∂s]`; η and η' passed in.".into(), params: state.clone(), outputs: rj },

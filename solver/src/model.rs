@@ -63,14 +63,9 @@ macro_rules! impl_model {
                 rho: f64,
                 delta_bar: f64,
             ) -> ([f64; 2], [[f64; 2]; 2]) {
-                let v = generated::$m::residuals_and_jacobian_eta(
-                    a_bar,
-                    s,
-                    rho,
-                    delta_bar,
-                    Self::eta(s),
-                    Self::eta_s(s),
-                );
+                let [eta, eta_s] = generated::$m::eta_and_eta_s(s);
+                let v =
+                    generated::$m::residuals_and_jacobian_eta(a_bar, s, rho, delta_bar, eta, eta_s);
                 ([v[0], v[1]], [[v[2], v[3]], [v[4], v[5]]])
             }
             fn residuals_d_delta(a_bar: f64, s: f64, rho: f64, delta_bar: f64) -> [f64; 2] {

@@ -19,6 +19,12 @@ pub fn eta(s: f64) -> f64 {
     let t9 = (t5.sqrt() * t5);
     let t10 = s.powi(7);
     let t11 = s.powi(9);
+    let t12 = (-1.0 + s);
+    let t13 = (1.0 + s);
+    let t14 = (1.0 - (2.0 * t0 * s * t6) + (3.0 * t2));
+    let t15 = (1.0 - (t0 * s * t6) + t2);
+    let t16 = (1.0 - (2.0 * t0 * s * t6) - (6.0 * t0 * t7 * t6) - (8.0 * t0 * t8 * t6)
+        + (5.0 * t2) + (15.0 * t3) + (11.0 * t4));
     (-0.1111111111111111
         * ((t0 * t1) + (18.0 * t0 * t1 * t2) + (111.0 * t0 * t1 * t3)
             + (356.0 * t0 * t1 * t4) + (663.0 * t0 * t1 * s.powi(8))
@@ -27,13 +33,7 @@ pub fn eta(s: f64) -> f64 {
             - (96.0 * t1 * t8 * t9) - (224.0 * t1 * t10 * t6) - (288.0 * t1 * t10 * t9)
             - (72.0 * t1 * t11 * t6) - (384.0 * t1 * t11 * t9)
             + (32.0 * t1 * s.powi(11) * t6))
-        / (s * (-1.0 + s) * (1.0 + s) * t5
-            * ((1.0 - (2.0 * t0 * s * t6) + (3.0 * t2)).sqrt()
-                * (1.0 - (2.0 * t0 * s * t6) + (3.0 * t2)))
-            * (1.0 - (t0 * s * t6) + t2).sqrt()
-            * (1.0 - (2.0 * t0 * s * t6) - (6.0 * t0 * t7 * t6) - (8.0 * t0 * t8 * t6)
-                + (5.0 * t2) + (15.0 * t3) + (11.0 * t4))
-                .sqrt()))
+        / ((s * t12 * t13 * t5 * (t14.sqrt() * t14) * t15.sqrt() * t16.sqrt())))
 }
 /// dη/ds, derivative of Eq. (16).
 #[inline]
@@ -70,6 +70,8 @@ pub fn eta_s(s: f64) -> f64 {
     let t27 = s.powi(17);
     let t28 = s.powi(19);
     let t29 = s.powi(21);
+    let t30 = (-1.0 + s);
+    let t31 = (1.0 + s);
     (-0.05555555555555555
         * ((18.0 * t0 * t1 * t2 * t4 * t5 * t10) + (10.0 * t0 * t1 * t2 * t4 * t11 * t5)
             - (36.0 * t0 * t1 * t2 * t4 * t11 * t5 * t10)
@@ -208,8 +210,210 @@ pub fn eta_s(s: f64) -> f64 {
             + (25344.0 * t1 * t28 * t21 * t11 * t5)
             + (17808.0 * t1 * t29 * t3 * t11 * t5) + (13388.0 * t1 * t29 * t11 * t5)
             + (3984.0 * t1 * s.powi(23) * t11 * t5))
-        / (t2 * (-1.0 + s).powi(2) * (1.0 + s).powi(2) * t13 * (t11.sqrt() * t11.powi(2))
-            * (t5.sqrt() * t5) * (t10.sqrt() * t10)))
+        / ((t2 * t30.powi(2) * t31.powi(2) * t13 * (t11.sqrt() * t11.powi(2))
+            * (t5.sqrt() * t5) * (t10.sqrt() * t10))))
+}
+/// `[η, dη/ds]` of Eq. (16), side by side (shared subexpressions computed once).
+#[inline]
+#[allow(clippy::all, unused_parens, unused_variables)]
+pub fn eta_and_eta_s(s: f64) -> [f64; 2] {
+    let t0 = 1.4142135623730951;
+    let t1 = 1.7320508075688772;
+    let t2 = s.powi(2);
+    let t3 = s.powi(4);
+    let t4 = s.powi(6);
+    let t5 = s.powi(8);
+    let t6 = s.powi(10);
+    let t7 = s.powi(12);
+    let t8 = (1.0 + t2);
+    let t9 = t8.sqrt();
+    let t10 = s.powi(3);
+    let t11 = s.powi(5);
+    let t12 = (t8.sqrt() * t8);
+    let t13 = s.powi(7);
+    let t14 = s.powi(9);
+    let t15 = s.powi(11);
+    let t16 = (-1.0 + s);
+    let t17 = (1.0 + s);
+    let t18 = (1.0 - (2.0 * t0 * s * t9) + (3.0 * t2));
+    let t19 = (1.0 - (t0 * s * t9) + t2);
+    let t20 = (1.0 - (2.0 * t0 * s * t9) - (6.0 * t0 * t10 * t9) - (8.0 * t0 * t11 * t9)
+        + (5.0 * t2) + (15.0 * t3) + (11.0 * t4));
+    let t21 = (t8.sqrt() * t8.powi(2));
+    let t22 = s.powi(14);
+    let t23 = s.powi(16);
+    let t24 = s.powi(18);
+    let t25 = s.powi(20);
+    let t26 = t8.powi(2);
+    let t27 = s.powi(13);
+    let t28 = s.powi(15);
+    let t29 = s.powi(17);
+    let t30 = s.powi(19);
+    let t31 = s.powi(21);
+    [
+        (-0.1111111111111111
+            * ((t0 * t1) + (18.0 * t0 * t1 * t2) + (111.0 * t0 * t1 * t3)
+                + (356.0 * t0 * t1 * t4) + (663.0 * t0 * t1 * t5)
+                + (650.0 * t0 * t1 * t6) + (249.0 * t0 * t1 * t7) - (8.0 * t1 * s * t9)
+                - (64.0 * t1 * t10 * t9) - (176.0 * t1 * t11 * t9)
+                - (96.0 * t1 * t11 * t12) - (224.0 * t1 * t13 * t9)
+                - (288.0 * t1 * t13 * t12) - (72.0 * t1 * t14 * t9)
+                - (384.0 * t1 * t14 * t12) + (32.0 * t1 * t15 * t9))
+            / ((s * t16 * t17 * t8 * (t18.sqrt() * t18) * t19.sqrt() * t20.sqrt()))),
+        (-0.05555555555555555
+            * ((18.0 * t0 * t1 * t2 * t9 * t19 * t20)
+                + (10.0 * t0 * t1 * t2 * t9 * t18 * t19)
+                - (36.0 * t0 * t1 * t2 * t9 * t18 * t19 * t20)
+                + (2.0 * t0 * t1 * t2 * t9 * t18 * t20)
+                + (48.0 * t0 * t1 * t2 * t12 * t19 * t20)
+                + (16.0 * t0 * t1 * t2 * t12 * t18 * t19)
+                + (8.0 * t0 * t1 * t2 * t12 * t18 * t20)
+                + (372.0 * t0 * t1 * t3 * t9 * t19 * t20)
+                + (256.0 * t0 * t1 * t3 * t9 * t18 * t19)
+                - (676.0 * t0 * t1 * t3 * t9 * t18 * t19 * t20)
+                + (44.0 * t0 * t1 * t3 * t9 * t18 * t20)
+                + (384.0 * t0 * t1 * t3 * t12 * t19 * t20)
+                + (272.0 * t0 * t1 * t3 * t12 * t18 * t19)
+                + (64.0 * t0 * t1 * t3 * t12 * t18 * t20)
+                + (2364.0 * t0 * t1 * t4 * t9 * t19 * t20)
+                + (2422.0 * t0 * t1 * t4 * t9 * t18 * t19)
+                - (3668.0 * t0 * t1 * t4 * t9 * t18 * t19 * t20)
+                + (284.0 * t0 * t1 * t4 * t9 * t18 * t20)
+                + (1008.0 * t0 * t1 * t4 * t12 * t19 * t20)
+                + (1808.0 * t0 * t1 * t4 * t12 * t18 * t19)
+                + (168.0 * t0 * t1 * t4 * t12 * t18 * t20)
+                + (576.0 * t0 * t1 * t4 * t21 * t19 * t20)
+                + (192.0 * t0 * t1 * t4 * t21 * t18 * t19)
+                + (96.0 * t0 * t1 * t4 * t21 * t18 * t20)
+                + (7092.0 * t0 * t1 * t5 * t9 * t19 * t20)
+                + (11952.0 * t0 * t1 * t5 * t9 * t18 * t19)
+                - (9504.0 * t0 * t1 * t5 * t9 * t18 * t19 * t20)
+                + (844.0 * t0 * t1 * t5 * t9 * t18 * t20)
+                + (1536.0 * t0 * t1 * t5 * t12 * t19 * t20)
+                + (6096.0 * t0 * t1 * t5 * t12 * t18 * t19)
+                + (256.0 * t0 * t1 * t5 * t12 * t18 * t20)
+                + (1728.0 * t0 * t1 * t5 * t21 * t19 * t20)
+                + (2304.0 * t0 * t1 * t5 * t21 * t18 * t19)
+                + (288.0 * t0 * t1 * t5 * t21 * t18 * t20)
+                + (10896.0 * t0 * t1 * t6 * t9 * t19 * t20)
+                + (34900.0 * t0 * t1 * t6 * t9 * t18 * t19)
+                - (10988.0 * t0 * t1 * t6 * t9 * t18 * t19 * t20)
+                + (1264.0 * t0 * t1 * t6 * t9 * t18 * t20)
+                + (1104.0 * t0 * t1 * t6 * t12 * t19 * t20)
+                + (10544.0 * t0 * t1 * t6 * t12 * t18 * t19)
+                + (184.0 * t0 * t1 * t6 * t12 * t18 * t20)
+                + (1728.0 * t0 * t1 * t6 * t21 * t19 * t20)
+                + (9600.0 * t0 * t1 * t6 * t21 * t18 * t19)
+                + (288.0 * t0 * t1 * t6 * t21 * t18 * t20)
+                + (4668.0 * t0 * t1 * t7 * t9 * t19 * t20)
+                + (60464.0 * t0 * t1 * t7 * t9 * t18 * t19)
+                - (1500.0 * t0 * t1 * t7 * t9 * t18 * t19 * t20)
+                + (484.0 * t0 * t1 * t7 * t9 * t18 * t20)
+                + (192.0 * t0 * t1 * t7 * t12 * t19 * t20)
+                + (7088.0 * t0 * t1 * t7 * t12 * t18 * t19)
+                + (32.0 * t0 * t1 * t7 * t12 * t18 * t20)
+                - (1728.0 * t0 * t1 * t7 * t21 * t19 * t20)
+                + (16128.0 * t0 * t1 * t7 * t21 * t18 * t19)
+                - (288.0 * t0 * t1 * t7 * t21 * t18 * t20)
+                - (8988.0 * t0 * t1 * t22 * t9 * t19 * t20)
+                + (50076.0 * t0 * t1 * t22 * t9 * t18 * t19)
+                + (6500.0 * t0 * t1 * t22 * t9 * t18 * t19 * t20)
+                - (1084.0 * t0 * t1 * t22 * t9 * t18 * t20)
+                - (2160.0 * t0 * t1 * t22 * t12 * t19 * t20)
+                - (5456.0 * t0 * t1 * t22 * t12 * t18 * t19)
+                - (360.0 * t0 * t1 * t22 * t12 * t18 * t20)
+                - (2304.0 * t0 * t1 * t22 * t21 * t19 * t20)
+                + (5568.0 * t0 * t1 * t22 * t21 * t18 * t19)
+                - (384.0 * t0 * t1 * t22 * t21 * t18 * t20)
+                - (12132.0 * t0 * t1 * t23 * t9 * t19 * t20)
+                - (14448.0 * t0 * t1 * t23 * t9 * t18 * t19)
+                + (3486.0 * t0 * t1 * t23 * t9 * t18 * t19 * t20)
+                - (1372.0 * t0 * t1 * t23 * t9 * t18 * t20)
+                - (2112.0 * t0 * t1 * t23 * t12 * t19 * t20)
+                - (11664.0 * t0 * t1 * t23 * t12 * t18 * t19)
+                - (352.0 * t0 * t1 * t23 * t12 * t18 * t20)
+                - (18432.0 * t0 * t1 * t23 * t21 * t18 * t19)
+                - (4290.0 * t0 * t1 * t24 * t9 * t19 * t20)
+                - (71230.0 * t0 * t1 * t24 * t9 * t18 * t19)
+                - (466.0 * t0 * t1 * t24 * t9 * t18 * t20)
+                - (6912.0 * t0 * t1 * t24 * t12 * t18 * t19)
+                - (15360.0 * t0 * t1 * t24 * t21 * t18 * t19)
+                - (58224.0 * t0 * t1 * t25 * t9 * t18 * t19)
+                - (1792.0 * t0 * t1 * t25 * t12 * t18 * t19)
+                - (16178.0 * t0 * t1 * s.powi(22) * t9 * t18 * t19)
+                + (2.0 * t0 * t1 * t9 * t18 * t19 * t20)
+                - (12.0 * t1 * s * t8 * t19 * t20) - (4.0 * t1 * s * t8 * t18 * t19)
+                - (2.0 * t1 * s * t8 * t18 * t20) - (360.0 * t1 * t10 * t8 * t19 * t20)
+                - (188.0 * t1 * t10 * t8 * t18 * t19)
+                + (256.0 * t1 * t10 * t8 * t18 * t19 * t20)
+                - (52.0 * t1 * t10 * t8 * t18 * t20) - (12.0 * t1 * t10 * t19 * t20)
+                - (4.0 * t1 * t10 * t18 * t19) + (16.0 * t1 * t10 * t18 * t19 * t20)
+                - (2.0 * t1 * t10 * t18 * t20) - (2472.0 * t1 * t11 * t8 * t19 * t20)
+                - (2288.0 * t1 * t11 * t8 * t18 * t19)
+                + (1472.0 * t1 * t11 * t8 * t18 * t19 * t20)
+                - (348.0 * t1 * t11 * t8 * t18 * t20) - (216.0 * t1 * t11 * t19 * t20)
+                - (84.0 * t1 * t11 * t18 * t19) + (128.0 * t1 * t11 * t18 * t19 * t20)
+                - (36.0 * t1 * t11 * t18 * t20)
+                + (768.0 * t1 * t11 * t26 * t18 * t19 * t20)
+                - (7080.0 * t1 * t13 * t8 * t19 * t20)
+                - (12800.0 * t1 * t13 * t8 * t18 * t19)
+                + (3520.0 * t1 * t13 * t8 * t18 * t19 * t20)
+                - (1012.0 * t1 * t13 * t8 * t18 * t20) - (1320.0 * t1 * t13 * t19 * t20)
+                - (672.0 * t1 * t13 * t18 * t19) + (336.0 * t1 * t13 * t18 * t19 * t20)
+                - (220.0 * t1 * t13 * t18 * t20) - (1728.0 * t1 * t13 * t26 * t19 * t20)
+                - (960.0 * t1 * t13 * t26 * t18 * t19)
+                + (3456.0 * t1 * t13 * t26 * t18 * t19 * t20)
+                - (192.0 * t1 * t13 * t26 * t18 * t20)
+                - (9504.0 * t1 * t14 * t8 * t19 * t20)
+                - (39080.0 * t1 * t14 * t8 * t18 * t19)
+                + (2880.0 * t1 * t14 * t8 * t18 * t19 * t20)
+                - (1424.0 * t1 * t14 * t8 * t18 * t20) - (4056.0 * t1 * t14 * t19 * t20)
+                - (2960.0 * t1 * t14 * t18 * t19) + (320.0 * t1 * t14 * t18 * t19 * t20)
+                - (676.0 * t1 * t14 * t18 * t20) - (5184.0 * t1 * t14 * t26 * t19 * t20)
+                - (8640.0 * t1 * t14 * t26 * t18 * t19)
+                + (6144.0 * t1 * t14 * t26 * t18 * t19 * t20)
+                - (576.0 * t1 * t14 * t26 * t18 * t20)
+                - (1656.0 * t1 * t15 * t8 * t19 * t20)
+                - (67736.0 * t1 * t15 * t8 * t18 * t19)
+                + (192.0 * t1 * t15 * t8 * t18 * t19 * t20)
+                - (380.0 * t1 * t15 * t8 * t18 * t20) - (6624.0 * t1 * t15 * t19 * t20)
+                - (8024.0 * t1 * t15 * t18 * t19) - (208.0 * t1 * t15 * t18 * t19 * t20)
+                - (1104.0 * t1 * t15 * t18 * t20) - (5184.0 * t1 * t15 * t26 * t19 * t20)
+                - (26496.0 * t1 * t15 * t26 * t18 * t19)
+                - (1152.0 * t1 * t15 * t26 * t18 * t19 * t20)
+                - (576.0 * t1 * t15 * t26 * t18 * t20)
+                + (9576.0 * t1 * t27 * t8 * t19 * t20)
+                - (54848.0 * t1 * t27 * t8 * t18 * t19)
+                - (2304.0 * t1 * t27 * t8 * t18 * t19 * t20)
+                + (1340.0 * t1 * t27 * t8 * t18 * t20) - (3528.0 * t1 * t27 * t19 * t20)
+                - (13208.0 * t1 * t27 * t18 * t19) - (512.0 * t1 * t27 * t18 * t19 * t20)
+                - (588.0 * t1 * t27 * t18 * t20) + (5184.0 * t1 * t27 * t26 * t19 * t20)
+                - (33408.0 * t1 * t27 * t26 * t18 * t19)
+                - (3072.0 * t1 * t27 * t26 * t18 * t19 * t20)
+                + (576.0 * t1 * t27 * t26 * t18 * t20)
+                + (9096.0 * t1 * t28 * t8 * t19 * t20)
+                + (16928.0 * t1 * t28 * t8 * t18 * t19)
+                - (1920.0 * t1 * t28 * t8 * t18 * t19 * t20)
+                + (1444.0 * t1 * t28 * t8 * t18 * t20) + (4968.0 * t1 * t28 * t19 * t20)
+                - (10704.0 * t1 * t28 * t18 * t19) - (144.0 * t1 * t28 * t18 * t19 * t20)
+                + (828.0 * t1 * t28 * t18 * t20) + (6912.0 * t1 * t28 * t26 * t19 * t20)
+                + (2112.0 * t1 * t28 * t26 * t18 * t19)
+                + (768.0 * t1 * t28 * t26 * t18 * t20)
+                + (2412.0 * t1 * t29 * t8 * t19 * t20)
+                + (78412.0 * t1 * t29 * t8 * t18 * t19)
+                + (434.0 * t1 * t29 * t8 * t18 * t20) + (7800.0 * t1 * t29 * t19 * t20)
+                + (2864.0 * t1 * t29 * t18 * t19) + (64.0 * t1 * t29 * t18 * t19 * t20)
+                + (1300.0 * t1 * t29 * t18 * t20)
+                + (42048.0 * t1 * t29 * t26 * t18 * t19)
+                + (63796.0 * t1 * t30 * t8 * t18 * t19) + (2988.0 * t1 * t30 * t19 * t20)
+                + (15420.0 * t1 * t30 * t18 * t19) + (498.0 * t1 * t30 * t18 * t20)
+                + (25344.0 * t1 * t30 * t26 * t18 * t19)
+                + (17808.0 * t1 * t31 * t8 * t18 * t19)
+                + (13388.0 * t1 * t31 * t18 * t19)
+                + (3984.0 * t1 * s.powi(23) * t18 * t19))
+            / ((t2 * t16.powi(2) * t17.powi(2) * t21 * (t18.sqrt() * t18.powi(2))
+                * (t19.sqrt() * t19) * (t20.sqrt() * t20)))),
+    ]
 }
 /// Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
 #[inline]
@@ -234,6 +438,9 @@ pub fn bc_error(s: f64) -> f64 {
     let t15 = (t2.sqrt() * t2);
     let t16 = s.powi(7);
     let t17 = s.powi(9);
+    let t18 = (-1.0 + s);
+    let t19 = (1.0 + s);
+    let t20 = (1.0 - (2.0 * t0 * s * t3) + t1);
     (0.1111111111111111
         * (-(18.0 * t0 * s * t3 * t5 * t7 * t13) + (t0 * t14) + (18.0 * t0 * t14 * t1)
             + (111.0 * t0 * t14 * t10) + (356.0 * t0 * t14 * t11)
@@ -244,7 +451,7 @@ pub fn bc_error(s: f64) -> f64 {
             - (288.0 * t14 * t16 * t15) - (72.0 * t14 * t17 * t3)
             - (384.0 * t14 * t17 * t15) + (32.0 * t14 * s.powi(11) * t3)
             - (9.0 * t10 * t5 * t7 * t13) + (9.0 * t5 * t7 * t13))
-        / ((-1.0 + s) * (1.0 + s) * (1.0 - (2.0 * t0 * s * t3) + t1) * t5 * t7 * t13))
+        / ((t18 * t19 * t20 * t5 * t7 * t13)))
 }
 /// Residuals (19), (20) with η = η(s) and η' = dη/ds passed in.
 #[inline]
@@ -265,17 +472,18 @@ pub fn residuals_eta(
     let t5 = abar.powi(3);
     let t6 = s.powi(4);
     let t7 = s.powi(6);
+    let t8 = t3.powi(2);
     [
         ((-2.0 + (8.0 * t0 * t1 * t4) - (18.0 * t2) - (2.0 * t2 * eta * abar * dbar)
             + (t2 * eta * t5) - (22.0 * t6) - (8.0 * t6 * eta * abar * dbar)
             + (2.0 * t6 * eta * t5) - (6.0 * t7) - (6.0 * t7 * eta * abar * dbar)
-            + (t7 * eta * t5)) / (t2 * eta * t3.powi(2))),
+            + (t7 * eta * t5)) / ((t2 * eta * t8))),
         (((6.0 * rho) - (12.0 * t0 * s * rho * t4) - (24.0 * t0 * t1 * rho * t4)
             - (4.0 * t0 * s.powi(5) * rho * t4) - (6.0 * t2 * eta * abar * dbar * rho)
             + (22.0 * t2 * rho) - (8.0 * t6 * eta * abar * dbar * rho) + (t6 * eta * t5)
             + (18.0 * t6 * rho) - (2.0 * t7 * eta * abar * dbar * rho)
             + (2.0 * t7 * eta * t5) + (2.0 * t7 * rho) + (s.powi(8) * eta * t5))
-            / (t6 * eta * t3.powi(2))),
+            / ((t6 * eta * t8))),
     ]
 }
 /// Residuals (19), (20) and their Jacobian with respect to (ā, s), side by side: `[r1, r2, ∂r1/∂ā, ∂r1/∂s, ∂r2/∂ā, ∂r2/∂s]`; η and η' passed in.
@@ -301,49 +509,51 @@ pub fn residuals_and_jacobian_eta(
         + (t2 * eta * t5) - (22.0 * t6) - (8.0 * t6 * eta * abar * dbar)
         + (2.0 * t6 * eta * t5) - (6.0 * t7) - (6.0 * t7 * eta * abar * dbar)
         + (t7 * eta * t5));
-    let t9 = s.powi(5);
-    let t10 = s.powi(8);
-    let t11 = ((6.0 * rho) - (12.0 * t0 * s * rho * t4) - (24.0 * t0 * t1 * rho * t4)
-        - (4.0 * t0 * t9 * rho * t4) - (6.0 * t2 * eta * abar * dbar * rho)
+    let t9 = t3.powi(2);
+    let t10 = (t2 * eta * t9);
+    let t11 = s.powi(5);
+    let t12 = s.powi(8);
+    let t13 = ((6.0 * rho) - (12.0 * t0 * s * rho * t4) - (24.0 * t0 * t1 * rho * t4)
+        - (4.0 * t0 * t11 * rho * t4) - (6.0 * t2 * eta * abar * dbar * rho)
         + (22.0 * t2 * rho) - (8.0 * t6 * eta * abar * dbar * rho) + (t6 * eta * t5)
         + (18.0 * t6 * rho) - (2.0 * t7 * eta * abar * dbar * rho)
-        + (2.0 * t7 * eta * t5) + (2.0 * t7 * rho) + (t10 * eta * t5));
-    let t12 = abar.powi(2);
+        + (2.0 * t7 * eta * t5) + (2.0 * t7 * rho) + (t12 * eta * t5));
+    let t14 = (t6 * eta * t9);
+    let t15 = abar.powi(2);
+    let t16 = eta.powi(2);
+    let t17 = t3.powi(3);
     [
-        (t8 / (t2 * eta * t3.powi(2))),
-        (t11 / (t6 * eta * t3.powi(2))),
-        ((-(2.0 * t2 * eta * dbar) + (3.0 * t2 * eta * t12) - (8.0 * t6 * eta * dbar)
-            + (6.0 * t6 * eta * t12) - (6.0 * t7 * eta * dbar) + (3.0 * t7 * eta * t12))
-            / (t2 * eta * t3.powi(2))),
+        (t8 / (t10)),
+        (t13 / (t14)),
+        ((-(2.0 * t2 * eta * dbar) + (3.0 * t2 * eta * t15) - (8.0 * t6 * eta * dbar)
+            + (6.0 * t6 * eta * t15) - (6.0 * t7 * eta * dbar) + (3.0 * t7 * eta * t15))
+            / (t10)),
         ((eta_s
             * (((-(2.0 * t2 * abar * dbar) + (t2 * t5) - (8.0 * t6 * abar * dbar)
-                + (2.0 * t6 * t5) - (6.0 * t7 * abar * dbar) + (t7 * t5))
-                / (t2 * eta * t3.powi(2))) - (t8 / (t2 * eta.powi(2) * t3.powi(2)))))
-            - (4.0 * t8 / (s * eta * t3.powi(3)))
+                + (2.0 * t6 * t5) - (6.0 * t7 * abar * dbar) + (t7 * t5)) / (t10))
+                - (t8 / ((t2 * t16 * t9))))) - (4.0 * t8 / ((s * eta * t17)))
             + ((-(36.0 * s) - (4.0 * s * eta * abar * dbar) + (2.0 * s * eta * t5)
                 + (24.0 * t0 * t2 * t4) + (8.0 * t0 * t6 / (t4)) - (88.0 * t1)
-                - (32.0 * t1 * eta * abar * dbar) + (8.0 * t1 * eta * t5) - (36.0 * t9)
-                - (36.0 * t9 * eta * abar * dbar) + (6.0 * t9 * eta * t5))
-                / (t2 * eta * t3.powi(2))) - (2.0 * t8 / (t1 * eta * t3.powi(2)))),
+                - (32.0 * t1 * eta * abar * dbar) + (8.0 * t1 * eta * t5) - (36.0 * t11)
+                - (36.0 * t11 * eta * abar * dbar) + (6.0 * t11 * eta * t5)) / (t10))
+            - (2.0 * t8 / ((t1 * eta * t9)))),
         ((-(6.0 * t2 * eta * dbar * rho) - (8.0 * t6 * eta * dbar * rho)
-            + (3.0 * t6 * eta * t12) - (2.0 * t7 * eta * dbar * rho)
-            + (6.0 * t7 * eta * t12) + (3.0 * t10 * eta * t12))
-            / (t6 * eta * t3.powi(2))),
+            + (3.0 * t6 * eta * t15) - (2.0 * t7 * eta * dbar * rho)
+            + (6.0 * t7 * eta * t15) + (3.0 * t12 * eta * t15)) / (t14)),
         ((eta_s
             * (((-(6.0 * t2 * abar * dbar * rho) - (8.0 * t6 * abar * dbar * rho)
                 + (t6 * t5) - (2.0 * t7 * abar * dbar * rho) + (2.0 * t7 * t5)
-                + (t10 * t5)) / (t6 * eta * t3.powi(2)))
-                - (t11 / (t6 * eta.powi(2) * t3.powi(2)))))
-            - (4.0 * t11 / (t1 * eta * t3.powi(3)))
+                + (t12 * t5)) / (t14)) - (t13 / ((t6 * t16 * t9)))))
+            - (4.0 * t13 / ((t1 * eta * t17)))
             + ((-(12.0 * s * eta * abar * dbar * rho) + (44.0 * s * rho)
                 - (12.0 * t0 * rho * t4) - (72.0 * t0 * t2 * rho * t4)
                 - (12.0 * t0 * t2 * rho / (t4)) - (20.0 * t0 * t6 * rho * t4)
                 - (24.0 * t0 * t6 * rho / (t4)) - (4.0 * t0 * t7 * rho / (t4))
                 - (32.0 * t1 * eta * abar * dbar * rho) + (4.0 * t1 * eta * t5)
-                + (72.0 * t1 * rho) - (12.0 * t9 * eta * abar * dbar * rho)
-                + (12.0 * t9 * eta * t5) + (12.0 * t9 * rho)
-                + (8.0 * s.powi(7) * eta * t5)) / (t6 * eta * t3.powi(2)))
-            - (4.0 * t11 / (t9 * eta * t3.powi(2)))),
+                + (72.0 * t1 * rho) - (12.0 * t11 * eta * abar * dbar * rho)
+                + (12.0 * t11 * eta * t5) + (12.0 * t11 * rho)
+                + (8.0 * s.powi(7) * eta * t5)) / (t14))
+            - (4.0 * t13 / ((t11 * eta * t9)))),
     ]
 }
 /// ∂(19)/∂δ̄, ∂(20)/∂δ̄ (for continuation and load control); η passed in.
@@ -360,11 +570,13 @@ pub fn residuals_d_dbar_eta(
     let t0 = s.powi(2);
     let t1 = s.powi(4);
     let t2 = s.powi(6);
+    let t3 = (1.0 + t0);
+    let t4 = t3.powi(2);
     [
         ((-(2.0 * t0 * eta * abar) - (8.0 * t1 * eta * abar) - (6.0 * t2 * eta * abar))
-            / (t0 * eta * (1.0 + t0).powi(2))),
+            / ((t0 * eta * t4))),
         ((-(6.0 * t0 * eta * abar * rho) - (8.0 * t1 * eta * abar * rho)
-            - (2.0 * t2 * eta * abar * rho)) / (t1 * eta * (1.0 + t0).powi(2))),
+            - (2.0 * t2 * eta * abar * rho)) / ((t1 * eta * t4))),
     ]
 }
 /// ξ from the first line of Eq. (15).
@@ -395,7 +607,7 @@ pub fn force_bar(abar: f64, s: f64, dbar: f64, eta: f64) -> f64 {
             + (::core::f64::consts::PI * s * t2)
             + (::core::f64::consts::PI * s.powi(3) * eta * t5 * dbar)
             + (::core::f64::consts::PI * t6 * eta * t5 * dbar)
-            - (::core::f64::consts::PI * t6 * t2)) / (eta * t3.powi(2)))
+            - (::core::f64::consts::PI * t6 * t2)) / ((eta * t3.powi(2))))
 }
 /// F̄ in terms of ξ: Eq. (8) with (10), (13), (17).
 #[inline]
@@ -407,7 +619,7 @@ pub fn force_bar_xi(abar: f64, s: f64, xi: f64, eta: f64) -> f64 {
     (-0.020833333333333332
         * ((4.0 * 1.4142135623730951 * ::core::f64::consts::PI * t0 * t1 * t2.sqrt())
             - (8.0 * ::core::f64::consts::PI * xi * s * t1)
-            - (8.0 * ::core::f64::consts::PI * xi * s.powi(3) * t1)) / (eta * t2))
+            - (8.0 * ::core::f64::consts::PI * xi * s.powi(3) * t1)) / ((eta * t2)))
 }
 /// p₀/(√(2mΔγ) L) with L = (2R₁²Δγ/m)^(1/6): Section 6's p₀ = √(2mΔγ) a ξ/(2η).
 #[inline]
@@ -434,13 +646,13 @@ pub fn laplace_system(
     [
         (-1.0
             * ((2.0 * p0 * t0) + (2.0 * t1 * shape_a * p0 * t0) + (2.0 * t1 * p0)
-                + (2.0 * t1 * p0 * t0 * shape_b) - (t1 * t0 * m * delta)) / (t1 * t0)),
+                + (2.0 * t1 * p0 * t0 * shape_b) - (t1 * t0 * m * delta)) / ((t1 * t0))),
         (0.5
             * ((24.0 * shape_a * p0 * t0 * r1) + (4.0 * p0 * t0 * shape_b * r1)
-                + (4.0 * t1 * shape_a * p0 * r1) - (t1 * t0 * m)) / (t1 * t0 * r1)),
+                + (4.0 * t1 * shape_a * p0 * r1) - (t1 * t0 * m)) / ((t1 * t0 * r1))),
         (0.5
             * ((4.0 * p0 * t0 * shape_b * r2) + (4.0 * t1 * shape_a * p0 * r2)
-                + (24.0 * t1 * p0 * shape_b * r2) - (t1 * t0 * m)) / (t1 * t0 * r2)),
+                + (24.0 * t1 * p0 * shape_b * r2) - (t1 * t0 * m)) / ((t1 * t0 * r2))),
     ]
 }
 /// The force (8): ∫∫ p over the ellipse (7), shape parameters free.
@@ -468,12 +680,13 @@ pub fn normal_derivative(
     let t2 = u.powi(2);
     let t3 = a.powi(2);
     let t4 = a.powi(4);
+    let t5 = ((t3 * u) + t0 - (t0 * u));
     (-2.0
         * ((p0 * t0) - (p0 * t0 * u) - (p0 * t1 * shape_b * u) + (p0 * t1 * shape_b * t2)
             - (t3 * shape_a * p0 * t0) + (2.0 * t3 * shape_a * p0 * t0 * u)
             - (t3 * shape_a * p0 * t0 * t2) + (t3 * p0 * u)
             - (t3 * p0 * t0 * shape_b * t2) - (t4 * shape_a * p0 * u)
-            + (t4 * shape_a * p0 * t2)) / (a * b * ((t3 * u) + t0 - (t0 * u)).sqrt()))
+            + (t4 * shape_a * p0 * t2)) / ((a * b * t5.sqrt())))
 }
 /// ∂p/∂ν on Γ₀ after collocation, Eq. (11), at u = sin²t.
 #[inline]
@@ -486,25 +699,26 @@ pub fn normal_derivative_collocated(p0: f64, a: f64, s: f64, xi: f64, u: f64) ->
     let t4 = s.powi(3);
     let t5 = (1.0 + t0);
     let t6 = t5.sqrt();
+    let t7 = (u - (u * t0) + t0);
     (2.0
         * ((p0 * u) - (2.0 * p0 * u * t0) - (3.0 * p0 * u * t1) - (2.0 * p0 * t2)
             + (2.0 * p0 * t2 * t1) + (p0 * t0) + (p0 * t1)
             + (2.0 * t3 * p0 * u * t4 * t6) + (2.0 * t3 * p0 * t2 * s * t6)
-            - (2.0 * t3 * p0 * t2 * t4 * t6))
-        / (a * xi * s * t5 * (u - (u * t0) + t0).sqrt()))
+            - (2.0 * t3 * p0 * t2 * t4 * t6)) / ((a * xi * s * t5 * t7.sqrt())))
 }
 /// The shape parameters (A, B) from the collocation, Eq. (10).
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn shape(a: f64, s: f64, xi: f64) -> [f64; 2] {
     let t0 = (1.0 / xi);
-    let t1 = 1.4142135623730951;
-    let t2 = s.powi(2);
-    let t3 = (1.0 + t2);
+    let t1 = a.powi(2);
+    let t2 = 1.4142135623730951;
+    let t3 = s.powi(2);
+    let t4 = (1.0 + t3);
     [
-        ((1.0 + t0) / (a.powi(2))),
-        (0.5 * t1 * ((4.0 * s * t3.sqrt()) - t1 + (t1 * xi) + (t1 * xi * t2) - (t1 * t2))
-            / (a.powi(2) * xi * t2 * t3)),
+        ((1.0 + t0) / (t1)),
+        (0.5 * t2 * ((4.0 * s * t4.sqrt()) - t2 + (t2 * xi) + (t2 * xi * t3) - (t2 * t3))
+            / ((t1 * xi * t3 * t4))),
     ]
 }
 /// The pressure (5) with the collocation (10): Section 6's p(x, y).
@@ -536,7 +750,7 @@ pub fn pressure(x: f64, y: f64, p0: f64, a: f64, s: f64, xi: f64) -> f64 {
             - (4.0 * t8 * p0 * t6 * xi * t1) - (4.0 * t8 * p0 * t6 * xi * t9)
             + (2.0 * t8 * p0 * t6 * t1) + (2.0 * t8 * p0 * t6 * t9)
             + (2.0 * t12 * p0 * xi * t9) + (2.0 * t12 * p0 * xi * t10))
-        / (t12 * xi * t9 * t3))
+        / ((t12 * xi * t9 * t3)))
 }
 /// The solution curve at fixed ρ, explicit in s: `[ā³, δ̄ ā]` (both residuals are linear in these); η passed in.
 #[inline]
@@ -551,16 +765,17 @@ pub fn branch_eta(s: f64, rho: f64, eta: f64) -> [f64; 2] {
     let t6 = s.powi(4);
     let t7 = s.powi(6);
     let t8 = (t7 * rho);
+    let t9 = (-(3.0 * rho) + t1 - (t1 * rho) + (3.0 * t6));
+    let t10 = (t1 * eta * t2 * t9);
     [
         (-12.0
             * (rho - (t0 * s * rho * t3) - (6.0 * t0 * t4 * rho * t3)
                 - (t0 * t5 * rho * t3) + (7.0 * t1 * rho) + (7.0 * t6 * rho) + t8)
-            / (t1 * eta * t2 * (-(3.0 * rho) + t1 - (t1 * rho) + (3.0 * t6)))),
+            / (t10)),
         (-1.0
             * ((3.0 * rho) - (6.0 * t0 * s * rho * t3) - (12.0 * t0 * t4 * rho * t3)
                 - (2.0 * t0 * t5 * rho * t3) - (4.0 * t0 * t5 * t3) + t1
                 + (11.0 * t1 * rho) + (9.0 * t6) + (9.0 * t6 * rho) + (11.0 * t7) + t8
-                + (3.0 * s.powi(8)))
-            / (t1 * eta * t2 * (-(3.0 * rho) + t1 - (t1 * rho) + (3.0 * t6)))),
+                + (3.0 * s.powi(8))) / (t10)),
     ]
 }

@@ -9,9 +9,11 @@
 pub fn eta(s: f64) -> f64 {
     let t0 = 1.7320508075688772;
     let t1 = s.powi(2);
+    let t2 = (1.0 + s);
+    let t3 = (1.0 + s + t1);
     (0.2222222222222222
         * (t0 + (2.0 * t0 * s) + (3.0 * t0 * t1) + (2.0 * t0 * s.powi(3))
-            + (t0 * s.powi(4))) / (s * (1.0 + s) * (1.0 + s + t1).sqrt()))
+            + (t0 * s.powi(4))) / ((s * t2 * t3.sqrt())))
 }
 /// dη/ds, derivative of Eq. (16).
 #[inline]
@@ -23,12 +25,36 @@ pub fn eta_s(s: f64) -> f64 {
     let t3 = s.powi(3);
     let t4 = s.powi(4);
     let t5 = s.powi(5);
+    let t6 = (1.0 + s);
     (-0.1111111111111111
         * ((t0 * s) + (4.0 * t0 * s * t2) + (2.0 * t0 * t2) + (5.0 * t0 * t1)
             - (2.0 * t0 * t1 * t2) + (11.0 * t0 * t3) - (8.0 * t0 * t3 * t2)
             + (15.0 * t0 * t4) - (10.0 * t0 * t4 * t2) + (13.0 * t0 * t5)
             - (4.0 * t0 * t5 * t2) + (7.0 * t0 * s.powi(6)) + (2.0 * t0 * s.powi(7)))
-        / (t1 * (1.0 + s).powi(2) * (t2.sqrt() * t2)))
+        / ((t1 * t6.powi(2) * (t2.sqrt() * t2))))
+}
+/// `[η, dη/ds]` of Eq. (16), side by side (shared subexpressions computed once).
+#[inline]
+#[allow(clippy::all, unused_parens, unused_variables)]
+pub fn eta_and_eta_s(s: f64) -> [f64; 2] {
+    let t0 = 1.7320508075688772;
+    let t1 = s.powi(2);
+    let t2 = s.powi(3);
+    let t3 = s.powi(4);
+    let t4 = (1.0 + s);
+    let t5 = (1.0 + s + t1);
+    let t6 = s.powi(5);
+    [
+        (0.2222222222222222
+            * (t0 + (2.0 * t0 * s) + (3.0 * t0 * t1) + (2.0 * t0 * t2) + (t0 * t3))
+            / ((s * t4 * t5.sqrt()))),
+        (-0.1111111111111111
+            * ((t0 * s) + (4.0 * t0 * s * t5) + (2.0 * t0 * t5) + (5.0 * t0 * t1)
+                - (2.0 * t0 * t1 * t5) + (11.0 * t0 * t2) - (8.0 * t0 * t2 * t5)
+                + (15.0 * t0 * t3) - (10.0 * t0 * t3 * t5) + (13.0 * t0 * t6)
+                - (4.0 * t0 * t6 * t5) + (7.0 * t0 * s.powi(6)) + (2.0 * t0 * s.powi(7)))
+            / ((t1 * t4.powi(2) * (t5.sqrt() * t5)))),
+    ]
 }
 /// Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
 #[inline]
@@ -38,10 +64,11 @@ pub fn bc_error(s: f64) -> f64 {
     let t1 = (1.0 + s + t0);
     let t2 = t1.sqrt();
     let t3 = 1.7320508075688772;
+    let t4 = (1.0 + s);
     (0.1111111111111111
         * (-(9.0 * s * t2) + (2.0 * t3) + (4.0 * t3 * s) + (6.0 * t3 * t0)
             + (4.0 * t3 * s.powi(3)) + (2.0 * t3 * s.powi(4)) - (9.0 * t0 * t2))
-        / (s * (1.0 + s) * t2))
+        / ((s * t4 * t2)))
 }
 /// Residuals (19), (20) with η = η(s) and η' = dη/ds passed in.
 #[inline]
@@ -58,13 +85,14 @@ pub fn residuals_eta(
     let t1 = abar.powi(3);
     let t2 = s.powi(3);
     let t3 = s.powi(4);
+    let t4 = (1.0 + t0);
     [
         ((-2.0 - (12.0 * t0) - (2.0 * t0 * eta * abar * dbar) + (t0 * eta * t1)
             + (4.0 * t2) - (6.0 * t3) - (6.0 * t3 * eta * abar * dbar) + (t3 * eta * t1))
-            / (t0 * eta * (1.0 + t0))),
+            / ((t0 * eta * t4))),
         ((-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho) - (6.0 * rho)
             - (12.0 * t0 * rho) - (2.0 * t2 * eta * abar * dbar * rho) + (t2 * eta * t1)
-            - (2.0 * t3 * rho) + (s.powi(5) * eta * t1)) / (t2 * eta * (1.0 + t0))),
+            - (2.0 * t3 * rho) + (s.powi(5) * eta * t1)) / ((t2 * eta * t4))),
     ]
 }
 /// Residuals (19), (20) and their Jacobian with respect to (ā, s), side by side: `[r1, r2, ∂r1/∂ā, ∂r1/∂s, ∂r2/∂ā, ∂r2/∂s]`; η and η' passed in.
@@ -85,34 +113,37 @@ pub fn residuals_and_jacobian_eta(
     let t4 = (-2.0 - (12.0 * t0) - (2.0 * t0 * eta * abar * dbar) + (t0 * eta * t1)
         + (4.0 * t2) - (6.0 * t3) - (6.0 * t3 * eta * abar * dbar) + (t3 * eta * t1));
     let t5 = (1.0 + t0);
-    let t6 = s.powi(5);
-    let t7 = (-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho) - (6.0 * rho)
+    let t6 = (t0 * eta * t5);
+    let t7 = s.powi(5);
+    let t8 = (-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho) - (6.0 * rho)
         - (12.0 * t0 * rho) - (2.0 * t2 * eta * abar * dbar * rho) + (t2 * eta * t1)
-        - (2.0 * t3 * rho) + (t6 * eta * t1));
-    let t8 = abar.powi(2);
+        - (2.0 * t3 * rho) + (t7 * eta * t1));
+    let t9 = (t2 * eta * t5);
+    let t10 = abar.powi(2);
+    let t11 = eta.powi(2);
+    let t12 = t5.powi(2);
     [
-        (t4 / (t0 * eta * t5)),
-        (t7 / (t2 * eta * t5)),
-        ((-(2.0 * t0 * eta * dbar) + (3.0 * t0 * eta * t8) - (6.0 * t3 * eta * dbar)
-            + (3.0 * t3 * eta * t8)) / (t0 * eta * t5)),
+        (t4 / (t6)),
+        (t8 / (t9)),
+        ((-(2.0 * t0 * eta * dbar) + (3.0 * t0 * eta * t10) - (6.0 * t3 * eta * dbar)
+            + (3.0 * t3 * eta * t10)) / (t6)),
         ((eta_s
             * (((-(2.0 * t0 * abar * dbar) + (t0 * t1) - (6.0 * t3 * abar * dbar)
-                + (t3 * t1)) / (t0 * eta * t5)) - (t4 / (t0 * eta.powi(2) * t5))))
-            - (2.0 * t4 / (s * eta * t5.powi(2)))
+                + (t3 * t1)) / (t6)) - (t4 / ((t0 * t11 * t5)))))
+            - (2.0 * t4 / ((s * eta * t12)))
             + ((-(24.0 * s) - (4.0 * s * eta * abar * dbar) + (2.0 * s * eta * t1)
                 + (12.0 * t0) - (24.0 * t2) - (24.0 * t2 * eta * abar * dbar)
-                + (4.0 * t2 * eta * t1)) / (t0 * eta * t5))
-            - (2.0 * t4 / (t2 * eta * t5))),
+                + (4.0 * t2 * eta * t1)) / (t6)) - (2.0 * t4 / (t9))),
         ((-(6.0 * s * eta * dbar * rho) - (2.0 * t2 * eta * dbar * rho)
-            + (3.0 * t2 * eta * t8) + (3.0 * t6 * eta * t8)) / (t2 * eta * t5)),
+            + (3.0 * t2 * eta * t10) + (3.0 * t7 * eta * t10)) / (t9)),
         ((eta_s
             * (((-(6.0 * s * abar * dbar * rho) - (2.0 * t2 * abar * dbar * rho)
-                + (t2 * t1) + (t6 * t1)) / (t2 * eta * t5))
-                - (t7 / (t2 * eta.powi(2) * t5)))) - (2.0 * t7 / (t0 * eta * t5.powi(2)))
+                + (t2 * t1) + (t7 * t1)) / (t9)) - (t8 / ((t2 * t11 * t5)))))
+            - (2.0 * t8 / ((t0 * eta * t12)))
             + ((-(24.0 * s * rho) - (6.0 * eta * abar * dbar * rho) + (4.0 * rho)
                 - (6.0 * t0 * eta * abar * dbar * rho) + (3.0 * t0 * eta * t1)
-                - (8.0 * t2 * rho) + (5.0 * t3 * eta * t1)) / (t2 * eta * t5))
-            - (3.0 * t7 / (t3 * eta * t5))),
+                - (8.0 * t2 * rho) + (5.0 * t3 * eta * t1)) / (t9))
+            - (3.0 * t8 / ((t3 * eta * t5)))),
     ]
 }
 /// ∂(19)/∂δ̄, ∂(20)/∂δ̄ (for continuation and load control); η passed in.
@@ -127,11 +158,13 @@ pub fn residuals_d_dbar_eta(
     eta_s: f64,
 ) -> [f64; 2] {
     let t0 = s.powi(2);
+    let t1 = (1.0 + t0);
+    let t2 = s.powi(3);
     [
         ((-(2.0 * t0 * eta * abar) - (6.0 * s.powi(4) * eta * abar))
-            / (t0 * eta * (1.0 + t0))),
-        ((-(6.0 * s * eta * abar * rho) - (2.0 * s.powi(3) * eta * abar * rho))
-            / (s.powi(3) * eta * (1.0 + t0))),
+            / ((t0 * eta * t1))),
+        ((-(6.0 * s * eta * abar * rho) - (2.0 * t2 * eta * abar * rho))
+            / ((t2 * eta * t1))),
     ]
 }
 /// ξ from the first line of Eq. (15).
@@ -139,7 +172,8 @@ pub fn residuals_d_dbar_eta(
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn xi(abar: f64, s: f64, dbar: f64, eta: f64) -> f64 {
     let t0 = s.powi(2);
-    (0.5 * (-s - t0 + (t0 * eta * abar * dbar)) / ((1.0 + t0)))
+    let t1 = (1.0 + t0);
+    (0.5 * (-s - t0 + (t0 * eta * abar * dbar)) / (t1))
 }
 /// F̄ of Eq. (18) in its derived form (the printed (18) lacks η(s); see docs/errata.md).
 #[inline]
@@ -148,12 +182,13 @@ pub fn force_bar(abar: f64, s: f64, dbar: f64, eta: f64) -> f64 {
     let t0 = abar.powi(3);
     let t1 = s.powi(2);
     let t2 = s.powi(3);
+    let t3 = (1.0 + t1);
     (0.041666666666666664
         * (-(::core::f64::consts::PI * s * t0)
             - (3.0 * ::core::f64::consts::PI * t1 * t0)
             + (2.0 * ::core::f64::consts::PI * t2 * eta * abar.powi(4) * dbar)
             - (3.0 * ::core::f64::consts::PI * t2 * t0)
-            - (::core::f64::consts::PI * s.powi(4) * t0)) / (eta * (1.0 + t1)))
+            - (::core::f64::consts::PI * s.powi(4) * t0)) / ((eta * t3)))
 }
 /// F̄ in terms of ξ: Eq. (8) with (10), (13), (17).
 #[inline]
@@ -190,13 +225,13 @@ pub fn laplace_system(
     [
         (-1.0
             * ((2.0 * p0 * t0) + (2.0 * t1 * shape_a * p0 * t0) + (2.0 * t1 * p0)
-                + (2.0 * t1 * p0 * t0 * shape_b) - (t1 * t0 * m * delta)) / (t1 * t0)),
+                + (2.0 * t1 * p0 * t0 * shape_b) - (t1 * t0 * m * delta)) / ((t1 * t0))),
         (0.5
             * ((24.0 * shape_a * p0 * t0 * r1) + (4.0 * p0 * t0 * shape_b * r1)
-                + (4.0 * t1 * shape_a * p0 * r1) - (t1 * t0 * m)) / (t1 * t0 * r1)),
+                + (4.0 * t1 * shape_a * p0 * r1) - (t1 * t0 * m)) / ((t1 * t0 * r1))),
         (0.5
             * ((4.0 * p0 * t0 * shape_b * r2) + (4.0 * t1 * shape_a * p0 * r2)
-                + (24.0 * t1 * p0 * shape_b * r2) - (t1 * t0 * m)) / (t1 * t0 * r2)),
+                + (24.0 * t1 * p0 * shape_b * r2) - (t1 * t0 * m)) / ((t1 * t0 * r2))),
     ]
 }
 /// The force (8): ∫∫ p over the ellipse (7), shape parameters free.
@@ -224,12 +259,13 @@ pub fn normal_derivative(
     let t2 = u.powi(2);
     let t3 = a.powi(2);
     let t4 = a.powi(4);
+    let t5 = ((t3 * u) + t0 - (t0 * u));
     (-2.0
         * ((p0 * t0) - (p0 * t0 * u) - (p0 * t1 * shape_b * u) + (p0 * t1 * shape_b * t2)
             - (t3 * shape_a * p0 * t0) + (2.0 * t3 * shape_a * p0 * t0 * u)
             - (t3 * shape_a * p0 * t0 * t2) + (t3 * p0 * u)
             - (t3 * p0 * t0 * shape_b * t2) - (t4 * shape_a * p0 * u)
-            + (t4 * shape_a * p0 * t2)) / (a * b * ((t3 * u) + t0 - (t0 * u)).sqrt()))
+            + (t4 * shape_a * p0 * t2)) / ((a * b * t5.sqrt())))
 }
 /// ∂p/∂ν on Γ₀ after collocation, Eq. (11), at u = sin²t.
 #[inline]
@@ -238,17 +274,18 @@ pub fn normal_derivative_collocated(p0: f64, a: f64, s: f64, xi: f64, u: f64) ->
     let t0 = s.powi(2);
     let t1 = s.powi(3);
     let t2 = u.powi(2);
+    let t3 = (u - (u * t0) + t0);
     (-2.0
         * (-(p0 * u) + (2.0 * p0 * u * t0) - (p0 * u * t1) + (p0 * t2) - (p0 * t2 * s)
-            - (p0 * t2 * t0) + (p0 * t2 * t1) - (p0 * t0))
-        / (a * xi * s * (u - (u * t0) + t0).sqrt()))
+            - (p0 * t2 * t0) + (p0 * t2 * t1) - (p0 * t0)) / ((a * xi * s * t3.sqrt())))
 }
 /// The shape parameters (A, B) from the collocation, Eq. (10).
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn shape(a: f64, s: f64, xi: f64) -> [f64; 2] {
     let t0 = (1.0 / xi);
-    [((1.0 + t0) / (a.powi(2))), ((xi + s) / (a.powi(2) * xi * s.powi(2)))]
+    let t1 = a.powi(2);
+    [((1.0 + t0) / (t1)), ((xi + s) / ((t1 * xi * s.powi(2))))]
 }
 /// The pressure (5) with the collocation (10): Section 6's p(x, y).
 #[inline]
@@ -262,11 +299,12 @@ pub fn pressure(x: f64, y: f64, p0: f64, a: f64, s: f64, xi: f64) -> f64 {
     let t5 = a.powi(2);
     let t6 = s.powi(4);
     let t7 = x.powi(4);
+    let t8 = a.powi(4);
     (((p0 * t0 * xi) + (p0 * t0 * s) + (2.0 * t1 * p0 * t2 * xi * t3)
         + (t1 * p0 * t2 * t3) + (t1 * p0 * t2 * t4) - (2.0 * t1 * t5 * p0 * xi * t6)
         - (t1 * t5 * p0 * t6) + (t7 * p0 * xi * t6) + (t7 * p0 * t6)
-        - (2.0 * t5 * p0 * t2 * xi * t3) - (t5 * p0 * t2 * t4)
-        + (a.powi(4) * p0 * xi * t6)) / (a.powi(4) * xi * t6))
+        - (2.0 * t5 * p0 * t2 * xi * t3) - (t5 * p0 * t2 * t4) + (t8 * p0 * xi * t6))
+        / ((t8 * xi * t6)))
 }
 /// The solution curve at fixed ρ, explicit in s: `[ā³, δ̄ ā]` (both residuals are linear in these); η passed in.
 #[inline]
@@ -276,15 +314,14 @@ pub fn branch_eta(s: f64, rho: f64, eta: f64) -> [f64; 2] {
     let t1 = s.powi(3);
     let t2 = s.powi(4);
     let t3 = s.powi(5);
+    let t4 = (-(3.0 * rho) + t0 - (t0 * rho) + (3.0 * t2));
     [
         (6.0
             * ((s * rho) - rho - (6.0 * t0 * rho) + (6.0 * t1 * rho) - (t2 * rho)
-                + (t3 * rho))
-            / (t0 * eta * (-(3.0 * rho) + t0 - (t0 * rho) + (3.0 * t2)))),
+                + (t3 * rho)) / ((t0 * eta * t4))),
         (-1.0
             * (s + (2.0 * s * rho) - (3.0 * rho) - (6.0 * t0 * rho) + (6.0 * t1)
-                - (2.0 * t2) - (t2 * rho) + (3.0 * t3))
-            / (s * eta * (-(3.0 * rho) + t0 - (t0 * rho) + (3.0 * t2)))),
+                - (2.0 * t2) - (t2 * rho) + (3.0 * t3)) / ((s * eta * t4))),
     ]
 }
 /// ρ(s) in the non-adhesive limit; its root in s is (29).
@@ -292,7 +329,8 @@ pub fn branch_eta(s: f64, rho: f64, eta: f64) -> [f64; 2] {
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn non_adhesive_rho(s: f64) -> f64 {
     let t0 = s.powi(2);
-    ((t0 + (3.0 * s.powi(4))) / ((3.0 + t0)))
+    let t1 = (3.0 + t0);
+    ((t0 + (3.0 * s.powi(4))) / (t1))
 }
 /// ρ(s) at zero force: Eq. (28).
 #[inline]
@@ -300,13 +338,15 @@ pub fn non_adhesive_rho(s: f64) -> f64 {
 pub fn zero_force_rho(s: f64) -> f64 {
     let t0 = s.powi(2);
     let t1 = s.powi(3);
-    ((t0 + t1 + (5.0 * s.powi(4)) + s.powi(5)) / ((1.0 + (5.0 * s) + t0 + t1)))
+    let t2 = (1.0 + (5.0 * s) + t0 + t1);
+    ((t0 + t1 + (5.0 * s.powi(4)) + s.powi(5)) / (t2))
 }
 /// ā³ at zero force, derived form of Eq. (27) (with η; the printed (27) lacks it).
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn zero_force_abar_cubed(s: f64, eta: f64) -> f64 {
-    (3.0 * (1.0 + s + (5.0 * s.powi(2)) + s.powi(3)) / (s.powi(2) * eta))
+    let t0 = s.powi(2);
+    (3.0 * (1.0 + s + (5.0 * t0) + s.powi(3)) / ((t0 * eta)))
 }
 /// δ̄(ā) for ρ = 1, derived form of Eq. (25)₁ (δ̄ = ā²/4 − 2/ā; the printed 2^(4/3)/ā differs).
 #[inline]
@@ -327,5 +367,6 @@ pub fn axisymmetric_force_bar(abar: f64) -> f64 {
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn near_circular_ds_dmu(abar0: f64) -> f64 {
     let t0 = abar0.powi(3);
-    (-0.6666666666666666 * t0 / ((-4.0 + t0)))
+    let t1 = (-4.0 + t0);
+    (-0.6666666666666666 * t0 / (t1))
 }
