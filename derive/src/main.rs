@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use thinjkr_derive::{ansatz, claims, model::Derivation};
 
 fn usage() -> ExitCode {
-    eprintln!("usage: thinjkr-derive check [--json] | generate");
+    eprintln!("usage: thinjkr-derive check [--json] | generate | timings");
     ExitCode::from(2)
 }
 
@@ -80,6 +80,30 @@ fn main() -> ExitCode {
                     ExitCode::FAILURE
                 }
             }
+        }
+        Some("timings") => {
+            // medians of 5 runs of each symbolic stage, per ansatz
+            let median = |f: &dyn Fn() -> bool| {
+                let mut v: Vec<f64> = (0..5)
+                    .map(|_| {
+                        let t = std::time::Instant::now();
+                        assert!(f());
+                        t.elapsed().as_secs_f64()
+                    })
+                    .collect();
+                v.sort_by(f64::total_cmp);
+                v[2]
+            };
+            for a in ansatz::ALL {
+                let derive = median(&|| Derivation::new(a).is_ok());
+                let d = Derivation::new(a).expect("derives");
+                let codegen = median(&|| thinjkr_derive::codegen::module_source(&d).is_ok());
+                println!("ansatz {:<8} derive {:.3} s, generate code {:.3} s", a.id, derive, codegen);
+            }
+            let d = Derivation::new(&ansatz::PAPER).expect("derives");
+            println!("check (paper) {:.3} s", median(&|| claims::check_all(&d).is_ok()));
+            println!("everything (derive both, check, render all files) {:.3} s", median(&|| thinjkr_derive::generate::outputs().is_ok()));
+            ExitCode::SUCCESS
         }
         _ => usage(),
     }
