@@ -98,11 +98,20 @@ fn main() -> ExitCode {
                 let derive = median(&|| Derivation::new(a).is_ok());
                 let d = Derivation::new(a).expect("derives");
                 let codegen = median(&|| thinjkr_derive::codegen::module_source(&d).is_ok());
-                println!("ansatz {:<8} derive {:.3} s, generate code {:.3} s", a.id, derive, codegen);
+                println!(
+                    "ansatz {:<8} derive {:.3} s, generate code {:.3} s",
+                    a.id, derive, codegen
+                );
             }
             let d = Derivation::new(&ansatz::PAPER).expect("derives");
-            println!("check (paper) {:.3} s", median(&|| claims::check_all(&d).is_ok()));
-            println!("everything (derive both, check, render all files) {:.3} s", median(&|| thinjkr_derive::generate::outputs().is_ok()));
+            println!(
+                "check (paper) {:.3} s",
+                median(&|| claims::check_all(&d).is_ok())
+            );
+            println!(
+                "everything (derive both, check, render all files) {:.3} s",
+                median(&|| thinjkr_derive::generate::outputs().is_ok())
+            );
             ExitCode::SUCCESS
         }
         _ => usage(),

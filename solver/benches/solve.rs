@@ -15,14 +15,26 @@ fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("rho=0.8");
     g.bench_function("warm displacement solve", |b| {
         b.iter(|| {
-            solve(|a, s| Paper::residuals_and_jacobian(a, s, 0.8, black_box(1.999)), (prev.a, prev.s), &cfg, "bench").unwrap()
+            solve(
+                |a, s| Paper::residuals_and_jacobian(a, s, 0.8, black_box(1.999)),
+                (prev.a, prev.s),
+                &cfg,
+                "bench",
+            )
+            .unwrap()
         })
     });
-    g.bench_function("cold displacement solve", |b| b.iter(|| contact.at_displacement(black_box(2.0)).unwrap()));
-    g.bench_function("pull-off (load control)", |b| b.iter(|| contact.pull_off_load().unwrap()));
+    g.bench_function("cold displacement solve", |b| {
+        b.iter(|| contact.at_displacement(black_box(2.0)).unwrap())
+    });
+    g.bench_function("pull-off (load control)", |b| {
+        b.iter(|| contact.pull_off_load().unwrap())
+    });
     g.bench_function("zero force", |b| b.iter(|| contact.zero_force().unwrap()));
     g.sample_size(10);
-    g.bench_function("curve of 1000 points", |b| b.iter(|| trace(&contact, black_box(1000), 20.0).unwrap()));
+    g.bench_function("curve of 1000 points", |b| {
+        b.iter(|| trace(&contact, black_box(1000), 20.0).unwrap())
+    });
     g.finish();
 }
 
