@@ -353,25 +353,21 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
         "2.2894",
     ));
     out.push(decimal_checked(expr_claim("sec4.dc", "Section 4, critical approach", "2^(-2/3)*3^(2/3) - 2^(2/3)*3^(-1/3)", &[], &ax.critical.2, None, "the printed value follows the printed (25)₁; with the derived δ̄(ā) it is (9/4)^(1/3) − (2/3)^(1/3)"), &ax.critical.2, "0.2097"));
-    out.push(
-        expr_claim(
-            "26",
-            "Eq. (26)",
-            "(s + 1)^3/(2*s^2)",
-            &[],
-            &with_eta(&subs(&ex("abar*dbar"), "dbar", &l.zero_force.dbar)),
-            None,
-            &format!(
-                "compared as ā δ̄; derived ā δ̄ = {} (η(s) missing in print, as in (18))",
-                plain(&simplify(&subs(
-                    &ex("abar*dbar"),
-                    "dbar",
-                    &l.zero_force.dbar
-                )))
-            ),
-        )
-        .with_printed_rule("abar*dbar", "(s + 1)^3/(2*s^2)"),
+    let abar_dbar = simplify(&subs(&ex("abar*dbar"), "dbar", &l.zero_force.dbar));
+    let mut c26 = expr_claim(
+        "26",
+        "Eq. (26)",
+        "(s + 1)^3/(2*s^2)",
+        &[],
+        &with_eta(&abar_dbar),
+        None,
+        &format!(
+            "compared as ā δ̄; derived ā δ̄ = {} (η(s) missing in print, as in (18))",
+            plain(&abar_dbar)
+        ),
     );
+    c26.printed = "abar*dbar = (s + 1)^3/(2*s^2)".into();
+    out.push(c26);
     out.push(expr_claim(
         "27",
         "Eq. (27)",
@@ -463,17 +459,6 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
     Ok(out)
 }
 
-trait WithRule {
-    fn with_printed_rule(self, lhs: &str, rhs: &str) -> Self;
-}
-impl WithRule for ClaimResult {
-    /// Record the printed form as `lhs = rhs` for readability.
-    fn with_printed_rule(mut self, lhs: &str, rhs: &str) -> Self {
-        self.printed = format!("{lhs} = {rhs}");
-        self
-    }
-}
-
 /// Also test the printed decimal approximation against the derived value.
 fn decimal_checked(mut c: ClaimResult, derived: &Atom, printed_decimal: &str) -> ClaimResult {
     let v = crate::sym::eval_prec(derived, &[], 30).unwrap_or(f64::NAN);
@@ -541,7 +526,11 @@ fn claim_10(d: &Derivation) -> ClaimResult {
 /// (29): the printed root s² must satisfy the derived non-adhesive relation.
 fn claim_29(l: &Limits) -> ClaimResult {
     let printed = "1/6*(((1 - rho)^2 + 36*rho)^(1/2) - 1 + rho)";
-    let derived_rho_of_printed = subs(&l.non_adhesive_rho, "s", &ex(printed).pow_half());
+    let derived_rho_of_printed = subs(
+        &l.non_adhesive_rho,
+        "s",
+        &symbolica::atom::AtomCore::pow(&ex(printed), &ex("1/2")),
+    );
     let mut c = expr_claim(
         "29",
         "Eq. (29)",
@@ -555,15 +544,6 @@ fn claim_29(l: &Limits) -> ClaimResult {
     c.derived = format!("rho = {}", plain(&l.non_adhesive_rho));
     c.note = format!("the printed s² substituted into the derived relation ρ(s) of the limit Δγ → 0 (ā → ∞ at fixed δ̄/ā²): {}", c.note);
     c
-}
-
-trait PowHalf {
-    fn pow_half(&self) -> Atom;
-}
-impl PowHalf for Atom {
-    fn pow_half(&self) -> Atom {
-        symbolica::atom::AtomCore::pow(self, &ex("1/2"))
-    }
 }
 
 /// (30): error below 0.01 % on (0.4, 1) against the root of the derived (28);

@@ -28,7 +28,7 @@ pub enum Ir {
 }
 
 impl Ir {
-    /// Convert a symbolica atom. Functions other than none are rejected:
+    /// Convert a symbolica atom. Function atoms are rejected:
     /// the model only needs arithmetic and rational powers.
     pub fn from_atom(a: &Atom) -> Result<Ir, String> {
         from_view(a.as_view())

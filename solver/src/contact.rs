@@ -123,15 +123,11 @@ impl<M: Model> Contact<M> {
             return None;
         }
         let a = x.cbrt();
-        Some(self.make_state(a, s, y / a))
+        Some(self.state_from(a, s, y / a))
     }
 
     /// The full state at (ā, s, δ̄), which must satisfy (19)–(20).
     pub fn state_from(&self, a: f64, s: f64, delta: f64) -> State {
-        self.make_state(a, s, delta)
-    }
-
-    fn make_state(&self, a: f64, s: f64, delta: f64) -> State {
         let xi = M::xi(a, s, delta);
         let [shape_a, shape_b] = M::shape(a, s, xi);
         State {
@@ -153,7 +149,7 @@ impl<M: Model> Contact<M> {
 
     fn axisymmetric_state(&self, a: f64) -> State {
         let delta = crate::generated::paper::axisymmetric_dbar(a);
-        let mut st = self.make_state(a, 1.0, delta);
+        let mut st = self.state_from(a, 1.0, delta);
         st.force = crate::generated::paper::axisymmetric_force_bar(a);
         st.bc_error = 0.0;
         st
@@ -192,7 +188,7 @@ impl<M: Model> Contact<M> {
             &self.newton,
             context,
         )?;
-        let mut st = self.make_state(sol.a_bar, sol.s, delta);
+        let mut st = self.state_from(sol.a_bar, sol.s, delta);
         st.beyond_size_fold = guess.beyond_size_fold;
         Ok(st)
     }
@@ -308,7 +304,7 @@ impl<M: Model> Contact<M> {
             let (g0, g1) = (g(s0), g(s1.min(1.0 - 1e-12)));
             if g0.is_finite() && g1.is_finite() && g0.signum() != g1.signum() {
                 let s = bisect(g, s0, s1.min(1.0 - 1e-12))?;
-                let mut st = self.make_state(a, s, delta_of(s));
+                let mut st = self.state_from(a, s, delta_of(s));
                 // the fold flag: compare with the branch's minimum size
                 st.beyond_size_fold = s < self.size_fold()?.s;
                 out.push(st);

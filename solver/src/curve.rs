@@ -158,18 +158,21 @@ pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) ->
             break;
         }
     }
-    // states and folds
+    // states (flagged beyond the first contact-size fold) and folds
+    let size_fold = trail
+        .windows(2)
+        .position(|p| p[0].1[0].signum() != p[1].1[0].signum());
     let states_all: Vec<State> = trail
         .iter()
-        .map(|(w, _)| {
+        .enumerate()
+        .map(|(k, (w, _))| {
             let z = from_z(w);
-            let mut st = contact_state(contact, z);
-            st.beyond_size_fold = false;
+            let mut st = contact.state_from(z[0], z[1], z[2]);
+            st.beyond_size_fold = size_fold.is_some_and(|f| k > f);
             st
         })
         .collect();
     let mut folds = Vec::new();
-    let mut beyond = false;
     for k in 1..trail.len() {
         let (t0, t1) = (trail[k - 1].1, trail[k].1);
         if t0[0].signum() != t1[0].signum() {
@@ -177,7 +180,6 @@ pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) ->
                 kind: FoldKind::ContactSize,
                 state: states_all[k],
             });
-            beyond = true;
         }
         if t0[2].signum() != t1[2].signum() {
             folds.push(Fold {
@@ -198,17 +200,6 @@ pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) ->
                 });
             }
         }
-        let _ = beyond;
-    }
-    // mark states beyond the first contact-size fold
-    let mut marked = states_all.clone();
-    if let Some(k) = trail
-        .windows(2)
-        .position(|p| p[0].1[0].signum() != p[1].1[0].signum())
-    {
-        for st in marked.iter_mut().skip(k + 1) {
-            st.beyond_size_fold = true;
-        }
     }
     // resample evenly in arclength
     let mut arc = vec![0.0];
@@ -223,11 +214,7 @@ pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) ->
         while j + 1 < arc.len() && arc[j + 1] < target {
             j += 1;
         }
-        states.push(marked[j.min(marked.len() - 1)]);
+        states.push(states_all[j.min(states_all.len() - 1)]);
     }
     Ok(Curve { states, folds })
-}
-
-fn contact_state<M: Model>(contact: &Contact<M>, z: Vector3<f64>) -> State {
-    contact.state_from(z[0], z[1], z[2])
 }

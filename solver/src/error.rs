@@ -38,7 +38,8 @@ pub enum Error {
 /// Shorthand.
 pub type Result<T> = std::result::Result<T, Error>;
 
-/// Check `lo < value <= hi` (or `lo <= value` with `closed_low`), finite.
+/// `Ok(value)` when `value` is finite and `ok` (the caller's range test);
+/// otherwise an [`Error::OutOfRange`] naming the parameter and its range.
 pub(crate) fn check_range(
     name: &'static str,
     value: f64,
