@@ -13,8 +13,12 @@
 
 use crate::generate::Output;
 use crate::ir::Ir;
-use crate::model::Derivation;
-use crate::sym::{diff, ex, simplify, subs};
+use crate::ansatz::Closure;
+use crate::energy::EnergyDerivation;
+use crate::model::{Derivation, ModelDerivation};
+use crate::nondimensional::ratio_branch;
+use crate::accuracy::{Chart, SHIFTABLE, SHIFT_PREFIX};
+use crate::sym::{diff, ex, simplify, subs, subs_all};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 use std::collections::HashMap;
@@ -268,22 +272,86 @@ struct Function {
     outputs: Vec<Atom>,
 }
 
-fn render_function(f: &Function) -> Result<TokenStream, String> {
-    let irs: Vec<Ir> = f
-        .outputs
+/// Where a function is used, when narrower than the declared domain of its
+/// parameters (see `accuracy`): the explicit branch is used for ρ < 1 only
+/// (at ρ = 1 it degenerates to 0/0 and the axisymmetric solution is used).
+fn domain_of(name: &str) -> &'static [(&'static str, &'static [f64])] {
+    match name {
+        "branch_eta" | "branch_poly" | "branch_x_pow" => &[("rho", &[0.05, 0.3, 0.8, 0.99, 0.999999])],
+        _ => &[],
+    }
+}
+
+/// A function's outputs rewritten in one chart's variables.
+type Charted = Vec<(Chart, Vec<Atom>)>;
+
+/// Every chart of `f`: one per subset of its shiftable parameters.
+fn charts_for(f: &Function) -> Charted {
+    let shiftable: Vec<&'static str> = SHIFTABLE
+        .iter()
+        .copied()
+        .filter(|x| f.params.contains(x))
+        .collect();
+    (0..(1usize << shiftable.len()))
+        .rev()
+        .map(|mask| {
+            let shifted: Vec<&'static str> = shiftable
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| mask & (1 << k) != 0)
+                .map(|(_, x)| *x)
+                .collect();
+            let rules: Vec<(&str, Atom)> = shifted
+                .iter()
+                .map(|x| (*x, ex(&format!("1 - {SHIFT_PREFIX}{x}"))))
+                .collect();
+            let outs = f
+                .outputs
+                .iter()
+                .map(|o| simplify(&subs_all(o, &rules)))
+                .collect();
+            (Chart { shifted }, outs)
+        })
+        .collect()
+}
+
+/// The straight-line body of one chart (or of the whole function): its
+/// `let` statements and its value.
+fn render_body(name: &str, params: &[&str], outputs: &[Atom], shifted: &[&str]) -> Result<TokenStream, String> {
+    let irs: Vec<Ir> = outputs
         .iter()
         .map(Ir::from_atom)
         .collect::<Result<_, _>>()?;
     for ir in &irs {
         for v in ir.variables() {
-            if !f.params.contains(&v.as_str()) {
-                return Err(format!("{}: unbound variable {v}", f.name));
+            let ok = params.contains(&v.as_str())
+                || shifted.iter().any(|x| v == format!("{SHIFT_PREFIX}{x}"));
+            if !ok {
+                return Err(format!("{name}: unbound variable {v}"));
             }
         }
     }
     let mut em = Emitter::new(&irs.iter().collect::<Vec<_>>());
     let values: Vec<TokenStream> = irs.iter().map(|e| em.emit(e)).collect();
     let lets = &em.lets;
+    let prelude: Vec<TokenStream> = shifted
+        .iter()
+        .map(|x| {
+            let v = ident(&rust_name(x));
+            let id = ident(&format!("{SHIFT_PREFIX}{}", rust_name(x)));
+            quote!(let #id = 1.0 - #v;)
+        })
+        .collect();
+    let body = if values.len() == 1 {
+        let v = &values[0];
+        quote!(#v)
+    } else {
+        quote!([#(#values),*])
+    };
+    Ok(quote!(#(#prelude)* #(#lets)* #body))
+}
+
+fn render_function(f: &Function, charts: Option<&Charted>) -> Result<TokenStream, String> {
     let name = ident(f.name);
     let params: Vec<TokenStream> = f
         .params
@@ -293,20 +361,54 @@ fn render_function(f: &Function) -> Result<TokenStream, String> {
             quote!(#id: f64)
         })
         .collect();
-    let doc = format!(" {}", f.doc);
-    let (ret, body) = if values.len() == 1 {
-        let v = &values[0];
-        (quote!(f64), quote!(#v))
+    let ret = if f.outputs.len() == 1 {
+        quote!(f64)
     } else {
-        let n = Literal::usize_unsuffixed(values.len());
-        (quote!([f64; #n]), quote!([#(#values),*]))
+        let n = Literal::usize_unsuffixed(f.outputs.len());
+        quote!([f64; #n])
+    };
+    let (doc, body) = match charts {
+        None => (
+            format!(" {}", f.doc),
+            render_body(f.name, &f.params, &f.outputs, &[])?,
+        ),
+        Some(charts) => {
+            let shiftable: Vec<&str> = SHIFTABLE.iter().copied().filter(|x| f.params.contains(x)).collect();
+            let mut chain = TokenStream::new();
+            for (k, (chart, outs)) in charts.iter().enumerate() {
+                let b = render_body(f.name, &f.params, outs, &chart.shifted)?;
+                let conds: Vec<TokenStream> = shiftable
+                    .iter()
+                    .map(|x| {
+                        let v = ident(&rust_name(x));
+                        if chart.shifted.contains(x) {
+                            quote!(#v >= 0.5)
+                        } else {
+                            quote!(#v < 0.5)
+                        }
+                    })
+                    .collect();
+                chain = if k + 1 == charts.len() {
+                    quote!(#chain { #b })
+                } else {
+                    quote!(#chain if #(#conds)&&* { #b } else)
+                };
+            }
+            (
+                format!(
+                    " {}\n\n In charts: where a parameter among ({}) is ≥ 1/2 the expression is written in 1 − that parameter (computed exactly), so that nothing cancels near s = 1 or ρ = 1; chosen by the generator's accuracy check.",
+                    f.doc,
+                    shiftable.join(", ")
+                ),
+                chain,
+            )
+        }
     };
     Ok(quote! {
         #[doc = #doc]
         #[inline]
         #[allow(clippy::all, unused_parens, unused_variables)]
         pub fn #name(#(#params),*) -> #ret {
-            #(#lets)*
             #body
         }
     })
@@ -346,6 +448,7 @@ fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
         Function { name: "residuals_d_dbar_eta", doc: "∂(19)/∂δ̄, ∂(20)/∂δ̄ (for continuation and load control); η passed in.".into(), params: state.clone(), outputs: r.iter().map(|x| diff(x, "dbar")).collect() },
         Function { name: "xi", doc: "ξ from the first line of Eq. (15).".into(), params: vec!["abar", "s", "dbar", "eta"], outputs: vec![d.xi[0].clone()] },
         Function { name: "force_bar", doc: "F̄ of Eq. (18) in its derived form (the printed (18) lacks η(s); see docs/errata.md).".into(), params: vec!["abar", "s", "dbar", "eta"], outputs: vec![d.fbar_reduced.clone()] },
+        Function { name: "force_bar_gradient_eta", doc: "∂F̄/∂(ā, s, δ̄) of the derived (18), the chain rule through η(s) applied symbolically; η and η' passed in.".into(), params: vec!["abar", "s", "dbar", "eta", "eta_s"], outputs: vec![diff(&d.fbar_reduced, "abar"), diff(&d.fbar_reduced, "s") + diff(&d.fbar_reduced, "eta") * ex("eta_s"), diff(&d.fbar_reduced, "dbar")] },
         Function { name: "force_bar_xi", doc: "F̄ in terms of ξ: Eq. (8) with (10), (13), (17).".into(), params: vec!["abar", "s", "xi", "eta"], outputs: vec![d.fbar.clone()] },
         Function { name: "p0_bar", doc: "p₀/(√(2mΔγ) L) with L = (2R₁²Δγ/m)^(1/6): Section 6's p₀ = √(2mΔγ) a ξ/(2η).".into(), params: vec!["abar", "xi", "eta"], outputs: vec![simplify(&subs(&subs(&d.p0, "a", &ex("abar")), "g", &Atom::num(1)))] },
         Function { name: "laplace_system", doc: format!("System (6): the coefficients of {} in Δp − m(φ − δ), in the dimensional unknowns.", d.laplace.iter().map(|l| format!("x^{} y^{}", l.monomial.0, l.monomial.1)).collect::<Vec<_>>().join(", ")), params: with_shape(&["p0", "a", "b"], &["m", "delta", "R1", "R2"]), outputs: d.laplace.iter().map(|l| l.residual.clone()).collect() },
@@ -385,44 +488,375 @@ fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
             params: vec!["abar"],
             outputs: vec![l.axisymmetric.fbar.clone()],
         });
+        fs.push(Function {
+            name: "axisymmetric_critical",
+            doc: "The minimum of F̄(ā) at ρ = 1 (Section 4): `[ā_c, F̄_c, δ̄_c]`.".into(),
+            params: vec![],
+            outputs: vec![l.axisymmetric.critical.0.clone(), l.axisymmetric.critical.1.clone(), l.axisymmetric.critical.2.clone()],
+        });
         fs.push(Function { name: "near_circular_ds_dmu", doc: "ds/dμ at μ = 0 and fixed δ for ρ = (1 − μ)/(1 + μ): by (35) equal to −2a₂/a₀ with a₂ from (36).".into(), params: vec!["abar0"], outputs: vec![l.near_circular_model.s1.clone()] });
     }
     Ok(fs)
 }
 
-/// The names of the functions every generated module provides (for the
-/// solver's `Model` trait).
-pub fn module_source(d: &Derivation) -> Result<String, String> {
-    let mut items = Vec::new();
-    for f in functions(d)? {
-        items.push(render_function(&f)?);
+/// The functions generated for an energy (Ritz) model.
+fn functions_energy(e: &EnergyDerivation) -> Result<Vec<Function>, String> {
+    let st = vec!["abar", "s", "dbar", "rho"];
+    let r = &e.residuals;
+    let mut rj = r.clone();
+    for res in r {
+        rj.push(diff(res, "abar"));
+        rj.push(diff(res, "s"));
     }
-    let id = d.ansatz.id;
+    let branch = ratio_branch(&e.residuals)?;
+    let mut fs = vec![
+        Function { name: "residuals_and_jacobian", doc: "Equilibrium residuals (∂Π̄/∂ā)/(∂W̄/∂ā), (∂Π̄/∂s)/(∂W̄/∂s) (W̄ = πsā²/2 the adhesion term) and their Jacobian with respect to (ā, s), side by side: `[r1, r2, ∂r1/∂ā, ∂r1/∂s, ∂r2/∂ā, ∂r2/∂s]`.".into(), params: st.clone(), outputs: rj },
+        Function { name: "residuals_d_dbar", doc: "∂r/∂δ̄ of the equilibrium residuals.".into(), params: st.clone(), outputs: r.iter().map(|x| diff(x, "dbar")).collect() },
+        Function { name: "force_bar", doc: "F̄ = ∂Π̄/∂δ̄ (identical to ∫p dA of (8), checked in the derivation).".into(), params: st.clone(), outputs: vec![e.fbar.clone()] },
+        Function { name: "force_bar_gradient", doc: "∂F̄/∂(ā, s, δ̄).".into(), params: st.clone(), outputs: crate::energy::UNKNOWNS.iter().map(|q| diff(&e.fbar, q)).collect() },
+        Function { name: "potential", doc: "Π̄ = Π R₁²/(m L⁸), Π = U − Δγ·πab, U = ½∫p(δ − φ) dA.".into(), params: st.clone(), outputs: vec![e.potential.clone()] },
+        Function { name: "potential_hessian", doc: "The Hessian of Π̄ in (ā, s, δ̄), row-major.".into(), params: st.clone(), outputs: e.hessian.clone() },
+        Function { name: "normal_derivative", doc: "∂p̄/∂ν on Γ₀ at u = sin²t, in units of √(2mΔγ).".into(), params: vec!["abar", "s", "dbar", "rho", "u"], outputs: vec![e.normal_derivative.clone()] },
+        Function { name: "pressure_parameters", doc: "`[p̄₀, shape parameters × L², ξ]` from (6).".into(), params: st.clone(), outputs: e.pressure_parameters.clone() },
+        Function { name: "pressure", doc: "p̄(x̄, ȳ): the ansatz with its parameters from (6).".into(), params: vec!["x", "y", "abar", "s", "dbar", "rho"], outputs: vec![e.pressure_bar.clone()] },
+        Function { name: "branch_poly", doc: "Coefficients (constant first) of P(t), t = δ̄ā/ā³, whose roots are the solutions at fixed (s, ρ).".into(), params: vec!["s", "rho"], outputs: branch.poly_t.clone() },
+        Function { name: "branch_x_pow", doc: "(ā³)^d at the root t of P, d the residuals' degree.".into(), params: vec!["t", "s", "rho"], outputs: vec![branch.x_pow.clone()] },
+    ];
+    if let Ok((dbar, fbar)) = crate::energy::axisymmetric(e) {
+        if let Some((a_c, f_c, d_c)) = crate::limits::critical_point(&fbar, &dbar) {
+            fs.push(Function { name: "axisymmetric_critical", doc: "The minimum of F̄(ā) at ρ = 1 (Section 4): `[ā_c, F̄_c, δ̄_c]`.".into(), params: vec![], outputs: vec![a_c, f_c, d_c] });
+        }
+        fs.push(Function { name: "axisymmetric_dbar", doc: "δ̄(ā) for ρ = 1 (the adhesive factor of the residual at s = 1): (25)₁.".into(), params: vec!["abar"], outputs: vec![dbar] });
+        fs.push(Function { name: "axisymmetric_force_bar", doc: "F̄(ā) for ρ = 1: (25)₂.".into(), params: vec!["abar"], outputs: vec![fbar] });
+    }
+    Ok(fs)
+}
+
+fn camel(id: &str) -> String {
+    let mut out = String::new();
+    let mut up = true;
+    for c in id.chars() {
+        if c == '_' {
+            up = true;
+        } else if up {
+            out.extend(c.to_uppercase());
+            up = false;
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+fn has(fs: &[Function], name: &str) -> bool {
+    fs.iter().any(|f| f.name == name)
+}
+
+/// The model value and its implementation of the solver's `Model` trait:
+/// the glue between the generated functions and the one interface.
+fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
+    let a = md.ansatz();
+    let ty = ident(&camel(a.id));
+    let variant = ident(&camel(a.id));
+    let title = a.title;
+    let note = a.closure.describe();
+    let (closure, degree) = match a.closure {
+        Closure::Max => (quote!(ClosureKind::Max), 1u32),
+        Closure::AtPoint(_) => (quote!(ClosureKind::AtPoint), 1),
+        Closure::Energy => (quote!(ClosureKind::Energy), 2),
+    };
+    let degree = Literal::u32_unsuffixed(degree);
+    let non_adhesive = has(fs, "non_adhesive_rho");
+    let axisymmetric = has(fs, "axisymmetric_dbar");
+    let zero_force = has(fs, "zero_force_rho");
+    let near_circular = has(fs, "near_circular_ds_dmu");
+    let missing = match md {
+        ModelDerivation::Collocation(d) => match &d.limits {
+            Ok(_) => String::new(),
+            Err(e) => format!("limits not derived: {e}"),
+        },
+        ModelDerivation::Energy(e) => {
+            let mut m = vec!["the non-adhesive, zero-force and near-circular relations are not derived for the energy closure (its residuals are quadratic in dbar); the solver finds the non-adhesive end of the branch numerically".to_string()];
+            if let Err(x) = crate::energy::axisymmetric(e) {
+                m.push(format!("axisymmetric limit: {x}"));
+            }
+            m.join("; ")
+        }
+    };
+    let opt = |present: bool, body: TokenStream| if present { quote!(Some(#body)) } else { quote!(None) };
+    let non_adhesive_body = opt(non_adhesive, quote!(non_adhesive_rho(s)));
+    let zero_force_body = opt(zero_force, quote!(zero_force_rho(s)));
+    let near_circular_body = opt(near_circular, quote!(near_circular_ds_dmu(a0)));
+    let critical_body = opt(has(fs, "axisymmetric_critical"), quote!(axisymmetric_critical()[0]));
+    let axisymmetric_body = opt(axisymmetric, quote!((axisymmetric_dbar(a_bar), axisymmetric_force_bar(a_bar))));
+    let info = quote! {
+        /// What this model is and has.
+        pub static INFO: ModelInfo = ModelInfo {
+            id: ModelId::#variant,
+            title: #title,
+            closure: #closure,
+            closure_note: #note,
+            residual_degree: #degree,
+            has_non_adhesive_limit: #non_adhesive,
+            has_axisymmetric_limit: #axisymmetric,
+            has_zero_force_limit: #zero_force,
+            has_near_circular_limit: #near_circular,
+            missing_limits: #missing,
+        };
+    };
+    let body = match md {
+        ModelDerivation::Collocation(_) => quote! {
+            fn residuals_and_jacobian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> (Vector2<f64>, Matrix2<f64>) {
+                let [eta, eta_s] = eta_and_eta_s(x[1]);
+                let v = residuals_and_jacobian_eta(x[0], x[1], rho, delta_bar, eta, eta_s);
+                (Vector2::new(v[0], v[1]), Matrix2::new(v[2], v[3], v[4], v[5]))
+            }
+            fn residuals_d_delta(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector2<f64> {
+                let [eta, eta_s] = eta_and_eta_s(x[1]);
+                Vector2::from(residuals_d_dbar_eta(x[0], x[1], rho, delta_bar, eta, eta_s))
+            }
+            fn force_bar(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> f64 {
+                force_bar(x[0], x[1], delta_bar, eta(x[1]))
+            }
+            fn force_bar_gradient(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> Vector3<f64> {
+                let [eta, eta_s] = eta_and_eta_s(x[1]);
+                Vector3::from(force_bar_gradient_eta(x[0], x[1], delta_bar, eta, eta_s))
+            }
+            fn branch(&self, s: f64, rho: f64) -> BranchPoints {
+                let [x, y] = branch_eta(s, rho, eta(s));
+                if x.is_finite() && x > 0.0 && y.is_finite() {
+                    let a = x.cbrt();
+                    [Some((a, y / a)), None]
+                } else {
+                    [None, None]
+                }
+            }
+            fn normal_derivative(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64, u: f64) -> f64 {
+                let e = eta(x[1]);
+                let xi = xi(x[0], x[1], delta_bar, e);
+                normal_derivative_collocated(p0_bar(x[0], xi, e), x[0], x[1], xi, u)
+            }
+            fn pressure_parameters(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> PressureParameters {
+                let e = eta(x[1]);
+                let xi = xi(x[0], x[1], delta_bar, e);
+                PressureParameters { p0: p0_bar(x[0], xi, e), shape: shape(x[0], x[1], xi), xi }
+            }
+            fn pressure(&self, px: f64, py: f64, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+                let p = self.pressure_parameters(x, rho, delta_bar);
+                pressure(px, py, p.p0, x[0], x[1], p.xi)
+            }
+            fn bc_error(&self, x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> f64 {
+                bc_error(x[1])
+            }
+            fn potential(&self, _x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> Option<f64> {
+                None
+            }
+            fn potential_hessian(&self, _x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> Option<Matrix3<f64>> {
+                None
+            }
+        },
+        ModelDerivation::Energy(_) => quote! {
+            fn residuals_and_jacobian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> (Vector2<f64>, Matrix2<f64>) {
+                let v = residuals_and_jacobian(x[0], x[1], delta_bar, rho);
+                (Vector2::new(v[0], v[1]), Matrix2::new(v[2], v[3], v[4], v[5]))
+            }
+            fn residuals_d_delta(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector2<f64> {
+                Vector2::from(residuals_d_dbar(x[0], x[1], delta_bar, rho))
+            }
+            fn force_bar(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+                force_bar(x[0], x[1], delta_bar, rho)
+            }
+            fn force_bar_gradient(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector3<f64> {
+                Vector3::from(force_bar_gradient(x[0], x[1], delta_bar, rho))
+            }
+            fn branch(&self, s: f64, rho: f64) -> BranchPoints {
+                let mut out = [None, None];
+                let roots = crate::model::real_roots(&branch_poly(s, rho));
+                let d = INFO.residual_degree as f64;
+                let mut k = 0;
+                for t in roots.into_iter().flatten() {
+                    let xd = branch_x_pow(t, s, rho);
+                    if xd.is_finite() && xd > 0.0 {
+                        let x = xd.powf(1.0 / d);
+                        let a = x.cbrt();
+                        out[k] = Some((a, t * x / a));
+                        k += 1;
+                    }
+                }
+                out
+            }
+            fn normal_derivative(&self, x: Vector2<f64>, rho: f64, delta_bar: f64, u: f64) -> f64 {
+                normal_derivative(x[0], x[1], delta_bar, rho, u)
+            }
+            fn pressure_parameters(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> PressureParameters {
+                let [p0, a, b, xi] = pressure_parameters(x[0], x[1], delta_bar, rho);
+                PressureParameters { p0, shape: [a, b], xi }
+            }
+            fn pressure(&self, px: f64, py: f64, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+                pressure(px, py, x[0], x[1], delta_bar, rho)
+            }
+            fn bc_error(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+                crate::model::contour_spread(|u| normal_derivative(x[0], x[1], delta_bar, rho, u))
+            }
+            fn potential(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<f64> {
+                Some(potential(x[0], x[1], delta_bar, rho))
+            }
+            fn potential_hessian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<Matrix3<f64>> {
+                Some(Matrix3::from_row_slice(&potential_hessian(x[0], x[1], delta_bar, rho)))
+            }
+        },
+    };
+    let doc = format!(" The model `{}`: {}.", a.id, a.title);
+    quote! {
+        use crate::model::{BranchPoints, ClosureKind, Model, ModelId, ModelInfo, PressureParameters};
+        use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+        #info
+        #[doc = #doc]
+        #[derive(Clone, Copy, Debug, Default)]
+        pub struct #ty;
+        #[allow(unused_variables)]
+        impl Model for #ty {
+            fn info(&self) -> &'static ModelInfo {
+                &INFO
+            }
+            #body
+            fn non_adhesive_rho(&self, s: f64) -> Option<f64> {
+                #non_adhesive_body
+            }
+            fn axisymmetric(&self, a_bar: f64) -> Option<(f64, f64)> {
+                #axisymmetric_body
+            }
+            fn zero_force_rho(&self, s: f64) -> Option<f64> {
+                #zero_force_body
+            }
+            fn near_circular_ds_dmu(&self, a0: f64) -> Option<f64> {
+                #near_circular_body
+            }
+            fn axisymmetric_critical_a(&self) -> Option<f64> {
+                #critical_body
+            }
+        }
+    }
+}
+
+/// The Rust source of one model's module.
+pub fn module_source(md: &ModelDerivation) -> Result<String, String> {
+    let fs = match md {
+        ModelDerivation::Collocation(d) => functions(d)?,
+        ModelDerivation::Energy(e) => functions_energy(e)?,
+    };
+    let mut failures = Vec::new();
+    let mut charted: HashMap<&str, Charted> = HashMap::new();
+    for f in &fs {
+        let domain = domain_of(f.name);
+        if crate::accuracy::check(f.name, &f.params, &f.outputs, domain, None).is_ok() {
+            continue;
+        }
+        // the single expression fails: try charts in 1 − s, 1 − ρ
+        let charts = charts_for(f);
+        let mut chart_failures = Vec::new();
+        for (chart, outs) in &charts {
+            if let Err(mut v) = crate::accuracy::check(f.name, &f.params, outs, domain, Some(chart)) {
+                chart_failures.append(&mut v);
+            }
+        }
+        if chart_failures.is_empty() && charts.len() > 1 {
+            charted.insert(f.name, charts);
+        } else {
+            failures.append(&mut chart_failures);
+        }
+    }
+    if !failures.is_empty() {
+        let shown: Vec<String> = failures.iter().take(12).map(|f| f.to_string()).collect();
+        return Err(format!(
+            "model {}: the accuracy check of the generated code failed at {} points:\n{}",
+            md.ansatz().id,
+            failures.len(),
+            shown.join("\n")
+        ));
+    }
+    let mut items = Vec::new();
+    for f in &fs {
+        items.push(render_function(f, charted.get(f.name))?);
+    }
+    items.push(model_impl(md, &fs));
+    let a = md.ansatz();
     let file = quote! { #(#items)* };
     let ast: syn::File =
         syn::parse2(file).map_err(|e| format!("generated code does not parse: {e}"))?;
     let body = prettyplease::unparse(&ast);
     let header = format!(
-        "//! @generated by `cargo run -p thinjkr-derive -- generate` (thinjkr-derive codegen); do not edit.\n//!\n//! Ansatz `{id}`: {}.\n//! Pressure: `{}`; collocation: {}.\n\n",
-        d.ansatz.title, d.ansatz.pressure, d.ansatz.collocation_note
+        "//! @generated by `cargo run -p thinjkr-derive -- generate` (thinjkr-derive codegen); do not edit.\n//!\n//! Model `{}`: {}.\n//! Pressure: `{}`; collocation: {}; closure: {}.\n\n",
+        a.id, a.title, a.pressure, a.collocation_note, a.closure.describe()
     );
     Ok(format!("{header}{body}"))
 }
 
+/// `generated/mod.rs`: the module list and [`ModelId`], the run-time choice
+/// of a model.
+fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
+    let mods: Vec<Ident> = all.iter().map(|m| ident(m.ansatz().id)).collect();
+    let variants: Vec<Ident> = all.iter().map(|m| ident(&camel(m.ansatz().id))).collect();
+    let names: Vec<&str> = all.iter().map(|m| m.ansatz().id).collect();
+    let docs: Vec<String> = all.iter().map(|m| format!(" `{}`: {}.", m.ansatz().id, m.ansatz().title)).collect();
+    let n = Literal::usize_unsuffixed(all.len());
+    let list = names.join(", ");
+    let err = format!("unknown model (allowed: {list})");
+    let file = quote! {
+        #(pub mod #mods;)*
+        /// A generated model, chosen at run time.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+        #[serde(rename_all = "snake_case")]
+        pub enum ModelId {
+            #(#[doc = #docs] #variants,)*
+        }
+        impl ModelId {
+            /// Every generated model, the paper's first.
+            pub const ALL: [ModelId; #n] = [#(ModelId::#variants),*];
+            /// The model's name (its ansatz identifier).
+            pub fn name(self) -> &'static str {
+                match self { #(ModelId::#variants => #names,)* }
+            }
+            /// The model as one value behind the solver's interface.
+            pub fn model(self) -> &'static dyn crate::model::Model {
+                match self { #(ModelId::#variants => &#mods::#variants,)* }
+            }
+        }
+        impl ::core::fmt::Display for ModelId {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+        impl ::core::str::FromStr for ModelId {
+            type Err = String;
+            fn from_str(s: &str) -> Result<ModelId, String> {
+                match s {
+                    #(#names => Ok(ModelId::#variants),)*
+                    other => Err(format!("{}: {}", #err, other)),
+                }
+            }
+        }
+    };
+    let ast: syn::File =
+        syn::parse2(file).map_err(|e| format!("generated mod.rs does not parse: {e}"))?;
+    Ok(format!(
+        "//! @generated by `cargo run -p thinjkr-derive -- generate`; do not edit.\n//!\n//! One module per model, each a set of straight-line `f64` functions derived\n//! symbolically by thinjkr-derive and one value implementing `crate::model::Model`.\n\n{}",
+        prettyplease::unparse(&ast)
+    ))
+}
+
 /// The generated modules and their `mod.rs`.
-pub fn outputs(all: &[&Derivation]) -> Result<Vec<Output>, String> {
+pub fn outputs(all: &[&ModelDerivation]) -> Result<Vec<Output>, String> {
     let mut out = Vec::new();
-    let mut mods = String::from("//! @generated by `cargo run -p thinjkr-derive -- generate`; do not edit.\n//!\n//! One module per ansatz, each a set of straight-line `f64` functions derived\n//! symbolically by thinjkr-derive.\n\n");
-    for d in all {
+    for md in all {
         out.push(Output {
-            path: format!("solver/src/generated/{}.rs", d.ansatz.id).into(),
-            contents: module_source(d)?,
+            path: format!("solver/src/generated/{}.rs", md.ansatz().id).into(),
+            contents: module_source(md)?,
         });
-        mods.push_str(&format!("pub mod {};\n", d.ansatz.id));
     }
     out.push(Output {
         path: "solver/src/generated/mod.rs".into(),
-        contents: mods,
+        contents: mod_source(all)?,
     });
     Ok(out)
 }

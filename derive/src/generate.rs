@@ -4,7 +4,8 @@
 //!
 //! Owns: the list of generated files. May use: every other module.
 
-use crate::{ansatz, claims, model::Derivation, report};
+use crate::model::{Derivation, ModelDerivation};
+use crate::{ansatz, claims, report};
 use std::path::{Path, PathBuf};
 
 /// One generated file: path relative to the workspace root, and contents.
@@ -15,14 +16,17 @@ pub struct Output {
     pub contents: String,
 }
 
-/// Derive every ansatz, check the paper's claims, and render every file.
+/// Derive every model, check the paper's claims, and render every file.
 pub fn outputs() -> Result<Vec<Output>, String> {
     let paper = Derivation::new(&ansatz::PAPER)?;
-    let others = ansatz::ALL
+    let models = ansatz::ALL
         .iter()
-        .filter(|a| a.id != ansatz::PAPER.id)
-        .map(Derivation::new)
+        .map(ModelDerivation::new)
         .collect::<Result<Vec<_>, _>>()?;
+    let others: Vec<&ModelDerivation> = models
+        .iter()
+        .filter(|m| m.ansatz().id != ansatz::PAPER.id)
+        .collect();
     let results = claims::check_all(&paper)?;
     let mut out = vec![
         Output {
@@ -34,7 +38,7 @@ pub fn outputs() -> Result<Vec<Output>, String> {
             contents: report::errata_md(&results),
         },
     ];
-    let all: Vec<&Derivation> = std::iter::once(&paper).chain(others.iter()).collect();
+    let all: Vec<&ModelDerivation> = models.iter().collect();
     out.extend(crate::codegen::outputs(&all)?);
     Ok(out)
 }

@@ -4,16 +4,19 @@
 //! the solver's Rust code and of the reports in `docs/`.
 //!
 //! The derivation is generic over an [`ansatz::Ansatz`]: the paper's (5)
-//! with collocation (10) is one value of it.
+//! with collocation (10) and closure (13) is one value of it; the closure
+//! of (3)₂ is part of the data ([`ansatz::Closure`]).
 //!
 //! symbolica runs here in its unlicensed restricted mode, which allows one
 //! symbolica thread per user at a time: call this crate from one thread only.
 
+pub mod accuracy;
 pub mod ansatz;
 pub mod check;
 pub mod claims;
 pub mod codegen;
 pub mod contour;
+pub mod energy;
 pub mod force;
 pub mod generate;
 pub mod ir;

@@ -72,20 +72,7 @@ pub fn axisymmetric(
     let delta = simplify(&(subs(&dbar, "abar", &ex("a/L")) * ex("L^2/R1")));
     let force = simplify(&(subs(&fb, "abar", &ex("a/L")) * ex("m*L^6/R1")));
     // Critical point: dF̄/dā = 0 at a factor ā³ − c.
-    let dfb = diff(&fb, "abar");
-    let mut crit = None;
-    for f in factor_list(&crate::sym::numerator(&dfb)) {
-        if let Some(c) = solve_abar_cubed(&f) {
-            if c.contains_symbol(symbolica::symbol!("XX")) {
-                continue;
-            }
-            let a_c = normalize_radicals(&c.pow(&ex("1/3")));
-            let f_c = simplify(&normalize_radicals(&subs(&fb, "abar", &a_c)));
-            let d_c =
-                normalize_radicals(&simplify(&normalize_radicals(&subs(&dbar, "abar", &a_c))));
-            crit = Some((a_c, f_c, d_c));
-        }
-    }
+    let crit = critical_point(&fb, &dbar);
     let critical = crit.ok_or("no critical point of the form abar^3 = c")?;
     Ok(Axisymmetric {
         eta_at_1: eta1,
@@ -95,6 +82,26 @@ pub fn axisymmetric(
         force,
         critical,
     })
+}
+
+/// The critical (minimum-force) point of an axisymmetric F̄(ā): dF̄/dā = 0
+/// at a factor of the form ā³ − c. Returns (ā_c, F̄_c, δ̄_c).
+pub fn critical_point(fbar: &Atom, dbar: &Atom) -> Option<(Atom, Atom, Atom)> {
+    let dfb = diff(fbar, "abar");
+    let mut crit = None;
+    for f in factor_list(&crate::sym::numerator(&dfb)) {
+        if let Some(c) = solve_abar_cubed(&f) {
+            if c.contains_symbol(symbolica::symbol!("XX")) {
+                continue;
+            }
+            let a_c = normalize_radicals(&c.pow(&ex("1/3")));
+            let f_c = simplify(&normalize_radicals(&subs(fbar, "abar", &a_c)));
+            let d_c =
+                normalize_radicals(&simplify(&normalize_radicals(&subs(dbar, "abar", &a_c))));
+            crit = Some((a_c, f_c, d_c));
+        }
+    }
+    crit
 }
 
 /// Section 5: zero force.

@@ -3,7 +3,8 @@
 //! reports in `docs/`.
 
 use std::process::ExitCode;
-use thinjkr_derive::{ansatz, claims, model::Derivation};
+use thinjkr_derive::model::{Derivation, ModelDerivation};
+use thinjkr_derive::{ansatz, claims};
 
 fn usage() -> ExitCode {
     eprintln!("usage: thinjkr-derive check [--json] | generate | timings");
@@ -95,8 +96,8 @@ fn main() -> ExitCode {
                 v[2]
             };
             for a in ansatz::ALL {
-                let derive = median(&|| Derivation::new(a).is_ok());
-                let d = Derivation::new(a).expect("derives");
+                let derive = median(&|| ModelDerivation::new(a).is_ok());
+                let d = ModelDerivation::new(a).expect("derives");
                 let codegen = median(&|| thinjkr_derive::codegen::module_source(&d).is_ok());
                 println!(
                     "ansatz {:<8} derive {:.3} s, generate code {:.3} s",

@@ -4,7 +4,7 @@
 //!
 //! Owns: the [`Derivation`] record. May use: every derivation module.
 
-use crate::ansatz::Ansatz;
+use crate::ansatz::{Ansatz, Closure};
 use crate::contour::{self, Extrema, NormalDerivative};
 use crate::force;
 use crate::limits::{self, Axisymmetric, NearCircularExact, NearCircularModel, ZeroForce};
@@ -12,6 +12,33 @@ use crate::nondimensional::{self, Branch};
 use crate::sym::{ex, normalize_radicals, simplify, solve_linear, subs, subs_all};
 use crate::thin_layer::{self, LaplaceEquation};
 use symbolica::atom::Atom;
+
+/// The derivation of one model, by the route its closure requires.
+#[derive(Clone, Debug)]
+pub enum ModelDerivation {
+    /// Collocation closures (`Max`, `AtPoint`): Eqs. (6)–(20).
+    Collocation(Box<Derivation>),
+    /// The energy (Ritz) closure.
+    Energy(Box<crate::energy::EnergyDerivation>),
+}
+
+impl ModelDerivation {
+    /// Derive `ansatz` by the route of its closure.
+    pub fn new(ansatz: &Ansatz) -> Result<ModelDerivation, String> {
+        match ansatz.closure {
+            Closure::Energy => Ok(ModelDerivation::Energy(Box::new(crate::energy::derive(ansatz)?))),
+            _ => Ok(ModelDerivation::Collocation(Box::new(Derivation::new(ansatz)?))),
+        }
+    }
+
+    /// The ansatz.
+    pub fn ansatz(&self) -> &Ansatz {
+        match self {
+            ModelDerivation::Collocation(d) => &d.ansatz,
+            ModelDerivation::Energy(e) => &e.ansatz,
+        }
+    }
+}
 
 /// Every intermediate result of the derivation for one ansatz.
 #[derive(Clone, Debug)]
@@ -32,11 +59,13 @@ pub struct Derivation {
     pub normal_derivative_collocated: NormalDerivative,
     /// Extrema of (11) along Γ₀.
     pub extrema: Extrema,
-    /// η(s) = max ∂p/∂ν / apex value: Eq. (16).
+    /// η(s) = (the value of ∂p/∂ν set by the closure) / (apex value): for
+    /// the paper's closure (13), max ∂p/∂ν / apex value, Eq. (16).
     pub eta: Atom,
     /// (max − min)/min of ∂p/∂ν on Γ₀, as a function of s: quantity (14).
     pub bc_error: Atom,
-    /// ξ from max ∂p/∂ν = √(2mΔγ): Eq. (13), with `g` = √(2mΔγ).
+    /// ξ from the closure (for the paper: max ∂p/∂ν = √(2mΔγ), Eq. (13)),
+    /// with `g` = √(2mΔγ).
     pub xi_adhesion: Atom,
     /// p₀ from (13) with η as a symbol.
     pub p0: Atom,
@@ -118,10 +147,18 @@ impl Derivation {
             .subs_all(&[("b", ex("s*a"))])
             .subs_all(&shape);
         let extrema = contour::extrema(&normal_derivative_collocated)?;
-        let eta = normalize_radicals(&simplify(&(&extrema.max / &extrema.apex)));
+        // The closure: the value of ∂p/∂ν that is set equal to √(2mΔγ).
+        let closed = match ansatz.closure {
+            Closure::Max => extrema.max.clone(),
+            Closure::AtPoint(u) => normal_derivative_collocated.at(&ex(u)),
+            Closure::Energy => {
+                return Err("the energy closure is derived by `energy::derive`, not by collocation".into())
+            }
+        };
+        let eta = normalize_radicals(&simplify(&(&closed / &extrema.apex)));
         let bc_error = normalize_radicals(&simplify(&(&extrema.max / &extrema.min - Atom::num(1))));
         let xi_adhesion =
-            solve_linear(&(&extrema.max - ex("g")), "xi").ok_or("max not linear in 1/xi")?;
+            solve_linear(&(&closed - ex("g")), "xi").ok_or("closure not linear in 1/xi")?;
         let p0 = solve_linear(&(ex("eta") * &extrema.apex - ex("g")), "p0")
             .ok_or("apex value not linear in p0")?;
         let p0_explicit = normalize_radicals(&simplify(&subs(&p0, "eta", &eta)));

@@ -123,3 +123,60 @@ pub fn branch(res: &[Atom]) -> Option<Branch> {
         dbar_abar: y,
     })
 }
+
+/// The solution set at fixed (s, ρ) of two residuals that depend on ā and
+/// δ̄ only through X = ā³ and Y = δ̄ā, each of the form c_k + X^d h_k(Y/X)
+/// with the same d (for a linear closure d = 1, for the energy closure the
+/// residuals are quadratic forms in (X, Y) plus a constant, d = 2). With
+/// t = Y/X, eliminating X gives the polynomial P(t) = c₂h₁(t) − c₁h₂(t);
+/// each root t gives X^d = −c₁/h₁(t) and Y = tX.
+#[derive(Clone, Debug)]
+pub struct RatioBranch {
+    /// d.
+    pub degree: u32,
+    /// Coefficients of P(t), constant first, in (s, ρ).
+    pub poly_t: Vec<Atom>,
+    /// X^d as a function of (t, s, ρ).
+    pub x_pow: Atom,
+}
+
+/// Try the parametrisation of [`RatioBranch`].
+pub fn ratio_branch(res: &[Atom]) -> Result<RatioBranch, String> {
+    if res.len() != 2 {
+        return Err("not two residuals".into());
+    }
+    let mut parts = Vec::new();
+    let mut degree = None;
+    for r in res {
+        let e = simplify(&subs(&subs(r, "dbar", &ex("YY/abar")), "abar", &ex("XX^(1/3)")));
+        if e.contains_symbol(symbolica::symbol!("abar")) {
+            return Err("a residual depends on abar other than through abar^3 and dbar*abar".into());
+        }
+        let (num, den) = crate::sym::num_den(&e);
+        if den.contains_symbol(symbolica::symbol!("XX")) || den.contains_symbol(symbolica::symbol!("YY")) {
+            return Err("a residual is not polynomial in (abar^3, dbar*abar)".into());
+        }
+        let n = subs(&num, "YY", &ex("tt*XX")).expand();
+        let deg = degree_in(&n, "XX", 8).ok_or("degree in abar^3 too high")?;
+        let coeff = |k: usize| crate::sym::poly_coeff(&n, "XX", k as u32, "zz", 0);
+        for k in 1..deg {
+            if !is_zero(&coeff(k)) {
+                return Err(format!("a residual has a term (abar^3)^{k} between the constant and the top degree {deg}"));
+            }
+        }
+        if *degree.get_or_insert(deg) != deg {
+            return Err("the residuals have different degrees in (abar^3, dbar*abar)".into());
+        }
+        parts.push((simplify(&(coeff(0) / &den)), simplify(&(coeff(deg) / &den))));
+    }
+    let degree = degree.expect("two residuals") as u32;
+    let ((c1, h1), (c2, h2)) = (&parts[0], &parts[1]);
+    let p = crate::sym::numerator(&simplify(&(c2 * h1 - c1 * h2))).expand();
+    let dt = degree_in(&p, "tt", 8).ok_or("degree in t too high")?;
+    let poly_t = (0..=dt as u32)
+        .map(|k| crate::sym::poly_coeff(&p, "tt", k, "zz", 0))
+        .collect();
+    let x_pow = simplify(&subs(&(-c1 / h1), "tt", &ex("t")));
+    let poly_t = poly_t;
+    Ok(RatioBranch { degree, poly_t, x_pow })
+}

@@ -6,7 +6,7 @@
 //! Owns: report text. May use: `claims`, `model`, `sym`.
 
 use crate::claims::ClaimResult;
-use crate::model::Derivation;
+use crate::model::{Derivation, ModelDerivation};
 use crate::sym::{latex, plain};
 use std::fmt::Write;
 use symbolica::atom::Atom;
@@ -23,7 +23,7 @@ fn md_escape(s: &str) -> String {
 }
 
 /// `docs/derivation.md`.
-pub fn derivation_md(paper: &Derivation, others: &[Derivation], results: &[ClaimResult]) -> String {
+pub fn derivation_md(paper: &Derivation, others: &[&ModelDerivation], results: &[ClaimResult]) -> String {
     let mut o = String::from(HEADER);
     let d = paper;
     o.push_str("# Derivation report\n\n");
@@ -133,23 +133,10 @@ pub fn derivation_md(paper: &Derivation, others: &[Derivation], results: &[Claim
     o.push_str("## Step 6. Section 6: p₀ and the pressure\n\n");
     eq(&mut o, "p₀ =", &d.p0_explicit);
     eq(&mut o, "p(x, y) =", &d.pressure_collocated);
-    for other in others {
-        let _ = writeln!(
-            o,
-            "## Another ansatz: {} (`{}`)\n",
-            other.ansatz.title, other.ansatz.id
-        );
-        o.push_str("The same steps, with no change outside the ansatz definition.\n\n");
-        for (n, v) in &other.collocation {
-            eq(&mut o, &format!("Collocation, {n} ="), v);
-        }
-        eq(&mut o, "η(s) = maximum / apex value:", &other.eta);
-        for (k, r) in other.residuals.iter().enumerate() {
-            eq(&mut o, &format!("Residual {}:", k + 1), r);
-        }
-        eq(&mut o, "F̄:", &other.fbar_reduced);
-        if let Err(e) = &other.limits {
-            let _ = writeln!(o, "Limits: not available for this ansatz ({e}).\n");
+    for md in others {
+        match md {
+            ModelDerivation::Collocation(other) => collocation_section(&mut o, other),
+            ModelDerivation::Energy(e) => energy_section(&mut o, e),
         }
     }
     o.push_str("## The paper's claims\n\n");
@@ -167,6 +154,80 @@ pub fn derivation_md(paper: &Derivation, others: &[Derivation], results: &[Claim
         );
     }
     o
+}
+
+/// A model derived by collocation, after the paper's: its own steps.
+fn collocation_section(o: &mut String, other: &Derivation) {
+    let _ = writeln!(
+        o,
+        "## Model `{}`: {}\n",
+        other.ansatz.id, other.ansatz.title
+    );
+    let _ = writeln!(
+        o,
+        "The same steps as above, with no change outside the ansatz definition. Collocation: {}. Closure: {}.\n",
+        other.ansatz.collocation_note,
+        other.ansatz.closure.describe()
+    );
+    for (n, v) in &other.collocation {
+        eq(o, &format!("Collocation, {n} ="), v);
+    }
+    eq(o, "∂p/∂ν on Γ₀ after collocation:", &other.normal_derivative_collocated.value());
+    eq(o, "η(s) = (value set by the closure) / (apex value):", &other.eta);
+    eq(o, "Quantity (14), (max − min)/min:", &other.bc_error);
+    for (k, r) in other.residuals.iter().enumerate() {
+        eq(o, &format!("Residual {}:", k + 1), r);
+    }
+    eq(o, "F̄:", &other.fbar_reduced);
+    match &other.limits {
+        Ok(l) => {
+            eq(o, "ρ = 1: δ̄(ā):", &l.axisymmetric.dbar);
+            eq(o, "ρ = 1: F̄(ā):", &l.axisymmetric.fbar);
+            eq(o, "Non-adhesive limit, ρ(s):", &l.non_adhesive_rho);
+            eq(o, "Zero force, ρ(s):", &l.zero_force.rho);
+        }
+        Err(e) => {
+            let _ = writeln!(o, "Limits: not available for this model ({e}).\n");
+        }
+    }
+}
+
+/// A model with the energy (Ritz) closure: its steps.
+fn energy_section(o: &mut String, e: &crate::energy::EnergyDerivation) {
+    let _ = writeln!(o, "## Model `{}`: {}\n", e.ansatz.id, e.ansatz.title);
+    o.push_str("Closure: the total potential energy Π = U − Δγ·πab is stationary in the semi-axes. The shape parameters and p₀ come from (6) alone, so that the pressure is the exact solution of (2) on the ellipse with p = 0 on Γ₀. The derivation checks U = ½∫p(δ − φ) dA against (1/2m)∫|∇p|² dA and ∂Π̄/∂δ̄ against ∫p dA; both identities hold exactly (it fails otherwise). Scales (17) with Δγ = mL⁶/(2R₁²) and Π = Π̄ mL⁸/R₁².\n\n");
+    eq(o, "Pressure:", &e.pressure);
+    for (n, v) in &e.dirichlet {
+        eq(o, &format!("From (6), {n} ="), v);
+    }
+    eq(o, "U = ½∫p(δ − φ) dA:", &e.stored_energy);
+    eq(o, "Π̄(ā, s, δ̄; ρ):", &e.potential);
+    eq(o, "F̄ = ∂Π̄/∂δ̄:", &e.fbar);
+    for (k, r) in e.residuals.iter().enumerate() {
+        eq(o, &format!("Equilibrium residual {} ({}):", k + 1, ["(∂Π̄/∂ā)/(πsā)", "(∂Π̄/∂s)/(πā²/2)"][k.min(1)]), r);
+    }
+    match crate::nondimensional::ratio_branch(&e.residuals) {
+        Ok(b) => {
+            let _ = writeln!(o, "At fixed (s, ρ) the residuals are c_k + X^{} h_k(t) with X = ā³, t = δ̄ā/X; the solutions are the roots of P(t) = c₂h₁(t) − c₁h₂(t), with coefficients (constant first):\n", b.degree);
+            for c in &b.poly_t {
+                eq(o, "", c);
+            }
+            eq(o, "and X^d at a root t:", &b.x_pow);
+        }
+        Err(x) => {
+            let _ = writeln!(o, "No explicit branch: {x}.\n");
+        }
+    }
+    match crate::energy::axisymmetric(e) {
+        Ok((d, f)) => {
+            o.push_str("ρ = 1, s = 1: the residual factors into the two roots of (∂p/∂ν)² = 2mΔγ; the adhesive factor (∂p/∂ν > 0 at the edge) gives\n\n");
+            eq(o, "δ̄(ā) =", &d);
+            eq(o, "F̄(ā) =", &f);
+        }
+        Err(x) => {
+            let _ = writeln!(o, "Axisymmetric limit: not derived ({x}).\n");
+        }
+    }
 }
 
 /// Consequences of each differing claim, for the errata.

@@ -6,18 +6,21 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use thinjkr::curve::trace;
 use thinjkr::newton::{solve, NewtonConfig};
-use thinjkr::{Contact, Model, Paper};
+use nalgebra::Vector2;
+use thinjkr::{Contact, ModelId};
 
 fn benches(c: &mut Criterion) {
     let contact = Contact::new(0.8).unwrap();
+    let model = ModelId::Max.model();
     let prev = contact.at_displacement(2.0).unwrap();
     let cfg = NewtonConfig::default();
     let mut g = c.benchmark_group("rho=0.8");
     g.bench_function("warm displacement solve", |b| {
         b.iter(|| {
             solve(
-                |a, s| Paper::residuals_and_jacobian(a, s, 0.8, black_box(1.999)),
-                (prev.a, prev.s),
+                |x| model.residuals_and_jacobian(x, 0.8, black_box(1.999)),
+                |a| model.residual_scale(a, 1.999),
+                Vector2::new(prev.a, prev.s),
                 &cfg,
                 "bench",
             )

@@ -13,7 +13,8 @@ mod handwritten;
 use std::io::Write;
 use std::time::Instant;
 use thinjkr::newton::{solve, NewtonConfig};
-use thinjkr::{Contact, Model, Paper};
+use nalgebra::{Matrix2, Vector2};
+use thinjkr::{Contact, ModelId};
 
 const N: usize = 20_000;
 const RHO: f64 = 0.8;
@@ -28,10 +29,34 @@ fn sweep(
     let mut x = start;
     for k in 0..N {
         let delta = 6.0 - 5.5 * k as f64 / (N - 1) as f64;
-        let sol = solve(|a, s| f(a, s, RHO, delta), x, &cfg, "sweep").expect("converges");
+        let sol = solve(
+            |v: Vector2<f64>| {
+                let (r, j) = f(v[0], v[1], RHO, delta);
+                (
+                    Vector2::new(r[0], r[1]),
+                    Matrix2::new(j[0][0], j[0][1], j[1][0], j[1][1]),
+                )
+            },
+            |a| 1.0 + a * a * a,
+            Vector2::new(x.0, x.1),
+            &cfg,
+            "sweep",
+        )
+        .expect("converges");
         x = (sol.a_bar, sol.s);
         out.push((delta, sol.a_bar, sol.s));
     }
+}
+
+/// The generated residuals of the paper's model, through the model interface.
+fn generated(a: f64, s: f64, rho: f64, delta: f64) -> ([f64; 2], [[f64; 2]; 2]) {
+    let (r, j) = ModelId::Max
+        .model()
+        .residuals_and_jacobian(Vector2::new(a, s), rho, delta);
+    (
+        [r[0], r[1]],
+        [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]],
+    )
 }
 
 fn main() {
@@ -40,7 +65,7 @@ fn main() {
     let path = args.get(2).cloned().unwrap_or_else(|| "/dev/null".into());
     let repeats: usize = args.get(3).and_then(|r| r.parse().ok()).unwrap_or(7);
     let f: fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]) = match which {
-        "generated" => Paper::residuals_and_jacobian,
+        "generated" => generated,
         "handwritten" => handwritten::residuals_and_jacobian,
         other => panic!("unknown variant {other}"),
     };

@@ -1,31 +1,52 @@
-//! Contact states of the reduced model (19)–(20) at a fixed radii ratio ρ,
-//! in the dimensionless variables of (17): control by displacement δ̄, by
-//! contact size ā, by load F̄; pull-off under load and displacement control;
-//! the zero-force state.
+//! Contact states of a model at a fixed radii ratio ρ, in the
+//! dimensionless variables of (17): control by displacement δ̄, by contact
+//! size ā, by load F̄; pull-off under load and displacement control; the
+//! zero-force state. Written once, for every generated model, through the
+//! [`Model`] interface; the model is chosen at run time ([`ModelId`]).
 //!
-//! At fixed ρ < 1 the solution set of (19)–(20) is explicit in s (both
-//! residuals are linear in ā³ and δ̄ā; generated `branch`). The physical
-//! branch starts at the non-adhesive aspect ratio s∞(ρ) of (29), where
-//! ā → ∞, and is followed towards smaller s: F̄ and δ̄ decrease, F̄ reaches
-//! its minimum (pull-off under load control), and the contact size reaches
-//! a minimum (a fold in ā) beyond which s collapses towards 0 and ā grows
-//! again. States beyond that fold are flagged. Brackets come from this
-//! walk; each state is then polished by Newton's method on the generated
-//! residuals and Jacobian. At ρ = 1 the exact axisymmetric solution (22)–(25)
-//! is used (s = 1).
+//! At fixed ρ < 1 every model's solution set is explicit in s (the
+//! generated `branch`: for the paper's model both residuals (19)–(20) are
+//! linear in ā³ and δ̄ā; for the energy closure they are quadratic forms,
+//! whose two roots are the adhesive and the compressive-edge branch of
+//! (∂p/∂ν)² = 2mΔγ; the adhesive one, ∂p/∂ν > 0 at the apex, is kept).
+//! The physical branch starts at the non-adhesive aspect ratio s∞(ρ) (for
+//! the paper, (29)), where ā → ∞, and is followed towards smaller s: F̄
+//! and δ̄ decrease, F̄ reaches its minimum (pull-off under load control),
+//! and the contact size reaches a minimum (a fold in ā) beyond which s
+//! collapses towards 0 and ā grows again. States beyond that fold are
+//! flagged. Brackets come from this walk; each state is then polished by
+//! Newton's method on the generated residuals and Jacobian, and folds by
+//! Newton on the fold condition ([`crate::fold`]). At ρ = 1 the model's
+//! axisymmetric solution (22)–(25) is used (s = 1).
 //!
-//! Owns: [`Contact`], [`State`]. May use: `model`, `newton`, `error`.
+//! Owns: [`Contact`], [`State`], [`Stability`], [`PullOff`].
+//! May use: `model`, `newton`, `fold`, `error`.
 
 use crate::error::{check_range, Error, Result};
-use crate::model::{Model, Paper};
+use crate::fold::{self, FoldCondition};
+use crate::model::{ClosureKind, Model, ModelId};
 use crate::newton::{self, NewtonConfig};
+use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
-use std::marker::PhantomData;
 
-/// One state of the model, dimensionless as in (17) (lengths in
+/// The stability of a state, for models with an energy (the energy
+/// closure): positive definiteness of the Hessian of Π̄ in (ā, s) under
+/// displacement control, of Π̄ − F̄δ̄ in (ā, s, δ̄) under load control.
+/// `None` for models without an energy, whose stability is not defined.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+pub struct Stability {
+    /// Stable under displacement control.
+    pub displacement: Option<bool>,
+    /// Stable under load control.
+    pub load: Option<bool>,
+}
+
+/// One state of a model, dimensionless as in (17) (lengths in
 /// L = (2R₁²Δγ/m)^(1/6), pressures in √(2mΔγ) L).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct State {
+    /// The model that produced this state.
+    pub model: ModelId,
     /// Radii ratio ρ = R₂/R₁ (21).
     pub rho: f64,
     /// Major semi-axis ā (17).
@@ -34,55 +55,102 @@ pub struct State {
     pub b: f64,
     /// Aspect ratio s = b/a (12).
     pub s: f64,
-    /// Collocation parameter ξ (15)₁.
+    /// Collocation parameter ξ ((15)₁ for collocation models; from the
+    /// definition (10) of ξ through A for the energy model).
     pub xi: f64,
-    /// Shape parameter A L² of (5), from (10).
+    /// Shape parameter A L² of (5).
     pub shape_a: f64,
-    /// Shape parameter B L² of (5), from (10).
+    /// Shape parameter B L² of (5).
     pub shape_b: f64,
     /// Maximum pressure p₀ / (√(2mΔγ) L) (Section 6).
     pub p0: f64,
-    /// Force F̄ = F/(2R₁Δγ), derived form of (18).
+    /// Force F̄ = F/(2R₁Δγ) (for the paper's model the derived form of (18)).
     pub force: f64,
     /// Approach δ̄ (17).
     pub delta: f64,
-    /// A-posteriori error (14) of the boundary condition (3)₂, as a fraction.
+    /// A-posteriori error (14) of the boundary condition (3)₂: (max − min)/min
+    /// of ∂p/∂ν along Γ₀, as a fraction.
     pub bc_error: f64,
     /// ρ below the paper's stated range 0.8 ≤ ρ ≤ 1: read `bc_error`.
     pub outside_stated_range: bool,
     /// The state lies beyond the fold of the contact size, where s
     /// collapses towards 0: far from the physical branch.
     pub beyond_size_fold: bool,
+    /// Stability, where the model has an energy.
+    pub stability: Stability,
 }
 
-/// The reduced model at one radii ratio ρ, for the ansatz `M`.
-#[derive(Clone, Debug)]
-pub struct Contact<M: Model = Paper> {
+/// What ends a controlled branch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FoldBasis {
+    /// The Hessian of the model's potential energy loses definiteness here:
+    /// an instability of the model, proven by its energy.
+    EnergyInstability,
+    /// A fold of the model's solution curve. The model has no energy, so
+    /// this is where its branch turns, not a proven instability.
+    ModelFold,
+    /// The minimum of F̄ on the exact axisymmetric solution (ρ = 1).
+    AxisymmetricMinimum,
+}
+
+/// Pull-off: the state where a controlled branch ends, and why.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PullOff {
+    /// The state.
+    pub state: State,
+    /// The control.
+    pub control: FoldCondition,
+    /// What the end point is.
+    pub basis: FoldBasis,
+}
+
+/// A model at one radii ratio ρ.
+#[derive(Clone, Copy)]
+pub struct Contact {
     rho: f64,
+    model: &'static dyn Model,
     newton: NewtonConfig,
     walk_points: usize,
-    _model: PhantomData<M>,
+}
+
+impl std::fmt::Debug for Contact {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Contact")
+            .field("model", &self.model.info().id)
+            .field("rho", &self.rho)
+            .finish()
+    }
 }
 
 /// Tolerance within which ρ counts as 1 (the axisymmetric case).
 const AXISYMMETRIC: f64 = 1e-12;
 
-impl Contact<Paper> {
-    /// The paper's ansatz at radii ratio `rho` ∈ (0, 1].
+impl Contact {
+    /// The paper's model (`max`) at radii ratio `rho` ∈ (0, 1].
     pub fn new(rho: f64) -> Result<Self> {
-        Contact::<Paper>::with_model(rho)
+        Contact::with_model(ModelId::Max, rho)
     }
-}
 
-impl<M: Model> Contact<M> {
-    /// Any generated ansatz at radii ratio `rho` ∈ (0, 1].
-    pub fn with_model(rho: f64) -> Result<Self> {
+    /// Any generated model at radii ratio `rho` ∈ (0, 1].
+    pub fn with_model(model: ModelId, rho: f64) -> Result<Self> {
         check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+        if model.model().info().residual_degree > 1 {
+            // the explicit branch of a quadratic closure is resolved down to
+            // 1e-6 s∞ from its non-adhesive end, which misses the whole
+            // physical branch when 1 − ρ is below about 1e-5
+            check_range(
+                "rho",
+                rho,
+                rho <= 1.0 - 1e-5 || rho == 1.0,
+                "(0, 1 - 1e-5] or exactly 1 for a model with quadratic residuals (energy)",
+            )?;
+        }
         Ok(Contact {
             rho,
+            model: model.model(),
             newton: NewtonConfig::default(),
             walk_points: 4000,
-            _model: PhantomData,
         })
     }
 
@@ -97,74 +165,255 @@ impl<M: Model> Contact<M> {
         self.rho
     }
 
+    /// The model.
+    pub fn model(&self) -> &'static dyn Model {
+        self.model
+    }
+
+    /// The model's identifier.
+    pub fn model_id(&self) -> ModelId {
+        self.model.info().id
+    }
+
     fn axisymmetric(&self) -> bool {
         self.rho >= 1.0 - AXISYMMETRIC
     }
 
-    /// The pressure p/(√(2mΔγ) L) of `state` at (x̄, ȳ) = (x, y)/L: the
-    /// ansatz with its collocation (for the paper, (5) with (10)); zero
+    fn has_energy(&self) -> bool {
+        self.model.info().closure == ClosureKind::Energy
+    }
+
+    /// The pressure p/(√(2mΔγ) L) of `state` at (x̄, ȳ) = (x, y)/L; zero
     /// outside the ellipse (7).
     pub fn pressure(&self, state: &State, x: f64, y: f64) -> f64 {
         if (x / state.a).powi(2) + (y / state.b).powi(2) > 1.0 {
             return 0.0;
         }
-        M::pressure(x, y, state.p0, state.a, state.s, state.xi)
+        self.model
+            .pressure(x, y, Vector2::new(state.a, state.s), self.rho, state.delta)
     }
 
-    /// s∞(ρ): the non-adhesive aspect ratio (29), where ā → ∞ on the branch.
-    pub fn s_infinity(&self) -> f64 {
-        crate::limits::non_adhesive_s(self.rho)
+    /// ∂p̄/∂ν of `state` on Γ₀ at u = sin²t, in units of √(2mΔγ).
+    pub fn normal_derivative(&self, state: &State, u: f64) -> f64 {
+        self.model
+            .normal_derivative(Vector2::new(state.a, state.s), self.rho, state.delta, u)
+    }
+
+    /// s∞(ρ): the non-adhesive aspect ratio (for the paper, (29)), where
+    /// ā → ∞ on the branch. From the model's derived relation ρ(s) where it
+    /// has one; otherwise the end of the s-range where the model's adhesive
+    /// branch exists, located by bisection.
+    pub fn s_infinity(&self) -> Result<f64> {
+        if self.axisymmetric() {
+            return Ok(1.0);
+        }
+        if self.model.info().has_non_adhesive_limit {
+            let m = self.model;
+            return bisect(
+                |s| m.non_adhesive_rho(s).unwrap_or(f64::NAN) - self.rho,
+                1e-9,
+                1.0,
+            );
+        }
+        // numeric: ā → ∞ at s∞. Continued through infinity, the adhesive
+        // branch comes back as the mirror solution (−ā³, −δ̄ā) of a closure
+        // that is even in p (the energy closure), which the explicit branch
+        // reports with ā³ > 0 and a compressive edge. The signed 1/ā³
+        // (positive on the adhesive branch, negative on the mirror) changes
+        // sign at s∞: bracket it on a grid and bisect.
+        let f = |s: f64| self.signed_inverse_size(s);
+        let mut bracket = None;
+        let mut prev: Option<(f64, f64)> = None;
+        // uniform in s, then logarithmic in 1 − s down to 1e-12
+        let grid = (1..400)
+            .map(|k| k as f64 / 400.0)
+            .chain((0..=200).map(|j| 1.0 - 10f64.powf(-2.61 - 9.39 * j as f64 / 200.0)));
+        for s in grid {
+            if let Some(v) = f(s) {
+                if let Some((sp, vp)) = prev {
+                    if vp > 0.0 && v < 0.0 {
+                        bracket = Some((sp, s));
+                    }
+                }
+                prev = Some((s, v));
+            }
+        }
+        let (mut lo, mut hi) = bracket.ok_or_else(|| {
+            Error::NoState(format!(
+                "model {}: no end of the adhesive branch found at rho = {}",
+                self.model_id(),
+                self.rho
+            ))
+        })?;
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            match f(mid) {
+                Some(v) if v > 0.0 => lo = mid,
+                Some(_) => hi = mid,
+                None => break,
+            }
+            if hi - lo <= 4.0 * f64::EPSILON * hi {
+                break;
+            }
+        }
+        Ok(lo)
+    }
+
+    /// 1/ā³ on the adhesive branch at `s`, −1/ā³ on its mirror (compressive
+    /// edge at both apexes); `None` where neither exists.
+    fn signed_inverse_size(&self, s: f64) -> Option<f64> {
+        if let Some((a, _)) = self.adhesive_point(s) {
+            return Some(a.powi(-3));
+        }
+        for (a, d) in self.model.branch(s, self.rho).into_iter().flatten() {
+            let x = Vector2::new(a, s);
+            let g = self
+                .model
+                .normal_derivative(x, self.rho, d, 0.0)
+                .max(self.model.normal_derivative(x, self.rho, d, 1.0));
+            if g < 0.0 {
+                return Some(-a.powi(-3));
+            }
+        }
+        None
+    }
+
+    /// The adhesive point of the model's branch at `s`: among the explicit
+    /// solutions at (s, ρ), the one with ∂p/∂ν > 0 at both apexes (a
+    /// tensile edge), the larger smaller apex value if both are. (For the
+    /// energy closure the other root has ∂p/∂ν < 0 at an apex.)
+    fn adhesive_point(&self, s: f64) -> Option<(f64, f64)> {
+        let mut best: Option<((f64, f64), f64)> = None;
+        for (a, d) in self.model.branch(s, self.rho).into_iter().flatten() {
+            let x = Vector2::new(a, s);
+            let g = self
+                .model
+                .normal_derivative(x, self.rho, d, 0.0)
+                .min(self.model.normal_derivative(x, self.rho, d, 1.0));
+            if g.is_finite() && g > 0.0 && best.is_none_or(|(_, gb)| g > gb) {
+                best = Some(((a, d), g));
+            }
+        }
+        best.map(|(p, _)| p)
     }
 
     /// The state on the branch at aspect ratio `s` (explicit; no Newton).
     pub fn state_at_s(&self, s: f64) -> Option<State> {
-        let [x, y] = M::branch(s, self.rho);
-        if !(x.is_finite() && x > 0.0 && y.is_finite()) {
-            return None;
-        }
-        let a = x.cbrt();
-        Some(self.state_from(a, s, y / a))
+        let (a, d) = self.adhesive_point(s)?;
+        Some(self.state_from(a, s, d))
     }
 
-    /// The full state at (ā, s, δ̄), which must satisfy (19)–(20).
+    /// The full state at (ā, s, δ̄), which must satisfy the model's residuals.
     pub fn state_from(&self, a: f64, s: f64, delta: f64) -> State {
-        let xi = M::xi(a, s, delta);
-        let [shape_a, shape_b] = M::shape(a, s, xi);
+        let x = Vector2::new(a, s);
+        let m = self.model;
+        let p = m.pressure_parameters(x, self.rho, delta);
+        let stability = match m.potential_hessian(x, self.rho, delta) {
+            Some(h) => Stability {
+                displacement: Some(h.fixed_view::<2, 2>(0, 0).into_owned().cholesky().is_some()),
+                load: Some(h.cholesky().is_some()),
+            },
+            None => Stability::default(),
+        };
         State {
+            model: m.info().id,
             rho: self.rho,
             a,
             b: s * a,
             s,
-            xi,
-            shape_a,
-            shape_b,
-            p0: M::p0_bar(a, xi, s),
-            force: M::force_bar(a, s, delta),
+            xi: p.xi,
+            shape_a: p.shape[0],
+            shape_b: p.shape[1],
+            p0: p.p0,
+            force: m.force_bar(x, self.rho, delta),
             delta,
-            bc_error: M::bc_error(s),
+            bc_error: if s >= 1.0 { 0.0 } else { m.bc_error(x, self.rho, delta) },
             outside_stated_range: self.rho < 0.8,
             beyond_size_fold: false,
+            stability,
         }
     }
 
-    fn axisymmetric_state(&self, a: f64) -> State {
-        let delta = crate::generated::paper::axisymmetric_dbar(a);
+    fn axisymmetric_state(&self, a: f64) -> Result<State> {
+        let (delta, force) = self.model.axisymmetric(a).ok_or_else(|| self.unavailable("the axisymmetric solution (22)-(25)"))?;
         let mut st = self.state_from(a, 1.0, delta);
-        st.force = crate::generated::paper::axisymmetric_force_bar(a);
+        st.force = force;
         st.bc_error = 0.0;
-        st
+        Ok(st)
+    }
+
+    fn unavailable(&self, what: &str) -> Error {
+        Error::Unavailable {
+            model: self.model_id().name(),
+            what: what.to_string(),
+            why: self.model.info().missing_limits,
+        }
+    }
+
+    /// The minimum of the axisymmetric F̄(ā) (pull-off at ρ = 1): the derived
+    /// critical point where the model has it, otherwise a logarithmic scan
+    /// and golden section, then secant steps on dF̄/dā.
+    fn axisymmetric_pull_off(&self) -> Result<State> {
+        let f = |a: f64| self.model.axisymmetric(a).map(|v| v.1).unwrap_or(f64::NAN);
+        if !self.model.info().has_axisymmetric_limit {
+            return Err(self.unavailable("the axisymmetric solution (22)-(25)"));
+        }
+        if let Some(a_c) = self.model.axisymmetric_critical_a() {
+            return self.axisymmetric_state(a_c);
+        }
+        let n = 400;
+        let grid: Vec<f64> = (0..=n).map(|k| 10f64.powf(-2.0 + 5.0 * k as f64 / n as f64)).collect();
+        let k = (1..n)
+            .min_by(|&i, &j| f(grid[i]).total_cmp(&f(grid[j])))
+            .ok_or_else(|| Error::NoState("no axisymmetric minimum".into()))?;
+        let (mut lo, mut hi) = (grid[k - 1], grid[k + 1]);
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..100 {
+            let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
+            if f(x1) < f(x2) {
+                hi = x2;
+            } else {
+                lo = x1;
+            }
+        }
+        let mut a = 0.5 * (lo + hi);
+        let df = |a: f64| {
+            let h = 1e-5 * a;
+            (f(a + h) - f(a - h)) / (2.0 * h)
+        };
+        let mut a_prev = a * (1.0 + 1e-6);
+        for _ in 0..20 {
+            let (d0, d1) = (df(a), df(a_prev));
+            if d0 == d1 {
+                break;
+            }
+            let next = a - d0 * (a - a_prev) / (d0 - d1);
+            a_prev = a;
+            a = next;
+            if (a - a_prev).abs() < 1e-15 * a {
+                break;
+            }
+        }
+        self.axisymmetric_state(a)
     }
 
     /// Walk the branch from s∞ towards s → 0: the samples (s, state).
-    fn walk(&self) -> Vec<State> {
-        let s_inf = self.s_infinity();
+    fn walk(&self) -> Result<Vec<State>> {
+        let s_inf = self.s_infinity()?;
         let n = self.walk_points;
         let mut out: Vec<State> = Vec::with_capacity(n);
         let mut fold_seen = false;
+        // logarithmic in s∞ − s, from 1e-13 s∞ (1e-6 s∞ for d = 2, d the
+        // residuals' degree: then the two roots of the explicit branch meet
+        // as ā → ∞ and lose accuracy closer to s∞): near ρ = 1 the whole
+        // physical branch lies within O(1 − ρ) of s∞
+        let closest = if self.model.info().residual_degree == 1 {
+            13.0
+        } else {
+            6.0
+        };
         for k in 1..n {
-            // logarithmic in s∞ − s, from 1e-13 s∞ to s∞: near ρ = 1 the
-            // whole physical branch lies within O(1 − ρ) of s∞
-            let s = s_inf - s_inf * 10f64.powf(-13.0 * (1.0 - k as f64 / n as f64));
+            let s = s_inf - s_inf * 10f64.powf(-closest * (1.0 - k as f64 / n as f64));
             let Some(mut st) = self.state_at_s(s) else {
                 continue;
             };
@@ -176,15 +425,24 @@ impl<M: Model> Contact<M> {
             st.beyond_size_fold = fold_seen;
             out.push(st);
         }
-        out
+        if out.len() < 3 {
+            return Err(Error::NoState(format!(
+                "model {} has no branch at rho = {} (s_inf = {s_inf})",
+                self.model_id(),
+                self.rho
+            )));
+        }
+        Ok(out)
     }
 
-    /// Polish a state by Newton's method on (19)–(20) at its δ̄.
+    /// Polish a state by Newton's method on the model's residuals at its δ̄.
     fn polish(&self, guess: &State, context: &str) -> Result<State> {
         let delta = guess.delta;
+        let m = self.model;
         let sol = newton::solve(
-            |a, s| M::residuals_and_jacobian(a, s, self.rho, delta),
-            (guess.a, guess.s),
+            |x| m.residuals_and_jacobian(x, self.rho, delta),
+            |a| m.residual_scale(a, delta),
+            Vector2::new(guess.a, guess.s),
             &self.newton,
             context,
         )?;
@@ -210,7 +468,7 @@ impl<M: Model> Contact<M> {
         target: f64,
         what: &str,
     ) -> Result<Vec<State>> {
-        let walk = self.walk();
+        let walk = self.walk()?;
         let mut out = Vec::new();
         for w in walk.windows(2) {
             let (f0, f1) = (key(&w[0]) - target, key(&w[1]) - target);
@@ -231,9 +489,9 @@ impl<M: Model> Contact<M> {
     }
 
     /// The first local minimum of `key` along the walk, refined by golden
-    /// section in s and polished.
+    /// section in s (not polished: a starting point for a fold Newton).
     fn first_minimum(&self, key: impl Fn(&State) -> f64, what: &str) -> Result<State> {
-        let walk = self.walk();
+        let walk = self.walk()?;
         for k in 1..walk.len().saturating_sub(1) {
             let (a, b, c) = (key(&walk[k - 1]), key(&walk[k]), key(&walk[k + 1]));
             if b < a && b <= c {
@@ -252,7 +510,11 @@ impl<M: Model> Contact<M> {
                         lo = x1;
                     }
                 }
-                return self.polish_at_s(0.5 * (lo + hi), walk[k].beyond_size_fold, what);
+                let mut st = self
+                    .state_at_s(0.5 * (lo + hi))
+                    .ok_or_else(|| Error::NoState(format!("{what}: off the branch")))?;
+                st.beyond_size_fold = walk[k].beyond_size_fold;
+                return Ok(st);
             }
         }
         Err(Error::NoState(format!(
@@ -261,18 +523,35 @@ impl<M: Model> Contact<M> {
         )))
     }
 
-    /// Displacement control: the stable state at approach `delta` (the first
-    /// one met from the non-adhesive end of the branch).
+    /// Refine a fold from a walk state by Newton on the fold condition.
+    fn refine_fold(&self, guess: &State, which: FoldCondition) -> Result<State> {
+        let z = fold::locate(
+            self.model,
+            self.rho,
+            Vector3::new(guess.a, guess.s, guess.delta),
+            which,
+        )?;
+        let mut st = self.state_from(z[0], z[1], z[2]);
+        st.beyond_size_fold = guess.beyond_size_fold;
+        Ok(st)
+    }
+
+    /// Displacement control: the state at approach `delta` on the branch
+    /// that continues the non-adhesive one (the first met from s∞).
     pub fn at_displacement(&self, delta: f64) -> Result<State> {
         check_range("delta", delta, true, "finite")?;
         if self.axisymmetric() {
             // δ̄(ā) = ā²/4 − 2/ā is increasing: one state for every δ̄.
+            let m = self.model;
+            if !m.info().has_axisymmetric_limit {
+                return Err(self.unavailable("the axisymmetric solution (22)-(25)"));
+            }
             let a = bisect(
-                |a| crate::generated::paper::axisymmetric_dbar(a) - delta,
+                |a| m.axisymmetric(a).map(|v| v.0).unwrap_or(f64::NAN) - delta,
                 1e-9,
                 1e9,
             )?;
-            return Ok(self.axisymmetric_state(a));
+            return self.axisymmetric_state(a);
         }
         self.crossings(|st| st.delta, delta, "displacement control")?
             .into_iter()
@@ -281,37 +560,13 @@ impl<M: Model> Contact<M> {
     }
 
     /// Contact-size control: every state with major semi-axis `a` (none, one
-    /// or two). δ̄ enters (19)–(20) linearly: (19) gives δ̄(s), and (20)
-    /// becomes one equation in s, whose roots are found by scanning s.
+    /// or two), the one before the contact-size fold first.
     pub fn at_contact_size(&self, a: f64) -> Result<Vec<State>> {
         check_range("a", a, a > 0.0, "(0, ∞)")?;
         if self.axisymmetric() {
-            return Ok(vec![self.axisymmetric_state(a)]);
+            return Ok(vec![self.axisymmetric_state(a)?]);
         }
-        let delta_of = |s: f64| {
-            let (r, _) = M::residuals_and_jacobian(a, s, self.rho, 0.0);
-            let d = M::residuals_d_delta(a, s, self.rho, 0.0);
-            -r[0] / d[0]
-        };
-        let g = |s: f64| {
-            let dl = delta_of(s);
-            M::residuals_and_jacobian(a, s, self.rho, dl).0[1]
-        };
-        let n = 2000;
-        let mut out = Vec::new();
-        for k in 1..n {
-            let (s0, s1) = (k as f64 / n as f64, (k + 1) as f64 / n as f64);
-            let (g0, g1) = (g(s0), g(s1.min(1.0 - 1e-12)));
-            if g0.is_finite() && g1.is_finite() && g0.signum() != g1.signum() {
-                let s = bisect(g, s0, s1.min(1.0 - 1e-12))?;
-                let mut st = self.state_from(a, s, delta_of(s));
-                // the fold flag: compare with the branch's minimum size
-                st.beyond_size_fold = s < self.size_fold()?.s;
-                out.push(st);
-            }
-        }
-        out.sort_by(|x, y| y.s.total_cmp(&x.s));
-        Ok(out)
+        self.crossings(|st| st.a, a, "contact-size control")
     }
 
     /// The fold of the contact size: the minimum of ā along the branch.
@@ -321,19 +576,22 @@ impl<M: Model> Contact<M> {
                 "no fold in a_bar at rho = 1: a_bar decreases to 0".into(),
             ));
         }
-        self.first_minimum(|st| st.a, "fold of the contact size")
+        let guess = self.first_minimum(|st| st.a, "fold of the contact size")?;
+        self.polish(&guess, "fold of the contact size")
     }
 
     /// Load control: the stable state at force `force` (on the branch from
     /// the non-adhesive end down to pull-off).
     pub fn at_load(&self, force: f64) -> Result<State> {
+        check_range("force", force, true, "finite")?;
         let pull = self.pull_off_load()?;
-        check_range(
-            "force",
-            force,
-            force >= pull.force,
-            "[pull-off force, ∞) for this rho",
-        )?;
+        if force < pull.state.force {
+            return Err(Error::OutOfRange {
+                name: "force",
+                value: force,
+                range: "[pull-off force, ∞) for this rho and model",
+            });
+        }
         self.at_load_all(force)?
             .into_iter()
             .next()
@@ -344,13 +602,14 @@ impl<M: Model> Contact<M> {
     pub fn at_load_all(&self, force: f64) -> Result<Vec<State>> {
         check_range("force", force, true, "finite")?;
         if self.axisymmetric() {
-            let f = crate::generated::paper::axisymmetric_force_bar;
-            let a_c = 12f64.cbrt();
+            let m = self.model;
+            let f = |a: f64| m.axisymmetric(a).map(|v| v.1).unwrap_or(f64::NAN);
+            let pull = self.axisymmetric_pull_off()?;
             let mut out = Vec::new();
-            if force >= f(a_c) {
-                out.push(self.axisymmetric_state(bisect(|a| f(a) - force, a_c, 1e6)?));
-                if force < 0.0 {
-                    out.push(self.axisymmetric_state(bisect(|a| f(a) - force, 1e-9, a_c)?));
+            if force >= pull.force {
+                out.push(self.axisymmetric_state(bisect(|a| f(a) - force, pull.a, 1e6)?)?);
+                if force < f(1e-9) {
+                    out.push(self.axisymmetric_state(bisect(|a| f(a) - force, 1e-9, pull.a)?)?);
                 }
             }
             return Ok(out);
@@ -358,26 +617,70 @@ impl<M: Model> Contact<M> {
         self.crossings(|st| st.force, force, "load control")
     }
 
-    /// Pull-off under load control: the minimum of F̄ along the branch.
-    pub fn pull_off_load(&self) -> Result<State> {
+    /// Pull-off under load control: the minimum of F̄ along the branch,
+    /// located by Newton on the fold condition.
+    pub fn pull_off_load(&self) -> Result<PullOff> {
+        let basis = if self.has_energy() {
+            FoldBasis::EnergyInstability
+        } else {
+            FoldBasis::ModelFold
+        };
         if self.axisymmetric() {
-            return Ok(self.axisymmetric_state(12f64.cbrt()));
+            return Ok(PullOff {
+                state: self.axisymmetric_pull_off()?,
+                control: FoldCondition::Load,
+                basis: FoldBasis::AxisymmetricMinimum,
+            });
         }
-        self.first_minimum(|st| st.force, "pull-off under load control")
+        let guess = self.first_minimum(|st| st.force, "pull-off under load control")?;
+        Ok(PullOff {
+            state: self.refine_fold(&guess, FoldCondition::Load)?,
+            control: FoldCondition::Load,
+            basis,
+        })
     }
 
-    /// Pull-off under displacement control: the end of the part of the
-    /// branch that continues the stable one with dδ̄/dā > 0 — the first
-    /// minimum of δ̄ or the fold of the contact size, whichever comes first.
-    pub fn pull_off_displacement(&self) -> Result<State> {
+    /// Pull-off under displacement control. For a model with an energy: the
+    /// first state along the branch where the Hessian of Π̄ in (ā, s) stops
+    /// being positive definite (a fold in δ̄), located by Newton on the fold
+    /// condition. For a model without one: the end of the part of the
+    /// branch that continues the non-adhesive one with dδ̄/dā > 0 — the first
+    /// minimum of δ̄ or the fold of the contact size, whichever comes first;
+    /// labelled a fold of the model, not a proven instability.
+    pub fn pull_off_displacement(&self) -> Result<PullOff> {
         if self.axisymmetric() {
             return Err(Error::NoState("at rho = 1, delta_bar(a_bar) = a_bar^2/4 - 2/a_bar increases for all a_bar: no displacement-controlled pull-off at finite size".into()));
         }
-        let fold = self.size_fold()?;
-        match self.first_minimum(|st| st.delta, "pull-off under displacement control") {
-            Ok(m) if m.s > fold.s => Ok(m),
-            _ => Ok(fold),
+        if self.has_energy() {
+            let walk = self.walk()?;
+            let k = walk
+                .iter()
+                .position(|st| st.stability.displacement == Some(false))
+                .ok_or_else(|| {
+                    Error::NoState(format!(
+                        "model {}: the branch at rho = {} stays stable under displacement control down to s = {:.3e} (the contact shrinks and elongates without a fold in delta_bar)",
+                        self.model_id(),
+                        self.rho,
+                        walk.last().map(|st| st.s).unwrap_or(f64::NAN)
+                    ))
+                })?;
+            let guess = walk[k.saturating_sub(1)];
+            return Ok(PullOff {
+                state: self.refine_fold(&guess, FoldCondition::Displacement)?,
+                control: FoldCondition::Displacement,
+                basis: FoldBasis::EnergyInstability,
+            });
         }
+        let fold = self.size_fold()?;
+        let state = match self.first_minimum(|st| st.delta, "pull-off under displacement control") {
+            Ok(m) if m.s > fold.s => self.refine_fold(&m, FoldCondition::Displacement)?,
+            _ => fold,
+        };
+        Ok(PullOff {
+            state,
+            control: FoldCondition::Displacement,
+            basis: FoldBasis::ModelFold,
+        })
     }
 
     /// The zero-force state (Section 5).

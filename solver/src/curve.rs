@@ -6,12 +6,15 @@
 //! rows. Corrector: Newton on (19), (20) plus the arclength condition.
 //! Folds are reported where a tangent component (dā, dδ̄) or dF̄ changes sign.
 //!
+//! Written once for every model. Residual scaling: a model's residuals are
+//! of degree d in (ā³, δ̄ā); the corrector's convergence test is on the
+//! step, which is scale-free.
+//!
 //! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `model`, `error`.
 
 use crate::contact::{Contact, State};
 use crate::error::{check_range, Error, Result};
-use crate::model::Model;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{Matrix3, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// What folds at a fold point.
@@ -47,7 +50,7 @@ pub struct Curve {
 /// Trace the curve of `contact` from δ̄ = `delta_start` (on the stable
 /// branch) past pull-off and the folds, and return `points` states spaced
 /// evenly in arclength.
-pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) -> Result<Curve> {
+pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve> {
     check_range("points", points as f64, points >= 2, "2 or more")?;
     let rho = contact.rho();
     let start = contact.at_displacement(delta_start)?;
@@ -61,14 +64,19 @@ pub fn trace<M: Model>(contact: &Contact<M>, points: usize, delta_start: f64) ->
             .collect::<Result<_>>()?;
         let folds = vec![Fold {
             kind: FoldKind::Load,
-            state: contact.pull_off_load()?,
+            state: contact.pull_off_load()?.state,
         }];
         return Ok(Curve { states, folds });
     }
+    let model = contact.model();
     let f = |z: &Vector3<f64>| -> ([f64; 2], [[f64; 3]; 2]) {
-        let (r, j) = M::residuals_and_jacobian(z[0], z[1], rho, z[2]);
-        let d = M::residuals_d_delta(z[0], z[1], rho, z[2]);
-        (r, [[j[0][0], j[0][1], d[0]], [j[1][0], j[1][1], d[1]]])
+        let x = Vector2::new(z[0], z[1]);
+        let (r, j) = model.residuals_and_jacobian(x, rho, z[2]);
+        let d = model.residuals_d_delta(x, rho, z[2]);
+        (
+            [r[0], r[1]],
+            [[j[(0, 0)], j[(0, 1)], d[0]], [j[(1, 0)], j[(1, 1)], d[1]]],
+        )
     };
     // variables scaled so that a unit step means a comparable change
     let scale = Vector3::new(start.a, 0.1, start.delta.abs().max(1.0));

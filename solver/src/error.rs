@@ -33,6 +33,17 @@ pub enum Error {
     /// The model has no state for the given input.
     #[error("no contact state: {0}")]
     NoState(String),
+    /// The model lacks what was asked for (a closed form its derivation
+    /// could not produce).
+    #[error("model {model} has no {what} ({why})")]
+    Unavailable {
+        /// The model's name.
+        model: &'static str,
+        /// What is missing.
+        what: String,
+        /// Why, from the derivation.
+        why: &'static str,
+    },
 }
 
 /// Shorthand.

@@ -5,11 +5,12 @@
 //! difference can be seen. Output is deterministic.
 //!
 //! Owns: figure data and rendering. May use: `contact`, `curve`, `limits`,
-//! `generated`.
+//! `generated` (the paper's model `max`, whose figures these are).
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
-use crate::generated::paper as g;
+use crate::generated::max as g;
+use crate::model::ModelId;
 use crate::limits;
 use plotters::prelude::*;
 
@@ -76,7 +77,7 @@ fn printed_force(a: f64, s: f64, d: f64) -> f64 {
 fn branch(rho: f64, n: usize) -> Result<Vec<crate::contact::State>> {
     let c = Contact::new(rho)?;
     let fold = c.size_fold()?;
-    let s_inf = c.s_infinity();
+    let s_inf = c.s_infinity()?;
     Ok((1..n)
         .filter_map(|k| {
             // logarithmic in s∞ − s, as in the solver's walk
@@ -105,7 +106,7 @@ fn figures() -> Result<Vec<Figure>> {
         shade: None,
     });
     // Fig. 3: axisymmetric force–displacement.
-    let (a_c, _, _) = limits::axisymmetric_critical();
+    let (a_c, _, _) = limits::axisymmetric_critical(ModelId::Max)?;
     let stable: Vec<(f64, f64)> = grid(a_c, 3.4, 200)
         .map(|a| (g::axisymmetric_dbar(a), g::axisymmetric_force_bar(a)))
         .collect();
@@ -145,14 +146,14 @@ fn figures() -> Result<Vec<Figure>> {
             solid(
                 "(28), zero force",
                 rhos.iter()
-                    .map(|&r| (r, limits::zero_force_s(r).unwrap_or(f64::NAN)))
+                    .map(|&r| (r, limits::zero_force_s(ModelId::Max, r).unwrap_or(f64::NAN)))
                     .collect(),
                 BLUE,
             ),
             dashed(
                 "(29), non-adhesive",
                 rhos.iter()
-                    .map(|&r| (r, limits::non_adhesive_s(r)))
+                    .map(|&r| (r, limits::non_adhesive_s(ModelId::Max, r).unwrap_or(f64::NAN)))
                     .collect(),
                 GREY,
             ),
@@ -171,7 +172,7 @@ fn figures() -> Result<Vec<Figure>> {
         .collect();
     let printed_zf: Vec<(f64, f64, f64)> = rhos
         .iter()
-        .filter_map(|&r| limits::zero_force_s(r).ok().map(|s| (r, s)))
+        .filter_map(|&r| limits::zero_force_s(ModelId::Max, r).ok().map(|s| (r, s)))
         .map(|(r, s)| {
             let a = (3.0 / (s * s) * (s.powi(3) + 5.0 * s * s + s + 1.0)).cbrt();
             (r, (s + 1.0).powi(3) / (2.0 * s * s) / a, a)
@@ -208,7 +209,7 @@ fn figures() -> Result<Vec<Figure>> {
     });
     // Figs. 6–8 at ρ = 0.8.
     let b = branch(0.8, 600)?;
-    let s_inf = limits::non_adhesive_s(0.8);
+    let s_inf = limits::non_adhesive_s(ModelId::Max, 0.8)?;
     let a_max = b.iter().map(|st| st.a).fold(0.0, f64::max);
     out.push(Figure {
         file: "fig6_s_vs_a.svg",
@@ -225,7 +226,7 @@ fn figures() -> Result<Vec<Figure>> {
         ],
         shade: None,
     });
-    let pull = Contact::new(0.8)?.pull_off_load()?;
+    let pull = Contact::new(0.8)?.pull_off_load()?.state;
     out.push(Figure {
         file: "fig7_s_vs_force.svg",
         title: "Fig. 7: aspect ratio against force, ρ = 0.8".into(),
@@ -333,7 +334,7 @@ fn figures() -> Result<Vec<Figure>> {
     let mut f_pts = Vec::new();
     for &th in &thetas {
         let rho = (th.to_radians() / 2.0).tan().powi(2).min(1.0);
-        let po = Contact::new(rho)?.pull_off_load()?;
+        let po = Contact::new(rho)?.pull_off_load()?.state;
         s_pts.push((th, po.s));
         f_pts.push((th, -po.force / (1.5 * std::f64::consts::PI)));
     }

@@ -4,6 +4,10 @@
 //! residuals, Jacobians and model functions generated from a symbolic
 //! derivation (crate `thinjkr-derive`). No symbolic algebra at run time.
 //!
+//! Several closures of the same ellipse are generated, each one value
+//! behind [`Model`], chosen at run time by [`ModelId`]: `max` (the paper's,
+//! the default), `apexes`, `energy` (Ritz, with stability) and `apex45`.
+//!
 //! The equations are the derived ones: where the paper's printed formulas
 //! differ ((18), (25)₁, (26), (27); see `docs/errata.md`), the derived forms
 //! are used.
@@ -14,6 +18,7 @@ pub mod contact;
 pub mod curve;
 pub mod error;
 pub mod figures;
+pub mod fold;
 #[allow(missing_docs)]
 #[rustfmt::skip]
 pub mod generated;
@@ -25,6 +30,6 @@ pub mod units;
 #[doc = include_str!("../../docs/guide.md")]
 pub mod guide {}
 
-pub use contact::{Contact, State};
+pub use contact::{Contact, FoldBasis, PullOff, Stability, State};
 pub use error::{Error, Result};
-pub use model::{Apex45, Model, Paper};
+pub use model::{Model, ModelId};

@@ -5,7 +5,11 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
 use thinjkr::curve::trace;
 use thinjkr::units::Cylinders;
-use thinjkr::{Contact, State};
+use thinjkr::{Contact, FoldBasis, ModelId, PullOff, State};
+
+fn parse_model(s: &str) -> Result<ModelId, String> {
+    s.parse()
+}
 
 /// Approximate JKR contact of thin incompressible coatings on rigid cylinders
 /// (Argatov, Mishuris & Popov 2016), dimensionless as in Eq. (17) unless
@@ -14,7 +18,7 @@ use thinjkr::{Contact, State};
 #[command(
     version,
     about,
-    after_help = "Examples:\n  thinjkr solve --rho 0.8 --delta 2\n  thinjkr solve --rho 0.8 --force -2 --json\n  thinjkr pull-off --rho 0.8 --control displacement\n  thinjkr zero-force --rho 0.9\n  thinjkr curve --rho 0.8 --points 50 --format csv\n  thinjkr physical --file contact.toml --force 1e-3"
+    after_help = "Examples:\n  thinjkr solve --rho 0.8 --delta 2\n  thinjkr solve --rho 0.8 --force -2 --json\n  thinjkr pull-off --rho 0.8 --control displacement\n  thinjkr pull-off --rho 0.8 --model energy\n  thinjkr zero-force --rho 0.9\n  thinjkr curve --rho 0.8 --points 50 --format csv\n  thinjkr physical --file contact.toml --force 1e-3"
 )]
 struct Cli {
     #[command(subcommand)]
@@ -31,6 +35,9 @@ enum Command {
         /// Radii ratio ρ = R2/R1 in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
+        /// Model: max (the paper's, default), apexes, energy, apex45.
+        #[arg(long, default_value = "max", value_parser = parse_model)]
+        model: ModelId,
         /// Approach δ̄.
         #[arg(long, allow_hyphen_values = true, group = "control")]
         delta: Option<f64>,
@@ -53,6 +60,9 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
+        /// Model: max (the paper's, default), apexes, energy, apex45.
+        #[arg(long, default_value = "max", value_parser = parse_model)]
+        model: ModelId,
         /// Control.
         #[arg(long, value_enum, default_value_t = Control::Load)]
         control: Control,
@@ -69,6 +79,9 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
+        /// Model: max (the paper's, default), apexes, energy, apex45.
+        #[arg(long, default_value = "max", value_parser = parse_model)]
+        model: ModelId,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -81,6 +94,9 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
+        /// Model: max (the paper's, default), apexes, energy, apex45.
+        #[arg(long, default_value = "max", value_parser = parse_model)]
+        model: ModelId,
         /// Number of points.
         #[arg(long, default_value_t = 100)]
         points: usize,
@@ -141,9 +157,26 @@ fn json(st: &State) -> serde_json::Value {
     serde_json::to_value(st).expect("a state serialises")
 }
 
+fn stability(st: &State) -> String {
+    let word = |v: Option<bool>| match v {
+        Some(true) => "stable",
+        Some(false) => "unstable",
+        None => "n/a",
+    };
+    match (st.stability.displacement, st.stability.load) {
+        (None, None) => String::new(),
+        (d, l) => format!(
+            " [displacement control: {}, load control: {}]",
+            word(d),
+            word(l)
+        ),
+    }
+}
+
 fn show(label: &str, st: &State) {
     println!(
-        "{label}: a = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, xi = {:.6}, p0 = {:.6}, error (14) = {:.4} %{}{}",
+        "{label}: model {}, a = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, xi = {:.6}, p0 = {:.6}, error (14) = {:.4} %{}{}{}",
+        st.model,
         st.a,
         st.s,
         st.delta,
@@ -152,8 +185,26 @@ fn show(label: &str, st: &State) {
         st.p0,
         100.0 * st.bc_error,
         if st.outside_stated_range { " [rho < 0.8: outside the paper's stated range]" } else { "" },
-        if st.beyond_size_fold { " [beyond the contact-size fold]" } else { "" }
+        if st.beyond_size_fold { " [beyond the contact-size fold]" } else { "" },
+        stability(st)
     );
+}
+
+fn basis(p: &PullOff) -> &'static str {
+    match p.basis {
+        FoldBasis::EnergyInstability => "loss of stability of the model's energy (Hessian of the potential)",
+        FoldBasis::ModelFold => "a fold of the model's solution curve; the model has no energy, so this is not a proven instability",
+        FoldBasis::AxisymmetricMinimum => "the minimum of the force on the exact axisymmetric solution",
+    }
+}
+
+fn emit_pull_off(p: &PullOff, as_json: bool) {
+    if as_json {
+        println!("{}", serde_json::to_value(p).expect("a pull-off serialises"));
+    } else {
+        show("pull-off", &p.state);
+        println!("  end point: {}", basis(p));
+    }
 }
 
 fn emit(label: &str, st: &State, as_json: bool) {
@@ -169,21 +220,22 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
         None => {
             let c = Contact::new(0.8)?;
             println!("thinjkr: the paper's example, rho = R2/R1 = 0.8 (dimensionless, Eq. (17)); derived forms of (18), (26), (27)");
-            show("pull-off (load control)        ", &c.pull_off_load()?);
+            show("pull-off (load control)        ", &c.pull_off_load()?.state);
             show(
                 "pull-off (displacement control)",
-                &c.pull_off_displacement()?,
+                &c.pull_off_displacement()?.state,
             );
             show("zero force                     ", &c.zero_force()?);
         }
         Some(Command::Solve {
             rho,
+            model,
             delta,
             force,
             a,
             json: j,
         }) => {
-            let c = Contact::new(rho)?;
+            let c = Contact::with_model(model, rho)?;
             match (delta, force, a) {
                 (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j),
                 (_, Some(f), _) => emit("state", &c.at_load(f)?, j),
@@ -217,36 +269,53 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
         }
         Some(Command::PullOff {
             rho,
+            model,
             control,
             json: j,
         }) => {
-            let c = Contact::new(rho)?;
-            let st = match control {
+            let c = Contact::with_model(model, rho)?;
+            let p = match control {
                 Control::Load => c.pull_off_load()?,
                 Control::Displacement => c.pull_off_displacement()?,
             };
-            emit("pull-off", &st, j);
+            emit_pull_off(&p, j);
         }
-        Some(Command::ZeroForce { rho, json: j }) => {
-            emit("zero force", &Contact::new(rho)?.zero_force()?, j)
-        }
+        Some(Command::ZeroForce {
+            rho,
+            model,
+            json: j,
+        }) => emit(
+            "zero force",
+            &Contact::with_model(model, rho)?.zero_force()?,
+            j,
+        ),
         Some(Command::Curve {
             rho,
+            model,
             points,
             format,
         }) => {
-            let c = Contact::new(rho)?;
+            let c = Contact::with_model(model, rho)?;
             let curve = trace(&c, points, 20.0)?;
             match format {
                 Format::Json => {
                     println!("{}", serde_json::to_string(&curve).expect("serialisable"))
                 }
                 Format::Csv => {
-                    println!("delta,force,a,s,bc_error,beyond_size_fold");
+                    println!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
+                    let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
                     for st in &curve.states {
                         println!(
-                            "{},{},{},{},{},{}",
-                            st.delta, st.force, st.a, st.s, st.bc_error, st.beyond_size_fold
+                            "{},{},{},{},{},{},{},{},{}",
+                            st.model,
+                            st.delta,
+                            st.force,
+                            st.a,
+                            st.s,
+                            st.bc_error,
+                            st.beyond_size_fold,
+                            flag(st.stability.displacement),
+                            flag(st.stability.load)
                         );
                     }
                 }

@@ -1,112 +1,173 @@
-//! The model equations as a trait, implemented by each generated module
-//! (`crate::generated::*`): residuals (19)–(20) and their Jacobian side by
-//! side, ∂/∂δ̄, ξ (15)₁, F̄ (18, derived form), η (16), the error measure (14)
-//! and the explicit branch. Nothing here is written by hand: every method
-//! forwards to generated code.
+//! The one interface through which the solver uses every model: residuals
+//! of the model's closure and their Jacobian side by side (for the paper's
+//! model, (19)–(20)), ∂/∂δ̄, F̄ (for the paper, the derived form of (18))
+//! with its gradient, the explicit branch at fixed (s, ρ), ∂p/∂ν on Γ₀,
+//! the pressure (5) and its parameters, and, as data, which closed-form
+//! limits and which energy the model has. The implementations are generated
+//! (`crate::generated::*`, one value per model); nothing here names a
+//! model's formulas.
 //!
-//! Owns: [`Model`], [`Paper`], [`Apex45`]. May use: `generated`.
+//! Owns: [`Model`], [`ModelInfo`], [`ClosureKind`], [`PressureParameters`],
+//! and numeric helpers the generated implementations share
+//! ([`real_roots`], [`contour_spread`]). May use: `generated` (for
+//! [`ModelId`]), nalgebra.
 
-use crate::generated;
+use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+use serde::{Deserialize, Serialize};
 
-/// One ansatz's generated equations, in the dimensionless variables of (17).
-pub trait Model {
-    /// The ansatz identifier.
-    const NAME: &'static str;
-    /// η(s), Eq. (16).
-    fn eta(s: f64) -> f64;
-    /// dη/ds.
-    fn eta_s(s: f64) -> f64;
-    /// Quantity (14) as a fraction.
-    fn bc_error(s: f64) -> f64;
-    /// Residuals (19), (20) and the Jacobian ∂(r1, r2)/∂(ā, s).
+pub use crate::generated::ModelId;
+
+/// How a model imposes the second boundary condition (3)₂.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ClosureKind {
+    /// The maximum of ∂p/∂ν along Γ₀ equals √(2mΔγ) (the paper's (13)).
+    Max,
+    /// ∂p/∂ν = √(2mΔγ) at given contour points.
+    AtPoint,
+    /// Stationary total potential energy Π = U − Δγ·πab (Ritz).
+    Energy,
+}
+
+/// What a model is and what it has, as data (generated).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModelInfo {
+    /// Its identifier.
+    pub id: ModelId,
+    /// One line.
+    pub title: &'static str,
+    /// The closure of (3)₂.
+    pub closure: ClosureKind,
+    /// The closure in words.
+    pub closure_note: &'static str,
+    /// The degree d of the residuals in (ā³, δ̄ā): 1 for collocation
+    /// closures, 2 for the energy closure.
+    pub residual_degree: u32,
+    /// Whether the non-adhesive relation ρ(s) (for the paper, behind (29)) was derived.
+    pub has_non_adhesive_limit: bool,
+    /// Whether the axisymmetric solution (22)–(25) was derived.
+    pub has_axisymmetric_limit: bool,
+    /// Whether the zero-force relation ρ(s) (for the paper, (28)) was derived.
+    pub has_zero_force_limit: bool,
+    /// Whether the near-circular expansion (Appendix) was derived.
+    pub has_near_circular_limit: bool,
+    /// Why a limit is missing, if one is.
+    pub missing_limits: &'static str,
+}
+
+/// The pressure (5) of a state: p̄₀ = p₀/(√(2mΔγ) L), the shape parameters
+/// times L² (for (5): A L², B L²) and ξ of (10).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PressureParameters {
+    /// p̄₀.
+    pub p0: f64,
+    /// The shape parameters times L².
+    pub shape: [f64; 2],
+    /// ξ.
+    pub xi: f64,
+}
+
+/// Up to two points (ā, δ̄) of the model's solution set at one (s, ρ).
+pub type BranchPoints = [Option<(f64, f64)>; 2];
+
+/// One generated model, in the dimensionless variables of (17). The
+/// unknowns are x = (ā, s) at given (ρ, δ̄).
+pub trait Model: Send + Sync + 'static {
+    /// What the model is and has.
+    fn info(&self) -> &'static ModelInfo;
+    /// Residuals of the closure and their Jacobian ∂r/∂(ā, s), side by side.
     fn residuals_and_jacobian(
-        a_bar: f64,
-        s: f64,
+        &self,
+        x: Vector2<f64>,
         rho: f64,
         delta_bar: f64,
-    ) -> ([f64; 2], [[f64; 2]; 2]);
-    /// ∂(r1, r2)/∂δ̄.
-    fn residuals_d_delta(a_bar: f64, s: f64, rho: f64, delta_bar: f64) -> [f64; 2];
-    /// ξ, first line of (15).
-    fn xi(a_bar: f64, s: f64, delta_bar: f64) -> f64;
-    /// F̄, derived form of (18).
-    fn force_bar(a_bar: f64, s: f64, delta_bar: f64) -> f64;
-    /// p̄₀ = p₀/(√(2mΔγ) L).
-    fn p0_bar(a_bar: f64, xi: f64, s: f64) -> f64;
-    /// The branch at fixed ρ, explicit in s: (ā³, δ̄ā).
-    fn branch(s: f64, rho: f64) -> [f64; 2];
-    /// The shape parameters of the ansatz from the collocation (10).
-    fn shape(a: f64, s: f64, xi: f64) -> [f64; 2];
-    /// The pressure field (5) with (10).
-    fn pressure(x: f64, y: f64, p0: f64, a: f64, s: f64, xi: f64) -> f64;
+    ) -> (Vector2<f64>, Matrix2<f64>);
+    /// ∂r/∂δ̄.
+    fn residuals_d_delta(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector2<f64>;
+    /// F̄ = F/(2R₁Δγ).
+    fn force_bar(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64;
+    /// ∂F̄/∂(ā, s, δ̄).
+    fn force_bar_gradient(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector3<f64>;
+    /// The solution set at fixed (s, ρ), explicit: up to two (ā, δ̄).
+    fn branch(&self, s: f64, rho: f64) -> BranchPoints;
+    /// ∂p̄/∂ν on Γ₀ at u = sin²t, in units of √(2mΔγ) (1 where (3)₂ holds).
+    fn normal_derivative(&self, x: Vector2<f64>, rho: f64, delta_bar: f64, u: f64) -> f64;
+    /// p̄₀, the shape parameters and ξ.
+    fn pressure_parameters(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> PressureParameters;
+    /// p̄ at (x̄, ȳ) inside the ellipse (7).
+    fn pressure(&self, px: f64, py: f64, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64;
+    /// (max − min)/min of ∂p/∂ν along Γ₀: quantity (14).
+    fn bc_error(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64;
+    /// Π̄, for models with an energy.
+    fn potential(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<f64>;
+    /// The Hessian of Π̄ in (ā, s, δ̄), for models with an energy.
+    fn potential_hessian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<Matrix3<f64>>;
+    /// ρ(s) in the non-adhesive limit, if derived.
+    fn non_adhesive_rho(&self, s: f64) -> Option<f64>;
+    /// (δ̄, F̄) at ρ = 1 for contact radius ā, if derived: (22)–(25).
+    fn axisymmetric(&self, a_bar: f64) -> Option<(f64, f64)>;
+    /// ρ(s) at zero force, if derived: (28).
+    fn zero_force_rho(&self, s: f64) -> Option<f64>;
+    /// ds/dμ at μ = 0 (Appendix, (35)–(36)), if derived.
+    fn near_circular_ds_dmu(&self, a0: f64) -> Option<f64>;
+    /// ā at the minimum of F̄ on the axisymmetric solution (Section 4), if
+    /// derived in closed form.
+    fn axisymmetric_critical_a(&self) -> Option<f64>;
+
+    /// The scale of the residuals at (ā, δ̄): (1 + ā³ + |δ̄ā|)^d.
+    fn residual_scale(&self, a_bar: f64, delta_bar: f64) -> f64 {
+        let m = 1.0 + a_bar.powi(3) + (delta_bar * a_bar).abs();
+        m.powi(self.info().residual_degree as i32)
+    }
 }
 
-macro_rules! impl_model {
-    ($ty:ident, $m:ident, $doc:literal) => {
-        #[doc = $doc]
-        #[derive(Clone, Copy, Debug, Default)]
-        pub struct $ty;
-        impl Model for $ty {
-            const NAME: &'static str = stringify!($m);
-            fn eta(s: f64) -> f64 {
-                generated::$m::eta(s)
-            }
-            fn eta_s(s: f64) -> f64 {
-                generated::$m::eta_s(s)
-            }
-            fn bc_error(s: f64) -> f64 {
-                generated::$m::bc_error(s)
-            }
-            fn residuals_and_jacobian(
-                a_bar: f64,
-                s: f64,
-                rho: f64,
-                delta_bar: f64,
-            ) -> ([f64; 2], [[f64; 2]; 2]) {
-                let [eta, eta_s] = generated::$m::eta_and_eta_s(s);
-                let v =
-                    generated::$m::residuals_and_jacobian_eta(a_bar, s, rho, delta_bar, eta, eta_s);
-                ([v[0], v[1]], [[v[2], v[3]], [v[4], v[5]]])
-            }
-            fn residuals_d_delta(a_bar: f64, s: f64, rho: f64, delta_bar: f64) -> [f64; 2] {
-                generated::$m::residuals_d_dbar_eta(
-                    a_bar,
-                    s,
-                    rho,
-                    delta_bar,
-                    Self::eta(s),
-                    Self::eta_s(s),
-                )
-            }
-            fn xi(a_bar: f64, s: f64, delta_bar: f64) -> f64 {
-                generated::$m::xi(a_bar, s, delta_bar, Self::eta(s))
-            }
-            fn force_bar(a_bar: f64, s: f64, delta_bar: f64) -> f64 {
-                generated::$m::force_bar(a_bar, s, delta_bar, Self::eta(s))
-            }
-            fn p0_bar(a_bar: f64, xi: f64, s: f64) -> f64 {
-                generated::$m::p0_bar(a_bar, xi, Self::eta(s))
-            }
-            fn branch(s: f64, rho: f64) -> [f64; 2] {
-                generated::$m::branch_eta(s, rho, Self::eta(s))
-            }
-            fn shape(a: f64, s: f64, xi: f64) -> [f64; 2] {
-                generated::$m::shape(a, s, xi)
-            }
-            fn pressure(x: f64, y: f64, p0: f64, a: f64, s: f64, xi: f64) -> f64 {
-                generated::$m::pressure(x, y, p0, a, s, xi)
+/// The real roots of c₀ + c₁t + c₂t² (c₂ may vanish), smallest first, by
+/// the cancellation-free form of the quadratic formula.
+pub fn real_roots(c: &[f64]) -> [Option<f64>; 2] {
+    let (c0, c1, c2) = (c[0], c.get(1).copied().unwrap_or(0.0), c.get(2).copied().unwrap_or(0.0));
+    let scale = c0.abs().max(c1.abs()).max(c2.abs());
+    if !(scale.is_finite()) || scale == 0.0 {
+        return [None, None];
+    }
+    if c2.abs() <= 1e-300 * scale || c2 == 0.0 {
+        return if c1 != 0.0 { [Some(-c0 / c1), None] } else { [None, None] };
+    }
+    let disc = c1 * c1 - 4.0 * c2 * c0;
+    if disc < 0.0 {
+        return [None, None];
+    }
+    let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+    let (r1, r2) = if q != 0.0 { (q / c2, c0 / q) } else { (0.0, 0.0) };
+    let (lo, hi) = if r1 <= r2 { (r1, r2) } else { (r2, r1) };
+    [Some(lo), Some(hi)]
+}
+
+/// (max − min)/min of `g` on u ∈ [0, 1]: sampled at 129 points, each
+/// extremum refined by golden section on its neighbouring interval.
+pub fn contour_spread(g: impl Fn(f64) -> f64) -> f64 {
+    let n = 128;
+    let v: Vec<f64> = (0..=n).map(|k| g(k as f64 / n as f64)).collect();
+    let refine = |k: usize, sign: f64| -> f64 {
+        let (mut lo, mut hi) = ((k.max(1) - 1) as f64 / n as f64, ((k + 1).min(n)) as f64 / n as f64);
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        let f = |u: f64| sign * g(u);
+        for _ in 0..60 {
+            let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
+            if f(x1) > f(x2) {
+                hi = x2;
+            } else {
+                lo = x1;
             }
         }
+        let best = sign * f(0.5 * (lo + hi));
+        if sign > 0.0 {
+            best.max(v[k])
+        } else {
+            best.min(v[k])
+        }
     };
+    let kmax = (0..=n).max_by(|&i, &j| v[i].total_cmp(&v[j])).unwrap_or(0);
+    let kmin = (0..=n).min_by(|&i, &j| v[i].total_cmp(&v[j])).unwrap_or(0);
+    let (max, min) = (refine(kmax, 1.0), refine(kmin, -1.0));
+    (max - min) / min
 }
-
-impl_model!(
-    Paper,
-    paper,
-    "The paper's ansatz (5) with collocation (10)."
-);
-impl_model!(
-    Apex45,
-    apex45,
-    "Ansatz (5) with ∂p/∂ν equal at t = 0 and t = π/4 (a second ansatz, to show regeneration)."
-);

@@ -1,6 +1,7 @@
-//! Damped Newton's method for the two residuals (19)–(20) in (ā, s), with a
-//! backtracking line search on ‖r‖² that also keeps the iterate inside the
-//! domain ā > 0, 0 < s ≤ 1.
+//! Damped Newton's method for a model's two residuals in x = (ā, s) (for
+//! the paper's model, (19)–(20)), with a backtracking line search on ‖r‖²
+//! that also keeps the iterate inside the domain ā > 0, 0 < s ≤ 1. Written
+//! once for every model.
 //!
 //! Owns: [`NewtonConfig`], [`solve`]. May use: `error`, nalgebra.
 
@@ -51,17 +52,20 @@ pub struct Solution {
     pub residual: f64,
 }
 
-/// Solve `f(ā, s) = 0` from `start`, where `f` returns the residuals and the
-/// Jacobian ∂r/∂(ā, s). Residuals are scaled by 1 + ā³ (they are monic in ā³).
+/// Solve `f(x) = 0`, x = (ā, s), from `start`, where `f` returns the
+/// residuals and the Jacobian ∂r/∂(ā, s), and `scale(ā)` the magnitude of
+/// the residuals' terms (the model's `residual_scale`): the converged norm
+/// is ‖r‖/scale.
 pub fn solve(
-    f: impl Fn(f64, f64) -> ([f64; 2], [[f64; 2]; 2]),
-    start: (f64, f64),
+    f: impl Fn(Vector2<f64>) -> (Vector2<f64>, Matrix2<f64>),
+    scale: impl Fn(f64) -> f64,
+    start: Vector2<f64>,
     config: &NewtonConfig,
     context: &str,
 ) -> Result<Solution> {
-    let (mut a, mut s) = start;
-    let norm = |r: [f64; 2], a: f64| (r[0].hypot(r[1])) / (1.0 + a * a * a);
-    let (mut r, mut j) = f(a, s);
+    let (mut a, mut s) = (start[0], start[1]);
+    let norm = |r: Vector2<f64>, a: f64| r.norm() / scale(a);
+    let (mut r, mut j) = f(Vector2::new(a, s));
     let mut rn = norm(r, a);
     for it in 0..config.max_iterations {
         if rn.is_finite() && rn < config.tolerance {
@@ -72,8 +76,7 @@ pub fn solve(
                 residual: rn,
             });
         }
-        let jm = Matrix2::new(j[0][0], j[0][1], j[1][0], j[1][1]);
-        let step = jm.lu().solve(&Vector2::new(-r[0], -r[1]));
+        let step = j.lu().solve(&(-r));
         let Some(step) = step.filter(|d| d.iter().all(|x| x.is_finite())) else {
             break;
         };
@@ -93,7 +96,7 @@ pub fn solve(
         while lambda >= config.min_step {
             let (an, sn) = (a + lambda * step[0], s + lambda * step[1]);
             if an > 0.0 && sn > 0.0 && sn <= 1.0 + 1e-12 {
-                let (rt, jt) = f(an, sn.min(1.0));
+                let (rt, jt) = f(Vector2::new(an, sn.min(1.0)));
                 let rtn = norm(rt, an);
                 if rtn.is_finite() && rtn < rn * (1.0 - 1e-4 * lambda) {
                     if rn < config.stall_residual && rtn > 0.5 * rn {

@@ -153,6 +153,6 @@ impl Cylinders {
     /// Pull-off under load control.
     pub fn pull_off(&self) -> Result<PhysicalState> {
         let (c, sc) = self.contact()?;
-        Ok(self.to_physical(&sc, c.pull_off_load()?))
+        Ok(self.to_physical(&sc, c.pull_off_load()?.state))
     }
 }

@@ -10,7 +10,8 @@ use proptest::prelude::*;
 use std::sync::OnceLock;
 use symbolica::atom::Atom;
 use thinjkr::newton::{solve, NewtonConfig};
-use thinjkr::{Apex45, Model, Paper};
+use thinjkr::{Model, ModelId};
+use nalgebra::Vector2;
 use thinjkr_derive::sym::{diff, eval_prec, rat, simplify, subs};
 use thinjkr_derive::{ansatz, model::Derivation};
 
@@ -56,6 +57,11 @@ fn point(a: f64, s: f64, rho: f64, dbar: f64) -> Vec<(&'static str, Atom)> {
     ]
 }
 
+fn rj(id: ModelId, a: f64, s: f64, rho: f64, dbar: f64) -> ([f64; 2], [[f64; 2]; 2]) {
+    let (r, j) = id.model().residuals_and_jacobian(Vector2::new(a, s), rho, dbar);
+    ([r[0], r[1]], [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]])
+}
+
 fn round9(x: f64) -> f64 {
     (x * 1e9).round() / 1e9
 }
@@ -66,13 +72,13 @@ proptest! {
     #[test]
     fn residuals_match_symbolica(a in 0.5f64..20.0, s in 0.3f64..1.0, rho in 0.05f64..1.0, dbar in -2.0f64..50.0) {
         let (a, s, rho, dbar) = (round9(a), round9(s), round9(rho), round9(dbar));
-        let (r, _) = Paper::residuals_and_jacobian(a, s, rho, dbar);
+        let (r, _) = rj(ModelId::Max, a, s, rho, dbar);
         let scale = 1.0 + a.powi(3) + dbar.abs() * a;
         for k in 0..2 {
             let exact = eval_prec(&paper().residuals[k], &point(a, s, rho, dbar), 40).unwrap();
             prop_assert!((r[k] - exact).abs() <= 1e-12 * scale.max(exact.abs()), "r{} generated {} symbolica {}", k + 1, r[k], exact);
         }
-        let f = Paper::force_bar(a, s, dbar);
+        let f = ModelId::Max.model().force_bar(Vector2::new(a, s), rho, dbar);
         let exact = eval_prec(&paper().fbar, &point(a, s, rho, dbar), 40).unwrap();
         let fscale = a.powi(3) * (1.0 + a * dbar.abs());
         prop_assert!((f - exact).abs() <= 1e-12 * fscale.max(exact.abs()), "F̄ generated {} symbolica {}", f, exact);
@@ -81,7 +87,7 @@ proptest! {
     #[test]
     fn jacobian_matches_symbolica_and_finite_differences(a in 0.5f64..20.0, s in 0.3f64..0.999, rho in 0.05f64..1.0, dbar in -2.0f64..50.0) {
         let (a, s, rho, dbar) = (round9(a), round9(s), round9(rho), round9(dbar));
-        let (_, j) = Paper::residuals_and_jacobian(a, s, rho, dbar);
+        let (_, j) = rj(ModelId::Max, a, s, rho, dbar);
         let scale = 1.0 + a.powi(3) + dbar.abs() * a;
         for k in 0..2 {
             for (c, name) in ["abar", "s"].iter().enumerate() {
@@ -92,7 +98,7 @@ proptest! {
         // central differences on the generated residuals
         let h_a = 1e-6 * a;
         let h_s = 1e-6;
-        let r = |a: f64, s: f64| Paper::residuals_and_jacobian(a, s, rho, dbar).0;
+        let r = |a: f64, s: f64| rj(ModelId::Max, a, s, rho, dbar).0;
         let (rp, rm) = (r(a + h_a, s), r(a - h_a, s));
         let (sp, sm) = (r(a, s + h_s), r(a, s - h_s));
         for k in 0..2 {
@@ -111,10 +117,10 @@ fn d_residuals_d_delta_matches_finite_differences() {
         (1.2, 0.5, 0.3, -0.5),
         (10.0, 0.99, 0.95, 30.0),
     ] {
-        let d = Paper::residuals_d_delta(a, s, rho, dbar);
+        let d = ModelId::Max.model().residuals_d_delta(Vector2::new(a, s), rho, dbar);
         let h = 1e-6;
-        let rp = Paper::residuals_and_jacobian(a, s, rho, dbar + h).0;
-        let rm = Paper::residuals_and_jacobian(a, s, rho, dbar - h).0;
+        let rp = rj(ModelId::Max, a, s, rho, dbar + h).0;
+        let rm = rj(ModelId::Max, a, s, rho, dbar - h).0;
         for k in 0..2 {
             let fd = (rp[k] - rm[k]) / (2.0 * h);
             approx::assert_relative_eq!(d[k], fd, max_relative = 1e-7);
@@ -126,16 +132,19 @@ fn d_residuals_d_delta_matches_finite_differences() {
 fn the_second_ansatz_is_generated_and_solved() {
     // ρ = 0.8, δ̄ = 2: start from the paper's solution, solve apex45's residuals.
     let cfg = NewtonConfig::default();
+    let scale = |a: f64| 1.0 + a.powi(3) + 2.0 * a;
     let paper = solve(
-        |a, s| Paper::residuals_and_jacobian(a, s, 0.8, 2.0),
-        (3.0, 0.9),
+        |x| ModelId::Max.model().residuals_and_jacobian(x, 0.8, 2.0),
+        scale,
+        Vector2::new(3.0, 0.9),
         &cfg,
         "paper",
     )
     .unwrap();
     let other = solve(
-        |a, s| Apex45::residuals_and_jacobian(a, s, 0.8, 2.0),
-        (paper.a_bar, paper.s),
+        |x| ModelId::Apex45.model().residuals_and_jacobian(x, 0.8, 2.0),
+        scale,
+        Vector2::new(paper.a_bar, paper.s),
         &cfg,
         "apex45",
     )
@@ -164,7 +173,7 @@ fn the_second_ansatz_is_generated_and_solved() {
     let d = derived(&ansatz::APEX_45);
     let at = point(other.a_bar, other.s, 0.8, 2.0);
     let (a, s) = (round9(other.a_bar), round9(other.s));
-    let (rg, _) = Apex45::residuals_and_jacobian(a, s, 0.8, 2.0);
+    let (rg, _) = rj(ModelId::Apex45, a, s, 0.8, 2.0);
     for k in 0..2 {
         let exact = eval_prec(&d.residuals[k], &at, 40).unwrap();
         assert!(

@@ -48,7 +48,7 @@ proptest! {
             let again = c.at_displacement(st.delta).unwrap();
             prop_assert!((again.a - st.a).abs() < 1e-9 * st.a && (again.s - st.s).abs() < 1e-9);
             // and at its own force, when it lies on the part that is stable under load control
-            if st.s >= c.pull_off_load().unwrap().s {
+            if st.s >= c.pull_off_load().unwrap().state.s {
                 let by_force = c.at_load(st.force).unwrap();
                 prop_assert!((by_force.a - st.a).abs() < 1e-7 * st.a, "{} vs {}", by_force.a, st.a);
             }
@@ -113,7 +113,7 @@ fn axisymmetric_limit() {
         assert_relative_eq!(st.force, f, max_relative = 1e-12, epsilon = 1e-12);
         assert!(st.bc_error.abs() < 1e-15);
     }
-    let po = c.pull_off_load().unwrap();
+    let po = c.pull_off_load().unwrap().state;
     assert_relative_eq!(po.force, -1.5 * std::f64::consts::PI, max_relative = 1e-12);
     assert_relative_eq!(po.a, 12f64.cbrt(), max_relative = 1e-12);
     // the model is continuous as ρ → 1
@@ -126,7 +126,7 @@ fn axisymmetric_limit() {
         (near.s - 1.0).abs() < 1e-5 && (near.a - exact.a).abs() < 1e-5 * exact.a,
         "{near:?} vs {exact:?}"
     );
-    let near_po = Contact::new(1.0 - 1e-6).unwrap().pull_off_load().unwrap();
+    let near_po = Contact::new(1.0 - 1e-6).unwrap().pull_off_load().unwrap().state;
     assert!((near_po.force - po.force).abs() < 1e-4);
 }
 
@@ -137,7 +137,7 @@ fn curve_is_continuous_and_solves_the_equations() {
     for rho in [0.8, 0.5, 0.2] {
         let c = Contact::new(rho).unwrap();
         let curve = thinjkr::curve::trace(&c, 400, 20.0).unwrap();
-        let po = c.pull_off_load().unwrap();
+        let po = c.pull_off_load().unwrap().state;
         // continuity: doubling the number of points halves the largest jump
         let max_jump = |n: usize| {
             let cv = thinjkr::curve::trace(&c, n, 20.0).unwrap();
@@ -152,10 +152,12 @@ fn curve_is_continuous_and_solves_the_equations() {
             "rho {rho}: largest F̄ jump {j1} with 500 points, {j2} with 1000"
         );
         for st in &curve.states {
-            let (r, _) = <thinjkr::Paper as thinjkr::Model>::residuals_and_jacobian(
-                st.a, st.s, rho, st.delta,
+            let (r, _) = thinjkr::ModelId::Max.model().residuals_and_jacobian(
+                nalgebra::Vector2::new(st.a, st.s),
+                rho,
+                st.delta,
             );
-            assert!(r[0].hypot(r[1]) < 1e-8 * (1.0 + st.a.powi(3)));
+            assert!(r.norm() < 1e-8 * (1.0 + st.a.powi(3)));
             assert!(st.force.is_finite() && st.a > 0.0 && st.s > 0.0 && st.s <= 1.0);
         }
         let min_f = curve
@@ -221,7 +223,7 @@ fn physical_units_agree_with_dimensionless() {
         max_relative = 1e-12
     );
     let phys = cyl.pull_off().unwrap();
-    let dimless = Contact::new(sc.rho).unwrap().pull_off_load().unwrap();
+    let dimless = Contact::new(sc.rho).unwrap().pull_off_load().unwrap().state;
     assert_relative_eq!(
         phys.force,
         dimless.force * 2.0 * sc.big_r1 * 0.05,
@@ -305,7 +307,7 @@ fn bad_inputs_are_typed_errors() {
         assert_eq!(names(cyl.pull_off().unwrap_err()), name);
     }
     let c = Contact::new(0.8).unwrap();
-    let po = c.pull_off_load().unwrap();
+    let po = c.pull_off_load().unwrap().state;
     assert_eq!(names(c.at_load(po.force - 0.1).unwrap_err()), "force");
     assert_eq!(names(c.at_contact_size(-1.0).unwrap_err()), "a");
     assert_eq!(names(c.at_displacement(f64::NAN).unwrap_err()), "delta");
@@ -346,17 +348,17 @@ fn sweep_converges_or_reports_no_state() {
             }
         }
         // pull-off under both controls and zero force exist everywhere but ρ = 1 (displacement)
-        c.pull_off_load().unwrap();
+        c.pull_off_load().unwrap().state;
         c.zero_force().unwrap();
         if rho < 1.0 {
-            c.pull_off_displacement().unwrap();
+            c.pull_off_displacement().unwrap().state;
         }
     }
     assert!(solved > 400);
     // (30) approximates the derived root of (28) on (0.4, 1) to 0.01 %
     for k in 0..100 {
         let rho = 0.4 + 0.6 * (k as f64 + 0.5) / 100.0;
-        let s = limits::zero_force_s(rho).unwrap();
+        let s = limits::zero_force_s(thinjkr::ModelId::Max, rho).unwrap();
         assert!((limits::zero_force_s_approx(rho) - s).abs() / s < 1e-4);
     }
 }

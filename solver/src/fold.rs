@@ -1,0 +1,134 @@
+//! Folds of a model's solution curve, located by Newton's method on the
+//! fold condition, for any model (written once against [`Model`]).
+//!
+//! The curve is r(ā, s; δ̄) = 0 (for the paper, (19)–(20)). Unknowns
+//! z = (ā, s, δ̄); the extended system is r(z) = 0 and c(z) = 0 with
+//! - displacement control (a turning point in δ̄): c = det ∂r/∂(ā, s);
+//! - load control (a turning point in F̄, pull-off): c = det of the bordered
+//!   matrix [∂r/∂(ā, s) ∂r/∂δ̄; ∂F̄/∂(ā, s) ∂F̄/∂δ̄], which vanishes where
+//!   dF̄ = 0 along the curve. For an energy model r is a row scaling of
+//!   ∇Π̄ and F̄ = ∂Π̄/∂δ̄, so this is the Hessian of Π̄ in (ā, s, δ̄) up to
+//!   positive factors: the load-controlled stability limit.
+//!
+//! The rows of r in the Jacobian of the extended system are analytic
+//! (generated); the row of c is a central difference of the analytic
+//! Jacobian (so second derivatives are not needed from the generator).
+//!
+//! Owns: [`FoldCondition`], [`locate`]. May use: `model`, `error`.
+
+use crate::error::{Error, Result};
+use crate::model::Model;
+use nalgebra::{Matrix3, Vector2, Vector3};
+use serde::{Deserialize, Serialize};
+
+/// Which quantity turns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FoldCondition {
+    /// A turning point in δ̄: the end of displacement control.
+    Displacement,
+    /// A turning point in F̄: the end of load control (pull-off).
+    Load,
+}
+
+fn condition(model: &dyn Model, rho: f64, z: Vector3<f64>, which: FoldCondition) -> f64 {
+    let x = Vector2::new(z[0], z[1]);
+    let (_, j) = model.residuals_and_jacobian(x, rho, z[2]);
+    match which {
+        FoldCondition::Displacement => j.determinant(),
+        FoldCondition::Load => {
+            let d = model.residuals_d_delta(x, rho, z[2]);
+            let g = model.force_bar_gradient(x, rho, z[2]);
+            Matrix3::new(
+                j[(0, 0)],
+                j[(0, 1)],
+                d[0],
+                j[(1, 0)],
+                j[(1, 1)],
+                d[1],
+                g[0],
+                g[1],
+                g[2],
+            )
+            .determinant()
+        }
+    }
+}
+
+/// Locate the fold of `which` near `guess` = (ā, s, δ̄) by Newton's method
+/// on the extended system. Fails with [`Error::NoConvergence`] (saying
+/// where) when it does not converge in 40 iterations.
+pub fn locate(
+    model: &dyn Model,
+    rho: f64,
+    guess: Vector3<f64>,
+    which: FoldCondition,
+) -> Result<Vector3<f64>> {
+    let mut z = guess;
+    let scale_c = |z: &Vector3<f64>| {
+        // the magnitude of the condition near z, to judge convergence
+        let s = model.residual_scale(z[0], z[2]);
+        s * s
+    };
+    let mut last = f64::INFINITY;
+    for it in 0..40 {
+        let x = Vector2::new(z[0], z[1]);
+        let (r, j) = model.residuals_and_jacobian(x, rho, z[2]);
+        let d = model.residuals_d_delta(x, rho, z[2]);
+        let c = condition(model, rho, z, which);
+        let mut grad = Vector3::zeros();
+        for k in 0..3 {
+            let h = 1e-6 * (1.0 + z[k].abs());
+            let mut zp = z;
+            let mut zm = z;
+            zp[k] += h;
+            zm[k] -= h;
+            grad[k] = (condition(model, rho, zp, which) - condition(model, rho, zm, which))
+                / (2.0 * h);
+        }
+        let m = Matrix3::new(
+            j[(0, 0)],
+            j[(0, 1)],
+            d[0],
+            j[(1, 0)],
+            j[(1, 1)],
+            d[1],
+            grad[0],
+            grad[1],
+            grad[2],
+        );
+        let rhs = -Vector3::new(r[0], r[1], c);
+        let Some(step) = m.lu().solve(&rhs).filter(|v| v.iter().all(|x| x.is_finite())) else {
+            break;
+        };
+        // damp steps that would leave the domain
+        let mut lambda = 1.0;
+        while lambda > 1e-6 {
+            let zn = z + step * lambda;
+            if zn[0] > 0.0 && zn[1] > 0.0 && zn[1] <= 1.0 {
+                break;
+            }
+            lambda *= 0.5;
+        }
+        z += step * lambda;
+        let size = step.component_div(&z.map(|v| 1.0 + v.abs())).amax();
+        let rn = r.norm() / model.residual_scale(z[0], z[2]);
+        if size < 1e-13 || (size < 1e-10 && size >= 0.5 * last && rn < 1e-12) {
+            let cn = condition(model, rho, z, which).abs() / scale_c(&z);
+            if cn.is_finite() {
+                return Ok(z);
+            }
+        }
+        last = size;
+        if it == 39 {
+            break;
+        }
+    }
+    Err(Error::NoConvergence {
+        iterations: 40,
+        a_bar: z[0],
+        s: z[1],
+        residual: f64::NAN,
+        context: format!("{which:?} fold at rho = {rho}, delta_bar = {}", z[2]),
+    })
+}
