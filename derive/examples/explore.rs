@@ -1,16 +1,9 @@
-use thinjkr_derive::{ansatz, energy, nondimensional, sym::plain};
+use thinjkr_derive::{ansatz, model::Derivation, sym::plain};
 fn main() {
-    let t = std::time::Instant::now();
-    let e = energy::derive(&ansatz::ENERGY).expect("energy");
-    println!("derived in {:?}", t.elapsed());
-    println!("Pi = {}", plain(&e.potential));
-    for r in &e.residuals { println!("r = {}", plain(r)); }
-    println!("F = {}", plain(&e.fbar));
-    println!("nd = {}", plain(&e.normal_derivative));
-    for p in &e.pressure_parameters { println!("pp = {}", plain(p)); }
-    match nondimensional::ratio_branch(&e.residuals) {
-        Ok(b) => { println!("deg {}", b.degree); for c in &b.poly_t { println!("P: {}", plain(c)); } println!("X^d = {}", plain(&b.x_pow)); }
-        Err(x) => println!("branch: {x}"),
-    }
-    match energy::axisymmetric(&e) { Ok((d, f)) => println!("axi dbar = {}, F = {}", plain(&d), plain(&f)), Err(x) => println!("axi: {x}") }
+    let d = Derivation::new(&ansatz::APEX_45).expect("apex45");
+    for (n, v) in &d.collocation { println!("{n} = {}", plain(v)); }
+    println!("u_max = {}", plain(&d.extrema.u_max));
+    println!("apex = {}", plain(&d.extrema.apex));
+    println!("eta = {}", plain(&d.eta));
+    println!("res0 = {}", plain(&d.residuals[0]));
 }

@@ -136,14 +136,14 @@ impl Contact {
     pub fn with_model(model: ModelId, rho: f64) -> Result<Self> {
         check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
         if model.model().info().residual_degree > 1 {
-            // the explicit branch of a quadratic closure is resolved down to
-            // 1e-6 s∞ from its non-adhesive end, which misses the whole
-            // physical branch when 1 − ρ is below about 1e-5
+            // the explicit branch of a quadratic closure is resolved only
+            // where its two roots are apart (1e-4 relative), which misses the
+            // large-load part of the branch when 1 − ρ is small
             check_range(
                 "rho",
                 rho,
-                rho <= 1.0 - 1e-5 || rho == 1.0,
-                "(0, 1 - 1e-5] or exactly 1 for a model with quadratic residuals (energy)",
+                rho <= 0.999 || rho == 1.0,
+                "(0, 0.999] or exactly 1 for a model with quadratic residuals (energy)",
             )?;
         }
         Ok(Contact {
@@ -297,6 +297,13 @@ impl Contact {
         best.map(|(p, _)| p)
     }
 
+    /// The branch state at `s` without the contour-sampled error (14): for
+    /// walks and brackets.
+    fn light_state_at_s(&self, s: f64) -> Option<State> {
+        let (a, d) = self.adhesive_point(s)?;
+        Some(self.state_with(a, s, d, false))
+    }
+
     /// The state on the branch at aspect ratio `s` (explicit; no Newton).
     pub fn state_at_s(&self, s: f64) -> Option<State> {
         let (a, d) = self.adhesive_point(s)?;
@@ -305,6 +312,10 @@ impl Contact {
 
     /// The full state at (ā, s, δ̄), which must satisfy the model's residuals.
     pub fn state_from(&self, a: f64, s: f64, delta: f64) -> State {
+        self.state_with(a, s, delta, true)
+    }
+
+    fn state_with(&self, a: f64, s: f64, delta: f64, with_bc_error: bool) -> State {
         let x = Vector2::new(a, s);
         let m = self.model;
         let p = m.pressure_parameters(x, self.rho, delta);
@@ -327,7 +338,13 @@ impl Contact {
             p0: p.p0,
             force: m.force_bar(x, self.rho, delta),
             delta,
-            bc_error: if s >= 1.0 { 0.0 } else { m.bc_error(x, self.rho, delta) },
+            bc_error: if s >= 1.0 {
+                0.0
+            } else if with_bc_error {
+                m.bc_error(x, self.rho, delta)
+            } else {
+                f64::NAN
+            },
             outside_stated_range: self.rho < 0.8,
             beyond_size_fold: false,
             stability,
@@ -402,28 +419,40 @@ impl Contact {
         let s_inf = self.s_infinity()?;
         let n = self.walk_points;
         let mut out: Vec<State> = Vec::with_capacity(n);
-        let mut fold_seen = false;
-        // logarithmic in s∞ − s, from 1e-13 s∞ (1e-6 s∞ for d = 2, d the
+        // logarithmic in s∞ − s, from 1e-13 s∞ (1e-8 s∞ for d = 2, d the
         // residuals' degree: then the two roots of the explicit branch meet
         // as ā → ∞ and lose accuracy closer to s∞): near ρ = 1 the whole
         // physical branch lies within O(1 − ρ) of s∞
         let closest = if self.model.info().residual_degree == 1 {
             13.0
         } else {
-            6.0
+            8.0
         };
         for k in 1..n {
             let s = s_inf - s_inf * 10f64.powf(-closest * (1.0 - k as f64 / n as f64));
-            let Some(mut st) = self.state_at_s(s) else {
-                continue;
-            };
-            if let Some(prev) = out.last() {
-                if st.a > prev.a {
-                    fold_seen = true;
+            // where the two roots of a quadratic branch nearly meet (as
+            // ā → ∞ near s∞) they are ill-conditioned: skip such points
+            if let [Some((a1, d1)), Some((a2, d2))] = self.model.branch(s, self.rho) {
+                let (t1, t2) = (d1 / (a1 * a1), d2 / (a2 * a2));
+                if (t1 - t2).abs() < 1e-4 * t1.abs().max(t2.abs()) {
+                    continue;
                 }
             }
-            st.beyond_size_fold = fold_seen;
-            out.push(st);
+            if let Some(st) = self.light_state_at_s(s) {
+                out.push(st);
+            }
+        }
+        // the fold of the contact size: the first ā along the walk that is
+        // the smallest within 20 points on either side
+        let w = 20;
+        let fold = (1..out.len().saturating_sub(1)).find(|&k| {
+            let (lo, hi) = (k.saturating_sub(w), (k + w).min(out.len() - 1));
+            (lo..=hi).all(|j| out[k].a <= out[j].a) && out[k].a < out[k - 1].a
+        });
+        if let Some(k) = fold {
+            for st in &mut out[k + 1..] {
+                st.beyond_size_fold = true;
+            }
         }
         if out.len() < 3 {
             return Err(Error::NoState(format!(
@@ -475,7 +504,7 @@ impl Contact {
             if f0.signum() != f1.signum() && f0.is_finite() && f1.is_finite() {
                 let s = bisect(
                     |s| {
-                        self.state_at_s(s)
+                        self.light_state_at_s(s)
                             .map(|st| key(&st) - target)
                             .unwrap_or(f64::NAN)
                     },
@@ -488,39 +517,46 @@ impl Contact {
         Ok(out)
     }
 
-    /// The first local minimum of `key` along the walk, refined by golden
-    /// section in s (not polished: a starting point for a fold Newton).
-    fn first_minimum(&self, key: impl Fn(&State) -> f64, what: &str) -> Result<State> {
+    /// The first minimum of `key` along the walk from s∞ that is the
+    /// smallest value within 20 walk points on either side (robust to the
+    /// round-off of the explicit branch near s∞, where a quadratic
+    /// closure's roots meet), refined by golden section in s (not
+    /// polished: a starting point for Newton).
+    fn walk_minimum(&self, key: impl Fn(&State) -> f64, what: &str) -> Result<State> {
         let walk = self.walk()?;
-        for k in 1..walk.len().saturating_sub(1) {
-            let (a, b, c) = (key(&walk[k - 1]), key(&walk[k]), key(&walk[k + 1]));
-            if b < a && b <= c {
-                let (mut lo, mut hi) = (walk[k + 1].s, walk[k - 1].s);
-                let f = |s: f64| {
-                    self.state_at_s(s)
-                        .map(|st| key(&st))
-                        .unwrap_or(f64::INFINITY)
-                };
-                let r = 0.5 * (5f64.sqrt() - 1.0);
-                for _ in 0..120 {
-                    let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-                    if f(x1) < f(x2) {
-                        hi = x2;
-                    } else {
-                        lo = x1;
-                    }
-                }
-                let mut st = self
-                    .state_at_s(0.5 * (lo + hi))
-                    .ok_or_else(|| Error::NoState(format!("{what}: off the branch")))?;
-                st.beyond_size_fold = walk[k].beyond_size_fold;
-                return Ok(st);
+        let w = 20;
+        let v: Vec<f64> = walk.iter().map(&key).collect();
+        let k = (1..walk.len().saturating_sub(1))
+            .find(|&k| {
+                let (lo, hi) = (k.saturating_sub(w), (k + w).min(walk.len() - 1));
+                (lo..=hi).all(|j| v[k] <= v[j]) && v[k] < v[k - 1]
+            })
+            .ok_or_else(|| {
+                Error::NoState(format!(
+                    "{what}: no minimum along the branch at rho = {}",
+                    self.rho
+                ))
+            })?;
+        let (mut lo, mut hi) = (walk[k + 1].s, walk[k - 1].s);
+        let f = |s: f64| {
+            self.light_state_at_s(s)
+                .map(|st| key(&st))
+                .unwrap_or(f64::INFINITY)
+        };
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..120 {
+            let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
+            if f(x1) < f(x2) {
+                hi = x2;
+            } else {
+                lo = x1;
             }
         }
-        Err(Error::NoState(format!(
-            "{what}: no minimum along the branch at rho = {}",
-            self.rho
-        )))
+        let mut st = self
+            .light_state_at_s(0.5 * (lo + hi))
+            .ok_or_else(|| Error::NoState(format!("{what}: off the branch")))?;
+        st.beyond_size_fold = walk[k].beyond_size_fold;
+        Ok(st)
     }
 
     /// Refine a fold from a walk state by Newton on the fold condition.
@@ -576,7 +612,7 @@ impl Contact {
                 "no fold in a_bar at rho = 1: a_bar decreases to 0".into(),
             ));
         }
-        let guess = self.first_minimum(|st| st.a, "fold of the contact size")?;
+        let guess = self.walk_minimum(|st| st.a, "fold of the contact size")?;
         self.polish(&guess, "fold of the contact size")
     }
 
@@ -584,13 +620,18 @@ impl Contact {
     /// the non-adhesive end down to pull-off).
     pub fn at_load(&self, force: f64) -> Result<State> {
         check_range("force", force, true, "finite")?;
-        let pull = self.pull_off_load()?;
-        if force < pull.state.force {
-            return Err(Error::OutOfRange {
-                name: "force",
-                value: force,
-                range: "[pull-off force, ∞) for this rho and model",
-            });
+        match self.pull_off_load() {
+            Ok(pull) if force < pull.state.force => {
+                return Err(Error::OutOfRange {
+                    name: "force",
+                    value: force,
+                    range: "[pull-off force, ∞) for this rho and model",
+                })
+            }
+            // a model whose force decreases along the whole branch has no
+            // pull-off: every crossing is looked for
+            Ok(_) | Err(Error::NoState(_)) => {}
+            Err(e) => return Err(e),
         }
         self.at_load_all(force)?
             .into_iter()
@@ -632,7 +673,7 @@ impl Contact {
                 basis: FoldBasis::AxisymmetricMinimum,
             });
         }
-        let guess = self.first_minimum(|st| st.force, "pull-off under load control")?;
+        let guess = self.walk_minimum(|st| st.force, "pull-off under load control")?;
         Ok(PullOff {
             state: self.refine_fold(&guess, FoldCondition::Load)?,
             control: FoldCondition::Load,
@@ -672,7 +713,7 @@ impl Contact {
             });
         }
         let fold = self.size_fold()?;
-        let state = match self.first_minimum(|st| st.delta, "pull-off under displacement control") {
+        let state = match self.walk_minimum(|st| st.delta, "pull-off under displacement control") {
             Ok(m) if m.s > fold.s => self.refine_fold(&m, FoldCondition::Displacement)?,
             _ => fold,
         };

@@ -27,9 +27,15 @@ fn guide_examples_print_what_the_guide_shows() {
             let args: Vec<&str> = cmd.split_whitespace().collect();
             let (ok, out, err) = thinjkr(&args);
             assert!(ok, "{cmd}: {err}");
-            let expected = lines.get(k + 1).copied().unwrap_or("");
-            if !expected.starts_with('$') && !expected.starts_with("```") {
-                assert_eq!(out.trim(), expected.trim(), "guide example `{cmd}`");
+            // the lines the guide shows below the command, up to the next one
+            let expected: Vec<&str> = lines[k + 1..]
+                .iter()
+                .take_while(|l| !l.starts_with('$') && !l.starts_with("```"))
+                .copied()
+                .collect();
+            if !expected.is_empty() {
+                let got: Vec<&str> = out.lines().collect();
+                assert_eq!(got, expected, "guide example `{cmd}`");
                 checked += 1;
             }
         }
@@ -63,11 +69,21 @@ fn json_has_the_keys_and_round_trips() {
     ] {
         let (ok, out, err) = thinjkr(&args);
         assert!(ok, "{args:?}: {err}");
-        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let whole: serde_json::Value = serde_json::from_str(&out).unwrap();
+        // pull-off prints the state with its control and what ends the branch
+        let v = if args[0] == "pull-off" {
+            let p: thinjkr::PullOff = serde_json::from_str(&out).unwrap();
+            assert_eq!(serde_json::to_value(p).unwrap(), whole);
+            assert!(whole["basis"].is_string() && whole["control"].is_string());
+            whole["state"].clone()
+        } else {
+            whole
+        };
         for key in ["delta", "force", "a", "s"] {
             assert!(v[key].is_f64(), "{args:?}: key {key} in {out}");
         }
-        let state: thinjkr::State = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["model"], "max");
+        let state: thinjkr::State = serde_json::from_value(v.clone()).unwrap();
         assert_eq!(serde_json::to_value(state).unwrap(), v);
     }
     let (ok, out, _) = thinjkr(&[
@@ -85,9 +101,24 @@ fn csv_has_a_header() {
     let mut lines = out.lines();
     assert_eq!(
         lines.next(),
-        Some("delta,force,a,s,bc_error,beyond_size_fold")
+        Some("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load")
     );
     assert_eq!(lines.count(), 10);
+}
+
+#[test]
+fn every_model_is_chosen_by_name() {
+    for m in ["max", "apexes", "energy"] {
+        let (ok, out, err) = thinjkr(&["pull-off", "--rho", "0.8", "--model", m, "--json"]);
+        assert!(ok, "{m}: {err}");
+        let p: thinjkr::PullOff = serde_json::from_str(&out).unwrap();
+        assert_eq!(p.state.model.name(), m);
+        let expected = if m == "energy" { "energy_instability" } else { "model_fold" };
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["basis"], expected, "{m}");
+    }
+    let (ok, _, err) = thinjkr(&["solve", "--rho", "0.8", "--delta", "1", "--model", "nope"]);
+    assert!(!ok && err.contains("allowed: max, apexes, energy"), "{err}");
 }
 
 #[test]

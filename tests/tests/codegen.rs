@@ -10,7 +10,7 @@ use proptest::prelude::*;
 use std::sync::OnceLock;
 use symbolica::atom::Atom;
 use thinjkr::newton::{solve, NewtonConfig};
-use thinjkr::{Model, ModelId};
+use thinjkr::ModelId;
 use nalgebra::Vector2;
 use thinjkr_derive::sym::{diff, eval_prec, rat, simplify, subs};
 use thinjkr_derive::{ansatz, model::Derivation};
@@ -129,8 +129,10 @@ fn d_residuals_d_delta_matches_finite_differences() {
 }
 
 #[test]
-fn the_second_ansatz_is_generated_and_solved() {
-    // ρ = 0.8, δ̄ = 2: start from the paper's solution, solve apex45's residuals.
+fn every_other_model_is_generated_solved_and_matches_its_derivation() {
+    // ρ = 0.8, δ̄ = 2: start from the paper's solution, solve each other
+    // collocation model's residuals; they agree with their own derivation
+    // to 1e-12 of the residual scale.
     let cfg = NewtonConfig::default();
     let scale = |a: f64| 1.0 + a.powi(3) + 2.0 * a;
     let paper = solve(
@@ -141,47 +143,33 @@ fn the_second_ansatz_is_generated_and_solved() {
         "paper",
     )
     .unwrap();
-    let other = solve(
-        |x| ModelId::Apex45.model().residuals_and_jacobian(x, 0.8, 2.0),
-        scale,
-        Vector2::new(paper.a_bar, paper.s),
-        &cfg,
-        "apex45",
-    )
-    .unwrap();
-    // apex45's residuals contain 1 + 3s² − 2√2 s √(1+s²), which cancels as
-    // s → 1; their f64 round-off floor is near 1e-10 (scaled by 1 + ā³).
-    assert!(
-        other.residual < 1e-8,
-        "apex45 scaled residual {}",
-        other.residual
-    );
-    assert!(other.s > 0.3 && other.s < 1.0 && other.a_bar > 0.5);
-    // a different collocation gives a different (nearby) state
-    assert!(
-        (other.s - paper.s).abs() > 1e-6,
-        "paper s {} apex45 s {}",
-        paper.s,
-        other.s
-    );
-    assert!((other.s - paper.s).abs() < 0.05);
-    // Its generated residuals agree with its own derivation, but only to
-    // about 2e-8 of the residual scale 1 + ā³ at this state (measured): the
-    // closed form keeps 1 + 3s² − 2√2 s√(1+s²) = (1−s²)²/(1 + 3s² + 2√2 s√(1+s²))
-    // in its cancelling form, which costs ~8 digits in f64 near s = 1. The
-    // paper's ansatz has no such term and meets 1e-12 (property tests above).
-    let d = derived(&ansatz::APEX_45);
-    let at = point(other.a_bar, other.s, 0.8, 2.0);
-    let (a, s) = (round9(other.a_bar), round9(other.s));
-    let (rg, _) = rj(ModelId::Apex45, a, s, 0.8, 2.0);
-    for k in 0..2 {
-        let exact = eval_prec(&d.residuals[k], &at, 40).unwrap();
-        assert!(
-            (rg[k] - exact).abs() < 1e-7 * (1.0 + a.powi(3)),
-            "apex45 r{}: {} vs {}",
-            k + 1,
-            rg[k],
-            exact
-        );
+    for (id, which) in [(ModelId::Apexes, &ansatz::APEXES)] {
+        let other = solve(
+            |x| id.model().residuals_and_jacobian(x, 0.8, 2.0),
+            scale,
+            Vector2::new(paper.a_bar, paper.s),
+            &cfg,
+            "other",
+        )
+        .unwrap();
+        assert!(other.residual < 1e-12, "{id}: scaled residual {}", other.residual);
+        assert!(other.s > 0.3 && other.s < 1.0 && other.a_bar > 0.5);
+        // a different closure gives a different (nearby) state
+        assert!((other.s - paper.s).abs() > 1e-6 || (other.a_bar - paper.a_bar).abs() > 1e-6);
+        assert!((other.s - paper.s).abs() < 0.05);
+        let d = derived(which);
+        let (a, s) = (round9(other.a_bar), round9(other.s));
+        let at = point(a, s, 0.8, 2.0);
+        let (rg, _) = rj(id, a, s, 0.8, 2.0);
+        for k in 0..2 {
+            let exact = eval_prec(&d.residuals[k], &at, 40).unwrap();
+            assert!(
+                (rg[k] - exact).abs() < 1e-12 * scale(a),
+                "{id} r{}: {} vs {}",
+                k + 1,
+                rg[k],
+                exact
+            );
+        }
     }
 }

@@ -26,7 +26,14 @@ fn finite_state(st: &thinjkr::State) -> bool {
 fn every_model_sweeps_without_nan_or_panic() {
     for id in ModelId::ALL {
         let mut solved = 0;
-        for rho in [0.05, 0.1, 0.3, 0.5, 0.8, 0.95, 0.999, 1.0] {
+        for rho in [0.05, 0.1, 0.3, 0.5, 0.8, 0.95, 0.999, 0.99999, 1.0] {
+            if id == ModelId::Energy && rho > 0.999 && rho < 1.0 {
+                // outside the energy model's resolved range: a typed error
+                match Contact::with_model(id, rho) {
+                    Err(Error::OutOfRange { name: "rho", .. }) => continue,
+                    other => panic!("{id} rho {rho}: {other:?}"),
+                }
+            }
             let c = Contact::with_model(id, rho).unwrap();
             for k in 0..=12 {
                 let delta = -2.0 + 52.0 * (k as f64 / 12.0).powi(2);
@@ -51,15 +58,31 @@ fn every_model_sweeps_without_nan_or_panic() {
                     Err(e) => panic!("{id} rho {rho} delta {delta}: {e}"),
                 }
             }
-            let po = c.pull_off_load().unwrap_or_else(|e| panic!("{id} rho {rho}: {e}"));
-            assert!(finite_state(&po.state) && po.state.force < 0.0, "{id} rho {rho}: {po:?}");
+            match c.pull_off_load() {
+                Ok(po) => assert!(
+                    finite_state(&po.state) && po.state.force < 0.0,
+                    "{id} rho {rho}: {po:?}"
+                ),
+                // the `apexes` closure at small ρ: F̄ decreases along the
+                // whole branch, so there is no load-controlled pull-off
+                Err(Error::NoState(m)) if id == ModelId::Apexes && rho <= 0.1 => {
+                    assert!(m.contains("no minimum"), "{m}")
+                }
+                Err(e) => panic!("{id} rho {rho}: {e}"),
+            }
             let zf = c.zero_force().unwrap_or_else(|e| panic!("{id} rho {rho}: {e}"));
-            assert!(zf.force.abs() < 1e-9 && finite_state(&zf));
+            // F̄ ~ ā⁶ terms cancel to zero here
+            assert!(zf.force.abs() < 1e-11 * zf.a.powi(6) && finite_state(&zf), "{id} rho {rho}: {zf:?}");
             if rho < 1.0 {
-                let pd = c
-                    .pull_off_displacement()
-                    .unwrap_or_else(|e| panic!("{id} rho {rho}: {e}"));
-                assert!(finite_state(&pd.state));
+                match c.pull_off_displacement() {
+                    Ok(pd) => assert!(finite_state(&pd.state)),
+                    // the energy model stays stable under displacement control
+                    // along its whole near-elliptical branch: a typed answer
+                    Err(Error::NoState(m)) if id == ModelId::Energy => {
+                        assert!(m.contains("stays stable"), "{m}")
+                    }
+                    Err(e) => panic!("{id} rho {rho}: {e}"),
+                }
             }
         }
         assert!(solved > 70, "{id}: only {solved} states");
@@ -195,7 +218,7 @@ fn energy_fold_is_the_minimum_of_the_traced_force() {
 /// points as folds of the model.
 #[test]
 fn models_without_energy_do_not_claim_stability() {
-    for id in [ModelId::Max, ModelId::Apexes, ModelId::Apex45] {
+    for id in [ModelId::Max, ModelId::Apexes] {
         let c = Contact::with_model(id, 0.8).unwrap();
         let st = c.at_displacement(2.0).unwrap();
         assert_eq!(st.stability.displacement, None);
