@@ -47,7 +47,11 @@ impl Chart {
     /// Whether `point` lies in this chart's region.
     pub fn contains(&self, params: &[&str], point: &[(String, f64)]) -> bool {
         SHIFTABLE.iter().filter(|x| params.contains(x)).all(|x| {
-            let v = point.iter().find(|(n, _)| n == x).map(|(_, v)| *v).unwrap_or(0.0);
+            let v = point
+                .iter()
+                .find(|(n, _)| n == x)
+                .map(|(_, v)| *v)
+                .unwrap_or(0.0);
             (v >= 0.5) == self.shifted.contains(x)
         })
     }
@@ -160,8 +164,14 @@ fn eval_like_code(e: &Ir, vars: &BTreeMap<&str, f64>) -> Result<f64, String> {
 /// The value of the expression with every term and factor by its magnitude.
 fn magnitude(e: &Ir, vars: &BTreeMap<&str, f64>) -> Result<f64, String> {
     Ok(match e {
-        Ir::Add(v) => v.iter().map(|t| magnitude(t, vars)).sum::<Result<f64, _>>()?,
-        Ir::Mul(v) => v.iter().map(|t| magnitude(t, vars)).product::<Result<f64, _>>()?,
+        Ir::Add(v) => v
+            .iter()
+            .map(|t| magnitude(t, vars))
+            .sum::<Result<f64, _>>()?,
+        Ir::Mul(v) => v
+            .iter()
+            .map(|t| magnitude(t, vars))
+            .product::<Result<f64, _>>()?,
         Ir::Pow(b, p, q) => {
             let x = magnitude(b, vars)?;
             x.powf(*p as f64 / *q as f64)
@@ -189,11 +199,15 @@ fn eval_big(e: &Ir, vars: &BTreeMap<&str, f64>, p: usize) -> Result<BigFloat, St
         }
         Ir::Var(n) if n.starts_with(SHIFT_PREFIX) => {
             let base = &n[SHIFT_PREFIX.len()..];
-            let x = *vars.get(base).ok_or_else(|| format!("unbound variable {base}"))?;
+            let x = *vars
+                .get(base)
+                .ok_or_else(|| format!("unbound variable {base}"))?;
             BigFloat::from_i64(1, p).sub(&BigFloat::from_f64(x, p), p, rm)
         }
         Ir::Var(n) => BigFloat::from_f64(
-            *vars.get(n.as_str()).ok_or_else(|| format!("unbound variable {n}"))?,
+            *vars
+                .get(n.as_str())
+                .ok_or_else(|| format!("unbound variable {n}"))?,
             p,
         ),
         Ir::Add(v) => {
@@ -250,7 +264,11 @@ pub struct Failure {
 
 impl std::fmt::Display for Failure {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let p: Vec<String> = self.point.iter().map(|(n, v)| format!("{n} = {v:e}")).collect();
+        let p: Vec<String> = self
+            .point
+            .iter()
+            .map(|(n, v)| format!("{n} = {v:e}"))
+            .collect();
         write!(
             f,
             "generated function {}[{}] at {}: {}",
@@ -277,7 +295,10 @@ pub fn check(
     let mut worst: f64 = 0.0;
     let mut failures = Vec::new();
     let irs: Vec<Result<Ir, String>> = outputs.iter().map(Ir::from_atom).collect();
-    let shifted_names: Vec<String> = SHIFTABLE.iter().map(|x| format!("{SHIFT_PREFIX}{x}")).collect();
+    let shifted_names: Vec<String> = SHIFTABLE
+        .iter()
+        .map(|x| format!("{SHIFT_PREFIX}{x}"))
+        .collect();
     for point in points(params, domain) {
         if chart.is_some_and(|c| !c.contains(params, &point)) {
             continue;

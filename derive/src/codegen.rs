@@ -11,13 +11,13 @@
 //! Owns: the generated modules and the `Model` implementations in them.
 //! May use: `ir`, `model`, `sym`.
 
-use crate::generate::Output;
-use crate::ir::Ir;
+use crate::accuracy::{Chart, SHIFTABLE, SHIFT_PREFIX};
 use crate::ansatz::Closure;
 use crate::energy::EnergyDerivation;
+use crate::generate::Output;
+use crate::ir::Ir;
 use crate::model::{Derivation, ModelDerivation};
 use crate::nondimensional::ratio_branch;
-use crate::accuracy::{Chart, SHIFTABLE, SHIFT_PREFIX};
 use crate::sym::{diff, ex, simplify, subs, subs_all};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
@@ -277,7 +277,9 @@ struct Function {
 /// (at ρ = 1 it degenerates to 0/0 and the axisymmetric solution is used).
 fn domain_of(name: &str) -> &'static [(&'static str, &'static [f64])] {
     match name {
-        "branch_eta" | "branch_poly" | "branch_x_pow" => &[("rho", &[0.05, 0.3, 0.8, 0.99, 0.999999])],
+        "branch_eta" | "branch_poly" | "branch_x_pow" => {
+            &[("rho", &[0.05, 0.3, 0.8, 0.99, 0.999999])]
+        }
         _ => &[],
     }
 }
@@ -317,7 +319,12 @@ fn charts_for(f: &Function) -> Charted {
 
 /// The straight-line body of one chart (or of the whole function): its
 /// `let` statements and its value.
-fn render_body(name: &str, params: &[&str], outputs: &[Atom], shifted: &[&str]) -> Result<TokenStream, String> {
+fn render_body(
+    name: &str,
+    params: &[&str],
+    outputs: &[Atom],
+    shifted: &[&str],
+) -> Result<TokenStream, String> {
     let irs: Vec<Ir> = outputs
         .iter()
         .map(Ir::from_atom)
@@ -373,7 +380,11 @@ fn render_function(f: &Function, charts: Option<&Charted>) -> Result<TokenStream
             render_body(f.name, &f.params, &f.outputs, &[])?,
         ),
         Some(charts) => {
-            let shiftable: Vec<&str> = SHIFTABLE.iter().copied().filter(|x| f.params.contains(x)).collect();
+            let shiftable: Vec<&str> = SHIFTABLE
+                .iter()
+                .copied()
+                .filter(|x| f.params.contains(x))
+                .collect();
             let mut chain = TokenStream::new();
             for (k, (chart, outs)) in charts.iter().enumerate() {
                 let b = render_body(f.name, &f.params, outs, &chart.shifted)?;
@@ -492,7 +503,11 @@ fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
             name: "axisymmetric_critical",
             doc: "The minimum of F̄(ā) at ρ = 1 (Section 4): `[ā_c, F̄_c, δ̄_c]`.".into(),
             params: vec![],
-            outputs: vec![l.axisymmetric.critical.0.clone(), l.axisymmetric.critical.1.clone(), l.axisymmetric.critical.2.clone()],
+            outputs: vec![
+                l.axisymmetric.critical.0.clone(),
+                l.axisymmetric.critical.1.clone(),
+                l.axisymmetric.critical.2.clone(),
+            ],
         });
         fs.push(Function { name: "near_circular_ds_dmu", doc: "ds/dμ at μ = 0 and fixed δ for ρ = (1 − μ)/(1 + μ): by (35) equal to −2a₂/a₀ with a₂ from (36).".into(), params: vec!["abar0"], outputs: vec![l.near_circular_model.s1.clone()] });
     }
@@ -524,10 +539,25 @@ fn functions_energy(e: &EnergyDerivation) -> Result<Vec<Function>, String> {
     ];
     if let Ok((dbar, fbar)) = crate::energy::axisymmetric(e) {
         if let Some((a_c, f_c, d_c)) = crate::limits::critical_point(&fbar, &dbar) {
-            fs.push(Function { name: "axisymmetric_critical", doc: "The minimum of F̄(ā) at ρ = 1 (Section 4): `[ā_c, F̄_c, δ̄_c]`.".into(), params: vec![], outputs: vec![a_c, f_c, d_c] });
+            fs.push(Function {
+                name: "axisymmetric_critical",
+                doc: "The minimum of F̄(ā) at ρ = 1 (Section 4): `[ā_c, F̄_c, δ̄_c]`.".into(),
+                params: vec![],
+                outputs: vec![a_c, f_c, d_c],
+            });
         }
-        fs.push(Function { name: "axisymmetric_dbar", doc: "δ̄(ā) for ρ = 1 (the adhesive factor of the residual at s = 1): (25)₁.".into(), params: vec!["abar"], outputs: vec![dbar] });
-        fs.push(Function { name: "axisymmetric_force_bar", doc: "F̄(ā) for ρ = 1: (25)₂.".into(), params: vec!["abar"], outputs: vec![fbar] });
+        fs.push(Function {
+            name: "axisymmetric_dbar",
+            doc: "δ̄(ā) for ρ = 1 (the adhesive factor of the residual at s = 1): (25)₁.".into(),
+            params: vec!["abar"],
+            outputs: vec![dbar],
+        });
+        fs.push(Function {
+            name: "axisymmetric_force_bar",
+            doc: "F̄(ā) for ρ = 1: (25)₂.".into(),
+            params: vec!["abar"],
+            outputs: vec![fbar],
+        });
     }
     Ok(fs)
 }
@@ -583,12 +613,24 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
             m.join("; ")
         }
     };
-    let opt = |present: bool, body: TokenStream| if present { quote!(Some(#body)) } else { quote!(None) };
+    let opt = |present: bool, body: TokenStream| {
+        if present {
+            quote!(Some(#body))
+        } else {
+            quote!(None)
+        }
+    };
     let non_adhesive_body = opt(non_adhesive, quote!(non_adhesive_rho(s)));
     let zero_force_body = opt(zero_force, quote!(zero_force_rho(s)));
     let near_circular_body = opt(near_circular, quote!(near_circular_ds_dmu(a0)));
-    let critical_body = opt(has(fs, "axisymmetric_critical"), quote!(axisymmetric_critical()[0]));
-    let axisymmetric_body = opt(axisymmetric, quote!((axisymmetric_dbar(a_bar), axisymmetric_force_bar(a_bar))));
+    let critical_body = opt(
+        has(fs, "axisymmetric_critical"),
+        quote!(axisymmetric_critical()[0]),
+    );
+    let axisymmetric_body = opt(
+        axisymmetric,
+        quote!((axisymmetric_dbar(a_bar), axisymmetric_force_bar(a_bar))),
+    );
     let info = quote! {
         /// What this model is and has.
         pub static INFO: ModelInfo = ModelInfo {
@@ -756,7 +798,8 @@ pub fn module_source(md: &ModelDerivation) -> Result<String, String> {
         let charts = charts_for(f);
         let mut chart_failures = Vec::new();
         for (chart, outs) in &charts {
-            if let Err(mut v) = crate::accuracy::check(f.name, &f.params, outs, domain, Some(chart)) {
+            if let Err(mut v) = crate::accuracy::check(f.name, &f.params, outs, domain, Some(chart))
+            {
                 chart_failures.append(&mut v);
             }
         }
@@ -798,7 +841,10 @@ fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
     let mods: Vec<Ident> = all.iter().map(|m| ident(m.ansatz().id)).collect();
     let variants: Vec<Ident> = all.iter().map(|m| ident(&camel(m.ansatz().id))).collect();
     let names: Vec<&str> = all.iter().map(|m| m.ansatz().id).collect();
-    let docs: Vec<String> = all.iter().map(|m| format!(" `{}`: {}.", m.ansatz().id, m.ansatz().title)).collect();
+    let docs: Vec<String> = all
+        .iter()
+        .map(|m| format!(" `{}`: {}.", m.ansatz().id, m.ansatz().title))
+        .collect();
     let n = Literal::usize_unsuffixed(all.len());
     let list = names.join(", ");
     let err = format!("unknown model (allowed: {list})");

@@ -88,7 +88,10 @@ pub fn solve_matched_system(
         .iter()
         .map(|p| (p.to_string(), ex(&format!("{}/p0", lin(p)))))
         .collect();
-    let to_lin: Vec<(&str, Atom)> = to_lin.iter().map(|(n, v)| (n.as_str(), v.clone())).collect();
+    let to_lin: Vec<(&str, Atom)> = to_lin
+        .iter()
+        .map(|(n, v)| (n.as_str(), v.clone()))
+        .collect();
     let mut eqs: Vec<Atom> = laplace
         .iter()
         .map(|l| numerator(&simplify(&subs_all(&l.residual, &to_lin))).expand())
@@ -116,7 +119,10 @@ pub fn solve_matched_system(
     let p0 = value("p0").expect("solved");
     let mut out = vec![("p0".to_string(), p0.clone())];
     for p in params {
-        out.push((p.to_string(), simplify(&(value(&lin(p)).expect("solved") / &p0))));
+        out.push((
+            p.to_string(),
+            simplify(&(value(&lin(p)).expect("solved") / &p0)),
+        ));
     }
     Ok(out)
 }
@@ -125,19 +131,25 @@ pub fn solve_matched_system(
 /// [`Closure::Energy`]).
 pub fn derive(ansatz: &Ansatz) -> Result<EnergyDerivation, String> {
     if ansatz.closure != Closure::Energy {
-        return Err(format!("ansatz {} does not have the energy closure", ansatz.id));
+        return Err(format!(
+            "ansatz {} does not have the energy closure",
+            ansatz.id
+        ));
     }
     let pressure = ex(ansatz.pressure);
     let laplace = thin_layer::laplace_equations(&pressure)?;
     let dirichlet = solve_matched_system(ansatz, &laplace)?;
-    let rules: Vec<(&str, Atom)> = dirichlet.iter().map(|(n, v)| (n.as_str(), v.clone())).collect();
+    let rules: Vec<(&str, Atom)> = dirichlet
+        .iter()
+        .map(|(n, v)| (n.as_str(), v.clone()))
+        .collect();
     let p = simplify(&subs_all(&pressure, &rules));
     if !is_zero(&thin_layer::thin_layer_residual(&p)) {
         return Err("the pressure from (6) does not satisfy (2)".into());
     }
     // U two ways.
-    let u1 = integrate_over_ellipse(&(&p * &(ex("delta") - thin_layer::gap())).expand())?
-        * rat(1, 2);
+    let u1 =
+        integrate_over_ellipse(&(&p * &(ex("delta") - thin_layer::gap())).expand())? * rat(1, 2);
     let grad2 = diff(&p, "x") * diff(&p, "x") + diff(&p, "y") * diff(&p, "y");
     let u2 = integrate_over_ellipse(&grad2.expand())? / ex("2*m");
     if !is_zero(&(&u1 - &u2)) {
@@ -148,15 +160,13 @@ pub fn derive(ansatz: &Ansatz) -> Result<EnergyDerivation, String> {
     let mut scale = scale_rules();
     scale.push(("dg", ex("m*L^6/(2*R1^2)")));
     let energy_unit = ex("R1^2/(m*L^8)");
-    let potential = simplify(
-        &(subs_all(&(&stored_energy - ex("dg*pi*a*b")), &scale) * &energy_unit),
-    );
+    let potential =
+        simplify(&(subs_all(&(&stored_energy - ex("dg*pi*a*b")), &scale) * &energy_unit));
     check_dimensionless(&potential, "the potential energy")?;
     let adhesion = simplify(&(subs_all(&ex("dg*pi*a*b"), &scale) * &energy_unit));
     let fbar = simplify(&diff(&potential, "dbar"));
-    let fbar_direct = simplify(
-        &(subs_all(&integrate_over_ellipse(&p.expand())?, &scale) * ex("R1/(m*L^6)")),
-    );
+    let fbar_direct =
+        simplify(&(subs_all(&integrate_over_ellipse(&p.expand())?, &scale) * ex("R1/(m*L^6)")));
     if !is_zero(&(&fbar - &fbar_direct)) {
         return Err("∂Π̄/∂δ̄ differs from ∫p dA: the force identity fails".into());
     }
@@ -172,14 +182,14 @@ pub fn derive(ansatz: &Ansatz) -> Result<EnergyDerivation, String> {
     }
     // ∂p̄/∂ν̄ on Γ₀, in units of √(2mΔγ) = m L³/R₁.
     let nd = contour::normal_derivative(&p)?;
-    let normal_derivative = normalize_radicals(&simplify(
-        &(nd.subs_all(&scale).value() * ex("R1/(m*L^3)")),
-    ));
+    let normal_derivative =
+        normalize_radicals(&simplify(&(nd.subs_all(&scale).value() * ex("R1/(m*L^3)"))));
     check_dimensionless(&normal_derivative, "the normal derivative")?;
     // p̄₀, the shape parameters times L², ξ.
     let pressure_unit = ex("R1/(m*L^4)");
-    let mut pressure_parameters =
-        vec![simplify(&(subs_all(&dirichlet[0].1, &scale) * &pressure_unit))];
+    let mut pressure_parameters = vec![simplify(
+        &(subs_all(&dirichlet[0].1, &scale) * &pressure_unit),
+    )];
     for (_, v) in &dirichlet[1..] {
         pressure_parameters.push(simplify(&(subs_all(v, &scale) * ex("L^2"))));
     }
@@ -190,8 +200,7 @@ pub fn derive(ansatz: &Ansatz) -> Result<EnergyDerivation, String> {
     check_dimensionless(&xi, "xi")?;
     pressure_parameters.push(xi);
     let pressure_bar = simplify(
-        &(subs_all(&subs_all(&p, &[("x", ex("x*L")), ("y", ex("y*L"))]), &scale)
-            * &pressure_unit),
+        &(subs_all(&subs_all(&p, &[("x", ex("x*L")), ("y", ex("y*L"))]), &scale) * &pressure_unit),
     );
     check_dimensionless(&pressure_bar, "the pressure")?;
     Ok(EnergyDerivation {
@@ -220,7 +229,9 @@ pub fn axisymmetric(e: &EnergyDerivation) -> Result<(Atom, Atom), String> {
     let r: Vec<Atom> = e.residuals.iter().map(at1).collect();
     let nd = at1(&subs(&e.normal_derivative, "u", &Atom::num(0)));
     for f in factor_list(&numerator(&r[0])) {
-        let Some(dbar) = solve_linear(&f, "dbar") else { continue };
+        let Some(dbar) = solve_linear(&f, "dbar") else {
+            continue;
+        };
         if r.iter().any(|ri| !is_zero(&subs(ri, "dbar", &dbar))) {
             continue;
         }

@@ -96,8 +96,7 @@ pub fn critical_point(fbar: &Atom, dbar: &Atom) -> Option<(Atom, Atom, Atom)> {
             }
             let a_c = normalize_radicals(&c.pow(&ex("1/3")));
             let f_c = simplify(&normalize_radicals(&subs(fbar, "abar", &a_c)));
-            let d_c =
-                normalize_radicals(&simplify(&normalize_radicals(&subs(dbar, "abar", &a_c))));
+            let d_c = normalize_radicals(&simplify(&normalize_radicals(&subs(dbar, "abar", &a_c))));
             crit = Some((a_c, f_c, d_c));
         }
     }

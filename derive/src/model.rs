@@ -26,8 +26,12 @@ impl ModelDerivation {
     /// Derive `ansatz` by the route of its closure.
     pub fn new(ansatz: &Ansatz) -> Result<ModelDerivation, String> {
         match ansatz.closure {
-            Closure::Energy => Ok(ModelDerivation::Energy(Box::new(crate::energy::derive(ansatz)?))),
-            _ => Ok(ModelDerivation::Collocation(Box::new(Derivation::new(ansatz)?))),
+            Closure::Energy => Ok(ModelDerivation::Energy(Box::new(crate::energy::derive(
+                ansatz,
+            )?))),
+            _ => Ok(ModelDerivation::Collocation(Box::new(Derivation::new(
+                ansatz,
+            )?))),
         }
     }
 
@@ -152,7 +156,9 @@ impl Derivation {
             Closure::Max => extrema.max.clone(),
             Closure::AtPoint(u) => normal_derivative_collocated.at(&ex(u)),
             Closure::Energy => {
-                return Err("the energy closure is derived by `energy::derive`, not by collocation".into())
+                return Err(
+                    "the energy closure is derived by `energy::derive`, not by collocation".into(),
+                )
             }
         };
         let eta = normalize_radicals(&simplify(&(&closed / &extrema.apex)));

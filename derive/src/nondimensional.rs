@@ -148,12 +148,20 @@ pub fn ratio_branch(res: &[Atom]) -> Result<RatioBranch, String> {
     let mut parts = Vec::new();
     let mut degree = None;
     for r in res {
-        let e = simplify(&subs(&subs(r, "dbar", &ex("YY/abar")), "abar", &ex("XX^(1/3)")));
+        let e = simplify(&subs(
+            &subs(r, "dbar", &ex("YY/abar")),
+            "abar",
+            &ex("XX^(1/3)"),
+        ));
         if e.contains_symbol(symbolica::symbol!("abar")) {
-            return Err("a residual depends on abar other than through abar^3 and dbar*abar".into());
+            return Err(
+                "a residual depends on abar other than through abar^3 and dbar*abar".into(),
+            );
         }
         let (num, den) = crate::sym::num_den(&e);
-        if den.contains_symbol(symbolica::symbol!("XX")) || den.contains_symbol(symbolica::symbol!("YY")) {
+        if den.contains_symbol(symbolica::symbol!("XX"))
+            || den.contains_symbol(symbolica::symbol!("YY"))
+        {
             return Err("a residual is not polynomial in (abar^3, dbar*abar)".into());
         }
         let n = subs(&num, "YY", &ex("tt*XX")).expand();
@@ -178,5 +186,9 @@ pub fn ratio_branch(res: &[Atom]) -> Result<RatioBranch, String> {
         .collect();
     let x_pow = simplify(&subs(&(-c1 / h1), "tt", &ex("t")));
     let poly_t = poly_t;
-    Ok(RatioBranch { degree, poly_t, x_pow })
+    Ok(RatioBranch {
+        degree,
+        poly_t,
+        x_pow,
+    })
 }

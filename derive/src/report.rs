@@ -23,7 +23,11 @@ fn md_escape(s: &str) -> String {
 }
 
 /// `docs/derivation.md`.
-pub fn derivation_md(paper: &Derivation, others: &[&ModelDerivation], results: &[ClaimResult]) -> String {
+pub fn derivation_md(
+    paper: &Derivation,
+    others: &[&ModelDerivation],
+    results: &[ClaimResult],
+) -> String {
     let mut o = String::from(HEADER);
     let d = paper;
     o.push_str("# Derivation report\n\n");
@@ -172,8 +176,16 @@ fn collocation_section(o: &mut String, other: &Derivation) {
     for (n, v) in &other.collocation {
         eq(o, &format!("Collocation, {n} ="), v);
     }
-    eq(o, "∂p/∂ν on Γ₀ after collocation:", &other.normal_derivative_collocated.value());
-    eq(o, "η(s) = (value set by the closure) / (apex value):", &other.eta);
+    eq(
+        o,
+        "∂p/∂ν on Γ₀ after collocation:",
+        &other.normal_derivative_collocated.value(),
+    );
+    eq(
+        o,
+        "η(s) = (value set by the closure) / (apex value):",
+        &other.eta,
+    );
     eq(o, "Quantity (14), (max − min)/min:", &other.bc_error);
     for (k, r) in other.residuals.iter().enumerate() {
         eq(o, &format!("Residual {}:", k + 1), r);
@@ -204,7 +216,15 @@ fn energy_section(o: &mut String, e: &crate::energy::EnergyDerivation) {
     eq(o, "Π̄(ā, s, δ̄; ρ):", &e.potential);
     eq(o, "F̄ = ∂Π̄/∂δ̄:", &e.fbar);
     for (k, r) in e.residuals.iter().enumerate() {
-        eq(o, &format!("Equilibrium residual {} ({}):", k + 1, ["(∂Π̄/∂ā)/(πsā)", "(∂Π̄/∂s)/(πā²/2)"][k.min(1)]), r);
+        eq(
+            o,
+            &format!(
+                "Equilibrium residual {} ({}):",
+                k + 1,
+                ["(∂Π̄/∂ā)/(πsā)", "(∂Π̄/∂s)/(πā²/2)"][k.min(1)]
+            ),
+            r,
+        );
     }
     match crate::nondimensional::ratio_branch(&e.residuals) {
         Ok(b) => {

@@ -4,9 +4,9 @@
 //! pull-off, zero force, and a curve of 1 000 points.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use nalgebra::Vector2;
 use thinjkr::curve::trace;
 use thinjkr::newton::{solve, NewtonConfig};
-use nalgebra::Vector2;
 use thinjkr::{Contact, ModelId};
 
 fn benches(c: &mut Criterion) {

@@ -10,10 +10,10 @@
 #[path = "../benches/peer/handwritten.rs"]
 mod handwritten;
 
+use nalgebra::{Matrix2, Vector2};
 use std::io::Write;
 use std::time::Instant;
 use thinjkr::newton::{solve, NewtonConfig};
-use nalgebra::{Matrix2, Vector2};
 use thinjkr::{Contact, ModelId};
 
 const N: usize = 20_000;

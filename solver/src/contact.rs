@@ -352,7 +352,10 @@ impl Contact {
     }
 
     fn axisymmetric_state(&self, a: f64) -> Result<State> {
-        let (delta, force) = self.model.axisymmetric(a).ok_or_else(|| self.unavailable("the axisymmetric solution (22)-(25)"))?;
+        let (delta, force) = self
+            .model
+            .axisymmetric(a)
+            .ok_or_else(|| self.unavailable("the axisymmetric solution (22)-(25)"))?;
         let mut st = self.state_from(a, 1.0, delta);
         st.force = force;
         st.bc_error = 0.0;
@@ -379,21 +382,13 @@ impl Contact {
             return self.axisymmetric_state(a_c);
         }
         let n = 400;
-        let grid: Vec<f64> = (0..=n).map(|k| 10f64.powf(-2.0 + 5.0 * k as f64 / n as f64)).collect();
+        let grid: Vec<f64> = (0..=n)
+            .map(|k| 10f64.powf(-2.0 + 5.0 * k as f64 / n as f64))
+            .collect();
         let k = (1..n)
             .min_by(|&i, &j| f(grid[i]).total_cmp(&f(grid[j])))
             .ok_or_else(|| Error::NoState("no axisymmetric minimum".into()))?;
-        let (mut lo, mut hi) = (grid[k - 1], grid[k + 1]);
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..100 {
-            let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-            if f(x1) < f(x2) {
-                hi = x2;
-            } else {
-                lo = x1;
-            }
-        }
-        let mut a = 0.5 * (lo + hi);
+        let mut a = golden_minimum(f, grid[k - 1], grid[k + 1]);
         let df = |a: f64| {
             let h = 1e-5 * a;
             (f(a + h) - f(a - h)) / (2.0 * h)
@@ -444,12 +439,8 @@ impl Contact {
         }
         // the fold of the contact size: the first ā along the walk that is
         // the smallest within 20 points on either side
-        let w = 20;
-        let fold = (1..out.len().saturating_sub(1)).find(|&k| {
-            let (lo, hi) = (k.saturating_sub(w), (k + w).min(out.len() - 1));
-            (lo..=hi).all(|j| out[k].a <= out[j].a) && out[k].a < out[k - 1].a
-        });
-        if let Some(k) = fold {
+        let sizes: Vec<f64> = out.iter().map(|st| st.a).collect();
+        if let Some(k) = first_window_minimum(&sizes) {
             for st in &mut out[k + 1..] {
                 st.beyond_size_fold = true;
             }
@@ -524,36 +515,22 @@ impl Contact {
     /// polished: a starting point for Newton).
     fn walk_minimum(&self, key: impl Fn(&State) -> f64, what: &str) -> Result<State> {
         let walk = self.walk()?;
-        let w = 20;
         let v: Vec<f64> = walk.iter().map(&key).collect();
-        let k = (1..walk.len().saturating_sub(1))
-            .find(|&k| {
-                let (lo, hi) = (k.saturating_sub(w), (k + w).min(walk.len() - 1));
-                (lo..=hi).all(|j| v[k] <= v[j]) && v[k] < v[k - 1]
-            })
+        let k = first_window_minimum(&v)
+            .filter(|&k| k + 1 < walk.len())
             .ok_or_else(|| {
                 Error::NoState(format!(
                     "{what}: no minimum along the branch at rho = {}",
                     self.rho
                 ))
             })?;
-        let (mut lo, mut hi) = (walk[k + 1].s, walk[k - 1].s);
         let f = |s: f64| {
             self.light_state_at_s(s)
                 .map(|st| key(&st))
                 .unwrap_or(f64::INFINITY)
         };
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..120 {
-            let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-            if f(x1) < f(x2) {
-                hi = x2;
-            } else {
-                lo = x1;
-            }
-        }
         let mut st = self
-            .light_state_at_s(0.5 * (lo + hi))
+            .light_state_at_s(golden_minimum(f, walk[k + 1].s, walk[k - 1].s))
             .ok_or_else(|| Error::NoState(format!("{what}: off the branch")))?;
         st.beyond_size_fold = walk[k].beyond_size_fold;
         Ok(st)
@@ -728,6 +705,31 @@ impl Contact {
     pub fn zero_force(&self) -> Result<State> {
         self.at_load(0.0)
     }
+}
+
+/// The first interior index whose value is the smallest within 20 indices
+/// on either side (and below its predecessor): a local minimum that
+/// round-off of the order of the change over 20 steps cannot fake.
+fn first_window_minimum(v: &[f64]) -> Option<usize> {
+    let w = 20;
+    (1..v.len().saturating_sub(1)).find(|&k| {
+        let (lo, hi) = (k.saturating_sub(w), (k + w).min(v.len() - 1));
+        (lo..=hi).all(|j| v[k] <= v[j]) && v[k] < v[k - 1]
+    })
+}
+
+/// Golden-section search for the minimum of a unimodal `f` on [lo, hi].
+pub(crate) fn golden_minimum(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..120 {
+        let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
+        if f(x1) < f(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    0.5 * (lo + hi)
 }
 
 /// Bisection for a sign change of `f` on [lo, hi].

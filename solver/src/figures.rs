@@ -10,8 +10,8 @@
 use crate::contact::Contact;
 use crate::error::{Error, Result};
 use crate::generated::max as g;
-use crate::model::ModelId;
 use crate::limits;
+use crate::model::ModelId;
 use plotters::prelude::*;
 
 /// One curve of a figure.
@@ -153,7 +153,12 @@ fn figures() -> Result<Vec<Figure>> {
             dashed(
                 "(29), non-adhesive",
                 rhos.iter()
-                    .map(|&r| (r, limits::non_adhesive_s(ModelId::Max, r).unwrap_or(f64::NAN)))
+                    .map(|&r| {
+                        (
+                            r,
+                            limits::non_adhesive_s(ModelId::Max, r).unwrap_or(f64::NAN),
+                        )
+                    })
                     .collect(),
                 GREY,
             ),

@@ -18,7 +18,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::Model;
-use nalgebra::{Matrix3, Vector2, Vector3};
+use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// Which quantity turns.
@@ -31,27 +31,32 @@ pub enum FoldCondition {
     Load,
 }
 
+/// [∂r/∂(ā, s) ∂r/∂δ̄; last row].
+fn bordered(j: &Matrix2<f64>, d: &Vector2<f64>, last: &Vector3<f64>) -> Matrix3<f64> {
+    Matrix3::new(
+        j[(0, 0)],
+        j[(0, 1)],
+        d[0],
+        j[(1, 0)],
+        j[(1, 1)],
+        d[1],
+        last[0],
+        last[1],
+        last[2],
+    )
+}
+
 fn condition(model: &dyn Model, rho: f64, z: Vector3<f64>, which: FoldCondition) -> f64 {
     let x = Vector2::new(z[0], z[1]);
     let (_, j) = model.residuals_and_jacobian(x, rho, z[2]);
     match which {
         FoldCondition::Displacement => j.determinant(),
-        FoldCondition::Load => {
-            let d = model.residuals_d_delta(x, rho, z[2]);
-            let g = model.force_bar_gradient(x, rho, z[2]);
-            Matrix3::new(
-                j[(0, 0)],
-                j[(0, 1)],
-                d[0],
-                j[(1, 0)],
-                j[(1, 1)],
-                d[1],
-                g[0],
-                g[1],
-                g[2],
-            )
-            .determinant()
-        }
+        FoldCondition::Load => bordered(
+            &j,
+            &model.residuals_d_delta(x, rho, z[2]),
+            &model.force_bar_gradient(x, rho, z[2]),
+        )
+        .determinant(),
     }
 }
 
@@ -83,22 +88,16 @@ pub fn locate(
             let mut zm = z;
             zp[k] += h;
             zm[k] -= h;
-            grad[k] = (condition(model, rho, zp, which) - condition(model, rho, zm, which))
-                / (2.0 * h);
+            grad[k] =
+                (condition(model, rho, zp, which) - condition(model, rho, zm, which)) / (2.0 * h);
         }
-        let m = Matrix3::new(
-            j[(0, 0)],
-            j[(0, 1)],
-            d[0],
-            j[(1, 0)],
-            j[(1, 1)],
-            d[1],
-            grad[0],
-            grad[1],
-            grad[2],
-        );
+        let m = bordered(&j, &d, &grad);
         let rhs = -Vector3::new(r[0], r[1], c);
-        let Some(step) = m.lu().solve(&rhs).filter(|v| v.iter().all(|x| x.is_finite())) else {
+        let Some(step) = m
+            .lu()
+            .solve(&rhs)
+            .filter(|v| v.iter().all(|x| x.is_finite()))
+        else {
             break;
         };
         // damp steps that would leave the domain

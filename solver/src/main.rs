@@ -200,7 +200,10 @@ fn basis(p: &PullOff) -> &'static str {
 
 fn emit_pull_off(p: &PullOff, as_json: bool) {
     if as_json {
-        println!("{}", serde_json::to_value(p).expect("a pull-off serialises"));
+        println!(
+            "{}",
+            serde_json::to_value(p).expect("a pull-off serialises")
+        );
     } else {
         show("pull-off", &p.state);
         println!("  end point: {}", basis(p));
@@ -226,6 +229,10 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                 &c.pull_off_displacement()?.state,
             );
             show("zero force                     ", &c.zero_force()?);
+            let e = Contact::with_model(ModelId::Energy, 0.8)?;
+            println!("the same contact with the energy (Ritz) closure of the same ellipse (--model energy):");
+            show("pull-off (load control)        ", &e.pull_off_load()?.state);
+            show("zero force                     ", &e.zero_force()?);
         }
         Some(Command::Solve {
             rho,

@@ -10,7 +10,7 @@
 //! Owns: [`Model`], [`ModelInfo`], [`ClosureKind`], [`PressureParameters`],
 //! and numeric helpers the generated implementations share
 //! ([`real_roots`], [`contour_spread`]). May use: `generated` (for
-//! [`ModelId`]), nalgebra.
+//! [`ModelId`]), `contact` (its golden-section search), nalgebra.
 
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
@@ -124,20 +124,32 @@ pub trait Model: Send + Sync + 'static {
 /// The real roots of c₀ + c₁t + c₂t² (c₂ may vanish), smallest first, by
 /// the cancellation-free form of the quadratic formula.
 pub fn real_roots(c: &[f64]) -> [Option<f64>; 2] {
-    let (c0, c1, c2) = (c[0], c.get(1).copied().unwrap_or(0.0), c.get(2).copied().unwrap_or(0.0));
+    let (c0, c1, c2) = (
+        c[0],
+        c.get(1).copied().unwrap_or(0.0),
+        c.get(2).copied().unwrap_or(0.0),
+    );
     let scale = c0.abs().max(c1.abs()).max(c2.abs());
     if !(scale.is_finite()) || scale == 0.0 {
         return [None, None];
     }
     if c2.abs() <= 1e-300 * scale || c2 == 0.0 {
-        return if c1 != 0.0 { [Some(-c0 / c1), None] } else { [None, None] };
+        return if c1 != 0.0 {
+            [Some(-c0 / c1), None]
+        } else {
+            [None, None]
+        };
     }
     let disc = c1 * c1 - 4.0 * c2 * c0;
     if disc < 0.0 {
         return [None, None];
     }
     let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
-    let (r1, r2) = if q != 0.0 { (q / c2, c0 / q) } else { (0.0, 0.0) };
+    let (r1, r2) = if q != 0.0 {
+        (q / c2, c0 / q)
+    } else {
+        (0.0, 0.0)
+    };
     let (lo, hi) = if r1 <= r2 { (r1, r2) } else { (r2, r1) };
     [Some(lo), Some(hi)]
 }
@@ -148,18 +160,12 @@ pub fn contour_spread(g: impl Fn(f64) -> f64) -> f64 {
     let n = 128;
     let v: Vec<f64> = (0..=n).map(|k| g(k as f64 / n as f64)).collect();
     let refine = |k: usize, sign: f64| -> f64 {
-        let (mut lo, mut hi) = ((k.max(1) - 1) as f64 / n as f64, ((k + 1).min(n)) as f64 / n as f64);
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        let f = |u: f64| sign * g(u);
-        for _ in 0..60 {
-            let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-            if f(x1) > f(x2) {
-                hi = x2;
-            } else {
-                lo = x1;
-            }
-        }
-        let best = sign * f(0.5 * (lo + hi));
+        let (lo, hi) = (
+            (k.max(1) - 1) as f64 / n as f64,
+            ((k + 1).min(n)) as f64 / n as f64,
+        );
+        // golden section for the minimum of −sign·g
+        let best = g(crate::contact::golden_minimum(|u| -sign * g(u), lo, hi));
         if sign > 0.0 {
             best.max(v[k])
         } else {

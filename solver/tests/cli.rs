@@ -113,7 +113,11 @@ fn every_model_is_chosen_by_name() {
         assert!(ok, "{m}: {err}");
         let p: thinjkr::PullOff = serde_json::from_str(&out).unwrap();
         assert_eq!(p.state.model.name(), m);
-        let expected = if m == "energy" { "energy_instability" } else { "model_fold" };
+        let expected = if m == "energy" {
+            "energy_instability"
+        } else {
+            "model_fold"
+        };
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
         assert_eq!(v["basis"], expected, "{m}");
     }

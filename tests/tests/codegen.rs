@@ -6,12 +6,12 @@
 //!
 //! Physical range: 0.05 ≤ ρ ≤ 1, 0.3 ≤ s ≤ 1, 0.5 ≤ ā ≤ 20, −2 ≤ δ̄ ≤ 50.
 
+use nalgebra::Vector2;
 use proptest::prelude::*;
 use std::sync::OnceLock;
 use symbolica::atom::Atom;
 use thinjkr::newton::{solve, NewtonConfig};
 use thinjkr::ModelId;
-use nalgebra::Vector2;
 use thinjkr_derive::sym::{diff, eval_prec, rat, simplify, subs};
 use thinjkr_derive::{ansatz, model::Derivation};
 
@@ -58,8 +58,13 @@ fn point(a: f64, s: f64, rho: f64, dbar: f64) -> Vec<(&'static str, Atom)> {
 }
 
 fn rj(id: ModelId, a: f64, s: f64, rho: f64, dbar: f64) -> ([f64; 2], [[f64; 2]; 2]) {
-    let (r, j) = id.model().residuals_and_jacobian(Vector2::new(a, s), rho, dbar);
-    ([r[0], r[1]], [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]])
+    let (r, j) = id
+        .model()
+        .residuals_and_jacobian(Vector2::new(a, s), rho, dbar);
+    (
+        [r[0], r[1]],
+        [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]],
+    )
 }
 
 fn round9(x: f64) -> f64 {
@@ -117,7 +122,9 @@ fn d_residuals_d_delta_matches_finite_differences() {
         (1.2, 0.5, 0.3, -0.5),
         (10.0, 0.99, 0.95, 30.0),
     ] {
-        let d = ModelId::Max.model().residuals_d_delta(Vector2::new(a, s), rho, dbar);
+        let d = ModelId::Max
+            .model()
+            .residuals_d_delta(Vector2::new(a, s), rho, dbar);
         let h = 1e-6;
         let rp = rj(ModelId::Max, a, s, rho, dbar + h).0;
         let rm = rj(ModelId::Max, a, s, rho, dbar - h).0;
@@ -152,7 +159,11 @@ fn every_other_model_is_generated_solved_and_matches_its_derivation() {
             "other",
         )
         .unwrap();
-        assert!(other.residual < 1e-12, "{id}: scaled residual {}", other.residual);
+        assert!(
+            other.residual < 1e-12,
+            "{id}: scaled residual {}",
+            other.residual
+        );
         assert!(other.s > 0.3 && other.s < 1.0 && other.a_bar > 0.5);
         // a different closure gives a different (nearby) state
         assert!((other.s - paper.s).abs() > 1e-6 || (other.a_bar - paper.a_bar).abs() > 1e-6);

@@ -126,7 +126,11 @@ fn axisymmetric_limit() {
         (near.s - 1.0).abs() < 1e-5 && (near.a - exact.a).abs() < 1e-5 * exact.a,
         "{near:?} vs {exact:?}"
     );
-    let near_po = Contact::new(1.0 - 1e-6).unwrap().pull_off_load().unwrap().state;
+    let near_po = Contact::new(1.0 - 1e-6)
+        .unwrap()
+        .pull_off_load()
+        .unwrap()
+        .state;
     assert!((near_po.force - po.force).abs() < 1e-4);
 }
 

@@ -13,7 +13,16 @@ use thinjkr_derive::{ansatz, energy};
 
 fn finite_state(st: &thinjkr::State) -> bool {
     [
-        st.a, st.b, st.s, st.delta, st.force, st.xi, st.p0, st.bc_error, st.shape_a, st.shape_b,
+        st.a,
+        st.b,
+        st.s,
+        st.delta,
+        st.force,
+        st.xi,
+        st.p0,
+        st.bc_error,
+        st.shape_a,
+        st.shape_b,
     ]
     .iter()
     .all(|v| v.is_finite())
@@ -70,9 +79,14 @@ fn every_model_sweeps_without_nan_or_panic() {
                 }
                 Err(e) => panic!("{id} rho {rho}: {e}"),
             }
-            let zf = c.zero_force().unwrap_or_else(|e| panic!("{id} rho {rho}: {e}"));
+            let zf = c
+                .zero_force()
+                .unwrap_or_else(|e| panic!("{id} rho {rho}: {e}"));
             // F̄ ~ ā⁶ terms cancel to zero here
-            assert!(zf.force.abs() < 1e-11 * zf.a.powi(6) && finite_state(&zf), "{id} rho {rho}: {zf:?}");
+            assert!(
+                zf.force.abs() < 1e-11 * zf.a.powi(6) && finite_state(&zf),
+                "{id} rho {rho}: {zf:?}"
+            );
             if rho < 1.0 {
                 match c.pull_off_displacement() {
                     Ok(pd) => assert!(finite_state(&pd.state)),
@@ -102,7 +116,11 @@ fn energy_model_reproduces_the_axisymmetric_solution() {
         for delta in [-1.0, 0.0, 0.3, 2.0, 10.0] {
             let st = c.at_displacement(delta).unwrap();
             assert_eq!(st.s, 1.0);
-            assert_relative_eq!(st.delta, st.a * st.a / 4.0 - 2.0 / st.a, max_relative = 1e-12);
+            assert_relative_eq!(
+                st.delta,
+                st.a * st.a / 4.0 - 2.0 / st.a,
+                max_relative = 1e-12
+            );
             let f = std::f64::consts::PI / 96.0 * st.a.powi(4) * (st.a * st.a - 24.0 / st.a);
             assert_relative_eq!(st.force, f, max_relative = 1e-12, epsilon = 1e-12);
             // the edge is tensile and (3)₂ holds exactly on the circle
@@ -111,7 +129,11 @@ fn energy_model_reproduces_the_axisymmetric_solution() {
             }
         }
         let po = c.pull_off_load().unwrap();
-        assert_relative_eq!(po.state.force, -1.5 * std::f64::consts::PI, max_relative = 1e-12);
+        assert_relative_eq!(
+            po.state.force,
+            -1.5 * std::f64::consts::PI,
+            max_relative = 1e-12
+        );
         assert_relative_eq!(po.state.a, 12f64.cbrt(), max_relative = 1e-12);
     }
 }
@@ -129,18 +151,37 @@ fn energy_functions_match_their_derivation() {
         (10.0, 0.99, 0.95, 30.0),
         (0.7, 0.2, 0.05, 0.1),
     ] {
-        let at = [("abar", q(a)), ("s", q(s)), ("rho", q(rho)), ("dbar", q(dbar))];
+        let at = [
+            ("abar", q(a)),
+            ("s", q(s)),
+            ("rho", q(rho)),
+            ("dbar", q(dbar)),
+        ];
         let x = Vector2::new(a, s);
         let (r, _) = m.residuals_and_jacobian(x, rho, dbar);
         let scale = m.residual_scale(a, dbar);
         for k in 0..2 {
             let exact = eval_prec(&e.residuals[k], &at, 40).unwrap();
-            assert!((r[k] - exact).abs() <= 1e-12 * scale, "r{k}: {} vs {exact}", r[k]);
+            assert!(
+                (r[k] - exact).abs() <= 1e-12 * scale,
+                "r{k}: {} vs {exact}",
+                r[k]
+            );
         }
         let f = eval_prec(&e.fbar, &at, 40).unwrap();
-        assert_relative_eq!(m.force_bar(x, rho, dbar), f, max_relative = 1e-12, epsilon = 1e-12 * scale);
+        assert_relative_eq!(
+            m.force_bar(x, rho, dbar),
+            f,
+            max_relative = 1e-12,
+            epsilon = 1e-12 * scale
+        );
         let p = eval_prec(&e.potential, &at, 40).unwrap();
-        assert_relative_eq!(m.potential(x, rho, dbar).unwrap(), p, max_relative = 1e-12, epsilon = 1e-12 * scale * a * a);
+        assert_relative_eq!(
+            m.potential(x, rho, dbar).unwrap(),
+            p,
+            max_relative = 1e-12,
+            epsilon = 1e-12 * scale * a * a
+        );
     }
 }
 
@@ -149,7 +190,11 @@ fn energy_functions_match_their_derivation() {
 #[test]
 fn energy_hessian_matches_finite_differences() {
     let m = ModelId::Energy.model();
-    for &(a, s, rho, dbar) in &[(3.0, 0.9, 0.8, 2.0), (1.5, 0.6, 0.3, -0.4), (6.0, 0.97, 0.9, 8.0)] {
+    for &(a, s, rho, dbar) in &[
+        (3.0, 0.9, 0.8, 2.0),
+        (1.5, 0.6, 0.3, -0.4),
+        (6.0, 0.97, 0.9, 8.0),
+    ] {
         let z = [a, s, dbar];
         let pi = |z: [f64; 3]| m.potential(Vector2::new(z[0], z[1]), rho, z[2]).unwrap();
         let h = m.potential_hessian(Vector2::new(a, s), rho, dbar).unwrap();
@@ -178,7 +223,11 @@ fn energy_hessian_matches_finite_differences() {
         zp[2] += hd;
         zm[2] -= hd;
         let fd = (pi(zp) - pi(zm)) / (2.0 * hd);
-        assert_relative_eq!(m.force_bar(Vector2::new(a, s), rho, dbar), fd, max_relative = 1e-6);
+        assert_relative_eq!(
+            m.force_bar(Vector2::new(a, s), rho, dbar),
+            fd,
+            max_relative = 1e-6
+        );
     }
 }
 
@@ -199,7 +248,12 @@ fn energy_fold_is_the_minimum_of_the_traced_force() {
             .filter(|(_, st)| !st.beyond_size_fold)
             .min_by(|x, y| x.1.force.total_cmp(&y.1.force))
             .unwrap();
-        assert!(po.state.force <= min.force + 1e-12, "fold {} above traced minimum {}", po.state.force, min.force);
+        assert!(
+            po.state.force <= min.force + 1e-12,
+            "fold {} above traced minimum {}",
+            po.state.force,
+            min.force
+        );
         assert!(
             (po.state.force - min.force).abs() < 1e-5 * min.force.abs(),
             "rho {rho}: fold F {} vs traced minimum {}",
@@ -223,7 +277,10 @@ fn models_without_energy_do_not_claim_stability() {
         let st = c.at_displacement(2.0).unwrap();
         assert_eq!(st.stability.displacement, None);
         assert_eq!(st.stability.load, None);
-        assert_eq!(c.pull_off_displacement().unwrap().basis, FoldBasis::ModelFold);
+        assert_eq!(
+            c.pull_off_displacement().unwrap().basis,
+            FoldBasis::ModelFold
+        );
         assert_eq!(c.pull_off_load().unwrap().basis, FoldBasis::ModelFold);
     }
 }
