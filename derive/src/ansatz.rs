@@ -132,4 +132,4 @@ pub const APEX_45: Ansatz = Ansatz {
 };
 
 /// All models known to the generator, the paper's first.
-pub const ALL: &[Ansatz] = &[PAPER, APEXES, ENERGY];
+pub const ALL: &[Ansatz] = &[PAPER, APEXES, ENERGY, APEX_45];

@@ -18,7 +18,7 @@ use crate::generate::Output;
 use crate::ir::Ir;
 use crate::model::{Derivation, ModelDerivation};
 use crate::nondimensional::ratio_branch;
-use crate::sym::{diff, ex, simplify, subs, subs_all};
+use crate::sym::{diff, ex, rationalize, simplify, subs, subs_all};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 use std::collections::HashMap;
@@ -275,6 +275,39 @@ struct Function {
 /// Where a function is used, when narrower than the declared domain of its
 /// parameters (see `accuracy`): the explicit branch is used for ρ < 1 only
 /// (at ρ = 1 it degenerates to 0/0 and the axisymmetric solution is used).
+/// A point inside every parameter's domain, near s = 1 and ρ = 1, where
+/// `rationalize` judges which sums cancel.
+fn probe(params: &[&str]) -> Vec<(&'static str, Atom)> {
+    const VALUES: &[(&str, i64, i64)] = &[
+        ("s", 999, 1000),
+        ("rho", 999, 1000),
+        ("abar", 2, 1),
+        ("a", 2, 1),
+        ("abar0", 2, 1),
+        ("dbar", 1, 1),
+        ("eta", 1, 1),
+        ("eta_s", 1, 2),
+        ("xi", 1, 1),
+        ("p0", 1, 1),
+        ("u", 1, 2),
+        ("x", 1, 10),
+        ("y", 1, 10),
+        ("t", 1, 10),
+        ("m", 1, 1),
+        ("delta", 1, 1),
+        ("R1", 1, 1),
+        ("R2", 1, 2),
+        ("A", 1, 2),
+        ("B", 1, 2),
+        ("b", 1, 2),
+    ];
+    VALUES
+        .iter()
+        .filter(|(n, _, _)| params.contains(n))
+        .map(|(n, p, q)| (*n, crate::sym::rat(*p, *q)))
+        .collect()
+}
+
 fn domain_of(name: &str) -> &'static [(&'static str, &'static [f64])] {
     match name {
         "branch_eta" | "branch_poly" | "branch_x_pow" => {
@@ -407,8 +440,9 @@ fn render_function(f: &Function, charts: Option<&Charted>) -> Result<TokenStream
             }
             (
                 format!(
-                    " {}\n\n In charts: where a parameter among ({}) is ≥ 1/2 the expression is written in 1 − that parameter (computed exactly), so that nothing cancels near s = 1 or ρ = 1; chosen by the generator's accuracy check.",
+                    " {}\n\n Rewritten by the generator's accuracy check so that nothing cancels near s = 1 or ρ = 1: cancelling sums A + B√Q rationalised to (A² − B²Q)/(A − B√Q) where that was needed, and, with {} chart(s), where a parameter among ({}) is ≥ 1/2 the expression written in 1 − that parameter (computed exactly).",
                     f.doc,
+                    charts.len(),
                     shiftable.join(", ")
                 ),
                 chain,
@@ -427,7 +461,25 @@ fn render_function(f: &Function, charts: Option<&Charted>) -> Result<TokenStream
 
 /// The functions generated for one derivation.
 fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
-    let eta_s = simplify(&diff(&d.eta, "s"));
+    // η in the form that passes the accuracy check: as derived, or with its
+    // cancelling radicals rationalised; η' by differentiating that form
+    // (product rule, not re-expanded, so that no cancellation returns).
+    let (eta, eta_s) = if crate::accuracy::check("eta", &["s"], &[d.eta.clone()], &[], None).is_ok()
+    {
+        (d.eta.clone(), simplify(&diff(&d.eta, "s")))
+    } else {
+        let r = rationalize(&d.eta, &probe(&["s"]));
+        (r.clone(), diff(&r, "s"))
+    };
+    let d_eta = &eta;
+    // (14) likewise: as derived, or max/min − 1 from the rationalised extrema
+    let bc_error =
+        if crate::accuracy::check("bc_error", &["s"], &[d.bc_error.clone()], &[], None).is_ok() {
+            d.bc_error.clone()
+        } else {
+            let pr = probe(&["s", "p0", "a", "xi"]);
+            rationalize(&d.extrema.max, &pr) / rationalize(&d.extrema.min, &pr) - Atom::num(1)
+        };
     // Residuals with η and η' as inputs; the chain rule is applied symbolically.
     let r = &d.residuals;
     let jac = |res: &Atom| -> Vec<Atom> {
@@ -450,10 +502,10 @@ fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
             .collect()
     };
     let mut fs = vec![
-        Function { name: "eta", doc: "η(s) of Eq. (16): the maximum of ∂p/∂ν on the contour over its apex value.".into(), params: vec!["s"], outputs: vec![d.eta.clone()] },
+        Function { name: "eta", doc: "η(s) of Eq. (16): the maximum of ∂p/∂ν on the contour over its apex value.".into(), params: vec!["s"], outputs: vec![d_eta.clone()] },
         Function { name: "eta_s", doc: "dη/ds, derivative of Eq. (16).".into(), params: vec!["s"], outputs: vec![eta_s.clone()] },
-        Function { name: "eta_and_eta_s", doc: "`[η, dη/ds]` of Eq. (16), side by side (shared subexpressions computed once).".into(), params: vec!["s"], outputs: vec![d.eta.clone(), eta_s] },
-        Function { name: "bc_error", doc: "Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.".into(), params: vec!["s"], outputs: vec![d.bc_error.clone()] },
+        Function { name: "eta_and_eta_s", doc: "`[η, dη/ds]` of Eq. (16), side by side (shared subexpressions computed once).".into(), params: vec!["s"], outputs: vec![d_eta.clone(), eta_s] },
+        Function { name: "bc_error", doc: "Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.".into(), params: vec!["s"], outputs: vec![bc_error] },
         Function { name: "residuals_eta", doc: "Residuals (19), (20) with η = η(s) and η' = dη/ds passed in.".into(), params: state.clone(), outputs: r.clone() },
         Function { name: "residuals_and_jacobian_eta", doc: "Residuals (19), (20) and their Jacobian with respect to (ā, s), side by side: `[r1, r2, ∂r1/∂ā, ∂r1/∂s, ∂r2/∂ā, ∂r2/∂s]`; η and η' passed in.".into(), params: state.clone(), outputs: rj },
         Function { name: "residuals_d_dbar_eta", doc: "∂(19)/∂δ̄, ∂(20)/∂δ̄ (for continuation and load control); η passed in.".into(), params: state.clone(), outputs: r.iter().map(|x| diff(x, "dbar")).collect() },
@@ -805,8 +857,36 @@ pub fn module_source(md: &ModelDerivation) -> Result<String, String> {
         }
         if chart_failures.is_empty() && charts.len() > 1 {
             charted.insert(f.name, charts);
+            continue;
+        }
+        // then with cancelling radicals rationalised (one chart, or charts)
+        let pr = probe(&f.params);
+        let rationalized = Function {
+            name: f.name,
+            doc: f.doc.clone(),
+            params: f.params.clone(),
+            outputs: f.outputs.iter().map(|o| rationalize(o, &pr)).collect(),
+        };
+        let whole = crate::accuracy::check(f.name, &f.params, &rationalized.outputs, domain, None);
+        if whole.is_ok() {
+            charted.insert(
+                f.name,
+                vec![(Chart { shifted: vec![] }, rationalized.outputs)],
+            );
+            continue;
+        }
+        let charts = charts_for(&rationalized);
+        let mut rat_failures = Vec::new();
+        for (chart, outs) in &charts {
+            if let Err(mut v) = crate::accuracy::check(f.name, &f.params, outs, domain, Some(chart))
+            {
+                rat_failures.append(&mut v);
+            }
+        }
+        if rat_failures.is_empty() && charts.len() > 1 {
+            charted.insert(f.name, charts);
         } else {
-            failures.append(&mut chart_failures);
+            failures.append(&mut rat_failures);
         }
     }
     if !failures.is_empty() {

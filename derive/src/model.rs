@@ -161,7 +161,12 @@ impl Derivation {
                 )
             }
         };
-        let eta = normalize_radicals(&simplify(&(&closed / &extrema.apex)));
+        // η with any sum of radicals that cancels near s = 1 rationalised,
+        // so that it has no removable singularity at s = 1
+        let eta = crate::sym::rationalize(
+            &normalize_radicals(&simplify(&(&closed / &extrema.apex))),
+            &[("s", crate::sym::rat(999, 1000))],
+        );
         let bc_error = normalize_radicals(&simplify(&(&extrema.max / &extrema.min - Atom::num(1))));
         let xi_adhesion =
             solve_linear(&(&closed - ex("g")), "xi").ok_or("closure not linear in 1/xi")?;

@@ -436,3 +436,121 @@ fn numeric_limit(lo: f64, hi: f64) -> Result<Atom, String> {
     }
     Ok(ex(&format!("{lo:.17e}")).to_float(30))
 }
+
+/// `Some(true)` when `e` is positive at `probe`, `Some(false)` when
+/// negative, `None` when it cannot be evaluated there.
+fn positive_at(e: &Atom, probe: &[(&str, Atom)]) -> Option<bool> {
+    eval_prec(e, probe, 30)
+        .ok()
+        .filter(|v| v.is_finite() && *v != 0.0)
+        .map(|v| v > 0.0)
+}
+
+/// A polynomial `e` factored over the integers, each factor written with
+/// the sign that makes it positive at `probe` (so that fractional powers
+/// of it may be split factor by factor).
+fn factor_positive(e: &Atom, probe: &[(&str, Atom)]) -> Atom {
+    let (frozen, table) = freeze_radicals(e);
+    let f = frozen.factor();
+    let mut out = Atom::num(1);
+    let mut put = |v: AtomView<'_>| {
+        let (base, exp) = match v {
+            AtomView::Pow(p) => {
+                let (b, x) = p.get_base_exp();
+                (thaw(&b.to_owned(), &table), x.to_owned())
+            }
+            other => (thaw(&other.to_owned(), &table), Atom::num(1)),
+        };
+        let base = if matches!(base.as_view(), AtomView::Num(_))
+            || positive_at(&base, probe) != Some(false)
+        {
+            base
+        } else {
+            // (−b)^k = (−1)^k b^k
+            out = &out * &Atom::num(-1).pow(&exp);
+            (-base).expand()
+        };
+        out = &out * &base.pow(&exp);
+    };
+    match f.as_view() {
+        AtomView::Mul(m) => m.iter().for_each(&mut put),
+        v => put(v),
+    }
+    out
+}
+
+/// Rewrite, throughout `e`, each sum A + B√Q (one square root of a
+/// non-constant Q, entering polynomially) whose two parts nearly cancel at
+/// `probe` as (A² − B²Q)/(A − B√Q), with A² − B²Q factored over the
+/// integers: the cancellation then happens exactly, in the factors. Bases
+/// of fractional powers are made positive at `probe` first.
+pub fn rationalize(e: &Atom, probe: &[(&str, Atom)]) -> Atom {
+    match e.as_view() {
+        AtomView::Mul(m) => m.iter().fold(Atom::num(1), |acc, f| {
+            &acc * &rationalize(&f.to_owned(), probe)
+        }),
+        AtomView::Pow(p) => {
+            let (b, x) = p.get_base_exp();
+            let base = rationalize(&b.to_owned(), probe);
+            let x = x.to_owned();
+            if is_integer_atom(&x) {
+                base.pow(&x)
+            } else {
+                normalize_radicals(&base.pow(&x))
+            }
+        }
+        AtomView::Add(_) => rationalize_sum(e, probe).unwrap_or_else(|| {
+            // a sum negative at the probe is written −(−e), so that equal
+            // factors such as (s − 1) and (1 − s) meet and cancel
+            if positive_at(e, probe) == Some(false) && freeze_radicals(e).1.is_empty() {
+                Atom::num(-1) * (-e.clone()).expand()
+            } else {
+                e.clone()
+            }
+        }),
+        _ => e.clone(),
+    }
+}
+
+fn rationalize_sum(e: &Atom, probe: &[(&str, Atom)]) -> Option<Atom> {
+    let (frozen, table) = freeze_radicals(e);
+    let roots: Vec<&(String, Atom)> = table
+        .iter()
+        .filter(|(_, root)| {
+            let s = root.to_string();
+            s.ends_with("^(1/2)") && positive_at(root, &[]).is_none()
+        })
+        .collect();
+    if roots.len() != 1 {
+        return None;
+    }
+    let (r, root) = roots[0];
+    let q = simplify(&root.pow(&Atom::num(2)));
+    let n = degree_in(&frozen, r, 8)?;
+    let (mut a, mut b) = (Atom::num(0), Atom::num(0));
+    for k in 0..=n as u32 {
+        let c = thaw(&poly_coeff(&frozen, r, k, "zzz", 0), &table);
+        if k % 2 == 0 {
+            a = &a + &(&c * &q.pow(&Atom::num((k / 2) as i64)));
+        } else {
+            b = &b + &(&c * &q.pow(&Atom::num(((k - 1) / 2) as i64)));
+        }
+    }
+    let av = eval_prec(&a, probe, 40).ok()?;
+    let bv = eval_prec(&(&b * root), probe, 40).ok()?;
+    if (av + bv).abs() > 1e-2 * (av.abs() + bv.abs()) {
+        return None;
+    }
+    let num = simplify(&normalize_radicals(&(&a * &a - &b * &b * &q).expand()));
+    if is_zero(&num) {
+        return Some(Atom::num(0));
+    }
+    let (nn, nd) = num_den(&num);
+    let mut den = &a - &(&b * root);
+    let mut top = factor_positive(&nn, probe);
+    if positive_at(&den, probe) == Some(false) {
+        den = -den;
+        top = -top;
+    }
+    Some(top / (den * nd))
+}

@@ -6,7 +6,8 @@
 //!
 //! Several closures of the same ellipse are generated, each one value
 //! behind [`Model`], chosen at run time by [`ModelId`]: `max` (the paper's,
-//! the default), `apexes` and `energy` (Ritz, with stability).
+//! the default), `apexes`, `energy` (Ritz, with stability) and `apex45`
+//! (∂p/∂ν equal at t = 0 and t = π/4, a second collocation).
 //!
 //! The equations are the derived ones: where the paper's printed formulas
 //! differ ((18), (25)₁, (26), (27); see `docs/errata.md`), the derived forms

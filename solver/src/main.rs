@@ -35,7 +35,7 @@ enum Command {
         /// Radii ratio ρ = R2/R1 in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy.
+        /// Model: max (the paper's, default), apexes, energy, apex45.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelId,
         /// Approach δ̄.
@@ -60,7 +60,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy.
+        /// Model: max (the paper's, default), apexes, energy, apex45.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelId,
         /// Control.
@@ -79,7 +79,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy.
+        /// Model: max (the paper's, default), apexes, energy, apex45.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelId,
         /// Print JSON.
@@ -94,7 +94,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy.
+        /// Model: max (the paper's, default), apexes, energy, apex45.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelId,
         /// Number of points.

@@ -108,7 +108,7 @@ fn csv_has_a_header() {
 
 #[test]
 fn every_model_is_chosen_by_name() {
-    for m in ["max", "apexes", "energy"] {
+    for m in ["max", "apexes", "energy", "apex45"] {
         let (ok, out, err) = thinjkr(&["pull-off", "--rho", "0.8", "--model", m, "--json"]);
         assert!(ok, "{m}: {err}");
         let p: thinjkr::PullOff = serde_json::from_str(&out).unwrap();
@@ -122,7 +122,10 @@ fn every_model_is_chosen_by_name() {
         assert_eq!(v["basis"], expected, "{m}");
     }
     let (ok, _, err) = thinjkr(&["solve", "--rho", "0.8", "--delta", "1", "--model", "nope"]);
-    assert!(!ok && err.contains("allowed: max, apexes, energy"), "{err}");
+    assert!(
+        !ok && err.contains("allowed: max, apexes, energy, apex45"),
+        "{err}"
+    );
 }
 
 #[test]

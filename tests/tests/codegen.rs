@@ -150,7 +150,10 @@ fn every_other_model_is_generated_solved_and_matches_its_derivation() {
         "paper",
     )
     .unwrap();
-    for (id, which) in [(ModelId::Apexes, &ansatz::APEXES)] {
+    for (id, which) in [
+        (ModelId::Apexes, &ansatz::APEXES),
+        (ModelId::Apex45, &ansatz::APEX_45),
+    ] {
         let other = solve(
             |x| id.model().residuals_and_jacobian(x, 0.8, 2.0),
             scale,

@@ -44,6 +44,27 @@ fn every_model_sweeps_without_nan_or_panic() {
                 }
             }
             let c = Contact::with_model(id, rho).unwrap();
+            // apex45 far below the paper's range (error (14) above 100 %) is
+            // a degenerate model: there every answer must only be finite or
+            // a typed `NoState`
+            if id == ModelId::Apex45 && rho < 0.3 {
+                for k in 0..=12 {
+                    let delta = -2.0 + 52.0 * (k as f64 / 12.0).powi(2);
+                    match c.at_displacement(delta) {
+                        Ok(st) => assert!(finite_state(&st), "{id} rho {rho}: {st:?}"),
+                        Err(Error::NoState(_)) => {}
+                        Err(e) => panic!("{id} rho {rho} delta {delta}: {e}"),
+                    }
+                }
+                for r in [c.pull_off_load().map(|p| p.state), c.zero_force()] {
+                    match r {
+                        Ok(st) => assert!(finite_state(&st), "{id} rho {rho}: {st:?}"),
+                        Err(Error::NoState(_)) => {}
+                        Err(e) => panic!("{id} rho {rho}: {e}"),
+                    }
+                }
+                continue;
+            }
             for k in 0..=12 {
                 let delta = -2.0 + 52.0 * (k as f64 / 12.0).powi(2);
                 match c.at_displacement(delta) {
@@ -272,7 +293,7 @@ fn energy_fold_is_the_minimum_of_the_traced_force() {
 /// points as folds of the model.
 #[test]
 fn models_without_energy_do_not_claim_stability() {
-    for id in [ModelId::Max, ModelId::Apexes] {
+    for id in [ModelId::Max, ModelId::Apexes, ModelId::Apex45] {
         let c = Contact::with_model(id, 0.8).unwrap();
         let st = c.at_displacement(2.0).unwrap();
         assert_eq!(st.stability.displacement, None);

@@ -317,7 +317,7 @@ pub fn pressure(x: f64, y: f64, p0: f64, a: f64, s: f64, xi: f64) -> f64 {
 }
 /** The solution curve at fixed ρ, explicit in s: `[ā³, δ̄ ā]` (both residuals are linear in these); η passed in.
 
- In charts: where a parameter among (s, rho) is ≥ 1/2 the expression is written in 1 − that parameter (computed exactly), so that nothing cancels near s = 1 or ρ = 1; chosen by the generator's accuracy check.*/
+ Rewritten by the generator's accuracy check so that nothing cancels near s = 1 or ρ = 1: cancelling sums A + B√Q rationalised to (A² − B²Q)/(A − B√Q) where that was needed, and, with 4 chart(s), where a parameter among (s, rho) is ≥ 1/2 the expression written in 1 − that parameter (computed exactly).*/
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn branch_eta(s: f64, rho: f64, eta: f64) -> [f64; 2] {

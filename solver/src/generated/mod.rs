@@ -6,6 +6,7 @@
 pub mod max;
 pub mod apexes;
 pub mod energy;
+pub mod apex45;
 /// A generated model, chosen at run time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -16,16 +17,24 @@ pub enum ModelId {
     Apexes,
     /// `energy`: Eq. (5) with (6) exact on the ellipse, semi-axes from ∂Π/∂a = ∂Π/∂b = 0 (Ritz).
     Energy,
+    /// `apex45`: Eq. (5) with ∂p/∂ν equal at t = 0 and t = π/4, closure (13).
+    Apex45,
 }
 impl ModelId {
     /// Every generated model, the paper's first.
-    pub const ALL: [ModelId; 3] = [ModelId::Max, ModelId::Apexes, ModelId::Energy];
+    pub const ALL: [ModelId; 4] = [
+        ModelId::Max,
+        ModelId::Apexes,
+        ModelId::Energy,
+        ModelId::Apex45,
+    ];
     /// The model's name (its ansatz identifier).
     pub fn name(self) -> &'static str {
         match self {
             ModelId::Max => "max",
             ModelId::Apexes => "apexes",
             ModelId::Energy => "energy",
+            ModelId::Apex45 => "apex45",
         }
     }
     /// The model as one value behind the solver's interface.
@@ -34,6 +43,7 @@ impl ModelId {
             ModelId::Max => &max::Max,
             ModelId::Apexes => &apexes::Apexes,
             ModelId::Energy => &energy::Energy,
+            ModelId::Apex45 => &apex45::Apex45,
         }
     }
 }
@@ -49,10 +59,12 @@ impl ::core::str::FromStr for ModelId {
             "max" => Ok(ModelId::Max),
             "apexes" => Ok(ModelId::Apexes),
             "energy" => Ok(ModelId::Energy),
+            "apex45" => Ok(ModelId::Apex45),
             other => {
                 Err(
                     format!(
-                        "{}: {}", "unknown model (allowed: max, apexes, energy)", other
+                        "{}: {}", "unknown model (allowed: max, apexes, energy, apex45)",
+                        other
                     ),
                 )
             }
