@@ -250,6 +250,8 @@ impl Contact {
             match f(mid) {
                 Some(v) if v > 0.0 => lo = mid,
                 Some(_) => hi = mid,
+                // neither branch is resolved here: lo stays the last
+                // adhesive point found, which is where the walk starts
                 None => break,
             }
             if hi - lo <= 4.0 * f64::EPSILON * hi {

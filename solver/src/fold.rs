@@ -70,13 +70,8 @@ pub fn locate(
     which: FoldCondition,
 ) -> Result<Vector3<f64>> {
     let mut z = guess;
-    let scale_c = |z: &Vector3<f64>| {
-        // the magnitude of the condition near z, to judge convergence
-        let s = model.residual_scale(z[0], z[2]);
-        s * s
-    };
     let mut last = f64::INFINITY;
-    for it in 0..40 {
+    for _ in 0..40 {
         let x = Vector2::new(z[0], z[1]);
         let (r, j) = model.residuals_and_jacobian(x, rho, z[2]);
         let d = model.residuals_d_delta(x, rho, z[2]);
@@ -113,15 +108,11 @@ pub fn locate(
         let size = step.component_div(&z.map(|v| 1.0 + v.abs())).amax();
         let rn = r.norm() / model.residual_scale(z[0], z[2]);
         if size < 1e-13 || (size < 1e-10 && size >= 0.5 * last && rn < 1e-12) {
-            let cn = condition(model, rho, z, which).abs() / scale_c(&z);
-            if cn.is_finite() {
+            if condition(model, rho, z, which).is_finite() {
                 return Ok(z);
             }
         }
         last = size;
-        if it == 39 {
-            break;
-        }
     }
     Err(Error::NoConvergence {
         iterations: 40,
