@@ -292,6 +292,30 @@ pub fn check(
     domain: &[(&str, &'static [f64])],
     chart: Option<&Chart>,
 ) -> Result<f64, Vec<Failure>> {
+    check_scaled(name, params, outputs, domain, chart, Scale::Terms)
+}
+
+/// What the error of a value is measured against.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scale {
+    /// max(|value|, 1e-3 · M): a value near 0 is judged against the size
+    /// of the terms that cancel to it (the default).
+    Terms,
+    /// |value| alone: the function must be computed without cancellation,
+    /// with a small relative error also where its value tends to 0 (only
+    /// an exact 0 is judged by the absolute error).
+    Value,
+}
+
+/// [`check`] with the error measured against `scale`.
+pub fn check_scaled(
+    name: &str,
+    params: &[&str],
+    outputs: &[Atom],
+    domain: &[(&str, &'static [f64])],
+    chart: Option<&Chart>,
+    scale_by: Scale,
+) -> Result<f64, Vec<Failure>> {
     let mut worst: f64 = 0.0;
     let mut failures = Vec::new();
     let irs: Vec<Result<Ir, String>> = outputs.iter().map(Ir::from_atom).collect();
@@ -341,7 +365,10 @@ pub fn check(
                 }
             };
             let m = magnitude(ir, &vars).unwrap_or(f64::NAN);
-            let scale = hi.abs().max(1e-3 * m);
+            let scale = match scale_by {
+                Scale::Terms => hi.abs().max(1e-3 * m),
+                Scale::Value => hi.abs(),
+            };
             if gap.abs() > 1e-24 * scale.max(f64::MIN_POSITIVE) {
                 failures.push(fail(format!(
                     "the 192- and 384-bit values disagree by {gap:e} (value {hi:e})"

@@ -11,7 +11,7 @@
 //! Owns: the generated modules and the `Model` implementations in them.
 //! May use: `ir`, `model`, `sym`.
 
-use crate::accuracy::{Chart, SHIFTABLE, SHIFT_PREFIX};
+use crate::accuracy::{Chart, Failure, Scale, SHIFTABLE, SHIFT_PREFIX};
 use crate::ansatz::Closure;
 use crate::energy::EnergyDerivation;
 use crate::generate::Output;
@@ -459,6 +459,23 @@ fn render_function(f: &Function, charts: Option<&Charted>) -> Result<TokenStream
     })
 }
 
+/// Functions that must be computed without cancellation: their error is
+/// measured against their own value, also where it tends to 0 (the
+/// quantity (14) and η − 1 vanish at s = 1).
+const CANCELLATION_FREE: &[&str] = &["bc_error", "eta_minus_one"];
+
+/// Appended to the documentation of a function in [`CANCELLATION_FREE`]
+/// for which no form passes the check against its own value.
+const NOT_CANCELLATION_FREE: &str = "\n\nNot cancellation-free near s = 1 for this model: no generated form has a relative error ≤ 1e-12 against its own value there; its error is within 1e-12 of the size of the terms that cancel (see `docs/accuracy.md`).";
+
+fn scale_of(name: &str) -> Scale {
+    if CANCELLATION_FREE.contains(&name) {
+        Scale::Value
+    } else {
+        Scale::Terms
+    }
+}
+
 /// The functions generated for one derivation.
 fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
     // η in the form that passes the accuracy check: as derived, or with its
@@ -472,9 +489,15 @@ fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
         (r.clone(), diff(&r, "s"))
     };
     let d_eta = &eta;
-    // (14) likewise: as derived, or max/min − 1 from the rationalised extrema
+    // (14) likewise: as derived (the form search below rationalises it
+    // when needed), or max/min − 1 from the rationalised extrema
+    let strict = |e: &Atom| {
+        let (r, v) = (rationalize(e, &probe(&["s"])), Scale::Value);
+        crate::accuracy::check_scaled("bc_error", &["s"], &[e.clone()], &[], None, v).is_ok()
+            || crate::accuracy::check_scaled("bc_error", &["s"], &[r], &[], None, v).is_ok()
+    };
     let bc_error =
-        if crate::accuracy::check("bc_error", &["s"], &[d.bc_error.clone()], &[], None).is_ok() {
+        if strict(&d.bc_error) {
             d.bc_error.clone()
         } else {
             let pr = probe(&["s", "p0", "a", "xi"]);
@@ -834,59 +857,112 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
 }
 
 /// The Rust source of one model's module.
+/// The form of `f` that passes the accuracy check with errors measured
+/// against `scale`: as derived (`None`), charts in 1 − s, 1 − ρ, with
+/// cancelling radicals rationalised, or charts of that; else the failures
+/// of the last form tried.
+fn search_form(
+    f: &Function,
+    scale: Scale,
+) -> Result<(Option<Charted>, f64, &'static str), Vec<Failure>> {
+    let domain = domain_of(f.name);
+    let check = |outs: &[Atom], chart: Option<&Chart>| {
+        crate::accuracy::check_scaled(f.name, &f.params, outs, domain, chart, scale)
+    };
+    // the worst error over every chart, or the failures
+    let all_charts = |charts: &Charted| -> Result<f64, Vec<Failure>> {
+        let (mut worst, mut failures) = (0.0_f64, Vec::new());
+        for (chart, outs) in charts {
+            match check(outs, Some(chart)) {
+                Ok(w) => worst = worst.max(w),
+                Err(mut v) => failures.append(&mut v),
+            }
+        }
+        if failures.is_empty() {
+            Ok(worst)
+        } else {
+            Err(failures)
+        }
+    };
+    if let Ok(w) = check(&f.outputs, None) {
+        return Ok((None, w, "as derived"));
+    }
+    // the single expression fails: try charts in 1 − s, 1 − ρ
+    let charts = charts_for(f);
+    if charts.len() > 1 {
+        if let Ok(w) = all_charts(&charts) {
+            return Ok((Some(charts), w, "charts in 1 − s, 1 − ρ"));
+        }
+    }
+    // then with cancelling radicals rationalised (one chart, or charts)
+    let pr = probe(&f.params);
+    let rationalized = Function {
+        name: f.name,
+        doc: f.doc.clone(),
+        params: f.params.clone(),
+        outputs: f.outputs.iter().map(|o| rationalize(o, &pr)).collect(),
+    };
+    if let Ok(w) = check(&rationalized.outputs, None) {
+        let one = vec![(Chart { shifted: vec![] }, rationalized.outputs)];
+        return Ok((Some(one), w, "radicals rationalised"));
+    }
+    let charts = charts_for(&rationalized);
+    match all_charts(&charts) {
+        Ok(w) if charts.len() > 1 => Ok((Some(charts), w, "radicals rationalised, charts in 1 − s, 1 − ρ")),
+        Ok(_) => Err(Vec::new()),
+        Err(v) => Err(v),
+    }
+}
+
+/// What the accuracy check found for one generated function.
+pub struct FormReport {
+    /// The function's name.
+    pub function: &'static str,
+    /// The form written: as derived, charts, rationalised.
+    pub form: &'static str,
+    /// What the error was measured against.
+    pub scale: Scale,
+    /// The worst relative error over the sample points.
+    pub worst: f64,
+}
+
+/// The Rust source of one model's module.
 pub fn module_source(md: &ModelDerivation) -> Result<String, String> {
-    let fs = match md {
+    module(md).map(|(src, _)| src)
+}
+
+/// The Rust source of one model's module and what its accuracy check found.
+pub fn module(md: &ModelDerivation) -> Result<(String, Vec<FormReport>), String> {
+    let mut fs = match md {
         ModelDerivation::Collocation(d) => functions(d)?,
         ModelDerivation::Energy(e) => functions_energy(e)?,
     };
     let mut failures = Vec::new();
+    let mut reports = Vec::new();
     let mut charted: HashMap<&str, Charted> = HashMap::new();
-    for f in &fs {
-        let domain = domain_of(f.name);
-        if crate::accuracy::check(f.name, &f.params, &f.outputs, domain, None).is_ok() {
-            continue;
-        }
-        // the single expression fails: try charts in 1 − s, 1 − ρ
-        let charts = charts_for(f);
-        let mut chart_failures = Vec::new();
-        for (chart, outs) in &charts {
-            if let Err(mut v) = crate::accuracy::check(f.name, &f.params, outs, domain, Some(chart))
-            {
-                chart_failures.append(&mut v);
+    for f in &mut fs {
+        let mut scale = scale_of(f.name);
+        let found = match search_form(f, scale) {
+            Err(_) if scale == Scale::Value => {
+                // no cancellation-free form: accept the default measure and
+                // say so in the function's documentation
+                scale = Scale::Terms;
+                let r = search_form(f, scale);
+                if r.is_ok() {
+                    f.doc.push_str(NOT_CANCELLATION_FREE);
+                }
+                r
             }
-        }
-        if chart_failures.is_empty() && charts.len() > 1 {
-            charted.insert(f.name, charts);
-            continue;
-        }
-        // then with cancelling radicals rationalised (one chart, or charts)
-        let pr = probe(&f.params);
-        let rationalized = Function {
-            name: f.name,
-            doc: f.doc.clone(),
-            params: f.params.clone(),
-            outputs: f.outputs.iter().map(|o| rationalize(o, &pr)).collect(),
+            r => r,
         };
-        let whole = crate::accuracy::check(f.name, &f.params, &rationalized.outputs, domain, None);
-        if whole.is_ok() {
-            charted.insert(
-                f.name,
-                vec![(Chart { shifted: vec![] }, rationalized.outputs)],
-            );
-            continue;
-        }
-        let charts = charts_for(&rationalized);
-        let mut rat_failures = Vec::new();
-        for (chart, outs) in &charts {
-            if let Err(mut v) = crate::accuracy::check(f.name, &f.params, outs, domain, Some(chart))
-            {
-                rat_failures.append(&mut v);
+        match found {
+            Ok((c, worst, form)) => {
+                reports.push(FormReport { function: f.name, form, scale, worst });
+                if let Some(c) = c {
+                    charted.insert(f.name, c);
+                }
             }
-        }
-        if rat_failures.is_empty() && charts.len() > 1 {
-            charted.insert(f.name, charts);
-        } else {
-            failures.append(&mut rat_failures);
+            Err(mut v) => failures.append(&mut v),
         }
     }
     if !failures.is_empty() {
@@ -912,7 +988,7 @@ pub fn module_source(md: &ModelDerivation) -> Result<String, String> {
         "//! @generated by `cargo run -p thinjkr-derive -- generate` (thinjkr-derive codegen); do not edit.\n//!\n//! Model `{}`: {}.\n//! Pressure: `{}`; collocation: {}; closure: {}.\n\n",
         a.id, a.title, a.pressure, a.collocation_note, a.closure.describe()
     );
-    Ok(format!("{header}{body}"))
+    Ok((format!("{header}{body}"), reports))
 }
 
 /// `generated/mod.rs`: the module list and [`ModelId`], the run-time choice
@@ -974,15 +1050,60 @@ fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
 /// The generated modules and their `mod.rs`.
 pub fn outputs(all: &[&ModelDerivation]) -> Result<Vec<Output>, String> {
     let mut out = Vec::new();
+    let mut reports = Vec::new();
     for md in all {
+        let (src, r) = module(md)?;
         out.push(Output {
             path: format!("solver/src/generated/{}.rs", md.ansatz().id).into(),
-            contents: module_source(md)?,
+            contents: src,
         });
+        reports.push((md.ansatz(), r));
     }
+    out.push(Output {
+        path: "docs/accuracy.md".into(),
+        contents: accuracy_md(&reports),
+    });
     out.push(Output {
         path: "solver/src/generated/mod.rs".into(),
         contents: mod_source(all)?,
     });
     Ok(out)
+}
+
+/// `docs/accuracy.md`: what the generator's accuracy check measured for
+/// every generated function of every model.
+fn accuracy_md(reports: &[(&crate::ansatz::Ansatz, Vec<FormReport>)]) -> String {
+    let mut o = String::new();
+    o.push_str("<!-- @generated by `cargo run -p thinjkr-derive -- generate`; do not edit. -->\n\n");
+    o.push_str("# Accuracy of the generated code\n\n");
+    o.push_str(&format!(
+        "Every function under `solver/src/generated/` is checked by the generator before it is written \
+         (`derive/src/accuracy.rs`): it is evaluated in `f64` with the emitted code's expression tree and \
+         division structure, and in 192- and 384-bit binary floating point (astro-float) at the exact `f64` inputs, \
+         at sample points across its domain (s from 0.05 to 1 including 1 − 1e-6 and 1; ρ from 0.05 to 1; \
+         ā and δ̄ over the physical range). Generation fails, naming the function and the point, \
+         when an error exceeds {:e}.\n\n\
+         *Against the terms*: the error is relative to max(|value|, 1e-3 · M), M the value with every term \
+         replaced by its magnitude (a value near 0 is judged against the terms that cancel to it). \
+         *Against the value*: relative to |value| alone, also where the value tends to 0; required of \
+         the quantity (14), which vanishes at s = 1, and reported where no form meets it.\n\n\
+         The form is the first that passes, in this order: as derived; in charts where s or ρ ≥ 1/2 is \
+         written through 1 − s, 1 − ρ; with cancelling sums A + B√Q rationalised to (A² − B²Q)/(A − B√Q); both.\n",
+        crate::accuracy::TOLERANCE
+    ));
+    for (a, rs) in reports {
+        o.push_str(&format!("\n## Model `{}`: {}\n\n", a.id, a.title));
+        o.push_str("| function | form | error measured against | worst relative error |\n|---|---|---|---|\n");
+        for r in rs {
+            let scale = match r.scale {
+                Scale::Terms if CANCELLATION_FREE.contains(&r.function) => {
+                    "the terms (**no cancellation-free form found**)"
+                }
+                Scale::Terms => "the terms",
+                Scale::Value => "the value",
+            };
+            o.push_str(&format!("| `{}` | {} | {} | {:.1e} |\n", r.function, r.form, scale, r.worst));
+        }
+    }
+    o
 }

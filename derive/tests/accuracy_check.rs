@@ -40,3 +40,26 @@ fn the_check_rejects_apex45_eta_and_passes_the_papers() {
         check("eta", &["s"], &[rationalized], &[], None).expect("the rationalised eta passes");
     assert!(worst <= TOLERANCE, "worst {worst}");
 }
+
+/// The quantity (14) vanishes at s = 1, so its error is measured against
+/// its own value (`Scale::Value`): the paper's (14) as derived,
+/// η − 1 = 2(1+s+s²)^(3/2)/(3√3 s(1+s)) − 1, cancels there and fails that
+/// measure while passing the default one (which judges it against the
+/// cancelling terms); rationalised, it passes against its value.
+#[test]
+fn the_papers_bc_error_is_cancellation_free_only_rationalised() {
+    use thinjkr_derive::accuracy::{check_scaled, Scale};
+    let paper = Derivation::new(&ansatz::PAPER).expect("paper derives");
+    let derived = [paper.bc_error.clone()];
+    assert!(check_scaled("bc_error", &["s"], &derived, &[], None, Scale::Terms).is_ok());
+    let failures = check_scaled("bc_error", &["s"], &derived, &[], None, Scale::Value)
+        .expect_err("the derived (14) cancels near s = 1");
+    assert!(failures
+        .iter()
+        .all(|f| f.point.iter().any(|(n, s)| n == "s" && *s > 0.9)));
+    let probe = [("s", thinjkr_derive::sym::rat(999, 1000))];
+    let r = thinjkr_derive::sym::rationalize(&paper.bc_error, &probe);
+    let worst = check_scaled("bc_error", &["s"], &[r], &[], None, Scale::Value)
+        .expect("the rationalised (14) passes against its value");
+    assert!(worst <= TOLERANCE, "worst {worst}");
+}

@@ -22,6 +22,23 @@ fn q(x: f64) -> symbolica::atom::Atom {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 24, .. ProptestConfig::default() })]
 
+    /// (14) = η − 1 for the paper's model near s = 1, against a form derived
+    /// by hand: multiplying 2Q^(3/2) − 3√3 s(1+s) (Q = 1 + s + s²) by its
+    /// conjugate gives 4Q³ − 27s²(1+s)² = (1−s)²(1+2s)²(2+s)², so
+    /// η − 1 = (1−s)²(1+2s)²(2+s)² / (3√3 s(1+s)(2Q^(3/2) + 3√3 s(1+s))),
+    /// which has no cancellation. The generated function must agree with it
+    /// relative to its own value, down to s = 1 − 1e-9 where η − 1 ~ 1e-18.
+    #[test]
+    fn bc_error_is_relatively_accurate_near_one(log_t in -9.0f64..-0.3) {
+        let s = 1.0 - 10f64.powf(log_t);
+        let q = 1.0 + s + s * s;
+        let r3 = 3f64.sqrt();
+        let by_hand = ((1.0 - s) * (1.0 + 2.0 * s) * (2.0 + s)).powi(2)
+            / (3.0 * r3 * s * (1.0 + s) * (2.0 * q * q.sqrt() + 3.0 * r3 * s * (1.0 + s)));
+        let generated = thinjkr::generated::max::bc_error(s);
+        prop_assert!((generated - by_hand).abs() <= 1e-14 * by_hand, "s = {s}: {generated:e} vs {by_hand:e}");
+    }
+
     /// Zero force: the solver's state satisfies the derived relations of
     /// Section 5, evaluated from the derive crate's expressions. The printed
     /// (26), (27) lack η(s); the derived forms are used here. (28) holds as printed.

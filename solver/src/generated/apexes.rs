@@ -21,19 +21,24 @@ pub fn eta_s(s: f64) -> f64 {
 pub fn eta_and_eta_s(s: f64) -> [f64; 2] {
     [1.0, 0.0]
 }
-/// Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
+/** Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
+
+ Rewritten by the generator's accuracy check so that nothing cancels near s = 1 or ρ = 1: cancelling sums A + B√Q rationalised to (A² − B²Q)/(A − B√Q) where that was needed, and, with 1 chart(s), where a parameter among (s) is ≥ 1/2 the expression written in 1 − that parameter (computed exactly).*/
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn bc_error(s: f64) -> f64 {
-    let t0 = s.powi(2);
-    let t1 = (1.0 + s + t0);
-    let t2 = t1.sqrt();
-    let t3 = 1.7320508075688772;
-    let t4 = (1.0 + s);
-    (0.1111111111111111
-        * (-(9.0 * s * t2) + (2.0 * t3) + (4.0 * t3 * s) + (6.0 * t3 * t0)
-            + (4.0 * t3 * s.powi(3)) + (2.0 * t3 * s.powi(4)) - (9.0 * t0 * t2))
-        / ((s * t4 * t2)))
+    {
+        let t0 = s.powi(2);
+        let t1 = (1.0 + s + t0).sqrt();
+        let t2 = (1.0 + s);
+        let t3 = 1.7320508075688772;
+        let t4 = ((9.0 * (s + t0) * t1)
+            + (2.0
+                * (t3 + (2.0 * t3 * s) + (3.0 * t3 * t0) + (2.0 * t3 * s.powi(3))
+                    + (t3 * s.powi(4)))));
+        (0.3333333333333333 * (1.0 - s).powi(2) * (1.0 + (2.0 * s)).powi(2)
+            * (2.0 + s).powi(2) * t1 / ((s * t2 * t4)))
+    }
 }
 /// Residuals (19), (20) with η = η(s) and η' = dη/ds passed in.
 #[inline]
