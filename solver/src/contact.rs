@@ -26,7 +26,7 @@ use crate::error::{check_range, Error, Result};
 use crate::fold::{self, FoldCondition};
 use crate::model::{ClosureKind, Model, ModelId};
 use crate::newton::{self, NewtonConfig};
-use nalgebra::{Vector2, Vector3};
+use nalgebra::{Matrix3, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// The stability of a state, for models with an energy (the energy
@@ -123,6 +123,27 @@ impl std::fmt::Debug for Contact {
     }
 }
 
+/// The quantity a solve holds fixed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Control {
+    /// The approach δ̄.
+    Delta,
+    /// The major semi-axis ā.
+    ABar,
+    /// The force F̄.
+    Force,
+}
+
+impl Control {
+    fn value(self, st: &State) -> f64 {
+        match self {
+            Control::Delta => st.delta,
+            Control::ABar => st.a,
+            Control::Force => st.force,
+        }
+    }
+}
+
 /// Tolerance within which ρ counts as 1 (the axisymmetric case).
 const AXISYMMETRIC: f64 = 1e-12;
 
@@ -135,17 +156,6 @@ impl Contact {
     /// Any generated model at radii ratio `rho` ∈ (0, 1].
     pub fn with_model(model: ModelId, rho: f64) -> Result<Self> {
         check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-        if model.model().info().residual_degree > 1 {
-            // the explicit branch of a quadratic closure is resolved only
-            // where its two roots are apart (1e-4 relative), which misses the
-            // large-load part of the branch when 1 − ρ is small
-            check_range(
-                "rho",
-                rho,
-                rho <= 0.999 || rho == 1.0,
-                "(0, 0.999] or exactly 1 for a model with quadratic residuals (energy)",
-            )?;
-        }
         Ok(Contact {
             rho,
             model: model.model(),
@@ -287,16 +297,22 @@ impl Contact {
     fn adhesive_point(&self, s: f64) -> Option<(f64, f64)> {
         let mut best: Option<((f64, f64), f64)> = None;
         for (a, d) in self.model.branch(s, self.rho).into_iter().flatten() {
-            let x = Vector2::new(a, s);
-            let g = self
-                .model
-                .normal_derivative(x, self.rho, d, 0.0)
-                .min(self.model.normal_derivative(x, self.rho, d, 1.0));
+            let g = self.edge_slope(a, s, d);
             if g.is_finite() && g > 0.0 && best.is_none_or(|(_, gb)| g > gb) {
                 best = Some(((a, d), g));
             }
         }
         best.map(|(p, _)| p)
+    }
+
+    /// The smaller of ∂p̄/∂ν at the two apexes: positive on the adhesive
+    /// (tensile-edge) solution, negative on the mirror solution of a
+    /// closure that is even in p (the energy closure).
+    fn edge_slope(&self, a: f64, s: f64, delta: f64) -> f64 {
+        let x = Vector2::new(a, s);
+        self.model
+            .normal_derivative(x, self.rho, delta, 0.0)
+            .min(self.model.normal_derivative(x, self.rho, delta, 1.0))
     }
 
     /// The branch state at `s` without the contour-sampled error (14): for
@@ -461,40 +477,41 @@ impl Contact {
     fn polish(&self, guess: &State, context: &str) -> Result<State> {
         let delta = guess.delta;
         let m = self.model;
-        let sol = newton::solve(
+        // a guess on the adhesive side stays there
+        let adhesive_start = self.edge_slope(guess.a, guess.s, delta) > 0.0;
+        let sol = newton::solve_within(
             |x| m.residuals_and_jacobian(x, self.rho, delta),
             |a| m.residual_scale(a, delta),
             Vector2::new(guess.a, guess.s),
             &self.newton,
             context,
+            |x| !adhesive_start || self.edge_slope(x[0], x[1], delta) > 0.0,
         )?;
         let mut st = self.state_from(sol.a_bar, sol.s, delta);
         st.beyond_size_fold = guess.beyond_size_fold;
         Ok(st)
     }
 
-    /// The explicit branch state at `s`, flagged, polished by Newton.
-    fn polish_at_s(&self, s: f64, beyond_size_fold: bool, what: &str) -> Result<State> {
-        let mut guess = self
-            .state_at_s(s)
-            .ok_or_else(|| Error::NoState(format!("{what}: off the branch at s = {s}")))?;
-        guess.beyond_size_fold = beyond_size_fold;
-        self.polish(&guess, what)
-    }
-
-    /// Along the walk, all crossings of `key(state) = target`, each refined
-    /// by bisection in s on the explicit branch and polished by Newton.
-    fn crossings(
-        &self,
-        key: impl Fn(&State) -> f64,
-        target: f64,
-        what: &str,
-    ) -> Result<Vec<State>> {
+    /// Along the walk (extended at the large-load end by [`Contact::tail`]),
+    /// all crossings of the controlled quantity `control` = `target`, each
+    /// started by bisection in s on the explicit branch (or by
+    /// interpolation between two tail states) and solved by Newton on the
+    /// residuals with the control equation (so the state has the control
+    /// value to round-off, not to the bisection's resolution in s).
+    fn crossings(&self, control: Control, target: f64, what: &str) -> Result<Vec<State>> {
         let walk = self.walk()?;
+        let mut all = self.tail(&walk);
+        let n_tail = all.len();
+        all.reverse();
+        all.extend(walk);
+        let key = |st: &State| control.value(st);
         let mut out = Vec::new();
-        for w in walk.windows(2) {
+        for (k, w) in all.windows(2).enumerate() {
             let (f0, f1) = (key(&w[0]) - target, key(&w[1]) - target);
-            if f0.signum() != f1.signum() && f0.is_finite() && f1.is_finite() {
+            if f0.signum() == f1.signum() || !f0.is_finite() || !f1.is_finite() {
+                continue;
+            }
+            let guess = if k >= n_tail {
                 let s = bisect(
                     |s| {
                         self.light_state_at_s(s)
@@ -504,10 +521,172 @@ impl Contact {
                     w[1].s,
                     w[0].s,
                 )?;
-                out.push(self.polish_at_s(s, w[1].beyond_size_fold, what)?);
-            }
+                self.state_at_s(s)
+                    .ok_or_else(|| Error::NoState(format!("{what}: off the branch at s = {s}")))?
+            } else {
+                // tail states are 1.25× apart in δ̄ > 0: interpolate ln ā,
+                // s, ln δ̄ (nearly linear there) in ln of the control where
+                // it is positive
+                let (k0, k1) = (key(&w[0]), key(&w[1]));
+                let t = if k0 > 0.0 && k1 > 0.0 && target > 0.0 {
+                    (target / k0).ln() / (k1 / k0).ln()
+                } else {
+                    f0 / (f0 - f1)
+                };
+                let mut g = w[0];
+                g.a = w[0].a * (t * (w[1].a / w[0].a).ln()).exp();
+                g.s += t * (w[1].s - w[0].s);
+                g.delta = w[0].delta * (t * (w[1].delta / w[0].delta).ln()).exp();
+                // a start on the branch: the nearer tail state if the
+                // interpolated one is off the adhesive sheet
+                if self.edge_slope(g.a, g.s, g.delta) > 0.0 {
+                    g
+                } else if t < 0.5 {
+                    w[0]
+                } else {
+                    w[1]
+                }
+            };
+            let mut st = self.solve_controlled(&guess, control, target, what)?;
+            st.beyond_size_fold = w[1].beyond_size_fold;
+            out.push(st);
+        }
+        let reach = all.iter().map(key).fold(f64::NEG_INFINITY, f64::max);
+        if out.is_empty() && target > reach {
+            let last = all.iter().max_by(|p, q| key(p).total_cmp(&key(q)));
+            return Err(Error::NoState(format!(
+                "{what}: {control:?} = {target:e} is beyond the largest value reached on the branch of model {} at rho = {} ({reach:.6e}, at a_bar = {:.6e}): the branch is followed up to a_bar = 1e4, or less where Newton no longer reaches the adhesive root (a model with quadratic residuals, at large loads)",
+                self.model_id(),
+                self.rho,
+                last.map(|st| st.a).unwrap_or(f64::NAN)
+            )));
         }
         Ok(out)
+    }
+
+    /// Newton's method on z = (ā, s, δ̄) for the model's residuals and the
+    /// control equation `control(z) = target` (the bordered system
+    /// [∂r/∂(ā, s) ∂r/∂δ̄; ∇control]), from `guess`.
+    fn solve_controlled(
+        &self,
+        guess: &State,
+        control: Control,
+        target: f64,
+        what: &str,
+    ) -> Result<State> {
+        let m = self.model;
+        let mut z = Vector3::new(guess.a, guess.s, guess.delta);
+        let adhesive_start = self.edge_slope(z[0], z[1], z[2]) > 0.0;
+        let mut last = f64::INFINITY;
+        for _ in 0..60 {
+            let x = Vector2::new(z[0], z[1]);
+            let (r, j) = m.residuals_and_jacobian(x, self.rho, z[2]);
+            let d = m.residuals_d_delta(x, self.rho, z[2]);
+            let (g, grad) = match control {
+                Control::Force => (
+                    m.force_bar(x, self.rho, z[2]),
+                    m.force_bar_gradient(x, self.rho, z[2]),
+                ),
+                Control::ABar => (z[0], Vector3::new(1.0, 0.0, 0.0)),
+                Control::Delta => (z[2], Vector3::new(0.0, 0.0, 1.0)),
+            };
+            let mat = Matrix3::new(
+                j[(0, 0)], j[(0, 1)], d[0],
+                j[(1, 0)], j[(1, 1)], d[1],
+                grad[0], grad[1], grad[2],
+            );
+            let rhs = -Vector3::new(r[0], r[1], g - target);
+            let Some(step) = mat.lu().solve(&rhs).filter(|v| v.iter().all(|x| x.is_finite()))
+            else {
+                break;
+            };
+            // damped to stay in the domain, and on the adhesive sheet when
+            // started there
+            let mut lambda = 1.0;
+            while lambda > 1e-9 {
+                let zn = z + step * lambda;
+                if zn[0] > 0.0
+                    && zn[1] > 0.0
+                    && zn[1] <= 1.0
+                    && (!adhesive_start || self.edge_slope(zn[0], zn[1], zn[2]) > 0.0)
+                {
+                    break;
+                }
+                lambda *= 0.5;
+            }
+            z += step * lambda;
+            z[1] = z[1].min(1.0);
+            let size = step.component_div(&z.map(|v| 1.0 + v.abs())).amax();
+            if size < 1e-14 || (size < 1e-10 && size >= 0.5 * last) {
+                let x = Vector2::new(z[0], z[1]);
+                let rn = m.residuals_and_jacobian(x, self.rho, z[2]).0.norm()
+                    / m.residual_scale(z[0], z[2]);
+                if rn < 1e-11 {
+                    return self.adhesive_or_error(self.state_from(z[0], z[1], z[2]), what);
+                }
+            }
+            last = size;
+        }
+        Err(Error::NoConvergence {
+            iterations: 60,
+            a_bar: z[0],
+            s: z[1],
+            residual: f64::NAN,
+            context: format!("{what}: {control:?} = {target} at rho = {}", self.rho),
+        })
+    }
+
+    /// `st` if it is adhesive (tensile edge), else an error: at large loads
+    /// the two roots of a quadratic closure are nearly equal in (ā, s, δ̄),
+    /// and Newton may reach the compressive-edge one.
+    fn adhesive_or_error(&self, st: State, what: &str) -> Result<State> {
+        if self.edge_slope(st.a, st.s, st.delta) > 0.0 {
+            return Ok(st);
+        }
+        Err(Error::NoState(format!(
+            "{what}: Newton reached the compressive-edge (non-adhesive) root at a_bar = {:.6e}, s = {:.6e}, delta_bar = {:.6e} (rho = {}), not the adhesive state; at such loads the two roots of model {} are nearly equal",
+            st.a, st.s, st.delta, self.rho, self.model_id()
+        )))
+    }
+
+    /// The branch beyond the walk's large-load end: from the walk's two
+    /// states nearest s∞, natural continuation in δ̄ (×1.25 per step, the
+    /// predictor linear in ln δ̄ through the last two states for ln ā and
+    /// s) up to ā = 1e4, stopping where Newton fails or reaches a state
+    /// that is not adhesive. The walk samples s, and for a model with
+    /// quadratic residuals it stops short of s∞ (its two roots meet
+    /// there), which near ρ = 1 is still at moderate loads; this part
+    /// reaches large loads. The two roots of a quadratic closure differ
+    /// there by O(ā⁻³) in ln ā, and so does the predictor's error (the
+    /// curvature of the branch in ln δ̄), so a fixed small step keeps
+    /// Newton on the adhesive root.
+    fn tail(&self, walk: &[State]) -> Vec<State> {
+        let mut out = Vec::new();
+        let (mut prev, mut older) = match walk {
+            [a, b, ..] => (*a, *b),
+            _ => return out,
+        };
+        while prev.a < 1e4 && prev.delta > 0.0 && older.delta > 0.0 && older.delta != prev.delta {
+            let step = 1.25f64.ln();
+            let dl = (prev.delta / older.delta).ln();
+            let mut g = prev;
+            g.delta = prev.delta * step.exp();
+            g.a = prev.a * ((prev.a / older.a).ln() / dl * step).exp();
+            g.s = prev.s + (prev.s - older.s) / dl * step;
+            match self.polish(&g, "large-load continuation") {
+                Ok(st)
+                    if st.a > prev.a
+                        && (st.s - prev.s).abs() < 0.1
+                        && self.edge_slope(st.a, st.s, st.delta) > 0.0 =>
+                {
+                    out.push(st);
+                    older = prev;
+                    prev = st;
+                }
+                _ => break,
+            }
+        }
+        out
     }
 
     /// The first minimum of `key` along the walk from s∞ that is the
@@ -566,9 +745,12 @@ impl Contact {
                 1e-9,
                 1e9,
             )?;
-            return self.axisymmetric_state(a);
+            // ā is the root to round-off; the state is at the δ̄ asked for
+            let mut st = self.axisymmetric_state(a)?;
+            st.delta = delta;
+            return Ok(st);
         }
-        self.crossings(|st| st.delta, delta, "displacement control")?
+        self.crossings(Control::Delta, delta, "displacement control")?
             .into_iter()
             .next()
             .ok_or_else(|| Error::NoState(format!("no contact at delta = {delta} for rho = {} (below the displacement-controlled pull-off)", self.rho)))
@@ -581,7 +763,7 @@ impl Contact {
         if self.axisymmetric() {
             return Ok(vec![self.axisymmetric_state(a)?]);
         }
-        self.crossings(|st| st.a, a, "contact-size control")
+        self.crossings(Control::ABar, a, "contact-size control")
     }
 
     /// The fold of the contact size: the minimum of ā along the branch.
@@ -634,7 +816,7 @@ impl Contact {
             }
             return Ok(out);
         }
-        self.crossings(|st| st.force, force, "load control")
+        self.crossings(Control::Force, force, "load control")
     }
 
     /// Pull-off under load control: the minimum of F̄ along the branch,

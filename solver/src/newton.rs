@@ -3,7 +3,7 @@
 //! that also keeps the iterate inside the domain ā > 0, 0 < s ≤ 1. Written
 //! once for every model.
 //!
-//! Owns: [`NewtonConfig`], [`solve`]. May use: `error`, nalgebra.
+//! Owns: [`NewtonConfig`], [`solve`], [`solve_within`]. May use: `error`, nalgebra.
 
 use crate::error::{Error, Result};
 use nalgebra::{Matrix2, Vector2};
@@ -63,6 +63,21 @@ pub fn solve(
     config: &NewtonConfig,
     context: &str,
 ) -> Result<Solution> {
+    solve_within(f, scale, start, config, context, |_| true)
+}
+
+/// [`solve`], with the line search also rejecting iterates where
+/// `admissible` is false (a solution set with two nearby sheets, such as
+/// the adhesive and compressive-edge roots of a quadratic closure at large
+/// loads, is then kept on the start's sheet).
+pub fn solve_within(
+    f: impl Fn(Vector2<f64>) -> (Vector2<f64>, Matrix2<f64>),
+    scale: impl Fn(f64) -> f64,
+    start: Vector2<f64>,
+    config: &NewtonConfig,
+    context: &str,
+    admissible: impl Fn(Vector2<f64>) -> bool,
+) -> Result<Solution> {
     let (mut a, mut s) = (start[0], start[1]);
     let norm = |r: Vector2<f64>, a: f64| r.norm() / scale(a);
     let (mut r, mut j) = f(Vector2::new(a, s));
@@ -95,7 +110,7 @@ pub fn solve(
         let mut accepted = false;
         while lambda >= config.min_step {
             let (an, sn) = (a + lambda * step[0], s + lambda * step[1]);
-            if an > 0.0 && sn > 0.0 && sn <= 1.0 + 1e-12 {
+            if an > 0.0 && sn > 0.0 && sn <= 1.0 + 1e-12 && admissible(Vector2::new(an, sn.min(1.0))) {
                 let (rt, jt) = f(Vector2::new(an, sn.min(1.0)));
                 let rtn = norm(rt, an);
                 if rtn.is_finite() && rtn < rn * (1.0 - 1e-4 * lambda) {
