@@ -18,6 +18,7 @@
 pub mod contact;
 pub mod curve;
 pub mod error;
+pub mod exact;
 pub mod figures;
 pub mod fold;
 #[allow(missing_docs)]

@@ -1,0 +1,247 @@
+//! The solution family of the exact problem traced by pseudo-arclength
+//! continuation in u = (A, b₀..b_{N−1}, δ̄), with ā free: the family can
+//! turn back in ā (a fold of the contact size, where the contour turns
+//! strongly non-elliptical near a bifurcation of the circle branch), so ā
+//! is not a safe parameter. Folds in ā and in F̄ are reported as data; the
+//! load-controlled pull-off is the first minimum of F̄ along the family
+//! from large loads, located by the secant method on dF̄/dσ = 0.
+//! Bifurcation points are flagged where the determinant of the bordered
+//! Jacobian [∂r/∂u; tᵀ] changes sign (at a fold it does not).
+//!
+//! Owns: [`Branch`], [`BranchPoint`], [`Event`]. May use: `exact`, `error`.
+
+use super::{Exact, ExactState};
+use crate::error::{Error, Result};
+use nalgebra::{DMatrix, DVector};
+use serde::Serialize;
+
+/// What happens between two traced points.
+#[derive(Clone, Debug, Serialize)]
+pub enum Event {
+    /// ā turns (a fold of the contact size) near this ā.
+    SizeFold {
+        /// ā at the fold (the nearer traced point).
+        a_bar: f64,
+    },
+    /// F̄ has a minimum here (the load-controlled pull-off when it is the
+    /// first from large loads), refined.
+    ForceMinimum {
+        /// The refined state.
+        state: Box<ExactState>,
+    },
+    /// The determinant of the bordered Jacobian changes sign: a
+    /// bifurcation point of the family lies between these ā.
+    Bifurcation {
+        /// ā at the two traced points that bracket it.
+        between: [f64; 2],
+    },
+}
+
+/// One traced point.
+#[derive(Clone, Debug, Serialize)]
+pub struct BranchPoint {
+    /// The state.
+    pub state: ExactState,
+    /// dF̄/dσ along the unit tangent in u.
+    pub d_force: f64,
+    /// dā/dσ.
+    pub d_a_bar: f64,
+}
+
+/// A traced piece of the family.
+#[derive(Clone, Debug, Serialize)]
+pub struct Branch {
+    /// The traced points in order.
+    pub points: Vec<BranchPoint>,
+    /// The events met, in order.
+    pub events: Vec<Event>,
+}
+
+/// Residuals, Jacobian (central differences) and ∇F̄ at u.
+fn linearise(ex: &Exact, u: &DVector<f64>) -> Option<(DVector<f64>, DMatrix<f64>, DVector<f64>)> {
+    let (r, _) = ex.modes(u)?;
+    let n = u.len();
+    let mut j = DMatrix::zeros(r.len(), n);
+    let mut g = DVector::zeros(n);
+    for k in 0..n {
+        let h = 1e-6 * (1.0 + u[k].abs());
+        let mut up = u.clone();
+        let mut um = u.clone();
+        up[k] += h;
+        um[k] -= h;
+        let (rp, fp) = ex.modes(&up)?;
+        let (rm, fm) = ex.modes(&um)?;
+        j.set_column(k, &((rp - rm) / (2.0 * h)));
+        g[k] = (fp - fm) / (2.0 * h);
+    }
+    Some((r, j, g))
+}
+
+/// The unit tangent t with ∂r/∂u t = 0 and t·t_prev > 0, and the
+/// determinant of the bordered matrix [∂r/∂u; t_prevᵀ].
+fn tangent(j: &DMatrix<f64>, t_prev: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
+    let n = t_prev.len();
+    let mut m = DMatrix::zeros(n, n);
+    m.rows_mut(0, n - 1).copy_from(j);
+    m.row_mut(n - 1).copy_from(&t_prev.transpose());
+    let mut rhs = DVector::zeros(n);
+    rhs[n - 1] = 1.0;
+    let lu = m.lu();
+    let det = lu.determinant();
+    let t = lu.solve(&rhs)?;
+    let norm = t.norm();
+    (norm.is_finite() && norm > 0.0).then(|| (t / norm, det))
+}
+
+/// dā/du: ā = A + Σ b_j.
+fn a_bar_gradient(n: usize) -> DVector<f64> {
+    let mut g = DVector::from_element(n, 1.0);
+    g[n - 1] = 0.0;
+    g
+}
+
+impl Exact {
+    /// Newton's method for r(u) = 0 with t·(u − u_pred) = 0.
+    fn correct(&self, u_pred: &DVector<f64>, t: &DVector<f64>) -> Option<DVector<f64>> {
+        let n = u_pred.len();
+        let mut u = u_pred.clone();
+        for _ in 0..25 {
+            let (r, j, _) = linearise(self, &u)?;
+            let mut m = DMatrix::zeros(n, n);
+            m.rows_mut(0, n - 1).copy_from(&j);
+            m.row_mut(n - 1).copy_from(&t.transpose());
+            let mut rhs = DVector::zeros(n);
+            rhs.rows_mut(0, n - 1).copy_from(&(-&r));
+            rhs[n - 1] = -t.dot(&(&u - u_pred));
+            let step = m.lu().solve(&rhs)?;
+            u += &step;
+            if step.amax() < 1e-12 * (1.0 + u.amax()) {
+                let (r, _) = self.modes(&u)?;
+                return (r.amax() < super::RESIDUAL_TOLERANCE).then_some(u);
+            }
+        }
+        None
+    }
+
+    /// Trace the family from `start` (a converged state) towards smaller
+    /// ā, for at most `max_points` points or until ā < `a_min`, with
+    /// arclength steps (in u) adapted between 1e-4 and `max_step`. Every
+    /// fold in ā, minimum of F̄ (refined) and sign change of the bordered
+    /// determinant (a bifurcation) is an event. A step that cannot be
+    /// corrected even at the smallest size is an error that says where.
+    pub fn trace(
+        &self,
+        start: &ExactState,
+        a_min: f64,
+        max_step: f64,
+        max_points: usize,
+    ) -> Result<Branch> {
+        let n = self.truncation.modes + 2;
+        let da = a_bar_gradient(n);
+        let fail = |st: &ExactState, why: String| Error::NoConvergence {
+            iterations: 25,
+            a_bar: st.a_bar,
+            s: st.s,
+            residual: f64::NAN,
+            context: format!("exact branch at rho = {}: {why}", self.rho),
+        };
+        let mut u = self.unknowns(start);
+        let (_, j, g) = linearise(self, &u).ok_or_else(|| fail(start, "singular start".into()))?;
+        // the initial tangent points to smaller ā
+        let (mut t, mut det) = tangent(&j, &(-&da)).ok_or_else(|| fail(start, "no tangent".into()))?;
+        if t.dot(&da) > 0.0 {
+            t = -t;
+        }
+        let mut points = vec![BranchPoint {
+            state: start.clone(),
+            d_force: g.dot(&t),
+            d_a_bar: da.dot(&t),
+        }];
+        let mut events = Vec::new();
+        let mut h = max_step;
+        while points.len() < max_points {
+            let last = points.last().expect("one point").state.clone();
+            if last.a_bar < a_min {
+                break;
+            }
+            let Some(un) = self.correct(&(&u + &t * h), &t) else {
+                if h <= 1e-4 {
+                    return Err(fail(&last, format!("no corrected point at step {h:e} after a_bar = {}", last.a_bar)));
+                }
+                h = (h * 0.5).max(1e-4);
+                continue;
+            };
+            let (_, j, g) = linearise(self, &un).ok_or_else(|| fail(&last, "singular system".into()))?;
+            let Some((tn, detn)) = tangent(&j, &t) else {
+                return Err(fail(&last, "no tangent".into()));
+            };
+            let st = self.state(&un)?;
+            let p = BranchPoint {
+                d_force: g.dot(&tn),
+                d_a_bar: da.dot(&tn),
+                state: st,
+            };
+            let prev = points.last().expect("one point");
+            if prev.d_a_bar.signum() != p.d_a_bar.signum() {
+                events.push(Event::SizeFold { a_bar: p.state.a_bar });
+            }
+            if detn.signum() != det.signum() {
+                events.push(Event::Bifurcation {
+                    between: [prev.state.a_bar, p.state.a_bar],
+                });
+            }
+            if prev.d_force < 0.0 && p.d_force >= 0.0 {
+                let refined = self.refine_force_minimum(&u, &t, prev.d_force, &un, p.d_force)?;
+                events.push(Event::ForceMinimum {
+                    state: Box::new(refined),
+                });
+            }
+            u = un;
+            t = tn;
+            det = detn;
+            points.push(p);
+            h = (h * 1.3).min(max_step);
+        }
+        Ok(Branch { points, events })
+    }
+
+    /// The minimum of F̄ between two traced points (u0 with tangent t0 and
+    /// dF̄/dσ = f0 < 0, u1 with f1 ≥ 0), by the secant method on dF̄/dσ
+    /// along the arclength from u0.
+    fn refine_force_minimum(
+        &self,
+        u0: &DVector<f64>,
+        t0: &DVector<f64>,
+        f0: f64,
+        u1: &DVector<f64>,
+        f1: f64,
+    ) -> Result<ExactState> {
+        let sigma1 = t0.dot(&(u1 - u0));
+        let (mut sa, mut fa) = (0.0, f0);
+        let (mut sb, mut fb) = (sigma1, f1);
+        let mut best = u1.clone();
+        for _ in 0..40 {
+            let sigma = sb - fb * (sb - sa) / (fb - fa);
+            // the minimum can sit on a bifurcation point (at ρ = 1 it does:
+            // ā³ = 12 is the neutral point of the mode n = 4), where the
+            // bordered system is singular: correct a little beside it
+            // (F̄ changes quadratically, so by ~1e-12 for 1e-6)
+            let u = [0.0, 1e-6, -1e-6, 1e-4, -1e-4]
+                .iter()
+                .find_map(|off| self.correct(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0))
+                .ok_or_else(|| {
+                    Error::NoState(format!("exact pull-off at rho = {}: no corrected point near the force minimum (sigma = {sigma})", self.rho))
+                })?;
+            let (_, j, g) = linearise(self, &u).ok_or_else(|| Error::NoState("singular system at the force minimum".into()))?;
+            let (t, _) = tangent(&j, t0).ok_or_else(|| Error::NoState("no tangent at the force minimum".into()))?;
+            let f = g.dot(&t);
+            best = u;
+            if (sigma - sb).abs() < 1e-10 * (1.0 + sigma.abs()) || f == 0.0 {
+                break;
+            }
+            (sa, fa) = (sb, fb);
+            (sb, fb) = (sigma, f);
+        }
+        self.state(&best)
+    }
+}

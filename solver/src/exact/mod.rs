@@ -1,0 +1,558 @@
+//! The exact solution of the free-boundary problem (2)–(3): the reference
+//! against which every approximate model (every closure of the ellipse) is
+//! measured.
+//!
+//! In the units (17) (a = āL, δ = δ̄L²/R₁, F = F̄·2R₁Δγ, p = p̄·√(2mΔγ)·L,
+//! L = (2R₁²Δγ/m)^(1/6)) the problem (1)–(3) has no parameter but ρ and δ̄:
+//! find a domain ω, symmetric about both axes, and p̄ with
+//!
+//!   Δp̄ = X²/2 + Y²/(2ρ) − δ̄ in ω,   p̄ = 0 and ∂p̄/∂ν = 1 on ∂ω,   F̄ = ∫ω p̄ dA.
+//!
+//! (Eq. (2) is Δp = m(φ − δ) with the gap (1)₁ φ = x²/(2R₁) + y²/(2R₂);
+//! with x = LX, δ = δ̄L²/R₁ and p = P₀p̄ it becomes (P₀/L²)Δp̄ =
+//! (mL²/R₁)(X²/2 + Y²/(2ρ) − δ̄), so P₀ = mL⁴/R₁ = √(2mΔγ)·L (as L³ =
+//! R₁√(2Δγ/m)), and (3)₂ becomes ∂p̄/∂ν = √(2mΔγ)L/P₀ = 1; F = P₀L²F̄ =
+//! 2R₁Δγ F̄. At ρ = 1 the circle of radius ā with δ̄ = ā²/4 − 2/ā,
+//! F̄ = π(ā⁶ − 24ā³)/96 solves it exactly:
+//! the derived (22)–(25).)
+//!
+//! Method: the contour is the curve z(θ) = A e^{iθ} + Σ_{j<N} b_j e^{−(2j+1)iθ}
+//! (the form of the exterior conformal map of a doubly symmetric domain;
+//! the ellipse with semi-axes a, b is A = (a+b)/2, b₀ = (a−b)/2). p̄ = q + P
+//! with the particular solution P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4 and q
+//! harmonic with q = −P on the contour ([`bie`]: second-kind boundary
+//! integral equation, trapezoid rule on n points). The condition
+//! ∂p̄/∂ν = 1 is imposed on the cosine modes cos 2kθ, k = 0..N, of
+//! ∂p̄/∂ν − 1 (the doubly symmetric part; the rest vanishes by symmetry),
+//! and ā = z(0) fixes the member of the family: N + 2 equations for
+//! (A, b₀..b_{N−1}, δ̄), solved by Newton's method with a central-difference
+//! Jacobian (the solution is that of the discrete equations whatever the
+//! Jacobian's accuracy; only the rate of convergence depends on it).
+//! F̄ = ∫ p̄ dA by Green's identity with w = (X² + Y²)/4:
+//! F̄ = −∮ w ∂p̄/∂ν ds + ∮ W dY, ∂W/∂X = w·(X²/2 + Y²/(2ρ) − δ̄).
+//!
+//! Owns: [`ExactState`], [`Exact`], [`Truncation`]. May use: `error`,
+//! nalgebra; no model of the ellipse (it is the reference for them), except
+//! as a starting guess supplied by the caller.
+
+pub mod bie;
+pub mod branch;
+
+use crate::error::{Error, Result};
+use bie::{solve_dirichlet, ContourSamples, Grid};
+use nalgebra::{Complex, DMatrix, DVector};
+use serde::Serialize;
+
+/// The largest cosine mode of ∂p̄/∂ν − 1 accepted at convergence (the
+/// round-off floor of the boundary integral solution is about 1e-13).
+pub const RESIDUAL_TOLERANCE: f64 = 1e-11;
+
+/// The discretisation: contour modes and quadrature points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Truncation {
+    /// Number of contour coefficients b_j (and of imposed modes minus one).
+    pub modes: usize,
+    /// Quadrature points on the contour.
+    pub points: usize,
+}
+
+impl Default for Truncation {
+    fn default() -> Self {
+        Truncation {
+            modes: 12,
+            points: 192,
+        }
+    }
+}
+
+/// The contour z(θ) = A e^{iθ} + Σ b_j e^{−(2j+1)iθ}.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Contour {
+    /// The leading coefficient A.
+    pub a: f64,
+    /// The coefficients b_j of e^{−(2j+1)iθ}.
+    pub b: Vec<f64>,
+}
+
+impl Contour {
+    /// The ellipse with semi-axes `a` (along X) and `b` (along Y).
+    pub fn ellipse(a: f64, b: f64, modes: usize) -> Contour {
+        let mut c = vec![0.0; modes.max(1)];
+        c[0] = 0.5 * (a - b);
+        Contour {
+            a: 0.5 * (a + b),
+            b: c,
+        }
+    }
+
+    /// z, z', z'' at θ.
+    pub fn at(&self, theta: f64) -> [Complex<f64>; 3] {
+        let i = Complex::new(0.0, 1.0);
+        let e = Complex::new(0.0, theta).exp();
+        let mut z = self.a * e;
+        let mut dz = i * self.a * e;
+        let mut ddz = -self.a * e;
+        for (j, &b) in self.b.iter().enumerate() {
+            let k = -(2.0 * j as f64 + 1.0);
+            let ek = Complex::new(0.0, k * theta).exp();
+            z += b * ek;
+            dz += i * k * b * ek;
+            ddz += -k * k * b * ek;
+        }
+        [z, dz, ddz]
+    }
+
+    /// The half-width on the X axis, z(0).
+    pub fn a_bar(&self) -> f64 {
+        self.a + self.b.iter().sum::<f64>()
+    }
+
+    /// The half-width on the Y axis, Im z(π/2).
+    pub fn b_bar(&self) -> f64 {
+        self.at(std::f64::consts::FRAC_PI_2)[0].im
+    }
+
+    fn samples(&self, grid: &Grid) -> ContourSamples {
+        let mut c = ContourSamples {
+            z: Vec::with_capacity(grid.len()),
+            dz: Vec::with_capacity(grid.len()),
+            ddz: Vec::with_capacity(grid.len()),
+        };
+        for &t in &grid.theta {
+            let [z, dz, ddz] = self.at(t);
+            c.z.push(z);
+            c.dz.push(dz);
+            c.ddz.push(ddz);
+        }
+        c
+    }
+
+    /// The largest distance, along rays from the centre and relative to
+    /// ā, between this contour and the ellipse with the same half-widths,
+    /// over `n` points.
+    pub fn deviation_from_ellipse(&self, n: usize) -> f64 {
+        let (a, b) = (self.a_bar(), self.b_bar());
+        (0..n)
+            .map(|k| {
+                let z = self.at(2.0 * std::f64::consts::PI * k as f64 / n as f64)[0];
+                let phi = z.im.atan2(z.re);
+                let r_ell = a * b / ((b * phi.cos()).powi(2) + (a * phi.sin()).powi(2)).sqrt();
+                (z.norm() - r_ell).abs() / a
+            })
+            .fold(0.0, f64::max)
+    }
+}
+
+/// ∂p̄/∂ν on the contour and F̄ for a given contour, ρ and δ̄.
+pub struct Fields {
+    /// ∂p̄/∂ν at the grid points.
+    pub normal_derivative: Vec<f64>,
+    /// F̄ = ∫ p̄ dA.
+    pub force: f64,
+}
+
+/// ∂p̄/∂ν and F̄ for the contour `c` (any contour: the boundary condition
+/// (3)₂ is not imposed here).
+pub fn fields(c: &Contour, rho: f64, delta_bar: f64, grid: &Grid) -> Option<Fields> {
+    let s = c.samples(grid);
+    let n = grid.len();
+    // P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4
+    let p_part = |z: Complex<f64>| {
+        let (x, y) = (z.re, z.im);
+        x.powi(4) / 24.0 + y.powi(4) / (24.0 * rho) - delta_bar * (x * x + y * y) / 4.0
+    };
+    let g: Vec<f64> = s.z.iter().map(|&z| -p_part(z)).collect();
+    let d = solve_dirichlet(grid, &s, &g)?;
+    let h = 2.0 * std::f64::consts::PI / n as f64;
+    let mut force = 0.0;
+    let mut dn = Vec::with_capacity(n);
+    for i in 0..n {
+        let (z, dz) = (s.z[i], s.dz[i]);
+        let (x, y) = (z.re, z.im);
+        let speed = dz.norm();
+        let (nx, ny) = (dz.im / speed, -dz.re / speed);
+        let grad_p = (
+            x.powi(3) / 6.0 - delta_bar * x / 2.0,
+            y.powi(3) / (6.0 * rho) - delta_bar * y / 2.0,
+        );
+        let dp = d.normal_derivative[i] + grad_p.0 * nx + grad_p.1 * ny;
+        dn.push(dp);
+        // F̄ = −∮ w ∂p̄/∂ν ds + ∮ W dY, w = (X² + Y²)/4,
+        // W = ∫ w f dX with f = X²/2 + Y²/(2ρ) − δ̄:
+        // w f = X⁴/8 + X²(Y²/(8ρ) + Y²/8 − δ̄/4) + Y²(Y²/(2ρ) − δ̄)/4
+        let w = (x * x + y * y) / 4.0;
+        let c2 = y * y / (8.0 * rho) + y * y / 8.0 - delta_bar / 4.0;
+        let c0 = y * y * (y * y / (2.0 * rho) - delta_bar) / 4.0;
+        let big_w = x.powi(5) / 40.0 + c2 * x.powi(3) / 3.0 + c0 * x;
+        force += (-w * dp * speed + big_w * dz.im) * h;
+    }
+    Some(Fields {
+        normal_derivative: dn,
+        force,
+    })
+}
+
+/// The pressure p̄ of a solved contour, evaluated anywhere inside it.
+pub struct Field {
+    rho: f64,
+    delta_bar: f64,
+    samples: ContourSamples,
+    /// F at the contour points (its real part is −P there).
+    boundary: Vec<Complex<f64>>,
+}
+
+impl Field {
+    /// p̄ at (X, Y) inside the contour: P plus the harmonic part q = Re F,
+    /// with F evaluated by the barycentric Cauchy formula
+    /// F(z) = Σ F_j τ'_j/(τ_j − z) / Σ τ'_j/(τ_j − z) from its boundary
+    /// values F_j (Helsing–Ioakimidis: the quadrature errors of numerator
+    /// and denominator cancel, which keeps points near the contour accurate).
+    pub fn pressure(&self, x: f64, y: f64) -> f64 {
+        let z = Complex::new(x, y);
+        let mut num = Complex::new(0.0, 0.0);
+        let mut den = Complex::new(0.0, 0.0);
+        for j in 0..self.samples.z.len() {
+            let d = self.samples.z[j] - z;
+            if d.norm() == 0.0 {
+                return 0.0;
+            }
+            let w = self.samples.dz[j] / d;
+            num += w * self.boundary[j];
+            den += w;
+        }
+        let q = (num / den).re;
+        let p_part = x.powi(4) / 24.0 + y.powi(4) / (24.0 * self.rho)
+            - self.delta_bar * (x * x + y * y) / 4.0;
+        q + p_part
+    }
+}
+
+/// One exact state: a member of the solution family of (2)–(3).
+#[derive(Clone, Debug, Serialize)]
+pub struct ExactState {
+    /// Radii ratio ρ.
+    pub rho: f64,
+    /// Half-width of ω on the X axis.
+    pub a_bar: f64,
+    /// Half-width of ω on the Y axis.
+    pub b_bar: f64,
+    /// Aspect ratio b̄/ā.
+    pub s: f64,
+    /// Approach δ̄.
+    pub delta_bar: f64,
+    /// Force F̄.
+    pub force_bar: f64,
+    /// The contour.
+    pub contour: Contour,
+    /// max |∂p̄/∂ν − 1| on an independent grid of twice the points.
+    pub bc_error: f64,
+    /// Largest radial distance from the ellipse with the same
+    /// half-widths, relative to ā.
+    pub deviation_from_ellipse: f64,
+    /// The discretisation used.
+    pub truncation: Truncation,
+}
+
+/// The exact problem at one ρ and truncation.
+pub struct Exact {
+    rho: f64,
+    truncation: Truncation,
+    grid: Grid,
+    fine: Grid,
+}
+
+impl Exact {
+    /// The exact problem at `rho` ∈ (0, 1].
+    pub fn new(rho: f64, truncation: Truncation) -> Result<Exact> {
+        if !(rho > 0.0 && rho <= 1.0) {
+            return Err(Error::OutOfRange {
+                name: "rho",
+                value: rho,
+                range: "(0, 1]",
+            });
+        }
+        if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {
+            return Err(Error::OutOfRange {
+                name: "truncation.points",
+                value: truncation.points as f64,
+                range: "at least 4 · modes + 8 (and modes ≥ 1)",
+            });
+        }
+        Ok(Exact {
+            rho,
+            truncation,
+            grid: Grid::new(truncation.points),
+            fine: Grid::new(2 * truncation.points),
+        })
+    }
+
+    /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 at u = (A, b₀..b_{N−1}, δ̄)
+    /// (the family's equations, ā free), and F̄.
+    pub(crate) fn modes(&self, u: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
+        let n_modes = self.truncation.modes;
+        let (r, force) = self.equations(u, 0.0)?;
+        Some((r.rows(1, n_modes + 1).into_owned(), force))
+    }
+
+    /// The truncation.
+    pub fn truncation(&self) -> Truncation {
+        self.truncation
+    }
+
+    /// The radii ratio.
+    pub fn rho(&self) -> f64 {
+        self.rho
+    }
+
+    /// The unknowns u = (A, b₀..b_{N−1}, δ̄) of a state.
+    pub(crate) fn unknowns(&self, st: &ExactState) -> DVector<f64> {
+        let nm = self.truncation.modes;
+        let mut u = DVector::zeros(nm + 2);
+        u[0] = st.contour.a;
+        for j in 0..nm {
+            u[j + 1] = st.contour.b.get(j).copied().unwrap_or(0.0);
+        }
+        u[nm + 1] = st.delta_bar;
+        u
+    }
+
+    /// The pressure field of a state (its boundary integral solved again on
+    /// twice the points).
+    pub fn field(&self, st: &ExactState) -> Result<Field> {
+        let samples = st.contour.samples(&self.fine);
+        let p_part = |z: Complex<f64>| {
+            let (x, y) = (z.re, z.im);
+            x.powi(4) / 24.0 + y.powi(4) / (24.0 * self.rho) - st.delta_bar * (x * x + y * y) / 4.0
+        };
+        let g: Vec<f64> = samples.z.iter().map(|&z| -p_part(z)).collect();
+        let d = solve_dirichlet(&self.fine, &samples, &g)
+            .ok_or_else(|| Error::NoState("exact field: singular boundary integral equation".into()))?;
+        // F_j = μ_j + (1/(i n)) [Σ_{k≠j} (μ_k − μ_j) τ'_k/(τ_k − τ_j) + μ'_j]
+        let mu = &d.density;
+        let d_mu = self.fine.derivative(mu);
+        let n = samples.z.len();
+        let i_n = Complex::new(0.0, n as f64);
+        let boundary = (0..n)
+            .map(|j| {
+                let mut sum = Complex::new(d_mu[j], 0.0);
+                for k in 0..n {
+                    if k != j {
+                        sum += (mu[k] - mu[j]) * samples.dz[k] / (samples.z[k] - samples.z[j]);
+                    }
+                }
+                mu[j] + sum / i_n
+            })
+            .collect();
+        Ok(Field {
+            rho: self.rho,
+            delta_bar: st.delta_bar,
+            samples,
+            boundary,
+        })
+    }
+
+    /// The equations at u = (A, b₀..b_{N−1}, δ̄): z(0) − ā and the cosine
+    /// modes k = 0..N of ∂p̄/∂ν − 1.
+    fn equations(&self, u: &DVector<f64>, a_bar: f64) -> Option<(DVector<f64>, f64)> {
+        let n_modes = self.truncation.modes;
+        let c = Contour {
+            a: u[0],
+            b: u.rows(1, n_modes).iter().copied().collect(),
+        };
+        let f = fields(&c, self.rho, u[n_modes + 1], &self.grid)?;
+        let n = self.grid.len();
+        let mut r = DVector::zeros(n_modes + 2);
+        r[0] = c.a_bar() - a_bar;
+        for k in 0..=n_modes {
+            let mut m = 0.0;
+            for (i, &t) in self.grid.theta.iter().enumerate() {
+                m += (f.normal_derivative[i] - 1.0) * (2.0 * k as f64 * t).cos();
+            }
+            r[k + 1] = m / n as f64;
+        }
+        Some((r, f.force))
+    }
+
+    /// The exact state with half-width `a_bar` on the X axis, by Newton's
+    /// method from the contour `guess` and approach `delta_guess` (an
+    /// approximate model's state, or a neighbour on the family).
+    pub fn solve(&self, a_bar: f64, guess: &Contour, delta_guess: f64) -> Result<ExactState> {
+        let nm = self.truncation.modes;
+        let mut u = DVector::zeros(nm + 2);
+        u[0] = guess.a;
+        for j in 0..nm {
+            u[j + 1] = guess.b.get(j).copied().unwrap_or(0.0);
+        }
+        u[nm + 1] = delta_guess;
+        let fail = |u: &DVector<f64>, res: f64, it: usize, why: &str| Error::NoConvergence {
+            iterations: it,
+            a_bar,
+            s: f64::NAN,
+            residual: res,
+            context: format!(
+                "exact solution at rho = {}, a_bar = {a_bar} (delta_bar = {}): {why}",
+                self.rho,
+                u[nm + 1]
+            ),
+        };
+        let mut last_step = f64::INFINITY;
+        for it in 0..40 {
+            let (r, _) = self
+                .equations(&u, a_bar)
+                .ok_or_else(|| fail(&u, f64::NAN, it, "singular boundary integral equation"))?;
+            // central-difference Jacobian
+            let mut jac = DMatrix::zeros(nm + 2, nm + 2);
+            for k in 0..nm + 2 {
+                let h = 1e-6 * (1.0 + u[k].abs());
+                let mut up = u.clone();
+                let mut um = u.clone();
+                up[k] += h;
+                um[k] -= h;
+                let (rp, _) = self
+                    .equations(&up, a_bar)
+                    .ok_or_else(|| fail(&u, r.amax(), it, "singular system in the Jacobian"))?;
+                let (rm, _) = self
+                    .equations(&um, a_bar)
+                    .ok_or_else(|| fail(&u, r.amax(), it, "singular system in the Jacobian"))?;
+                jac.set_column(k, &((rp - rm) / (2.0 * h)));
+            }
+            let step = jac
+                .lu()
+                .solve(&(-&r))
+                .filter(|v| v.iter().all(|x| x.is_finite()))
+                .ok_or_else(|| fail(&u, r.amax(), it, "singular Newton matrix"))?;
+            // damp until the residual decreases (the contour must stay simple)
+            let mut lambda = 1.0;
+            let r0 = r.amax();
+            loop {
+                let un = &u + &step * lambda;
+                match self.equations(&un, a_bar) {
+                    Some((rn, _)) if rn.amax() < r0 || r0 < 1e-13 => {
+                        u = un;
+                        break;
+                    }
+                    _ if lambda > 1e-4 => lambda *= 0.5,
+                    _ => return Err(fail(&u, r0, it, "line search failed")),
+                }
+            }
+            let size = step.amax() * lambda;
+            if size < 1e-13 * (1.0 + u.amax()) || (size < 1e-9 && size > 0.5 * last_step) {
+                // converged only if the boundary condition holds to its
+                // round-off floor, not merely because the steps stalled
+                let res = self.equations(&u, a_bar).map(|(r, _)| r.amax()).unwrap_or(f64::NAN);
+                if res < RESIDUAL_TOLERANCE {
+                    return self.state(&u);
+                }
+                return Err(fail(&u, res, it, "Newton stalled above the residual tolerance"));
+            }
+            last_step = size;
+        }
+        let r = self.equations(&u, a_bar).map(|(r, _)| r.amax()).unwrap_or(f64::NAN);
+        Err(fail(&u, r, 40, "no convergence in 40 Newton iterations"))
+    }
+
+    /// The exact state at half-width `a_bar` from `near`, a converged state
+    /// of the same truncation (at this or a nearby ρ or ā), by Newton's method.
+    pub fn solve_from(&self, a_bar: f64, near: &ExactState) -> Result<ExactState> {
+        let scale = a_bar / near.a_bar;
+        let guess = Contour {
+            a: near.contour.a * scale,
+            b: near.contour.b.iter().map(|b| b * scale).collect(),
+        };
+        // δ̄ ≈ ā²/4 − 2/ā (the circle's) shifted by the neighbour's offset
+        let circle = |a: f64| a * a / 4.0 - 2.0 / a;
+        let delta = near.delta_bar + circle(a_bar) - circle(near.a_bar);
+        self.solve(a_bar, &guess, delta)
+    }
+
+    /// The exact state at half-width `a_bar`, continued in ρ from the
+    /// exact circle at ρ = 1 (steps in ρ halved where Newton fails): no
+    /// approximate model is used.
+    pub fn from_circle(&self, a_bar: f64) -> Result<ExactState> {
+        let circle = Exact::new(1.0, self.truncation)?;
+        let mut st = circle.solve(
+            a_bar,
+            &Contour::ellipse(a_bar, a_bar, self.truncation.modes),
+            a_bar * a_bar / 4.0 - 2.0 / a_bar,
+        )?;
+        let mut rho = 1.0;
+        let mut step: f64 = 0.05;
+        while rho > self.rho {
+            let next = (rho - step).max(self.rho);
+            let ex = Exact::new(next, self.truncation)?;
+            match ex.solve_from(a_bar, &st) {
+                Ok(n) => {
+                    st = n;
+                    rho = next;
+                    step = (step * 1.5).min(0.1);
+                }
+                Err(e) if step < 1e-4 => return Err(e),
+                Err(_) => step *= 0.5,
+            }
+        }
+        Ok(st)
+    }
+
+    /// Load-controlled pull-off: the minimum of F̄ along the family
+    /// parametrised by ā, located by Newton's method on dF̄/dā = 0 (first
+    /// and second derivatives by central differences of step 1e-3 in ā,
+    /// each F̄ a converged exact state), from `start`.
+    pub fn pull_off(&self, start: &ExactState) -> Result<ExactState> {
+        let h = 1e-3;
+        let mut st = start.clone();
+        for _ in 0..30 {
+            let lo = self.solve_from(st.a_bar - h, &st)?;
+            let hi = self.solve_from(st.a_bar + h, &st)?;
+            let g = (hi.force_bar - lo.force_bar) / (2.0 * h);
+            let g2 = (hi.force_bar - 2.0 * st.force_bar + lo.force_bar) / (h * h);
+            if !(g2 > 0.0) {
+                return Err(Error::NoState(format!(
+                    "exact pull-off at rho = {}: F̄ is not convex at a_bar = {} (d²F̄/dā² = {g2:e}); no minimum nearby",
+                    self.rho, st.a_bar
+                )));
+            }
+            let step = (-g / g2).clamp(-0.2, 0.2);
+            st = self.solve_from(st.a_bar + step, &st)?;
+            if step.abs() < 1e-8 {
+                return Ok(st);
+            }
+        }
+        Err(Error::NoConvergence {
+            iterations: 30,
+            a_bar: st.a_bar,
+            s: st.s,
+            residual: f64::NAN,
+            context: format!("exact pull-off (dF/da = 0) at rho = {}", self.rho),
+        })
+    }
+
+    pub(crate) fn state(&self, u: &DVector<f64>) -> Result<ExactState> {
+        let nm = self.truncation.modes;
+        let contour = Contour {
+            a: u[0],
+            b: u.rows(1, nm).iter().copied().collect(),
+        };
+        let delta_bar = u[nm + 1];
+        let fine = fields(&contour, self.rho, delta_bar, &self.fine).ok_or_else(|| {
+            Error::NoState("exact state: the fine-grid check system is singular".into())
+        })?;
+        let bc_error = fine
+            .normal_derivative
+            .iter()
+            .map(|v| (v - 1.0).abs())
+            .fold(0.0, f64::max);
+        let (a_bar, b_bar) = (contour.a_bar(), contour.b_bar());
+        Ok(ExactState {
+            rho: self.rho,
+            a_bar,
+            b_bar,
+            s: b_bar / a_bar,
+            delta_bar,
+            force_bar: fine.force,
+            deviation_from_ellipse: contour.deviation_from_ellipse(4 * self.truncation.points),
+            contour,
+            bc_error,
+            truncation: self.truncation,
+        })
+    }
+}
