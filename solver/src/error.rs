@@ -30,6 +30,10 @@ pub enum Error {
         /// What was being solved.
         context: String,
     },
+    /// A numerical reference (the exact solver) does not resolve the
+    /// answer at the discretisation used; no number is given.
+    #[error("not resolved: {0}")]
+    Unresolved(String),
     /// The model has no state for the given input.
     #[error("no contact state: {0}")]
     NoState(String),

@@ -70,6 +70,22 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The exact solution of (2)-(3): its load-controlled pull-off, with every model's beside it.
+    #[command(after_help = "Example:\n  thinjkr exact --rho 0.8\n  thinjkr exact --rho 0.5 --modes 24 --json")]
+    Exact {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        /// Contour modes N (the contour series' length); default: the first of 12, 16, 24 that resolves the pull-off.
+        #[arg(long)]
+        modes: Option<usize>,
+        /// Quadrature points on the contour (default 16 N).
+        #[arg(long)]
+        points: Option<usize>,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
     /// The zero-force state (Section 5).
     #[command(
         name = "zero-force",
@@ -286,6 +302,65 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                 Control::Displacement => c.pull_off_displacement()?,
             };
             emit_pull_off(&p, j);
+        }
+        Some(Command::Exact {
+            rho,
+            modes,
+            points,
+            json: j,
+        }) => {
+            let (po, events) = match modes {
+                Some(modes) => {
+                    if !(1..=64).contains(&modes) {
+                        return Err(thinjkr::Error::OutOfRange { name: "modes", value: modes as f64, range: "1..=64" }.into());
+                    }
+                    let truncation = thinjkr::exact::Truncation { modes, points: points.unwrap_or(16 * modes) };
+                    thinjkr::exact::Exact::new(rho, truncation)?.pull_off_load()?
+                }
+                None => thinjkr::exact::pull_off_resolved(rho)?,
+            };
+            let truncation = po.truncation;
+            let models: Vec<_> = ModelId::ALL
+                .iter()
+                .map(|&m| (m, Contact::with_model(m, rho).and_then(|c| c.pull_off_load())))
+                .collect();
+            if j {
+                let m: Vec<_> = models
+                    .iter()
+                    .map(|(m, r)| match r {
+                        Ok(p) => serde_json::json!({"model": m.name(), "state": p.state, "force_error": p.state.force / po.force_bar - 1.0}),
+                        Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
+                    })
+                    .collect();
+                println!("{}", serde_json::json!({"exact_pull_off": po, "events": events, "models": m}));
+            } else {
+                println!(
+                    "exact pull-off (load control): rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
+                    po.a_bar, po.b_bar, po.s, po.delta_bar, po.force_bar
+                );
+                println!(
+                    "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
+                    po.bc_error, 2 * truncation.points, po.deviation_from_ellipse, truncation.modes, truncation.points
+                );
+                for e in &events {
+                    match e {
+                        thinjkr::exact::branch::Event::SizeFold { a_bar } => println!("  on the way: the family turns back in a near a = {a_bar:.6}"),
+                        thinjkr::exact::branch::Event::Bifurcation { between } => println!("  on the way: a bifurcation point between a = {:.6} and {:.6}", between[0], between[1]),
+                        thinjkr::exact::branch::Event::ForceMinimum { .. } => {}
+                    }
+                }
+                for (m, r) in &models {
+                    match r {
+                        Ok(p) => println!(
+                            "  model {m}: force = {:.6} ({:+.3} %), a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %)",
+                            p.state.force, 100.0 * (p.state.force / po.force_bar - 1.0),
+                            p.state.a, 100.0 * (p.state.a / po.a_bar - 1.0),
+                            p.state.s, 100.0 * (p.state.s / po.s - 1.0)
+                        ),
+                        Err(e) => println!("  model {m}: {e}"),
+                    }
+                }
+            }
         }
         Some(Command::ZeroForce {
             rho,

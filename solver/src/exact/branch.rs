@@ -136,6 +136,42 @@ impl Exact {
         max_step: f64,
         max_points: usize,
     ) -> Result<Branch> {
+        self.trace_until(start, a_min, max_step, max_points, false)
+    }
+
+    /// The load-controlled pull-off: the first minimum of F̄ along the
+    /// family traced from the state at ā = 2.6 (continued in ρ from the
+    /// circle; 2.6 lies between the circle's neutral points ā³ = 12 and
+    /// ā³ = 20) towards smaller ā, with the events met on the way.
+    pub fn pull_off_load(&self) -> Result<(ExactState, Vec<Event>)> {
+        let start = self.from_circle(2.6)?;
+        let branch = self.trace_until(&start, 0.5, 0.05, 200, true)?;
+        let po = branch.events.iter().find_map(|e| match e {
+            Event::ForceMinimum { state } => Some((**state).clone()),
+            _ => None,
+        });
+        match po {
+            Some(st) if st.bc_error > super::RESOLVED => Err(Error::Unresolved(format!(
+                "exact pull-off at rho = {}: not resolved with {} contour modes (max |dp/dnu - 1| = {:.1e} on the fine grid, above {:.0e}; the contour is {:.1e} a off the ellipse): use more modes",
+                self.rho, self.truncation.modes, st.bc_error, super::RESOLVED, st.deviation_from_ellipse
+            ))),
+            Some(st) => Ok((st, branch.events)),
+            None => Err(Error::NoState(format!(
+                "exact pull-off at rho = {}: no minimum of the force along the traced family (down to a_bar = {})",
+                self.rho,
+                branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN)
+            ))),
+        }
+    }
+
+    fn trace_until(
+        &self,
+        start: &ExactState,
+        a_min: f64,
+        max_step: f64,
+        max_points: usize,
+        stop_at_force_minimum: bool,
+    ) -> Result<Branch> {
         let n = self.truncation.modes + 2;
         let da = a_bar_gradient(n);
         let fail = |st: &ExactState, why: String| Error::NoConvergence {
@@ -195,6 +231,10 @@ impl Exact {
                 events.push(Event::ForceMinimum {
                     state: Box::new(refined),
                 });
+                if stop_at_force_minimum {
+                    points.push(p);
+                    break;
+                }
             }
             u = un;
             t = tn;
