@@ -342,6 +342,19 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                     "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
                     po.bc_error, 2 * truncation.points, po.deviation_from_ellipse, truncation.modes, truncation.points
                 );
+                let modes = |v: &[thinjkr::exact::stability::UnstableMode]| -> String {
+                    if v.is_empty() {
+                        "stable".into()
+                    } else {
+                        let list: Vec<String> = v
+                            .iter()
+                            .map(|m| if m.n == 0 { "n = 0 (size)".to_string() } else { format!("n = {} (wavelength {:.3})", m.n, m.wavelength) })
+                            .collect();
+                        format!("unstable modes {}", list.join(", "))
+                    }
+                };
+                println!("  displacement control: {}", modes(&po.stability.displacement));
+                println!("  load control: {}", modes(&po.stability.load));
                 for e in &events {
                     match e {
                         thinjkr::exact::branch::Event::SizeFold { a_bar } => println!("  on the way: the family turns back in a near a = {a_bar:.6}"),

@@ -229,3 +229,36 @@ fn near_circular_aspect_ratio_agrees_with_35_36_to_second_order() {
         assert!((3.0..5.0).contains(&ratio), "errors {errors:?}");
     }
 }
+
+/// Stability of the circle at ρ = 1, by hand: the second variation of
+/// Π̄ = ∫|∇p̄|² − |ω| for the mode r = ā + ε cos nθ is proportional to
+/// ∂p̄/∂ν · δ(∂p̄/∂ν) = ε cos nθ (ā²/4 + 1/ā − n/ā) (the linearisation
+/// above), so under displacement control the modes with n > ā³/4 + 1 are
+/// unstable and the others (n = 0, the size, included) stable; under load
+/// control the size mode is also unstable below the pull-off ā = 12^(1/3)
+/// (dF̄/dā < 0 there). With 6 contour modes (n = 0, 2, …, 12): at ā = 3
+/// (ā³/4 + 1 = 7.75) n = 8, 10, 12 are unstable under both controls; at
+/// ā = 2 (ā³/4 + 1 = 3) n = 4, …, 12, and under load control n = 0 too.
+/// The eigenvalues are the Hessian entries 2π(ā³/4 + 1 − n).
+#[test]
+fn circle_stability_agrees_with_the_second_variation_by_hand() {
+    let ex = Exact::new(1.0, trunc(6, 96)).unwrap();
+    for (a, disp, load) in [
+        (3.0, vec![8, 10, 12], vec![8, 10, 12]),
+        (2.0, vec![4, 6, 8, 10, 12], vec![0, 4, 6, 8, 10, 12]),
+    ] {
+        let st = ex.solve(a, &Contour::ellipse(a, a, 6), a * a / 4.0 - 2.0 / a).unwrap();
+        let stab = ex.stability(&st).unwrap();
+        let d: Vec<usize> = stab.displacement.iter().map(|m| m.n).collect();
+        let l: Vec<usize> = stab.load.iter().map(|m| m.n).collect();
+        assert_eq!(d, disp, "a = {a}: {stab:?}");
+        assert_eq!(l, load, "a = {a}: {stab:?}");
+        for m in &stab.displacement {
+            assert!((m.wavelength - 2.0 * PI * a / m.n as f64).abs() < 1e-12);
+            // the Hessian entry of mode n, ∮ 2 (p̄_rr − n/ā) cos² nθ ā dθ
+            // = 2π(ā³/4 + 1 − n)
+            let by_hand = 2.0 * PI * (a.powi(3) / 4.0 + 1.0 - m.n as f64);
+            assert!((m.eigenvalue - by_hand).abs() < 1e-6 * by_hand.abs().max(1.0), "n = {}: {} vs {by_hand}", m.n, m.eigenvalue);
+        }
+    }
+}

@@ -37,6 +37,7 @@
 
 pub mod bie;
 pub mod branch;
+pub mod stability;
 
 use crate::error::{Error, Result};
 use bie::{solve_dirichlet, ContourSamples, Grid};
@@ -272,6 +273,9 @@ pub struct ExactState {
     pub deviation_from_ellipse: f64,
     /// The discretisation used.
     pub truncation: Truncation,
+    /// Which contour modes are unstable under displacement and load
+    /// control (the second variation of Π, [`stability`]).
+    pub stability: stability::ExactStability,
 }
 
 /// The exact problem at one ρ and truncation.
@@ -530,7 +534,7 @@ impl Exact {
             .map(|v| (v - 1.0).abs())
             .fold(0.0, f64::max);
         let (a_bar, b_bar) = (contour.a_bar(), contour.b_bar());
-        Ok(ExactState {
+        let mut st = ExactState {
             rho: self.rho,
             a_bar,
             b_bar,
@@ -541,6 +545,12 @@ impl Exact {
             contour,
             bc_error,
             truncation: self.truncation,
-        })
+            stability: stability::ExactStability {
+                displacement: Vec::new(),
+                load: Vec::new(),
+            },
+        };
+        st.stability = self.stability(&st)?;
+        Ok(st)
     }
 }

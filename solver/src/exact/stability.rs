@@ -1,0 +1,163 @@
+//! Linear stability of an exact state from the second variation of the
+//! potential energy, mode by mode in the doubly symmetric class.
+//!
+//! In the units (17) the potential Π = U − Δγ|ω| of the paper's Section 2
+//! (U = ½∫ p(δ − φ) dA, the energy stored in the layer) is, up to the
+//! factor 2ΔγL², Π̄ = ∫ω |∇p̄|² dA − |ω|, where p̄ solves Δp̄ = f,
+//! f = X²/2 + Y²/(2ρ) − δ̄, with p̄ = 0 on ∂ω only. Its shape derivative is
+//! dΠ̄ = ∮ ((∂p̄/∂ν)² − 1) V ds (Hadamard), V the normal velocity of the
+//! contour: it vanishes at the exact states, where ∂p̄/∂ν = 1. And
+//! ∂Π̄/∂δ̄ = 2F̄ at fixed ω.
+//!
+//! The gradient of Π̄ in the contour coefficients (A, b₀..b_{N−1}) is this
+//! shape derivative with V_k = Re(∂z/∂u_k · ν̄); the Hessian is its
+//! central difference (step 1e-6). Under displacement control (δ̄ fixed) a
+//! state is stable when the Hessian in the coefficients is positive
+//! definite; under load control the potential is Π̄ − 2F̄δ̄ with δ̄ free,
+//! and the Hessian is bordered by 2∂F̄/∂u and 2∂F̄/∂δ̄. Each negative
+//! eigenvalue is reported with the contour mode its eigenvector is made
+//! of: n = 0 for A (the size), n = 2j + 2 for b_j (the radius perturbed by
+//! cos nθ, wavelength 2πā/n along the contour).
+//!
+//! At ρ = 1 the Hessian is diagonal in the modes with signs those of
+//! ā²/4 + 1/ā − n/ā (see `tests/exact.rs`): modes with n > ā³/4 + 1 are
+//! unstable. Short undulations of the contact line are unstable in this
+//! thin-layer model, as in the fingering instability of thin confined
+//! elastic films; the model holds only for wavelengths much longer than
+//! the coating thickness h, so such modes are reported with their
+//! wavelength, for comparison with h, not hidden.
+//!
+//! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, nalgebra.
+
+use super::{Contour, Exact, ExactState};
+use crate::error::{Error, Result};
+use nalgebra::{Complex, DMatrix, DVector, SymmetricEigen};
+use serde::Serialize;
+
+/// One unstable direction of the second variation.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct UnstableMode {
+    /// The contour mode the eigenvector is made of: the radius perturbed
+    /// by cos nθ (n = 0: the size; under load control also δ̄).
+    pub n: usize,
+    /// The wavelength 2πā/n along the contour, in units of L (∞ for n = 0).
+    pub wavelength: f64,
+    /// The eigenvalue (negative).
+    pub eigenvalue: f64,
+}
+
+/// Which modes of an exact state are unstable.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ExactStability {
+    /// Under displacement control (δ̄ fixed).
+    pub displacement: Vec<UnstableMode>,
+    /// Under load control (F̄ fixed, δ̄ free).
+    pub load: Vec<UnstableMode>,
+}
+
+impl ExactStability {
+    /// Stable under displacement control.
+    pub fn displacement_stable(&self) -> bool {
+        self.displacement.is_empty()
+    }
+    /// Stable under load control.
+    pub fn load_stable(&self) -> bool {
+        self.load.is_empty()
+    }
+}
+
+impl Exact {
+    /// ∂Π̄/∂(A, b₀..b_{N−1}) at fixed δ̄ and F̄ for the contour `c`.
+    fn energy_gradient(&self, c: &Contour, delta_bar: f64) -> Option<(DVector<f64>, f64)> {
+        let grid = &self.grid;
+        let f = super::fields(c, self.rho, delta_bar, grid)?;
+        let n = grid.len();
+        let h = 2.0 * std::f64::consts::PI / n as f64;
+        let nm = c.b.len();
+        let mut g = DVector::zeros(nm + 1);
+        for (i, &t) in grid.theta.iter().enumerate() {
+            let [_, dz, _] = c.at(t);
+            let speed = dz.norm();
+            let nu = Complex::new(dz.im, -dz.re) / speed;
+            let w = (f.normal_derivative[i].powi(2) - 1.0) * speed * h;
+            for k in 0..=nm {
+                let e = if k == 0 {
+                    Complex::new(0.0, t).exp()
+                } else {
+                    Complex::new(0.0, -(2.0 * (k - 1) as f64 + 1.0) * t).exp()
+                };
+                g[k] += w * (e * nu.conj()).re;
+            }
+        }
+        Some((g, f.force))
+    }
+
+    /// The linear stability of `st` (a state of this problem's truncation).
+    pub fn stability(&self, st: &ExactState) -> Result<ExactStability> {
+        let nm = self.truncation.modes;
+        let m = nm + 1;
+        let err = || Error::NoState("exact stability: singular boundary integral equation".into());
+        let coef = |c: &Contour| {
+            let mut u = DVector::zeros(m);
+            u[0] = c.a;
+            for j in 0..nm {
+                u[j + 1] = c.b.get(j).copied().unwrap_or(0.0);
+            }
+            u
+        };
+        let contour = |u: &DVector<f64>| Contour {
+            a: u[0],
+            b: u.rows(1, nm).iter().copied().collect(),
+        };
+        let u = coef(&st.contour);
+        let mut hess = DMatrix::zeros(m + 1, m + 1);
+        for k in 0..m {
+            let h = 1e-6 * (1.0 + u[k].abs());
+            let mut up = u.clone();
+            let mut um = u.clone();
+            up[k] += h;
+            um[k] -= h;
+            let (gp, fp) = self.energy_gradient(&contour(&up), st.delta_bar).ok_or_else(err)?;
+            let (gm, fm) = self.energy_gradient(&contour(&um), st.delta_bar).ok_or_else(err)?;
+            let col = (gp - gm) / (2.0 * h);
+            hess.view_mut((0, k), (m, 1)).copy_from(&col);
+            // the border: ∂²(Π̄ − 2F̄δ̄)/∂u∂δ̄ = 2∂F̄/∂u − 0 at fixed applied F̄
+            let df = 2.0 * (fp - fm) / (2.0 * h);
+            hess[(m, k)] = df;
+            hess[(k, m)] = df;
+        }
+        let h = 1e-6 * (1.0 + st.delta_bar.abs());
+        let fp = super::fields(&st.contour, self.rho, st.delta_bar + h, &self.grid).ok_or_else(err)?.force;
+        let fm = super::fields(&st.contour, self.rho, st.delta_bar - h, &self.grid).ok_or_else(err)?.force;
+        hess[(m, m)] = 2.0 * (fp - fm) / (2.0 * h);
+        let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
+        let unstable = |a: DMatrix<f64>, with_delta: bool| -> Vec<UnstableMode> {
+            let eig = SymmetricEigen::new(sym(a));
+            let scale = eig.eigenvalues.amax().max(1e-300);
+            let mut out: Vec<UnstableMode> = (0..eig.eigenvalues.len())
+                .filter(|&i| eig.eigenvalues[i] < -1e-9 * scale)
+                .map(|i| {
+                    let v = eig.eigenvectors.column(i);
+                    let k = v.iamax();
+                    let n = if k == 0 || (with_delta && k == m) { 0 } else { 2 * (k - 1) + 2 };
+                    UnstableMode {
+                        n,
+                        wavelength: if n == 0 {
+                            f64::INFINITY
+                        } else {
+                            2.0 * std::f64::consts::PI * st.a_bar / n as f64
+                        },
+                        eigenvalue: eig.eigenvalues[i],
+                    }
+                })
+                .collect();
+            out.sort_by_key(|u| u.n);
+            out
+        };
+        Ok(ExactStability {
+            displacement: unstable(hess.view((0, 0), (m, m)).into_owned(), false),
+            load: unstable(hess, true),
+        })
+    }
+}
+
