@@ -82,6 +82,12 @@ enum Command {
         /// Quadrature points on the contour (default 16 N).
         #[arg(long)]
         points: Option<usize>,
+        /// The exact state at this approach δ̄ instead of the pull-off.
+        #[arg(long, allow_hyphen_values = true, group = "exact_control")]
+        delta: Option<f64>,
+        /// The exact state at this force F̄ (0: zero force) instead of the pull-off.
+        #[arg(long, allow_hyphen_values = true, group = "exact_control")]
+        force: Option<f64>,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -307,8 +313,85 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             rho,
             modes,
             points,
+            delta,
+            force,
             json: j,
         }) => {
+            use thinjkr::exact::branch::ExactControl;
+            let control = match (delta, force) {
+                (Some(d), _) => Some(ExactControl::Delta(d)),
+                (_, Some(f)) => Some(ExactControl::Force(f)),
+                _ => None,
+            };
+            if let Some(control) = control {
+                for (name, v) in [("delta", delta), ("force", force)] {
+                    if let Some(v) = v {
+                        if !v.is_finite() {
+                            return Err(thinjkr::Error::OutOfRange { name, value: v, range: "finite" });
+                        }
+                    }
+                }
+                let mut last = None;
+                let mut found = None;
+                let tries: Vec<usize> = match modes { Some(m) => vec![m], None => vec![12, 16, 24] };
+                for m in tries {
+                    if !(1..=64).contains(&m) {
+                        return Err(thinjkr::Error::OutOfRange { name: "modes", value: m as f64, range: "1..=64" });
+                    }
+                    let t = thinjkr::exact::Truncation { modes: m, points: points.unwrap_or(16 * m) };
+                    match thinjkr::exact::Exact::new(rho, t)?.at(control) {
+                        Err(e @ thinjkr::Error::Unresolved(_)) => last = Some(e),
+                        Err(e) => return Err(e),
+                        Ok(st) => {
+                            found = Some(st);
+                            break;
+                        }
+                    }
+                }
+                let st = match found {
+                    Some(st) => st,
+                    None => return Err(last.expect("tried")),
+                };
+                let model_states: Vec<_> = ModelId::ALL
+                    .iter()
+                    .map(|&m| {
+                        let c = Contact::with_model(m, rho);
+                        (m, c.and_then(|c| match control {
+                            ExactControl::Delta(d) => c.at_displacement(d),
+                            ExactControl::Force(f) => c.at_load(f),
+                        }))
+                    })
+                    .collect();
+                if j {
+                    let m: Vec<_> = model_states
+                        .iter()
+                        .map(|(m, r)| match r {
+                            Ok(p) => serde_json::json!({"model": m.name(), "state": p}),
+                            Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
+                        })
+                        .collect();
+                    println!("{}", serde_json::json!({"exact": st, "models": m}));
+                } else {
+                    println!(
+                        "exact state: rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
+                        st.a_bar, st.b_bar, st.s, st.delta_bar, st.force_bar
+                    );
+                    println!(
+                        "  max |dp/dnu - 1| = {:.1e}; contour off the ellipse by {:.3e} a; {} modes, {} points",
+                        st.bc_error, st.deviation_from_ellipse, st.truncation.modes, st.truncation.points
+                    );
+                    for (m, r) in &model_states {
+                        match r {
+                            Ok(p) => println!(
+                                "  model {m}: a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %), delta = {:.6}, force = {:.6}",
+                                p.a, 100.0 * (p.a / st.a_bar - 1.0), p.s, 100.0 * (p.s / st.s - 1.0), p.delta, p.force
+                            ),
+                            Err(e) => println!("  model {m}: {e}"),
+                        }
+                    }
+                }
+                return Ok(());
+            }
             let (po, events) = match modes {
                 Some(modes) => {
                     if !(1..=64).contains(&modes) {

@@ -262,3 +262,28 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
         }
     }
 }
+
+/// States at given F̄ and δ̄: at ρ = 1 the zero-force state is the circle
+/// with ā³ = 24 (F̄ = π(ā⁶ − 24ā³)/96 = 0) and the state at δ̄ = 3 the circle
+/// with ā²/4 − 2/ā = 3; at ρ = 0.8 the states satisfy their control and a
+/// force below the exact pull-off has no state.
+#[test]
+fn states_at_given_force_and_approach() {
+    use thinjkr::exact::branch::ExactControl;
+    let ex = Exact::new(1.0, trunc(4, 64)).unwrap();
+    let zf = ex.at(ExactControl::Force(0.0)).unwrap();
+    assert!((zf.a_bar - 24f64.cbrt()).abs() < 1e-10, "{zf:?}");
+    assert!(zf.force_bar.abs() < 1e-10, "{zf:?}");
+    let st = ex.at(ExactControl::Delta(3.0)).unwrap();
+    let a = st.a_bar;
+    assert!((st.delta_bar - 3.0).abs() < 1e-12, "{st:?}");
+    assert!((a * a / 4.0 - 2.0 / a - 3.0).abs() < 1e-10, "{st:?}");
+
+    let ex = Exact::new(0.8, trunc(8, 128)).unwrap();
+    let zf = ex.at(ExactControl::Force(0.0)).unwrap();
+    assert!(zf.force_bar.abs() < 1e-10 && zf.bc_error < 1e-6, "{zf:?}");
+    let st = ex.at(ExactControl::Delta(5.0)).unwrap();
+    assert!((st.delta_bar - 5.0).abs() < 1e-10 && st.bc_error < 1e-6, "{st:?}");
+    assert!(st.stability.load.iter().all(|m| m.n != 0), "{st:?}");
+    assert!(matches!(ex.at(ExactControl::Force(-4.3)), Err(thinjkr::Error::NoState(_))));
+}

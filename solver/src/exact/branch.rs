@@ -37,6 +37,15 @@ pub enum Event {
     },
 }
 
+/// What an exact state is asked for by.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum ExactControl {
+    /// The approach δ̄.
+    Delta(f64),
+    /// The force F̄ (F̄ = 0: the zero-force state).
+    Force(f64),
+}
+
 /// One traced point.
 #[derive(Clone, Debug, Serialize)]
 pub struct BranchPoint {
@@ -172,6 +181,26 @@ impl Exact {
         max_points: usize,
         stop_at_force_minimum: bool,
     ) -> Result<Branch> {
+        self.trace_general(start, -1.0, a_min, f64::INFINITY, max_step, max_points, stop_at_force_minimum, None)
+            .map(|(b, _)| b)
+    }
+
+    /// Trace from `start` with ā first moving in the direction of
+    /// `direction` (±1), between `a_min` and `a_max`; stop at the first
+    /// force minimum when asked, or at the first crossing of
+    /// `control` = target, which is refined and returned.
+    #[allow(clippy::too_many_arguments)]
+    fn trace_general(
+        &self,
+        start: &ExactState,
+        direction: f64,
+        a_min: f64,
+        a_max: f64,
+        max_step: f64,
+        max_points: usize,
+        stop_at_force_minimum: bool,
+        control: Option<ExactControl>,
+    ) -> Result<(Branch, Option<ExactState>)> {
         let n = self.truncation.modes + 2;
         let da = a_bar_gradient(n);
         let fail = |st: &ExactState, why: String| Error::NoConvergence {
@@ -183,11 +212,17 @@ impl Exact {
         };
         let mut u = self.unknowns(start);
         let (_, j, g) = linearise(self, &u).ok_or_else(|| fail(start, "singular start".into()))?;
-        // the initial tangent points to smaller ā
-        let (mut t, mut det) = tangent(&j, &(-&da)).ok_or_else(|| fail(start, "no tangent".into()))?;
-        if t.dot(&da) > 0.0 {
+        // the initial tangent points to ā moving in `direction`
+        let (mut t, mut det) =
+            tangent(&j, &(&da * direction)).ok_or_else(|| fail(start, "no tangent".into()))?;
+        if t.dot(&da) * direction < 0.0 {
             t = -t;
         }
+        let key = |u: &DVector<f64>, force: f64| match control {
+            Some(ExactControl::Delta(target)) => u[n - 1] - target,
+            Some(ExactControl::Force(target)) => force - target,
+            None => f64::NAN,
+        };
         let mut points = vec![BranchPoint {
             state: start.clone(),
             d_force: g.dot(&t),
@@ -197,7 +232,7 @@ impl Exact {
         let mut h = max_step;
         while points.len() < max_points {
             let last = points.last().expect("one point").state.clone();
-            if last.a_bar < a_min {
+            if last.a_bar < a_min || last.a_bar > a_max {
                 break;
             }
             let Some(un) = self.correct(&(&u + &t * h), &t) else {
@@ -226,6 +261,18 @@ impl Exact {
                     between: [prev.state.a_bar, p.state.a_bar],
                 });
             }
+            if control.is_some() {
+                let (k0, k1) = (key(&u, prev.state.force_bar), key(&un, p.state.force_bar));
+                if k0 == 0.0 {
+                    let hit = prev.state.clone();
+                    return Ok((Branch { points, events }, Some(hit)));
+                }
+                if k0.signum() != k1.signum() {
+                    let hit = self.refine_crossing(&u, &t, k0, &un, k1, &key)?;
+                    points.push(p);
+                    return Ok((Branch { points, events }, Some(hit)));
+                }
+            }
             if prev.d_force < 0.0 && p.d_force >= 0.0 {
                 let refined = self.refine_force_minimum(&u, &t, prev.d_force, &un, p.d_force)?;
                 events.push(Event::ForceMinimum {
@@ -242,7 +289,70 @@ impl Exact {
             points.push(p);
             h = (h * 1.3).min(max_step);
         }
-        Ok(Branch { points, events })
+        Ok((Branch { points, events }, None))
+    }
+
+    /// The crossing of `key` = 0 between two traced points, by the secant
+    /// method along the arclength from u0.
+    fn refine_crossing(
+        &self,
+        u0: &DVector<f64>,
+        t0: &DVector<f64>,
+        k0: f64,
+        u1: &DVector<f64>,
+        k1: f64,
+        key: &dyn Fn(&DVector<f64>, f64) -> f64,
+    ) -> Result<ExactState> {
+        let (mut sa, mut fa) = (0.0, k0);
+        let (mut sb, mut fb) = (t0.dot(&(u1 - u0)), k1);
+        let mut best = u1.clone();
+        for _ in 0..40 {
+            let sigma = sb - fb * (sb - sa) / (fb - fa);
+            let u = self.correct(&(u0 + t0 * sigma), t0).ok_or_else(|| {
+                Error::NoState(format!("exact state at rho = {}: no corrected point near the crossing", self.rho))
+            })?;
+            let (_, force) = self.modes(&u).ok_or_else(|| Error::NoState("singular system at the crossing".into()))?;
+            let f = key(&u, force);
+            best = u;
+            if f == 0.0 || (sigma - sb).abs() < 1e-13 * (1.0 + sigma.abs()) {
+                break;
+            }
+            (sa, fa) = (sb, fb);
+            (sb, fb) = (sigma, f);
+        }
+        self.state(&best)
+    }
+
+    /// The exact state at approach δ̄ or force F̄ on the load-stable part of
+    /// the family (from large loads down to the exact load-controlled
+    /// pull-off), traced from the state at ā = 2.6 continued from the
+    /// circle; an unresolved state is [`Error::Unresolved`], a value below
+    /// the pull-off's is [`Error::NoState`].
+    pub fn at(&self, control: ExactControl) -> Result<ExactState> {
+        let start = self.from_circle(2.6)?;
+        let here = match control {
+            ExactControl::Delta(v) => start.delta_bar - v,
+            ExactControl::Force(v) => start.force_bar - v,
+        };
+        let found = if here < 0.0 {
+            // larger loads: ā grows
+            self.trace_general(&start, 1.0, 0.0, 1e3, 0.1, 2000, false, Some(control))?.1
+        } else {
+            self.trace_general(&start, -1.0, 0.5, f64::INFINITY, 0.05, 400, true, Some(control))?.1
+        };
+        let st = found.ok_or_else(|| {
+            Error::NoState(format!(
+                "exact state at rho = {}: {control:?} is not reached on the family between large loads and the load-controlled pull-off",
+                self.rho
+            ))
+        })?;
+        if st.bc_error > super::RESOLVED {
+            return Err(Error::Unresolved(format!(
+                "exact state at rho = {}, {control:?}: max |dp/dnu - 1| = {:.1e} with {} modes",
+                self.rho, st.bc_error, self.truncation.modes
+            )));
+        }
+        Ok(st)
     }
 
     /// The minimum of F̄ between two traced points (u0 with tangent t0 and
