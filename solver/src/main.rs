@@ -7,9 +7,22 @@ use thinjkr::curve::trace;
 use thinjkr::units::Cylinders;
 use thinjkr::{Contact, FoldBasis, ModelId, PullOff, State};
 
-fn parse_model(s: &str) -> Result<ModelId, String> {
-    s.parse()
+fn parse_model(s: &str) -> Result<ModelChoice, String> {
+    if s == "exact" {
+        Ok(ModelChoice::Exact)
+    } else {
+        s.parse().map(ModelChoice::Approx)
+    }
 }
+
+/// A model of the ellipse, or the exact solution of (2)-(3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum ModelChoice {
+    Approx(ModelId),
+    Exact,
+}
+
+mod exact_cli;
 
 /// Approximate JKR contact of thin incompressible coatings on rigid cylinders
 /// (Argatov, Mishuris & Popov 2016), dimensionless as in Eq. (17) unless
@@ -35,9 +48,9 @@ enum Command {
         /// Radii ratio ρ = R2/R1 in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45.
+        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
         #[arg(long, default_value = "max", value_parser = parse_model)]
-        model: ModelId,
+        model: ModelChoice,
         /// Approach δ̄.
         #[arg(long, allow_hyphen_values = true, group = "control")]
         delta: Option<f64>,
@@ -60,9 +73,9 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45.
+        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
         #[arg(long, default_value = "max", value_parser = parse_model)]
-        model: ModelId,
+        model: ModelChoice,
         /// Control.
         #[arg(long, value_enum, default_value_t = Control::Load)]
         control: Control,
@@ -70,27 +83,11 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// The exact solution of (2)-(3): its load-controlled pull-off, with every model's beside it.
-    #[command(after_help = "Example:\n  thinjkr exact --rho 0.8\n  thinjkr exact --rho 0.5 --modes 24 --json")]
+    /// The exact solution of the free-boundary problem (2)-(3), every model beside it.
+    #[command(after_help = "Examples:\n  thinjkr exact pull-off --rho 0.8\n  thinjkr exact solve --rho 0.8 --force 10\n  thinjkr exact zero-force --rho 0.8 --json\n  thinjkr pull-off --rho 0.8 --model exact")]
     Exact {
-        /// Radii ratio ρ in (0, 1].
-        #[arg(long, allow_hyphen_values = true)]
-        rho: f64,
-        /// Contour modes N (the contour series' length); default: the first of 12, 16, 24 that resolves the pull-off.
-        #[arg(long)]
-        modes: Option<usize>,
-        /// Quadrature points on the contour (default 16 N).
-        #[arg(long)]
-        points: Option<usize>,
-        /// The exact state at this approach δ̄ instead of the pull-off.
-        #[arg(long, allow_hyphen_values = true, group = "exact_control")]
-        delta: Option<f64>,
-        /// The exact state at this force F̄ (0: zero force) instead of the pull-off.
-        #[arg(long, allow_hyphen_values = true, group = "exact_control")]
-        force: Option<f64>,
-        /// Print JSON.
-        #[arg(long)]
-        json: bool,
+        #[command(subcommand)]
+        command: exact_cli::ExactCommand,
     },
     /// The zero-force state (Section 5).
     #[command(
@@ -101,9 +98,9 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45.
+        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
         #[arg(long, default_value = "max", value_parser = parse_model)]
-        model: ModelId,
+        model: ModelChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -116,9 +113,9 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45.
+        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
         #[arg(long, default_value = "max", value_parser = parse_model)]
-        model: ModelId,
+        model: ModelChoice,
         /// Number of points.
         #[arg(long, default_value_t = 100)]
         points: usize,
@@ -163,7 +160,7 @@ enum Command {
     },
 }
 
-#[derive(Clone, Copy, ValueEnum)]
+#[derive(Clone, Copy, PartialEq, ValueEnum)]
 enum Control {
     Load,
     Displacement,
@@ -264,6 +261,28 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             a,
             json: j,
         }) => {
+            let model = match model {
+                ModelChoice::Exact => {
+                    let control = match (delta, force, a) {
+                        (Some(d), _, _) => thinjkr::exact::branch::ExactControl::Delta(d),
+                        (_, Some(f), _) => thinjkr::exact::branch::ExactControl::Force(f),
+                        (_, _, Some(_)) => {
+                            return Err(thinjkr::Error::Unavailable {
+                                model: "exact",
+                                what: "contact-size control (--a)".into(),
+                                why: "the exact family is traced in arclength; give --delta or --force",
+                            })
+                        }
+                        _ => {
+                            return Err(thinjkr::Error::NoState(
+                                "give one of --delta, --force".into(),
+                            ))
+                        }
+                    };
+                    return exact_cli::state(rho, control, &exact_cli::Discretisation::default(), j);
+                }
+                ModelChoice::Approx(m) => m,
+            };
             let c = Contact::with_model(model, rho)?;
             match (delta, force, a) {
                 (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j),
@@ -302,6 +321,19 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             control,
             json: j,
         }) => {
+            let model = match model {
+                ModelChoice::Exact if control == Control::Load => {
+                    return exact_cli::pull_off(rho, &exact_cli::Discretisation::default(), j)
+                }
+                ModelChoice::Exact => {
+                    return Err(thinjkr::Error::Unavailable {
+                        model: "exact",
+                        what: "pull-off under displacement control".into(),
+                        why: "only the load-controlled pull-off of the exact family is located",
+                    })
+                }
+                ModelChoice::Approx(m) => m,
+            };
             let c = Contact::with_model(model, rho)?;
             let p = match control {
                 Control::Load => c.pull_off_load()?,
@@ -309,158 +341,20 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             };
             emit_pull_off(&p, j);
         }
-        Some(Command::Exact {
-            rho,
-            modes,
-            points,
-            delta,
-            force,
-            json: j,
-        }) => {
-            use thinjkr::exact::branch::ExactControl;
-            let control = match (delta, force) {
-                (Some(d), _) => Some(ExactControl::Delta(d)),
-                (_, Some(f)) => Some(ExactControl::Force(f)),
-                _ => None,
-            };
-            if let Some(control) = control {
-                for (name, v) in [("delta", delta), ("force", force)] {
-                    if let Some(v) = v {
-                        if !v.is_finite() {
-                            return Err(thinjkr::Error::OutOfRange { name, value: v, range: "finite" });
-                        }
-                    }
-                }
-                let mut last = None;
-                let mut found = None;
-                let tries: Vec<usize> = match modes { Some(m) => vec![m], None => vec![12, 16, 24] };
-                for m in tries {
-                    if !(1..=64).contains(&m) {
-                        return Err(thinjkr::Error::OutOfRange { name: "modes", value: m as f64, range: "1..=64" });
-                    }
-                    let t = thinjkr::exact::Truncation { modes: m, points: points.unwrap_or(16 * m) };
-                    match thinjkr::exact::Exact::new(rho, t)?.at(control) {
-                        Err(e @ thinjkr::Error::Unresolved(_)) => last = Some(e),
-                        Err(e) => return Err(e),
-                        Ok(st) => {
-                            found = Some(st);
-                            break;
-                        }
-                    }
-                }
-                let st = match found {
-                    Some(st) => st,
-                    None => return Err(last.expect("tried")),
-                };
-                let model_states: Vec<_> = ModelId::ALL
-                    .iter()
-                    .map(|&m| {
-                        let c = Contact::with_model(m, rho);
-                        (m, c.and_then(|c| match control {
-                            ExactControl::Delta(d) => c.at_displacement(d),
-                            ExactControl::Force(f) => c.at_load(f),
-                        }))
-                    })
-                    .collect();
-                if j {
-                    let m: Vec<_> = model_states
-                        .iter()
-                        .map(|(m, r)| match r {
-                            Ok(p) => serde_json::json!({"model": m.name(), "state": p}),
-                            Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
-                        })
-                        .collect();
-                    println!("{}", serde_json::json!({"exact": st, "models": m}));
-                } else {
-                    println!(
-                        "exact state: rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
-                        st.a_bar, st.b_bar, st.s, st.delta_bar, st.force_bar
-                    );
-                    println!(
-                        "  max |dp/dnu - 1| = {:.1e}; contour off the ellipse by {:.3e} a; {} modes, {} points",
-                        st.bc_error, st.deviation_from_ellipse, st.truncation.modes, st.truncation.points
-                    );
-                    for (m, r) in &model_states {
-                        match r {
-                            Ok(p) => println!(
-                                "  model {m}: a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %), delta = {:.6}, force = {:.6}",
-                                p.a, 100.0 * (p.a / st.a_bar - 1.0), p.s, 100.0 * (p.s / st.s - 1.0), p.delta, p.force
-                            ),
-                            Err(e) => println!("  model {m}: {e}"),
-                        }
-                    }
-                }
-                return Ok(());
-            }
-            let (po, events) = match modes {
-                Some(modes) => {
-                    if !(1..=64).contains(&modes) {
-                        return Err(thinjkr::Error::OutOfRange { name: "modes", value: modes as f64, range: "1..=64" }.into());
-                    }
-                    let truncation = thinjkr::exact::Truncation { modes, points: points.unwrap_or(16 * modes) };
-                    thinjkr::exact::Exact::new(rho, truncation)?.pull_off_load()?
-                }
-                None => thinjkr::exact::pull_off_resolved(rho)?,
-            };
-            let truncation = po.truncation;
-            let models: Vec<_> = ModelId::ALL
-                .iter()
-                .map(|&m| (m, Contact::with_model(m, rho).and_then(|c| c.pull_off_load())))
-                .collect();
-            if j {
-                let m: Vec<_> = models
-                    .iter()
-                    .map(|(m, r)| match r {
-                        Ok(p) => serde_json::json!({"model": m.name(), "state": p.state, "force_error": p.state.force / po.force_bar - 1.0}),
-                        Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
-                    })
-                    .collect();
-                println!("{}", serde_json::json!({"exact_pull_off": po, "events": events, "models": m}));
-            } else {
-                println!(
-                    "exact pull-off (load control): rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
-                    po.a_bar, po.b_bar, po.s, po.delta_bar, po.force_bar
-                );
-                println!(
-                    "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
-                    po.bc_error, 2 * truncation.points, po.deviation_from_ellipse, truncation.modes, truncation.points
-                );
-                let modes = |v: &[thinjkr::exact::stability::UnstableMode]| -> String {
-                    if v.is_empty() {
-                        "stable".into()
-                    } else {
-                        let list: Vec<String> = v
-                            .iter()
-                            .map(|m| if m.n == 0 { "n = 0 (size)".to_string() } else { format!("n = {} (wavelength {:.3})", m.n, m.wavelength) })
-                            .collect();
-                        format!("unstable modes {}", list.join(", "))
-                    }
-                };
-                println!("  displacement control: {}", modes(&po.stability.displacement));
-                println!("  load control: {}", modes(&po.stability.load));
-                for e in &events {
-                    match e {
-                        thinjkr::exact::branch::Event::SizeFold { a_bar } => println!("  on the way: the family turns back in a near a = {a_bar:.6}"),
-                        thinjkr::exact::branch::Event::Bifurcation { between } => println!("  on the way: a bifurcation point between a = {:.6} and {:.6}", between[0], between[1]),
-                        thinjkr::exact::branch::Event::ForceMinimum { .. } => {}
-                    }
-                }
-                for (m, r) in &models {
-                    match r {
-                        Ok(p) => println!(
-                            "  model {m}: force = {:.6} ({:+.3} %), a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %)",
-                            p.state.force, 100.0 * (p.state.force / po.force_bar - 1.0),
-                            p.state.a, 100.0 * (p.state.a / po.a_bar - 1.0),
-                            p.state.s, 100.0 * (p.state.s / po.s - 1.0)
-                        ),
-                        Err(e) => println!("  model {m}: {e}"),
-                    }
-                }
-            }
-        }
+        Some(Command::Exact { command }) => exact_cli::run(command)?,
         Some(Command::ZeroForce {
             rho,
-            model,
+            model: ModelChoice::Exact,
+            json: j,
+        }) => exact_cli::state(
+            rho,
+            thinjkr::exact::branch::ExactControl::Force(0.0),
+            &exact_cli::Discretisation::default(),
+            j,
+        )?,
+        Some(Command::ZeroForce {
+            rho,
+            model: ModelChoice::Approx(model),
             json: j,
         }) => emit(
             "zero force",
@@ -473,6 +367,16 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             points,
             format,
         }) => {
+            let model = match model {
+                ModelChoice::Exact => {
+                    return Err(thinjkr::Error::Unavailable {
+                        model: "exact",
+                        what: "curve command".into(),
+                        why: "use `thinjkr exact solve` at the loads wanted",
+                    })
+                }
+                ModelChoice::Approx(m) => m,
+            };
             let c = Contact::with_model(model, rho)?;
             let curve = trace(&c, points, 20.0)?;
             match format {

@@ -141,3 +141,26 @@ fn errors_go_to_stderr_with_failure() {
         assert!(err.contains("error"), "{err}");
     }
 }
+
+/// `--model exact` and `thinjkr exact …` reach the exact solver: at ρ = 1
+/// its zero-force state is the circle with ā³ = 24 and its pull-off
+/// −3π/2; the curve command says it has no exact form.
+#[test]
+fn exact_is_chosen_by_name() {
+    let (ok, out, err) = thinjkr(&["zero-force", "--model", "exact", "--rho", "1", "--modes", "4", "--json"]);
+    // `--modes` belongs to `thinjkr exact`, not to the models' commands
+    assert!(!ok && out.is_empty() && err.contains("--modes"), "{out} {err}");
+    let (ok, out, err) = thinjkr(&["exact", "zero-force", "--rho", "1", "--modes", "4", "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let a = v["exact"]["a_bar"].as_f64().unwrap();
+    assert!((a - 24f64.cbrt()).abs() < 1e-10, "{out}");
+    assert!(v["models"].as_array().unwrap().len() == 4, "{out}");
+    let (ok, out, err) = thinjkr(&["pull-off", "--model", "exact", "--rho", "1", "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let f = v["exact_pull_off"]["force_bar"].as_f64().unwrap();
+    assert!((f + 1.5 * std::f64::consts::PI).abs() < 1e-10, "{out}");
+    let (ok, _, err) = thinjkr(&["curve", "--model", "exact", "--rho", "0.8"]);
+    assert!(!ok && err.contains("exact"), "{err}");
+}

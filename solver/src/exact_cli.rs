@@ -1,0 +1,308 @@
+//! `thinjkr exact …` and `--model exact`: the exact solution of the
+//! free-boundary problem (2)–(3) at the command line, every approximate
+//! model's answer printed beside it.
+//!
+//! Owns: [`ExactCommand`], the exact printers. May use: `thinjkr::exact`,
+//! `thinjkr::Contact`.
+
+use clap::{Args, Subcommand};
+use thinjkr::exact::branch::{Event, ExactControl};
+use thinjkr::exact::stability::UnstableMode;
+use thinjkr::exact::{pull_off_resolved, Exact, ExactState, Truncation};
+use thinjkr::{Contact, Error, ModelId, Result};
+
+/// The truncation of the exact solver.
+#[derive(Args, Clone, Debug, Default)]
+pub struct Discretisation {
+    /// Contour modes N (the contour series' length, 1..=64); default: the
+    /// first of 12, 16, 24 that resolves the answer.
+    #[arg(long)]
+    pub modes: Option<usize>,
+    /// Quadrature points on the contour (default 16 N).
+    #[arg(long)]
+    pub points: Option<usize>,
+}
+
+impl Discretisation {
+    /// The truncations to try, in order.
+    fn tries(&self) -> Result<Vec<Truncation>> {
+        let modes = match self.modes {
+            Some(m) if !(1..=64).contains(&m) => {
+                return Err(Error::OutOfRange {
+                    name: "modes",
+                    value: m as f64,
+                    range: "1..=64",
+                })
+            }
+            Some(m) => vec![m],
+            None => vec![12, 16, 24],
+        };
+        Ok(modes
+            .into_iter()
+            .map(|m| Truncation {
+                modes: m,
+                points: self.points.unwrap_or(16 * m),
+            })
+            .collect())
+    }
+}
+
+/// `thinjkr exact …`.
+#[derive(Subcommand, Clone, Debug)]
+pub enum ExactCommand {
+    /// The exact load-controlled pull-off, with every model's beside it.
+    #[command(name = "pull-off", after_help = "Example:\n  thinjkr exact pull-off --rho 0.8 --modes 8")]
+    PullOff {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        #[command(flatten)]
+        discretisation: Discretisation,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The exact state at given δ̄ or F̄ (on the family from large loads down to pull-off).
+    #[command(
+        after_help = "Example:\n  thinjkr exact solve --rho 0.8 --delta 2",
+        group(clap::ArgGroup::new("control").required(true).args(["delta", "force"]))
+    )]
+    Solve {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        /// Approach δ̄.
+        #[arg(long, allow_hyphen_values = true)]
+        delta: Option<f64>,
+        /// Force F̄.
+        #[arg(long, allow_hyphen_values = true)]
+        force: Option<f64>,
+        #[command(flatten)]
+        discretisation: Discretisation,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The exact zero-force state.
+    #[command(name = "zero-force", after_help = "Example:\n  thinjkr exact zero-force --rho 0.8")]
+    ZeroForce {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        #[command(flatten)]
+        discretisation: Discretisation,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// Run one `thinjkr exact` subcommand.
+pub fn run(c: ExactCommand) -> Result<()> {
+    match c {
+        ExactCommand::PullOff {
+            rho,
+            discretisation,
+            json,
+        } => pull_off(rho, &discretisation, json),
+        ExactCommand::Solve {
+            rho,
+            delta,
+            force,
+            discretisation,
+            json,
+        } => {
+            let control = match (delta, force) {
+                (Some(d), _) => ExactControl::Delta(d),
+                (_, Some(f)) => ExactControl::Force(f),
+                _ => return Err(Error::NoState("give one of --delta, --force".into())),
+            };
+            state(rho, control, &discretisation, json)
+        }
+        ExactCommand::ZeroForce {
+            rho,
+            discretisation,
+            json,
+        } => state(rho, ExactControl::Force(0.0), &discretisation, json),
+    }
+}
+
+fn modes(v: &[UnstableMode]) -> String {
+    if v.is_empty() {
+        return "stable".into();
+    }
+    let list: Vec<String> = v
+        .iter()
+        .map(|m| {
+            if m.n == 0 {
+                "n = 0 (size)".to_string()
+            } else {
+                format!("n = {} (wavelength {:.3})", m.n, m.wavelength)
+            }
+        })
+        .collect();
+    format!("unstable modes {}", list.join(", "))
+}
+
+fn show_quality(st: &ExactState) {
+    println!(
+        "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
+        st.bc_error,
+        2 * st.truncation.points,
+        st.deviation_from_ellipse,
+        st.truncation.modes,
+        st.truncation.points
+    );
+    println!("  displacement control: {}", modes(&st.stability.displacement));
+    println!("  load control: {}", modes(&st.stability.load));
+}
+
+/// The exact load-controlled pull-off and every model's.
+pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
+    let (po, events) = match d.modes {
+        Some(_) => Exact::new(rho, d.tries()?[0])?.pull_off_load()?,
+        None if d.points.is_none() => pull_off_resolved(rho)?,
+        None => {
+            let mut last = None;
+            let mut found = None;
+            for t in d.tries()? {
+                match Exact::new(rho, t)?.pull_off_load() {
+                    Err(e @ Error::Unresolved(_)) => last = Some(e),
+                    other => {
+                        found = Some(other?);
+                        break;
+                    }
+                }
+            }
+            match found {
+                Some(f) => f,
+                None => return Err(last.expect("tried")),
+            }
+        }
+    };
+    let models: Vec<_> = ModelId::ALL
+        .iter()
+        .map(|&m| (m, Contact::with_model(m, rho).and_then(|c| c.pull_off_load())))
+        .collect();
+    if json {
+        let m: Vec<_> = models
+            .iter()
+            .map(|(m, r)| match r {
+                Ok(p) => serde_json::json!({"model": m.name(), "state": p.state, "force_error": p.state.force / po.force_bar - 1.0}),
+                Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
+            })
+            .collect();
+        println!(
+            "{}",
+            serde_json::json!({"exact_pull_off": po, "events": events, "models": m})
+        );
+        return Ok(());
+    }
+    println!(
+        "exact pull-off (load control): rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
+        po.a_bar, po.b_bar, po.s, po.delta_bar, po.force_bar
+    );
+    show_quality(&po);
+    for e in &events {
+        match e {
+            Event::SizeFold { a_bar } => {
+                println!("  on the way: the family turns back in a near a = {a_bar:.6}")
+            }
+            Event::Bifurcation { between } => println!(
+                "  on the way: a bifurcation point between a = {:.6} and {:.6}",
+                between[0], between[1]
+            ),
+            Event::ForceMinimum { .. } => {}
+        }
+    }
+    for (m, r) in &models {
+        match r {
+            Ok(p) => println!(
+                "  model {m}: force = {:.6} ({:+.3} %), a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %)",
+                p.state.force,
+                100.0 * (p.state.force / po.force_bar - 1.0),
+                p.state.a,
+                100.0 * (p.state.a / po.a_bar - 1.0),
+                p.state.s,
+                100.0 * (p.state.s / po.s - 1.0)
+            ),
+            Err(e) => println!("  model {m}: {e}"),
+        }
+    }
+    Ok(())
+}
+
+/// The exact state at a control value and every model's.
+pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) -> Result<()> {
+    let (name, v) = match control {
+        ExactControl::Delta(v) => ("delta", v),
+        ExactControl::Force(v) => ("force", v),
+    };
+    if !v.is_finite() {
+        return Err(Error::OutOfRange {
+            name,
+            value: v,
+            range: "finite",
+        });
+    }
+    let mut last = None;
+    let mut found = None;
+    for t in d.tries()? {
+        match Exact::new(rho, t)?.at(control) {
+            Err(e @ Error::Unresolved(_)) => last = Some(e),
+            Err(e) => return Err(e),
+            Ok(st) => {
+                found = Some(st);
+                break;
+            }
+        }
+    }
+    let st = match found {
+        Some(st) => st,
+        None => return Err(last.expect("tried")),
+    };
+    let model_states: Vec<_> = ModelId::ALL
+        .iter()
+        .map(|&m| {
+            let c = Contact::with_model(m, rho);
+            (
+                m,
+                c.and_then(|c| match control {
+                    ExactControl::Delta(d) => c.at_displacement(d),
+                    ExactControl::Force(f) => c.at_load(f),
+                }),
+            )
+        })
+        .collect();
+    if json {
+        let m: Vec<_> = model_states
+            .iter()
+            .map(|(m, r)| match r {
+                Ok(p) => serde_json::json!({"model": m.name(), "state": p}),
+                Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
+            })
+            .collect();
+        println!("{}", serde_json::json!({"exact": st, "models": m}));
+        return Ok(());
+    }
+    println!(
+        "exact state: rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
+        st.a_bar, st.b_bar, st.s, st.delta_bar, st.force_bar
+    );
+    show_quality(&st);
+    for (m, r) in &model_states {
+        match r {
+            Ok(p) => println!(
+                "  model {m}: a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %), delta = {:.6}, force = {:.6}",
+                p.a,
+                100.0 * (p.a / st.a_bar - 1.0),
+                p.s,
+                100.0 * (p.s / st.s - 1.0),
+                p.delta,
+                p.force
+            ),
+            Err(e) => println!("  model {m}: {e}"),
+        }
+    }
+    Ok(())
+}
