@@ -466,7 +466,7 @@ const CANCELLATION_FREE: &[&str] = &["bc_error", "eta_minus_one"];
 
 /// Appended to the documentation of a function in [`CANCELLATION_FREE`]
 /// for which no form passes the check against its own value.
-const NOT_CANCELLATION_FREE: &str = "\n\nNot cancellation-free near s = 1 for this model: no generated form has a relative error ≤ 1e-12 against its own value there; its error is within 1e-12 of the size of the terms that cancel (see `docs/accuracy.md`).";
+const NOT_CANCELLATION_FREE: &str = "\n\nNot cancellation-free near s = 1 for this model: no generated form has a relative error ≤ 1e-12 against its own value there; its error is within 1e-12 of the size of the terms that cancel (see `docs/codegen-accuracy.md`).";
 
 fn scale_of(name: &str) -> Scale {
     if CANCELLATION_FREE.contains(&name) {
@@ -1060,7 +1060,7 @@ pub fn outputs(all: &[&ModelDerivation]) -> Result<Vec<Output>, String> {
         reports.push((md.ansatz(), r));
     }
     out.push(Output {
-        path: "docs/accuracy.md".into(),
+        path: "docs/codegen-accuracy.md".into(),
         contents: accuracy_md(&reports),
     });
     out.push(Output {
@@ -1070,7 +1070,7 @@ pub fn outputs(all: &[&ModelDerivation]) -> Result<Vec<Output>, String> {
     Ok(out)
 }
 
-/// `docs/accuracy.md`: what the generator's accuracy check measured for
+/// `docs/codegen-accuracy.md`: what the generator's accuracy check measured for
 /// every generated function of every model.
 fn accuracy_md(reports: &[(&crate::ansatz::Ansatz, Vec<FormReport>)]) -> String {
     let mut o = String::new();

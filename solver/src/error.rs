@@ -32,8 +32,14 @@ pub enum Error {
     },
     /// A numerical reference (the exact solver) does not resolve the
     /// answer at the discretisation used; no number is given.
-    #[error("not resolved: {0}")]
-    Unresolved(String),
+    #[error("not resolved: {what}")]
+    Unresolved {
+        /// What was not resolved, and with which discretisation.
+        what: String,
+        /// The residual measure that was too large (for the exact solver,
+        /// max |∂p̄/∂ν − 1| on the fine grid).
+        residual: f64,
+    },
     /// The model has no state for the given input.
     #[error("no contact state: {0}")]
     NoState(String),

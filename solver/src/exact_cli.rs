@@ -167,7 +167,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
             let mut found = None;
             for t in d.tries()? {
                 match Exact::new(rho, t)?.pull_off_load() {
-                    Err(e @ Error::Unresolved(_)) => last = Some(e),
+                    Err(e @ Error::Unresolved { .. }) => last = Some(e),
                     other => {
                         found = Some(other?);
                         break;
@@ -249,7 +249,7 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
     let mut found = None;
     for t in d.tries()? {
         match Exact::new(rho, t)?.at(control) {
-            Err(e @ Error::Unresolved(_)) => last = Some(e),
+            Err(e @ Error::Unresolved { .. }) => last = Some(e),
             Err(e) => return Err(e),
             Ok(st) => {
                 found = Some(st);

@@ -89,6 +89,13 @@ enum Command {
         #[command(subcommand)]
         command: exact_cli::ExactCommand,
     },
+    /// The table of docs/accuracy.md: every model against the exact solution for rho from 1 to 0.1 (all cores; minutes).
+    #[command(after_help = "Example:\n  thinjkr accuracy --out docs/accuracy.md")]
+    Accuracy {
+        /// Write the markdown here instead of to standard output.
+        #[arg(long)]
+        out: Option<std::path::PathBuf>,
+    },
     /// The zero-force state (Section 5).
     #[command(
         name = "zero-force",
@@ -342,6 +349,35 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             emit_pull_off(&p, j);
         }
         Some(Command::Exact { command }) => exact_cli::run(command)?,
+        Some(Command::Accuracy { out }) => {
+            use rayon::prelude::*;
+            use thinjkr::exact::table::{render, row, Quantity, RHOS};
+            let jobs: Vec<(f64, Quantity)> = RHOS
+                .iter()
+                .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (r, q)))
+                .collect();
+            let bar = indicatif::ProgressBar::new(jobs.len() as u64);
+            bar.set_style(
+                indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {elapsed}")
+                    .expect("template"),
+            );
+            let rows: Vec<_> = jobs
+                .par_iter()
+                .map(|&(r, q)| {
+                    let x = row(r, q);
+                    bar.inc(1);
+                    x
+                })
+                .collect();
+            bar.finish_and_clear();
+            let text = render(&rows);
+            match out {
+                Some(p) => std::fs::write(&p, text).map_err(|e| {
+                    thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))
+                })?,
+                None => print!("{text}"),
+            }
+        }
         Some(Command::ZeroForce {
             rho,
             model: ModelChoice::Exact,

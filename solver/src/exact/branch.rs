@@ -148,6 +148,12 @@ impl Exact {
         self.trace_until(start, a_min, max_step, max_points, false)
     }
 
+    /// Trace from `start` towards larger ā, up to `a_max`.
+    pub fn trace_up(&self, start: &ExactState, a_max: f64, max_step: f64, max_points: usize) -> Result<Branch> {
+        self.trace_general(start, 1.0, 0.0, a_max, max_step, max_points, false, None)
+            .map(|(b, _)| b)
+    }
+
     /// The load-controlled pull-off: the first minimum of F̄ along the
     /// family traced from the state at ā = 2.6 (continued in ρ from the
     /// circle; 2.6 lies between the circle's neutral points ā³ = 12 and
@@ -160,10 +166,13 @@ impl Exact {
             _ => None,
         });
         match po {
-            Some(st) if st.bc_error > super::RESOLVED => Err(Error::Unresolved(format!(
-                "exact pull-off at rho = {}: not resolved with {} contour modes (max |dp/dnu - 1| = {:.1e} on the fine grid, above {:.0e}; the contour is {:.1e} a off the ellipse): use more modes",
-                self.rho, self.truncation.modes, st.bc_error, super::RESOLVED, st.deviation_from_ellipse
-            ))),
+            Some(st) if st.bc_error > super::RESOLVED => Err(Error::Unresolved {
+                what: format!(
+                    "exact pull-off at rho = {} with {} contour modes (max |dp/dnu - 1| = {:.1e} on the fine grid, above {:.0e}; the contour is {:.1e} a off the ellipse): use more modes",
+                    self.rho, self.truncation.modes, st.bc_error, super::RESOLVED, st.deviation_from_ellipse
+                ),
+                residual: st.bc_error,
+            }),
             Some(st) => Ok((st, branch.events)),
             None => Err(Error::NoState(format!(
                 "exact pull-off at rho = {}: no minimum of the force along the traced family (down to a_bar = {})",
@@ -246,6 +255,12 @@ impl Exact {
             let Some((tn, detn)) = tangent(&j, &t) else {
                 return Err(fail(&last, "no tangent".into()));
             };
+            // a step that turns the tangent by more than ~18° may have
+            // jumped to another sheet of the family: retry it shorter
+            if tn.dot(&t) < 0.95 && h > 1e-4 {
+                h = (h * 0.5).max(1e-4);
+                continue;
+            }
             let st = self.state(&un)?;
             let p = BranchPoint {
                 d_force: g.dot(&tn),
@@ -255,6 +270,13 @@ impl Exact {
             let prev = points.last().expect("one point");
             if prev.d_a_bar.signum() != p.d_a_bar.signum() {
                 events.push(Event::SizeFold { a_bar: p.state.a_bar });
+                if control.is_some() {
+                    // a state asked for by δ̄ or F̄ is looked for on the
+                    // near-elliptical stretch only: past a size fold the
+                    // contour turns strongly non-elliptical
+                    points.push(p);
+                    break;
+                }
             }
             if detn.signum() != det.signum() {
                 events.push(Event::Bifurcation {
@@ -306,7 +328,8 @@ impl Exact {
         let (mut sa, mut fa) = (0.0, k0);
         let (mut sb, mut fb) = (t0.dot(&(u1 - u0)), k1);
         let mut best = u1.clone();
-        for _ in 0..40 {
+        for _ in 0..60 {
+            // regula falsi (Illinois): σ stays inside the bracket [sa, sb]
             let sigma = sb - fb * (sb - sa) / (fb - fa);
             let u = self.correct(&(u0 + t0 * sigma), t0).ok_or_else(|| {
                 Error::NoState(format!("exact state at rho = {}: no corrected point near the crossing", self.rho))
@@ -314,20 +337,28 @@ impl Exact {
             let (_, force) = self.modes(&u).ok_or_else(|| Error::NoState("singular system at the crossing".into()))?;
             let f = key(&u, force);
             best = u;
-            if f == 0.0 || (sigma - sb).abs() < 1e-13 * (1.0 + sigma.abs()) {
+            if f == 0.0 || f.abs() < 1e-13 * (1.0 + force.abs()) {
                 break;
             }
-            (sa, fa) = (sb, fb);
+            if f.signum() == fb.signum() {
+                fa *= 0.5;
+            } else {
+                (sa, fa) = (sb, fb);
+            }
             (sb, fb) = (sigma, f);
+            if (sigma - sa).abs() < 1e-13 * (1.0 + sigma.abs()) {
+                break;
+            }
         }
         self.state(&best)
     }
 
-    /// The exact state at approach δ̄ or force F̄ on the load-stable part of
-    /// the family (from large loads down to the exact load-controlled
-    /// pull-off), traced from the state at ā = 2.6 continued from the
-    /// circle; an unresolved state is [`Error::Unresolved`], a value below
-    /// the pull-off's is [`Error::NoState`].
+    /// The exact state at approach δ̄ or force F̄ on the near-elliptical
+    /// family traced from the state at ā = 2.6 continued from the circle,
+    /// between the nearest size fold above (where the family turns back
+    /// in ā and the contour turns strongly non-elliptical) and the
+    /// load-controlled pull-off below; an unresolved state is
+    /// [`Error::Unresolved`], a value not reached is [`Error::NoState`].
     pub fn at(&self, control: ExactControl) -> Result<ExactState> {
         let start = self.from_circle(2.6)?;
         let here = match control {
@@ -342,15 +373,18 @@ impl Exact {
         };
         let st = found.ok_or_else(|| {
             Error::NoState(format!(
-                "exact state at rho = {}: {control:?} is not reached on the family between large loads and the load-controlled pull-off",
+                "exact state at rho = {}: {control:?} is not reached on the near-elliptical family continued from the circle at a_bar = 2.6, between its size folds and its load-controlled pull-off",
                 self.rho
             ))
         })?;
         if st.bc_error > super::RESOLVED {
-            return Err(Error::Unresolved(format!(
-                "exact state at rho = {}, {control:?}: max |dp/dnu - 1| = {:.1e} with {} modes",
-                self.rho, st.bc_error, self.truncation.modes
-            )));
+            return Err(Error::Unresolved {
+                what: format!(
+                    "exact state at rho = {}, {control:?}: max |dp/dnu - 1| = {:.1e} with {} modes",
+                    self.rho, st.bc_error, self.truncation.modes
+                ),
+                residual: st.bc_error,
+            });
         }
         Ok(st)
     }
@@ -370,7 +404,8 @@ impl Exact {
         let (mut sa, mut fa) = (0.0, f0);
         let (mut sb, mut fb) = (sigma1, f1);
         let mut best = u1.clone();
-        for _ in 0..40 {
+        for _ in 0..60 {
+            // regula falsi (Illinois): σ stays inside the bracket [sa, sb]
             let sigma = sb - fb * (sb - sa) / (fb - fa);
             // the minimum can sit on a bifurcation point (at ρ = 1 it does:
             // ā³ = 12 is the neutral point of the mode n = 4), where the
@@ -386,11 +421,18 @@ impl Exact {
             let (t, _) = tangent(&j, t0).ok_or_else(|| Error::NoState("no tangent at the force minimum".into()))?;
             let f = g.dot(&t);
             best = u;
-            if (sigma - sb).abs() < 1e-10 * (1.0 + sigma.abs()) || f == 0.0 {
+            if f == 0.0 || (sb - sa).abs() < 1e-10 * (1.0 + sigma.abs()) {
                 break;
             }
-            (sa, fa) = (sb, fb);
+            if f.signum() == fb.signum() {
+                fa *= 0.5;
+            } else {
+                (sa, fa) = (sb, fb);
+            }
             (sb, fb) = (sigma, f);
+            if (sigma - sa).abs() < 1e-12 * (1.0 + sigma.abs()) {
+                break;
+            }
         }
         self.state(&best)
     }
