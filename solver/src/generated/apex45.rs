@@ -343,7 +343,7 @@ pub fn eta_and_eta_s(s: f64) -> [f64; 2] {
 }
 /** Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
 
-Not cancellation-free near s = 1 for this model: no generated form has a relative error ≤ 1e-12 against its own value there; its error is within 1e-12 of the size of the terms that cancel (see `docs/accuracy.md`).
+Not cancellation-free near s = 1 for this model: no generated form has a relative error ≤ 1e-12 against its own value there; its error is within 1e-12 of the size of the terms that cancel (see `docs/codegen-accuracy.md`).
 
  Rewritten by the generator's accuracy check so that nothing cancels near s = 1 or ρ = 1: cancelling sums A + B√Q rationalised to (A² − B²Q)/(A − B√Q) where that was needed, and, with 2 chart(s), where a parameter among (s) is ≥ 1/2 the expression written in 1 − that parameter (computed exactly).*/
 #[inline]
