@@ -290,13 +290,14 @@ impl Exact {
                     return Ok((Branch { points, events }, Some(hit)));
                 }
                 if k0.signum() != k1.signum() {
-                    let hit = self.refine_crossing(&u, &t, k0, &un, k1, &key)?;
+                    let value = |v: &DVector<f64>| self.modes(v).map(|(_, force)| key(v, force));
+                    let hit = self.refine(&u, &t, k0, &un, k1, &value, "exact state")?;
                     points.push(p);
                     return Ok((Branch { points, events }, Some(hit)));
                 }
             }
             if prev.d_force < 0.0 && p.d_force >= 0.0 {
-                let refined = self.refine_force_minimum(&u, &t, prev.d_force, &un, p.d_force)?;
+                let refined = self.minimise_force(&u, &t, &un)?;
                 events.push(Event::ForceMinimum {
                     state: Box::new(refined),
                 });
@@ -312,45 +313,6 @@ impl Exact {
             h = (h * 1.3).min(max_step);
         }
         Ok((Branch { points, events }, None))
-    }
-
-    /// The crossing of `key` = 0 between two traced points, by the secant
-    /// method along the arclength from u0.
-    fn refine_crossing(
-        &self,
-        u0: &DVector<f64>,
-        t0: &DVector<f64>,
-        k0: f64,
-        u1: &DVector<f64>,
-        k1: f64,
-        key: &dyn Fn(&DVector<f64>, f64) -> f64,
-    ) -> Result<ExactState> {
-        let (mut sa, mut fa) = (0.0, k0);
-        let (mut sb, mut fb) = (t0.dot(&(u1 - u0)), k1);
-        let mut best = u1.clone();
-        for _ in 0..60 {
-            // regula falsi (Illinois): σ stays inside the bracket [sa, sb]
-            let sigma = sb - fb * (sb - sa) / (fb - fa);
-            let u = self.correct(&(u0 + t0 * sigma), t0).ok_or_else(|| {
-                Error::NoState(format!("exact state at rho = {}: no corrected point near the crossing", self.rho))
-            })?;
-            let (_, force) = self.modes(&u).ok_or_else(|| Error::NoState("singular system at the crossing".into()))?;
-            let f = key(&u, force);
-            best = u;
-            if f == 0.0 || f.abs() < 1e-13 * (1.0 + force.abs()) {
-                break;
-            }
-            if f.signum() == fb.signum() {
-                fa *= 0.5;
-            } else {
-                (sa, fa) = (sb, fb);
-            }
-            (sb, fb) = (sigma, f);
-            if (sigma - sa).abs() < 1e-13 * (1.0 + sigma.abs()) {
-                break;
-            }
-        }
-        self.state(&best)
     }
 
     /// The exact state at approach δ̄ or force F̄ on the near-elliptical
@@ -389,39 +351,84 @@ impl Exact {
         Ok(st)
     }
 
-    /// The minimum of F̄ between two traced points (u0 with tangent t0 and
-    /// dF̄/dσ = f0 < 0, u1 with f1 ≥ 0), by the secant method on dF̄/dσ
-    /// along the arclength from u0.
-    fn refine_force_minimum(
+    /// The minimum of F̄ between two traced points u0 (tangent t0,
+    /// dF̄/dσ < 0) and u1 (dF̄/dσ ≥ 0), by golden-section search on F̄ of
+    /// the corrected points along the arclength σ from u0 (F̄ values, not
+    /// dF̄/dσ: at ρ = 1 the minimum sits on the bifurcation point of the
+    /// mode n = 4, ā³ = 12, where the tangent is not defined). 45 steps
+    /// shrink the bracket by 0.618⁴⁵ ≈ 4e-10; F̄ is flat there, so its
+    /// error is of the order of the square of that.
+    fn minimise_force(
+        &self,
+        u0: &DVector<f64>,
+        t0: &DVector<f64>,
+        u1: &DVector<f64>,
+    ) -> Result<ExactState> {
+        let fail = |sigma: f64| {
+            Error::NoState(format!(
+                "exact pull-off at rho = {}: no corrected point near sigma = {sigma}",
+                self.rho
+            ))
+        };
+        let at = |sigma: f64| -> Result<(DVector<f64>, f64)> {
+            let u = [0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4]
+                .iter()
+                .find_map(|off| self.correct(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0))
+                .ok_or_else(|| fail(sigma))?;
+            let (_, force) = self.modes(&u).ok_or_else(|| fail(sigma))?;
+            Ok((u, force))
+        };
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut lo, mut hi) = (0.0, t0.dot(&(u1 - u0)));
+        let mut x1 = hi - g * (hi - lo);
+        let mut x2 = lo + g * (hi - lo);
+        let (mut p1, mut f1) = at(x1)?;
+        let (mut p2, mut f2) = at(x2)?;
+        for _ in 0..45 {
+            if f1 < f2 {
+                hi = x2;
+                (x2, p2, f2) = (x1, p1.clone(), f1);
+                x1 = hi - g * (hi - lo);
+                (p1, f1) = at(x1)?;
+            } else {
+                lo = x1;
+                (x1, p1, f1) = (x2, p2.clone(), f2);
+                x2 = lo + g * (hi - lo);
+                (p2, f2) = at(x2)?;
+            }
+        }
+        self.state(if f1 < f2 { &p1 } else { &p2 })
+    }
+
+    /// The zero of `value` between two traced points (u0 with tangent t0
+    /// and value f0, u1 with value f1 of the other sign), by regula falsi
+    /// (Illinois) on the arclength σ from u0: σ stays inside the bracket.
+    /// A point where the bordered system is singular (a bifurcation
+    /// point) is corrected a little beside it (from 1e-9 in σ up).
+    #[allow(clippy::too_many_arguments)]
+    fn refine(
         &self,
         u0: &DVector<f64>,
         t0: &DVector<f64>,
         f0: f64,
         u1: &DVector<f64>,
         f1: f64,
+        value: &dyn Fn(&DVector<f64>) -> Option<f64>,
+        what: &str,
     ) -> Result<ExactState> {
-        let sigma1 = t0.dot(&(u1 - u0));
         let (mut sa, mut fa) = (0.0, f0);
-        let (mut sb, mut fb) = (sigma1, f1);
+        let (mut sb, mut fb) = (t0.dot(&(u1 - u0)), f1);
         let mut best = u1.clone();
+        let fail = |why: &str| Error::NoState(format!("{what} at rho = {}: {why}", self.rho));
         for _ in 0..60 {
-            // regula falsi (Illinois): σ stays inside the bracket [sa, sb]
             let sigma = sb - fb * (sb - sa) / (fb - fa);
-            // the minimum can sit on a bifurcation point (at ρ = 1 it does:
-            // ā³ = 12 is the neutral point of the mode n = 4), where the
-            // bordered system is singular: correct a little beside it
-            // (F̄ changes quadratically, so by ~1e-12 for 1e-6)
-            let u = [0.0, 1e-6, -1e-6, 1e-4, -1e-4]
+            let u = [0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-4, -1e-4]
                 .iter()
                 .find_map(|off| self.correct(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0))
-                .ok_or_else(|| {
-                    Error::NoState(format!("exact pull-off at rho = {}: no corrected point near the force minimum (sigma = {sigma})", self.rho))
-                })?;
-            let (_, j, g) = linearise(self, &u).ok_or_else(|| Error::NoState("singular system at the force minimum".into()))?;
-            let (t, _) = tangent(&j, t0).ok_or_else(|| Error::NoState("no tangent at the force minimum".into()))?;
-            let f = g.dot(&t);
+                .ok_or_else(|| fail(&format!("no corrected point near sigma = {sigma}")))?;
+            let f = value(&u).ok_or_else(|| fail("singular system"))?;
             best = u;
-            if f == 0.0 || (sb - sa).abs() < 1e-10 * (1.0 + sigma.abs()) {
+            if f == 0.0 || (sb - sa).abs() < 1e-12 * (1.0 + sigma.abs()) {
                 break;
             }
             if f.signum() == fb.signum() {

@@ -77,8 +77,26 @@ pub fn row(rho: f64, quantity: Quantity) -> Row {
     }
 }
 
+/// A relative error in per cent with three decimals; below 5e-4 % it is
+/// printed as 0.000 % without a sign (round-off, which a sign would
+/// make look like a result).
 fn pct(model: f64, exact: f64) -> String {
-    format!("{:+.3} %", 100.0 * (model / exact - 1.0))
+    let p = 100.0 * (model / exact - 1.0);
+    if p.abs() < 5e-4 {
+        "0.000 %".into()
+    } else {
+        format!("{p:+.3} %")
+    }
+}
+
+/// The fine-grid boundary error, to one digit; at round-off (below 1e-12)
+/// as "< 1e-12".
+fn bc(v: f64) -> String {
+    if v < 1e-12 {
+        "< 1e-12".into()
+    } else {
+        format!("{v:.0e}")
+    }
 }
 
 /// The markdown line of a row.
@@ -91,8 +109,11 @@ pub fn render_row(r: &Row) -> String {
                 _ => format!("δ̄ = {:.6}", e.delta_bar),
             };
             cells.push(format!(
-                "{main}, ā = {:.6}, s = {:.6} (N = {}, bc {:.0e})",
-                e.a_bar, e.s, e.truncation.modes, e.bc_error
+                "{main}, ā = {:.6}, s = {:.6} (N = {}, bc {})",
+                e.a_bar,
+                e.s,
+                e.truncation.modes,
+                bc(e.bc_error)
             ));
             for (_, m) in &r.models {
                 cells.push(match m {
