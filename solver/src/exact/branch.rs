@@ -3,8 +3,10 @@
 //! turn back in ā (a fold of the contact size, where the contour turns
 //! strongly non-elliptical near a bifurcation of the circle branch), so ā
 //! is not a safe parameter. Folds in ā and in F̄ are reported as data; the
-//! load-controlled pull-off is the first minimum of F̄ along the family
-//! from large loads, located by the secant method on dF̄/dσ = 0.
+//! load-controlled pull-off is the first minimum of F̄ along the family,
+//! located by golden-section search on F̄ in the
+//! arclength (dF̄/dσ changes sign there; at ρ = 1 it sits on a bifurcation
+//! point, where the tangent is not defined).
 //! Bifurcation points are flagged where the determinant of the bordered
 //! Jacobian [∂r/∂u; tᵀ] changes sign (at a fold it does not).
 //!
