@@ -12,13 +12,27 @@ fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("exact");
     g.sample_size(10);
     for (rho, modes) in [(0.8, 12), (0.5, 24)] {
-        let ex = Exact::new(rho, Truncation { modes, points: 16 * modes }).unwrap();
+        let ex = Exact::new(
+            rho,
+            Truncation {
+                modes,
+                points: 16 * modes,
+            },
+        )
+        .unwrap();
         let near = ex.from_circle(2.6).unwrap();
         g.bench_function(format!("state at rho = {rho} ({modes} modes), warm"), |b| {
             b.iter(|| ex.solve_from(black_box(2.59), &near).unwrap())
         });
     }
-    let ex = Exact::new(0.8, Truncation { modes: 12, points: 192 }).unwrap();
+    let ex = Exact::new(
+        0.8,
+        Truncation {
+            modes: 12,
+            points: 192,
+        },
+    )
+    .unwrap();
     g.bench_function("pull-off at rho = 0.8 (12 modes)", |b| {
         b.iter(|| ex.pull_off_load().unwrap())
     });

@@ -591,12 +591,21 @@ impl Contact {
                 Control::Delta => (z[2], Vector3::new(0.0, 0.0, 1.0)),
             };
             let mat = Matrix3::new(
-                j[(0, 0)], j[(0, 1)], d[0],
-                j[(1, 0)], j[(1, 1)], d[1],
-                grad[0], grad[1], grad[2],
+                j[(0, 0)],
+                j[(0, 1)],
+                d[0],
+                j[(1, 0)],
+                j[(1, 1)],
+                d[1],
+                grad[0],
+                grad[1],
+                grad[2],
             );
             let rhs = -Vector3::new(r[0], r[1], g - target);
-            let Some(step) = mat.lu().solve(&rhs).filter(|v| v.iter().all(|x| x.is_finite()))
+            let Some(step) = mat
+                .lu()
+                .solve(&rhs)
+                .filter(|v| v.iter().all(|x| x.is_finite()))
             else {
                 break;
             };

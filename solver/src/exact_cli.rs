@@ -51,7 +51,10 @@ impl Discretisation {
 #[derive(Subcommand, Clone, Debug)]
 pub enum ExactCommand {
     /// The exact load-controlled pull-off, with every model's beside it.
-    #[command(name = "pull-off", after_help = "Example:\n  thinjkr exact pull-off --rho 0.8 --modes 8")]
+    #[command(
+        name = "pull-off",
+        after_help = "Example:\n  thinjkr exact pull-off --rho 0.8 --modes 8"
+    )]
     PullOff {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
@@ -84,7 +87,10 @@ pub enum ExactCommand {
         json: bool,
     },
     /// The exact zero-force state.
-    #[command(name = "zero-force", after_help = "Example:\n  thinjkr exact zero-force --rho 0.8")]
+    #[command(
+        name = "zero-force",
+        after_help = "Example:\n  thinjkr exact zero-force --rho 0.8"
+    )]
     ZeroForce {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
@@ -153,7 +159,10 @@ fn show_quality(st: &ExactState) {
         st.truncation.modes,
         st.truncation.points
     );
-    println!("  displacement control: {}", modes(&st.stability.displacement));
+    println!(
+        "  displacement control: {}",
+        modes(&st.stability.displacement)
+    );
     println!("  load control: {}", modes(&st.stability.load));
 }
 
@@ -182,7 +191,12 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     };
     let models: Vec<_> = ModelId::ALL
         .iter()
-        .map(|&m| (m, Contact::with_model(m, rho).and_then(|c| c.pull_off_load())))
+        .map(|&m| {
+            (
+                m,
+                Contact::with_model(m, rho).and_then(|c| c.pull_off_load()),
+            )
+        })
         .collect();
     if json {
         let m: Vec<_> = models

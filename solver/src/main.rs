@@ -84,7 +84,9 @@ enum Command {
         json: bool,
     },
     /// The exact solution of the free-boundary problem (2)-(3), every model beside it.
-    #[command(after_help = "Examples:\n  thinjkr exact pull-off --rho 0.8\n  thinjkr exact solve --rho 0.8 --force 10\n  thinjkr exact zero-force --rho 0.8 --json\n  thinjkr pull-off --rho 0.8 --model exact")]
+    #[command(
+        after_help = "Examples:\n  thinjkr exact pull-off --rho 0.8\n  thinjkr exact solve --rho 0.8 --force 10\n  thinjkr exact zero-force --rho 0.8 --json\n  thinjkr pull-off --rho 0.8 --model exact"
+    )]
     Exact {
         #[command(subcommand)]
         command: exact_cli::ExactCommand,
@@ -273,20 +275,23 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                     let control = match (delta, force, a) {
                         (Some(d), _, _) => thinjkr::exact::branch::ExactControl::Delta(d),
                         (_, Some(f), _) => thinjkr::exact::branch::ExactControl::Force(f),
-                        (_, _, Some(_)) => {
-                            return Err(thinjkr::Error::Unavailable {
-                                model: "exact",
-                                what: "contact-size control (--a)".into(),
-                                why: "the exact family is traced in arclength; give --delta or --force",
-                            })
-                        }
+                        (_, _, Some(_)) => return Err(thinjkr::Error::Unavailable {
+                            model: "exact",
+                            what: "contact-size control (--a)".into(),
+                            why: "the exact family is traced in arclength; give --delta or --force",
+                        }),
                         _ => {
                             return Err(thinjkr::Error::NoState(
                                 "give one of --delta, --force".into(),
                             ))
                         }
                     };
-                    return exact_cli::state(rho, control, &exact_cli::Discretisation::default(), j);
+                    return exact_cli::state(
+                        rho,
+                        control,
+                        &exact_cli::Discretisation::default(),
+                        j,
+                    );
                 }
                 ModelChoice::Approx(m) => m,
             };

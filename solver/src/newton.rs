@@ -110,7 +110,11 @@ pub fn solve_within(
         let mut accepted = false;
         while lambda >= config.min_step {
             let (an, sn) = (a + lambda * step[0], s + lambda * step[1]);
-            if an > 0.0 && sn > 0.0 && sn <= 1.0 + 1e-12 && admissible(Vector2::new(an, sn.min(1.0))) {
+            if an > 0.0
+                && sn > 0.0
+                && sn <= 1.0 + 1e-12
+                && admissible(Vector2::new(an, sn.min(1.0)))
+            {
                 let (rt, jt) = f(Vector2::new(an, sn.min(1.0)));
                 let rtn = norm(rt, an);
                 if rtn.is_finite() && rtn < rn * (1.0 - 1e-4 * lambda) {

@@ -147,10 +147,30 @@ fn errors_go_to_stderr_with_failure() {
 /// −3π/2; the curve command says it has no exact form.
 #[test]
 fn exact_is_chosen_by_name() {
-    let (ok, out, err) = thinjkr(&["zero-force", "--model", "exact", "--rho", "1", "--modes", "4", "--json"]);
+    let (ok, out, err) = thinjkr(&[
+        "zero-force",
+        "--model",
+        "exact",
+        "--rho",
+        "1",
+        "--modes",
+        "4",
+        "--json",
+    ]);
     // `--modes` belongs to `thinjkr exact`, not to the models' commands
-    assert!(!ok && out.is_empty() && err.contains("--modes"), "{out} {err}");
-    let (ok, out, err) = thinjkr(&["exact", "zero-force", "--rho", "1", "--modes", "4", "--json"]);
+    assert!(
+        !ok && out.is_empty() && err.contains("--modes"),
+        "{out} {err}"
+    );
+    let (ok, out, err) = thinjkr(&[
+        "exact",
+        "zero-force",
+        "--rho",
+        "1",
+        "--modes",
+        "4",
+        "--json",
+    ]);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let a = v["exact"]["a_bar"].as_f64().unwrap();

@@ -25,8 +25,14 @@ fn circle_is_the_exact_solution_at_rho_one() {
         assert!((st.a_bar - a).abs() < 1e-12, "{st:?}");
         assert!((st.s - 1.0).abs() < 1e-10, "{st:?}");
         assert!((st.delta_bar - delta).abs() < 1e-10, "{st:?}");
-        assert!((st.force_bar - force).abs() < 1e-10 * (1.0 + force.abs()), "{st:?}");
-        assert!(st.bc_error < 1e-10 && st.deviation_from_ellipse < 1e-10, "{st:?}");
+        assert!(
+            (st.force_bar - force).abs() < 1e-10 * (1.0 + force.abs()),
+            "{st:?}"
+        );
+        assert!(
+            st.bc_error < 1e-10 && st.deviation_from_ellipse < 1e-10,
+            "{st:?}"
+        );
     }
 }
 
@@ -76,8 +82,16 @@ fn circle_branch_bifurcates_where_the_linearisation_says() {
         })
         .collect();
     assert_eq!(minima.len(), 1);
-    assert!((minima[0].a_bar - 12f64.cbrt()).abs() < 1e-5, "{:?}", minima[0]);
-    assert!((minima[0].force_bar + 1.5 * PI).abs() < 1e-10, "{:?}", minima[0]);
+    assert!(
+        (minima[0].a_bar - 12f64.cbrt()).abs() < 1e-5,
+        "{:?}",
+        minima[0]
+    );
+    assert!(
+        (minima[0].force_bar + 1.5 * PI).abs() < 1e-10,
+        "{:?}",
+        minima[0]
+    );
 }
 
 /// ρ = 0.8: the load-controlled pull-off (the first minimum of F̄ along the
@@ -112,7 +126,10 @@ fn pull_off_converges_spectrally_in_the_truncation() {
     let d2 = (forces[2] - forces[1]).abs();
     assert!(d2 < 1e-3 * d1 && d2 < 1e-8, "{forces:?}");
     let po = last.unwrap();
-    assert!(bc[2] < 1e-2 * bc[1] && bc[1] < 1e-2 * bc[0] && bc[2] < 1e-7, "{bc:?}");
+    assert!(
+        bc[2] < 1e-2 * bc[1] && bc[1] < 1e-2 * bc[0] && bc[2] < 1e-7,
+        "{bc:?}"
+    );
     // a size fold accompanies it: the family turns back in ā there
     assert!(po.deviation_from_ellipse > 0.01, "{po:?}");
 }
@@ -148,7 +165,9 @@ fn force_and_equation_hold_by_a_second_route() {
     );
     let h = 1e-3;
     for (x, y) in [(0.0, 0.0), (1.0, 0.5), (1.8, 0.2), (0.3, 1.6)] {
-        let lap = (field.pressure(x + h, y) + field.pressure(x - h, y) + field.pressure(x, y + h)
+        let lap = (field.pressure(x + h, y)
+            + field.pressure(x - h, y)
+            + field.pressure(x, y + h)
             + field.pressure(x, y - h)
             - 4.0 * field.pressure(x, y))
             / (h * h);
@@ -175,7 +194,10 @@ fn bad_input_is_a_typed_error() {
     ));
     assert!(matches!(
         Exact::new(0.8, trunc(12, 20)),
-        Err(thinjkr::Error::OutOfRange { name: "truncation.points", .. })
+        Err(thinjkr::Error::OutOfRange {
+            name: "truncation.points",
+            ..
+        })
     ));
 }
 
@@ -247,7 +269,9 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
         (3.0, vec![8, 10, 12], vec![8, 10, 12]),
         (2.0, vec![4, 6, 8, 10, 12], vec![0, 4, 6, 8, 10, 12]),
     ] {
-        let st = ex.solve(a, &Contour::ellipse(a, a, 6), a * a / 4.0 - 2.0 / a).unwrap();
+        let st = ex
+            .solve(a, &Contour::ellipse(a, a, 6), a * a / 4.0 - 2.0 / a)
+            .unwrap();
         let stab = ex.stability(&st).unwrap();
         let d: Vec<usize> = stab.displacement.iter().map(|m| m.n).collect();
         let l: Vec<usize> = stab.load.iter().map(|m| m.n).collect();
@@ -258,7 +282,12 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
             // the Hessian entry of mode n, ∮ 2 (p̄_rr − n/ā) cos² nθ ā dθ
             // = 2π(ā³/4 + 1 − n)
             let by_hand = 2.0 * PI * (a.powi(3) / 4.0 + 1.0 - m.n as f64);
-            assert!((m.eigenvalue - by_hand).abs() < 1e-6 * by_hand.abs().max(1.0), "n = {}: {} vs {by_hand}", m.n, m.eigenvalue);
+            assert!(
+                (m.eigenvalue - by_hand).abs() < 1e-6 * by_hand.abs().max(1.0),
+                "n = {}: {} vs {by_hand}",
+                m.n,
+                m.eigenvalue
+            );
         }
     }
 }
@@ -283,9 +312,15 @@ fn states_at_given_force_and_approach() {
     let zf = ex.at(ExactControl::Force(0.0)).unwrap();
     assert!(zf.force_bar.abs() < 1e-10 && zf.bc_error < 1e-6, "{zf:?}");
     let st = ex.at(ExactControl::Delta(5.0)).unwrap();
-    assert!((st.delta_bar - 5.0).abs() < 1e-10 && st.bc_error < 1e-6, "{st:?}");
+    assert!(
+        (st.delta_bar - 5.0).abs() < 1e-10 && st.bc_error < 1e-6,
+        "{st:?}"
+    );
     assert!(st.stability.load.iter().all(|m| m.n != 0), "{st:?}");
-    assert!(matches!(ex.at(ExactControl::Force(-4.3)), Err(thinjkr::Error::NoState(_))));
+    assert!(matches!(
+        ex.at(ExactControl::Force(-4.3)),
+        Err(thinjkr::Error::NoState(_))
+    ));
 }
 
 /// Doubling the truncation and the quadrature at ρ = 0.8 (the state at
@@ -298,6 +333,11 @@ fn doubling_the_truncation_changes_little_at_rho_0_8() {
     let st = coarse.from_circle(2.6).unwrap();
     let fine = Exact::new(0.8, trunc(24, 384)).unwrap();
     let st2 = fine.solve(2.6, &st.contour, st.delta_bar).unwrap();
-    assert!((st2.force_bar / st.force_bar - 1.0).abs() < 1e-9, "{} vs {}", st.force_bar, st2.force_bar);
+    assert!(
+        (st2.force_bar / st.force_bar - 1.0).abs() < 1e-9,
+        "{} vs {}",
+        st.force_bar,
+        st2.force_bar
+    );
     assert!((st2.s / st.s - 1.0).abs() < 1e-9, "{} vs {}", st.s, st2.s);
 }

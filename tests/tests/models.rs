@@ -35,7 +35,9 @@ fn finite_state(st: &thinjkr::State) -> bool {
 fn every_model_sweeps_without_nan_or_panic() {
     for id in ModelId::ALL {
         let mut solved = 0;
-        for rho in [0.05, 0.1, 0.3, 0.5, 0.8, 0.95, 0.999, 0.9999, 0.99999, 0.999999, 1.0] {
+        for rho in [
+            0.05, 0.1, 0.3, 0.5, 0.8, 0.95, 0.999, 0.9999, 0.99999, 0.999999, 1.0,
+        ] {
             let c = Contact::with_model(id, rho).unwrap();
             // apex45 far below the paper's range (error (14) above 100 %) is
             // a degenerate model: there every answer must only be finite or
@@ -314,15 +316,31 @@ fn controls_hit_their_targets() {
         for rho in [0.5, 0.8, 0.999, 0.9999, 0.999999] {
             let c = Contact::with_model(id, rho).unwrap();
             for force in [-1.0, 0.0, 10.0, 1e4] {
-                let st = c.at_load(force).unwrap_or_else(|e| panic!("{id} rho {rho} F {force}: {e}"));
-                assert!((st.force - force).abs() <= 1e-9 * (1.0 + force.abs()), "{id} rho {rho}: {st:?}");
-                assert!(st.xi.is_finite() && st.bc_error >= 0.0, "{id} rho {rho}: {st:?}");
+                let st = c
+                    .at_load(force)
+                    .unwrap_or_else(|e| panic!("{id} rho {rho} F {force}: {e}"));
+                assert!(
+                    (st.force - force).abs() <= 1e-9 * (1.0 + force.abs()),
+                    "{id} rho {rho}: {st:?}"
+                );
+                assert!(
+                    st.xi.is_finite() && st.bc_error >= 0.0,
+                    "{id} rho {rho}: {st:?}"
+                );
             }
             for a in [3.0, 10.0] {
-                for st in c.at_contact_size(a).unwrap_or_else(|e| panic!("{id} rho {rho} a {a}: {e}")) {
+                for st in c
+                    .at_contact_size(a)
+                    .unwrap_or_else(|e| panic!("{id} rho {rho} a {a}: {e}"))
+                {
                     assert!((st.a - a).abs() <= 1e-12 * a, "{id} rho {rho}: {st:?}");
-                    let (r, _) = id.model().residuals_and_jacobian(Vector2::new(st.a, st.s), rho, st.delta);
-                    assert!(r.norm() <= 1e-9 * id.model().residual_scale(st.a, st.delta), "{id} rho {rho}: {r}");
+                    let (r, _) =
+                        id.model()
+                            .residuals_and_jacobian(Vector2::new(st.a, st.s), rho, st.delta);
+                    assert!(
+                        r.norm() <= 1e-9 * id.model().residual_scale(st.a, st.delta),
+                        "{id} rho {rho}: {r}"
+                    );
                 }
             }
         }
@@ -334,7 +352,10 @@ fn controls_hit_their_targets() {
 /// ā = 12^(1/3) (the ρ-dependence is O(1 − ρ)).
 #[test]
 fn energy_pull_off_is_continuous_at_rho_one() {
-    let po = Contact::with_model(ModelId::Energy, 1.0 - 1e-6).unwrap().pull_off_load().unwrap();
+    let po = Contact::with_model(ModelId::Energy, 1.0 - 1e-6)
+        .unwrap()
+        .pull_off_load()
+        .unwrap();
     let exact = -1.5 * std::f64::consts::PI;
     assert!((po.state.force - exact).abs() < 1e-4, "{:?}", po.state);
     assert!((po.state.a - 12f64.cbrt()).abs() < 1e-4, "{:?}", po.state);

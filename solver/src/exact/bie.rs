@@ -137,7 +137,11 @@ mod tests {
         let e = |k: f64, t: f64| Complex::new(0.0, k * t).exp();
         let i = Complex::new(0.0, 1.0);
         ContourSamples {
-            z: grid.theta.iter().map(|&t| a * e(1.0, t) + b0 * e(-1.0, t) + b1 * e(-3.0, t)).collect(),
+            z: grid
+                .theta
+                .iter()
+                .map(|&t| a * e(1.0, t) + b0 * e(-1.0, t) + b1 * e(-3.0, t))
+                .collect(),
             dz: grid
                 .theta
                 .iter()
@@ -160,9 +164,13 @@ mod tests {
         for (f, df) in [
             (
                 Box::new(|z: Complex<f64>| z.powi(4)) as Box<dyn Fn(Complex<f64>) -> Complex<f64>>,
-                Box::new(|z: Complex<f64>| 4.0 * z.powi(3)) as Box<dyn Fn(Complex<f64>) -> Complex<f64>>,
+                Box::new(|z: Complex<f64>| 4.0 * z.powi(3))
+                    as Box<dyn Fn(Complex<f64>) -> Complex<f64>>,
             ),
-            (Box::new(|z: Complex<f64>| z.exp()), Box::new(|z: Complex<f64>| z.exp())),
+            (
+                Box::new(|z: Complex<f64>| z.exp()),
+                Box::new(|z: Complex<f64>| z.exp()),
+            ),
         ] {
             let g: Vec<f64> = c.z.iter().map(|&z| f(z).re).collect();
             let d = solve_dirichlet(&grid, &c, &g).unwrap();

@@ -151,7 +151,13 @@ impl Exact {
     }
 
     /// Trace from `start` towards larger ā, up to `a_max`.
-    pub fn trace_up(&self, start: &ExactState, a_max: f64, max_step: f64, max_points: usize) -> Result<Branch> {
+    pub fn trace_up(
+        &self,
+        start: &ExactState,
+        a_max: f64,
+        max_step: f64,
+        max_points: usize,
+    ) -> Result<Branch> {
         self.trace_general(start, 1.0, 0.0, a_max, max_step, max_points, false, None)
             .map(|(b, _)| b)
     }
@@ -192,8 +198,17 @@ impl Exact {
         max_points: usize,
         stop_at_force_minimum: bool,
     ) -> Result<Branch> {
-        self.trace_general(start, -1.0, a_min, f64::INFINITY, max_step, max_points, stop_at_force_minimum, None)
-            .map(|(b, _)| b)
+        self.trace_general(
+            start,
+            -1.0,
+            a_min,
+            f64::INFINITY,
+            max_step,
+            max_points,
+            stop_at_force_minimum,
+            None,
+        )
+        .map(|(b, _)| b)
     }
 
     /// Trace from `start` with ā first moving in the direction of
@@ -248,12 +263,19 @@ impl Exact {
             }
             let Some(un) = self.correct(&(&u + &t * h), &t) else {
                 if h <= 1e-4 {
-                    return Err(fail(&last, format!("no corrected point at step {h:e} after a_bar = {}", last.a_bar)));
+                    return Err(fail(
+                        &last,
+                        format!(
+                            "no corrected point at step {h:e} after a_bar = {}",
+                            last.a_bar
+                        ),
+                    ));
                 }
                 h = (h * 0.5).max(1e-4);
                 continue;
             };
-            let (_, j, g) = linearise(self, &un).ok_or_else(|| fail(&last, "singular system".into()))?;
+            let (_, j, g) =
+                linearise(self, &un).ok_or_else(|| fail(&last, "singular system".into()))?;
             let Some((tn, detn)) = tangent(&j, &t) else {
                 return Err(fail(&last, "no tangent".into()));
             };
@@ -271,7 +293,9 @@ impl Exact {
             };
             let prev = points.last().expect("one point");
             if prev.d_a_bar.signum() != p.d_a_bar.signum() {
-                events.push(Event::SizeFold { a_bar: p.state.a_bar });
+                events.push(Event::SizeFold {
+                    a_bar: p.state.a_bar,
+                });
                 if control.is_some() {
                     // a state asked for by δ̄ or F̄ is looked for on the
                     // near-elliptical stretch only: past a size fold the
@@ -331,9 +355,20 @@ impl Exact {
         };
         let found = if here < 0.0 {
             // larger loads: ā grows
-            self.trace_general(&start, 1.0, 0.0, 1e3, 0.1, 2000, false, Some(control))?.1
+            self.trace_general(&start, 1.0, 0.0, 1e3, 0.1, 2000, false, Some(control))?
+                .1
         } else {
-            self.trace_general(&start, -1.0, 0.5, f64::INFINITY, 0.05, 400, true, Some(control))?.1
+            self.trace_general(
+                &start,
+                -1.0,
+                0.5,
+                f64::INFINITY,
+                0.05,
+                400,
+                true,
+                Some(control),
+            )?
+            .1
         };
         let st = found.ok_or_else(|| {
             Error::NoState(format!(
@@ -373,10 +408,12 @@ impl Exact {
             ))
         };
         let at = |sigma: f64| -> Result<(DVector<f64>, f64)> {
-            let u = [0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4]
-                .iter()
-                .find_map(|off| self.correct(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0))
-                .ok_or_else(|| fail(sigma))?;
+            let u = [
+                0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4,
+            ]
+            .iter()
+            .find_map(|off| self.correct(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0))
+            .ok_or_else(|| fail(sigma))?;
             let (_, force) = self.modes(&u).ok_or_else(|| fail(sigma))?;
             Ok((u, force))
         };

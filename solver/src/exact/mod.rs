@@ -61,7 +61,13 @@ pub const RESOLVED: f64 = 1e-5;
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     let mut last = None;
     for modes in [12, 16, 24] {
-        let ex = Exact::new(rho, Truncation { modes, points: 16 * modes })?;
+        let ex = Exact::new(
+            rho,
+            Truncation {
+                modes,
+                points: 16 * modes,
+            },
+        )?;
         match ex.pull_off_load() {
             // more modes help only a contour that is nearly resolved; a
             // boundary error above 1e-2 means the trace left the
@@ -80,7 +86,13 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
 pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
     let mut last = None;
     for modes in [12, 16, 24] {
-        let ex = Exact::new(rho, Truncation { modes, points: 16 * modes })?;
+        let ex = Exact::new(
+            rho,
+            Truncation {
+                modes,
+                points: 16 * modes,
+            },
+        )?;
         match ex.at(control) {
             // more modes help only a contour that is nearly resolved; a
             // boundary error above 1e-2 means the trace left the
@@ -374,8 +386,9 @@ impl Exact {
             x.powi(4) / 24.0 + y.powi(4) / (24.0 * self.rho) - st.delta_bar * (x * x + y * y) / 4.0
         };
         let g: Vec<f64> = samples.z.iter().map(|&z| -p_part(z)).collect();
-        let d = solve_dirichlet(&self.fine, &samples, &g)
-            .ok_or_else(|| Error::NoState("exact field: singular boundary integral equation".into()))?;
+        let d = solve_dirichlet(&self.fine, &samples, &g).ok_or_else(|| {
+            Error::NoState("exact field: singular boundary integral equation".into())
+        })?;
         // F_j = μ_j + (1/(i n)) [Σ_{k≠j} (μ_k − μ_j) τ'_k/(τ_k − τ_j) + μ'_j]
         let mu = &d.density;
         let d_mu = self.fine.derivative(mu);
@@ -488,15 +501,26 @@ impl Exact {
             if size < 1e-13 * (1.0 + u.amax()) || (size < 1e-9 && size > 0.5 * last_step) {
                 // converged only if the boundary condition holds to its
                 // round-off floor, not merely because the steps stalled
-                let res = self.equations(&u, a_bar).map(|(r, _)| r.amax()).unwrap_or(f64::NAN);
+                let res = self
+                    .equations(&u, a_bar)
+                    .map(|(r, _)| r.amax())
+                    .unwrap_or(f64::NAN);
                 if res < RESIDUAL_TOLERANCE {
                     return self.state(&u);
                 }
-                return Err(fail(&u, res, it, "Newton stalled above the residual tolerance"));
+                return Err(fail(
+                    &u,
+                    res,
+                    it,
+                    "Newton stalled above the residual tolerance",
+                ));
             }
             last_step = size;
         }
-        let r = self.equations(&u, a_bar).map(|(r, _)| r.amax()).unwrap_or(f64::NAN);
+        let r = self
+            .equations(&u, a_bar)
+            .map(|(r, _)| r.amax())
+            .unwrap_or(f64::NAN);
         Err(fail(&u, r, 40, "no convergence in 40 Newton iterations"))
     }
 

@@ -117,8 +117,12 @@ impl Exact {
             let mut um = u.clone();
             up[k] += h;
             um[k] -= h;
-            let (gp, fp) = self.energy_gradient(&contour(&up), st.delta_bar).ok_or_else(err)?;
-            let (gm, fm) = self.energy_gradient(&contour(&um), st.delta_bar).ok_or_else(err)?;
+            let (gp, fp) = self
+                .energy_gradient(&contour(&up), st.delta_bar)
+                .ok_or_else(err)?;
+            let (gm, fm) = self
+                .energy_gradient(&contour(&um), st.delta_bar)
+                .ok_or_else(err)?;
             let col = (gp - gm) / (2.0 * h);
             hess.view_mut((0, k), (m, 1)).copy_from(&col);
             // the border: ∂²(Π̄ − 2F̄δ̄)/∂u∂δ̄ = 2∂F̄/∂u − 0 at fixed applied F̄
@@ -127,8 +131,12 @@ impl Exact {
             hess[(k, m)] = df;
         }
         let h = 1e-6 * (1.0 + st.delta_bar.abs());
-        let fp = super::fields(&st.contour, self.rho, st.delta_bar + h, &self.grid).ok_or_else(err)?.force;
-        let fm = super::fields(&st.contour, self.rho, st.delta_bar - h, &self.grid).ok_or_else(err)?.force;
+        let fp = super::fields(&st.contour, self.rho, st.delta_bar + h, &self.grid)
+            .ok_or_else(err)?
+            .force;
+        let fm = super::fields(&st.contour, self.rho, st.delta_bar - h, &self.grid)
+            .ok_or_else(err)?
+            .force;
         hess[(m, m)] = 2.0 * (fp - fm) / (2.0 * h);
         let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
         let unstable = |a: DMatrix<f64>, with_delta: bool| -> Vec<UnstableMode> {
@@ -139,7 +147,11 @@ impl Exact {
                 .map(|i| {
                     let v = eig.eigenvectors.column(i);
                     let k = v.iamax();
-                    let n = if k == 0 || (with_delta && k == m) { 0 } else { 2 * (k - 1) + 2 };
+                    let n = if k == 0 || (with_delta && k == m) {
+                        0
+                    } else {
+                        2 * (k - 1) + 2
+                    };
                     UnstableMode {
                         n,
                         wavelength: if n == 0 {
@@ -160,4 +172,3 @@ impl Exact {
         })
     }
 }
-
