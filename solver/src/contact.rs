@@ -26,7 +26,7 @@ use crate::error::{check_range, Error, Result};
 use crate::fold::{self, FoldCondition};
 use crate::model::{ClosureKind, Model, ModelId};
 use crate::newton::{self, NewtonConfig};
-use nalgebra::{Matrix3, Vector2, Vector3};
+use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// The stability of a state, for models with an energy (the energy
@@ -590,17 +590,7 @@ impl Contact {
                 Control::ABar => (z[0], Vector3::new(1.0, 0.0, 0.0)),
                 Control::Delta => (z[2], Vector3::new(0.0, 0.0, 1.0)),
             };
-            let mat = Matrix3::new(
-                j[(0, 0)],
-                j[(0, 1)],
-                d[0],
-                j[(1, 0)],
-                j[(1, 1)],
-                d[1],
-                grad[0],
-                grad[1],
-                grad[2],
-            );
+            let mat = crate::fold::bordered(&j, &d, &grad);
             let rhs = -Vector3::new(r[0], r[1], g - target);
             let Some(step) = mat
                 .lu()

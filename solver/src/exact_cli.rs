@@ -8,7 +8,7 @@
 use clap::{Args, Subcommand};
 use thinjkr::exact::branch::{Event, ExactControl};
 use thinjkr::exact::stability::UnstableMode;
-use thinjkr::exact::{pull_off_resolved, Exact, ExactState, Truncation};
+use thinjkr::exact::{resolved, Exact, ExactState, Truncation};
 use thinjkr::{Contact, Error, ModelId, Result};
 
 /// The truncation of the exact solver.
@@ -168,27 +168,7 @@ fn show_quality(st: &ExactState) {
 
 /// The exact load-controlled pull-off and every model's.
 pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
-    let (po, events) = match d.modes {
-        Some(_) => Exact::new(rho, d.tries()?[0])?.pull_off_load()?,
-        None if d.points.is_none() => pull_off_resolved(rho)?,
-        None => {
-            let mut last = None;
-            let mut found = None;
-            for t in d.tries()? {
-                match Exact::new(rho, t)?.pull_off_load() {
-                    Err(e @ Error::Unresolved { .. }) => last = Some(e),
-                    other => {
-                        found = Some(other?);
-                        break;
-                    }
-                }
-            }
-            match found {
-                Some(f) => f,
-                None => return Err(last.expect("tried")),
-            }
-        }
-    };
+    let (po, events) = resolved(rho, &d.tries()?, Exact::pull_off_load)?;
     let models: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {
@@ -259,22 +239,7 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
             range: "finite",
         });
     }
-    let mut last = None;
-    let mut found = None;
-    for t in d.tries()? {
-        match Exact::new(rho, t)?.at(control) {
-            Err(e @ Error::Unresolved { .. }) => last = Some(e),
-            Err(e) => return Err(e),
-            Ok(st) => {
-                found = Some(st);
-                break;
-            }
-        }
-    }
-    let st = match found {
-        Some(st) => st,
-        None => return Err(last.expect("tried")),
-    };
+    let st = resolved(rho, &d.tries()?, |ex| ex.at(control))?;
     let model_states: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {

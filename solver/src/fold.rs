@@ -32,7 +32,7 @@ pub enum FoldCondition {
 }
 
 /// [∂r/∂(ā, s) ∂r/∂δ̄; last row].
-fn bordered(j: &Matrix2<f64>, d: &Vector2<f64>, last: &Vector3<f64>) -> Matrix3<f64> {
+pub(crate) fn bordered(j: &Matrix2<f64>, d: &Vector2<f64>, last: &Vector3<f64>) -> Matrix3<f64> {
     Matrix3::new(
         j[(0, 0)],
         j[(0, 1)],

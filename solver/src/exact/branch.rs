@@ -150,18 +150,6 @@ impl Exact {
         self.trace_until(start, a_min, max_step, max_points, false)
     }
 
-    /// Trace from `start` towards larger ā, up to `a_max`.
-    pub fn trace_up(
-        &self,
-        start: &ExactState,
-        a_max: f64,
-        max_step: f64,
-        max_points: usize,
-    ) -> Result<Branch> {
-        self.trace_general(start, 1.0, 0.0, a_max, max_step, max_points, false, None)
-            .map(|(b, _)| b)
-    }
-
     /// The load-controlled pull-off: the first minimum of F̄ along the
     /// family traced from the state at ā = 2.6 (continued in ρ from the
     /// circle; 2.6 lies between the circle's neutral points ā³ = 12 and

@@ -55,54 +55,49 @@ pub const RESIDUAL_TOLERANCE: f64 = 1e-11;
 /// ρ = 0.8 a fine-grid error of 8e-6 goes with an error of 4e-9 in F̄.)
 pub const RESOLVED: f64 = 1e-5;
 
-/// The load-controlled pull-off at `rho` with the first of 12, 16, 24
-/// contour modes (16 quadrature points per mode) that resolves it
-/// ([`RESOLVED`]); else the last [`Error::Unresolved`].
-pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
+/// `solve` at `rho` with each truncation of `tries` in turn until one
+/// resolves the answer ([`RESOLVED`]); else the last
+/// [`Error::Unresolved`]. More modes help only a contour that is nearly
+/// resolved: a boundary error above 1e-2 means the trace left the
+/// near-elliptical family, and stops the escalation.
+pub fn resolved<T>(
+    rho: f64,
+    tries: &[Truncation],
+    solve: impl Fn(&Exact) -> Result<T>,
+) -> Result<T> {
     let mut last = None;
-    for modes in [12, 16, 24] {
-        let ex = Exact::new(
-            rho,
-            Truncation {
-                modes,
-                points: 16 * modes,
-            },
-        )?;
-        match ex.pull_off_load() {
-            // more modes help only a contour that is nearly resolved; a
-            // boundary error above 1e-2 means the trace left the
-            // near-elliptical family
+    for &t in tries {
+        match solve(&Exact::new(rho, t)?) {
             Err(e @ Error::Unresolved { residual, .. }) if residual > 1e-2 => return Err(e),
             Err(e @ Error::Unresolved { .. }) => last = Some(e),
             other => return other,
         }
     }
-    Err(last.expect("tried at least once"))
+    Err(last.unwrap_or_else(|| Error::NoState("no truncation to try".into())))
+}
+
+/// The default escalation: 12, 16, 24 contour modes, 16 quadrature points
+/// per mode.
+pub fn default_tries() -> Vec<Truncation> {
+    [12, 16, 24]
+        .iter()
+        .map(|&modes| Truncation {
+            modes,
+            points: 16 * modes,
+        })
+        .collect()
+}
+
+/// The load-controlled pull-off at `rho` with the first of 12, 16, 24
+/// contour modes that resolves it ([`resolved`]).
+pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
+    resolved(rho, &default_tries(), Exact::pull_off_load)
 }
 
 /// The exact state at `control` with the first of 12, 16, 24 contour
-/// modes that resolves it ([`RESOLVED`]); else the last
-/// [`Error::Unresolved`].
+/// modes that resolves it ([`resolved`]).
 pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
-    let mut last = None;
-    for modes in [12, 16, 24] {
-        let ex = Exact::new(
-            rho,
-            Truncation {
-                modes,
-                points: 16 * modes,
-            },
-        )?;
-        match ex.at(control) {
-            // more modes help only a contour that is nearly resolved; a
-            // boundary error above 1e-2 means the trace left the
-            // near-elliptical family
-            Err(e @ Error::Unresolved { residual, .. }) if residual > 1e-2 => return Err(e),
-            Err(e @ Error::Unresolved { .. }) => last = Some(e),
-            other => return other,
-        }
-    }
-    Err(last.expect("tried at least once"))
+    resolved(rho, &default_tries(), |ex| ex.at(control))
 }
 
 /// The discretisation: contour modes and quadrature points.
