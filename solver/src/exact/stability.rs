@@ -47,7 +47,7 @@ pub struct UnstableMode {
 }
 
 /// Which modes of an exact state are unstable.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct ExactStability {
     /// Under displacement control (δ̄ fixed).
     pub displacement: Vec<UnstableMode>,
@@ -75,13 +75,17 @@ impl Exact {
         let h = 2.0 * std::f64::consts::PI / n as f64;
         let nm = c.b.len();
         let mut g = DVector::zeros(nm + 1);
+        let tabulated = grid.basis.len() > nm;
+        let samples = c.samples(grid);
         for (i, &t) in grid.theta.iter().enumerate() {
-            let [_, dz, _] = c.at(t);
+            let dz = samples.dz[i];
             let speed = dz.norm();
             let nu = Complex::new(dz.im, -dz.re) / speed;
             let w = (f.normal_derivative[i].powi(2) - 1.0) * speed * h;
             for k in 0..=nm {
-                let e = if k == 0 {
+                let e = if tabulated {
+                    grid.basis[k][i]
+                } else if k == 0 {
                     Complex::new(0.0, t).exp()
                 } else {
                     Complex::new(0.0, -(2.0 * (k - 1) as f64 + 1.0) * t).exp()
