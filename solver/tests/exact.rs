@@ -341,3 +341,48 @@ fn doubling_the_truncation_changes_little_at_rho_0_8() {
     );
     assert!((st2.s / st.s - 1.0).abs() < 1e-9, "{} vs {}", st.s, st2.s);
 }
+
+/// The near-elliptical family at ρ = 0.8 is split at the imperfect
+/// bifurcation of the mode n = 8 (the circle's neutral point ā³ = 28,
+/// ā = 3.037): traced up from the zero-force state and down from ā ≈ 3.2
+/// (F̄ = 10) in steps of at most 0.01, both arms fold in ā, the lower one
+/// below the upper one (measured 3.0466 and 3.0598), with the contour still
+/// resolved at the folds (docs/exact.md, "Which family").
+#[test]
+fn near_elliptical_family_splits_at_the_mode_8_crossing_at_rho_0_8() {
+    use thinjkr::exact::branch::{Event, ExactControl};
+    let ex = Exact::new(0.8, trunc(12, 192)).unwrap();
+    let fold = |from: ExactControl, direction: f64| {
+        let start = ex.at(from).unwrap();
+        let br = ex
+            .trace_from(&start, direction, 2.5, 3.6, 0.01, 60)
+            .unwrap();
+        let k = br
+            .events
+            .iter()
+            .find_map(|e| match e {
+                Event::SizeFold { a_bar } => Some(*a_bar),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("no size fold from {from:?}: {:?}", br.events));
+        let before = br
+            .points
+            .iter()
+            .take_while(|p| p.d_a_bar * direction > 0.0)
+            .last()
+            .unwrap();
+        (k, before.state.bc_error)
+    };
+    let (lower, bc_lower) = fold(ExactControl::Force(0.0), 1.0);
+    let (upper, bc_upper) = fold(ExactControl::Force(10.0), -1.0);
+    let neutral = 28f64.cbrt();
+    assert!(
+        (lower - neutral).abs() < 0.03 && (upper - neutral).abs() < 0.03,
+        "folds at {lower} and {upper}, neutral point {neutral}"
+    );
+    assert!(lower < upper - 0.005, "no gap: {lower} vs {upper}");
+    assert!(
+        bc_lower < 1e-5 && bc_upper < 1e-5,
+        "{bc_lower:e} {bc_upper:e}"
+    );
+}

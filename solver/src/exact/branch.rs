@@ -25,8 +25,8 @@ pub enum Event {
         /// ā at the fold (the nearer traced point).
         a_bar: f64,
     },
-    /// F̄ has a minimum here (the load-controlled pull-off when it is the
-    /// first from large loads), refined.
+    /// F̄ has a minimum here (the load-controlled pull-off of the arm
+    /// when it is the first met with ā decreasing), refined.
     ForceMinimum {
         /// The refined state.
         state: Box<ExactState>,
@@ -66,6 +66,28 @@ pub struct Branch {
     pub points: Vec<BranchPoint>,
     /// The events met, in order.
     pub events: Vec<Event>,
+}
+
+/// The half-width of the exact circle (ρ = 1) with approach δ̄:
+/// the root of ā²/4 − 2/ā = δ̄ (increasing in ā), by bisection.
+fn circle_a_bar_at_delta(delta_bar: f64) -> f64 {
+    if !delta_bar.is_finite() {
+        return f64::NAN;
+    }
+    let f = |a: f64| a * a / 4.0 - 2.0 / a - delta_bar;
+    let (mut lo, mut hi) = (1e-12, 1.0);
+    while f(hi) < 0.0 {
+        hi *= 2.0;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) < 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
 }
 
 /// Residuals, Jacobian (central differences) and ∇F̄ at u.
@@ -112,19 +134,44 @@ fn a_bar_gradient(n: usize) -> DVector<f64> {
 }
 
 impl Exact {
-    /// Newton's method for r(u) = 0 with t·(u − u_pred) = 0.
+    /// Newton's method for r(u) = 0 with t·(u − u_pred) = 0: first keeping
+    /// the bordered Jacobian while each step reduces the residual at least
+    /// fourfold (the chord method; refreshed otherwise), and where that
+    /// fails with the Jacobian renewed at every step. The answer is
+    /// accepted only when the residual is below the tolerance.
     fn correct(&self, u_pred: &DVector<f64>, t: &DVector<f64>) -> Option<DVector<f64>> {
+        self.correct_with(u_pred, t, true)
+            .or_else(|| self.correct_with(u_pred, t, false))
+    }
+
+    fn correct_with(
+        &self,
+        u_pred: &DVector<f64>,
+        t: &DVector<f64>,
+        chord: bool,
+    ) -> Option<DVector<f64>> {
         let n = u_pred.len();
         let mut u = u_pred.clone();
-        for _ in 0..25 {
-            let (r, j, _) = linearise(self, &u)?;
-            let mut m = DMatrix::zeros(n, n);
-            m.rows_mut(0, n - 1).copy_from(&j);
-            m.row_mut(n - 1).copy_from(&t.transpose());
+        let mut lu = None;
+        let mut last = f64::INFINITY;
+        for _ in 0..if chord { 40 } else { 25 } {
+            let r = self.modes(&u)?.0;
+            let res = r.amax();
+            if lu.is_none() || !chord || res > 0.25 * last {
+                let (_, j, _) = linearise(self, &u)?;
+                let mut m = DMatrix::zeros(n, n);
+                m.rows_mut(0, n - 1).copy_from(&j);
+                m.row_mut(n - 1).copy_from(&t.transpose());
+                lu = Some(m.lu());
+            }
+            last = res;
             let mut rhs = DVector::zeros(n);
             rhs.rows_mut(0, n - 1).copy_from(&(-&r));
             rhs[n - 1] = -t.dot(&(&u - u_pred));
-            let step = m.lu().solve(&rhs)?;
+            let step = lu.as_ref()?.solve(&rhs)?;
+            if !step.iter().all(|v| v.is_finite()) {
+                return None;
+            }
             u += &step;
             if step.amax() < 1e-12 * (1.0 + u.amax()) {
                 let (r, _) = self.modes(&u)?;
@@ -148,6 +195,24 @@ impl Exact {
         max_points: usize,
     ) -> Result<Branch> {
         self.trace_until(start, a_min, max_step, max_points, false)
+    }
+
+    /// Trace from `start` with ā first moving in `direction` (+1: growing,
+    /// −1: shrinking) until ā leaves [`a_min`, `a_max`] or `max_points`
+    /// points are traced; events as in [`Exact::trace`].
+    pub fn trace_from(
+        &self,
+        start: &ExactState,
+        direction: f64,
+        a_min: f64,
+        a_max: f64,
+        max_step: f64,
+        max_points: usize,
+    ) -> Result<Branch> {
+        self.trace_general(
+            start, direction, a_min, a_max, max_step, max_points, false, None,
+        )
+        .map(|(b, _)| b)
     }
 
     /// The load-controlled pull-off: the first minimum of F̄ along the
@@ -329,41 +394,95 @@ impl Exact {
         Ok((Branch { points, events }, None))
     }
 
-    /// The exact state at approach δ̄ or force F̄ on the near-elliptical
-    /// family traced from the state at ā = 2.6 continued from the circle,
-    /// between the nearest size fold above (where the family turns back
-    /// in ā and the contour turns strongly non-elliptical) and the
-    /// load-controlled pull-off below; an unresolved state is
-    /// [`Error::Unresolved`], a value not reached is [`Error::NoState`].
+    /// The exact state at approach δ̄ or force F̄: the exact circle at
+    /// ρ = 1 with the same δ̄ or F̄ (δ̄ = ā²/4 − 2/ā, F̄ = π(ā⁶ − 24ā³)/96,
+    /// (22)–(25); for F̄ the root above the pull-off) is continued in ρ at
+    /// its ā ([`Exact::from_circle`]), and the family is traced from there
+    /// in steps of at most 0.02 to the requested value. The trace stays on
+    /// the near-elliptical arm it starts on: it stops at a size fold (where
+    /// the arm turns into an undulated contour at an imperfect bifurcation
+    /// of a mode n, near the circle's ā³ = 4(n − 1)) and at the
+    /// load-controlled pull-off. No approximate model is used. An
+    /// unresolved state is [`Error::Unresolved`], a value not reached is
+    /// [`Error::NoState`] saying where the arm ended.
     pub fn at(&self, control: ExactControl) -> Result<ExactState> {
-        let start = self.from_circle(2.6)?;
-        let here = match control {
-            ExactControl::Delta(v) => start.delta_bar - v,
-            ExactControl::Force(v) => start.force_bar - v,
+        let a_circle = match control {
+            ExactControl::Delta(v) => circle_a_bar_at_delta(v),
+            ExactControl::Force(v) => {
+                let disc = 144.0 + 96.0 * v / std::f64::consts::PI;
+                if !(disc >= 0.0) {
+                    return Err(Error::NoState(format!(
+                        "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, -3 pi/2, and so below that of every rho",
+                        self.rho
+                    )));
+                }
+                (12.0 + disc.sqrt()).cbrt()
+            }
         };
-        let found = if here < 0.0 {
-            // larger loads: ā grows
-            self.trace_general(&start, 1.0, 0.0, 1e3, 0.1, 2000, false, Some(control))?
-                .1
-        } else {
-            self.trace_general(
-                &start,
-                -1.0,
-                0.5,
-                f64::INFINITY,
-                0.05,
-                400,
-                true,
-                Some(control),
-            )?
-            .1
-        };
-        let st = found.ok_or_else(|| {
-            Error::NoState(format!(
-                "exact state at rho = {}: {control:?} is not reached on the near-elliptical family continued from the circle at a_bar = 2.6, between its size folds and its load-controlled pull-off",
+        if !(a_circle.is_finite() && a_circle > 0.0) {
+            return Err(Error::NoState(format!(
+                "exact state at rho = {}: {control:?} has no circle to start from",
                 self.rho
-            ))
-        })?;
+            )));
+        }
+        // a start whose arm folds before the value is reached is retried
+        // once from the far side of the fold (0.3 beyond it in ā)
+        let mut a_start = a_circle;
+        let mut ends = Vec::new();
+        let st = loop {
+            let start = self.from_circle(a_start)?;
+            let here = match control {
+                ExactControl::Delta(v) => start.delta_bar - v,
+                ExactControl::Force(v) => start.force_bar - v,
+            };
+            // on the near-elliptical arms above the pull-off δ̄ and F̄ grow with ā
+            let direction = if here < 0.0 { 1.0 } else { -1.0 };
+            let (branch, found) = self.trace_general(
+                &start,
+                direction,
+                0.5,
+                1e3,
+                0.02,
+                2000,
+                direction < 0.0,
+                Some(control),
+            )?;
+            if let Some(st) = found {
+                break st;
+            }
+            let fold = branch.events.iter().find_map(|e| match e {
+                Event::SizeFold { a_bar } => Some(*a_bar),
+                _ => None,
+            });
+            let end = match (fold, branch.events.iter().find_map(|e| match e {
+                Event::ForceMinimum { state } => Some(state.force_bar),
+                _ => None,
+            })) {
+                (Some(a_bar), _) => format!(
+                    "the arm through the circle's a_bar = {a_start:.6} continued in rho (contour {:.1e} a off the ellipse there) folds at a_bar = {a_bar:.6} (an imperfect bifurcation: beyond it the contour turns undulated)",
+                    start.deviation_from_ellipse
+                ),
+                (None, Some(force)) => format!(
+                    "the arm through the circle's a_bar = {a_start:.6} continued in rho (contour {:.1e} a off the ellipse there) reaches its load-controlled pull-off, F = {force:.6}, first",
+                    start.deviation_from_ellipse
+                ),
+                _ => format!(
+                    "the trace from the circle's a_bar = {a_start:.6} ended at a_bar = {:.6}",
+                    branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN)
+                ),
+            };
+            ends.push(end);
+            match fold {
+                Some(a_bar) if ends.len() < 2 => a_start = a_bar + 0.3 * direction,
+                _ => {
+                    return Err(Error::NoState(format!(
+                        "exact state at rho = {}: {control:?} is not reached: {}",
+                        self.rho,
+                        ends.join("; then ")
+                    )))
+                }
+            }
+        };
         if st.bc_error > super::RESOLVED {
             return Err(Error::Unresolved {
                 what: format!(
