@@ -92,3 +92,41 @@ fn the_comparison_tells_a_changed_coefficient_from_an_identity() {
         Verdict::Differs
     );
 }
+
+/// `sec6.error.exact` is `unverified`, never a verdict, when its exact
+/// reference is missing, not JSON, unresolved or not shown converged; with
+/// the committed reference it is decided (the verdict itself depends on
+/// the exact solution: see docs/errata.md).
+#[test]
+fn the_exact_error_claim_needs_a_resolved_converged_reference() {
+    use thinjkr_derive::claims::{error_against_reference, EXACT_REFERENCE};
+    let d = Derivation::new(&ansatz::PAPER).expect("derivation");
+    let dir = std::env::temp_dir().join(format!("thinjkr-ref-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = std::fs::read_to_string(EXACT_REFERENCE).expect("reference exists");
+    let v: serde_json::Value = serde_json::from_str(&good).unwrap();
+    let with = |key: &str, value: f64| {
+        let mut w = v.clone();
+        for e in w["pull_off"].as_array_mut().unwrap() {
+            e[key] = serde_json::json!(value);
+        }
+        w.to_string()
+    };
+    let cases = [
+        ("missing", None),
+        ("garbage", Some("not json".to_string())),
+        ("unresolved", Some(with("bc_error", 1e-3))),
+        ("unconverged", Some(with("doubling_change_force", 1e-4))),
+    ];
+    for (name, content) in cases {
+        let p = dir.join(format!("{name}.json"));
+        if let Some(c) = content {
+            std::fs::write(&p, c).unwrap();
+        }
+        let r = error_against_reference(&d, p.to_str().unwrap());
+        assert_eq!(r.verdict, Verdict::Unverified, "{name}: {}", r.note);
+    }
+    let r = error_against_reference(&d, EXACT_REFERENCE);
+    assert_ne!(r.verdict, Verdict::Unverified, "{}", r.note);
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -4,8 +4,12 @@
 //! (27)), the printed version is drawn too, dashed and labelled, so that the
 //! difference can be seen. Output is deterministic.
 //!
+//! The figures of the exact solution ([`exact_all`]) are drawn from the
+//! exact pull-offs of the accuracy run (`derive/data/exact_reference.json`,
+//! [`crate::exact::table::Reference`]) beside every model's.
+//!
 //! Owns: figure data and rendering. May use: `contact`, `curve`, `limits`,
-//! `generated` (the paper's model `max`, whose figures these are).
+//! `exact`, `generated` (the paper's model `max`, whose figures these are).
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
@@ -31,12 +35,15 @@ struct Figure {
     series: Vec<Series>,
     /// x-interval shaded (for the validity range).
     shade: Option<(f64, f64)>,
+    /// Same scale on both axes (contours).
+    equal: bool,
 }
 
 const BLUE: RGBColor = RGBColor(31, 90, 180);
 const RED: RGBColor = RGBColor(200, 50, 40);
 const GREEN: RGBColor = RGBColor(30, 140, 70);
 const GREY: RGBColor = RGBColor(110, 110, 110);
+const ORANGE: RGBColor = RGBColor(230, 140, 20);
 
 fn solid(label: &str, points: Vec<(f64, f64)>, color: RGBColor) -> Series {
     Series {
@@ -104,6 +111,7 @@ fn figures() -> Result<Vec<Figure>> {
             BLUE,
         )],
         shade: None,
+        equal: false,
     });
     // Fig. 3: axisymmetric force–displacement.
     let (a_c, _, _) = limits::axisymmetric_critical(ModelId::Max)?;
@@ -134,6 +142,7 @@ fn figures() -> Result<Vec<Figure>> {
             dashed("printed (25)₁ (2^(4/3)/ā): differs", printed, RED),
         ],
         shade: None,
+        equal: false,
     });
     // Fig. 4: s against ρ at zero force, and the non-adhesive (29).
     let rhos: Vec<f64> = grid(0.05, 1.0, 200).collect();
@@ -164,6 +173,7 @@ fn figures() -> Result<Vec<Figure>> {
             ),
         ],
         shade: None,
+        equal: false,
     });
     // Fig. 5: δ̄ and ā at zero force against ρ; printed (26), (27) lack η.
     let zf: Vec<(f64, f64, f64)> = rhos
@@ -211,6 +221,7 @@ fn figures() -> Result<Vec<Figure>> {
             ),
         ],
         shade: None,
+        equal: false,
     });
     // Figs. 6–8 at ρ = 0.8.
     let b = branch(0.8, 600)?;
@@ -230,6 +241,7 @@ fn figures() -> Result<Vec<Figure>> {
             ),
         ],
         shade: None,
+        equal: false,
     });
     let pull = Contact::new(0.8)?.pull_off_load()?.state;
     out.push(Figure {
@@ -263,6 +275,7 @@ fn figures() -> Result<Vec<Figure>> {
             ),
         ],
         shade: None,
+        equal: false,
     });
     let non_adhesive: Vec<(f64, f64)> = grid(0.0, 3.0, 100)
         .map(|d| {
@@ -308,6 +321,7 @@ fn figures() -> Result<Vec<Figure>> {
             ),
         ],
         shade: None,
+        equal: false,
     });
     // Fig. 9: comparison across ρ.
     let mut series = vec![solid(
@@ -332,6 +346,7 @@ fn figures() -> Result<Vec<Figure>> {
         y_label: "force F̄",
         series,
         shade: None,
+        equal: false,
     });
     // Crossing angle of two equal cylinders: ρ = tan²(θ/2).
     let thetas: Vec<f64> = grid(20.0, 90.0, 141).collect();
@@ -354,6 +369,7 @@ fn figures() -> Result<Vec<Figure>> {
             solid("pull-off force |F̄|/(3π/2)", f_pts, RED),
         ],
         shade: Some((theta_08, 90.0)),
+        equal: false,
     });
     Ok(out)
 }
@@ -386,7 +402,21 @@ fn render(fig: &Figure) -> Result<String> {
             let d = (hi - lo).max(1e-9) * 0.05;
             (lo - d, hi + d)
         };
-        let ((x0, x1), (y0, y1)) = (pad(x0, x1), pad(y0, y1));
+        let ((mut x0, mut x1), (mut y0, mut y1)) = (pad(x0, x1), pad(y0, y1));
+        if fig.equal {
+            // the plotting area is about 620 × 400 pixels: widen the
+            // shorter range about its middle so one unit is as long on
+            // both axes
+            let ratio = 620.0 / 400.0;
+            let (w, h) = (x1 - x0, y1 - y0);
+            if w / h < ratio {
+                let (m, half) = (0.5 * (x0 + x1), 0.5 * h * ratio);
+                (x0, x1) = (m - half, m + half);
+            } else {
+                let (m, half) = (0.5 * (y0 + y1), 0.5 * w / ratio);
+                (y0, y1) = (m - half, m + half);
+            }
+        }
         let mut chart = ChartBuilder::on(&root)
             .caption(&fig.title, ("sans-serif", 20))
             .margin(12)
@@ -445,6 +475,145 @@ fn render(fig: &Figure) -> Result<String> {
         root.present().map_err(|e| err(&e))?;
     }
     Ok(svg)
+}
+
+/// The exact solution's figures from `reference`: the pull-off F̄ against
+/// ρ (exact and every model), the exact contours at pull-off beside the
+/// paper's ellipse at ρ = 0.8, 0.5 and the lowest resolved ρ, and
+/// |∂p̄/∂ν − 1| along the contour at ρ = 0.8 and 0.5 for the paper's model and
+/// the exact solution.
+pub fn exact_all(
+    reference: &crate::exact::table::Reference,
+) -> Result<Vec<(&'static str, String)>> {
+    exact_figures(reference)?
+        .iter()
+        .map(|f| Ok((f.file, render(f)?)))
+        .collect()
+}
+
+fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figure>> {
+    use crate::exact::{Exact, ExactState, Truncation};
+    let po = &reference.pull_off;
+    let entry = |rho: f64| {
+        po.iter().find(|e| e.rho == rho).ok_or_else(|| {
+            Error::NoState(format!(
+                "the exact reference has no pull-off at rho = {rho}"
+            ))
+        })
+    };
+    let lowest = po.iter().map(|e| e.rho).fold(f64::INFINITY, f64::min);
+    let mut out = Vec::new();
+    // 1. pull-off force against ρ
+    let colors = [BLUE, RED, GREEN, ORANGE];
+    let mut series = vec![solid(
+        "exact (2)–(3)",
+        po.iter().map(|e| (e.rho, e.force_bar)).collect(),
+        BLACK,
+    )];
+    for (m, &c) in ModelId::ALL.iter().zip(&colors) {
+        let pts = grid(lowest, 1.0, 31)
+            .map(|rho| {
+                Contact::with_model(*m, rho)
+                    .and_then(|c| c.pull_off_load())
+                    .map(|p| (rho, p.state.force))
+            })
+            .collect::<Result<Vec<_>>>()?;
+        series.push(solid(&format!("model {m}"), pts, c));
+    }
+    out.push(Figure {
+        file: "exact_pull_off.svg",
+        title: "Load-controlled pull-off: the exact solution and the models".into(),
+        x_label: "ρ = R₁/R₂",
+        y_label: "F̄ at pull-off",
+        series,
+        shade: Some((0.8, 1.0)),
+        equal: false,
+    });
+    // 2. contours at pull-off
+    let mut series = Vec::new();
+    let mut rhos = vec![0.8, 0.5];
+    if lowest < 0.5 {
+        rhos.push(lowest);
+    }
+    for (&rho, &c) in rhos.iter().zip(&colors) {
+        let e = entry(rho)?;
+        let z: Vec<(f64, f64)> = grid(0.0, 2.0 * std::f64::consts::PI, 241)
+            .map(|t| {
+                let [z, _, _] = e.contour.at(t);
+                (z.re, z.im)
+            })
+            .collect();
+        series.push(solid(&format!("exact, ρ = {rho}"), z, c));
+        let m = Contact::new(rho)?.pull_off_load()?.state;
+        let ell = grid(0.0, 2.0 * std::f64::consts::PI, 241)
+            .map(|t| (m.a * t.cos(), m.b * t.sin()))
+            .collect();
+        series.push(dashed(&format!("paper's ellipse, ρ = {rho}"), ell, c));
+    }
+    out.push(Figure {
+        file: "exact_contours.svg",
+        title: format!(
+            "Contact at pull-off: exact contour and the paper's ellipse (ρ < {lowest}: not resolved)"
+        ),
+        x_label: "X",
+        y_label: "Y",
+        series,
+        shade: None,
+        equal: true,
+    });
+    // 3. |∂p̄/∂ν − 1| along the contour
+    let floor = 1e-16;
+    let mut series = Vec::new();
+    for (&rho, &c) in [0.8, 0.5].iter().zip(&colors) {
+        let e = entry(rho)?;
+        let ex = Exact::new(
+            rho,
+            Truncation {
+                modes: e.modes,
+                points: e.points,
+            },
+        )?;
+        let st = ExactState {
+            rho,
+            a_bar: e.a_bar,
+            b_bar: e.a_bar * e.s,
+            s: e.s,
+            delta_bar: e.delta_bar,
+            force_bar: e.force_bar,
+            contour: e.contour.clone(),
+            bc_error: e.bc_error,
+            deviation_from_ellipse: 0.0,
+            truncation: ex.truncation(),
+            stability: Default::default(),
+        };
+        let exact: Vec<(f64, f64)> = ex
+            .boundary_profile(&st)?
+            .into_iter()
+            .map(|(phi, dn)| (phi.to_degrees(), (dn - 1.0).abs().max(floor).log10()))
+            .collect();
+        let contact = Contact::new(rho)?;
+        let m = contact.pull_off_load()?.state;
+        let model: Vec<(f64, f64)> = grid(0.0, std::f64::consts::FRAC_PI_2, 181)
+            .map(|t| {
+                let u = t.sin().powi(2);
+                let phi = (m.b * t.sin()).atan2(m.a * t.cos());
+                let dn = contact.normal_derivative(&m, u);
+                (phi.to_degrees(), (dn - 1.0).abs().max(floor).log10())
+            })
+            .collect();
+        series.push(solid(&format!("exact, ρ = {rho}"), exact, c));
+        series.push(dashed(&format!("paper's model, ρ = {rho}"), model, c));
+    }
+    out.push(Figure {
+        file: "exact_bc_error.svg",
+        title: "Boundary condition (3)₂ along the contour at pull-off".into(),
+        x_label: "polar angle of the contour point [degrees]",
+        y_label: "log₁₀ |∂p̄/∂ν − 1| (floored at 1e-16)",
+        series,
+        shade: None,
+        equal: false,
+    });
+    Ok(out)
 }
 
 /// Every figure as (file name, SVG text).

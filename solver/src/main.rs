@@ -92,11 +92,19 @@ enum Command {
         command: exact_cli::ExactCommand,
     },
     /// The table of docs/accuracy.md: every model against the exact solution for rho from 1 to 0.1 (all cores; minutes).
-    #[command(after_help = "Example:\n  thinjkr accuracy --out docs/accuracy.md")]
+    #[command(
+        after_help = "Example:\n  thinjkr accuracy --out docs/accuracy.md --reference derive/data/exact_reference.json --figures docs/figures"
+    )]
     Accuracy {
         /// Write the markdown here instead of to standard output.
         #[arg(long)]
         out: Option<std::path::PathBuf>,
+        /// Also write the exact pull-offs as JSON here (the checker's reference, derive/data/exact_reference.json).
+        #[arg(long)]
+        reference: Option<std::path::PathBuf>,
+        /// Also draw the exact solution's figures (SVG) into this directory (docs/figures).
+        #[arg(long)]
+        figures: Option<std::path::PathBuf>,
     },
     /// The zero-force state (Section 5).
     #[command(
@@ -354,9 +362,15 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             emit_pull_off(&p, j);
         }
         Some(Command::Exact { command }) => exact_cli::run(command)?,
-        Some(Command::Accuracy { out }) => {
+        Some(Command::Accuracy {
+            out,
+            reference,
+            figures,
+        }) => {
             use rayon::prelude::*;
-            use thinjkr::exact::table::{render, row, Quantity, RHOS};
+            use thinjkr::exact::table::{
+                doubling, reference as reference_of, render, row, Quantity, RHOS,
+            };
             let jobs: Vec<(f64, Quantity)> = RHOS
                 .iter()
                 .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (r, q)))
@@ -375,7 +389,43 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                 })
                 .collect();
             bar.finish_and_clear();
-            let text = render(&rows);
+            let pull_offs: Vec<_> = rows
+                .iter()
+                .filter(|r| r.quantity == Quantity::PullOff)
+                .filter_map(|r| r.exact.as_ref().ok())
+                .collect();
+            let bar = indicatif::ProgressBar::new(pull_offs.len() as u64);
+            bar.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "{bar:40} {pos}/{len} doublings, {elapsed}",
+                )
+                .expect("template"),
+            );
+            let doublings: Vec<_> = pull_offs
+                .par_iter()
+                .map(|st| {
+                    let d = doubling(st);
+                    bar.inc(1);
+                    d
+                })
+                .collect();
+            bar.finish_and_clear();
+            let text = render(&rows, &doublings);
+            let refdata = reference_of(&doublings);
+            if let Some(dir) = figures {
+                for (name, svg) in thinjkr::figures::exact_all(&refdata)? {
+                    let p = dir.join(name);
+                    std::fs::write(&p, svg).map_err(|e| {
+                        thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))
+                    })?;
+                }
+            }
+            if let Some(p) = reference {
+                let json = serde_json::to_string_pretty(&refdata).expect("plain data serialises");
+                std::fs::write(&p, json + "\n").map_err(|e| {
+                    thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))
+                })?;
+            }
             match out {
                 Some(p) => std::fs::write(&p, text).map_err(|e| {
                     thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))

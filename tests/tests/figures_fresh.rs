@@ -24,3 +24,30 @@ fn figures_are_fresh_and_deterministic() {
         "stale figures rewritten, commit them: {stale:?}"
     );
 }
+
+/// The exact solution's figures (docs/figures/exact_*.svg) are what
+/// `thinjkr accuracy --figures docs/figures` draws from the committed
+/// reference derive/data/exact_reference.json (whose freshness
+/// solver/tests/accuracy_table.rs checks).
+#[test]
+fn exact_figures_are_fresh() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let text = std::fs::read_to_string(root.join("derive/data/exact_reference.json"))
+        .expect("the exact reference exists");
+    let reference: thinjkr::exact::table::Reference =
+        serde_json::from_str(&text).expect("the exact reference parses");
+    let figs = thinjkr::figures::exact_all(&reference).expect("exact figures draw");
+    assert_eq!(figs.len(), 3);
+    let mut stale = Vec::new();
+    for (name, svg) in &figs {
+        let p = root.join("docs/figures").join(name);
+        if std::fs::read_to_string(&p).ok().as_deref() != Some(svg.as_str()) {
+            std::fs::write(&p, svg).unwrap();
+            stale.push(*name);
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "stale exact figures rewritten, commit them: {stale:?}"
+    );
+}
