@@ -1,9 +1,14 @@
 //! criterion benchmarks of the exact solver (`thinjkr::exact`): one exact
-//! state warm-started from a neighbour on the family (Newton with the
-//! central-difference Jacobian) at ρ = 0.8 (12 modes, 192 points: pull-off
-//! converged to 4e-9, see docs/exact.md) and at ρ = 0.5 (24 modes, 384
-//! points), and one exact load-controlled pull-off at ρ = 0.8 (continuation
-//! from the circle, tracing, refinement).
+//! state at ā = 2.59 warm-started from the state at ā = 2.6 (chord Newton
+//! with the central-difference Jacobian, then the fine-grid check and the
+//! stability of the state) at ρ = 0.8 (12 modes, 192 points) and at
+//! ρ = 0.5 (24 modes, 384 points), and one exact load-controlled pull-off
+//! at ρ = 0.8 (continuation from the circle, tracing, refinement) with 16
+//! modes, the truncation `exact::resolved` picks for it (boundary error
+//! 7e-10; doubling changes F̄ by 3e-14 and s by 4e-11, docs/accuracy.md). The
+//! set-up checks that each benchmarked state is converged to 1e-9: solved
+//! again with twice the modes and points, F̄ and s change by less than
+//! that (measured: 6e-12 at ρ = 0.8, 1e-10 at ρ = 0.5).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use thinjkr::exact::{Exact, Truncation};
@@ -21,6 +26,24 @@ fn benches(c: &mut Criterion) {
         )
         .unwrap();
         let near = ex.from_circle(2.6).unwrap();
+        let st = ex.solve_from(2.59, &near).unwrap();
+        let fine = Exact::new(
+            rho,
+            Truncation {
+                modes: 2 * modes,
+                points: 32 * modes,
+            },
+        )
+        .unwrap()
+        .solve(2.59, &st.contour, st.delta_bar)
+        .unwrap();
+        let change = (fine.force_bar / st.force_bar - 1.0)
+            .abs()
+            .max((fine.s / st.s - 1.0).abs());
+        assert!(
+            change < 1e-9,
+            "the benchmarked state at rho = {rho} is not converged to 1e-9: {change:e}"
+        );
         g.bench_function(format!("state at rho = {rho} ({modes} modes), warm"), |b| {
             b.iter(|| ex.solve_from(black_box(2.59), &near).unwrap())
         });
@@ -28,12 +51,12 @@ fn benches(c: &mut Criterion) {
     let ex = Exact::new(
         0.8,
         Truncation {
-            modes: 12,
-            points: 192,
+            modes: 16,
+            points: 256,
         },
     )
     .unwrap();
-    g.bench_function("pull-off at rho = 0.8 (12 modes)", |b| {
+    g.bench_function("pull-off at rho = 0.8 (16 modes)", |b| {
         b.iter(|| ex.pull_off_load().unwrap())
     });
 }

@@ -561,8 +561,11 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         shade: None,
         equal: true,
     });
-    // 3. |∂p̄/∂ν − 1| along the contour
-    let floor = 1e-16;
+    // 3. |∂p̄/∂ν − 1| along the contour; the exact solution's is at the
+    // round-off level of its boundary integral (below 1e-9 at every point,
+    // docs/accuracy.md), whose digits differ between builds: both curves
+    // are floored at 1e-9 so that the drawing is reproducible
+    let floor = 1e-9;
     let mut series = Vec::new();
     for (&rho, &c) in [0.8, 0.5].iter().zip(&colors) {
         let e = entry(rho)?;
@@ -608,7 +611,7 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         file: "exact_bc_error.svg",
         title: "Boundary condition (3)₂ along the contour at pull-off".into(),
         x_label: "polar angle of the contour point [degrees]",
-        y_label: "log₁₀ |∂p̄/∂ν − 1| (floored at 1e-16)",
+        y_label: "log₁₀ |∂p̄/∂ν − 1| (floored at 1e-9)",
         series,
         shade: None,
         equal: false,

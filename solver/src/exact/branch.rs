@@ -126,6 +126,9 @@ fn tangent(j: &DMatrix<f64>, t_prev: &DVector<f64>) -> Option<(DVector<f64>, f64
     (norm.is_finite() && norm > 0.0).then(|| (t / norm, det))
 }
 
+/// A factored bordered Jacobian.
+type Bordered = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
+
 /// dā/du: ā = A + Σ b_j.
 fn a_bar_gradient(n: usize) -> DVector<f64> {
     let mut g = DVector::from_element(n, 1.0);
@@ -140,8 +143,31 @@ impl Exact {
     /// fails with the Jacobian renewed at every step. The answer is
     /// accepted only when the residual is below the tolerance.
     fn correct(&self, u_pred: &DVector<f64>, t: &DVector<f64>) -> Option<DVector<f64>> {
-        self.correct_with(u_pred, t, true)
-            .or_else(|| self.correct_with(u_pred, t, false))
+        self.correct_with(u_pred, t, true, None)
+            .or_else(|| self.correct_with(u_pred, t, false, None))
+    }
+
+    /// [`Exact::correct`] starting from the factored bordered Jacobian
+    /// `start` of a nearby point (the refinements between two traced
+    /// points reuse the one of the first).
+    fn correct_near(
+        &self,
+        u_pred: &DVector<f64>,
+        t: &DVector<f64>,
+        start: &Bordered,
+    ) -> Option<DVector<f64>> {
+        self.correct_with(u_pred, t, true, Some(start.clone()))
+            .or_else(|| self.correct(u_pred, t))
+    }
+
+    /// The factored bordered Jacobian [∂r/∂u; tᵀ] at u.
+    fn bordered(&self, u: &DVector<f64>, t: &DVector<f64>) -> Option<Bordered> {
+        let n = u.len();
+        let (_, j, _) = linearise(self, u)?;
+        let mut m = DMatrix::zeros(n, n);
+        m.rows_mut(0, n - 1).copy_from(&j);
+        m.row_mut(n - 1).copy_from(&t.transpose());
+        Some(m.lu())
     }
 
     fn correct_with(
@@ -149,20 +175,17 @@ impl Exact {
         u_pred: &DVector<f64>,
         t: &DVector<f64>,
         chord: bool,
+        start: Option<Bordered>,
     ) -> Option<DVector<f64>> {
         let n = u_pred.len();
         let mut u = u_pred.clone();
-        let mut lu = None;
+        let mut lu = start;
         let mut last = f64::INFINITY;
         for _ in 0..if chord { 40 } else { 25 } {
             let r = self.modes(&u)?.0;
             let res = r.amax();
             if lu.is_none() || !chord || res > 0.25 * last {
-                let (_, j, _) = linearise(self, &u)?;
-                let mut m = DMatrix::zeros(n, n);
-                m.rows_mut(0, n - 1).copy_from(&j);
-                m.row_mut(n - 1).copy_from(&t.transpose());
-                lu = Some(m.lu());
+                lu = Some(self.bordered(&u, t)?);
             }
             last = res;
             let mut rhs = DVector::zeros(n);
@@ -514,12 +537,15 @@ impl Exact {
                 self.rho
             ))
         };
+        let jac0 = self.bordered(u0, t0).ok_or_else(|| fail(0.0))?;
         let at = |sigma: f64| -> Result<(DVector<f64>, f64)> {
             let u = [
                 0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4,
             ]
             .iter()
-            .find_map(|off| self.correct(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0))
+            .find_map(|off| {
+                self.correct_near(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0, &jac0)
+            })
             .ok_or_else(|| fail(sigma))?;
             let (_, force) = self.modes(&u).ok_or_else(|| fail(sigma))?;
             Ok((u, force))
@@ -566,11 +592,16 @@ impl Exact {
         let (mut sb, mut fb) = (t0.dot(&(u1 - u0)), f1);
         let mut best = u1.clone();
         let fail = |why: &str| Error::NoState(format!("{what} at rho = {}: {why}", self.rho));
+        let jac0 = self
+            .bordered(u0, t0)
+            .ok_or_else(|| fail("singular bordered system"))?;
         for _ in 0..60 {
             let sigma = sb - fb * (sb - sa) / (fb - fa);
             let u = [0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-4, -1e-4]
                 .iter()
-                .find_map(|off| self.correct(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0))
+                .find_map(|off| {
+                    self.correct_near(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0, &jac0)
+                })
                 .ok_or_else(|| fail(&format!("no corrected point near sigma = {sigma}")))?;
             let f = value(&u).ok_or_else(|| fail("singular system"))?;
             best = u;

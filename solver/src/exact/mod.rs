@@ -517,6 +517,12 @@ impl Exact {
     /// method from the contour `guess` and approach `delta_guess` (an
     /// approximate model's state, or a neighbour on the family).
     pub fn solve(&self, a_bar: f64, guess: &Contour, delta_guess: f64) -> Result<ExactState> {
+        self.state(&self.newton(a_bar, guess, delta_guess)?)
+    }
+
+    /// The unknowns u = (A, b₀..b_{N−1}, δ̄) of the state [`Exact::solve`]
+    /// returns, without the state's fine-grid check and stability.
+    fn newton(&self, a_bar: f64, guess: &Contour, delta_guess: f64) -> Result<DVector<f64>> {
         let nm = self.truncation.modes;
         let mut u = DVector::zeros(nm + 2);
         u[0] = guess.a;
@@ -564,6 +570,12 @@ impl Exact {
         let mut lu = None;
         let mut last_step = f64::INFINITY;
         for it in 0..60 {
+            if r.amax() <= 1e-13 {
+                // at the round-off floor of the boundary integral solution:
+                // further steps only move along a near-singular direction
+                // (at a bifurcation point such as the circle's pull-off)
+                return Ok(u);
+            }
             let fresh = lu.is_none();
             let step = {
                 let factors = match &lu {
@@ -603,7 +615,7 @@ impl Exact {
                 // round-off floor, not merely because the steps stalled
                 let res = r.amax();
                 if res < RESIDUAL_TOLERANCE {
-                    return self.state(&u);
+                    return Ok(u);
                 }
                 return Err(fail(
                     &u,
@@ -640,20 +652,26 @@ impl Exact {
     /// exact circle at ρ = 1 (steps in ρ halved where Newton fails): no
     /// approximate model is used.
     pub fn from_circle(&self, a_bar: f64) -> Result<ExactState> {
+        let nm = self.truncation.modes;
         let circle = Exact::new(1.0, self.truncation)?;
-        let mut st = circle.solve(
+        // the intermediate states need no fine-grid check or stability
+        let mut u = circle.newton(
             a_bar,
-            &Contour::ellipse(a_bar, a_bar, self.truncation.modes),
+            &Contour::ellipse(a_bar, a_bar, nm),
             a_bar * a_bar / 4.0 - 2.0 / a_bar,
         )?;
+        let contour = |u: &DVector<f64>| Contour {
+            a: u[0],
+            b: u.rows(1, nm).iter().copied().collect(),
+        };
         let mut rho = 1.0;
         let mut step: f64 = 0.05;
         while rho > self.rho {
             let next = (rho - step).max(self.rho);
             let ex = Exact::new(next, self.truncation)?;
-            match ex.solve_from(a_bar, &st) {
+            match ex.newton(a_bar, &contour(&u), u[nm + 1]) {
                 Ok(n) => {
-                    st = n;
+                    u = n;
                     rho = next;
                     step = (step * 1.5).min(0.1);
                 }
@@ -661,7 +679,7 @@ impl Exact {
                 Err(_) => step *= 0.5,
             }
         }
-        Ok(st)
+        self.state(&u)
     }
 
     pub(crate) fn state(&self, u: &DVector<f64>) -> Result<ExactState> {
