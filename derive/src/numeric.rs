@@ -161,6 +161,11 @@ pub fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Result<f64, S
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
         let fm = f(mid);
+        if !fm.is_finite() {
+            return Err(format!(
+                "the function is not finite at {mid} (bisection on [{lo}, {hi}])"
+            ));
+        }
         if fm.signum() == flo.signum() {
             lo = mid;
             flo = fm;

@@ -130,3 +130,58 @@ fn the_exact_error_claim_needs_a_resolved_converged_reference() {
     assert_ne!(r.verdict, Verdict::Unverified, "{}", r.note);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A derivation step that fails, or a derived side that cannot be
+/// evaluated, gives `unverified` with the reason, never `holds` or
+/// `differs`: here the elimination behind the Appendix's ρ(s, ξ) is
+/// removed, the collocation lost, and (14) replaced by an expression with
+/// a symbol nothing assigns (so no number can be computed from it).
+#[test]
+fn a_failing_derivation_step_is_unverified() {
+    let good = Derivation::new(&ansatz::PAPER).expect("derivation");
+    let verdict_of = |d: &Derivation, id: &str| {
+        let r = check_all(d).expect("check runs");
+        let c = r.into_iter().find(|c| c.id == id).expect("present");
+        (c.verdict, c.note)
+    };
+    let mut d = good.clone();
+    d.rho_from_xi = None;
+    let (v, note) = verdict_of(&d, "appendix.rho");
+    assert_eq!(v, Verdict::Unverified, "{note}");
+    assert!(note.contains("eliminating"), "{note}");
+
+    let mut d = good.clone();
+    d.collocation.clear();
+    let (v, note) = verdict_of(&d, "10");
+    assert_eq!(v, Verdict::Unverified, "{note}");
+
+    let mut d = good.clone();
+    d.bc_error = ex("s*unknown_symbol");
+    let (v, note) = verdict_of(&d, "fig2.bound");
+    assert_eq!(v, Verdict::Unverified, "{note}");
+}
+
+/// The second routes decide: a second route that disagrees with the
+/// derived side makes the claim `unverified`, whatever the comparison
+/// with the printed form said.
+#[test]
+fn disagreeing_second_routes_leave_no_verdict() {
+    use thinjkr_derive::claims::{decided_by_two_routes, SecondRoute};
+    let r = results();
+    let c18 = r.iter().find(|c| c.id == "18").expect("present").clone();
+    assert_eq!(c18.verdict, Verdict::Differs, "{}", c18.note);
+    assert!(c18.note.contains("Second route agrees"), "{}", c18.note);
+    let broken = decided_by_two_routes(
+        c18.clone(),
+        Ok(SecondRoute {
+            text: "quadrature 1.0 vs derived 2.0".into(),
+            agrees: false,
+        }),
+    );
+    assert_eq!(broken.verdict, Verdict::Unverified);
+    let failed = decided_by_two_routes(c18, Err("quadrature failed".into()));
+    assert_eq!(failed.verdict, Verdict::Unverified);
+    let c8 = r.iter().find(|c| c.id == "8").expect("present");
+    assert_eq!(c8.verdict, Verdict::Holds, "{}", c8.note);
+    assert!(c8.note.contains("Second route agrees"), "{}", c8.note);
+}
