@@ -251,19 +251,64 @@ fn energy_section(o: &mut String, e: &crate::energy::EnergyDerivation) {
 }
 
 /// Consequences of each differing claim, for the errata.
-fn consequence(id: &str) -> &'static str {
-    match id {
-        "18" => "Every force computed from the printed (18) at s < 1 is wrong: the printed form omits η(s) ≥ 1 in front of 2s²āδ̄, which overstates the adhesive (negative) part relative to the compressive part. The force–displacement curves (Figs. 7–9) and the pull-off force depend on it. The equations (19)–(20) that fix (ā, s) are not affected. thinjkr computes F̄ from the derived form.",
-        "26" => "The zero-force state: ā δ̄ is smaller by the factor η(s). Fig. 5 depends on it.",
-        "27" => "The zero-force contact size: ā³ is smaller by the factor η(s) (ā by η^(1/3)). Fig. 5 depends on it. (28), and with it Fig. 4 and (30), are unaffected because η cancels between (19) and (20).",
-        "25.1" => "Fig. 3 (axisymmetric force–displacement curve) and the critical approach δ̄_c. (22) itself holds; only its dimensionless form is misprinted: the adhesive term is 2/ā, not 2^(4/3)/ā.",
-        "sec4.dc" => "The critical approach at pull-off in the axisymmetric case is δ̄_c = 12^(-1/3) ≈ 0.4368 (from the derived (25)₁), not 0.2097; the printed value follows the misprinted (25)₁.",
-        "fig2.bound" => "Marginal: (14) = η(s) − 1 equals 10.017 % at s = 0.6 and drops below 10 % only for s > 0.6003. The statement holds for s ≥ 0.601.",
-        "fig7.pulloff" => "The aspect ratio at pull-off agrees; the pull-off force from the derived model is F̄ ≈ −4.189 (the printed (18) would give ≈ −4.195); neither rounds to −4.21.",
-        "fig7.heavy" => "At F̄ = 10 the derived aspect ratio is s ≈ 0.919; 0.93 is approached only in the non-adhesive limit s∞ ≈ 0.928 of (29). The range of s over the loading history for ρ = 0.8 is therefore about [0.895, 0.928), slightly narrower than stated.",
-        "sec6.error.exact" => "The paper's 0.5 % is a bound on the error of the boundary condition, (14), not on the solution. Held against the exact solution of (2)–(3) (docs/exact.md, docs/accuracy.md), the note gives the model's errors at pull-off in F̄, ā and s and says which are within 0.5 %.",
-        "sec6.error" => "Under load control the a-priori bound holds (0.47 % at pull-off for ρ = 0.8). Under displacement control the state can follow the branch past the load-controlled pull-off, where s decreases further: (14) passes 0.5 % at s ≈ 0.891 and reaches ≈ 3 % at the fold of the contact size. For those states the a-posteriori error (14) must be reported, which thinjkr does for every state.",
-        _ => "",
+/// What depends on a differing claim, in words, with the numbers the
+/// check computed for it ([`ClaimResult::values`]): run for another ansatz,
+/// the same sentences carry that ansatz's numbers.
+pub fn consequence(r: &ClaimResult) -> String {
+    let v = |k: &str| r.values.get(k).copied();
+    let pct = |x: f64| 100.0 * x;
+    let missing = || "(the check computed no values for this text)".to_string();
+    match r.id.as_str() {
+        "18" => "Every force computed from the printed (18) at s < 1 is wrong: the printed form omits η(s) ≥ 1 in front of 2s²āδ̄, which overstates the adhesive (negative) part relative to the compressive part. The force–displacement curves (Figs. 7–9) and the pull-off force depend on it. The equations (19)–(20) that fix (ā, s) are not affected. thinjkr computes F̄ from the derived form.".into(),
+        "26" => "The zero-force state: ā δ̄ is smaller by the factor η(s). Fig. 5 depends on it.".into(),
+        "27" => "The zero-force contact size: ā³ is smaller by the factor η(s) (ā by η^(1/3)). Fig. 5 depends on it. (28), and with it Fig. 4 and (30), are unaffected because η cancels between (19) and (20).".into(),
+        "25.1" => "Fig. 3 (axisymmetric force–displacement curve) and the critical approach δ̄_c. (22) itself holds; only its dimensionless form is misprinted (see the derived form above).".into(),
+        "sec4.dc" => match v("derived") {
+            Some(dc) => format!("The critical approach at pull-off in the axisymmetric case is δ̄_c = {} ≈ {dc:.4} (from the derived (25)₁), not the printed value, which follows the misprinted (25)₁.", r.derived),
+            None => missing(),
+        },
+        "fig2.bound" => match (v("at_0_6"), v("threshold"), v("worst")) {
+            (Some(at), Some(th), _) if at >= 0.1 => format!(
+                "Marginal: (14) = η(s) − 1 equals {:.3} % at s = 0.6 and drops below 10 % only for s > {th:.4}. The statement holds for s ≥ {:.3}.",
+                pct(at),
+                (th * 1000.0).ceil() / 1000.0
+            ),
+            (Some(_), _, Some(w)) => format!("(14) stays below 10 % on [0.6, 1]: its largest value there is {:.3} %.", pct(w)),
+            _ => missing(),
+        },
+        "fig7.pulloff" => match (v("s"), v("fbar"), v("fbar_printed_18"), v("s_ok")) {
+            (Some(_), Some(f), Some(f18), Some(s_ok)) => {
+                let rounds = |x: f64| crate::check::approx_printed(x, "-4.21").0;
+                let which = match (rounds(f), rounds(f18)) {
+                    (true, true) => "both round to −4.21",
+                    (true, false) => "the derived one rounds to −4.21, the printed (18)'s does not",
+                    (false, true) => "only the printed (18)'s rounds to −4.21",
+                    (false, false) => "neither rounds to −4.21",
+                };
+                format!(
+                    "The aspect ratio at pull-off {}; the pull-off force from the derived model is F̄ ≈ {f:.3} (the printed (18) would give ≈ {f18:.3} on the same branch); {which}.",
+                    if s_ok > 0.5 { "agrees" } else { "differs" }
+                )
+            }
+            _ => missing(),
+        },
+        "fig7.heavy" => match (v("s"), v("s_inf"), v("s_pull_off")) {
+            (Some(s10), Some(si), Some(sp)) => format!(
+                "At F̄ = 10 the derived aspect ratio is s ≈ {s10:.3}; the non-adhesive limit (29), approached only as F̄ → ∞, is s∞ ≈ {si:.3}. The range of s over the loading history for ρ = 0.8 is therefore about [{sp:.3}, {si:.3}).",
+            ),
+            _ => missing(),
+        },
+        "sec6.error.exact" => "The paper's 0.5 % is a bound on the error of the boundary condition, (14), not on the solution. Held against the exact solution of (2)–(3) (docs/exact.md, docs/accuracy.md), the note gives the model's errors at pull-off in F̄, ā and s and says which are within 0.5 %.".into(),
+        "sec6.error" => match (v("worst_load"), v("s_half"), v("worst_displacement")) {
+            (Some(wl), Some(sh), Some(wd)) => format!(
+                "Under load control the a-priori bound {} (at most {:.2} % for ρ in [0.8, 0.99]). Under displacement control the state can follow the branch past the load-controlled pull-off, where s decreases further: at ρ = 0.8, (14) passes 0.5 % at s ≈ {sh:.3}, and it reaches ≈ {:.1} % at the fold of the contact size. For those states the a-posteriori error (14) must be reported, which thinjkr does for every state.",
+                if wl < 0.005 { "holds" } else { "does not hold" },
+                pct(wl),
+                pct(wd)
+            ),
+            _ => missing(),
+        },
+        _ => String::new(),
     }
 }
 
@@ -285,7 +330,7 @@ pub fn errata_md(results: &[ClaimResult]) -> String {
             format!("{:?}", r.method).to_lowercase(),
             r.note
         );
-        let c = consequence(&r.id);
+        let c = consequence(r);
         if !c.is_empty() {
             let _ = writeln!(o, "- Consequences: {c}");
         }

@@ -185,3 +185,45 @@ fn disagreeing_second_routes_leave_no_verdict() {
     assert_eq!(c8.verdict, Verdict::Holds, "{}", c8.note);
     assert!(c8.note.contains("Second route agrees"), "{}", c8.note);
 }
+
+/// The numbers in the reports' prose are computed by the check from the
+/// model being checked: the same sentences, for the ansatz `apexes` (∂p/∂ν fixed at the apex), carry
+/// other numbers (and every one of them is computed, none missing).
+#[test]
+fn report_numbers_come_from_the_model_checked() {
+    use thinjkr_derive::report::consequence;
+    let paper = results();
+    let other = check_all(&Derivation::new(&ansatz::APEXES).expect("the apexes model derives"))
+        .expect("check runs");
+    for (id, differs) in [
+        // (14) depends on the collocation only, which apexes shares
+        ("fig2.bound", false),
+        ("fig7.pulloff", true),
+        ("fig7.heavy", true),
+        ("sec6.error", true),
+    ] {
+        let find = |r: &[thinjkr_derive::claims::ClaimResult]| {
+            r.iter().find(|c| c.id == id).expect("present").clone()
+        };
+        let (a, b) = (consequence(&find(&paper)), consequence(&find(&other)));
+        assert!(!a.contains("computed no values"), "{id}: {a}");
+        assert!(
+            !b.contains("computed no values"),
+            "{id}: {b} ({})",
+            find(&other).note
+        );
+        if differs {
+            assert_ne!(a, b, "{id}: the same text for two models");
+        } else {
+            assert_eq!(a, b, "{id}");
+        }
+    }
+    // the paper's pull-off, as the check computed it, is the number printed
+    let c = paper.iter().find(|c| c.id == "fig7.pulloff").unwrap();
+    let f = c.values["fbar"];
+    assert!(
+        consequence(c).contains(&format!("{f:.3}")),
+        "{}",
+        consequence(c)
+    );
+}
