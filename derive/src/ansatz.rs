@@ -26,7 +26,8 @@ pub enum Closure {
     /// ∂p/∂ν equals √(2mΔγ) at the given contour point; with a collocation
     /// pair that ties it to another point, the condition holds at both
     /// (Johnson & Greenwood's choice of imposing Griffith's criterion at the
-    /// ends of the axes).
+    /// ends of the axes: K. L. Johnson and J. A. Greenwood, J. Phys. D: Appl. Phys. 38 (2005) 1042, the paper's reference
+    /// for the elliptical JKR approximation).
     AtPoint(ContourPoint),
     /// Ritz: the shape parameters come from (6) alone (the exact pressure on
     /// the ellipse), and the semi-axes make the total potential energy

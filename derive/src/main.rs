@@ -16,7 +16,26 @@ fn main() -> ExitCode {
     match args.first().map(String::as_str) {
         Some("check") => {
             let json = args.iter().any(|a| a == "--json");
-            let d = match Derivation::new(&ansatz::PAPER) {
+            // `--model NAME`: hold the paper's claims against another
+            // closure's derivation (default: the paper's, `max`)
+            let name = args
+                .iter()
+                .position(|a| a == "--model")
+                .and_then(|i| args.get(i + 1))
+                .map(String::as_str)
+                .unwrap_or(ansatz::PAPER.id);
+            let Some(a) = ansatz::ALL.iter().find(|a| a.id == name) else {
+                eprintln!(
+                    "unknown model {name}: one of {}",
+                    ansatz::ALL
+                        .iter()
+                        .map(|a| a.id)
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                );
+                return ExitCode::FAILURE;
+            };
+            let d = match Derivation::new(a) {
                 Ok(d) => d,
                 Err(e) => {
                     eprintln!("derivation failed: {e}");

@@ -312,29 +312,132 @@ pub fn consequence(r: &ClaimResult) -> String {
     }
 }
 
-/// `docs/errata.md`.
-pub fn errata_md(results: &[ClaimResult]) -> String {
-    let mut o = String::from(HEADER);
-    o.push_str("# Errata: printed claims that differ from the derivation\n\n");
-    o.push_str("Found by `cargo run -p thinjkr-derive -- check` (see [derivation.md](derivation.md) for every step and every verdict). For each: the printed form, the form the derivation gives, the size of the difference, how the step was re-examined, and what depends on it. thinjkr's code and tests use the derived forms.\n\n");
-    for r in results
-        .iter()
-        .filter(|r| r.verdict == crate::check::Verdict::Differs)
-    {
-        let _ = writeln!(o, "## {} — {}\n", r.id, r.source);
-        let _ = writeln!(o, "- Printed: `{}`", r.printed);
-        let _ = writeln!(o, "- Derived: `{}`", r.derived);
-        let _ = writeln!(
-            o,
-            "- Check ({}): {}",
-            format!("{:?}", r.method).to_lowercase(),
-            r.note
-        );
-        let c = consequence(r);
-        if !c.is_empty() {
-            let _ = writeln!(o, "- Consequences: {c}");
+/// The kinds of erratum, each with its own tolerance policy.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErratumKind {
+    /// A printed formula that differs from the derivation, or a value
+    /// computed from one.
+    Formula,
+    /// A number read off a figure or stated with few digits.
+    FigureReading,
+    /// A statement whose truth depends on the loading scenario.
+    Scenario,
+}
+
+impl ErratumKind {
+    /// From the claim's ID, the catalog's naming: `fig…` are readings of
+    /// figures, `sec6.error…` statements about the loading, the rest
+    /// printed formulas and the values computed from them.
+    pub fn of(id: &str) -> ErratumKind {
+        if id.starts_with("fig") {
+            ErratumKind::FigureReading
+        } else if id.starts_with("sec6.error") {
+            ErratumKind::Scenario
+        } else {
+            ErratumKind::Formula
         }
-        o.push('\n');
+    }
+
+    const ALL: [ErratumKind; 3] = [
+        ErratumKind::Formula,
+        ErratumKind::FigureReading,
+        ErratumKind::Scenario,
+    ];
+
+    fn heading(self) -> &'static str {
+        match self {
+            ErratumKind::Formula => "Misprinted formulas, and values computed from them",
+            ErratumKind::FigureReading => "Numbers read off figures",
+            ErratumKind::Scenario => "Statements that depend on the loading scenario",
+        }
+    }
+
+    fn policy(self) -> &'static str {
+        match self {
+            ErratumKind::Formula => "Tolerance policy: the printed and derived forms are compared exactly (their difference simplifies to zero or not), or, where no normal form is reached, at six random points with 40 digits; a difference is confirmed by a second evaluation, and where the claim has an independent second route (quadrature of the pressure) the verdict stands only when that route agrees with the derived side to 1e-10. A printed decimal is compared to half a unit in its last printed digit.",
+            ErratumKind::FigureReading => "Tolerance policy: a number read off a figure, or stated with two or three digits, is compared to half a unit in its last printed digit of the value computed from the derived model. A difference at that level is a matter of rounding or reading, not a misprint; the computed value is given so that the reader can judge.",
+            ErratumKind::Scenario => "Tolerance policy: the statement is evaluated under each loading scenario the model admits (load control from large loads to the pull-off, displacement control to the fold of the contact size), and against the exact solution where one is available; it differs when it fails in any of them, and the note says in which.",
+        }
+    }
+}
+
+/// The same claims checked against another closure's derivation.
+pub struct ClosureCheck {
+    /// The closure's name (`ansatz.id`).
+    pub name: String,
+    /// Its claims, or why they could not be checked.
+    pub results: Result<Vec<ClaimResult>, String>,
+}
+
+/// `docs/errata.md`: the differing claims by kind, each with its
+/// consequences and the verdicts of the same claim for the other closures.
+pub fn errata_md(results: &[ClaimResult], closures: &[ClosureCheck]) -> String {
+    let mut o = String::from(HEADER);
+    o.push_str(
+        "# Errata: printed claims that differ from the derivation
+
+",
+    );
+    o.push_str("Found by `cargo run -p thinjkr-derive -- check` (see [derivation.md](derivation.md) for every step and every verdict). For each: the printed form, the form the derivation gives, the size of the difference, how the step was re-examined, what depends on it, and whether the same claim holds for another closure of the ellipse (a claim that differs from the paper's own equations may be what another closure gives). thinjkr's code and tests use the derived forms.\n\n");
+    for kind in ErratumKind::ALL {
+        let of_kind: Vec<&ClaimResult> = results
+            .iter()
+            .filter(|r| {
+                r.verdict == crate::check::Verdict::Differs && ErratumKind::of(&r.id) == kind
+            })
+            .collect();
+        if of_kind.is_empty() {
+            continue;
+        }
+        let _ = writeln!(o, "## {}\n\n{}\n", kind.heading(), kind.policy());
+        for r in of_kind {
+            let _ = writeln!(o, "### {} — {}\n", r.id, r.source);
+            let _ = writeln!(o, "- Printed: `{}`", r.printed);
+            let _ = writeln!(o, "- Derived: `{}`", r.derived);
+            let _ = writeln!(
+                o,
+                "- Check ({}): {}",
+                format!("{:?}", r.method).to_lowercase(),
+                r.note
+            );
+            let c = consequence(r);
+            if !c.is_empty() {
+                let _ = writeln!(o, "- Consequences: {c}");
+            }
+            let _ = writeln!(o, "- Other closures: {}", other_closures(&r.id, closures));
+            o.push('\n');
+        }
     }
     o
+}
+
+/// "holds for …; differs for …; not checked for … (why)" for one claim.
+fn other_closures(id: &str, closures: &[ClosureCheck]) -> String {
+    let mut holds = Vec::new();
+    let mut differs = Vec::new();
+    let mut other = Vec::new();
+    for c in closures {
+        match &c.results {
+            Ok(rs) => match rs.iter().find(|r| r.id == id).map(|r| r.verdict) {
+                Some(crate::check::Verdict::Holds) => holds.push(format!("`{}`", c.name)),
+                Some(crate::check::Verdict::Differs) => differs.push(format!("`{}`", c.name)),
+                Some(crate::check::Verdict::Unverified) => {
+                    other.push(format!("`{}`: unverified", c.name))
+                }
+                None => other.push(format!("`{}`: no such claim", c.name)),
+            },
+            Err(e) => other.push(format!("`{}`: not checked ({e})", c.name)),
+        }
+    }
+    let mut parts = Vec::new();
+    parts.push(if holds.is_empty() {
+        "holds for no other closure".to_string()
+    } else {
+        format!("holds for {}", holds.join(", "))
+    });
+    if !differs.is_empty() {
+        parts.push(format!("differs for {}", differs.join(", ")));
+    }
+    parts.extend(other);
+    parts.join("; ")
 }
