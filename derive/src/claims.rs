@@ -264,7 +264,7 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
         Some("m"),
         "derived: coefficient of y²",
     ));
-    out.push(decided_by_two_routes(
+    out.push(crate::routes::decided_by_two_routes(
         expr_claim(
             "8",
             "Eq. (8)",
@@ -274,7 +274,7 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
             None,
             "",
         ),
-        second_route_force(d),
+        crate::routes::force(d),
     ));
     out.push(expr_claim(
         "9",
@@ -339,7 +339,7 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
         None,
         "derived: η = max ∂p/∂ν / its apex value; (14) = η − 1",
     ));
-    out.push(decided_by_two_routes(
+    out.push(crate::routes::decided_by_two_routes(
         expr_claim(
             "18",
             "Eq. (18)",
@@ -352,7 +352,7 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
                 plain(&d.fbar_reduced)
             ),
         ),
-        second_route_force_bar(d),
+        crate::routes::force_bar(d),
     ));
     out.push(expr_claim("19", "Eq. (19)", "abar^3 - 2*dbar*(3*s^2 + 1)/(s^2 + 1)*abar - 2*(3*s^4 - 2*s^3 + 6*s^2 + 1)/(s^2*(s^2 + 1)*eta)", &[], &d.residuals[0], Some("dbar"), ""));
     out.push(expr_claim("20", "Eq. (20)", "abar^3 - 2*rho*dbar*(s^2 + 3)/(s^2*(s^2 + 1))*abar - 2*rho*(s^4 + 6*s^2 - 2*s + 3)/(s^3*(s^2 + 1)*eta)", &[], &d.residuals[1], Some("dbar"), ""));
@@ -367,39 +367,69 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
         None,
         "",
     ));
-    out.push(expr_claim("25.1", "Eq. (25), first relation", "abar^2/4 - 2^(4/3)/abar", &[], &ax.dbar, None, "derived δ̄ = ā²/4 − 2/ā; substituting (24) into (22) gives 2/ā, not 2^(4/3)/ā (a factor 2^(1/3) on the adhesive term)"));
-    out.push(expr_claim(
-        "25.2",
-        "Eq. (25), second relation",
-        "pi/96*abar^4*(abar^2 - 24/abar)",
-        &[],
-        &ax.fbar,
-        None,
-        "",
+    out.push(crate::routes::decided_by_two_routes(
+        expr_claim("25.1", "Eq. (25), first relation", "abar^2/4 - 2^(4/3)/abar", &[], &ax.dbar, None, "derived δ̄ = ā²/4 − 2/ā; substituting (24) into (22) gives 2/ā, not 2^(4/3)/ā (a factor 2^(1/3) on the adhesive term)"),
+        crate::routes::axisymmetric(l, 0),
     ));
-    out.push(expr_claim(
-        "sec4.Fc",
-        "Section 4, critical force",
-        "-3*pi/2",
-        &[],
-        &ax.critical.1,
-        None,
-        "minimum of F̄(ā) from dF̄/dā = 0",
-    ));
-    out.push(decimal_checked(
+    out.push(crate::routes::decided_by_two_routes(
         expr_claim(
-            "sec4.ac",
-            "Section 4, critical radius",
-            "2^(2/3)*3^(1/3)",
+            "25.2",
+            "Eq. (25), second relation",
+            "pi/96*abar^4*(abar^2 - 24/abar)",
             &[],
-            &ax.critical.0,
+            &ax.fbar,
             None,
             "",
         ),
-        &ax.critical.0,
-        "2.2894",
+        crate::routes::axisymmetric(l, 1),
     ));
-    out.push(decimal_checked(expr_claim("sec4.dc", "Section 4, critical approach", "2^(-2/3)*3^(2/3) - 2^(2/3)*3^(-1/3)", &[], &ax.critical.2, None, "the printed value follows the printed (25)₁; with the derived δ̄(ā) it is (9/4)^(1/3) − (2/3)^(1/3)"), &ax.critical.2, "0.2097"));
+    out.push(crate::routes::decided_by_two_routes(
+        expr_claim(
+            "sec4.Fc",
+            "Section 4, critical force",
+            "-3*pi/2",
+            &[],
+            &ax.critical.1,
+            None,
+            "minimum of F̄(ā) from dF̄/dā = 0",
+        ),
+        crate::routes::axisymmetric_critical(l, 1),
+    ));
+    out.push(crate::routes::decided_by_two_routes(
+        decimal_checked(
+            expr_claim(
+                "sec4.ac",
+                "Section 4, critical radius",
+                "2^(2/3)*3^(1/3)",
+                &[],
+                &ax.critical.0,
+                None,
+                "",
+            ),
+            &ax.critical.0,
+            "2.2894",
+        ),
+        crate::routes::axisymmetric_critical(l, 0),
+    ));
+    out.push(crate::routes::decided_by_two_routes(
+        decimal_checked(
+            expr_claim(
+                "sec4.dc",
+                "Section 4, critical approach",
+                "2^(-2/3)*3^(2/3) - 2^(2/3)*3^(-1/3)",
+                &[],
+                &ax.critical.2,
+                None,
+                &format!(
+                    "the printed value follows the printed (25)₁; with the derived δ̄(ā) it is {}",
+                    plain(&ax.critical.2)
+                ),
+            ),
+            &ax.critical.2,
+            "0.2097",
+        ),
+        crate::routes::axisymmetric_critical(l, 2),
+    ));
     let abar_dbar = simplify(&subs(&ex("abar*dbar"), "dbar", &l.zero_force.dbar));
     let mut c26 = expr_claim(
         "26",
@@ -414,18 +444,24 @@ pub fn check_all(d: &Derivation) -> Result<Vec<ClaimResult>, String> {
         ),
     );
     c26.printed = "abar*dbar = (s + 1)^3/(2*s^2)".into();
-    out.push(c26);
-    out.push(expr_claim(
-        "27",
-        "Eq. (27)",
-        "3/s^2*(s^3 + 5*s^2 + s + 1)",
-        &[],
-        &with_eta(&l.zero_force.abar_cubed),
-        None,
-        &format!(
-            "compared as ā³; derived ā³ = {}",
-            plain(&l.zero_force.abar_cubed)
+    out.push(crate::routes::decided_by_two_routes(
+        c26,
+        crate::routes::zero_force(d, &abar_dbar, 0),
+    ));
+    out.push(crate::routes::decided_by_two_routes(
+        expr_claim(
+            "27",
+            "Eq. (27)",
+            "3/s^2*(s^3 + 5*s^2 + s + 1)",
+            &[],
+            &with_eta(&l.zero_force.abar_cubed),
+            None,
+            &format!(
+                "compared as ā³; derived ā³ = {}",
+                plain(&l.zero_force.abar_cubed)
+            ),
         ),
+        crate::routes::zero_force(d, &l.zero_force.abar_cubed, 1),
     ));
     out.push(expr_claim(
         "28",
@@ -663,136 +699,6 @@ fn claim_30(l: &Limits) -> ClaimResult {
     run().unwrap_or_else(|e| failed("30", "Eq. (30)", printed_full, e))
 }
 
-/// The relative agreement two routes must reach for a verdict: the
-/// quadratures below are Gauss–Legendre (48 × 96 points) of a polynomial
-/// of low degree, exact to round-off.
-pub const SECOND_ROUTE_TOLERANCE: f64 = 1e-10;
-
-/// A second, independent route to a claim's derived side: its text, and
-/// whether it agrees with the derived value to [`SECOND_ROUTE_TOLERANCE`].
-pub struct SecondRoute {
-    /// What was compared, with the numbers.
-    pub text: String,
-    /// The two routes agree.
-    pub agrees: bool,
-}
-
-/// Combine a claim with its second route: the verdict stands only when
-/// the routes agree; when they disagree, or the second route fails, the
-/// claim is `unverified` and says why.
-pub fn decided_by_two_routes(
-    mut c: ClaimResult,
-    route: Result<SecondRoute, String>,
-) -> ClaimResult {
-    match route {
-        Ok(r) if r.agrees => {
-            c.note = format!("{}. Second route agrees: {}", c.note, r.text);
-        }
-        Ok(r) => {
-            c.verdict = Verdict::Unverified;
-            c.note = format!(
-                "{}. Second route DISAGREES with the derived side (beyond {SECOND_ROUTE_TOLERANCE:e} relative), so no verdict: {}",
-                c.note, r.text
-            );
-        }
-        Err(e) => {
-            c.verdict = Verdict::Unverified;
-            c.note = format!("{}. Second route failed, so no verdict: {e}", c.note);
-        }
-    }
-    c
-}
-
-fn agree(x: f64, y: f64) -> bool {
-    (x - y).abs() <= SECOND_ROUTE_TOLERANCE * x.abs().max(y.abs()).max(1e-300)
-}
-
-/// Second route for (8): Gauss–Legendre quadrature of p over the ellipse.
-fn second_route_force(d: &Derivation) -> Result<SecondRoute, String> {
-    let vals = [("a", 1.3), ("b", 0.7), ("A", 0.4), ("B", 1.1), ("p0", 1.0)];
-    let p = Ir::from_atom(&d.pressure)?;
-    let f = Ir::from_atom(&d.force)?;
-    let mut env: BTreeMap<&str, f64> = vals.iter().cloned().collect();
-    let quad = quadrature_over_ellipse(&p, &mut env, 1.3, 0.7)?;
-    let formula = f.eval(&env)?;
-    Ok(SecondRoute {
-        text: format!("Gauss–Legendre quadrature of the derived p at a=1.3, b=0.7, A=0.4, B=1.1 gives {quad:.12}, the derived F {formula:.12}"),
-        agrees: agree(quad, formula),
-    })
-}
-
-/// Second route for (18): quadrature of the collocated pressure at a
-/// solved state, against the derived (and, for the reader, the printed) F̄.
-fn second_route_force_bar(d: &Derivation) -> Result<SecondRoute, String> {
-    // state: s, ξ, ā chosen; dimensional with L = R1 = m = 1 (g = 1)
-    let (s, xi, abar) = (0.8, 1.7, 3.0);
-    let p0 = subs_all(&d.p0_explicit, &[("a", ex("abar")), ("g", Atom::num(1))]);
-    let p = subs_all(&d.pressure_collocated, &[("a", ex("abar")), ("p0", p0)]);
-    let pi = Ir::from_atom(&p)?;
-    let mut env = BTreeMap::from([("s", s), ("xi", xi), ("abar", abar)]);
-    let quad = quadrature_over_ellipse(&pi, &mut env, abar, s * abar)?;
-    // F̄ = F R1/(m L^6) = F here; δ̄ from (15)₁ inverted
-    let dbar =
-        solve_linear(&(ex("xi") - &d.xi[0]), "dbar").ok_or("(15)₁ could not be solved for dbar")?;
-    let dbar = Ir::from_atom(&simplify(&subs(&dbar, "eta", &d.eta)))?.eval(&env)?;
-    env.insert("dbar", dbar);
-    let derived = Ir::from_atom(&simplify(&subs(&d.fbar_reduced, "eta", &d.eta)))?.eval(&env)?;
-    let printed = Ir::from_atom(&ex("pi*3^(1/2)*abar^3*(2*s^2*abar*dbar - (s + 1)^3)*s^2*(s + 1)/(16*(s^2 + 1)*(s^2 + s + 1)^(3/2))"))?.eval(&env)?;
-    Ok(SecondRoute {
-        text: format!("quadrature of the collocated pressure at s = 0.8, ξ = 1.7, ā = 3 gives F̄ = {quad:.10}; derived (18) {derived:.10}; printed (18) {printed:.10}"),
-        agrees: agree(quad, derived),
-    })
-}
-
-/// ∫∫ over x²/a² + y²/b² ≤ 1 in elliptic polar coordinates, 48 × 96 points.
-fn quadrature_over_ellipse(
-    p: &Ir,
-    env: &mut BTreeMap<&str, f64>,
-    a: f64,
-    b: f64,
-) -> Result<f64, String> {
-    let (xr, wr) = gauss_legendre(48);
-    let nt = 96;
-    let mut total = 0.0;
-    for (ri, wi) in xr.iter().zip(&wr) {
-        let r = 0.5 * (ri + 1.0);
-        for k in 0..nt {
-            let t = 2.0 * std::f64::consts::PI * (k as f64) / nt as f64;
-            env.insert("x", a * r * t.cos());
-            env.insert("y", b * r * t.sin());
-            total +=
-                0.5 * wi * (2.0 * std::f64::consts::PI / nt as f64) * a * b * r * p.eval(env)?;
-        }
-    }
-    Ok(total)
-}
-
-/// Gauss–Legendre nodes and weights on [−1, 1] by Newton on P_n.
-fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
-    let mut x = vec![0.0; n];
-    let mut w = vec![0.0; n];
-    for i in 0..n {
-        let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-        for _ in 0..100 {
-            let (mut p1, mut p2) = (1.0, 0.0);
-            for j in 0..n {
-                let p3 = p2;
-                p2 = p1;
-                p1 = ((2 * j + 1) as f64 * z * p2 - j as f64 * p3) / (j + 1) as f64;
-            }
-            let pp = n as f64 * (z * p1 - p2) / (z * z - 1.0);
-            let dz = p1 / pp;
-            z -= dz;
-            if dz.abs() < 1e-15 {
-                x[i] = z;
-                w[i] = 2.0 / ((1.0 - z * z) * pp * pp);
-                break;
-            }
-        }
-    }
-    (x, w)
-}
-
 /// Claims read off figures and Section 6's error statement.
 fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
     let mut out = Vec::new();
@@ -836,9 +742,13 @@ fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
         )
         .with(&values))
     };
-    out.push(
-        bound().unwrap_or_else(|e| failed("fig2.bound", "Fig. 2", "(14) < 10 % for s ≥ 0.6", e)),
-    );
+    out.push(match bound() {
+        Ok(c) => crate::routes::decided_by_two_routes(
+            c,
+            crate::routes::two_evaluations(&d.bc_error, (3, 5)),
+        ),
+        Err(e) => failed("fig2.bound", "Fig. 2", "(14) < 10 % for s ≥ 0.6", e),
+    });
     // fig7: pull-off and heavy load at ρ = 0.8.
     let fig7 = || -> Result<(ClaimResult, ClaimResult), String> {
         let c = Curve::new(d, 0.8)?;
@@ -896,6 +806,14 @@ fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
             ),
         )
         .with(&[("s", heavy.s), ("s_inf", c.s_inf()?), ("s_pull_off", po.s)]);
+        let pull = crate::routes::decided_by_two_routes(
+            pull,
+            crate::routes::on_branch(d, 0.8, &po, "the pull-off"),
+        );
+        let heavy_c = crate::routes::decided_by_two_routes(
+            heavy_c,
+            crate::routes::on_branch(d, 0.8, &heavy, "F̄ = 10"),
+        );
         Ok((pull, heavy_c))
     };
     match fig7() {
@@ -959,6 +877,12 @@ fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
             ),
         )
         .with(&values))
+        .map(|claim| {
+            crate::routes::decided_by_two_routes(
+                claim,
+                crate::routes::on_branch(d, 0.8, &s_half, "the state where (14) = 0.5 %"),
+            )
+        })
     };
     out.push(err().unwrap_or_else(|e| failed("sec6.error", "Section 6", "(14) < 0.5 %", e)));
     out.push(error_against_exact(d));
@@ -1020,6 +944,7 @@ pub fn error_against_reference(d: &Derivation, path: &str) -> ClaimResult {
         }
         let c = Curve::new(d, 0.8)?;
         let po = c.first_minimum(|st| st.fbar)?;
+        let route = crate::routes::on_branch(d, 0.8, &po, "the model's pull-off");
         let rel = |m: f64, x: f64| m / x - 1.0;
         let (ef, ea, es) = (rel(po.fbar, f_x), rel(po.abar, a_x), rel(po.s, s_x));
         let within = |e: f64| e.abs() < 0.005;
@@ -1044,6 +969,7 @@ pub fn error_against_reference(d: &Derivation, path: &str) -> ClaimResult {
                 100.0 * po.bc_error
             ),
         ))
+        .map(|claim| crate::routes::decided_by_two_routes(claim, route))
     };
     run().unwrap_or_else(|e| failed(id, source, SEC6_EXACT_PRINTED, e))
 }

@@ -25,5 +25,6 @@ pub mod model;
 pub mod nondimensional;
 pub mod numeric;
 pub mod report;
+pub mod routes;
 pub mod sym;
 pub mod thin_layer;
