@@ -172,3 +172,34 @@ pub fn approx_printed(derived: f64, printed: &str) -> (bool, f64) {
     let tol = 0.5 * 10f64.powi(-(decimals as i32));
     ((derived - p).abs() <= tol * (1.0 + 1e-12), tol)
 }
+
+/// The comparison in words, for a claim's note.
+pub fn describe(c: &Comparison) -> String {
+    match c.verdict {
+        Verdict::Holds if c.method == Method::Exact => "the difference simplifies to 0".into(),
+        Verdict::Holds => format!(
+            "no exact normal form reached; agrees to {:.1e} relative at {} points with {} digits",
+            c.max_rel_diff, POINTS, DIGITS
+        ),
+        Verdict::Differs => {
+            let (pt, vp, vd) = c.sample.clone().unwrap_or_default();
+            format!(
+                "largest relative difference {:.3e} (at {pt}: printed {vp:.10}, derived {vd:.10})",
+                c.max_rel_diff
+            )
+        }
+        Verdict::Unverified => "could not be evaluated at the sample points".into(),
+    }
+}
+
+/// The verdict of a claim made of several checks: `unverified` if any
+/// check is, else `differs` if any differs, else `holds`.
+pub fn combine(parts: &[Verdict]) -> Verdict {
+    if parts.contains(&Verdict::Unverified) {
+        Verdict::Unverified
+    } else if parts.contains(&Verdict::Differs) {
+        Verdict::Differs
+    } else {
+        Verdict::Holds
+    }
+}

@@ -26,5 +26,6 @@ pub mod nondimensional;
 pub mod numeric;
 pub mod report;
 pub mod routes;
+pub mod special;
 pub mod sym;
 pub mod thin_layer;

@@ -331,3 +331,33 @@ pub fn two_evaluations(form: &Atom, s: (i64, i64)) -> Result<SecondRoute, String
         agrees: agree_to(exact, fast, 1e-12),
     })
 }
+
+/// The second route named `name` in the catalog (`route = …` in
+/// derive/claims.toml).
+pub fn by_name(d: &Derivation, name: &str) -> Result<SecondRoute, String> {
+    let l = || {
+        d.limits
+            .as_ref()
+            .map_err(|e| format!("the limits of this ansatz failed: {e}"))
+    };
+    match name {
+        "force" => force(d),
+        "force_bar" => force_bar(d),
+        "radial.dbar" => axisymmetric(l()?, 0),
+        "radial.fbar" => axisymmetric(l()?, 1),
+        "radial.critical.a_bar" => axisymmetric_critical(l()?, 0),
+        "radial.critical.force" => axisymmetric_critical(l()?, 1),
+        "radial.critical.delta_bar" => axisymmetric_critical(l()?, 2),
+        "zero_force.abar_dbar" => zero_force(
+            d,
+            &crate::claims::derived_form(d, "zero_force.abar_dbar")?,
+            0,
+        ),
+        "zero_force.abar_cubed" => zero_force(
+            d,
+            &crate::claims::derived_form(d, "zero_force.abar_cubed")?,
+            1,
+        ),
+        _ => Err(format!("unknown second route {name} in derive/claims.toml")),
+    }
+}
