@@ -91,7 +91,7 @@ pub(crate) fn expr_claim(
                     verdict: Verdict::Unverified,
                     method: Method::Exact,
                     printed: printed.into(),
-                    derived: plain(derived),
+                    derived: plain(&crate::sym::compact(derived)),
                     note: format!("could not solve for {t}"),
                     values: BTreeMap::new(),
                 }
@@ -113,7 +113,7 @@ pub(crate) fn expr_claim(
         verdict: c.verdict,
         method: c.method,
         printed: printed.into(),
-        derived: plain(&d),
+        derived: plain(&crate::sym::compact(&d)),
         note,
         values: BTreeMap::new(),
     }
@@ -300,7 +300,7 @@ fn fill_note(d: &Derivation, note: &str) -> Result<String, String> {
                 .collect::<Vec<_>>()
                 .join(", ")
         } else {
-            plain(&derived_form(d, key)?)
+            plain(&crate::sym::compact(&derived_form(d, key)?))
         });
         rest = &rest[i + j + 1..];
     }

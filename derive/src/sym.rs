@@ -554,3 +554,59 @@ fn rationalize_sum(e: &Atom, probe: &[(&str, Atom)]) -> Option<Atom> {
     }
     Some(top / (den * nd))
 }
+
+/// A compact normal form for reading against the printed one: radicals
+/// frozen into symbols, the rational function factored over the integers
+/// (numerator and denominator), radicals thawed and normalised (powers of
+/// one base merged, numeric radicals split into primes and gathered).
+/// The value is unchanged; only the form.
+/// Of the factored and the given form, the shorter when printed (a
+/// factorisation such as ā³ − 8 = (ā − 2)(ā² + 2ā + 4) is not always the
+/// easier to read).
+///
+/// A third candidate collects the numerator in ā (then in δ̄), each
+/// coefficient factored over the denominator: the form in which the paper
+/// prints its reduced equations (19), (20).
+pub fn compact(e: &Atom) -> Atom {
+    let mut best = e.clone();
+    let mut len = plain(e).chars().count();
+    let mut consider = |c: Atom| {
+        let n = plain(&c).chars().count();
+        if n < len {
+            (best, len) = (c, n);
+        }
+    };
+    consider(factored(e));
+    for v in ["abar", "dbar"] {
+        if let Some(c) = collected(e, v) {
+            consider(c);
+        }
+    }
+    best
+}
+
+/// `e` factored over the integers with its radicals frozen, then thawed and
+/// normalised.
+fn factored(e: &Atom) -> Atom {
+    let (frozen, table) = freeze_radicals(e);
+    normalize_radicals(&thaw(&frozen.factor(), &table))
+}
+
+/// `e` = N/D written as Σ_k (c_k/D) v^k with every coefficient factored;
+/// `None` unless N is a polynomial of degree 1..=8 in `v`.
+fn collected(e: &Atom, v: &str) -> Option<Atom> {
+    let (n, den) = num_den(e);
+    let deg = degree_in(&n, v, 8)?;
+    if deg == 0 {
+        return None;
+    }
+    let mut sum = Atom::num(0);
+    for k in (0..=deg as u32).rev() {
+        let c = poly_coeff(&n, v, k, "unusedsymbolforcoefficient", 0);
+        if is_zero(&c) {
+            continue;
+        }
+        sum = &sum + &(factored(&simplify(&(c / &den))) * var(v).pow(&Atom::num(k as i64)));
+    }
+    Some(sum)
+}

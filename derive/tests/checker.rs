@@ -354,3 +354,46 @@ fn the_catalog_is_data_and_every_key_resolves() {
         assert!(ids.contains(*id), "the catalog lacks {id}");
     }
 }
+
+/// The derived forms are shown compactly (sym::compact: factored, powers
+/// merged, numeric radicals gathered): η(s), (15), (18)–(20) and the
+/// zero-force forms are at most 1.5 times as long as the printed forms
+/// (both without spaces), and (14) is shown as η − 1. The lengths are
+/// printed (`--nocapture`) for the record.
+#[test]
+fn derived_forms_are_printed_compactly() {
+    use thinjkr_derive::claims::{catalog, derived_form};
+    use thinjkr_derive::sym::{compact, is_zero, plain, simplify};
+    let d = Derivation::new(&ansatz::PAPER).expect("derivation");
+    let cat = catalog().expect("catalog");
+    let printed = |id: &str| {
+        cat.iter()
+            .find(|e| e.id == id)
+            .expect("in the catalog")
+            .printed
+            .replace(' ', "")
+    };
+    let eta_symbolic = |k: &str| derived_form(&d, k).expect("derived");
+    let cases = [
+        ("16", eta_symbolic("eta")),
+        ("15.1", eta_symbolic("xi.0")),
+        ("15.2", eta_symbolic("xi.1")),
+        ("15.3", eta_symbolic("xi.2")),
+        ("18", eta_symbolic("fbar_reduced")),
+        ("19", eta_symbolic("residual.0")),
+        ("20", eta_symbolic("residual.1")),
+        ("26", eta_symbolic("zero_force.abar_dbar")),
+        ("27", eta_symbolic("zero_force.abar_cubed")),
+        ("28", eta_symbolic("zero_force.rho")),
+    ];
+    for (id, form) in cases {
+        let shown = plain(&compact(&form));
+        let (n, p) = (shown.chars().count(), printed(id).chars().count());
+        println!(
+            "({id}): derived {n} characters, printed {p}, ratio {:.2}: {shown}",
+            n as f64 / p as f64
+        );
+        assert!(n as f64 <= 1.5 * p as f64, "({id}) {n} vs {p}: {shown}");
+    }
+    assert!(is_zero(&simplify(&(&d.bc_error - &(&d.eta - &ex("1"))))));
+}
