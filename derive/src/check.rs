@@ -203,3 +203,11 @@ pub fn combine(parts: &[Verdict]) -> Verdict {
         Verdict::Holds
     }
 }
+
+/// The seed of a claim's random sample points: a hash (FNV-1a) of its ID,
+/// so that every run samples the same points.
+pub fn seed(id: &str) -> u64 {
+    id.bytes().fold(1469598103934665603u64, |h, b| {
+        (h ^ b as u64).wrapping_mul(1099511628211)
+    })
+}

@@ -19,7 +19,7 @@
 //! derived forms ([`derived_form`]). May use: `check`, `model`, `numeric`,
 //! `routes`, `special`, `sym`.
 
-use crate::check::{approx_printed, compare, describe, Method, Verdict};
+use crate::check::{approx_printed, compare, describe, seed, Method, Verdict};
 use crate::model::Derivation;
 use crate::sym::{ex, plain, simplify, solve_linear, subs, subs_all};
 use serde::{Deserialize, Serialize};
@@ -60,12 +60,6 @@ impl ClaimResult {
 
 fn mapped(printed: &str) -> Atom {
     subs(&ex(printed), "dg", &ex("g^2/(2*m)"))
-}
-
-fn seed(id: &str) -> u64 {
-    id.bytes().fold(1469598103934665603u64, |h, b| {
-        (h ^ b as u64).wrapping_mul(1099511628211)
-    })
 }
 
 /// Compare a printed expression (after the notational map and the extra
@@ -253,6 +247,7 @@ pub fn derived_form(d: &Derivation, key: &str) -> Result<Atom, String> {
         "extrema.u_min" => d.extrema.u_min.clone(),
         "axisymmetric.delta.dimensional" => dim(&l()?.axisymmetric.delta),
         "axisymmetric.force.dimensional" => dim(&l()?.axisymmetric.force),
+        "axisymmetric.eta_at_1" => l()?.axisymmetric.eta_at_1.clone(),
         "axisymmetric.dbar" => l()?.axisymmetric.dbar.clone(),
         "axisymmetric.fbar" => l()?.axisymmetric.fbar.clone(),
         "critical.a_bar" => l()?.axisymmetric.critical.0.clone(),
