@@ -41,6 +41,12 @@ pub struct Stability {
     pub load: Option<bool>,
 }
 
+/// The smallest radii ratio the solver supports: the paper's model is
+/// followed down to ρ = 1e-8 (s ≈ 2e-6 at δ̄ = 1); below, an
+/// [`Error::Unsupported`]. (The energy model's adhesive branch is not found
+/// below about ρ = 1e-6, which it reports as `NoState`.)
+pub const RHO_MIN: f64 = 1e-8;
+
 /// One state of a model, dimensionless as in (17) (lengths in
 /// L = (2R₁²Δγ/m)^(1/6), pressures in √(2mΔγ) L).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -156,6 +162,13 @@ impl Contact {
     /// Any generated model at radii ratio `rho` ∈ (0, 1].
     pub fn with_model(model: ModelId, rho: f64) -> Result<Self> {
         check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+        if rho < RHO_MIN {
+            return Err(Error::Unsupported {
+                name: "rho",
+                value: rho,
+                supported: "[1e-8, 1]: below 1e-8 the aspect ratio s is below 1e-5 and the branch is not followed",
+            });
+        }
         Ok(Contact {
             rho,
             model: model.model(),

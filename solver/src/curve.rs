@@ -47,11 +47,20 @@ pub struct Curve {
     pub folds: Vec<Fold>,
 }
 
+/// The most points a curve has (`points` above it is an error, not an
+/// allocation failure).
+pub const MAX_POINTS: usize = 100_000;
+
 /// Trace the curve of `contact` from δ̄ = `delta_start` (on the stable
 /// branch) past pull-off and the folds, and return `points` states spaced
 /// evenly in arclength.
 pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve> {
-    check_range("points", points as f64, points >= 2, "2 or more")?;
+    check_range(
+        "points",
+        points as f64,
+        (2..=MAX_POINTS).contains(&points),
+        "2 ..= 100000",
+    )?;
     let rho = contact.rho();
     let start = contact.at_displacement(delta_start)?;
     if rho >= 1.0 - 1e-12 {

@@ -7,7 +7,7 @@
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A parameter outside its allowed range.
-    #[error("parameter {name} = {value} is outside its allowed range {range}")]
+    #[error("parameter {name} = {} is outside its allowed range {range}", short(*value))]
     OutOfRange {
         /// The parameter's name.
         name: &'static str,
@@ -17,7 +17,7 @@ pub enum Error {
         range: &'static str,
     },
     /// Newton's method did not converge.
-    #[error("no convergence after {iterations} iterations at a_bar = {a_bar}, s = {s} (residual norm {residual:e}); {context}")]
+    #[error("no convergence after {iterations} iterations at a_bar = {}, s = {} (residual norm {}); {context}", short(*a_bar), short(*s), short(*residual))]
     NoConvergence {
         /// Iterations done.
         iterations: usize,
@@ -43,6 +43,21 @@ pub enum Error {
     /// The model has no state for the given input.
     #[error("no contact state: {0}")]
     NoState(String),
+    /// The request itself is incomplete or contradictory (a usage error,
+    /// not a property of the contact).
+    #[error("usage: {0}")]
+    Usage(String),
+    /// A value inside the allowed range but outside the range the solver
+    /// supports numerically.
+    #[error("parameter {name} = {} is outside the supported range {supported}", short(*value))]
+    Unsupported {
+        /// The parameter's name.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// The supported range, in words.
+        supported: &'static str,
+    },
     /// The model lacks what was asked for (a closed form its derivation
     /// could not produce).
     #[error("model {model} has no {what} ({why})")]
@@ -58,6 +73,18 @@ pub enum Error {
 
 /// Shorthand.
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// A number for a message: plain between 1e-4 and 1e7, else short
+/// scientific notation (`1e-300`, not three hundred zeros); both the
+/// shortest forms that read back to the same f64.
+pub fn short(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-4..1e7).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
 
 /// `Ok(value)` when `value` is finite and `ok` (the caller's range test);
 /// otherwise an [`Error::OutOfRange`] naming the parameter and its range.

@@ -124,7 +124,7 @@ pub fn run(c: ExactCommand) -> Result<()> {
             let control = match (delta, force) {
                 (Some(d), _) => ExactControl::Delta(d),
                 (_, Some(f)) => ExactControl::Force(f),
-                _ => return Err(Error::NoState("give one of --delta, --force".into())),
+                _ => return Err(Error::Usage("give one of --delta, --force".into())),
             };
             state(rho, control, &discretisation, json)
         }

@@ -133,7 +133,7 @@ enum Command {
         /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelChoice,
-        /// Number of points.
+        /// Number of points, 2 ..= 100000.
         #[arg(long, default_value_t = 100)]
         points: usize,
         /// Output format.
@@ -155,21 +155,29 @@ enum Command {
         /// TOML file with r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion.
         #[arg(long)]
         file: Option<std::path::PathBuf>,
-        #[arg(long)]
+        /// Radius of cylinder 1 [m], > 0.
+        #[arg(long, allow_hyphen_values = true)]
         r1: Option<f64>,
-        #[arg(long)]
+        /// Radius of cylinder 2 [m], > 0.
+        #[arg(long, allow_hyphen_values = true)]
         r2: Option<f64>,
-        #[arg(long)]
+        /// Crossing angle θ between the cylinder axes [degrees], in (0, 90].
+        #[arg(long, allow_hyphen_values = true)]
         theta_deg: Option<f64>,
-        #[arg(long)]
+        /// Thickness of coating 1 [m], > 0 (thin: much smaller than the contact).
+        #[arg(long, allow_hyphen_values = true)]
         h1: Option<f64>,
-        #[arg(long)]
+        /// Thickness of coating 2 [m], > 0.
+        #[arg(long, allow_hyphen_values = true)]
         h2: Option<f64>,
-        #[arg(long)]
+        /// Out-of-plane shear modulus G′₁ of coating 1 [Pa], > 0.
+        #[arg(long, allow_hyphen_values = true)]
         g1: Option<f64>,
-        #[arg(long)]
+        /// Out-of-plane shear modulus G′₂ of coating 2 [Pa], > 0.
+        #[arg(long, allow_hyphen_values = true)]
         g2: Option<f64>,
-        #[arg(long)]
+        /// Work of adhesion Δγ [J/m²], > 0.
+        #[arg(long, allow_hyphen_values = true)]
         work_of_adhesion: Option<f64>,
         /// Force [N] (the stable state); without it, pull-off.
         #[arg(long, allow_hyphen_values = true)]
@@ -289,7 +297,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                             why: "the exact family is traced in arclength; give --delta or --force",
                         }),
                         _ => {
-                            return Err(thinjkr::Error::NoState(
+                            return Err(thinjkr::Error::Usage(
                                 "give one of --delta, --force".into(),
                             ))
                         }
@@ -329,7 +337,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                     }
                 }
                 _ => {
-                    return Err(thinjkr::Error::NoState(
+                    return Err(thinjkr::Error::Usage(
                         "give one of --delta, --force, --a".into(),
                     ))
                 }
