@@ -15,6 +15,7 @@
 
 #![deny(missing_docs)]
 
+pub mod batch;
 pub mod contact;
 pub mod curve;
 pub mod error;

@@ -140,6 +140,15 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,
     },
+    /// Solve many inputs: a CSV `rho,control,value` (control delta or force) on stdin, one state per line on stdout, in input order, on all cores.
+    #[command(
+        after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error. A line that cannot be read or solved gets an empty state and the error (naming the line) in the last column; the other lines are still written. A progress count is shown on stderr when it is a terminal."
+    )]
+    Batch {
+        /// Model: max (the paper's, default), apexes, energy, apex45.
+        #[arg(long, default_value = "max")]
+        model: ModelId,
+    },
     /// Draw the paper's Figures 2–9 and the crossing-angle figure as SVG.
     #[command(after_help = "Example:\n  thinjkr figures --out docs/figures")]
     Figures {
@@ -370,6 +379,73 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             emit_pull_off(&p, j);
         }
         Some(Command::Exact { command }) => exact_cli::run(command)?,
+        Some(Command::Batch { model }) => {
+            use std::io::{BufRead, IsTerminal, Write};
+            use thinjkr::batch::{csv_row, parse_line, solve_all, CSV_HEADER};
+            let stdin = std::io::stdin();
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            let io_err = |e: std::io::Error| thinjkr::Error::Usage(format!("batch: {e}"));
+            writeln!(out, "{CSV_HEADER}").map_err(io_err)?;
+            let bar = std::io::stderr().is_terminal().then(|| {
+                let b = indicatif::ProgressBar::new_spinner();
+                b.set_style(
+                    indicatif::ProgressStyle::with_template("{spinner} {pos} lines, {elapsed}")
+                        .expect("template"),
+                );
+                b
+            });
+            let mut lines = stdin.lock().lines().enumerate();
+            let mut failed = 0usize;
+            loop {
+                // a block of input lines, solved in parallel, written in order
+                let mut block = Vec::with_capacity(4096);
+                for (i, line) in lines.by_ref() {
+                    let line = line.map_err(io_err)?;
+                    if let Some(parsed) = parse_line(i + 1, &line) {
+                        block.push((i + 1, parsed));
+                        if block.len() == 4096 {
+                            break;
+                        }
+                    }
+                }
+                if block.is_empty() {
+                    break;
+                }
+                let items: Vec<_> = block
+                    .iter()
+                    .filter_map(|(_, p)| p.as_ref().ok().copied())
+                    .collect();
+                let mut solved = solve_all(model, &items).into_iter();
+                for (n, parsed) in &block {
+                    let row = match parsed {
+                        Ok(item) => {
+                            let r = solved.next().expect("one result per item");
+                            if let Err(e) = &r {
+                                eprintln!("thinjkr: line {n}: {e}");
+                                failed += 1;
+                            }
+                            csv_row(*n, Some(item), &r)
+                        }
+                        Err(e) => {
+                            eprintln!("thinjkr: {e}");
+                            failed += 1;
+                            csv_row(*n, None, &Err(e.clone()))
+                        }
+                    };
+                    writeln!(out, "{row}").map_err(io_err)?;
+                }
+                if let Some(b) = &bar {
+                    b.inc(block.len() as u64);
+                }
+            }
+            out.flush().map_err(io_err)?;
+            if let Some(b) = bar {
+                b.finish_and_clear();
+            }
+            if failed > 0 {
+                eprintln!("thinjkr: {failed} line(s) without a state (see the error column)");
+            }
+        }
         Some(Command::Accuracy {
             out,
             reference,
