@@ -13,7 +13,7 @@
 //! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `model`, `error`.
 
 use crate::contact::{Contact, State};
-use crate::error::{check_range, Error, Result};
+use crate::error::{check_range, short, Error, Result};
 use nalgebra::{Matrix3, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
@@ -111,6 +111,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
     let mut trail: Vec<(Vector3<f64>, Vector3<f64>)> = vec![(w, t)];
     let max_steps = 20_000;
     let mut passed_fold = false;
+    let mut reached_end = false;
     for _ in 0..max_steps {
         let mut accepted = None;
         for _ in 0..30 {
@@ -172,8 +173,20 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
             passed_fold = true; // the contact size grows again
         }
         if z[1] < 0.05 || (passed_fold && z[0] > start.a) {
+            reached_end = true;
             break;
         }
+    }
+    if !reached_end {
+        // never a silently shortened curve: say where it stopped
+        let z = from_z(&w);
+        return Err(Error::NoState(format!(
+            "curve at rho = {}: the trace did not reach its end (s < 0.05, or ā back above its start past the contact-size fold) within {max_steps} steps; it stopped at a_bar = {}, s = {}, delta_bar = {}",
+            short(rho),
+            short(z[0]),
+            short(z[1]),
+            short(z[2])
+        )));
     }
     // states (flagged beyond the first contact-size fold) and folds
     let size_fold = trail
