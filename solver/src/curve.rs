@@ -109,7 +109,8 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
     let h_max = (0.5 / points as f64).min(0.05);
     let mut h = h_max.min(0.01);
     let mut trail: Vec<(Vector3<f64>, Vector3<f64>)> = vec![(w, t)];
-    let max_steps = 20_000;
+    // the step is at most 0.5/points, so the budget grows with the points
+    let max_steps = 20_000.max(50 * points);
     let mut passed_fold = false;
     let mut reached_end = false;
     for _ in 0..max_steps {
