@@ -208,8 +208,8 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
             Event::SizeFold { a_bar } => {
                 println!("  on the way: the family turns back in a near a = {a_bar:.6}")
             }
-            Event::Bifurcation { between } => println!(
-                "  on the way: a bifurcation point between a = {:.6} and {:.6}",
+            Event::Bifurcation { between, mode } => println!(
+                "  on the way: a bifurcation point between a = {:.6} and {:.6} (contour mode n = {mode})",
                 between[0], between[1]
             ),
             Event::ForceMinimum { .. } => {}

@@ -55,10 +55,21 @@ fn circle_branch_bifurcates_where_the_linearisation_says() {
         .events
         .iter()
         .filter_map(|e| match e {
-            Event::Bifurcation { between } => Some(*between),
+            Event::Bifurcation { between, .. } => Some(*between),
             _ => None,
         })
         .collect();
+    // each is reported with its contour mode: n = 8, 6, 4, 2 in the order
+    // met from ā = 3.2 downwards
+    let modes: Vec<usize> = branch
+        .events
+        .iter()
+        .filter_map(|e| match e {
+            Event::Bifurcation { mode, .. } => Some(*mode),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(modes, vec![8, 6, 4, 2], "{brackets:?}");
     for n in [2.0f64, 4.0, 6.0, 8.0] {
         let a_n = (4.0 * (n - 1.0)).cbrt();
         assert!(

@@ -36,6 +36,11 @@ pub enum Event {
     Bifurcation {
         /// ā at the two traced points that bracket it.
         between: [f64; 2],
+        /// The contour mode n (radius perturbed by cos nθ) that dominates
+        /// the null direction there: the right singular vector of the
+        /// smallest singular value of the bordered Jacobian at the later
+        /// point (0 when the contour's size or δ̄ dominates).
+        mode: usize,
     },
 }
 
@@ -128,6 +133,29 @@ fn tangent(j: &DMatrix<f64>, t_prev: &DVector<f64>) -> Option<(DVector<f64>, f64
 
 /// A factored bordered Jacobian.
 type Bordered = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
+
+/// The contour mode of the near-null direction of the bordered Jacobian
+/// [∂r/∂u; tᵀ]: the largest component, among the b_j, of the right
+/// singular vector of its smallest singular value; b_j perturbs the radius
+/// by cos (2j + 2)θ. 0 when A or δ̄ dominates.
+fn null_mode(j: &DMatrix<f64>, t: &DVector<f64>) -> usize {
+    let n = t.len();
+    let mut m = DMatrix::zeros(n, n);
+    m.rows_mut(0, n - 1).copy_from(j);
+    m.row_mut(n - 1).copy_from(&t.transpose());
+    let svd = m.svd(false, true);
+    let (Some(v_t), k) = (svd.v_t.as_ref(), svd.singular_values.imin()) else {
+        return 0;
+    };
+    let i = (0..n)
+        .max_by(|&a, &b| v_t[(k, a)].abs().total_cmp(&v_t[(k, b)].abs()))
+        .unwrap_or(0);
+    if i == 0 || i == n - 1 {
+        0
+    } else {
+        2 * (i - 1) + 2
+    }
+}
 
 /// dā/du: ā = A + Σ b_j.
 fn a_bar_gradient(n: usize) -> DVector<f64> {
@@ -383,6 +411,7 @@ impl Exact {
             if detn.signum() != det.signum() {
                 events.push(Event::Bifurcation {
                     between: [prev.state.a_bar, p.state.a_bar],
+                    mode: null_mode(&j, &t),
                 });
             }
             if control.is_some() {
