@@ -209,8 +209,10 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
                 println!("  on the way: the family turns back in a near a = {a_bar:.6}")
             }
             Event::Bifurcation { between, mode } => println!(
-                "  on the way: a bifurcation point between a = {:.6} and {:.6} (contour mode n = {mode})",
-                between[0], between[1]
+                "  on the way: a bifurcation point between a = {:.6} and {:.6} (contour mode {})",
+                between[0],
+                between[1],
+                mode.map_or("not computed".to_string(), |n| format!("n = {n}"))
             ),
             Event::ForceMinimum { .. } => {}
         }

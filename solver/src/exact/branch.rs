@@ -39,8 +39,9 @@ pub enum Event {
         /// The contour mode n (radius perturbed by cos nθ) that dominates
         /// the null direction there: the right singular vector of the
         /// smallest singular value of the bordered Jacobian at the later
-        /// point (0 when the contour's size or δ̄ dominates).
-        mode: usize,
+        /// point (0 when the contour's size or δ̄ dominates; `None` when
+        /// the singular vectors could not be computed).
+        mode: Option<usize>,
     },
 }
 
@@ -137,24 +138,24 @@ type Bordered = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
 /// The contour mode of the near-null direction of the bordered Jacobian
 /// [∂r/∂u; tᵀ]: the largest component, among the b_j, of the right
 /// singular vector of its smallest singular value; b_j perturbs the radius
-/// by cos (2j + 2)θ. 0 when A or δ̄ dominates.
-fn null_mode(j: &DMatrix<f64>, t: &DVector<f64>) -> usize {
+/// by cos (2j + 2)θ. 0 when A or δ̄ dominates; `None` when the SVD gives
+/// no singular vectors.
+fn null_mode(j: &DMatrix<f64>, t: &DVector<f64>) -> Option<usize> {
     let n = t.len();
     let mut m = DMatrix::zeros(n, n);
     m.rows_mut(0, n - 1).copy_from(j);
     m.row_mut(n - 1).copy_from(&t.transpose());
     let svd = m.svd(false, true);
-    let (Some(v_t), k) = (svd.v_t.as_ref(), svd.singular_values.imin()) else {
-        return 0;
-    };
+    let v_t = svd.v_t.as_ref()?;
+    let k = svd.singular_values.imin();
     let i = (0..n)
         .max_by(|&a, &b| v_t[(k, a)].abs().total_cmp(&v_t[(k, b)].abs()))
         .unwrap_or(0);
-    if i == 0 || i == n - 1 {
+    Some(if i == 0 || i == n - 1 {
         0
     } else {
         2 * (i - 1) + 2
-    }
+    })
 }
 
 /// dā/du: ā = A + Σ b_j.
