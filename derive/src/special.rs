@@ -76,9 +76,7 @@ impl<'a> Routines<'a> {
         };
         c.id = e.id.clone();
         c.source = e.source.clone();
-        if name != "non_adhesive_root" {
-            c.printed = e.shown.clone().unwrap_or_else(|| e.printed.clone());
-        }
+        c.printed = e.shown.clone().unwrap_or_else(|| e.printed.clone());
         c
     }
 }
@@ -148,7 +146,6 @@ fn claim_29(l: &Limits, printed: &str) -> ClaimResult {
         None,
         "",
     );
-    c.printed = format!("s^2 = {printed}");
     c.derived = format!("rho = {}", plain(&l.non_adhesive_rho));
     c.note = format!("the printed s² substituted into the derived relation ρ(s) of the limit Δγ → 0 (ā → ∞ at fixed δ̄/ā²): {}", c.note);
     c
