@@ -14,13 +14,19 @@
 //! and δ̄ decrease, F̄ reaches its minimum (pull-off under load control),
 //! and the contact size reaches a minimum (a fold in ā) beyond which s
 //! collapses towards 0 and ā grows again. States beyond that fold are
-//! flagged. Brackets come from this walk; each state is then polished by
-//! Newton's method on the generated residuals and Jacobian, and folds by
-//! Newton on the fold condition ([`crate::fold`]). At ρ = 1 the model's
-//! axisymmetric solution (22)–(25) is used (s = 1).
+//! flagged. Brackets come from a scan of the explicit branch (module
+//! `cold`: about 10–60 explicit evaluations, [`Search::Cold`], the
+//! default) or from the walk of 4000 points that it replaced and is tested
+//! against ([`Search::Walk`]); each state is then solved by Newton's method
+//! on the generated residuals and Jacobian with the control equation, and
+//! folds by Newton on the fold condition ([`crate::fold`]). At ρ = 1 the
+//! model's axisymmetric solution (22)–(25) is used (s = 1).
 //!
-//! Owns: [`Contact`], [`State`], [`Stability`], [`PullOff`].
+//! Owns: [`Contact`], [`State`], [`Stability`], [`PullOff`], [`Search`]
+//! and the walk.
 //! May use: `model`, `newton`, `fold`, `error`.
+
+mod cold;
 
 use crate::error::{check_range, Error, Result};
 use crate::fold::{self, FoldCondition};
@@ -32,6 +38,10 @@ use serde::{Deserialize, Serialize};
 /// The stability of a state, for models with an energy (the energy
 /// closure): positive definiteness of the Hessian of Π̄ in (ā, s) under
 /// displacement control, of Π̄ − F̄δ̄ in (ā, s, δ̄) under load control.
+/// Stable means strictly: the smallest eigenvalue above 1e-9 of the
+/// largest in magnitude, so a state on a fold (pull-off, where the Hessian
+/// is singular up to round-off) is not stable under the control that ends
+/// there, whichever sign round-off gives its smallest eigenvalue.
 /// `None` for models without an energy, whose stability is not defined.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
 pub struct Stability {
@@ -111,14 +121,32 @@ pub struct PullOff {
     pub basis: FoldBasis,
 }
 
+/// How a state's starting point on the branch is found (ρ < 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Search {
+    /// A scan of about 50 points of the explicit branch, then the
+    /// crossing or extremum bracketed and refined (module `cold`): the
+    /// default.
+    #[default]
+    Cold,
+    /// The walk of 4000 points of the explicit branch that every solve
+    /// used before the cold path: kept as the reference the cold path is
+    /// tested against.
+    Walk,
+}
+
 /// A model at one radii ratio ρ.
 #[derive(Clone, Copy)]
 pub struct Contact {
     rho: f64,
     model: &'static dyn Model,
     newton: NewtonConfig,
-    walk_points: usize,
+    search: Search,
 }
+
+/// Points of the walk of the branch (the reference search).
+const WALK_POINTS: usize = 4000;
 
 impl std::fmt::Debug for Contact {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -173,8 +201,14 @@ impl Contact {
             rho,
             model: model.model(),
             newton: NewtonConfig::default(),
-            walk_points: 4000,
+            search: Search::Cold,
         })
+    }
+
+    /// Replace the search for starting points ([`Search::Cold`] by default).
+    pub fn search(mut self, search: Search) -> Self {
+        self.search = search;
+        self
     }
 
     /// Replace the Newton controls.
@@ -247,10 +281,13 @@ impl Contact {
         let f = |s: f64| self.signed_inverse_size(s);
         let mut bracket = None;
         let mut prev: Option<(f64, f64)> = None;
-        // uniform in s, then logarithmic in 1 − s down to 1e-12
-        let grid = (1..400)
-            .map(|k| k as f64 / 400.0)
-            .chain((0..=200).map(|j| 1.0 - 10f64.powf(-2.61 - 9.39 * j as f64 / 200.0)));
+        // logarithmic in s from 1e-4, uniform, then logarithmic in 1 − s
+        // down to 1e-12: 100 points, which only bracket the sign change
+        // (bisection then resolves it)
+        let grid = (0..15)
+            .map(|j| 10f64.powf(-4.0 + 3.0 * j as f64 / 15.0))
+            .chain((0..45).map(|j| 0.1 + 0.88 * j as f64 / 45.0))
+            .chain((0..40).map(|j| 1.0 - 10f64.powf(-1.7 - 10.3 * j as f64 / 39.0)));
         for s in grid {
             if let Some(v) = f(s) {
                 if let Some((sp, vp)) = prev {
@@ -308,8 +345,13 @@ impl Contact {
     /// tensile edge), the larger smaller apex value if both are. (For the
     /// energy closure the other root has ∂p/∂ν < 0 at an apex.)
     fn adhesive_point(&self, s: f64) -> Option<(f64, f64)> {
+        self.adhesive_of(s, self.model.branch(s, self.rho))
+    }
+
+    /// [`Contact::adhesive_point`] among given branch points at `s`.
+    fn adhesive_of(&self, s: f64, points: crate::model::BranchPoints) -> Option<(f64, f64)> {
         let mut best: Option<((f64, f64), f64)> = None;
-        for (a, d) in self.model.branch(s, self.rho).into_iter().flatten() {
+        for (a, d) in points.into_iter().flatten() {
             let g = self.edge_slope(a, s, d);
             if g.is_finite() && g > 0.0 && best.is_none_or(|(_, gb)| g > gb) {
                 best = Some(((a, d), g));
@@ -352,8 +394,10 @@ impl Contact {
         let p = m.pressure_parameters(x, self.rho, delta);
         let stability = match m.potential_hessian(x, self.rho, delta) {
             Some(h) => Stability {
-                displacement: Some(h.fixed_view::<2, 2>(0, 0).into_owned().cholesky().is_some()),
-                load: Some(h.cholesky().is_some()),
+                displacement: Some(strictly_positive_definite(
+                    h.fixed_view::<2, 2>(0, 0).into_owned(),
+                )),
+                load: Some(strictly_positive_definite(h)),
             },
             None => Stability::default(),
         };
@@ -440,32 +484,46 @@ impl Contact {
         self.axisymmetric_state(a)
     }
 
-    /// Walk the branch from s∞ towards s → 0: the samples (s, state).
-    fn walk(&self) -> Result<Vec<State>> {
-        let s_inf = self.s_infinity()?;
-        let n = self.walk_points;
-        let mut out: Vec<State> = Vec::with_capacity(n);
-        // logarithmic in s∞ − s, from 1e-13 s∞ (1e-8 s∞ for d = 2, d the
-        // residuals' degree: then the two roots of the explicit branch meet
-        // as ā → ∞ and lose accuracy closer to s∞): near ρ = 1 the whole
-        // physical branch lies within O(1 − ρ) of s∞
-        let closest = if self.model.info().residual_degree == 1 {
+    /// The k-th sample (k = 1 … 3999) of the walk from s∞ towards s → 0:
+    /// logarithmic in s∞ − s, from 1e-13 s∞ (1e-8 s∞ for d = 2, d the
+    /// residuals' degree: then the two roots of the explicit branch meet
+    /// as ā → ∞ and lose accuracy closer to s∞); near ρ = 1 the whole
+    /// physical branch lies within O(1 − ρ) of s∞. `None` where the branch
+    /// has no adhesive point, or where the two roots of a quadratic branch
+    /// nearly meet (as ā → ∞ near s∞) and are ill-conditioned.
+    fn walk_sample(&self, s_inf: f64, k: usize) -> Option<(f64, f64, f64)> {
+        let s = self.walk_s(s_inf, k);
+        let points = self.model.branch(s, self.rho);
+        if let [Some((a1, d1)), Some((a2, d2))] = points {
+            let (t1, t2) = (d1 / (a1 * a1), d2 / (a2 * a2));
+            if (t1 - t2).abs() < 1e-4 * t1.abs().max(t2.abs()) {
+                return None;
+            }
+        }
+        self.adhesive_of(s, points).map(|(a, d)| (s, a, d))
+    }
+
+    /// The decades of s∞ − s the walk spans: 13, or 8 for d = 2.
+    fn walk_decades(&self) -> f64 {
+        if self.model.info().residual_degree == 1 {
             13.0
         } else {
             8.0
-        };
-        for k in 1..n {
-            let s = s_inf - s_inf * 10f64.powf(-closest * (1.0 - k as f64 / n as f64));
-            // where the two roots of a quadratic branch nearly meet (as
-            // ā → ∞ near s∞) they are ill-conditioned: skip such points
-            if let [Some((a1, d1)), Some((a2, d2))] = self.model.branch(s, self.rho) {
-                let (t1, t2) = (d1 / (a1 * a1), d2 / (a2 * a2));
-                if (t1 - t2).abs() < 1e-4 * t1.abs().max(t2.abs()) {
-                    continue;
-                }
-            }
-            if let Some(st) = self.light_state_at_s(s) {
-                out.push(st);
+        }
+    }
+
+    /// s at the k-th walk sample.
+    fn walk_s(&self, s_inf: f64, k: usize) -> f64 {
+        s_inf - s_inf * 10f64.powf(-self.walk_decades() * (1.0 - k as f64 / WALK_POINTS as f64))
+    }
+
+    /// Walk the branch from s∞ towards s → 0: the samples (s, state).
+    fn walk(&self) -> Result<Vec<State>> {
+        let s_inf = self.s_infinity()?;
+        let mut out: Vec<State> = Vec::with_capacity(WALK_POINTS);
+        for k in 1..WALK_POINTS {
+            if let Some((s, a, d)) = self.walk_sample(s_inf, k) {
+                out.push(self.state_with(a, s, d, false));
             }
         }
         // the fold of the contact size: the first ā along the walk that is
@@ -477,13 +535,26 @@ impl Contact {
             }
         }
         if out.len() < 3 {
-            return Err(Error::NoState(format!(
-                "model {} has no branch at rho = {} (s_inf = {s_inf})",
-                self.model_id(),
-                self.rho
-            )));
+            return Err(self.no_branch(s_inf));
         }
         Ok(out)
+    }
+
+    fn no_branch(&self, s_inf: f64) -> Error {
+        Error::NoState(format!(
+            "model {} has no branch at rho = {} (s_inf = {s_inf})",
+            self.model_id(),
+            self.rho
+        ))
+    }
+
+    fn stable_throughout(&self, last_s: Option<f64>) -> Error {
+        Error::NoState(format!(
+            "model {}: the branch at rho = {} stays stable under displacement control down to s = {:.3e} (the contact shrinks and elongates without a fold in delta_bar)",
+            self.model_id(),
+            self.rho,
+            last_s.unwrap_or(f64::NAN)
+        ))
     }
 
     /// Polish a state by Newton's method on the model's residuals at its δ̄.
@@ -512,6 +583,9 @@ impl Contact {
     /// residuals with the control equation (so the state has the control
     /// value to round-off, not to the bisection's resolution in s).
     fn crossings(&self, control: Control, target: f64, what: &str) -> Result<Vec<State>> {
+        if self.search == Search::Cold {
+            return self.cold_crossings(control, target, what, false, false);
+        }
         let walk = self.walk()?;
         let mut all = self.tail(&walk);
         let n_tail = all.len();
@@ -537,58 +611,83 @@ impl Contact {
                 self.state_at_s(s)
                     .ok_or_else(|| Error::NoState(format!("{what}: off the branch at s = {s}")))?
             } else {
-                // tail states are 1.25× apart in δ̄ > 0: interpolate ln ā,
-                // s, ln δ̄ (nearly linear there) in ln of the control where
-                // it is positive
-                let (k0, k1) = (key(&w[0]), key(&w[1]));
-                let t = if k0 > 0.0 && k1 > 0.0 && target > 0.0 {
-                    (target / k0).ln() / (k1 / k0).ln()
-                } else {
-                    f0 / (f0 - f1)
-                };
-                let mut g = w[0];
-                g.a = w[0].a * (t * (w[1].a / w[0].a).ln()).exp();
-                g.s += t * (w[1].s - w[0].s);
-                g.delta = w[0].delta * (t * (w[1].delta / w[0].delta).ln()).exp();
-                // a start on the branch: the nearer tail state if the
-                // interpolated one is off the adhesive sheet
-                if self.edge_slope(g.a, g.s, g.delta) > 0.0 {
-                    g
-                } else if t < 0.5 {
-                    w[0]
-                } else {
-                    w[1]
-                }
+                self.tail_guess(&w[0], &w[1], control, target)
             };
-            let mut st = self.solve_controlled(&guess, control, target, what)?;
+            let guess = Vector3::new(guess.a, guess.s, guess.delta);
+            let mut st = self.solve_controlled(guess, control, target, what)?;
             st.beyond_size_fold = w[1].beyond_size_fold;
             out.push(st);
         }
-        let reach = all.iter().map(key).fold(f64::NEG_INFINITY, f64::max);
-        if out.is_empty() && target > reach {
-            let last = all.iter().max_by(|p, q| key(p).total_cmp(&key(q)));
-            return Err(Error::NoState(format!(
-                "{what}: {control:?} = {target:e} is beyond the largest value reached on the branch of model {} at rho = {} ({reach:.6e}, at a_bar = {:.6e}): the branch is followed up to a_bar = 1e4, or less where Newton no longer reaches the adhesive root (a model with quadratic residuals, at large loads)",
-                self.model_id(),
-                self.rho,
-                last.map(|st| st.a).unwrap_or(f64::NAN)
-            )));
+        if out.is_empty() {
+            self.within_reach(control, target, what, all.iter().map(|st| (key(st), st.a)))?;
         }
         Ok(out)
     }
 
+    /// A start for Newton between two states of the large-load tail at
+    /// `control` = `target`: tail states are 1.25× apart in δ̄ > 0, so ln ā,
+    /// s, ln δ̄ (nearly linear there) are interpolated in ln of the control
+    /// where it is positive; the nearer tail state if the interpolated one
+    /// is off the adhesive sheet.
+    fn tail_guess(&self, w0: &State, w1: &State, control: Control, target: f64) -> State {
+        let (k0, k1) = (control.value(w0), control.value(w1));
+        let t = if k0 > 0.0 && k1 > 0.0 && target > 0.0 {
+            (target / k0).ln() / (k1 / k0).ln()
+        } else {
+            (k0 - target) / (k0 - k1)
+        };
+        let mut g = *w0;
+        g.a = w0.a * (t * (w1.a / w0.a).ln()).exp();
+        g.s += t * (w1.s - w0.s);
+        g.delta = w0.delta * (t * (w1.delta / w0.delta).ln()).exp();
+        if self.edge_slope(g.a, g.s, g.delta) > 0.0 {
+            g
+        } else if t < 0.5 {
+            *w0
+        } else {
+            *w1
+        }
+    }
+
+    /// Ok if `target` is not beyond every value of the controlled quantity
+    /// in `reached` (pairs of its value and ā); otherwise the error that
+    /// says how far the branch was followed.
+    fn within_reach(
+        &self,
+        control: Control,
+        target: f64,
+        what: &str,
+        reached: impl Iterator<Item = (f64, f64)>,
+    ) -> Result<()> {
+        let (reach, a_at) = reached.fold((f64::NEG_INFINITY, f64::NAN), |best, v| {
+            if v.0 > best.0 {
+                v
+            } else {
+                best
+            }
+        });
+        if target > reach {
+            return Err(Error::NoState(format!(
+                "{what}: {control:?} = {target:e} is beyond the largest value reached on the branch of model {} at rho = {} ({reach:.6e}, at a_bar = {a_at:.6e}): the branch is followed up to a_bar = 1e4, or less where Newton no longer reaches the adhesive root (a model with quadratic residuals, at large loads)",
+                self.model_id(),
+                self.rho,
+            )));
+        }
+        Ok(())
+    }
+
     /// Newton's method on z = (ā, s, δ̄) for the model's residuals and the
     /// control equation `control(z) = target` (the bordered system
-    /// [∂r/∂(ā, s) ∂r/∂δ̄; ∇control]), from `guess`.
+    /// [∂r/∂(ā, s) ∂r/∂δ̄; ∇control]), from `guess` = (ā, s, δ̄).
     fn solve_controlled(
         &self,
-        guess: &State,
+        guess: Vector3<f64>,
         control: Control,
         target: f64,
         what: &str,
     ) -> Result<State> {
         let m = self.model;
-        let mut z = Vector3::new(guess.a, guess.s, guess.delta);
+        let mut z = guess;
         let adhesive_start = self.edge_slope(z[0], z[1], z[2]) > 0.0;
         let mut last = f64::INFINITY;
         for _ in 0..60 {
@@ -706,7 +805,11 @@ impl Contact {
     /// round-off of the explicit branch near s∞, where a quadratic
     /// closure's roots meet), refined by golden section in s (not
     /// polished: a starting point for Newton).
-    fn walk_minimum(&self, key: impl Fn(&State) -> f64, what: &str) -> Result<State> {
+    fn branch_minimum(&self, control: Control, what: &str) -> Result<State> {
+        if self.search == Search::Cold {
+            return self.cold_minimum(control, what);
+        }
+        let key = |st: &State| control.value(st);
         let walk = self.walk()?;
         let v: Vec<f64> = walk.iter().map(&key).collect();
         let k = first_window_minimum(&v)
@@ -762,7 +865,11 @@ impl Contact {
             st.delta = delta;
             return Ok(st);
         }
-        self.crossings(Control::Delta, delta, "displacement control")?
+        let what = "displacement control";
+        match self.search {
+            Search::Cold => self.cold_crossings(Control::Delta, delta, what, true, false)?,
+            Search::Walk => self.crossings(Control::Delta, delta, what)?,
+        }
             .into_iter()
             .next()
             .ok_or_else(|| Error::NoState(format!("no contact at delta = {delta} for rho = {} (below the displacement-controlled pull-off)", self.rho)))
@@ -785,14 +892,21 @@ impl Contact {
                 "no fold in a_bar at rho = 1: a_bar decreases to 0".into(),
             ));
         }
-        let guess = self.walk_minimum(|st| st.a, "fold of the contact size")?;
-        self.polish(&guess, "fold of the contact size")
+        let guess = self.branch_minimum(Control::ABar, "fold of the contact size")?;
+        self.refine_fold(&guess, FoldCondition::ContactSize)
     }
 
     /// Load control: the stable state at force `force` (on the branch from
     /// the non-adhesive end down to pull-off).
     pub fn at_load(&self, force: f64) -> Result<State> {
         check_range("force", force, true, "finite")?;
+        if self.search == Search::Cold && !self.axisymmetric() {
+            return self
+                .cold_crossings(Control::Force, force, "load control", true, true)?
+                .into_iter()
+                .next()
+                .ok_or_else(|| Error::NoState(format!("no state at force {force}")));
+        }
         match self.pull_off_load() {
             Ok(pull) if force < pull.state.force => {
                 return Err(Error::OutOfRange {
@@ -846,7 +960,7 @@ impl Contact {
                 basis: FoldBasis::AxisymmetricMinimum,
             });
         }
-        let guess = self.walk_minimum(|st| st.force, "pull-off under load control")?;
+        let guess = self.branch_minimum(Control::Force, "pull-off under load control")?;
         Ok(PullOff {
             state: self.refine_fold(&guess, FoldCondition::Load)?,
             control: FoldCondition::Load,
@@ -865,19 +979,20 @@ impl Contact {
         if self.axisymmetric() {
             return Err(Error::NoState("at rho = 1, delta_bar(a_bar) = a_bar^2/4 - 2/a_bar increases for all a_bar: no displacement-controlled pull-off at finite size".into()));
         }
+        if self.has_energy() && self.search == Search::Cold {
+            let guess = self.cold_first_unstable()?;
+            return Ok(PullOff {
+                state: self.refine_fold(&guess, FoldCondition::Displacement)?,
+                control: FoldCondition::Displacement,
+                basis: FoldBasis::EnergyInstability,
+            });
+        }
         if self.has_energy() {
             let walk = self.walk()?;
             let k = walk
                 .iter()
                 .position(|st| st.stability.displacement == Some(false))
-                .ok_or_else(|| {
-                    Error::NoState(format!(
-                        "model {}: the branch at rho = {} stays stable under displacement control down to s = {:.3e} (the contact shrinks and elongates without a fold in delta_bar)",
-                        self.model_id(),
-                        self.rho,
-                        walk.last().map(|st| st.s).unwrap_or(f64::NAN)
-                    ))
-                })?;
+                .ok_or_else(|| self.stable_throughout(walk.last().map(|st| st.s)))?;
             let guess = walk[k.saturating_sub(1)];
             return Ok(PullOff {
                 state: self.refine_fold(&guess, FoldCondition::Displacement)?,
@@ -886,7 +1001,8 @@ impl Contact {
             });
         }
         let fold = self.size_fold()?;
-        let state = match self.walk_minimum(|st| st.delta, "pull-off under displacement control") {
+        let state = match self.branch_minimum(Control::Delta, "pull-off under displacement control")
+        {
             Ok(m) if m.s > fold.s => self.refine_fold(&m, FoldCondition::Displacement)?,
             _ => fold,
         };
@@ -903,6 +1019,21 @@ impl Contact {
     }
 }
 
+/// Whether the symmetric `h` has its smallest eigenvalue above 1e-9 of its
+/// largest in magnitude (see [`Stability`]).
+fn strictly_positive_definite<const N: usize>(h: nalgebra::SMatrix<f64, N, N>) -> bool
+where
+    nalgebra::Const<N>:
+        nalgebra::DimMin<nalgebra::Const<N>, Output = nalgebra::Const<N>> + nalgebra::ToTypenum,
+    nalgebra::Const<N>: nalgebra::DimSub<nalgebra::U1>,
+    nalgebra::DefaultAllocator: nalgebra::allocator::Allocator<
+        <nalgebra::Const<N> as nalgebra::DimSub<nalgebra::U1>>::Output,
+    >,
+{
+    let e = h.symmetric_eigenvalues();
+    e.iter().all(|v| v.is_finite()) && e.min() > 1e-9 * e.amax()
+}
+
 /// The first interior index whose value is the smallest within 20 indices
 /// on either side (and below its predecessor): a local minimum that
 /// round-off of the order of the change over 20 steps cannot fake.
@@ -914,15 +1045,30 @@ fn first_window_minimum(v: &[f64]) -> Option<usize> {
     })
 }
 
-/// Golden-section search for the minimum of a unimodal `f` on [lo, hi].
+/// Golden-section search for the minimum of a unimodal `f` on [lo, hi]:
+/// one evaluation per step (the interior point kept is reused), until the
+/// bracket is below 1e-10 of its ends' magnitude (the location of a smooth
+/// minimum is determined only to about √ε ≈ 1.5e-8 anyway) or 120 steps.
 pub(crate) fn golden_minimum(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
     let r = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut x1, mut x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
+    let (mut f1, mut f2) = (f(x1), f(x2));
     for _ in 0..120 {
-        let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-        if f(x1) < f(x2) {
+        if (hi - lo).abs() <= 1e-10 * (lo.abs() + hi.abs()).max(1e-300) {
+            break;
+        }
+        if f1 < f2 {
             hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - r * (hi - lo);
+            f1 = f(x1);
         } else {
             lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + r * (hi - lo);
+            f2 = f(x2);
         }
     }
     0.5 * (lo + hi)

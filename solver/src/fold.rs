@@ -6,7 +6,9 @@
 //! - displacement control (a turning point in δ̄): c = det ∂r/∂(ā, s);
 //! - load control (a turning point in F̄, pull-off): c = det of the bordered
 //!   matrix [∂r/∂(ā, s) ∂r/∂δ̄; ∂F̄/∂(ā, s) ∂F̄/∂δ̄], which vanishes where
-//!   dF̄ = 0 along the curve. For an energy model r is a row scaling of
+//!   dF̄ = 0 along the curve;
+//! - contact-size control (a turning point in ā): c = det of the bordered
+//!   matrix with last row (1, 0, 0), which vanishes where dā = 0. For an energy model r is a row scaling of
 //!   ∇Π̄ and F̄ = ∂Π̄/∂δ̄, so this is the Hessian of Π̄ in (ā, s, δ̄) up to
 //!   positive factors: the load-controlled stability limit.
 //!
@@ -29,6 +31,8 @@ pub enum FoldCondition {
     Displacement,
     /// A turning point in F̄: the end of load control (pull-off).
     Load,
+    /// A turning point in ā: the fold of the contact size.
+    ContactSize,
 }
 
 /// [∂r/∂(ā, s) ∂r/∂δ̄; last row].
@@ -55,6 +59,12 @@ fn condition(model: &dyn Model, rho: f64, z: Vector3<f64>, which: FoldCondition)
             &j,
             &model.residuals_d_delta(x, rho, z[2]),
             &model.force_bar_gradient(x, rho, z[2]),
+        )
+        .determinant(),
+        FoldCondition::ContactSize => bordered(
+            &j,
+            &model.residuals_d_delta(x, rho, z[2]),
+            &Vector3::new(1.0, 0.0, 0.0),
         )
         .determinant(),
     }

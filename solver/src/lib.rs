@@ -33,6 +33,6 @@ pub mod units;
 #[doc = include_str!("../../docs/guide.md")]
 pub mod guide {}
 
-pub use contact::{Contact, FoldBasis, PullOff, Stability, State};
+pub use contact::{Contact, FoldBasis, PullOff, Search, Stability, State};
 pub use error::{Error, Result};
 pub use model::{Model, ModelId};
