@@ -31,17 +31,34 @@ pub struct Item {
 
 /// Solve one item with `model`.
 pub fn solve_one(model: ModelId, item: &Item) -> Result<State> {
-    let c = Contact::with_model(model, item.rho)?;
-    match item.given {
-        Given::Delta(d) => c.at_displacement(d),
-        Given::Force(f) => c.at_load(f),
-    }
+    solve_with(&Contact::with_model(model, item.rho)?, item)
 }
 
 /// Solve every item with `model` on all cores; the results are in the
 /// order of `items`, each a state or the typed error for that item.
 pub fn solve_all(model: ModelId, items: &[Item]) -> Vec<Result<State>> {
-    items.par_iter().map(|it| solve_one(model, it)).collect()
+    // one contact per distinct ρ (making one may find s∞ numerically)
+    let mut rhos: Vec<f64> = items.iter().map(|it| it.rho).collect();
+    rhos.sort_by(f64::total_cmp);
+    rhos.dedup_by(|a, b| a.to_bits() == b.to_bits());
+    let contacts: std::collections::HashMap<u64, Result<Contact>> = rhos
+        .par_iter()
+        .map(|&rho| (rho.to_bits(), Contact::with_model(model, rho)))
+        .collect();
+    items
+        .par_iter()
+        .map(|it| match &contacts[&it.rho.to_bits()] {
+            Ok(c) => solve_with(c, it),
+            Err(e) => Err(e.clone()),
+        })
+        .collect()
+}
+
+fn solve_with(c: &Contact, item: &Item) -> Result<State> {
+    match item.given {
+        Given::Delta(d) => c.at_displacement(d),
+        Given::Force(f) => c.at_load(f),
+    }
 }
 
 /// The header of the output CSV.

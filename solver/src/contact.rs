@@ -143,6 +143,9 @@ pub struct Contact {
     model: &'static dyn Model,
     newton: NewtonConfig,
     search: Search,
+    /// s∞ found numerically when the contact was made (models without the
+    /// derived non-adhesive relation); `None` otherwise, or if not found.
+    s_inf: Option<f64>,
 }
 
 /// Points of the walk of the branch (the reference search).
@@ -197,12 +200,18 @@ impl Contact {
                 supported: "[1e-8, 1]: below 1e-8 the aspect ratio s is below 1e-5 and the branch is not followed",
             });
         }
-        Ok(Contact {
+        let mut c = Contact {
             rho,
             model: model.model(),
             newton: NewtonConfig::default(),
             search: Search::Cold,
-        })
+            s_inf: None,
+        };
+        if !c.axisymmetric() && !c.model.info().has_non_adhesive_limit {
+            // found once per contact: it costs tens of microseconds
+            c.s_inf = c.s_infinity().ok();
+        }
+        Ok(c)
     }
 
     /// Replace the search for starting points ([`Search::Cold`] by default).
@@ -259,10 +268,13 @@ impl Contact {
     /// s∞(ρ): the non-adhesive aspect ratio (for the paper, (29)), where
     /// ā → ∞ on the branch. From the model's derived relation ρ(s) where it
     /// has one; otherwise the end of the s-range where the model's adhesive
-    /// branch exists, located by bisection.
+    /// branch exists, located by bisection (once, when the contact is made).
     pub fn s_infinity(&self) -> Result<f64> {
         if self.axisymmetric() {
             return Ok(1.0);
+        }
+        if let Some(s_inf) = self.s_inf {
+            return Ok(s_inf);
         }
         if self.model.info().has_non_adhesive_limit {
             let m = self.model;
