@@ -4,16 +4,19 @@
 //! everywhere; the arclength does. Tangent: the null vector of the 2 × 3
 //! Jacobian [∂r/∂(ā, s) | ∂r/∂δ̄] (generated), i.e. the cross product of its
 //! rows. Corrector: Newton on (19), (20) plus the arclength condition.
-//! Folds are reported where a tangent component (dā, dδ̄) or dF̄ changes sign.
+//! Folds are detected where a tangent component (dā, dδ̄) or dF̄ changes
+//! sign, and located by Newton's method on the fold condition
+//! ([`crate::fold`]).
 //!
 //! Written once for every model. Residual scaling: a model's residuals are
 //! of degree d in (ā³, δ̄ā); the corrector's convergence test is on the
 //! step, which is scale-free.
 //!
-//! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `model`, `error`.
+//! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `model`, `fold`, `error`.
 
 use crate::contact::{Contact, State};
 use crate::error::{check_range, short, Error, Result};
+use crate::fold::{self, FoldCondition};
 use nalgebra::{Matrix3, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
@@ -34,7 +37,8 @@ pub enum FoldKind {
 pub struct Fold {
     /// Which quantity turns.
     pub kind: FoldKind,
-    /// The state at the fold (nearest traced point).
+    /// The state at the fold: located by Newton's method on the fold
+    /// condition ([`crate::fold::locate`]) from the nearest traced point.
     pub state: State,
 }
 
@@ -207,16 +211,10 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
     for k in 1..trail.len() {
         let (t0, t1) = (trail[k - 1].1, trail[k].1);
         if t0[0].signum() != t1[0].signum() {
-            folds.push(Fold {
-                kind: FoldKind::ContactSize,
-                state: states_all[k],
-            });
+            folds.push(refine(contact, FoldKind::ContactSize, &states_all[k])?);
         }
         if t0[2].signum() != t1[2].signum() {
-            folds.push(Fold {
-                kind: FoldKind::Displacement,
-                state: states_all[k],
-            });
+            folds.push(refine(contact, FoldKind::Displacement, &states_all[k])?);
         }
         if k + 1 < trail.len() {
             let (f0, f1, f2) = (
@@ -225,10 +223,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
                 states_all[k + 1].force,
             );
             if f1 < f0 && f1 <= f2 {
-                folds.push(Fold {
-                    kind: FoldKind::Load,
-                    state: states_all[k],
-                });
+                folds.push(refine(contact, FoldKind::Load, &states_all[k])?);
             }
         }
     }
@@ -248,4 +243,24 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         states.push(states_all[j.min(states_all.len() - 1)]);
     }
     Ok(Curve { states, folds })
+}
+
+/// The fold of `kind` near the traced state `near`, by Newton's method on
+/// the fold condition; a fold that does not converge is an error that says
+/// where (never the traced point in its place).
+fn refine(contact: &Contact, kind: FoldKind, near: &State) -> Result<Fold> {
+    let which = match kind {
+        FoldKind::Load => FoldCondition::Load,
+        FoldKind::Displacement => FoldCondition::Displacement,
+        FoldKind::ContactSize => FoldCondition::ContactSize,
+    };
+    let z = fold::locate(
+        contact.model(),
+        contact.rho(),
+        Vector3::new(near.a, near.s, near.delta),
+        which,
+    )?;
+    let mut state = contact.state_from(z[0], z[1], z[2]);
+    state.beyond_size_fold = near.beyond_size_fold;
+    Ok(Fold { kind, state })
 }

@@ -197,6 +197,22 @@ fn curve_is_continuous_and_solves_the_equations() {
         );
         let kinds: Vec<_> = curve.folds.iter().map(|f| f.kind).collect();
         assert!(kinds.contains(&thinjkr::curve::FoldKind::Load), "{kinds:?}");
+        // the curve's load fold is located by the fold Newton: the pull-off
+        // state itself, not the nearest of the 400 traced points
+        let fold = curve
+            .folds
+            .iter()
+            .find(|f| f.kind == thinjkr::curve::FoldKind::Load)
+            .unwrap();
+        let (df, da, ds) = (
+            (fold.state.force - po.force).abs() / po.force.abs(),
+            (fold.state.a - po.a).abs() / po.a,
+            (fold.state.s - po.s).abs(),
+        );
+        assert!(
+            df < 1e-12 && da < 1e-9 && ds < 1e-9,
+            "rho {rho}: curve fold differs from the pull-off by {df:e} in F, {da:e} in a, {ds:e} in s"
+        );
         assert!(
             kinds.contains(&thinjkr::curve::FoldKind::ContactSize),
             "{kinds:?}"
