@@ -1,42 +1,52 @@
 //! criterion benchmarks of cold solves and of the batch API (issue 12):
-//! one cold solve under each control (δ̄, F̄, ā) and the pull-off and
-//! zero-force states, for the paper's model `max` and the energy model, and
-//! a 100 × 100 grid of (ρ, δ̄) through `batch::solve_all` on all cores (the
-//! issue's 1000 × 1000 grid is 100 times this; a cold solve still walks the
-//! branch, so it is measured on the smaller grid).
+//! making a contact, one cold solve under each control (δ̄, F̄, ā) and the
+//! pull-off and zero-force states, for the paper's model `max` and the
+//! energy model, each by the cold search (the default) and, for
+//! comparison in the same run, by the walk it replaced; and the issue's
+//! 1000 × 1000 grid of (ρ, δ̄) through `batch::solve_all` on all cores.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use thinjkr::batch::{solve_all, Given, Item};
-use thinjkr::{Contact, ModelId};
+use thinjkr::{Contact, ModelId, Search};
 
 fn benches(c: &mut Criterion) {
     for model in [ModelId::Max, ModelId::Energy] {
         let contact = Contact::with_model(model, 0.8).unwrap();
         let mut g = c.benchmark_group(format!("cold, {model}, rho = 0.8"));
         g.sample_size(20);
-        g.bench_function("displacement (delta = 2)", |b| {
-            b.iter(|| contact.at_displacement(black_box(2.0)).unwrap())
+        g.bench_function("make the contact", |b| {
+            b.iter(|| Contact::with_model(model, black_box(0.8)).unwrap())
         });
-        g.bench_function("load (F = 1)", |b| {
-            b.iter(|| contact.at_load(black_box(1.0)).unwrap())
-        });
-        g.bench_function("contact size (a = 3)", |b| {
-            b.iter(|| contact.at_contact_size(black_box(3.0)).unwrap())
-        });
-        g.bench_function("pull-off", |b| b.iter(|| contact.pull_off_load().unwrap()));
-        g.bench_function("zero force", |b| b.iter(|| contact.zero_force().unwrap()));
+        for (name, search) in [("cold", Search::Cold), ("walk", Search::Walk)] {
+            let contact = contact.search(search);
+            g.bench_function(format!("{name}: displacement (delta = 2)"), |b| {
+                b.iter(|| contact.at_displacement(black_box(2.0)).unwrap())
+            });
+            g.bench_function(format!("{name}: load (F = 1)"), |b| {
+                b.iter(|| contact.at_load(black_box(1.0)).unwrap())
+            });
+            g.bench_function(format!("{name}: contact size (a = 3)"), |b| {
+                b.iter(|| contact.at_contact_size(black_box(3.0)).unwrap())
+            });
+            g.bench_function(format!("{name}: pull-off"), |b| {
+                b.iter(|| contact.pull_off_load().unwrap())
+            });
+            g.bench_function(format!("{name}: zero force"), |b| {
+                b.iter(|| contact.zero_force().unwrap())
+            });
+        }
         g.finish();
-        let grid: Vec<Item> = (0..100)
+        let grid: Vec<Item> = (0..1000)
             .flat_map(|i| {
-                (0..100).map(move |k| Item {
-                    rho: 0.3 + 0.7 * i as f64 / 99.0,
-                    given: Given::Delta(-0.2 + 10.0 * k as f64 / 99.0),
+                (0..1000).map(move |k| Item {
+                    rho: 0.3 + 0.7 * i as f64 / 999.0,
+                    given: Given::Delta(-0.2 + 10.0 * k as f64 / 999.0),
                 })
             })
             .collect();
         let mut g = c.benchmark_group(format!("batch, {model}"));
         g.sample_size(10);
-        g.bench_function("100 x 100 (rho, delta) grid, all cores", |b| {
+        g.bench_function("1000 x 1000 (rho, delta) grid, all cores", |b| {
             b.iter(|| solve_all(model, black_box(&grid)))
         });
         g.finish();

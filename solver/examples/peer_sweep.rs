@@ -1,0 +1,191 @@
+//! The sweep of the side-by-side comparison (solver/benches/peer/compare.py):
+//! 20 000 warm-started displacement-controlled solves at ρ = 0.8, δ̄ from 6
+//! down to 0.5, each continued from the previous solution, with either the
+//! generated residuals (`generated`) or the hand-written ones
+//! (`handwritten`). Prints the median wall time of `repeats` sweeps and
+//! writes the solutions of the last sweep.
+//!
+//! With `cold`: 10 000 cold solves at pseudo-random (ρ, δ̄) (ρ in
+//! [0.7, 1), δ̄ in [0.5, 6], a fixed linear congruential sequence), each a
+//! new `Contact` and `at_displacement` (no warm start); writes
+//! `rho delta a s` per line.
+//!
+//! With `cold-newton`: the same inputs, each solved only by Newton's method
+//! on the generated residuals from the closed-form start the SciPy side
+//! uses (ā from the axisymmetric (25)₁, s from (30)): the same algorithm as
+//! fsolve there, without the bracketing that makes a cold solve safe.
+//!
+//! usage: peer_sweep generated|handwritten|cold|cold-newton OUT_FILE [repeats]
+
+#[path = "../benches/peer/handwritten.rs"]
+mod handwritten;
+
+use nalgebra::{Matrix2, Vector2};
+use std::io::Write;
+use std::time::Instant;
+use thinjkr::newton::{solve, NewtonConfig};
+use thinjkr::{Contact, ModelId};
+
+const N: usize = 20_000;
+const RHO: f64 = 0.8;
+
+fn sweep(
+    f: fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]),
+    start: (f64, f64),
+    out: &mut Vec<(f64, f64, f64)>,
+) {
+    out.clear();
+    let cfg = NewtonConfig::default();
+    let mut x = start;
+    for k in 0..N {
+        let delta = 6.0 - 5.5 * k as f64 / (N - 1) as f64;
+        let sol = solve(
+            |v: Vector2<f64>| {
+                let (r, j) = f(v[0], v[1], RHO, delta);
+                (
+                    Vector2::new(r[0], r[1]),
+                    Matrix2::new(j[0][0], j[0][1], j[1][0], j[1][1]),
+                )
+            },
+            |a| 1.0 + a * a * a,
+            Vector2::new(x.0, x.1),
+            &cfg,
+            "sweep",
+        )
+        .expect("converges");
+        x = (sol.a_bar, sol.s);
+        out.push((delta, sol.a_bar, sol.s));
+    }
+}
+
+/// The generated residuals of the paper's model, through the model interface.
+fn generated(a: f64, s: f64, rho: f64, delta: f64) -> ([f64; 2], [[f64; 2]; 2]) {
+    let (r, j) = ModelId::Max
+        .model()
+        .residuals_and_jacobian(Vector2::new(a, s), rho, delta);
+    (
+        [r[0], r[1]],
+        [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]],
+    )
+}
+
+/// The cold-solve inputs: (ρ, δ̄) from a fixed linear congruential
+/// sequence (the Python side draws the same numbers from the file written).
+pub fn cold_inputs(n: usize) -> Vec<(f64, f64)> {
+    let mut state: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..n)
+        .map(|_| (0.7 + 0.3 * next(), 0.5 + 5.5 * next()))
+        .collect()
+}
+
+const N_COLD: usize = 10_000;
+
+/// ā from ā³ − 4δ̄ā − 8 = 0 (the derived (25)₁ at ρ = 1) by Cardano's
+/// formula, s from (30).
+fn closed_form_start(rho: f64, delta: f64) -> (f64, f64) {
+    let (p, q): (f64, f64) = (-4.0 * delta, -8.0);
+    let disc = (q / 2.0).powi(2) + (p / 3.0).powi(3);
+    let a0 = if disc >= 0.0 {
+        let r = disc.sqrt();
+        (-q / 2.0 + r).cbrt() + (-q / 2.0 - r).cbrt()
+    } else {
+        let m = 2.0 * (-p / 3.0).sqrt();
+        m * ((3.0 * q / (p * m)).acos() / 3.0).cos()
+    };
+    (a0, thinjkr::limits::zero_force_s_approx(rho))
+}
+
+fn cold_newton(path: &str, repeats: usize) {
+    let inputs = cold_inputs(N_COLD);
+    let model = ModelId::Max.model();
+    let cfg = NewtonConfig::default();
+    let mut times = Vec::new();
+    let mut out = Vec::with_capacity(N_COLD);
+    for _ in 0..repeats {
+        out.clear();
+        let t = Instant::now();
+        for &(rho, delta) in &inputs {
+            let (a0, s0) = closed_form_start(rho, delta);
+            let sol = solve(
+                |x| model.residuals_and_jacobian(x, rho, delta),
+                |a| model.residual_scale(a, delta),
+                Vector2::new(a0, s0),
+                &cfg,
+                "cold newton",
+            )
+            .expect("converges");
+            out.push((rho, delta, sol.a_bar, sol.s));
+        }
+        times.push(t.elapsed().as_secs_f64());
+    }
+    write_cold(path, &out, &mut times);
+}
+
+fn write_cold(path: &str, out: &[(f64, f64, f64, f64)], times: &mut [f64]) {
+    times.sort_by(f64::total_cmp);
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path).expect("writable"));
+    for (r, d, a, s) in out {
+        writeln!(w, "{r:.17e} {d:.17e} {a:.17e} {s:.17e}").unwrap();
+    }
+    println!("median_seconds={:.6e}", times[times.len() / 2]);
+}
+
+fn cold(path: &str, repeats: usize) {
+    let inputs = cold_inputs(N_COLD);
+    let mut times = Vec::new();
+    let mut out = Vec::with_capacity(N_COLD);
+    for _ in 0..repeats {
+        out.clear();
+        let t = Instant::now();
+        for &(rho, delta) in &inputs {
+            let st = Contact::new(rho)
+                .and_then(|c| c.at_displacement(delta))
+                .expect("a state");
+            out.push((rho, delta, st.a, st.s));
+        }
+        times.push(t.elapsed().as_secs_f64());
+    }
+    write_cold(path, &out, &mut times);
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let which = args.get(1).map(String::as_str).unwrap_or("generated");
+    let path = args.get(2).cloned().unwrap_or_else(|| "/dev/null".into());
+    let repeats: usize = args.get(3).and_then(|r| r.parse().ok()).unwrap_or(7);
+    match which {
+        "cold" => return cold(&path, repeats),
+        "cold-newton" => return cold_newton(&path, repeats),
+        _ => {}
+    }
+    let f: fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]) = match which {
+        "generated" => generated,
+        "handwritten" => handwritten::residuals_and_jacobian,
+        other => panic!("unknown variant {other}"),
+    };
+    let start = Contact::new(RHO).unwrap().at_displacement(6.0).unwrap();
+    let mut out = Vec::with_capacity(N);
+    let mut times = Vec::new();
+    for _ in 0..repeats {
+        let t = Instant::now();
+        sweep(f, (start.a, start.s), &mut out);
+        times.push(t.elapsed().as_secs_f64());
+    }
+    times.sort_by(f64::total_cmp);
+    let mut w = std::io::BufWriter::new(std::fs::File::create(&path).expect("writable"));
+    for (d, a, s) in &out {
+        writeln!(w, "{d:.17e} {a:.17e} {s:.17e}").unwrap();
+    }
+    println!(
+        "median_seconds={:.6e} start_a={:.17e} start_s={:.17e}",
+        times[times.len() / 2],
+        start.a,
+        start.s
+    );
+}
