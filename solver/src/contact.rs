@@ -151,6 +151,16 @@ pub struct Contact {
 /// Points of the walk of the branch (the reference search).
 const WALK_POINTS: usize = 4000;
 
+/// One sample of the walk.
+enum WalkSample {
+    /// (s, ā, δ̄) of the adhesive point.
+    Point(f64, f64, f64),
+    /// The two roots of a quadratic branch nearly meet: skipped.
+    IllConditioned,
+    /// No adhesive point at this s.
+    NoAdhesivePoint,
+}
+
 impl std::fmt::Debug for Contact {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Contact")
@@ -504,15 +514,26 @@ impl Contact {
     /// has no adhesive point, or where the two roots of a quadratic branch
     /// nearly meet (as ā → ∞ near s∞) and are ill-conditioned.
     fn walk_sample(&self, s_inf: f64, k: usize) -> Option<(f64, f64, f64)> {
+        match self.walk_sample_why(s_inf, k) {
+            WalkSample::Point(s, a, d) => Some((s, a, d)),
+            _ => None,
+        }
+    }
+
+    /// [`Contact::walk_sample`], saying why there is no point.
+    fn walk_sample_why(&self, s_inf: f64, k: usize) -> WalkSample {
         let s = self.walk_s(s_inf, k);
         let points = self.model.branch(s, self.rho);
         if let [Some((a1, d1)), Some((a2, d2))] = points {
             let (t1, t2) = (d1 / (a1 * a1), d2 / (a2 * a2));
             if (t1 - t2).abs() < 1e-4 * t1.abs().max(t2.abs()) {
-                return None;
+                return WalkSample::IllConditioned;
             }
         }
-        self.adhesive_of(s, points).map(|(a, d)| (s, a, d))
+        match self.adhesive_of(s, points) {
+            Some((a, d)) => WalkSample::Point(s, a, d),
+            None => WalkSample::NoAdhesivePoint,
+        }
     }
 
     /// The decades of s∞ − s the walk spans: 13, or 8 for d = 2.

@@ -25,7 +25,7 @@
 //! Owns: [`Scan`] and the cold forms of the searches of [`Contact`]. May
 //! use: its parent `contact`, `fold`, `error`.
 
-use super::{Contact, Control, State, WALK_POINTS};
+use super::{Contact, Control, State, WalkSample, WALK_POINTS};
 use crate::error::{Error, Result};
 use nalgebra::Vector3;
 
@@ -101,24 +101,30 @@ impl<'c> Scan<'c> {
         })
     }
 
-    /// The i-th sample, extending the scan as needed. Sample 0 is the
-    /// walk's first (its first valid index); then every `STRIDE`-th walk
-    /// index while that moves s by less than 4 % of s∞, closer where s
-    /// changes faster (towards s → 0, where the walk's logarithmic spacing
-    /// in s∞ − s stretches), and the walk's last index.
+    /// The i-th sample, extending the scan as needed: from the walk's
+    /// first index, every `stride`-th walk index (doubling up to
+    /// `MAX_STRIDE` while the branch is steady) while that moves s by less
+    /// than 4 % of s∞, closer where s changes faster (towards s → 0, where
+    /// the walk's logarithmic spacing in s∞ − s stretches), and the walk's
+    /// last index; every index where the branch ends between two samples.
     fn get(&mut self, i: usize) -> Option<Point> {
         while self.points.len() <= i && self.next < WALK_POINTS {
             let k = self.next;
-            let sample = self.contact.walk_sample(self.s_inf, k);
+            let sample = self.contact.walk_sample_why(self.s_inf, k);
             let filled = self.last_valid.max(self.fine_until);
-            if sample.is_none() && self.points.len() >= 2 && k > filled + 1 {
+            if matches!(sample, WalkSample::NoAdhesivePoint)
+                && self.points.len() >= 2
+                && k > filled + 1
+            {
                 // the branch ends (or has a gap) between two samples: every
-                // walk index in between, as the walk has them
+                // walk index in between, as the walk has them (not where
+                // the two roots of a quadratic branch are too close to be
+                // told apart, which the walk skips too)
                 self.fine_until = k;
                 self.next = filled + 1;
                 continue;
             }
-            if let Some((s, a, delta)) = sample {
+            if let WalkSample::Point(s, a, delta) = sample {
                 let p = self.contact.point(s, a, delta);
                 self.points.push(p);
                 self.logs
@@ -131,7 +137,7 @@ impl<'c> Scan<'c> {
                     STRIDE
                 };
             }
-            self.next = if self.points.is_empty() || k + 1 < self.fine_until {
+            self.next = if k + 1 < self.fine_until {
                 k + 1
             } else {
                 // s∞ − s = s∞ d, d = 10^(−c (1 − k/n)): m walk steps move s
@@ -338,24 +344,47 @@ impl Contact {
         let Some(p0) = scan.get(0) else {
             return Err(self.no_branch(scan.s_inf));
         };
-        // large loads: the walk's continuation from its two first samples
+        // large loads: the walk's samples before the scan's first (where
+        // a quadratic branch is mostly ill-conditioned: one by one, as the
+        // walk has them) and its continuation from the first two of them
         let mut tail_reach = Vec::new();
         if target > p0.key(control) {
-            let head: Vec<State> = (1..WALK_POINTS)
+            let first = scan.walk_index[0];
+            let state = |(s, a, d): (f64, f64, f64)| self.state_with(a, s, d, false);
+            let seq: Vec<State> = (1..first)
                 .filter_map(|k| self.walk_sample(scan.s_inf, k))
-                .take(2)
-                .map(|(s, a, d)| self.state_with(a, s, d, false))
+                .chain(std::iter::once((p0.s, p0.a, p0.delta)))
+                .map(state)
                 .collect();
-            let mut all = self.tail(&head);
+            // the continuation starts from the walk's first two samples
+            let start: Vec<State> = seq
+                .iter()
+                .copied()
+                .chain(
+                    (first + 1..WALK_POINTS)
+                        .filter_map(|k| self.walk_sample(scan.s_inf, k))
+                        .map(state),
+                )
+                .take(2)
+                .collect();
+            let mut all = self.tail(&start);
+            let n_tail = all.len();
             all.reverse();
-            all.extend(head.first().copied());
-            for w in all.windows(2) {
+            all.extend(seq.iter().copied());
+            for (k, w) in all.windows(2).enumerate() {
                 let (f0, f1) = (control.value(&w[0]) - target, control.value(&w[1]) - target);
                 if f0.signum() == f1.signum() || !f0.is_finite() || !f1.is_finite() {
                     continue;
                 }
-                let g = self.tail_guess(&w[0], &w[1], control, target);
-                let z = Vector3::new(g.a, g.s, g.delta);
+                let z = if k < n_tail {
+                    let g = self.tail_guess(&w[0], &w[1], control, target);
+                    Vector3::new(g.a, g.s, g.delta)
+                } else {
+                    let (lo, hi) = (w[1], w[0]);
+                    let point = |st: State| self.point(st.s, st.a, st.delta);
+                    self.refine_crossing(scan.s_inf, control, target, point(lo), point(hi))
+                        .z()
+                };
                 out.push(self.solve_controlled(z, control, target, what)?);
                 if first_only {
                     return Ok(out);
