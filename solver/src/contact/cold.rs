@@ -34,7 +34,7 @@ use nalgebra::Vector3;
 const STRIDE: usize = 160;
 
 /// The stride where the branch follows a power law of s∞ − s.
-const MAX_STRIDE: usize = 1280;
+const MAX_STRIDE: usize = 640;
 
 /// One explicit point of the adhesive branch.
 #[derive(Clone, Copy, Debug)]
