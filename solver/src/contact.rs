@@ -53,8 +53,9 @@ pub struct Stability {
 
 /// The smallest radii ratio the solver supports: the paper's model is
 /// followed down to ρ = 1e-8 (s ≈ 2e-6 at δ̄ = 1); below, an
-/// [`Error::Unsupported`]. (The energy model's adhesive branch is not found
-/// below about ρ = 1e-6, which it reports as `NoState`.)
+/// [`Error::Unsupported`]. (The energy model's numeric s∞ is bracketed on a
+/// grid from s = 1e-4, which reaches ρ = 1e-8: at ρ = 1e-8, δ̄ = 1 its state
+/// has s ≈ 8e-5, beyond the contact-size fold.)
 pub const RHO_MIN: f64 = 1e-8;
 
 /// One state of a model, dimensionless as in (17) (lengths in
