@@ -2,22 +2,26 @@
 //! the branch ([`Search::Cold`], the default).
 //!
 //! The branch is explicit in s (the generated `branch`; for the paper's
-//! model (19)–(20) solved for ā³ and δ̄ā). The scan samples it at 51 of the
-//! walk's 4000 points (the first and every 80th, the same s values), from
-//! s∞ towards s → 0, lazily: a solve stops as soon as it has its answer.
-//! A sample costs one explicit evaluation (ā, δ̄, F̄ and the apex slopes
-//! that pick the adhesive root), no state and no Newton.
+//! model (19)–(20) solved for ā³ and δ̄ā). The scan samples it at some of
+//! the walk's 4000 points (the same s values), from s∞ towards s → 0,
+//! lazily: a solve stops as soon as it has its answer. The stride starts
+//! at 160 walk indices and doubles up to 640 while ā, δ̄ and F̄ follow a
+//! power law of s∞ − s; it is capped where s would move by more than 4 % of
+//! s∞, and where the branch ends between two samples every walk index in
+//! between is read. A sample costs one explicit evaluation (ā, δ̄, F̄ and
+//! the apex slopes that pick the adhesive root), no state and no Newton.
 //! - A crossing of the controlled quantity between two samples is refined
-//!   by the Illinois method in s.
-//! - An extremum among three samples is refined by golden section in s;
+//!   by the Illinois method in u = ln(s∞ − s).
+//! - An extremum among three samples is refined by Brent's method in u;
 //!   if the controlled quantity there is across the target, the two
 //!   crossings it brackets are found the same way (so a pair of crossings
 //!   between two samples is not missed).
 //! - The start is then solved to round-off by the same Newton iterations
-//!   as the walk's: the residuals with the control equation, or the fold
-//!   condition ([`crate::fold`]).
-//! - Large loads beyond the first walk sample go to the walk's large-load
-//!   continuation ([`Contact::tail`]), from the same two first samples.
+//!   as the walk's: the residuals with the control equation (for the
+//!   zero-force state, F̄ = 0), or the fold condition ([`crate::fold`]).
+//! - Loads beyond the scan's first sample go to the walk's samples before
+//!   it and its large-load continuation ([`Contact::tail`]), from the
+//!   walk's first two samples.
 //!
 //! The walk ([`Search::Walk`]) is kept as the reference: a test compares
 //! the two over grids of (ρ, δ̄, ā, F̄) for every model.
@@ -27,6 +31,7 @@
 
 use super::{Contact, Control, State, WalkSample, WALK_POINTS};
 use crate::error::{Error, Result};
+use crate::model::brent_minimum;
 use nalgebra::Vector3;
 
 /// Walk samples between two scan samples (at most, where s changes fast,
@@ -514,79 +519,9 @@ impl Contact {
     }
 }
 
-/// Brent's method for the minimum of `f` on [a, b] (parabolic steps
-/// safeguarded by golden sections), to `tol` absolute in x.
-fn brent_minimum(f: impl Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
-    const CGOLD: f64 = 0.381_966_011_250_105_1;
-    let (mut a, mut b) = (a.min(b), a.max(b));
-    let mut x = a + CGOLD * (b - a);
-    let (mut w, mut v) = (x, x);
-    let mut fx = f(x);
-    let (mut fw, mut fv) = (fx, fx);
-    let (mut d, mut e) = (0.0f64, 0.0f64);
-    for _ in 0..100 {
-        let xm = 0.5 * (a + b);
-        let tol2 = 2.0 * tol;
-        if (x - xm).abs() <= tol2 - 0.5 * (b - a) {
-            break;
-        }
-        let mut parabolic = false;
-        if e.abs() > tol {
-            let r = (x - w) * (fx - fv);
-            let mut q = (x - v) * (fx - fw);
-            let mut p = (x - v) * q - (x - w) * r;
-            q = 2.0 * (q - r);
-            if q > 0.0 {
-                p = -p;
-            } else {
-                q = -q;
-            }
-            if p.abs() < (0.5 * q * e).abs() && p > q * (a - x) && p < q * (b - x) {
-                e = d;
-                d = p / q;
-                let u = x + d;
-                if u - a < tol2 || b - u < tol2 {
-                    d = tol.copysign(xm - x);
-                }
-                parabolic = true;
-            }
-        }
-        if !parabolic {
-            e = if x >= xm { a - x } else { b - x };
-            d = CGOLD * e;
-        }
-        let u = if d.abs() >= tol {
-            x + d
-        } else {
-            x + tol.copysign(d)
-        };
-        let fu = f(u);
-        if fu <= fx {
-            if u >= x {
-                a = x;
-            } else {
-                b = x;
-            }
-            (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
-        } else {
-            if u < x {
-                a = u;
-            } else {
-                b = u;
-            }
-            if fu <= fw || w == x {
-                (v, fv, w, fw) = (w, fw, u, fu);
-            } else if fu <= fv || v == x || v == w {
-                (v, fv) = (u, fu);
-            }
-        }
-    }
-    x
-}
-
 #[cfg(test)]
 mod tests {
-    use super::brent_minimum;
+    use crate::model::brent_minimum;
 
     #[test]
     fn brent_finds_a_parabolic_and_a_kinked_minimum() {
