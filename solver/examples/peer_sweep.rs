@@ -101,57 +101,54 @@ fn closed_form_start(rho: f64, delta: f64) -> (f64, f64) {
     (a0, thinjkr::limits::zero_force_s_approx(rho))
 }
 
-fn cold_newton(path: &str, repeats: usize) {
+/// `repeats` timed passes of `solve` over the cold inputs; writes the last.
+fn timed_cold(path: &str, repeats: usize, solve_one: impl Fn(f64, f64) -> (f64, f64)) {
     let inputs = cold_inputs(N_COLD);
-    let model = ModelId::Max.model();
-    let cfg = NewtonConfig::default();
     let mut times = Vec::new();
     let mut out = Vec::with_capacity(N_COLD);
     for _ in 0..repeats {
         out.clear();
         let t = Instant::now();
         for &(rho, delta) in &inputs {
-            let (a0, s0) = closed_form_start(rho, delta);
-            let sol = solve(
-                |x| model.residuals_and_jacobian(x, rho, delta),
-                |a| model.residual_scale(a, delta),
-                Vector2::new(a0, s0),
-                &cfg,
-                "cold newton",
-            )
-            .expect("converges");
-            out.push((rho, delta, sol.a_bar, sol.s));
+            let (a, s) = solve_one(rho, delta);
+            out.push((rho, delta, a, s));
         }
         times.push(t.elapsed().as_secs_f64());
     }
-    write_cold(path, &out, &mut times);
-}
-
-fn write_cold(path: &str, out: &[(f64, f64, f64, f64)], times: &mut [f64]) {
     times.sort_by(f64::total_cmp);
     let mut w = std::io::BufWriter::new(std::fs::File::create(path).expect("writable"));
-    for (r, d, a, s) in out {
+    for (r, d, a, s) in &out {
         writeln!(w, "{r:.17e} {d:.17e} {a:.17e} {s:.17e}").unwrap();
     }
     println!("median_seconds={:.6e}", times[times.len() / 2]);
 }
 
+/// Newton's method alone from the closed-form start.
+fn cold_newton(path: &str, repeats: usize) {
+    let model = ModelId::Max.model();
+    let cfg = NewtonConfig::default();
+    timed_cold(path, repeats, |rho, delta| {
+        let (a0, s0) = closed_form_start(rho, delta);
+        let sol = solve(
+            |x| model.residuals_and_jacobian(x, rho, delta),
+            |a| model.residual_scale(a, delta),
+            Vector2::new(a0, s0),
+            &cfg,
+            "cold newton",
+        )
+        .expect("converges");
+        (sol.a_bar, sol.s)
+    });
+}
+
+/// thinjkr's cold solve: a new contact and `at_displacement`.
 fn cold(path: &str, repeats: usize) {
-    let inputs = cold_inputs(N_COLD);
-    let mut times = Vec::new();
-    let mut out = Vec::with_capacity(N_COLD);
-    for _ in 0..repeats {
-        out.clear();
-        let t = Instant::now();
-        for &(rho, delta) in &inputs {
-            let st = Contact::new(rho)
-                .and_then(|c| c.at_displacement(delta))
-                .expect("a state");
-            out.push((rho, delta, st.a, st.s));
-        }
-        times.push(t.elapsed().as_secs_f64());
-    }
-    write_cold(path, &out, &mut times);
+    timed_cold(path, repeats, |rho, delta| {
+        let st = Contact::new(rho)
+            .and_then(|c| c.at_displacement(delta))
+            .expect("a state");
+        (st.a, st.s)
+    });
 }
 
 fn main() {

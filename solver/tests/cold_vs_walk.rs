@@ -72,6 +72,29 @@ fn compare(tally: &mut Tally, what: String, cold: Result<State>, walk: Result<St
     }
 }
 
+/// Pull-off under both controls and the fold of the contact size.
+fn compare_folds(t: &mut Tally, cold: &Contact, walk: &Contact) {
+    let what = |w: &str| format!("{} rho = {}, {w}", cold.model_id(), cold.rho());
+    compare(
+        t,
+        what("pull-off (load)"),
+        cold.pull_off_load().map(|p| p.state),
+        walk.pull_off_load().map(|p| p.state),
+    );
+    compare(
+        t,
+        what("pull-off (displacement)"),
+        cold.pull_off_displacement().map(|p| p.state),
+        walk.pull_off_displacement().map(|p| p.state),
+    );
+    compare(
+        t,
+        what("fold of the contact size"),
+        cold.size_fold(),
+        walk.size_fold(),
+    );
+}
+
 fn tally_for(model: ModelId, rho: f64) -> Tally {
     let mut t = Tally::default();
     let cold = Contact::with_model(model, rho).unwrap();
@@ -107,25 +130,7 @@ fn tally_for(model: ModelId, rho: f64) -> Tally {
             (x, y) => compare(&mut t, at("a", a), x.map(|v| v[0]), y.map(|v| v[0])),
         }
     }
-    let what = |w: &str| format!("{model} rho = {rho}, {w}");
-    compare(
-        &mut t,
-        what("pull-off (load)"),
-        cold.pull_off_load().map(|p| p.state),
-        walk.pull_off_load().map(|p| p.state),
-    );
-    compare(
-        &mut t,
-        what("pull-off (displacement)"),
-        cold.pull_off_displacement().map(|p| p.state),
-        walk.pull_off_displacement().map(|p| p.state),
-    );
-    compare(
-        &mut t,
-        what("fold of the contact size"),
-        cold.size_fold(),
-        walk.size_fold(),
-    );
+    compare_folds(&mut t, &cold, &walk);
     t
 }
 
@@ -182,19 +187,7 @@ fn cold_search_agrees_with_the_walk_on_a_dense_rho_sweep() {
             let cold = Contact::with_model(model, rho).unwrap();
             let walk = cold.search(Search::Walk);
             let at = |what: &str| format!("{model} rho = {rho}, {what}");
-            compare(
-                &mut t,
-                at("pull-off (load)"),
-                cold.pull_off_load().map(|p| p.state),
-                walk.pull_off_load().map(|p| p.state),
-            );
-            compare(
-                &mut t,
-                at("pull-off (displacement)"),
-                cold.pull_off_displacement().map(|p| p.state),
-                walk.pull_off_displacement().map(|p| p.state),
-            );
-            compare(&mut t, at("size fold"), cold.size_fold(), walk.size_fold());
+            compare_folds(&mut t, &cold, &walk);
             for d in [-0.7, -0.1, 0.37, 1.3, 4.1] {
                 compare(
                     &mut t,

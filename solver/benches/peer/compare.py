@@ -63,24 +63,6 @@ def load(path):
     return np.loadtxt(path)
 
 
-def scipy_sweep(start):
-    a, s, d, rho = sp.symbols("a s d rho", positive=True)
-    eta = 2 * (s**2 + s + 1) ** sp.Rational(3, 2) / (3 ** sp.Rational(3, 2) * s * (s + 1))
-    r1 = a**3 - 2 * d * (3 * s**2 + 1) / (s**2 + 1) * a - 2 * (3 * s**4 - 2 * s**3 + 6 * s**2 + 1) / (s**2 * (s**2 + 1) * eta)
-    r2 = a**3 - 2 * rho * d * (s**2 + 3) / (s**2 * (s**2 + 1)) * a - 2 * rho * (s**4 + 6 * s**2 - 2 * s + 3) / (s**3 * (s**2 + 1) * eta)
-    res = sp.Matrix([r1, r2])
-    jac = res.jacobian([a, s])
-    f_res = sp.lambdify((a, s, d, rho), list(res), "numpy")
-    f_jac = sp.lambdify((a, s, d, rho), jac.tolist(), "numpy")
-    x = np.array(start)
-    out = np.empty((N, 3))
-    for k in range(N):
-        delta = 6.0 - 5.5 * k / (N - 1)
-        x = fsolve(lambda z: f_res(z[0], z[1], delta, RHO), x, fprime=lambda z: f_jac(z[0], z[1], delta, RHO), xtol=1e-14)
-        out[k] = (delta, x[0], x[1])
-    return out
-
-
 def residual_functions():
     a, s, d, rho = sp.symbols("a s d rho", positive=True)
     eta = 2 * (s**2 + s + 1) ** sp.Rational(3, 2) / (3 ** sp.Rational(3, 2) * s * (s + 1))
@@ -89,6 +71,17 @@ def residual_functions():
     res = sp.Matrix([r1, r2])
     jac = res.jacobian([a, s])
     return sp.lambdify((a, s, d, rho), list(res), "numpy"), sp.lambdify((a, s, d, rho), jac.tolist(), "numpy")
+
+
+def scipy_sweep(start):
+    f_res, f_jac = residual_functions()
+    x = np.array(start)
+    out = np.empty((N, 3))
+    for k in range(N):
+        delta = 6.0 - 5.5 * k / (N - 1)
+        x = fsolve(lambda z: f_res(z[0], z[1], delta, RHO), x, fprime=lambda z: f_jac(z[0], z[1], delta, RHO), xtol=1e-14)
+        out[k] = (delta, x[0], x[1])
+    return out
 
 
 def closed_form_start(rho, delta):
