@@ -144,8 +144,8 @@ pub struct Contact {
     model: &'static dyn Model,
     newton: NewtonConfig,
     search: Search,
-    /// s∞ found numerically when the contact was made (models without the
-    /// derived non-adhesive relation); `None` otherwise, or if not found.
+    /// s∞, found when the contact was made; `None` at ρ = 1 or if not
+    /// found (asking again then gives the error).
     s_inf: Option<f64>,
 }
 
@@ -218,8 +218,9 @@ impl Contact {
             search: Search::Cold,
             s_inf: None,
         };
-        if !c.axisymmetric() && !c.model.info().has_non_adhesive_limit {
-            // found once per contact: it costs tens of microseconds
+        if !c.axisymmetric() {
+            // found once per contact (numerically, where the model has no
+            // derived relation: tens of microseconds)
             c.s_inf = c.s_infinity().ok();
         }
         Ok(c)
@@ -351,11 +352,8 @@ impl Contact {
             return Some(a.powi(-3));
         }
         for (a, d) in self.model.branch(s, self.rho).into_iter().flatten() {
-            let x = Vector2::new(a, s);
-            let g = self
-                .model
-                .normal_derivative(x, self.rho, d, 0.0)
-                .max(self.model.normal_derivative(x, self.rho, d, 1.0));
+            let [g0, g1] = self.model.edge_slopes(Vector2::new(a, s), self.rho, d);
+            let g = g0.max(g1);
             if g < 0.0 {
                 return Some(-a.powi(-3));
             }
@@ -387,10 +385,8 @@ impl Contact {
     /// (tensile-edge) solution, negative on the mirror solution of a
     /// closure that is even in p (the energy closure).
     fn edge_slope(&self, a: f64, s: f64, delta: f64) -> f64 {
-        let x = Vector2::new(a, s);
-        self.model
-            .normal_derivative(x, self.rho, delta, 0.0)
-            .min(self.model.normal_derivative(x, self.rho, delta, 1.0))
+        let [g0, g1] = self.model.edge_slopes(Vector2::new(a, s), self.rho, delta);
+        g0.min(g1)
     }
 
     /// The branch state at `s` without the contour-sampled error (14): for

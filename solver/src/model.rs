@@ -92,6 +92,14 @@ pub trait Model: Send + Sync + 'static {
     fn branch(&self, s: f64, rho: f64) -> BranchPoints;
     /// ∂p̄/∂ν on Γ₀ at u = sin²t, in units of √(2mΔγ) (1 where (3)₂ holds).
     fn normal_derivative(&self, x: Vector2<f64>, rho: f64, delta_bar: f64, u: f64) -> f64;
+    /// ∂p̄/∂ν at the two apexes, u = 0 and u = 1 (one evaluation of what
+    /// they share where the model has it).
+    fn edge_slopes(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> [f64; 2] {
+        [
+            self.normal_derivative(x, rho, delta_bar, 0.0),
+            self.normal_derivative(x, rho, delta_bar, 1.0),
+        ]
+    }
     /// p̄₀, the shape parameters and ξ.
     fn pressure_parameters(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> PressureParameters;
     /// p̄ at (x̄, ȳ) inside the ellipse (7).

@@ -535,6 +535,15 @@ impl Model for Apexes {
         let xi = xi(x[0], x[1], delta_bar, e);
         normal_derivative_collocated(p0_bar(x[0], xi, e), x[0], x[1], xi, u)
     }
+    fn edge_slopes(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> [f64; 2] {
+        let e = eta(x[1]);
+        let xi = xi(x[0], x[1], delta_bar, e);
+        let p0 = p0_bar(x[0], xi, e);
+        [
+            normal_derivative_collocated(p0, x[0], x[1], xi, 0.0),
+            normal_derivative_collocated(p0, x[0], x[1], xi, 1.0),
+        ]
+    }
     fn pressure_parameters(
         &self,
         x: Vector2<f64>,
