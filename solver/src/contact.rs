@@ -30,7 +30,7 @@ mod cold;
 
 use crate::error::{check_range, Error, Result};
 use crate::fold::{self, FoldCondition};
-use crate::model::{ClosureKind, Model, ModelId};
+use crate::model::{brent_minimum, ClosureKind, Model, ModelId};
 use crate::newton::{self, NewtonConfig};
 use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
@@ -466,7 +466,7 @@ impl Contact {
 
     /// The minimum of the axisymmetric F̄(ā) (pull-off at ρ = 1): the derived
     /// critical point where the model has it, otherwise a logarithmic scan
-    /// and golden section, then secant steps on dF̄/dā.
+    /// and Brent's method, then secant steps on dF̄/dā.
     fn axisymmetric_pull_off(&self) -> Result<State> {
         let f = |a: f64| self.model.axisymmetric(a).map(|v| v.1).unwrap_or(f64::NAN);
         if !self.model.info().has_axisymmetric_limit {
@@ -482,7 +482,7 @@ impl Contact {
         let k = (1..n)
             .min_by(|&i, &j| f(grid[i]).total_cmp(&f(grid[j])))
             .ok_or_else(|| Error::NoState("no axisymmetric minimum".into()))?;
-        let mut a = golden_minimum(f, grid[k - 1], grid[k + 1]);
+        let mut a = brent_minimum(f, grid[k - 1], grid[k + 1], 1e-10 * grid[k]);
         let df = |a: f64| {
             let h = 1e-5 * a;
             (f(a + h) - f(a - h)) / (2.0 * h)
@@ -833,7 +833,7 @@ impl Contact {
     /// The first minimum of `key` along the walk from s∞ that is the
     /// smallest value within 20 walk points on either side (robust to the
     /// round-off of the explicit branch near s∞, where a quadratic
-    /// closure's roots meet), refined by golden section in s (not
+    /// closure's roots meet), refined by Brent's method in s (not
     /// polished: a starting point for Newton).
     fn branch_minimum(&self, control: Control, what: &str) -> Result<State> {
         if self.search == Search::Cold {
@@ -856,7 +856,7 @@ impl Contact {
                 .unwrap_or(f64::INFINITY)
         };
         let mut st = self
-            .light_state_at_s(golden_minimum(f, walk[k + 1].s, walk[k - 1].s))
+            .light_state_at_s(brent_minimum(f, walk[k + 1].s, walk[k - 1].s, 1e-12))
             .ok_or_else(|| Error::NoState(format!("{what}: off the branch")))?;
         st.beyond_size_fold = walk[k].beyond_size_fold;
         Ok(st)
@@ -1073,35 +1073,6 @@ fn first_window_minimum(v: &[f64]) -> Option<usize> {
         let (lo, hi) = (k.saturating_sub(w), (k + w).min(v.len() - 1));
         (lo..=hi).all(|j| v[k] <= v[j]) && v[k] < v[k - 1]
     })
-}
-
-/// Golden-section search for the minimum of a unimodal `f` on [lo, hi]:
-/// one evaluation per step (the interior point kept is reused), until the
-/// bracket is below 1e-10 of its ends' magnitude (the location of a smooth
-/// minimum is determined only to about √ε ≈ 1.5e-8 anyway) or 120 steps.
-pub(crate) fn golden_minimum(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let r = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut x1, mut x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..120 {
-        if (hi - lo).abs() <= 1e-10 * (lo.abs() + hi.abs()).max(1e-300) {
-            break;
-        }
-        if f1 < f2 {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - r * (hi - lo);
-            f1 = f(x1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + r * (hi - lo);
-            f2 = f(x2);
-        }
-    }
-    0.5 * (lo + hi)
 }
 
 /// Bisection for a sign change of `f` on [lo, hi].

@@ -88,8 +88,8 @@ pub(super) struct Scan<'c> {
     last_valid: usize,
     /// Walk indices below this are all sampled (a gap being filled).
     fine_until: usize,
-    /// The first fold of ā: not yet looked for, or its s (None: none).
-    size_fold: Option<Option<f64>>,
+    /// s at the first fold of ā, once it has been refined.
+    size_fold: Option<f64>,
 }
 
 impl<'c> Scan<'c> {
@@ -229,17 +229,21 @@ impl<'c> Scan<'c> {
     /// below `s`; otherwise decided against the fold refined by Brent's
     /// method (computed once per scan).
     fn beyond_size_fold(&mut self, s: f64, i: usize) -> bool {
-        if let Some(found) = self.size_fold {
-            return found.is_some_and(|sf| s < sf);
+        if let Some(fold) = self.size_fold {
+            return s < fold;
         }
         for j in 1..=i {
             if self.is_extremum(j, Control::ABar, 1.0) {
                 if self.points[j - 1].s < s {
                     return false;
                 }
-                let fold = self.refine_extremum(j, Control::ABar, 1.0).map(|p| p.s);
+                // where Brent's point is off the branch, the sample at the
+                // minimum stands for the fold
+                let fold = self
+                    .refine_extremum(j, Control::ABar, 1.0)
+                    .map_or(self.points[j].s, |p| p.s);
                 self.size_fold = Some(fold);
-                return fold.is_some_and(|sf| s < sf);
+                return s < fold;
             }
         }
         false
@@ -452,7 +456,7 @@ impl Contact {
     }
 
     /// The first minimum of `control` along the branch from s∞, refined by
-    /// golden section in s: a start for the fold Newton, flagged if it lies
+    /// Brent's method in ln(s∞ − s): a start for the fold Newton, flagged if it lies
     /// beyond the fold of ā.
     pub(super) fn cold_minimum(&self, control: Control, what: &str) -> Result<State> {
         let mut scan = Scan::new(self)?;
