@@ -126,9 +126,9 @@ pub struct PullOff {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Search {
-    /// A scan of about 50 points of the explicit branch, then the
-    /// crossing or extremum bracketed and refined (module `cold`): the
-    /// default.
+    /// A scan of some of the walk's points (about 10–60, the stride
+    /// adapting to the branch), then the crossing or extremum bracketed
+    /// and refined (module `cold`): the default.
     #[default]
     Cold,
     /// The walk of 4000 points of the explicit branch that every solve
