@@ -26,11 +26,14 @@ use std::time::Instant;
 use thinjkr::newton::{solve, NewtonConfig};
 use thinjkr::{Contact, ModelId};
 
+/// Residuals and Jacobian of (19)–(20) at (ā, s, ρ, δ̄).
+type Residuals = fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]);
+
 const N: usize = 20_000;
 const RHO: f64 = 0.8;
 
 fn sweep(
-    f: fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]),
+    f: Residuals,
     start: (f64, f64),
     out: &mut Vec<(f64, f64, f64)>,
 ) {
@@ -161,7 +164,7 @@ fn main() {
         "cold-newton" => return cold_newton(&path, repeats),
         _ => {}
     }
-    let f: fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]) = match which {
+    let f: Residuals = match which {
         "generated" => generated,
         "handwritten" => handwritten::residuals_and_jacobian,
         other => panic!("unknown variant {other}"),
