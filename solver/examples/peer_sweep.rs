@@ -32,11 +32,7 @@ type Residuals = fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]);
 const N: usize = 20_000;
 const RHO: f64 = 0.8;
 
-fn sweep(
-    f: Residuals,
-    start: (f64, f64),
-    out: &mut Vec<(f64, f64, f64)>,
-) {
+fn sweep(f: Residuals, start: (f64, f64), out: &mut Vec<(f64, f64, f64)>) {
     out.clear();
     let cfg = NewtonConfig::default();
     let mut x = start;

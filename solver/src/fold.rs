@@ -117,10 +117,9 @@ pub fn locate(
         z += step * lambda;
         let size = step.component_div(&z.map(|v| 1.0 + v.abs())).amax();
         let rn = r.norm() / model.residual_scale(z[0], z[2]);
-        if size < 1e-13 || (size < 1e-10 && size >= 0.5 * last && rn < 1e-12) {
-            if condition(model, rho, z, which).is_finite() {
-                return Ok(z);
-            }
+        let converged = size < 1e-13 || (size < 1e-10 && size >= 0.5 * last && rn < 1e-12);
+        if converged && condition(model, rho, z, which).is_finite() {
+            return Ok(z);
         }
         last = size;
     }

@@ -463,7 +463,7 @@ impl Exact {
             ExactControl::Delta(v) => circle_a_bar_at_delta(v),
             ExactControl::Force(v) => {
                 let disc = 144.0 + 96.0 * v / std::f64::consts::PI;
-                if !(disc >= 0.0) {
+                if disc.is_nan() || disc < 0.0 {
                     return Err(Error::NoState(format!(
                         "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, -3 pi/2, and so below that of every rho",
                         self.rho
