@@ -1023,6 +1023,7 @@ fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
     let err = format!("unknown model (allowed: {list})");
     let file = quote! {
         #(pub mod #mods;)*
+        pub mod conformal;
         /// A generated model, chosen at run time.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
         #[serde(rename_all = "snake_case")]

@@ -51,6 +51,8 @@ pub fn outputs() -> Result<Vec<Output>, String> {
     ];
     let all: Vec<&ModelDerivation> = models.iter().collect();
     out.extend(crate::codegen::outputs(&all)?);
+    let family = crate::codegen_conformal::derive_all()?;
+    out.extend(crate::codegen_conformal::outputs(&family)?);
     Ok(out)
 }
 

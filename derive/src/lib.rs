@@ -15,6 +15,7 @@ pub mod ansatz;
 pub mod check;
 pub mod claims;
 pub mod codegen;
+pub mod codegen_conformal;
 pub mod conformal;
 pub mod contour;
 pub mod energy;

@@ -16,6 +16,7 @@
 #![deny(missing_docs)]
 
 pub mod batch;
+pub mod conformal;
 pub mod contact;
 pub mod curve;
 pub mod error;

@@ -1,0 +1,584 @@
+//! The family `conformal:K`: contact domains that are images of the unit
+//! disk under w(ζ) = Σ c_k ζ^(n_k), the pressure exact in (2) with p̄ = 0 on
+//! the contour, and the energy (Ritz) closure of (3)₂: the state makes
+//! Π̄(c, δ̄; ρ) stationary in c at fixed δ̄, and F̄ = ∂Π̄/∂δ̄. The unknowns
+//! are x = (c₁ … c_K, δ̄); K is chosen at run time, so vectors and matrices
+//! here are dynamic (at most 9 × 9).
+//!
+//! Everything specific to a member comes from its generated tables
+//! (`crate::generated::conformal`): Π̄ with its derivatives through
+//! [`poly`], the boundary slope, and the map's powers. Solves:
+//! - a state at given δ̄, F̄ or ā: Newton on (∇_c Π̄ = 0, control), started
+//!   from the circle at ρ = 1 (where every member has the circle's state)
+//!   and continued in μ = 1/ρ to the requested ρ;
+//! - pull-off under load or displacement control: pseudo-arclength
+//!   continuation of the branch in (c, δ̄) from ā = [`TRACE_START_A`] towards
+//!   smaller contacts, to the first extremum of F̄ (load) or δ̄
+//!   (displacement), located by Illinois on the tangent's component;
+//! - zero force: the state at F̄ = 0.
+//!
+//! Every state is checked to be a contact: the map must be one-to-one on
+//! the closed disk ([`univalence`]).
+//!
+//! Owns: [`Tables`], [`Conformal`], [`ConformalState`], the family's solves.
+//! May use: `generated::conformal`, `error`, nalgebra.
+
+pub mod poly;
+mod trace;
+
+use crate::error::{check_range, short, Error, Result};
+use nalgebra::{DMatrix, DVector};
+use serde::Serialize;
+
+pub use trace::{Extremum, PullOffControl};
+
+/// The generated tables of one member (`crate::generated::conformal::MEMBERS`).
+#[derive(Debug)]
+pub struct Tables {
+    /// K.
+    pub terms: usize,
+    /// The powers n_k of ζ in the map.
+    pub powers: &'static [u16],
+    /// Π̄(c, δ̄; μ) rows.
+    pub potential: &'static [(u64, f64)],
+    /// ∂p̄/∂r at |ζ| = 1: (n, rows of the coefficient of cos nθ).
+    pub slope: &'static [(u16, &'static [(u64, f64)])],
+}
+
+/// ā at which the pull-off trace starts, as for the exact solution
+/// (`exact::branch`): between the circle's neutral points ā³ = 12 (mode 4,
+/// where the pull-off sits at ρ = 1) and ā³ = 20 (mode 6), so that the trace
+/// follows the near-elliptic arm that carries the pull-off. Each mode's
+/// imperfect bifurcation splits the family for ρ < 1 (docs/exact.md), and
+/// an arm traced from a larger contact folds back before reaching it.
+pub const TRACE_START_A: f64 = 2.6;
+
+/// Where the family's solves stop trusting the branch: ρ below this is not
+/// supported (the family was measured down to 0.5).
+pub const RHO_MIN: f64 = 0.3;
+
+/// One member of the family, chosen at run time by K.
+#[derive(Clone, Copy, Debug)]
+pub struct Conformal {
+    tables: &'static Tables,
+    decoded: &'static Decoded,
+}
+
+/// A member's tables decoded for evaluation (once per process).
+#[derive(Debug)]
+struct Decoded {
+    potential: poly::Decoded,
+    slope: Vec<(u16, poly::Decoded)>,
+}
+
+static DECODED: [std::sync::OnceLock<Decoded>; poly::MAX_UNKNOWNS - 1] =
+    [const { std::sync::OnceLock::new() }; poly::MAX_UNKNOWNS - 1];
+
+/// A state of a `conformal:K` model.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ConformalState {
+    /// The model, `conformal:K`.
+    pub model: String,
+    /// ρ.
+    pub rho: f64,
+    /// ā = w(1).
+    pub a_bar: f64,
+    /// b̄ = |w(i)|.
+    pub b_bar: f64,
+    /// s = b̄/ā.
+    pub s: f64,
+    /// δ̄.
+    pub delta_bar: f64,
+    /// F̄ = ∂Π̄/∂δ̄.
+    pub force_bar: f64,
+    /// The map coefficients c₁ … c_K.
+    pub coefficients: Vec<f64>,
+    /// max |∂p̄/∂ν − 1| on the contour: the defect of (3)₂ the Ritz closure leaves.
+    pub bc_defect: f64,
+    /// Stable under displacement control (∂²Π̄/∂c² positive definite).
+    pub stable_displacement: bool,
+    /// Stable under load control (the Hessian in (c, δ̄) of Π̄ − F̄δ̄ positive definite).
+    pub stable_load: bool,
+    /// Contour modes n (cos nθ) that are unstable under displacement
+    /// control: the dominant mode of each negative eigenvector.
+    pub unstable_modes: Vec<u32>,
+}
+
+/// The control of a state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Control {
+    /// Given δ̄.
+    Delta(f64),
+    /// Given F̄.
+    Force(f64),
+    /// Given ā.
+    Size(f64),
+}
+
+impl Conformal {
+    /// The member with K map coefficients, if it was generated.
+    pub fn new(terms: usize) -> Result<Conformal> {
+        crate::generated::conformal::MEMBERS
+            .iter()
+            .find(|t| t.terms == terms && (1..poly::MAX_UNKNOWNS).contains(&t.terms))
+            .map(|tables| Conformal {
+                tables,
+                decoded: DECODED[tables.terms - 1].get_or_init(|| Decoded {
+                    potential: poly::Decoded::new(tables.potential, tables.terms),
+                    slope: tables
+                        .slope
+                        .iter()
+                        .map(|(n, rows)| (*n, poly::Decoded::new(rows, tables.terms)))
+                        .collect(),
+                }),
+            })
+            .ok_or(Error::OutOfRange {
+                name: "K of conformal:K",
+                value: terms as f64,
+                range: "1 ..= 8",
+            })
+    }
+
+    /// Parse `conformal:K`.
+    pub fn parse(name: &str) -> Option<std::result::Result<Conformal, String>> {
+        let k = name
+            .strip_prefix(crate::generated::conformal::FAMILY)?
+            .strip_prefix(':')?;
+        Some(
+            k.parse::<usize>()
+                .ok()
+                .and_then(|k| Conformal::new(k).ok())
+                .ok_or_else(|| format!("{name}: K must be a whole number from 1 to 8")),
+        )
+    }
+
+    /// K.
+    pub fn terms(&self) -> usize {
+        self.tables.terms
+    }
+
+    /// `conformal:K`.
+    pub fn name(&self) -> String {
+        format!("{}:{}", crate::generated::conformal::FAMILY, self.terms())
+    }
+
+    /// Π̄ with its gradient and Hessian in x = (c, δ̄) at ρ.
+    pub fn potential(&self, x: &DVector<f64>, rho: f64) -> poly::Second {
+        self.potential_to(x, rho, 2)
+    }
+
+    /// Π̄ with its derivatives up to `order` (0, 1 or 2).
+    pub fn potential_to(&self, x: &DVector<f64>, rho: f64, order: u8) -> poly::Second {
+        let k = self.terms();
+        poly::evaluate(
+            &self.decoded.potential,
+            &x.as_slice()[..k],
+            x[k],
+            1.0 / rho,
+            order,
+        )
+    }
+
+    /// The residuals ∇_c Π̄ and their Jacobian in (c, δ̄) (K × (K + 1)), and
+    /// the gradient of F̄ = ∂Π̄/∂δ̄ with F̄ itself.
+    fn equations(&self, x: &DVector<f64>, rho: f64) -> Equations {
+        let e = self.potential(x, rho);
+        let (k, n) = (self.terms(), self.terms() + 1);
+        Equations {
+            r: DVector::from_fn(k, |i, _| e.grad[i]),
+            j: DMatrix::from_fn(k, n, |i, j| e.hess[i][j]),
+            force: e.grad[k],
+            force_grad: DVector::from_fn(n, |j, _| e.hess[k][j]),
+            scale: 1.0 + x.rows(0, k).amax().powi(7),
+        }
+    }
+
+    /// w(ζ) and w′(ζ) at a complex ζ = (re, im).
+    fn map(&self, c: &[f64], z: (f64, f64)) -> ((f64, f64), (f64, f64)) {
+        let mul = |a: (f64, f64), b: (f64, f64)| (a.0 * b.0 - a.1 * b.1, a.0 * b.1 + a.1 * b.0);
+        let (mut w, mut dw) = ((0.0, 0.0), (0.0, 0.0));
+        for (&ck, &n) in c.iter().zip(self.tables.powers) {
+            let mut p = (1.0, 0.0); // ζ^(n−1)
+            for _ in 1..n {
+                p = mul(p, z);
+            }
+            let zn = mul(p, z);
+            w = (w.0 + ck * zn.0, w.1 + ck * zn.1);
+            dw = (dw.0 + n as f64 * ck * p.0, dw.1 + n as f64 * ck * p.1);
+        }
+        (w, dw)
+    }
+
+    /// ā = |w(1)| and b̄ = |w(i)|.
+    pub fn semi_axes(&self, c: &[f64]) -> (f64, f64) {
+        let (w1, _) = self.map(c, (1.0, 0.0));
+        let (wi, _) = self.map(c, (0.0, 1.0));
+        (w1.0.hypot(w1.1), wi.0.hypot(wi.1))
+    }
+
+    /// The contour X(θ), Y(θ) at `points` angles over the full turn.
+    pub fn contour(&self, c: &[f64], points: usize) -> Vec<(f64, f64)> {
+        (0..points)
+            .map(|j| {
+                let t = 2.0 * std::f64::consts::PI * j as f64 / points as f64;
+                self.map(c, (t.cos(), t.sin())).0
+            })
+            .collect()
+    }
+
+    /// The boundary slope's cosine coefficients g_n at x: ∂p̄/∂r at
+    /// |ζ| = 1 is Σ g_n cos(nθ).
+    fn slope_coefficients(&self, x: &DVector<f64>, rho: f64) -> Vec<(f64, f64)> {
+        let k = self.terms();
+        let c = &x.as_slice()[..k];
+        self.decoded
+            .slope
+            .iter()
+            .map(|(n, d)| (*n as f64, poly::evaluate(d, c, x[k], 1.0 / rho, 0).value))
+            .collect()
+    }
+
+    /// ∂p̄/∂ν on the contour at the angles `thetas` of the disk, in units of
+    /// √(2mΔγ) (1 where (3)₂ holds).
+    pub fn normal_derivative(&self, x: &DVector<f64>, rho: f64, thetas: &[f64]) -> Vec<f64> {
+        let g = self.slope_coefficients(x, rho);
+        let c = &x.as_slice()[..self.terms()];
+        thetas
+            .iter()
+            .map(|&t| {
+                let slope: f64 = g.iter().map(|(n, gn)| gn * (n * t).cos()).sum();
+                let (_, dw) = self.map(c, (t.cos(), t.sin()));
+                slope / dw.0.hypot(dw.1)
+            })
+            .collect()
+    }
+
+    /// max |∂p̄/∂ν − 1| over the contour (sampled at 721 angles of a quarter
+    /// turn, which the two symmetries make the whole contour).
+    pub fn bc_defect(&self, x: &DVector<f64>, rho: f64) -> f64 {
+        let n = 720;
+        let thetas: Vec<f64> = (0..=n)
+            .map(|j| std::f64::consts::FRAC_PI_2 * j as f64 / n as f64)
+            .collect();
+        self.normal_derivative(x, rho, &thetas)
+            .into_iter()
+            .map(|v| (v - 1.0).abs())
+            .fold(0.0, f64::max)
+    }
+
+    /// Fails unless the map is one-to-one on the closed disk: the argument
+    /// of w(e^{iθ}) must increase strictly with θ (a starlike contour, then
+    /// the map is univalent by the argument principle); sampled at 2048
+    /// angles.
+    pub fn univalence(&self, c: &[f64]) -> Result<()> {
+        let n = 2048;
+        for j in 0..n {
+            let t = 2.0 * std::f64::consts::PI * (j as f64 + 0.5) / n as f64;
+            let z = (t.cos(), t.sin());
+            let (w, dw) = self.map(c, z);
+            // d arg w/dθ = Re(ζ w′/w)
+            let zdw = (z.0 * dw.0 - z.1 * dw.1, z.0 * dw.1 + z.1 * dw.0);
+            let den = w.0 * w.0 + w.1 * w.1;
+            let rate = (zdw.0 * w.0 + zdw.1 * w.1) / den;
+            if !(rate > 0.0) {
+                return Err(Error::NoState(format!(
+                    "the contour of {} is not one-to-one (or not starlike) at θ = {:.3}: not a contact",
+                    self.name(),
+                    t
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The residuals (∇_c Π̄, control) at x, their Jacobian in (c, δ̄) when
+    /// asked, and the residuals' scale.
+    fn controlled(
+        &self,
+        x: &DVector<f64>,
+        rho: f64,
+        control: Control,
+        jacobian: bool,
+    ) -> (DVector<f64>, Option<DMatrix<f64>>, f64) {
+        let (k, n) = (self.terms(), self.terms() + 1);
+        let e = self.potential_to(x, rho, if jacobian { 2 } else { 1 });
+        let mut r = DVector::from_fn(n, |i, _| e.grad[i]);
+        r[k] = match control {
+            Control::Delta(d) => x[k] - d,
+            Control::Force(f) => e.grad[k] - f,
+            // ā = w(1) = Σ c_k
+            Control::Size(a) => x.rows(0, k).sum() - a,
+        };
+        let j = jacobian.then(|| {
+            let mut j = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
+            match control {
+                Control::Delta(_) => {
+                    j.row_mut(k).fill(0.0);
+                    j[(k, k)] = 1.0;
+                }
+                Control::Force(_) => {}
+                Control::Size(_) => {
+                    j.row_mut(k).fill(1.0);
+                    j[(k, k)] = 0.0;
+                }
+            }
+            j
+        });
+        (r, j, 1.0 + x.rows(0, k).amax().powi(7))
+    }
+
+    /// Damped Newton on (∇_c Π̄ = 0, control) in x = (c, δ̄) at ρ from
+    /// `start`; the step is halved while the residual grows.
+    fn newton(&self, start: &DVector<f64>, rho: f64, control: Control) -> Result<DVector<f64>> {
+        let mut x = start.clone();
+        let mut norm = f64::INFINITY;
+        for _ in 0..40 {
+            let (r, j, scale) = self.controlled(&x, rho, control, true);
+            norm = r.norm() / scale;
+            if !norm.is_finite() {
+                break;
+            }
+            let Some(step) = j.expect("asked for").lu().solve(&r) else {
+                break;
+            };
+            if norm < 1e-13 || (norm < 1e-9 && step.norm() < 1e-13 * (1.0 + x.norm())) {
+                return Ok(x);
+            }
+            let mut t = 1.0;
+            while t >= 1e-3 {
+                let trial = &x - &step * t;
+                let (rt, _, st) = self.controlled(&trial, rho, control, false);
+                let nt = rt.norm() / st;
+                if nt.is_finite() && nt < norm {
+                    break;
+                }
+                t *= 0.5;
+            }
+            if t < 1e-3 {
+                break;
+            }
+            x -= &step * t;
+        }
+        let (a, b) = self.semi_axes(&x.as_slice()[..self.terms()]);
+        Err(Error::NoConvergence {
+            iterations: 40,
+            a_bar: a,
+            s: b / a,
+            residual: norm,
+            context: format!("{} at rho = {}", self.name(), short(rho)),
+        })
+    }
+
+    /// The circle's state at ρ = 1 under `control`: c = (ā, 0, …, 0) with
+    /// ∂Π̄/∂c₁ = 0 solved for δ̄ (a quadratic: Π̄ is quadratic in δ̄), on the
+    /// adhesive root (tensile edge, ∂p̄/∂ν = +1), then Newton on the control.
+    fn circle(&self, control: Control) -> Result<DVector<f64>> {
+        let k = self.terms();
+        let at = |a: f64| -> Option<DVector<f64>> {
+            let x = |d: f64| {
+                let mut v = DVector::zeros(k + 1);
+                v[0] = a;
+                v[k] = d;
+                v
+            };
+            // r(δ̄) = r0 + q1 δ̄ + q2 δ̄²
+            let e0 = self.potential_to(&x(0.0), 1.0, 2);
+            let (r0, q1) = (e0.grad[0], e0.hess[0][k]);
+            let q2 = self.potential_to(&x(1.0), 1.0, 1).grad[0] - r0 - q1;
+            let disc = q1 * q1 - 4.0 * q2 * r0;
+            if q2 == 0.0 || disc < 0.0 {
+                return None;
+            }
+            [
+                (-q1 - disc.sqrt()) / (2.0 * q2),
+                (-q1 + disc.sqrt()) / (2.0 * q2),
+            ]
+            .into_iter()
+            .map(x)
+            .find(|v| self.normal_derivative(v, 1.0, &[0.0])[0] > 0.0)
+        };
+        let value = |v: &DVector<f64>| match control {
+            Control::Delta(_) => v[k],
+            Control::Force(_) => self.potential_to(v, 1.0, 1).grad[k],
+            Control::Size(_) => v[0],
+        };
+        let target = match control {
+            Control::Delta(d) => d,
+            Control::Force(f) => f,
+            Control::Size(a) => return at(a).ok_or_else(|| no_circle(a)),
+        };
+        // the circle's branch is explicit in ā: scan it from large ā down;
+        // the first crossing is the stable state
+        let mut prev: Option<(f64, f64)> = None;
+        let mut a = 16.0;
+        while a > 0.2 {
+            if let Some(v) = at(a) {
+                let f = value(&v) - target;
+                if let Some((a0, f0)) = prev {
+                    if f0 * f <= 0.0 {
+                        let a_lin = a0 + (a - a0) * f0 / (f0 - f);
+                        let start = at(a_lin).unwrap_or(v);
+                        return self.newton(&start, 1.0, control);
+                    }
+                }
+                prev = Some((a, f));
+            }
+            a *= 0.97;
+        }
+        Err(Error::NoState(format!(
+            "{} has no adhesive circular state at that control for rho = 1",
+            self.name()
+        )))
+    }
+
+    /// Continue a state from ρ = 1 to `rho` at fixed control, in steps of
+    /// μ = 1/ρ that halve on failure.
+    fn continue_in_rho(
+        &self,
+        x1: DVector<f64>,
+        rho: f64,
+        control: Control,
+    ) -> Result<DVector<f64>> {
+        let (mut x, mut rho_now) = (x1, 1.0f64);
+        let mut step = 0.05f64;
+        while rho_now > rho {
+            let next = (rho_now - step).max(rho);
+            match self.newton(&x, next, control) {
+                Ok(y) if self.univalence(&y.as_slice()[..self.terms()]).is_ok() => {
+                    x = y;
+                    rho_now = next;
+                    step = (step * 1.5).min(0.05);
+                }
+                Ok(_) | Err(_) if step > 1e-4 => step *= 0.5,
+                Ok(y) => {
+                    self.univalence(&y.as_slice()[..self.terms()])?;
+                }
+                Err(e) => return Err(e),
+            }
+        }
+        Ok(x)
+    }
+
+    /// The state at `rho` under `control`.
+    pub fn solve(&self, rho: f64, control: Control) -> Result<ConformalState> {
+        let rho = check_rho(rho)?;
+        let x1 = self.circle(control)?;
+        let x = self.continue_in_rho(x1, rho, control)?;
+        self.state(&x, rho)
+    }
+
+    /// The zero-force state at `rho`.
+    pub fn zero_force(&self, rho: f64) -> Result<ConformalState> {
+        self.solve(rho, Control::Force(0.0))
+    }
+
+    /// The pull-off at `rho` under `control`: the first extremum of F̄
+    /// (load) or δ̄ (displacement) along the branch traced from
+    /// ā = [`TRACE_START_A`] towards smaller contacts.
+    pub fn pull_off(
+        &self,
+        rho: f64,
+        control: PullOffControl,
+    ) -> Result<(ConformalState, Vec<Extremum>)> {
+        let rho = check_rho(rho)?;
+        let start = self.solve(rho, Control::Size(TRACE_START_A))?;
+        let mut x = DVector::from_vec(start.coefficients.clone());
+        x = x.push(start.delta_bar);
+        let (found, folds) = trace::to_extremum(self, &x, rho, control)?;
+        Ok((self.state(&found, rho)?, folds))
+    }
+
+    /// The state record at x, with its checks.
+    pub fn state(&self, x: &DVector<f64>, rho: f64) -> Result<ConformalState> {
+        let k = self.terms();
+        let c = &x.as_slice()[..k];
+        self.univalence(c)?;
+        let e = self.potential(x, rho);
+        let (a, b) = self.semi_axes(c);
+        let n = k + 1;
+        let h = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
+        let hcc = h.view((0, 0), (k, k)).into_owned();
+        let (stable_d, modes) = self.modes(&hcc, rho);
+        let stable_l = positive_definite(&h);
+        let force = e.grad[k];
+        let out = ConformalState {
+            model: self.name(),
+            rho,
+            a_bar: a,
+            b_bar: b,
+            s: b / a,
+            delta_bar: x[k],
+            force_bar: force,
+            coefficients: c.to_vec(),
+            bc_defect: self.bc_defect(x, rho),
+            stable_displacement: stable_d,
+            stable_load: stable_l,
+            unstable_modes: modes,
+        };
+        if ![a, b, x[k], force, out.bc_defect]
+            .iter()
+            .all(|v| v.is_finite())
+        {
+            return Err(Error::NoState(format!(
+                "{} gives no finite state at rho = {}",
+                self.name(),
+                short(rho)
+            )));
+        }
+        Ok(out)
+    }
+
+    /// Stability under displacement control and the contour modes of the
+    /// negative eigenvectors of ∂²Π̄/∂c²: a perturbation δc changes the
+    /// contour's radius by Re(δw(e^{iθ}) e^{−iθ}) = Σ δc_k cos((n_k − 1)θ),
+    /// so the mode of c_k is n_k − 1; each negative eigenvector reports the
+    /// mode of its largest component.
+    fn modes(&self, hcc: &DMatrix<f64>, _rho: f64) -> (bool, Vec<u32>) {
+        let eig = hcc.clone().symmetric_eigen();
+        let top = eig.eigenvalues.amax().max(1e-300);
+        let mut modes = Vec::new();
+        for (i, &l) in eig.eigenvalues.iter().enumerate() {
+            if l <= 1e-9 * top {
+                let v = eig.eigenvectors.column(i);
+                let kmax = v.iamax();
+                modes.push(self.tables.powers[kmax] as u32 - 1);
+            }
+        }
+        modes.sort_unstable();
+        (modes.is_empty(), modes)
+    }
+}
+
+fn positive_definite(h: &DMatrix<f64>) -> bool {
+    let eig = h.clone().symmetric_eigen();
+    let top = eig.eigenvalues.amax().max(1e-300);
+    eig.eigenvalues.iter().all(|&l| l > 1e-9 * top)
+}
+
+fn no_circle(a: f64) -> Error {
+    Error::NoState(format!(
+        "no adhesive circular state at a_bar = {}",
+        short(a)
+    ))
+}
+
+fn check_rho(rho: f64) -> Result<f64> {
+    let rho = check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+    if rho < RHO_MIN {
+        return Err(Error::Unsupported {
+            name: "rho",
+            value: rho,
+            supported: "[0.3, 1] for conformal:K",
+        });
+    }
+    Ok(rho)
+}
+
+/// The residuals and what goes with them at one point.
+struct Equations {
+    r: DVector<f64>,
+    j: DMatrix<f64>,
+    force: f64,
+    force_grad: DVector<f64>,
+    scale: f64,
+}
