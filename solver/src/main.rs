@@ -3,6 +3,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
+use thinjkr::conformal::{self as family, Conformal};
 use thinjkr::curve::trace;
 use thinjkr::units::Cylinders;
 use thinjkr::{Contact, FoldBasis, ModelId, PullOff, State};
@@ -10,18 +11,33 @@ use thinjkr::{Contact, FoldBasis, ModelId, PullOff, State};
 fn parse_model(s: &str) -> Result<ModelChoice, String> {
     if s == "exact" {
         Ok(ModelChoice::Exact)
+    } else if let Some(c) = Conformal::parse(s) {
+        c.map(ModelChoice::Conformal)
     } else {
-        s.parse().map(ModelChoice::Approx)
+        s.parse()
+            .map(ModelChoice::Approx)
+            .map_err(|e: String| format!("{e}, conformal:K (K = 1 ..= 8), exact"))
     }
 }
 
-/// A model of the ellipse, or the exact solution of (2)-(3).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A model of the ellipse, a member of the conformal family, or the exact
+/// solution of (2)-(3).
+#[derive(Clone, Copy, Debug)]
 enum ModelChoice {
     Approx(ModelId),
+    Conformal(Conformal),
     Exact,
 }
 
+fn not_for_conformal(m: &Conformal, what: &str) -> thinjkr::Error {
+    thinjkr::Error::Unavailable {
+        model: "conformal:K",
+        what: format!("{what} for {}", m.name()),
+        why: "the conformal family is solved by solve, pull-off and zero-force so far",
+    }
+}
+
+mod conformal_cli;
 mod exact_cli;
 
 /// Approximate JKR contact of thin incompressible coatings on rigid cylinders
@@ -48,7 +64,7 @@ enum Command {
         /// Radii ratio ρ = R2/R1 in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
+        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelChoice,
         /// Approach δ̄.
@@ -73,7 +89,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
+        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelChoice,
         /// Control.
@@ -115,7 +131,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
+        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelChoice,
         /// Print JSON.
@@ -130,7 +146,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, or exact (the free-boundary problem itself).
+        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelChoice,
         /// Number of points, 2 ..= 100000.
@@ -148,6 +164,12 @@ enum Command {
         /// Model: max (the paper's, default), apexes, energy, apex45.
         #[arg(long, default_value = "max")]
         model: ModelId,
+    },
+    /// The models the solver has, one line each.
+    Models {
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
     },
     /// Draw the paper's Figures 2–9 and the crossing-angle figure as SVG.
     #[command(after_help = "Example:\n  thinjkr figures --out docs/figures")]
@@ -318,6 +340,19 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                         j,
                     );
                 }
+                ModelChoice::Conformal(m) => {
+                    let control = match (delta, force, a) {
+                        (Some(d), _, _) => family::Control::Delta(d),
+                        (_, Some(f), _) => family::Control::Force(f),
+                        (_, _, Some(a)) => family::Control::Size(a),
+                        _ => {
+                            return Err(thinjkr::Error::Usage(
+                                "give one of --delta, --force, --a".into(),
+                            ))
+                        }
+                    };
+                    return conformal_cli::solve(&m, rho, control, j);
+                }
                 ModelChoice::Approx(m) => m,
             };
             let c = Contact::with_model(model, rho)?;
@@ -368,6 +403,13 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                         what: "pull-off under displacement control".into(),
                         why: "only the load-controlled pull-off of the exact family is located",
                     })
+                }
+                ModelChoice::Conformal(m) => {
+                    let control = match control {
+                        Control::Load => family::PullOffControl::Load,
+                        Control::Displacement => family::PullOffControl::Displacement,
+                    };
+                    return conformal_cli::pull_off(&m, rho, control, j);
                 }
                 ModelChoice::Approx(m) => m,
             };
@@ -529,6 +571,11 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
         )?,
         Some(Command::ZeroForce {
             rho,
+            model: ModelChoice::Conformal(m),
+            json: j,
+        }) => conformal_cli::zero_force(&m, rho, j)?,
+        Some(Command::ZeroForce {
+            rho,
             model: ModelChoice::Approx(model),
             json: j,
         }) => emit(
@@ -550,6 +597,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                         why: "use `thinjkr exact solve` at the loads wanted",
                     })
                 }
+                ModelChoice::Conformal(m) => return Err(not_for_conformal(&m, "curve command")),
                 ModelChoice::Approx(m) => m,
             };
             let c = Contact::with_model(model, rho)?;
@@ -575,6 +623,30 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                             flag(st.stability.load)
                         );
                     }
+                }
+            }
+        }
+        Some(Command::Models { json: j }) => {
+            let mut rows: Vec<(String, String)> = ModelId::ALL
+                .iter()
+                .map(|m| (m.name().to_string(), m.model().info().title.to_string()))
+                .collect();
+            for m in family::members() {
+                rows.push((m.name(), family::title().to_string()));
+            }
+            rows.push((
+                "exact".into(),
+                "the free-boundary problem (2)-(3) itself (boundary integral equation on a contour series)".into(),
+            ));
+            if j {
+                let v: Vec<_> = rows
+                    .iter()
+                    .map(|(n, t)| serde_json::json!({ "name": n, "description": t }))
+                    .collect();
+                println!("{}", serde_json::json!({ "models": v }));
+            } else {
+                for (n, t) in rows {
+                    println!("{n:<13} {t}");
                 }
             }
         }

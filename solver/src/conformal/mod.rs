@@ -115,6 +115,18 @@ pub enum Control {
     Size(f64),
 }
 
+/// Every generated member, by K.
+pub fn members() -> impl Iterator<Item = Conformal> {
+    crate::generated::conformal::MEMBERS
+        .iter()
+        .filter_map(|t| Conformal::new(t.terms).ok())
+}
+
+/// The family in one line.
+pub fn title() -> &'static str {
+    crate::generated::conformal::TITLE
+}
+
 impl Conformal {
     /// The member with K map coefficients, if it was generated.
     pub fn new(terms: usize) -> Result<Conformal> {
@@ -462,6 +474,11 @@ impl Conformal {
     /// The state at `rho` under `control`.
     pub fn solve(&self, rho: f64, control: Control) -> Result<ConformalState> {
         let rho = check_rho(rho)?;
+        match control {
+            Control::Delta(d) => check_range("delta", d, true, "finite").map(|_| ())?,
+            Control::Force(f) => check_range("force", f, true, "finite").map(|_| ())?,
+            Control::Size(a) => check_range("a", a, a > 0.0, "(0, inf)").map(|_| ())?,
+        }
         let x1 = self.circle(control)?;
         let x = self.continue_in_rho(x1, rho, control)?;
         self.state(&x, rho)

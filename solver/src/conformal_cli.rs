@@ -1,0 +1,93 @@
+//! The command line for the family `conformal:K`: states at given δ̄, F̄ or
+//! ā, pull-off under either control, zero force, printed for a person or as
+//! JSON.
+//!
+//! Owns: the printing of conformal states. May use: `thinjkr::conformal`.
+
+use thinjkr::conformal::{Conformal, ConformalState, Control, Extremum, PullOffControl};
+
+fn modes(st: &ConformalState) -> String {
+    if st.unstable_modes.is_empty() {
+        String::new()
+    } else {
+        let m: Vec<String> = st
+            .unstable_modes
+            .iter()
+            .map(|n| format!("cos {n}θ"))
+            .collect();
+        format!(
+            "; unstable contour modes under displacement control: {}",
+            m.join(", ")
+        )
+    }
+}
+
+/// One state for a person.
+pub fn show(label: &str, st: &ConformalState) {
+    let word = |b: bool| if b { "stable" } else { "unstable" };
+    println!(
+        "{label}: model {}, a = {:.6}, b = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, max |dp/dnu - 1| on the contour = {:.1e} [displacement control: {}, load control: {}{}]",
+        st.model,
+        st.a_bar,
+        st.b_bar,
+        st.s,
+        st.delta_bar,
+        st.force_bar,
+        st.bc_defect,
+        word(st.stable_displacement),
+        word(st.stable_load),
+        modes(st)
+    );
+    let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();
+    println!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
+}
+
+fn emit(label: &str, st: &ConformalState, json: bool) {
+    if json {
+        println!("{}", serde_json::json!({ "state": st }));
+    } else {
+        show(label, st);
+    }
+}
+
+/// `solve --model conformal:K`.
+pub fn solve(m: &Conformal, rho: f64, control: Control, json: bool) -> thinjkr::Result<()> {
+    emit("state", &m.solve(rho, control)?, json);
+    Ok(())
+}
+
+/// `zero-force --model conformal:K`.
+pub fn zero_force(m: &Conformal, rho: f64, json: bool) -> thinjkr::Result<()> {
+    emit("zero force", &m.zero_force(rho)?, json);
+    Ok(())
+}
+
+/// `pull-off --model conformal:K`.
+pub fn pull_off(
+    m: &Conformal,
+    rho: f64,
+    control: PullOffControl,
+    json: bool,
+) -> thinjkr::Result<()> {
+    let (st, folds) = m.pull_off(rho, control)?;
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({ "state": st, "folds": folds, "start_a_bar": thinjkr::conformal::TRACE_START_A })
+        );
+        return Ok(());
+    }
+    show("pull-off", &st);
+    let what = match control {
+        PullOffControl::Load => "the first minimum of the force",
+        PullOffControl::Displacement => "the first extremum of the approach",
+    };
+    println!(
+        "  end point: {what} along the branch traced from a = {} (pseudo-arclength in (c, delta))",
+        thinjkr::conformal::TRACE_START_A
+    );
+    for Extremum { a_bar, force_bar } in folds {
+        println!("  passed a fold in a at a = {a_bar:.4}, force = {force_bar:.6}");
+    }
+    Ok(())
+}

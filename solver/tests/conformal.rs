@@ -1,0 +1,156 @@
+//! The family `conformal:K` against what is known independently of it: the
+//! circle's closed form at ρ = 1, the exact solution of (2)–(3) at
+//! ρ = 0.8 (the exact solver, a boundary integral method that shares no
+//! code with the family), and the exact solver's per-mode stability.
+
+use thinjkr::conformal::{Conformal, Control, PullOffControl};
+use thinjkr::exact::{self, branch::ExactControl};
+use thinjkr::Error;
+
+/// At ρ = 1 every member stays on the circle, whose pull-off under load
+/// control is F̄ = −3π/2 at ā³ = 12 (Section 4, derived as (22)–(25)).
+#[test]
+fn every_member_pulls_off_at_minus_three_halves_pi_on_the_circle() {
+    for k in [1, 2, 3, 5, 8] {
+        let (st, _) = Conformal::new(k)
+            .unwrap()
+            .pull_off(1.0, PullOffControl::Load)
+            .unwrap();
+        assert!(
+            (st.force_bar + 1.5 * std::f64::consts::PI).abs() < 1e-12,
+            "K = {k}: {}",
+            st.force_bar
+        );
+        assert!(
+            (st.a_bar - 12f64.cbrt()).abs() < 1e-7,
+            "K = {k}: {}",
+            st.a_bar
+        );
+        assert!(st.coefficients[1..].iter().all(|c| c.abs() < 1e-12));
+        assert!(st.bc_defect < 1e-12, "the circle satisfies (3)₂ exactly");
+    }
+}
+
+/// conformal:8 reproduces the exact solution at ρ = 0.8: the pull-off to
+/// 1e-5 in F̄, zero force and F̄ = 10 to 1e-6 in ā.
+#[test]
+fn conformal_8_agrees_with_the_exact_solution_at_rho_0_8() {
+    let m = Conformal::new(8).unwrap();
+    let (exact_po, _) = exact::pull_off_resolved(0.8).unwrap();
+    let (po, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
+    let rel = |x: f64, y: f64| ((x - y) / y).abs();
+    assert!(
+        rel(po.force_bar, exact_po.force_bar) < 1e-5,
+        "pull-off {} vs exact {}",
+        po.force_bar,
+        exact_po.force_bar
+    );
+    for (control, exact_control) in [
+        (Control::Force(0.0), ExactControl::Force(0.0)),
+        (Control::Force(10.0), ExactControl::Force(10.0)),
+    ] {
+        let e = exact::at_resolved(0.8, exact_control).unwrap();
+        let c = m.solve(0.8, control).unwrap();
+        assert!(
+            rel(c.a_bar, e.a_bar) < 1e-6,
+            "{control:?}: a {} vs exact {}",
+            c.a_bar,
+            e.a_bar
+        );
+        assert!(
+            rel(c.s, e.s) < 1e-6,
+            "{control:?}: s {} vs exact {}",
+            c.s,
+            e.s
+        );
+    }
+}
+
+/// The error against the exact zero-force state at ρ = 0.8 falls with
+/// every pair of added terms, and so does the defect of (3)₂.
+#[test]
+fn the_family_converges_to_the_exact_zero_force_state() {
+    let e = exact::at_resolved(0.8, ExactControl::Force(0.0)).unwrap();
+    let mut last = (f64::INFINITY, f64::INFINITY);
+    for k in [2, 4, 6, 8] {
+        let st = Conformal::new(k).unwrap().zero_force(0.8).unwrap();
+        let err = ((st.a_bar - e.a_bar) / e.a_bar).abs();
+        assert!(
+            err < last.0 / 5.0,
+            "K = {k}: error {err:.2e} after {:.2e}",
+            last.0
+        );
+        assert!(
+            st.bc_defect < last.1 / 5.0,
+            "K = {k}: defect {:.2e}",
+            st.bc_defect
+        );
+        last = (err, st.bc_defect);
+    }
+}
+
+/// Per-mode stability under displacement control agrees with the exact
+/// solver's second variation: at ρ = 1 on both sides of neutral points
+/// ā³ = 4(n − 1), and at the zero-force state at ρ = 0.8 (modes up to 14,
+/// the highest conformal:8 carries).
+#[test]
+fn unstable_modes_agree_with_the_exact_solver() {
+    let m = Conformal::new(8).unwrap();
+    let exact_modes = |st: &exact::ExactState| -> Vec<u32> {
+        let mut v: Vec<u32> = st
+            .stability
+            .displacement
+            .iter()
+            .map(|u| u.n as u32)
+            .filter(|&n| n <= 14)
+            .collect();
+        v.sort_unstable();
+        v
+    };
+    let ex1 = exact::Exact::new(1.0, exact::Truncation::default()).unwrap();
+    for n in [4.0f64, 6.0, 10.0] {
+        for side in [0.97, 1.03] {
+            let a = (4.0 * (n - 1.0)).cbrt() * side;
+            let c = m.solve(1.0, Control::Size(a)).unwrap();
+            let e = ex1.from_circle(a).unwrap();
+            assert_eq!(c.unstable_modes, exact_modes(&e), "rho = 1, a = {a}");
+            assert_eq!(c.unstable_modes.contains(&(n as u32)), side < 1.0);
+        }
+    }
+    let e = exact::at_resolved(0.8, ExactControl::Force(0.0)).unwrap();
+    let c = m.zero_force(0.8).unwrap();
+    assert_eq!(c.unstable_modes, exact_modes(&e), "zero force at rho = 0.8");
+}
+
+/// A map that folds over itself is not a contact.
+#[test]
+fn a_map_that_is_not_one_to_one_is_rejected() {
+    let m = Conformal::new(2).unwrap();
+    // w′(ζ) = 1 + 1.5ζ² vanishes at |ζ|² = 2/3 inside the disk
+    let err = m.univalence(&[1.0, 0.5]).unwrap_err();
+    assert!(
+        matches!(err, Error::NoState(ref s) if s.contains("one-to-one")),
+        "{err}"
+    );
+    assert!(m.univalence(&[1.0, 0.1]).is_ok());
+}
+
+/// Bad input names the parameter and its range.
+#[test]
+fn bad_input_is_a_typed_error() {
+    assert!(matches!(Conformal::new(0), Err(Error::OutOfRange { .. })));
+    assert!(matches!(Conformal::new(9), Err(Error::OutOfRange { .. })));
+    let m = Conformal::new(3).unwrap();
+    for rho in [f64::NAN, 0.0, -1.0, 1.5] {
+        assert!(matches!(
+            m.solve(rho, Control::Delta(1.0)),
+            Err(Error::OutOfRange { name: "rho", .. })
+        ));
+    }
+    assert!(matches!(
+        m.solve(0.1, Control::Delta(1.0)),
+        Err(Error::Unsupported { name: "rho", .. })
+    ));
+    assert!(Conformal::parse("conformal:x").unwrap().is_err());
+    assert!(Conformal::parse("max").is_none());
+}
