@@ -156,7 +156,7 @@ fn terms_of(p: &Poly) -> impl Iterator<Item = (Vec<u16>, Rational)> + '_ {
 }
 
 /// ∂p/∂(variable `v`), term by term.
-fn derivative(p: &Poly, v: usize) -> Poly {
+pub fn derivative(p: &Poly, v: usize) -> Poly {
     from_terms(
         p,
         terms_of(p).filter(|(e, _)| e[v] > 0).map(|(mut e, c)| {
@@ -411,5 +411,70 @@ impl ConformalDerivation {
             }
         }
         (self.potential.nterms(), hess)
+    }
+}
+
+impl ConformalDerivation {
+    /// ∂Π̄/∂(unknown i) as a polynomial (i < K: c_{i+1}; i = K: δ̄), Π̄
+    /// including its factor π (returned as Π̄/π: multiply by π).
+    pub fn potential_derivative(&self, unknowns: &[usize]) -> Poly {
+        let (cs, d, _) = self.layout();
+        unknowns.iter().fold(self.potential.clone(), |p, &i| {
+            derivative(&p, if i < cs.len() { cs[i] } else { d })
+        })
+    }
+
+    /// A polynomial of this derivation evaluated at (c, δ̄, μ) given as
+    /// f64 (taken exactly) in 256-bit binary floating point, rounded to
+    /// f64 at the end; with `times_pi` multiplied by π first. Also returns
+    /// the sum of the terms' magnitudes (the scale against which cancellation
+    /// is judged).
+    pub fn evaluate_high_precision(
+        &self,
+        p: &Poly,
+        c: &[f64],
+        dbar: f64,
+        mu: f64,
+        times_pi: bool,
+    ) -> Result<(f64, f64), String> {
+        use astro_float::{BigFloat, Consts, Radix, RoundingMode};
+        let prec = 256;
+        let rm = RoundingMode::ToEven;
+        let mut cc = Consts::new().map_err(|e| format!("{e:?}"))?;
+        let (cs, d, m) = self.layout();
+        let mut total = BigFloat::from_i64(0, prec);
+        let mut magnitude = BigFloat::from_i64(0, prec);
+        for t in p.into_iter() {
+            let num = BigFloat::parse(
+                &t.coefficient.numerator().to_string(),
+                Radix::Dec,
+                prec,
+                rm,
+                &mut cc,
+            );
+            let den = BigFloat::parse(
+                &t.coefficient.denominator().to_string(),
+                Radix::Dec,
+                prec,
+                rm,
+                &mut cc,
+            );
+            let mut v = num.div(&den, prec, rm);
+            let pow = |x: f64, e: u16| BigFloat::from_f64(x, prec).powi(e as usize, prec, rm);
+            for (k, &i) in cs.iter().enumerate() {
+                v = v.mul(&pow(c[k], t.exponents[i]), prec, rm);
+            }
+            v = v.mul(&pow(dbar, t.exponents[d]), prec, rm);
+            v = v.mul(&pow(mu, t.exponents[m]), prec, rm);
+            magnitude = magnitude.add(&v.abs(), prec, rm);
+            total = total.add(&v, prec, rm);
+        }
+        if times_pi {
+            let pi = cc.pi(prec, rm);
+            total = total.mul(&pi, prec, rm);
+            magnitude = magnitude.mul(&pi, prec, rm);
+        }
+        let f = |x: &BigFloat| x.to_string().parse::<f64>().map_err(|e| e.to_string());
+        Ok((f(&total)?, f(&magnitude)?))
     }
 }

@@ -1,0 +1,216 @@
+//! The generated tables of `conformal:K` against the derivation: Π̄, its
+//! gradient (the residuals and F̄) and its Hessian (their Jacobian) as the
+//! solver evaluates them in f64, against 256-bit evaluations of the symbolic
+//! derivatives, at points across the family's domain (ρ from 0.3 to 1,
+//! small and large contacts, near-circular and strongly shaped maps). And
+//! Π̄ against a quadrature of its definition that uses no polynomial
+//! algebra (the harmonic correction by a discrete Fourier transform), and
+//! K = 1 against the ellipse energy model at s = 1.
+
+use thinjkr::conformal::poly::{evaluate, Decoded};
+use thinjkr::generated::conformal::MEMBERS;
+use thinjkr_derive::conformal::{conformal, derive, ConformalDerivation};
+
+/// Sample points (c scaled from a shape, δ̄, ρ).
+fn points(k: usize) -> Vec<(Vec<f64>, f64, f64)> {
+    let shape = |a: f64, decay: f64| -> Vec<f64> {
+        (0..k)
+            .map(|j| {
+                if j == 0 {
+                    a
+                } else {
+                    a * decay.powi(j as i32) * if j % 2 == 0 { 1.0 } else { -0.5 }
+                }
+            })
+            .collect()
+    };
+    vec![
+        (shape(2.9, 0.05), 1.44, 0.8),
+        (shape(0.3, 0.1), -5.0, 1.0),
+        (shape(8.0, 0.02), 20.0, 0.3),
+        (shape(2.55, 0.15), 0.2, 0.5),
+    ]
+}
+
+/// The worst error of the f64 evaluation, relative to max(|value|, 1e-3 M)
+/// with M the sum of the terms' magnitudes (as the generator's check of the
+/// ellipse models measures it).
+#[test]
+fn generated_tables_match_the_derivation_to_round_off() {
+    let mut worst_all = 0.0f64;
+    for k in 1..=8 {
+        let d = derive(&conformal(k)).expect("derives");
+        let table = Decoded::new(MEMBERS[k - 1].potential, k);
+        let mut worst = 0.0f64;
+        for (c, dbar, rho) in points(k) {
+            let mu = 1.0 / rho;
+            let got = evaluate(&table, &c, dbar, mu, 2);
+            let mut check = |got: f64, unknowns: &[usize]| {
+                let p = d.potential_derivative(unknowns);
+                let (want, mag) = d.evaluate_high_precision(&p, &c, dbar, mu, true).unwrap();
+                let err = (got - want).abs() / want.abs().max(1e-3 * mag).max(1e-300);
+                worst = worst.max(err);
+                assert!(err < 1e-12, "K = {k}, {unknowns:?} at c = {c:?}, dbar = {dbar}, rho = {rho}: {got} vs {want} (error {err:.1e})");
+            };
+            check(got.value, &[]);
+            for i in 0..=k {
+                check(got.grad[i], &[i]);
+                for j in i..=k {
+                    check(got.hess[i][j], &[i, j]);
+                    assert_eq!(got.hess[i][j], got.hess[j][i]);
+                }
+            }
+        }
+        eprintln!("conformal:{k}: worst relative error {worst:.1e}");
+        worst_all = worst_all.max(worst);
+    }
+    assert!(worst_all > 0.0, "the comparison compared something");
+}
+
+/// Π̄ = ½∫ω p̄(δ̄ − φ̄) dA − ½|ω| by quadrature over the disk (Gauss–Legendre
+/// in r, trapezoid in θ, both exact for the polynomial degrees involved),
+/// with p̄ = P + h and h the harmonic function equal to −P on |ζ| = 1 built
+/// from P's discrete Fourier coefficients on the circle.
+#[test]
+fn potential_equals_a_quadrature_of_its_definition() {
+    use std::f64::consts::PI;
+    for k in [1, 2, 3, 5] {
+        let table = Decoded::new(MEMBERS[k - 1].potential, k);
+        for (c, dbar, rho) in points(k) {
+            let mu = 1.0 / rho;
+            let w = |r: f64, t: f64| -> ((f64, f64), f64) {
+                // w(ζ) and |w′(ζ)|² at ζ = r e^{it}
+                let (mut x, mut y, mut dx, mut dy) = (0.0, 0.0, 0.0, 0.0);
+                for (j, &cj) in c.iter().enumerate() {
+                    let n = (2 * j + 1) as f64;
+                    x += cj * r.powf(n) * (n * t).cos();
+                    y += cj * r.powf(n) * (n * t).sin();
+                    dx += cj * n * r.powf(n - 1.0) * ((n - 1.0) * t).cos();
+                    dy += cj * n * r.powf(n - 1.0) * ((n - 1.0) * t).sin();
+                }
+                ((x, y), dx * dx + dy * dy)
+            };
+            let particular = |x: f64, y: f64| {
+                x.powi(4) / 24.0 + mu * y.powi(4) / 24.0 - dbar * (x * x + y * y) / 4.0
+            };
+            let gap = |x: f64, y: f64| x * x / 2.0 + mu * y * y / 2.0;
+            let nt = 256;
+            let thetas: Vec<f64> = (0..nt).map(|j| 2.0 * PI * j as f64 / nt as f64).collect();
+            let boundary: Vec<f64> = thetas
+                .iter()
+                .map(|&t| {
+                    let ((x, y), _) = w(1.0, t);
+                    particular(x, y)
+                })
+                .collect();
+            let modes = 4 * (2 * k - 1) + 1;
+            let fourier: Vec<(f64, f64)> = (0..=modes)
+                .map(|n| {
+                    let (mut a, mut b) = (0.0, 0.0);
+                    for (j, &t) in thetas.iter().enumerate() {
+                        a += boundary[j] * (n as f64 * t).cos();
+                        b += boundary[j] * (n as f64 * t).sin();
+                    }
+                    (a / nt as f64, b / nt as f64)
+                })
+                .collect();
+            let h = |r: f64, t: f64| -> f64 {
+                -fourier
+                    .iter()
+                    .enumerate()
+                    .map(|(n, &(a, b))| {
+                        let m = if n == 0 { 1.0 } else { 2.0 };
+                        m * r.powi(n as i32) * (a * (n as f64 * t).cos() + b * (n as f64 * t).sin())
+                    })
+                    .sum::<f64>()
+            };
+            let (nodes, weights) = gauss_legendre(64);
+            let mut pi_bar = 0.0;
+            for (&u, &wu) in nodes.iter().zip(&weights) {
+                let r = 0.5 * (u + 1.0);
+                for &t in &thetas {
+                    let ((x, y), jac) = w(r, t);
+                    let p = particular(x, y) + h(r, t);
+                    pi_bar += 0.5
+                        * wu
+                        * r
+                        * (2.0 * PI / nt as f64)
+                        * jac
+                        * (0.5 * p * (dbar - gap(x, y)) - 0.5);
+                }
+            }
+            let got = evaluate(&table, &c, dbar, mu, 0).value;
+            let scale = 1.0 + pi_bar.abs();
+            assert!(
+                (got - pi_bar).abs() < 1e-9 * scale,
+                "K = {k}, c = {c:?}: table {got} vs quadrature {pi_bar}"
+            );
+        }
+    }
+}
+
+/// conformal:1 is the circle: its Π̄ is the energy model's Π̄ at s = 1 (a
+/// separate derivation, on the ellipse (7) with the polynomial pressure (5)).
+#[test]
+fn conformal_1_is_the_energy_model_on_the_circle() {
+    use thinjkr_derive::sym::{eval_prec, ex, subs_all};
+    let e = thinjkr_derive::energy::derive(&thinjkr_derive::ansatz::ENERGY).unwrap();
+    let d: ConformalDerivation = derive(&conformal(1)).unwrap();
+    for (a, dbar, rho) in [(2.5, 1.25, 0.8), (0.75, -2.0, 0.5), (4.0, 3.0, 1.0)] {
+        let ellipse = eval_prec(
+            &subs_all(
+                &e.potential,
+                &[
+                    ("s", ex("1")),
+                    ("abar", ex(&a.to_string())),
+                    ("dbar", ex(&dbar.to_string())),
+                    ("rho", ex(&rho.to_string())),
+                ],
+            ),
+            &[],
+            30,
+        )
+        .unwrap();
+        let (circle, _) = d
+            .evaluate_high_precision(&d.potential, &[a], dbar, 1.0 / rho, true)
+            .unwrap();
+        assert!(
+            (ellipse - circle).abs() < 1e-12 * (1.0 + circle.abs()),
+            "{ellipse} vs {circle}"
+        );
+    }
+}
+
+fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
+    let mut x = vec![0.0; n];
+    let mut w = vec![0.0; n];
+    for i in 0..n {
+        let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+        for _ in 0..100 {
+            let (mut p1, mut p2) = (1.0, 0.0);
+            for j in 0..n {
+                let p3 = p2;
+                p2 = p1;
+                p1 = ((2 * j + 1) as f64 * z * p2 - j as f64 * p3) / (j + 1) as f64;
+            }
+            let pp = n as f64 * (z * p1 - p2) / (z * z - 1.0);
+            let dz = p1 / pp;
+            z -= dz;
+            if dz.abs() < 1e-16 {
+                let pp = {
+                    let (mut p1, mut p2) = (1.0, 0.0);
+                    for j in 0..n {
+                        let p3 = p2;
+                        p2 = p1;
+                        p1 = ((2 * j + 1) as f64 * z * p2 - j as f64 * p3) / (j + 1) as f64;
+                    }
+                    n as f64 * (z * p1 - p2) / (z * z - 1.0)
+                };
+                x[i] = z;
+                w[i] = 2.0 / ((1.0 - z * z) * pp * pp);
+                break;
+            }
+        }
+    }
+    (x, w)
+}
