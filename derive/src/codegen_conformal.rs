@@ -199,3 +199,105 @@ pub fn derive_all() -> Result<Vec<ConformalDerivation>, String> {
         .map(|k| conformal::derive(&conformal::conformal(k)))
         .collect()
 }
+
+/// The section of `docs/derivation.md` on the family: its data, the steps
+/// and checks of [`conformal::derive`], Π̄ for K = 1 and K = 2 in full, and
+/// for every K what was derived (sizes of Π̄, its Hessian, the boundary
+/// slope and the generated module).
+pub fn derivation_section(all: &[ConformalDerivation], outputs: &[Output]) -> String {
+    let mut o = String::new();
+    let Some(first) = all.first() else {
+        return o;
+    };
+    let a = &first.ansatz;
+    o.push_str(&format!(
+        "\n## The family `{}:K`\n\n\
+         Beyond the ellipse (7): the contact domain is the image of the unit disk under the odd polynomial map \
+         $w(\\zeta) = \\sum_{{k=1}}^{{K}} c_k \\zeta^{{2k-1}}$ (real $c_k$, so both symmetries of the problem hold), \
+         $\\bar a = w(1)$, $\\bar b = |w(i)|$. In the units (17), (2) reads $\\Delta\\bar p = \\bar\\varphi - \\bar\\delta$ with \
+         $\\bar\\varphi$ = `{}` ($\\mu = 1/\\rho$), and the data give the particular solution $P$ = `{}`. \
+         The pressure is $\\bar p = P + h$ with $h$ harmonic and $h = -P$ on the contour; the closure of (3)₂ is the Ritz \
+         method on $\\bar\\Pi = \\tfrac12\\int_\\omega \\bar p(\\bar\\delta - \\bar\\varphi)\\,dA - \\tfrac12|\\omega|$ (the energy model's \
+         potential, whose constant factors `energy` checks against $U - \\Delta\\gamma|\\omega|$): the state makes $\\bar\\Pi$ \
+         stationary in $c_1 \\dots c_K$ at fixed $\\bar\\delta$, and $\\bar F = \\partial\\bar\\Pi/\\partial\\bar\\delta$.\n\n\
+         Derived with symbolica's polynomials over the rationals (`derive/src/conformal.rs`), each step checked as it is taken \
+         (the derivation fails otherwise):\n\n\
+         1. $\\Delta P = \\bar\\varphi - \\bar\\delta$ (symbolic Laplacian);\n\
+         2. $X + iY = w$, $X - iY = \\bar w$ turn $P$ into a polynomial in $\\zeta, \\bar\\zeta$ (the $i$ cancels: $P$ is even in $Y$);\n\
+         3. on $|\\zeta| = 1$, $\\bar\\zeta = 1/\\zeta$: each term $\\kappa\\zeta^a\\bar\\zeta^b$ of $P$ gets the correction \
+         $-\\kappa\\zeta^{{a-m}}\\bar\\zeta^{{b-m}}$, $m = \\min(a, b)$ (harmonic, equal to the term on the circle); checked: \
+         $\\bar p = 0$ on $|\\zeta| = 1$, and $4\\partial_\\zeta\\partial_{{\\bar\\zeta}}\\bar p = (\\bar\\varphi - \\bar\\delta)|w'|^2$ inside, i.e. (2) on $\\omega$;\n\
+         4. $\\int_\\omega f\\,dA = \\int_{{|\\zeta|<1}} f |w'|^2\\,dA$ and $\\int \\zeta^j\\bar\\zeta^k dA = \\pi\\delta_{{jk}}/(j+1)$ give \
+         $\\bar\\Pi/\\pi$ exactly; checked: $\\partial\\bar\\Pi/\\partial\\bar\\delta = \\int_\\omega\\bar p\\,dA$ computed separately (the force identity);\n\
+         5. the boundary slope $\\partial\\bar p/\\partial r$ at $|\\zeta| = 1$, $\\sum_n g_n \\cos n\\theta$ (checked real), gives \
+         $\\partial\\bar p/\\partial\\nu = (\\partial\\bar p/\\partial r)/|w'|$, whose distance from 1 is the defect of (3)₂ the Ritz closure leaves.\n\n\
+         Beside these, `tests/tests/conformal.rs` holds $\\bar\\Pi$ against a quadrature of its definition whose harmonic \
+         correction comes from a discrete Fourier transform (no polynomial algebra), `conformal:1` against the energy model \
+         at $s = 1$ (the same circle by a separate derivation), and the generated tables against 256-bit evaluations of the \
+         symbolic derivatives; `solver/tests/conformal.rs` holds the solved family against the exact solution.\n",
+        a.family, a.gap, a.particular
+    ));
+    let latex = |p: &Poly| crate::sym::latex(&p.to_expression());
+    o.push_str(&format!(
+        "\n### K = 1 (the circle)\n\n$$\\bar\\Pi/\\pi = {}$$\n",
+        latex(&first.potential)
+    ));
+    if let Some(d2) = all.iter().find(|d| d.ansatz.terms == 2) {
+        o.push_str(
+            "\n### K = 2\n\n$\\bar\\Pi/\\pi = \\sum_{p,q} \\bar\\delta^p\\mu^q\\,Q_{pq}(c_1, c_2)$ with\n\n| p | q | $Q_{pq}$ |\n|---|---|---|\n",
+        );
+        let (_, dbar, mu) = d2.layout();
+        let mut groups: std::collections::BTreeMap<
+            (u16, u16),
+            Vec<(Vec<u16>, symbolica::domains::rational::Rational)>,
+        > = Default::default();
+        for t in d2.potential.into_iter() {
+            let mut e = t.exponents.to_vec();
+            let key = (e[dbar], e[mu]);
+            e[dbar] = 0;
+            e[mu] = 0;
+            groups
+                .entry(key)
+                .or_default()
+                .push((e, t.coefficient.clone()));
+        }
+        for ((p, q), terms) in groups {
+            let mut poly = d2.potential.zero();
+            for (e, c) in terms {
+                poly.append_monomial(c, &e);
+            }
+            o.push_str(&format!("| {p} | {q} | ${}$ |\n", latex(&poly)));
+        }
+    }
+    o.push_str(
+        "\n### Every member: what was derived and generated\n\n\
+         Π̄ is a polynomial of degree 8 in c (degree 2 in δ̄ and in μ). The residuals ∇_c Π̄ and F̄ are its gradient, their \
+         Jacobian its Hessian in (c, δ̄); the solver evaluates all three from the one table of Π̄'s monomials \
+         (`solver/src/generated/conformal/kK.rs`, [codegen-accuracy.md](codegen-accuracy.md)).\n\n\
+         | K | monomials of Π̄ | of F̄ | upper triangle of the Hessian in (c, δ̄) | in c alone | boundary-slope modes (rows) | generated module |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    for d in all {
+        let (n_pot, n_hess) = d.sizes();
+        let k = d.ansatz.terms;
+        let mut hess_c = 0;
+        for i in 0..k {
+            for j in i..k {
+                hess_c += d.potential_derivative(&[i, j]).nterms();
+            }
+        }
+        let slope_rows: usize = d.boundary_slope.iter().map(|(_, g)| g.nterms()).sum();
+        let path = format!("solver/src/generated/conformal/k{k}.rs");
+        let size = outputs
+            .iter()
+            .find(|o| o.path.to_str() == Some(path.as_str()))
+            .map(|o| format!("{:.1} kB", o.contents.len() as f64 / 1000.0))
+            .unwrap_or_else(|| "—".into());
+        o.push_str(&format!(
+            "| {k} | {n_pot} | {} | {n_hess} | {hess_c} | {} ({slope_rows}) | {size} |\n",
+            d.force.nterms(),
+            d.boundary_slope.len()
+        ));
+    }
+    o
+}

@@ -52,7 +52,13 @@ pub fn outputs() -> Result<Vec<Output>, String> {
     let all: Vec<&ModelDerivation> = models.iter().collect();
     out.extend(crate::codegen::outputs(&all)?);
     let family = crate::codegen_conformal::derive_all()?;
-    out.extend(crate::codegen_conformal::outputs(&family)?);
+    let generated = crate::codegen_conformal::outputs(&family)?;
+    out[0]
+        .contents
+        .push_str(&crate::codegen_conformal::derivation_section(
+            &family, &generated,
+        ));
+    out.extend(generated);
     Ok(out)
 }
 

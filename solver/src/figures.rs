@@ -616,6 +616,38 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         shade: None,
         equal: false,
     });
+    // 4. the conformal family's pull-off error against K, per ρ
+    let mut series = Vec::new();
+    let colors = [BLUE, RED, GREEN, ORANGE, GREY, BLACK];
+    for (e, &c) in po.iter().filter(|e| e.rho < 1.0).zip(colors.iter().cycle()) {
+        // a member whose pull-off is not reached is left out of the line
+        // and named in its label (docs/accuracy.md says why)
+        let (mut pts, mut missing) = (Vec::new(), Vec::new());
+        for m in crate::conformal::members() {
+            match m.pull_off(e.rho, crate::conformal::PullOffControl::Load) {
+                Ok((st, _)) => {
+                    let err = (st.force_bar / e.force_bar - 1.0).abs().max(1e-12);
+                    pts.push((m.terms() as f64, err.log10()));
+                }
+                Err(_) => missing.push(m.terms().to_string()),
+            }
+        }
+        let label = if missing.is_empty() {
+            format!("ρ = {}", e.rho)
+        } else {
+            format!("ρ = {} (not reached: K = {})", e.rho, missing.join(", "))
+        };
+        series.push(solid(&label, pts, c));
+    }
+    out.push(Figure {
+        file: "conformal_convergence.svg",
+        title: "conformal:K against the exact pull-off".into(),
+        x_label: "K (terms of the map)",
+        y_label: "log₁₀ |F̄_K / F̄_exact − 1| (floored at 1e-12)",
+        series,
+        shade: None,
+        equal: false,
+    });
     Ok(out)
 }
 

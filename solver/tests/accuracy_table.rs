@@ -2,7 +2,7 @@
 //! tables (pull-off, zero force, F̄ = 10), recomputed here, are the lines
 //! the file holds (the full table takes minutes: `thinjkr accuracy`).
 
-use thinjkr::exact::table::{render_row, row, Quantity};
+use thinjkr::exact::table::{render_conformal_row, render_row, row, Quantity};
 
 #[test]
 fn accuracy_table_rows_are_fresh() {
@@ -11,11 +11,13 @@ fn accuracy_table_rows_are_fresh() {
     let lines: Vec<&str> = doc.lines().collect();
     for rho in [1.0, 0.9] {
         for q in Quantity::ALL {
-            let line = render_row(&row(rho, q));
-            assert!(
-                lines.contains(&line.as_str()),
-                "docs/accuracy.md is stale (run `thinjkr accuracy --out docs/accuracy.md`): no line\n{line}"
-            );
+            let r = row(rho, q);
+            for line in [render_row(&r), render_conformal_row(&r)] {
+                assert!(
+                    lines.contains(&line.as_str()),
+                    "docs/accuracy.md is stale (run `thinjkr accuracy --out docs/accuracy.md`): no line\n{line}"
+                );
+            }
         }
     }
 }

@@ -37,7 +37,7 @@ fn exact_figures_are_fresh() {
     let reference: thinjkr::exact::table::Reference =
         serde_json::from_str(&text).expect("the exact reference parses");
     let figs = thinjkr::figures::exact_all(&reference).expect("exact figures draw");
-    assert_eq!(figs.len(), 3);
+    assert_eq!(figs.len(), 4);
     let mut stale = Vec::new();
     for (name, svg) in &figs {
         let p = root.join("docs/figures").join(name);

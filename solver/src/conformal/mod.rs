@@ -127,6 +127,16 @@ pub fn title() -> &'static str {
     crate::generated::conformal::TITLE
 }
 
+impl std::fmt::Display for Control {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Control::Delta(d) => write!(f, "delta = {}", short(*d)),
+            Control::Force(v) => write!(f, "force = {}", short(*v)),
+            Control::Size(a) => write!(f, "a = {}", short(*a)),
+        }
+    }
+}
+
 impl Conformal {
     /// The member with K map coefficients, if it was generated.
     pub fn new(terms: usize) -> Result<Conformal> {
@@ -455,17 +465,25 @@ impl Conformal {
         let mut step = 0.05f64;
         while rho_now > rho {
             let next = (rho_now - step).max(rho);
-            match self.newton(&x, next, control) {
-                Ok(y) if self.univalence(&y.as_slice()[..self.terms()]).is_ok() => {
+            let found = self
+                .newton(&x, next, control)
+                .ok()
+                .filter(|y| self.univalence(&y.as_slice()[..self.terms()]).is_ok());
+            match found {
+                Some(y) => {
                     x = y;
                     rho_now = next;
                     step = (step * 1.5).min(0.05);
                 }
-                Ok(_) | Err(_) if step > 1e-4 => step *= 0.5,
-                Ok(y) => {
-                    self.univalence(&y.as_slice()[..self.terms()])?;
+                None if step > 1e-4 => step *= 0.5,
+                None => {
+                    return Err(Error::NoState(format!(
+                        "{}: the state at {control} continued from the circle (rho = 1) ends near rho = {:.4}, above the rho = {} asked for (its arm folds in rho or stops being one-to-one there)",
+                        self.name(),
+                        rho_now,
+                        short(rho)
+                    )))
                 }
-                Err(e) => return Err(e),
             }
         }
         Ok(x)
