@@ -68,7 +68,10 @@ pub struct Conformal {
 #[derive(Debug)]
 struct Decoded {
     potential: poly::Decoded,
+    /// The rows of Π̄ that matter on the circle c = (c₁, 0, …, 0).
+    potential_circle: poly::Decoded,
     slope: Vec<(u16, poly::Decoded)>,
+    slope_circle: Vec<(u16, poly::Decoded)>,
 }
 
 static DECODED: [std::sync::OnceLock<Decoded>; poly::MAX_UNKNOWNS - 1] =
@@ -145,13 +148,19 @@ impl Conformal {
             .find(|t| t.terms == terms && (1..poly::MAX_UNKNOWNS).contains(&t.terms))
             .map(|tables| Conformal {
                 tables,
-                decoded: DECODED[tables.terms - 1].get_or_init(|| Decoded {
-                    potential: poly::Decoded::new(tables.potential, tables.terms),
-                    slope: tables
+                decoded: DECODED[tables.terms - 1].get_or_init(|| {
+                    let potential = poly::Decoded::new(tables.potential, tables.terms);
+                    let slope: Vec<_> = tables
                         .slope
                         .iter()
                         .map(|(n, rows)| (*n, poly::Decoded::new(rows, tables.terms)))
-                        .collect(),
+                        .collect();
+                    Decoded {
+                        potential_circle: potential.near_circle(),
+                        slope_circle: slope.iter().map(|(n, d)| (*n, d.near_circle())).collect(),
+                        potential,
+                        slope,
+                    }
                 }),
             })
             .ok_or(Error::OutOfRange {
@@ -215,14 +224,15 @@ impl Conformal {
         }
     }
 
-    /// w(ζ) and w′(ζ) at a complex ζ = (re, im).
+    /// w(ζ) and w′(ζ) at a complex ζ = (re, im) (the powers n_k increase).
     fn map(&self, c: &[f64], z: (f64, f64)) -> ((f64, f64), (f64, f64)) {
         let mul = |a: (f64, f64), b: (f64, f64)| (a.0 * b.0 - a.1 * b.1, a.0 * b.1 + a.1 * b.0);
         let (mut w, mut dw) = ((0.0, 0.0), (0.0, 0.0));
+        let (mut p, mut np) = ((1.0, 0.0), 1u16); // p = ζ^(np − 1)
         for (&ck, &n) in c.iter().zip(self.tables.powers) {
-            let mut p = (1.0, 0.0); // ζ^(n−1)
-            for _ in 1..n {
+            while np < n {
                 p = mul(p, z);
+                np += 1;
             }
             let zn = mul(p, z);
             w = (w.0 + ck * zn.0, w.1 + ck * zn.1);
@@ -290,10 +300,10 @@ impl Conformal {
 
     /// Fails unless the map is one-to-one on the closed disk: the argument
     /// of w(e^{iθ}) must increase strictly with θ (a starlike contour, then
-    /// the map is univalent by the argument principle); sampled at 2048
+    /// the map is univalent by the argument principle); sampled at 1024
     /// angles.
     pub fn univalence(&self, c: &[f64]) -> Result<()> {
-        let n = 2048;
+        let n = 1024;
         for j in 0..n {
             let t = 2.0 * std::f64::consts::PI * (j as f64 + 0.5) / n as f64;
             let z = (t.cos(), t.sin());
@@ -403,10 +413,14 @@ impl Conformal {
                 v[k] = d;
                 v
             };
-            // r(δ̄) = r0 + q1 δ̄ + q2 δ̄²
-            let e0 = self.potential_to(&x(0.0), 1.0, 2);
+            // r(δ̄) = r0 + q1 δ̄ + q2 δ̄², from the rows that matter on the circle
+            let circle = &self.decoded.potential_circle;
+            let eval = |v: &DVector<f64>, order| {
+                poly::evaluate(circle, &v.as_slice()[..k], v[k], 1.0, order)
+            };
+            let e0 = eval(&x(0.0), 2);
             let (r0, q1) = (e0.grad[0], e0.hess[0][k]);
-            let q2 = self.potential_to(&x(1.0), 1.0, 1).grad[0] - r0 - q1;
+            let q2 = eval(&x(1.0), 1).grad[0] - r0 - q1;
             let disc = q1 * q1 - 4.0 * q2 * r0;
             if q2 == 0.0 || disc < 0.0 {
                 return None;
@@ -417,11 +431,30 @@ impl Conformal {
             ]
             .into_iter()
             .map(x)
-            .find(|v| self.normal_derivative(v, 1.0, &[0.0])[0] > 0.0)
+            .find(|v| {
+                // the boundary slope at θ = 0 (w′(1) > 0 on the circle)
+                let c = &v.as_slice()[..k];
+                let g: f64 = self
+                    .decoded
+                    .slope_circle
+                    .iter()
+                    .map(|(_, d)| poly::evaluate(d, c, v[k], 1.0, 0).value)
+                    .sum();
+                g > 0.0
+            })
         };
         let value = |v: &DVector<f64>| match control {
             Control::Delta(_) => v[k],
-            Control::Force(_) => self.potential_to(v, 1.0, 1).grad[k],
+            Control::Force(_) => {
+                poly::evaluate(
+                    &self.decoded.potential_circle,
+                    &v.as_slice()[..k],
+                    v[k],
+                    1.0,
+                    1,
+                )
+                .grad[k]
+            }
             Control::Size(_) => v[0],
         };
         let target = match control {
@@ -445,7 +478,7 @@ impl Conformal {
                 }
                 prev = Some((a, f));
             }
-            a *= 0.97;
+            a *= 0.9;
         }
         Err(Error::NoState(format!(
             "{} has no adhesive circular state at that control for rho = 1",
@@ -461,24 +494,32 @@ impl Conformal {
         rho: f64,
         control: Control,
     ) -> Result<DVector<f64>> {
+        // steps in ρ of at most 0.1, halved on failure; each Newton starts
+        // from the secant through the last two states
         let (mut x, mut rho_now) = (x1, 1.0f64);
-        let mut step = 0.05f64;
+        let mut last: Option<(DVector<f64>, f64)> = None;
+        let mut step = 0.1f64;
         while rho_now > rho {
             let next = (rho_now - step).max(rho);
+            let guess = match &last {
+                Some((xp, rp)) => &x + (&x - xp) * ((rho_now - next) / (rp - rho_now)),
+                None => x.clone(),
+            };
+            // univalence is checked at the state reached (`state`)
             let found = self
-                .newton(&x, next, control)
+                .newton(&guess, next, control)
                 .ok()
-                .filter(|y| self.univalence(&y.as_slice()[..self.terms()]).is_ok());
+                .filter(|y| (y - &x).amax() < 0.5 * (1.0 + x.amax()));
             match found {
                 Some(y) => {
-                    x = y;
+                    last = Some((std::mem::replace(&mut x, y), rho_now));
                     rho_now = next;
-                    step = (step * 1.5).min(0.05);
+                    step = (step * 1.5).min(0.1);
                 }
                 None if step > 1e-4 => step *= 0.5,
                 None => {
                     return Err(Error::NoState(format!(
-                        "{}: the state at {control} continued from the circle (rho = 1) ends near rho = {:.4}, above the rho = {} asked for (its arm folds in rho or stops being one-to-one there)",
+                        "{}: the state at {control} continued from the circle (rho = 1) ends near rho = {:.4}, above the rho = {} asked for (its arm folds in rho there)",
                         self.name(),
                         rho_now,
                         short(rho)

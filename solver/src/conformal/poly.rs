@@ -90,6 +90,33 @@ impl Decoded {
     }
 }
 
+impl Decoded {
+    /// The rows that can contribute, up to second derivatives, where every
+    /// coefficient but c₁ vanishes (the circle): those whose exponents of
+    /// c₂ … c_K add up to at most 2.
+    pub fn near_circle(&self) -> Decoded {
+        let mut out = Decoded {
+            k: self.k,
+            groups: Vec::new(),
+            rows: Vec::new(),
+        };
+        for g in &self.groups {
+            let others: u32 = (0..g.m as usize)
+                .filter(|&x| g.idx[x] != 0)
+                .map(|x| g.exp[x] as u32)
+                .sum();
+            if others <= 2 {
+                let mut h = g.clone();
+                h.first = out.rows.len() as u32;
+                out.rows
+                    .extend_from_slice(&self.rows[g.first as usize..(g.first + g.len) as usize]);
+                out.groups.push(h);
+            }
+        }
+        out
+    }
+}
+
 /// Evaluate Σ κ δ̄^p μ^q Π c_i^(e_i) with its derivatives in (c, δ̄) up to
 /// `order` (0: value; 1: and the gradient; 2: and the Hessian).
 /// `c.len()` must be the table's K.
