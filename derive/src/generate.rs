@@ -58,6 +58,15 @@ pub fn outputs() -> Result<Vec<Output>, String> {
         .push_str(&crate::codegen_conformal::derivation_section(
             &family, &generated,
         ));
+    if let Some(acc) = out
+        .iter_mut()
+        .find(|o| o.path.as_os_str() == "docs/codegen-accuracy.md")
+    {
+        acc.contents
+            .push_str(&crate::codegen_conformal::accuracy_section(
+                &family, &generated,
+            ));
+    }
     out.extend(generated);
     Ok(out)
 }
