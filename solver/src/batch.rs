@@ -64,16 +64,27 @@ fn solve_with(c: &Contact, item: &Item) -> Result<State> {
 /// The header of the output CSV.
 pub const CSV_HEADER: &str = "line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error";
 
-/// Parse one input line `rho,control,value` (control `delta` or `force`;
-/// blank lines and lines starting with `#` or `rho` are skipped: `None`).
-/// A malformed line is an [`Error::Usage`] that names the line.
+/// Parse one input line `rho,control,value` (control `delta` or `force`).
+/// Only the first line may be skipped (`None`), and only when it is the
+/// header `rho,control,value`; every other line, blank ones included, is
+/// an item or an [`Error::Usage`] that names the line (and quotes at most
+/// its first 40 characters).
 pub fn parse_line(number: usize, line: &str) -> Option<Result<Item>> {
     let t = line.trim();
-    if t.is_empty() || t.starts_with('#') || t.starts_with("rho") {
+    let f: Vec<&str> = t.split(',').map(str::trim).collect();
+    if number == 1
+        && f.len() == 3
+        && f.iter()
+            .zip(["rho", "control", "value"])
+            .all(|(a, b)| a.eq_ignore_ascii_case(b))
+    {
         return None;
     }
-    let bad = |why: String| Some(Err(Error::Usage(format!("line {number}: {why}: {t:?}"))));
-    let f: Vec<&str> = t.split(',').map(str::trim).collect();
+    let shown = quote_start(t);
+    let bad = |why: String| Some(Err(Error::Usage(format!("line {number}: {why}: {shown}"))));
+    if t.is_empty() {
+        return bad("empty line, expected rho,control,value".into());
+    }
     if f.len() != 3 {
         return bad(format!(
             "expected 3 fields rho,control,value, found {}",
@@ -82,7 +93,7 @@ pub fn parse_line(number: usize, line: &str) -> Option<Result<Item>> {
     }
     let num = |s: &str, name: &str| {
         s.parse::<f64>()
-            .map_err(|_| format!("{name} {s:?} is not a number"))
+            .map_err(|_| format!("{name} {} is not a number", quote_start(s)))
     };
     let rho = match num(f[0], "rho") {
         Ok(v) => v,
@@ -95,9 +106,42 @@ pub fn parse_line(number: usize, line: &str) -> Option<Result<Item>> {
     let given = match f[1] {
         "delta" => Given::Delta(value),
         "force" => Given::Force(value),
-        other => return bad(format!("control {other:?} is not delta or force")),
+        other => {
+            return bad(format!(
+                "control {} is not delta or force",
+                quote_start(other)
+            ))
+        }
     };
     Some(Ok(Item { rho, given }))
+}
+
+/// The first 40 characters of `s`, quoted, with the length of the rest.
+pub fn quote_start(s: &str) -> String {
+    let n = s.chars().count();
+    if n <= 40 {
+        format!("{s:?}")
+    } else {
+        let head: String = s.chars().take(40).collect();
+        format!("{head:?}… ({} more characters)", n - 40)
+    }
+}
+
+/// One raw input line as text: the UTF-8 byte-order mark that spreadsheet
+/// programs write is dropped from the first line, a trailing carriage
+/// return from every line; bytes that are not UTF-8 are an error for that
+/// line alone.
+pub fn decode_line(number: usize, raw: &[u8]) -> std::result::Result<&str, Error> {
+    let mut raw = raw.strip_suffix(b"\r").unwrap_or(raw);
+    if number == 1 {
+        raw = raw.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(raw);
+    }
+    std::str::from_utf8(raw).map_err(|e| {
+        Error::Usage(format!(
+            "line {number}: not UTF-8 text (invalid byte at position {})",
+            e.valid_up_to() + 1
+        ))
+    })
 }
 
 /// One output row: the input echoed, the state's numbers (the shortest

@@ -23,9 +23,9 @@ fn modes(st: &ConformalState) -> String {
 }
 
 /// One state for a person.
-pub fn show(label: &str, st: &ConformalState) {
+pub fn show(label: &str, st: &ConformalState) -> thinjkr::Result<()> {
     let word = |b: bool| if b { "stable" } else { "unstable" };
-    println!(
+    outln!(
         "{label}: model {}, a = {:.6}, b = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, max |dp/dnu - 1| on the contour = {:.1e} [displacement control: {}, load control: {}{}]",
         st.model,
         st.a_bar,
@@ -39,26 +39,28 @@ pub fn show(label: &str, st: &ConformalState) {
         modes(st)
     );
     let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();
-    println!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
+    outln!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
+    Ok(())
 }
 
-fn emit(label: &str, st: &ConformalState, json: bool) {
+fn emit(label: &str, st: &ConformalState, json: bool) -> thinjkr::Result<()> {
     if json {
-        println!("{}", serde_json::json!({ "state": st }));
+        outln!("{}", serde_json::json!({ "state": st }));
     } else {
-        show(label, st);
+        show(label, st)?;
     }
+    Ok(())
 }
 
 /// `solve --model conformal:K`.
 pub fn solve(m: &Conformal, rho: f64, control: Control, json: bool) -> thinjkr::Result<()> {
-    emit("state", &m.solve(rho, control)?, json);
+    emit("state", &m.solve(rho, control)?, json)?;
     Ok(())
 }
 
 /// `zero-force --model conformal:K`.
 pub fn zero_force(m: &Conformal, rho: f64, json: bool) -> thinjkr::Result<()> {
-    emit("zero force", &m.zero_force(rho)?, json);
+    emit("zero force", &m.zero_force(rho)?, json)?;
     Ok(())
 }
 
@@ -71,23 +73,23 @@ pub fn pull_off(
 ) -> thinjkr::Result<()> {
     let (st, folds) = m.pull_off(rho, control)?;
     if json {
-        println!(
+        outln!(
             "{}",
             serde_json::json!({ "state": st, "folds": folds, "start_a_bar": thinjkr::conformal::TRACE_START_A })
         );
         return Ok(());
     }
-    show("pull-off", &st);
+    show("pull-off", &st)?;
     let what = match control {
         PullOffControl::Load => "the first minimum of the force",
         PullOffControl::Displacement => "the first extremum of the approach",
     };
-    println!(
+    outln!(
         "  end point: {what} along the branch traced from a = {} (pseudo-arclength in (c, delta))",
         thinjkr::conformal::TRACE_START_A
     );
     for Extremum { a_bar, force_bar } in folds {
-        println!("  passed a fold in a at a = {a_bar:.4}, force = {force_bar:.6}");
+        outln!("  passed a fold in a at a = {a_bar:.4}, force = {force_bar:.6}");
     }
     Ok(())
 }

@@ -58,6 +58,9 @@ pub enum Error {
         /// The supported range, in words.
         supported: &'static str,
     },
+    /// Reading input or writing output failed (a file, a pipe, a disk).
+    #[error("input/output: {0}")]
+    Io(String),
     /// The model lacks what was asked for (a closed form its derivation
     /// could not produce).
     #[error("model {model} has no {what} ({why})")]

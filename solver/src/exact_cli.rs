@@ -153,8 +153,8 @@ fn modes(v: &[UnstableMode]) -> String {
     format!("unstable modes {}", list.join(", "))
 }
 
-fn show_quality(st: &ExactState) {
-    println!(
+fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
+    outln!(
         "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
         st.bc_error,
         2 * st.truncation.points,
@@ -162,11 +162,12 @@ fn show_quality(st: &ExactState) {
         st.truncation.modes,
         st.truncation.points
     );
-    println!(
+    outln!(
         "  displacement control: {}",
         modes(&st.stability.displacement)
     );
-    println!("  load control: {}", modes(&st.stability.load));
+    outln!("  load control: {}", modes(&st.stability.load));
+    Ok(())
 }
 
 /// The exact load-controlled pull-off and every model's.
@@ -189,7 +190,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
                 Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
             })
             .collect();
-        println!(
+        outln!(
             "{}",
             serde_json::json!({"exact_pull_off": po, "events": events, "models": m})
         );
@@ -198,17 +199,17 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     // F̄ is stationary at the pull-off and accurate to round-off; its
     // location (ā, b̄, s, δ̄) only to about 1e-7 (golden-section search on
     // the flat F̄), so it is printed to 7 decimals
-    println!(
+    outln!(
         "exact pull-off (load control): rho = {rho}, a = {:.7}, b = {:.7}, s = {:.7}, delta = {:.7}, force = {:.10}",
         po.a_bar, po.b_bar, po.s, po.delta_bar, po.force_bar
     );
-    show_quality(&po);
+    show_quality(&po)?;
     for e in &events {
         match e {
             Event::SizeFold { a_bar } => {
-                println!("  on the way: the family turns back in a near a = {a_bar:.6}")
+                outln!("  on the way: the family turns back in a near a = {a_bar:.6}")
             }
-            Event::Bifurcation { between, mode } => println!(
+            Event::Bifurcation { between, mode } => outln!(
                 "  on the way: a bifurcation point between a = {:.6} and {:.6} (contour mode {})",
                 between[0],
                 between[1],
@@ -219,7 +220,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     }
     for (m, r) in &models {
         match r {
-            Ok(p) => println!(
+            Ok(p) => outln!(
                 "  model {m}: force = {:.6} ({:+.3} %), a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %)",
                 p.state.force,
                 100.0 * (p.state.force / po.force_bar - 1.0),
@@ -228,7 +229,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
                 p.state.s,
                 100.0 * (p.state.s / po.s - 1.0)
             ),
-            Err(e) => println!("  model {m}: {e}"),
+            Err(e) => outln!("  model {m}: {e}"),
         }
     }
     Ok(())
@@ -269,17 +270,17 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
                 Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
             })
             .collect();
-        println!("{}", serde_json::json!({"exact": st, "models": m}));
+        outln!("{}", serde_json::json!({"exact": st, "models": m}));
         return Ok(());
     }
-    println!(
+    outln!(
         "exact state: rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
         st.a_bar, st.b_bar, st.s, st.delta_bar, st.force_bar
     );
-    show_quality(&st);
+    show_quality(&st)?;
     for (m, r) in &model_states {
         match r {
-            Ok(p) => println!(
+            Ok(p) => outln!(
                 "  model {m}: a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %), delta = {:.6}, force = {:.6}",
                 p.a,
                 100.0 * (p.a / st.a_bar - 1.0),
@@ -288,7 +289,7 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
                 p.delta,
                 p.force
             ),
-            Err(e) => println!("  model {m}: {e}"),
+            Err(e) => outln!("  model {m}: {e}"),
         }
     }
     Ok(())

@@ -37,6 +37,8 @@ fn not_for_conformal(m: &Conformal, what: &str) -> thinjkr::Error {
     }
 }
 
+#[macro_use]
+mod output;
 mod conformal_cli;
 mod exact_cli;
 
@@ -248,8 +250,8 @@ fn stability(st: &State) -> String {
     }
 }
 
-fn show(label: &str, st: &State) {
-    println!(
+fn show(label: &str, st: &State) -> thinjkr::Result<()> {
+    outln!(
         "{label}: model {}, a = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, xi = {:.6}, p0 = {:.6}, error (14) = {:.4} %{}{}{}",
         st.model,
         st.a,
@@ -263,6 +265,7 @@ fn show(label: &str, st: &State) {
         if st.beyond_size_fold { " [beyond the contact-size fold]" } else { "" },
         stability(st)
     );
+    Ok(())
 }
 
 fn basis(p: &PullOff) -> &'static str {
@@ -273,41 +276,51 @@ fn basis(p: &PullOff) -> &'static str {
     }
 }
 
-fn emit_pull_off(p: &PullOff, as_json: bool) {
+fn emit_pull_off(p: &PullOff, as_json: bool) -> thinjkr::Result<()> {
     if as_json {
-        println!(
+        outln!(
             "{}",
             serde_json::to_value(p).expect("a pull-off serialises")
         );
     } else {
-        show("pull-off", &p.state);
-        println!("  end point: {}", basis(p));
+        show("pull-off", &p.state)?;
+        outln!("  end point: {}", basis(p));
     }
+    Ok(())
 }
 
-fn emit(label: &str, st: &State, as_json: bool) {
+fn emit(label: &str, st: &State, as_json: bool) -> thinjkr::Result<()> {
     if as_json {
-        println!("{}", json(st));
+        outln!("{}", json(st));
     } else {
-        show(label, st);
+        show(label, st)?;
     }
+    Ok(())
 }
 
-fn run(cli: Cli) -> thinjkr::Result<()> {
+/// `thinjkr batch`: some lines have no state (their rows say why).
+const BATCH_SOME_FAILED: u8 = 3;
+/// `thinjkr batch`: no line has a state.
+const BATCH_NONE_SOLVED: u8 = 4;
+
+/// Run a subcommand; the exit status when it succeeds (0, or a batch's
+/// partial status).
+fn run(cli: Cli) -> thinjkr::Result<u8> {
+    let mut status = 0u8;
     match cli.command {
         None => {
             let c = Contact::new(0.8)?;
-            println!("thinjkr: the paper's example, rho = R2/R1 = 0.8 (dimensionless, Eq. (17)); derived forms of (18), (26), (27)");
-            show("pull-off (load control)        ", &c.pull_off_load()?.state);
+            outln!("thinjkr: the paper's example, rho = R2/R1 = 0.8 (dimensionless, Eq. (17)); derived forms of (18), (26), (27)");
+            show("pull-off (load control)        ", &c.pull_off_load()?.state)?;
             show(
                 "pull-off (displacement control)",
                 &c.pull_off_displacement()?.state,
-            );
-            show("zero force                     ", &c.zero_force()?);
+            )?;
+            show("zero force                     ", &c.zero_force()?)?;
             let e = Contact::with_model(ModelId::Energy, 0.8)?;
-            println!("the same contact with the energy (Ritz) closure of the same ellipse (--model energy):");
-            show("pull-off (load control)        ", &e.pull_off_load()?.state);
-            show("zero force                     ", &e.zero_force()?);
+            outln!("the same contact with the energy (Ritz) closure of the same ellipse (--model energy):");
+            show("pull-off (load control)        ", &e.pull_off_load()?.state)?;
+            show("zero force                     ", &e.zero_force()?)?;
         }
         Some(Command::Solve {
             rho,
@@ -338,7 +351,8 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                         control,
                         &exact_cli::Discretisation::default(),
                         j,
-                    );
+                    )
+                    .map(|()| 0);
                 }
                 ModelChoice::Conformal(m) => {
                     let control = match (delta, force, a) {
@@ -351,14 +365,14 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                             ))
                         }
                     };
-                    return conformal_cli::solve(&m, rho, control, j);
+                    return conformal_cli::solve(&m, rho, control, j).map(|()| 0);
                 }
                 ModelChoice::Approx(m) => m,
             };
             let c = Contact::with_model(model, rho)?;
             match (delta, force, a) {
-                (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j),
-                (_, Some(f), _) => emit("state", &c.at_load(f)?, j),
+                (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j)?,
+                (_, Some(f), _) => emit("state", &c.at_load(f)?, j)?,
                 (_, _, Some(a)) => {
                     let states = c.at_contact_size(a)?;
                     if states.is_empty() {
@@ -368,7 +382,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                     }
                     if j {
                         let v: Vec<_> = states.iter().map(json).collect();
-                        println!(
+                        outln!(
                             "{}",
                             if v.len() == 1 {
                                 v[0].clone()
@@ -377,7 +391,9 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                             }
                         );
                     } else {
-                        states.iter().for_each(|s| show("state", s));
+                        for st in &states {
+                            show("state", st)?;
+                        }
                     }
                 }
                 _ => {
@@ -396,6 +412,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             let model = match model {
                 ModelChoice::Exact if control == Control::Load => {
                     return exact_cli::pull_off(rho, &exact_cli::Discretisation::default(), j)
+                        .map(|()| 0)
                 }
                 ModelChoice::Exact => {
                     return Err(thinjkr::Error::Unavailable {
@@ -409,7 +426,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                         Control::Load => family::PullOffControl::Load,
                         Control::Displacement => family::PullOffControl::Displacement,
                     };
-                    return conformal_cli::pull_off(&m, rho, control, j);
+                    return conformal_cli::pull_off(&m, rho, control, j).map(|()| 0);
                 }
                 ModelChoice::Approx(m) => m,
             };
@@ -418,16 +435,14 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                 Control::Load => c.pull_off_load()?,
                 Control::Displacement => c.pull_off_displacement()?,
             };
-            emit_pull_off(&p, j);
+            emit_pull_off(&p, j)?;
         }
         Some(Command::Exact { command }) => exact_cli::run(command)?,
         Some(Command::Batch { model }) => {
-            use std::io::{BufRead, IsTerminal, Write};
-            use thinjkr::batch::{csv_row, parse_line, solve_all, CSV_HEADER};
+            use std::io::{BufRead, IsTerminal};
+            use thinjkr::batch::{csv_row, decode_line, parse_line, solve_all, CSV_HEADER};
             let stdin = std::io::stdin();
-            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-            let io_err = |e: std::io::Error| thinjkr::Error::Usage(format!("batch: {e}"));
-            writeln!(out, "{CSV_HEADER}").map_err(io_err)?;
+            outln!("{CSV_HEADER}");
             let bar = std::io::stderr().is_terminal().then(|| {
                 let b = indicatif::ProgressBar::new_spinner();
                 b.set_style(
@@ -436,14 +451,21 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                 );
                 b
             });
-            let mut lines = stdin.lock().lines().enumerate();
-            let mut failed = 0usize;
+            // raw lines: a line that is not UTF-8 is an error row of its own
+            let mut lines = stdin.lock().split(b'\n').enumerate();
+            let (mut failed, mut solved_any) = (0usize, false);
             loop {
                 // a block of input lines, solved in parallel, written in order
                 let mut block = Vec::with_capacity(4096);
-                for (i, line) in lines.by_ref() {
-                    let line = line.map_err(io_err)?;
-                    if let Some(parsed) = parse_line(i + 1, &line) {
+                for (i, raw) in lines.by_ref() {
+                    let raw = raw.map_err(|e| {
+                        thinjkr::Error::Io(format!("reading line {} of the input: {e}", i + 1))
+                    })?;
+                    let parsed = match decode_line(i + 1, &raw) {
+                        Ok(line) => parse_line(i + 1, line),
+                        Err(e) => Some(Err(e)),
+                    };
+                    if let Some(parsed) = parsed {
                         block.push((i + 1, parsed));
                         if block.len() == 4096 {
                             break;
@@ -462,9 +484,12 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                     let row = match parsed {
                         Ok(item) => {
                             let r = solved.next().expect("one result per item");
-                            if let Err(e) = &r {
-                                eprintln!("thinjkr: line {n}: {e}");
-                                failed += 1;
+                            match &r {
+                                Err(e) => {
+                                    eprintln!("thinjkr: line {n}: {e}");
+                                    failed += 1;
+                                }
+                                Ok(_) => solved_any = true,
                             }
                             csv_row(*n, Some(item), &r)
                         }
@@ -474,18 +499,22 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                             csv_row(*n, None, &Err(e.clone()))
                         }
                     };
-                    writeln!(out, "{row}").map_err(io_err)?;
+                    outln!("{row}");
                 }
                 if let Some(b) = &bar {
                     b.inc(block.len() as u64);
                 }
             }
-            out.flush().map_err(io_err)?;
             if let Some(b) = bar {
                 b.finish_and_clear();
             }
             if failed > 0 {
                 eprintln!("thinjkr: {failed} line(s) without a state (see the error column)");
+                status = if solved_any {
+                    BATCH_SOME_FAILED
+                } else {
+                    BATCH_NONE_SOLVED
+                };
             }
         }
         Some(Command::Accuracy {
@@ -556,7 +585,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                 Some(p) => std::fs::write(&p, text).map_err(|e| {
                     thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))
                 })?,
-                None => print!("{text}"),
+                None => out!("{text}"),
             }
         }
         Some(Command::ZeroForce {
@@ -582,7 +611,7 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             "zero force",
             &Contact::with_model(model, rho)?.zero_force()?,
             j,
-        ),
+        )?,
         Some(Command::Curve {
             rho,
             model,
@@ -604,13 +633,13 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
             let curve = trace(&c, points, 20.0)?;
             match format {
                 Format::Json => {
-                    println!("{}", serde_json::to_string(&curve).expect("serialisable"))
+                    outln!("{}", serde_json::to_string(&curve).expect("serialisable"))
                 }
                 Format::Csv => {
-                    println!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
+                    outln!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
                     let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
                     for st in &curve.states {
-                        println!(
+                        outln!(
                             "{},{},{},{},{},{},{},{},{}",
                             st.model,
                             st.delta,
@@ -643,16 +672,16 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                     .iter()
                     .map(|(n, t)| serde_json::json!({ "name": n, "description": t }))
                     .collect();
-                println!("{}", serde_json::json!({ "models": v }));
+                outln!("{}", serde_json::json!({ "models": v }));
             } else {
                 for (n, t) in rows {
-                    println!("{n:<13} {t}");
+                    outln!("{n:<13} {t}");
                 }
             }
         }
         Some(Command::Figures { out }) => {
             for p in thinjkr::figures::write(&out)? {
-                println!("{}", p.display());
+                outln!("{}", p.display());
             }
         }
         Some(Command::Physical {
@@ -700,18 +729,24 @@ fn run(cli: Cli) -> thinjkr::Result<()> {
                 Some(f) => cyl.at_load(f)?,
                 None => cyl.pull_off()?,
             };
-            println!(
+            outln!(
                 "{}",
                 serde_json::to_string_pretty(&st).expect("serialisable")
             );
         }
     }
-    Ok(())
+    Ok(status)
 }
 
 fn main() -> ExitCode {
-    match run(Cli::parse()) {
-        Ok(()) => ExitCode::SUCCESS,
+    let cli = Cli::parse();
+    match output::check_open()
+        .and_then(|()| run(cli))
+        .and_then(|status| output::finish().map(|()| status))
+    {
+        Ok(status) => ExitCode::from(status),
+        // a closed pipe: the reader has what it wanted; end quietly
+        Err(_) if output::broken_pipe() => ExitCode::from(output::BROKEN_PIPE_STATUS),
         Err(e) => {
             eprintln!("thinjkr: error: {e}");
             ExitCode::FAILURE

@@ -8,7 +8,7 @@ use std::process::{Command, Stdio};
 use thinjkr::batch::{solve_all, solve_one, Given, Item};
 use thinjkr::ModelId;
 
-fn run(input: &str) -> (String, String) {
+fn run(input: &[u8], status: i32) -> (String, String) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
         .args(["batch", "--model", "max"])
         .stdin(Stdio::piped())
@@ -19,12 +19,13 @@ fn run(input: &str) -> (String, String) {
     // the input is written from another thread: the output is read while
     // it streams (a full pipe would otherwise block both)
     let mut stdin = child.stdin.take().unwrap();
-    let input = input.to_string();
-    let writer = std::thread::spawn(move || stdin.write_all(input.as_bytes()).unwrap());
+    let input = input.to_vec();
+    let writer = std::thread::spawn(move || stdin.write_all(&input).unwrap());
     let out = child.wait_with_output().unwrap();
     writer.join().unwrap();
-    assert!(
-        out.status.success(),
+    assert_eq!(
+        out.status.code(),
+        Some(status),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
@@ -54,7 +55,11 @@ fn ten_thousand_lines_round_trip_in_order() {
             Given::Force(v) => input.push_str(&format!("{:?},force,{v:?}\n", it.rho)),
         }
     }
-    let (out, _) = run(&input);
+    let failing = solve_all(ModelId::Max, &items)
+        .iter()
+        .filter(|r| r.is_err())
+        .count();
+    let (out, _) = run(input.as_bytes(), if failing > 0 { 3 } else { 0 });
     let rows: Vec<&str> = out.lines().skip(1).collect();
     assert_eq!(rows.len(), items.len());
     let direct = solve_all(ModelId::Max, &items);
@@ -86,8 +91,10 @@ fn ten_thousand_lines_round_trip_in_order() {
 
 #[test]
 fn a_malformed_line_is_reported_and_the_rest_written() {
-    let (out, err) =
-        run("rho,control,value\n0.8,delta,2\n0.8,delta\n0.8,size,1\nx,force,1\n0.5,force,-1\n");
+    let (out, err) = run(
+        b"rho,control,value\n0.8,delta,2\n0.8,delta\n0.8,size,1\nx,force,1\n0.5,force,-1\n",
+        3,
+    );
     let rows: Vec<&str> = out.lines().collect();
     assert_eq!(rows.len(), 6, "{out}");
     assert!(rows[1].starts_with("2,0.8,delta,2.0,3.2117"), "{}", rows[1]);
@@ -97,4 +104,51 @@ fn a_malformed_line_is_reported_and_the_rest_written() {
         assert!(err.contains(&format!("line {line}")), "{err}");
     }
     assert!(rows[5].starts_with("6,0.5,force,-1.0,2.87"), "{}", rows[5]);
+}
+
+/// Every line gets a row: a line that is not UTF-8 (between 10 000 good
+/// lines on each side), a `rho` line that is not the first, a blank line;
+/// a byte-order mark before the header is dropped; the exit status says
+/// whether some (3) or all (4) lines failed.
+#[test]
+fn every_line_gets_a_row_whatever_it_holds() {
+    let mut input = b"\xEF\xBB\xBFrho,control,value\n".to_vec();
+    for _ in 0..10_000 {
+        input.extend_from_slice(b"0.8,delta,2\n");
+    }
+    input.extend_from_slice(b"0.8,delta,\xe9\n");
+    for _ in 0..10_000 {
+        input.extend_from_slice(b"0.8,delta,2\n");
+    }
+    input.extend_from_slice(b"rho,delta,2\n\n0.8,force,1\n");
+    let (out, err) = run(&input, 3);
+    let rows: Vec<&str> = out.lines().collect();
+    assert_eq!(rows.len(), 1 + 20_004, "a row per line after the header");
+    assert!(
+        rows[10_001].starts_with("10002,,") && rows[10_001].contains("not UTF-8"),
+        "{}",
+        rows[10_001]
+    );
+    assert!(
+        rows[20_002].starts_with("20003,,") && rows[20_002].contains("line 20003"),
+        "{}",
+        rows[20_002]
+    );
+    assert!(rows[20_003].starts_with("20004,,") && rows[20_003].contains("empty line"));
+    assert!(
+        rows[20_004].starts_with("20005,0.8,force,1.0,"),
+        "{}",
+        rows[20_004]
+    );
+    assert!(err.contains("3 line(s) without a state"), "{err}");
+    // a file whose every line fails
+    let (out, _) = run(b"x\ny\n", 4);
+    assert_eq!(out.lines().count(), 3);
+    // an input that is all good
+    let (out, _) = run(b"0.8,delta,2\n", 0);
+    assert_eq!(
+        out.lines().count(),
+        2,
+        "a first line that is not the header is data"
+    );
 }

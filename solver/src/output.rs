@@ -1,0 +1,86 @@
+//! Everything the command line writes to standard output goes through
+//! here, so that no write can panic: a closed pipe (`thinjkr curve … | head`)
+//! ends the program quietly with the status a shell gives a process ended
+//! by SIGPIPE (141), and any other write error (a full disk) is an I/O error
+//! in words with a nonzero status. Standard output that is closed before
+//! the program starts is refused up front.
+//!
+//! Owns: [`line`], [`text`], [`finish`], the `outln!`/`out!` macros. May use:
+//! `thinjkr::Error`.
+
+use std::io::Write;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+static BROKEN_PIPE: AtomicBool = AtomicBool::new(false);
+
+/// The exit status after a closed pipe (128 + SIGPIPE).
+pub const BROKEN_PIPE_STATUS: u8 = 141;
+
+fn io(e: std::io::Error) -> thinjkr::Error {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        BROKEN_PIPE.store(true, Ordering::Relaxed);
+    }
+    thinjkr::Error::Io(format!("cannot write the output: {e}"))
+}
+
+/// Write one line.
+pub fn line(args: std::fmt::Arguments<'_>) -> thinjkr::Result<()> {
+    let mut out = std::io::stdout().lock();
+    out.write_fmt(args)
+        .and_then(|_| out.write_all(b"\n"))
+        .map_err(io)
+}
+
+/// Write text as it is.
+pub fn text(args: std::fmt::Arguments<'_>) -> thinjkr::Result<()> {
+    std::io::stdout().lock().write_fmt(args).map_err(io)
+}
+
+/// Flush standard output (a write error may surface only here).
+pub fn finish() -> thinjkr::Result<()> {
+    std::io::stdout().lock().flush().map_err(io)
+}
+
+/// Whether the last error came from a closed pipe.
+pub fn broken_pipe() -> bool {
+    BROKEN_PIPE.load(Ordering::Relaxed)
+}
+
+/// Refuse to start when standard output was closed (`>&-`). The Rust
+/// runtime reopens a closed standard descriptor on /dev/null for reading
+/// and writing before `main`, so every write would vanish without an error;
+/// a shell's `>/dev/null` opens it for writing only, which is left alone.
+pub fn check_open() -> thinjkr::Result<()> {
+    #[cfg(unix)]
+    {
+        use std::os::fd::AsRawFd;
+        use std::os::unix::fs::MetadataExt;
+        let fd = std::io::stdout().as_raw_fd();
+        // SAFETY: fcntl with F_GETFL only queries the descriptor's flags.
+        let flags = unsafe { libc::fcntl(fd, libc::F_GETFL) };
+        let closed = flags == -1
+            || (flags & libc::O_ACCMODE == libc::O_RDWR && {
+                let null = std::fs::metadata("/dev/null").map(|m| m.rdev()).ok();
+                // SAFETY: fstat writes into the zeroed struct we own.
+                let mut st: libc::stat = unsafe { std::mem::zeroed() };
+                let ok = unsafe { libc::fstat(fd, &mut st) } == 0;
+                ok && null == Some(st.st_rdev as u64)
+            });
+        if closed {
+            return Err(thinjkr::Error::Io(
+                "standard output is closed: nothing could be written".into(),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `println!` that returns an I/O error instead of panicking.
+macro_rules! outln {
+    ($($t:tt)*) => { $crate::output::line(format_args!($($t)*))? };
+}
+
+/// `print!` that returns an I/O error instead of panicking.
+macro_rules! out {
+    ($($t:tt)*) => { $crate::output::text(format_args!($($t)*))? };
+}
