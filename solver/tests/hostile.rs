@@ -70,3 +70,21 @@ fn a_closed_standard_output_is_refused() {
     let (status, _, err) = bash("\"$0\" solve --rho 0.8 --delta 2 >/dev/null");
     assert_eq!(status, Some(0), "{err}");
 }
+
+/// Every size a user can type is checked before anything is allocated.
+#[test]
+fn sizes_are_bounded_before_allocation() {
+    for args in [
+        "exact pull-off --rho 0.9 --modes 8 --points 1000000",
+        "exact pull-off --rho 0.9 --modes 8 --points 18446744073709551615",
+        "exact solve --rho 0.9 --delta 2 --modes 64 --points 20000",
+        "curve --rho 0.8 --points 100001",
+    ] {
+        let (status, _, err) = bash(&format!("\"$0\" {args}"));
+        assert_eq!(status, Some(1), "{args}: {err}");
+        assert!(
+            err.contains("points") && err.contains("allowed range"),
+            "{args}: {err}"
+        );
+    }
+}

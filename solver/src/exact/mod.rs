@@ -377,6 +377,13 @@ pub struct Exact {
     fine: Grid,
 }
 
+/// The longest contour series accepted ([`Truncation::modes`]).
+pub const MAX_MODES: usize = 128;
+/// The most quadrature points accepted ([`Truncation::points`]): the
+/// boundary integral equation's matrices grow as points², the fine check
+/// uses twice as many; 4096 points take about 0.3 GB at most.
+pub const MAX_POINTS: usize = 4096;
+
 impl Exact {
     /// The exact problem at `rho` ∈ (0, 1].
     pub fn new(rho: f64, truncation: Truncation) -> Result<Exact> {
@@ -385,6 +392,20 @@ impl Exact {
                 name: "rho",
                 value: rho,
                 range: "(0, 1]",
+            });
+        }
+        if truncation.modes > MAX_MODES {
+            return Err(Error::OutOfRange {
+                name: "modes",
+                value: truncation.modes as f64,
+                range: "1 ..= 128 (the contour series' length)",
+            });
+        }
+        if truncation.points > MAX_POINTS {
+            return Err(Error::OutOfRange {
+                name: "points",
+                value: truncation.points as f64,
+                range: "at most 4096 (memory and time grow as points²; the fine check uses twice as many)",
             });
         }
         if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {
