@@ -26,13 +26,13 @@ fn modes(st: &ConformalState) -> String {
 pub fn show(label: &str, st: &ConformalState) -> thinjkr::Result<()> {
     let word = |b: bool| if b { "stable" } else { "unstable" };
     outln!(
-        "{label}: model {}, a = {:.6}, b = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, max |dp/dnu - 1| on the contour = {:.1e} [displacement control: {}, load control: {}{}]",
+        "{label}: model {}, a = {}, b = {}, s = {}, delta = {}, force = {}, max |dp/dnu - 1| on the contour = {:.1e} [displacement control: {}, load control: {}{}]",
         st.model,
-        st.a_bar,
-        st.b_bar,
-        st.s,
-        st.delta_bar,
-        st.force_bar,
+        crate::output::num(st.a_bar),
+        crate::output::num(st.b_bar),
+        crate::output::num(st.s),
+        crate::output::num(st.delta_bar),
+        crate::output::num(st.force_bar),
         st.bc_defect,
         word(st.stable_displacement),
         word(st.stable_load),

@@ -172,6 +172,7 @@ fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
 
 /// The exact load-controlled pull-off and every model's.
 pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
+    let spin = crate::output::Spinner::start("locating the exact pull-off");
     let (po, events) = resolved(rho, &d.tries()?, Exact::pull_off_load)?;
     let models: Vec<_> = ModelId::ALL
         .iter()
@@ -182,6 +183,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
             )
         })
         .collect();
+    drop(spin);
     if json {
         let m: Vec<_> = models
             .iter()
@@ -237,6 +239,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
 
 /// The exact state at a control value and every model's.
 pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) -> Result<()> {
+    let spin = crate::output::Spinner::start("solving the free-boundary problem (2)-(3)");
     let (name, v) = match control {
         ExactControl::Delta(v) => ("delta", v),
         ExactControl::Force(v) => ("force", v),
@@ -262,6 +265,7 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
             )
         })
         .collect();
+    drop(spin);
     if json {
         let m: Vec<_> = model_states
             .iter()

@@ -185,8 +185,8 @@ enum Command {
         after_help = "Example:\n  thinjkr physical --r1 0.01 --r2 0.01 --theta-deg 60 --h1 1e-4 --h2 1e-4 --g1 1e6 --g2 1e6 --work-of-adhesion 0.05 --force 0"
     )]
     Physical {
-        /// TOML file with r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion.
-        #[arg(long)]
+        /// TOML file with r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion (and no other keys); not together with those flags.
+        #[arg(long, conflicts_with_all = ["r1", "r2", "theta_deg", "h1", "h2", "g1", "g2", "work_of_adhesion"])]
         file: Option<std::path::PathBuf>,
         /// Radius of cylinder 1 [m], > 0.
         #[arg(long, allow_hyphen_values = true)]
@@ -252,14 +252,14 @@ fn stability(st: &State) -> String {
 
 fn show(label: &str, st: &State) -> thinjkr::Result<()> {
     outln!(
-        "{label}: model {}, a = {:.6}, s = {:.6}, delta = {:.6}, force = {:.6}, xi = {:.6}, p0 = {:.6}, error (14) = {:.4} %{}{}{}",
+        "{label}: model {}, a = {}, s = {}, delta = {}, force = {}, xi = {}, p0 = {}, error (14) = {:.4} %{}{}{}",
         st.model,
-        st.a,
-        st.s,
-        st.delta,
-        st.force,
-        st.xi,
-        st.p0,
+        output::num(st.a),
+        output::num(st.s),
+        output::num(st.delta),
+        output::num(st.force),
+        output::num(st.xi),
+        output::num(st.p0),
         100.0 * st.bc_error,
         if st.outside_stated_range { " [rho < 0.8: outside the paper's stated range]" } else { "" },
         if st.beyond_size_fold { " [beyond the contact-size fold]" } else { "" },
@@ -522,6 +522,24 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
             reference,
             figures,
         }) => {
+            // every output path is checked before the minutes of work
+            for p in [&out, &reference].into_iter().flatten() {
+                std::fs::OpenOptions::new()
+                    .append(true)
+                    .create(true)
+                    .open(p)
+                    .map_err(|e| {
+                        thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
+                    })?;
+            }
+            if let Some(dir) = &figures {
+                if !dir.is_dir() {
+                    return Err(thinjkr::Error::Io(format!(
+                        "{} is not a directory to draw the figures into",
+                        dir.display()
+                    )));
+                }
+            }
             use rayon::prelude::*;
             use thinjkr::exact::table::{
                 doubling, reference as reference_of, render, row, Quantity, RHOS,
@@ -571,19 +589,19 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                 for (name, svg) in thinjkr::figures::exact_all(&refdata)? {
                     let p = dir.join(name);
                     std::fs::write(&p, svg).map_err(|e| {
-                        thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))
+                        thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
                     })?;
                 }
             }
             if let Some(p) = reference {
                 let json = serde_json::to_string_pretty(&refdata).expect("plain data serialises");
                 std::fs::write(&p, json + "\n").map_err(|e| {
-                    thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))
+                    thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
                 })?;
             }
             match out {
                 Some(p) => std::fs::write(&p, text).map_err(|e| {
-                    thinjkr::Error::NoState(format!("cannot write {}: {e}", p.display()))
+                    thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
                 })?,
                 None => out!("{text}"),
             }
@@ -699,10 +717,13 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
             let cyl = match file {
                 Some(p) => {
                     let text = std::fs::read_to_string(&p).map_err(|e| {
-                        thinjkr::Error::NoState(format!("cannot read {}: {e}", p.display()))
+                        thinjkr::Error::Io(format!("cannot read {}: {e}", p.display()))
                     })?;
                     toml::from_str::<Cylinders>(&text).map_err(|e| {
-                        thinjkr::Error::NoState(format!("bad TOML in {}: {e}", p.display()))
+                        thinjkr::Error::Usage(format!(
+                            "{} is not a valid contact file: {e}",
+                            p.display()
+                        ))
                     })?
                 }
                 None => {

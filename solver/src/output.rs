@@ -84,3 +84,62 @@ macro_rules! outln {
 macro_rules! out {
     ($($t:tt)*) => { $crate::output::text(format_args!($($t)*))? };
 }
+
+/// A spinner on standard error while long work runs, when that is a
+/// terminal; cleared when dropped (before the results are printed).
+pub struct Spinner(Option<indicatif::ProgressBar>);
+
+impl Spinner {
+    /// Start one that says `what`.
+    pub fn start(what: &str) -> Spinner {
+        use std::io::IsTerminal;
+        Spinner(std::io::stderr().is_terminal().then(|| {
+            let b = indicatif::ProgressBar::new_spinner();
+            b.set_style(
+                indicatif::ProgressStyle::with_template("{spinner} {msg}, {elapsed}")
+                    .expect("template"),
+            );
+            b.set_message(what.to_string());
+            b.enable_steady_tick(std::time::Duration::from_millis(200));
+            b
+        }))
+    }
+}
+
+impl Drop for Spinner {
+    fn drop(&mut self) {
+        if let Some(b) = &self.0 {
+            b.finish_and_clear();
+        }
+    }
+}
+
+/// A number for a person: six decimals in the plain range, six significant
+/// digits in scientific notation outside it (no `100000000000000016384.000000`),
+/// and no sign on a value that rounds to zero (no `-0.000000`).
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    let s = if x != 0.0 && !(1e-4..1e7).contains(&a) {
+        format!("{x:.5e}")
+    } else {
+        format!("{x:.6}")
+    };
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn numbers_for_a_person() {
+        assert_eq!(super::num(-1e-12), "-1.00000e-12");
+        assert_eq!(super::num(-0.0), "0.000000");
+        assert_eq!(super::num(-4e-7 * 1e-3), "-4.00000e-10");
+        assert_eq!(super::num(-0.0000001), "-1.00000e-7");
+        assert_eq!(super::num(1e20), "1.00000e20");
+        assert_eq!(super::num(2.5), "2.500000");
+        assert_eq!(super::num(-4.1976054), "-4.197605");
+    }
+}

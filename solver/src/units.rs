@@ -6,11 +6,12 @@
 //! Owns: [`Cylinders`], [`PhysicalState`]. May use: `contact`, `error`.
 
 use crate::contact::{Contact, State};
-use crate::error::{check_range, Result};
+use crate::error::{check_range, Error, Result};
 use serde::{Deserialize, Serialize};
 
-/// Two coated cylinders in SI units.
+/// Two coated cylinders in SI units (as a TOML file: these keys, no others).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Cylinders {
     /// Radius r₁ of cylinder 1 (m).
     pub r1: f64,
@@ -101,7 +102,7 @@ impl Cylinders {
         let big_r2 = 1.0 / k_big;
         let m = 1.0 / (h1.powi(3) / (3.0 * g1) + h2.powi(3) / (3.0 * g2));
         let length = (2.0 * big_r1 * big_r1 * dg / m).powf(1.0 / 6.0);
-        Ok(Scales {
+        let sc = Scales {
             big_r1,
             big_r2,
             rho: (big_r2 / big_r1).min(1.0),
@@ -110,7 +111,29 @@ impl Cylinders {
             approach: (2.0 * dg / (m * big_r1)).cbrt(),
             force: 2.0 * big_r1 * dg,
             pressure: (2.0 * m * dg).sqrt() * length,
-        })
+        };
+        // every scale must be a positive f64: inputs at the ends of f64
+        // can overflow or underflow them
+        for (value, name, from) in [
+            (sc.big_r1, "R1", "r1, r2, theta_deg"),
+            (sc.big_r2, "R2", "r1, r2, theta_deg"),
+            (sc.m, "m", "h1, h2, g1, g2"),
+            (sc.length, "L", "every input"),
+            (sc.approach, "the approach scale", "every input"),
+            (
+                sc.force,
+                "the force scale",
+                "r1, r2, theta_deg, work_of_adhesion",
+            ),
+            (sc.pressure, "the pressure scale", "every input"),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(Error::Usage(format!(
+                    "{name} computed from {from} is not a finite positive number in f64: the inputs are too large or too small together"
+                )));
+            }
+        }
+        Ok(sc)
     }
 
     /// The dimensionless model for this contact.
@@ -119,9 +142,10 @@ impl Cylinders {
         Ok((Contact::new(sc.rho)?, sc))
     }
 
-    /// Convert a dimensionless state to SI units.
-    pub fn to_physical(&self, sc: &Scales, st: State) -> PhysicalState {
-        PhysicalState {
+    /// Convert a dimensionless state to SI units; a value that is not a
+    /// finite f64 is an error naming it.
+    pub fn to_physical(&self, sc: &Scales, st: State) -> Result<PhysicalState> {
+        let p = PhysicalState {
             state: st,
             a: st.a * sc.length,
             b: st.b * sc.length,
@@ -129,30 +153,45 @@ impl Cylinders {
             force: st.force * sc.force,
             p0: st.p0 * sc.pressure,
             h_over_a: self.h1.max(self.h2) / (st.a * sc.length),
+        };
+        for (v, name) in [
+            (p.a, "a"),
+            (p.b, "b"),
+            (p.delta, "delta"),
+            (p.force, "force"),
+            (p.p0, "p0"),
+            (p.h_over_a, "h/a"),
+        ] {
+            if !v.is_finite() {
+                return Err(Error::Usage(format!(
+                    "the result {name} in SI units is not a finite number for these inputs (their magnitudes are at the ends of f64)"
+                )));
+            }
         }
+        Ok(p)
     }
 
     /// The state at approach `delta` (m).
     pub fn at_displacement(&self, delta: f64) -> Result<PhysicalState> {
         let (c, sc) = self.contact()?;
-        Ok(self.to_physical(
+        self.to_physical(
             &sc,
             c.at_displacement(check_range("delta", delta, true, "finite")? / sc.approach)?,
-        ))
+        )
     }
 
     /// The stable state at force `force` (N).
     pub fn at_load(&self, force: f64) -> Result<PhysicalState> {
         let (c, sc) = self.contact()?;
-        Ok(self.to_physical(
+        self.to_physical(
             &sc,
             c.at_load(check_range("force", force, true, "finite")? / sc.force)?,
-        ))
+        )
     }
 
     /// Pull-off under load control.
     pub fn pull_off(&self) -> Result<PhysicalState> {
         let (c, sc) = self.contact()?;
-        Ok(self.to_physical(&sc, c.pull_off_load()?.state))
+        self.to_physical(&sc, c.pull_off_load()?.state)
     }
 }
