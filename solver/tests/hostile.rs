@@ -88,3 +88,48 @@ fn sizes_are_bounded_before_allocation() {
         );
     }
 }
+
+/// `physical` answers with numbers or a typed error, never `null`; a file
+/// and flags together, or an unknown key in the file, are refused.
+#[test]
+fn physical_inputs_at_the_ends_of_f64_are_errors() {
+    let base = "--r1 0.01 --r2 0.01 --theta-deg 60 --h1 1e-4 --h2 1e-4 --g1 1e6 --g2 1e6 --work-of-adhesion 0.05";
+    for (from, to) in [
+        ("--h1 1e-4", "--h1 1e300"),
+        ("--r1 0.01", "--r1 1e-300"),
+        ("--g1 1e6 --g2 1e6", "--g1 1e300 --g2 1e300"),
+    ] {
+        let args = base.replace(from, to);
+        let (status, out, err) = bash(&format!("\"$0\" physical {args}"));
+        assert_eq!(status, Some(1), "{args}: {out}{err}");
+        assert!(
+            !out.contains("null") && err.contains("not a finite positive number"),
+            "{args}: {err}"
+        );
+    }
+    let (status, out, _) = bash(&format!("\"$0\" physical {base} --force 0"));
+    assert_eq!(status, Some(0));
+    assert!(!out.contains("null"), "{out}");
+    let dir = std::env::temp_dir().join(format!("thinjkr-hostile-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("c.toml");
+    std::fs::write(&file, "r1=0.01\nr2=0.01\ntheta_deg=60\nh1=1e-4\nh2=1e-4\ng1=1e6\ng2=1e6\nwork_of_adhesion=0.05\ncolour=1\n").unwrap();
+    let (status, _, err) = bash(&format!("\"$0\" physical --file {}", file.display()));
+    assert_eq!(status, Some(1));
+    assert!(
+        err.contains("unknown field `colour`") && !err.contains("no contact state"),
+        "{err}"
+    );
+    let (status, _, err) = bash(&format!(
+        "\"$0\" physical --file {} --r1 0.02",
+        file.display()
+    ));
+    assert_eq!(status, Some(2), "{err}");
+    let (status, _, err) = bash("\"$0\" physical --file /nonexistent.toml");
+    assert_eq!(status, Some(1));
+    assert!(err.contains("input/output"), "{err}");
+    let (status, _, err) = bash("\"$0\" accuracy --out /nonexistent/x.md");
+    assert_eq!(status, Some(1));
+    assert!(err.contains("cannot write /nonexistent/x.md"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
