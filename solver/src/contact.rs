@@ -572,9 +572,10 @@ impl Contact {
 
     fn no_branch(&self, s_inf: f64) -> Error {
         Error::NoState(format!(
-            "model {} has no branch at rho = {} (s_inf = {s_inf})",
+            "model {} has no branch at rho = {} (its non-adhesive limit is at s = {})",
             self.model_id(),
-            self.rho
+            self.rho,
+            crate::error::rounded(s_inf)
         ))
     }
 
@@ -698,9 +699,17 @@ impl Contact {
         });
         if target > reach {
             return Err(Error::NoState(format!(
-                "{what}: {control:?} = {target:e} is beyond the largest value reached on the branch of model {} at rho = {} ({reach:.6e}, at a_bar = {a_at:.6e}): the branch is followed up to a_bar = 1e4, or less where Newton no longer reaches the adhesive root (a model with quadratic residuals, at large loads)",
+                "{what}: {} = {} is beyond the largest value reached on the branch of model {} at rho = {} ({}, at a_bar = {}): the branch is followed up to a_bar = 1e4, or less where Newton no longer reaches the adhesive root (a model with quadratic residuals, at large loads)",
+                match control {
+                    Control::Delta => "delta",
+                    Control::ABar => "a",
+                    Control::Force => "force",
+                },
+                crate::error::short(target),
                 self.model_id(),
                 self.rho,
+                crate::error::rounded(reach),
+                crate::error::rounded(a_at),
             )));
         }
         Ok(())
@@ -773,7 +782,16 @@ impl Contact {
             a_bar: z[0],
             s: z[1],
             residual: f64::NAN,
-            context: format!("{what}: {control:?} = {target} at rho = {}", self.rho),
+            context: format!(
+                "{what}: {} = {} at rho = {}",
+                match control {
+                    Control::Delta => "delta",
+                    Control::ABar => "a",
+                    Control::Force => "force",
+                },
+                crate::error::short(target),
+                self.rho
+            ),
         })
     }
 
@@ -929,6 +947,30 @@ impl Contact {
     /// Load control: the stable state at force `force` (on the branch from
     /// the non-adhesive end down to pull-off).
     pub fn at_load(&self, force: f64) -> Result<State> {
+        self.at_load_unexplained(force).map_err(|e| match e {
+            Error::OutOfRange {
+                name: "force",
+                value,
+                ..
+            } => match self.pull_off_load() {
+                Ok(p) => Error::OutOfRange {
+                    name: "force",
+                    value,
+                    range: format!(
+                        "[{}, ∞): from the pull-off force of model {} at rho = {}",
+                        crate::error::rounded(p.state.force),
+                        self.model_id(),
+                        self.rho
+                    )
+                    .into(),
+                },
+                Err(_) => e,
+            },
+            other => other,
+        })
+    }
+
+    fn at_load_unexplained(&self, force: f64) -> Result<State> {
         check_range("force", force, true, "finite")?;
         if self.search == Search::Cold && !self.axisymmetric() {
             return self
@@ -942,7 +984,7 @@ impl Contact {
                 return Err(Error::OutOfRange {
                     name: "force",
                     value: force,
-                    range: "[pull-off force, ∞) for this rho and model",
+                    range: "[pull-off force, ∞) for this rho and model".into(),
                 })
             }
             // a model whose force decreases along the whole branch has no
@@ -1045,7 +1087,17 @@ impl Contact {
 
     /// The zero-force state (Section 5).
     pub fn zero_force(&self) -> Result<State> {
-        self.at_load(0.0)
+        self.at_load(0.0).map_err(|e| match e {
+            Error::OutOfRange { name: "force", .. } => Error::NoState(format!(
+                "model {} has no zero-force state at rho = {}: its pull-off force is above zero ({}), so the contact cannot be unloaded to F = 0",
+                self.model_id(),
+                self.rho,
+                self.pull_off_load()
+                    .map(|p| crate::error::rounded(p.state.force))
+                    .unwrap_or_else(|_| "not located".into())
+            )),
+            other => other,
+        })
     }
 }
 

@@ -13,11 +13,12 @@ pub enum Error {
         name: &'static str,
         /// The value given.
         value: f64,
-        /// The allowed range, in words.
-        range: &'static str,
+        /// The allowed range, in words (with its numeric ends where they
+        /// depend on the contact).
+        range: std::borrow::Cow<'static, str>,
     },
     /// Newton's method did not converge.
-    #[error("no convergence after {iterations} iterations at a_bar = {}, s = {} (residual norm {}); {context}", short(*a_bar), short(*s), short(*residual))]
+    #[error("no convergence after {iterations} iterations at a_bar = {}, s = {}{}; {context}", rounded(*a_bar), rounded(*s), residual_words(*residual))]
     NoConvergence {
         /// Iterations done.
         iterations: usize,
@@ -89,6 +90,23 @@ pub fn short(x: f64) -> String {
     }
 }
 
+/// A computed number for a message, to six significant digits (what a
+/// person can act on); "undefined" where it is not a number.
+pub fn rounded(x: f64) -> String {
+    if !x.is_finite() {
+        return "undefined".into();
+    }
+    short(format!("{x:.5e}").parse::<f64>().unwrap_or(x))
+}
+
+fn residual_words(r: f64) -> String {
+    if r.is_finite() {
+        format!(" (residual norm {r:.1e})")
+    } else {
+        String::new()
+    }
+}
+
 /// `Ok(value)` when `value` is finite and `ok` (the caller's range test);
 /// otherwise an [`Error::OutOfRange`] naming the parameter and its range.
 pub(crate) fn check_range(
@@ -100,6 +118,10 @@ pub(crate) fn check_range(
     if value.is_finite() && ok {
         Ok(value)
     } else {
-        Err(Error::OutOfRange { name, value, range })
+        Err(Error::OutOfRange {
+            name,
+            value,
+            range: range.into(),
+        })
     }
 }

@@ -31,7 +31,7 @@ impl Discretisation {
                 return Err(Error::OutOfRange {
                     name: "modes",
                     value: m as f64,
-                    range: "1..=64",
+                    range: "1..=64".into(),
                 })
             }
             Some(m) => vec![m],
@@ -248,7 +248,7 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
         return Err(Error::OutOfRange {
             name,
             value: v,
-            range: "finite",
+            range: "finite".into(),
         });
     }
     let st = resolved(rho, &d.tries()?, |ex| ex.at(control))?;

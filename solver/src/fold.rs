@@ -128,6 +128,14 @@ pub fn locate(
         a_bar: z[0],
         s: z[1],
         residual: f64::NAN,
-        context: format!("{which:?} fold at rho = {rho}, delta_bar = {}", z[2]),
+        context: format!(
+            "the {} fold at rho = {rho}, delta = {}",
+            match which {
+                FoldCondition::Displacement => "displacement-control",
+                FoldCondition::Load => "load-control",
+                FoldCondition::ContactSize => "contact-size",
+            },
+            crate::error::rounded(z[2])
+        ),
     })
 }

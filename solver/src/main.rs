@@ -377,7 +377,9 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                     let states = c.at_contact_size(a)?;
                     if states.is_empty() {
                         return Err(thinjkr::Error::NoState(format!(
-                            "no state with a = {a} at rho = {rho}"
+                            "no state with a = {} at rho = {}",
+                            thinjkr::error::short(a),
+                            thinjkr::error::short(rho)
                         )));
                     }
                     if j {
@@ -731,7 +733,7 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                         v.ok_or(thinjkr::Error::OutOfRange {
                             name: n,
                             value: f64::NAN,
-                            range: "required",
+                            range: "required".into(),
                         })
                     };
                     Cylinders {

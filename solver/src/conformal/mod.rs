@@ -166,7 +166,7 @@ impl Conformal {
             .ok_or(Error::OutOfRange {
                 name: "K of conformal:K",
                 value: terms as f64,
-                range: "1 ..= 8",
+                range: "1 ..= 8".into(),
             })
     }
 

@@ -434,7 +434,7 @@ impl Contact {
                             return Err(Error::OutOfRange {
                                 name: "force",
                                 value: target,
-                                range: "[pull-off force, ∞) for this rho and model",
+                                range: "[pull-off force, ∞) for this rho and model".into(),
                             });
                         }
                     }

@@ -54,6 +54,15 @@ pub enum ExactControl {
     Force(f64),
 }
 
+impl std::fmt::Display for ExactControl {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ExactControl::Delta(d) => write!(f, "delta = {}", crate::error::short(*d)),
+            ExactControl::Force(v) => write!(f, "force = {}", crate::error::short(*v)),
+        }
+    }
+}
+
 /// One traced point.
 #[derive(Clone, Debug, Serialize)]
 pub struct BranchPoint {
@@ -529,8 +538,9 @@ impl Exact {
                 Some(a_bar) if ends.len() < 2 => a_start = a_bar + 0.3 * direction,
                 _ => {
                     return Err(Error::NoState(format!(
-                        "exact state at rho = {}: {control:?} is not reached: {}",
+                        "exact state at rho = {}: {} is not reached: {}",
                         self.rho,
+                        control,
                         ends.join("; then ")
                     )))
                 }

@@ -391,28 +391,28 @@ impl Exact {
             return Err(Error::OutOfRange {
                 name: "rho",
                 value: rho,
-                range: "(0, 1]",
+                range: "(0, 1]".into(),
             });
         }
         if truncation.modes > MAX_MODES {
             return Err(Error::OutOfRange {
                 name: "modes",
                 value: truncation.modes as f64,
-                range: "1 ..= 128 (the contour series' length)",
+                range: "1 ..= 128 (the contour series' length)".into(),
             });
         }
         if truncation.points > MAX_POINTS {
             return Err(Error::OutOfRange {
                 name: "points",
                 value: truncation.points as f64,
-                range: "at most 4096 (memory and time grow as points²; the fine check uses twice as many)",
+                range: "at most 4096 (memory and time grow as points²; the fine check uses twice as many)".into(),
             });
         }
         if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {
             return Err(Error::OutOfRange {
                 name: "truncation.points",
                 value: truncation.points as f64,
-                range: "at least 4 · modes + 8 (and modes ≥ 1)",
+                range: "at least 4 · modes + 8 (and modes ≥ 1)".into(),
             });
         }
         Ok(Exact {
