@@ -148,7 +148,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
+        /// Model: max (the paper's, default), apexes, energy, apex45 (conformal:K and exact give states, not curves: use solve).
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelChoice,
         /// Number of points, 2 ..= 100000.

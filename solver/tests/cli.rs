@@ -23,9 +23,33 @@ fn guide_examples_print_what_the_guide_shows() {
     let lines: Vec<&str> = guide.lines().collect();
     let mut checked = 0;
     for (k, line) in lines.iter().enumerate() {
-        if let Some(cmd) = line.strip_prefix("$ thinjkr ") {
+        let run = if let Some(cmd) = line.strip_prefix("$ thinjkr ") {
             let args: Vec<&str> = cmd.split_whitespace().collect();
-            let (ok, out, err) = thinjkr(&args);
+            Some((cmd.to_string(), thinjkr(&args)))
+        } else if let Some(pipeline) = line.strip_prefix("$ ").filter(|l| l.contains("| thinjkr "))
+        {
+            // a shell pipeline into thinjkr (the batch example)
+            let script = pipeline.replace(
+                "| thinjkr ",
+                &format!("| {} ", env!("CARGO_BIN_EXE_thinjkr")),
+            );
+            let o = std::process::Command::new("bash")
+                .arg("-c")
+                .arg(&script)
+                .output()
+                .unwrap();
+            Some((
+                pipeline.to_string(),
+                (
+                    o.status.success(),
+                    String::from_utf8_lossy(&o.stdout).into_owned(),
+                    String::from_utf8_lossy(&o.stderr).into_owned(),
+                ),
+            ))
+        } else {
+            None
+        };
+        if let Some((cmd, (ok, out, err))) = run {
             assert!(ok, "{cmd}: {err}");
             // the lines the guide shows below the command, up to the next one
             let expected: Vec<&str> = lines[k + 1..]
