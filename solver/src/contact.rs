@@ -972,6 +972,20 @@ impl Contact {
 
     fn at_load_unexplained(&self, force: f64) -> Result<State> {
         check_range("force", force, true, "finite")?;
+        self.at_load_inside(force).or_else(|e| {
+            // the range [pull-off force, ∞) is closed: at its end (to 1e-9,
+            // where Newton on the load is singular) the state is the
+            // pull-off's, the fold where the stable branch ends
+            match self.pull_off_load() {
+                Ok(p) if (force - p.state.force).abs() <= 1e-9 * (1.0 + p.state.force.abs()) => {
+                    Ok(p.state)
+                }
+                _ => Err(e),
+            }
+        })
+    }
+
+    fn at_load_inside(&self, force: f64) -> Result<State> {
         if self.search == Search::Cold && !self.axisymmetric() {
             return self
                 .cold_crossings(Control::Force, force, "load control", true, true)?

@@ -136,3 +136,25 @@ fn physical_inputs_at_the_ends_of_f64_are_errors() {
     assert!(err.contains("cannot write /nonexistent/x.md"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The range of `--force` is closed: at exactly the pull-off force that
+/// `pull-off --json` prints, every model solves, to the pull-off state.
+#[test]
+fn the_pull_off_force_itself_solves() {
+    use thinjkr::{Contact, ModelId};
+    for m in ModelId::ALL {
+        for rho in [1.0, 0.9, 0.8, 0.5] {
+            let c = Contact::with_model(m, rho).unwrap();
+            let Ok(p) = c.pull_off_load() else { continue };
+            // the value as printed by --json (shortest round trip)
+            let printed: f64 = format!("{:?}", p.state.force).parse().unwrap();
+            let st = c
+                .at_load(printed)
+                .unwrap_or_else(|e| panic!("{m} at rho = {rho}: {e}"));
+            assert!(
+                (st.a - p.state.a).abs() < 1e-6 * p.state.a,
+                "{m} at rho = {rho}"
+            );
+        }
+    }
+}
