@@ -381,8 +381,11 @@ pub struct Exact {
 pub const MAX_MODES: usize = 128;
 /// The most quadrature points accepted ([`Truncation::points`]): the
 /// boundary integral equation's matrices grow as points², the fine check
-/// uses twice as many; 4096 points take about 0.3 GB at most.
-pub const MAX_POINTS: usize = 4096;
+/// uses twice as many. Measured with 64 modes and 2048 points
+/// (`thinjkr exact solve --rho 0.9 --force 1`): 0.52 GB and about 2 min;
+/// 4096 points took over 2 GB. The doubling checks of `thinjkr accuracy`
+/// use at most 1536.
+pub const MAX_POINTS: usize = 2048;
 
 impl Exact {
     /// The exact problem at `rho` ∈ (0, 1].
@@ -405,7 +408,7 @@ impl Exact {
             return Err(Error::OutOfRange {
                 name: "points",
                 value: truncation.points as f64,
-                range: "at most 4096 (memory and time grow as points²; the fine check uses twice as many)".into(),
+                range: "at most 2048 (memory and time grow as points²: 2048 points with 64 modes take about 0.5 GB and 2 min)".into(),
             });
         }
         if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {
