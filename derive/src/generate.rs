@@ -55,9 +55,7 @@ pub fn outputs() -> Result<Vec<Output>, String> {
     let generated = crate::codegen_conformal::outputs(&family)?;
     out[0]
         .contents
-        .push_str(&crate::codegen_conformal::derivation_section(
-            &family, &generated,
-        ));
+        .push_str(&crate::codegen_conformal::derivation_section(&family));
     if let Some(acc) = out
         .iter_mut()
         .find(|o| o.path.as_os_str() == "docs/codegen-accuracy.md")

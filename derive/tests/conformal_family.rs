@@ -28,7 +28,15 @@ fn a_family_of_ones_own_derives_checks_and_generates() {
         .find(|o| o.path.ends_with("k3.rs"))
         .expect("a module for K = 3");
     assert!(k3.contents.contains("Model `mine:3`"));
-    assert!(k3.contents.contains("pub static POTENTIAL"));
+    // 149 monomials for K = 3, as an independent implementation counted (issue 20)
+    assert!(k3
+        .contents
+        .contains("pub const POTENTIAL_ROWS: usize = 149;"));
+    let table = files
+        .iter()
+        .find(|o| o.path.ends_with("table.rs"))
+        .expect("the family's table");
+    assert!(table.contents.contains("pub static POTENTIAL"));
 }
 
 #[test]

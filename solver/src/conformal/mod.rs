@@ -39,10 +39,16 @@ pub struct Tables {
     pub terms: usize,
     /// The powers n_k of ζ in the map.
     pub powers: &'static [u16],
-    /// Π̄(c, δ̄; μ) rows.
+    /// Π̄(c, δ̄; μ) rows of the family's largest member …
     pub potential: &'static [(u64, f64)],
-    /// ∂p̄/∂r at |ζ| = 1: (n, rows of the coefficient of cos nθ).
+    /// … of which this member's are the first `potential_rows`.
+    pub potential_rows: usize,
+    /// ∂p̄/∂r at |ζ| = 1 of the largest member: (n, rows of the
+    /// coefficient of cos nθ) …
     pub slope: &'static [(u16, &'static [(u64, f64)])],
+    /// … of which this member has the modes n listed here, each with its
+    /// leading rows.
+    pub slope_rows: &'static [(u16, usize)],
 }
 
 /// ā at which the pull-off trace starts, as for the exact solution
@@ -149,11 +155,17 @@ impl Conformal {
             .map(|tables| Conformal {
                 tables,
                 decoded: DECODED[tables.terms - 1].get_or_init(|| {
-                    let potential = poly::Decoded::new(tables.potential, tables.terms);
+                    let potential = poly::Decoded::new(
+                        &tables.potential[..tables.potential_rows],
+                        tables.terms,
+                    );
                     let slope: Vec<_> = tables
-                        .slope
+                        .slope_rows
                         .iter()
-                        .map(|(n, rows)| (*n, poly::Decoded::new(rows, tables.terms)))
+                        .filter_map(|&(n, len)| {
+                            let (_, rows) = tables.slope.iter().find(|(m, _)| *m == n)?;
+                            Some((n, poly::Decoded::new(&rows[..len], tables.terms)))
+                        })
                         .collect();
                     Decoded {
                         potential_circle: potential.near_circle(),

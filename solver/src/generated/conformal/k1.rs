@@ -5,18 +5,7 @@
 
 /// The powers of ζ in the map w(ζ) = Σ c_k ζ^(n_k).
 pub const POWERS: [u16; 1] = [1];
-/// Π̄(c, δ̄; μ) of `conformal:1`: 7 monomials, coefficients rounded from the exact rationals times π.
-pub static POTENTIAL: &[(u64, f64)] = &[
-    (2, -1.5707963267948966),
-    (8589934596, 0.19634954084936207),
-    (4294967302, -0.03272492347489368),
-    (73014444038, -0.03272492347489368),
-    (8, 0.0018748654074157837),
-    (68719476744, 0.0023861923367109973),
-    (137438953480, 0.0018748654074157837),
-];
-/// ∂p̄/∂r at |ζ| = 1 as Σ g_n(c, δ̄; μ) cos(nθ): (n, rows of g_n).
-pub static SLOPE: &[(u16, &[(u64, f64)])] = &[
-    (0, &[(4294967298, -0.5), (4, 0.0625), (68719476740, 0.0625)]),
-    (2, &[(4, 0.041666666666666664), (68719476740, -0.041666666666666664)]),
-];
+/// Π̄(c, δ̄; μ) of `conformal:1`: the first 7 rows of `table::POTENTIAL`.
+pub const POTENTIAL_ROWS: usize = 7;
+/// The boundary slope's modes n and how many leading rows of `table::SLOPE`'s mode n are this member's.
+pub const SLOPE_ROWS: &[(u16, usize)] = &[(0, 3), (2, 2)];
