@@ -117,6 +117,10 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
     let max_steps = 20_000.max(50 * points);
     let mut passed_fold = false;
     let mut reached_end = false;
+    // the end of the trace, relative to the start: at small ρ the whole
+    // branch is elongated (s of order ρ^(1/2)), and a fixed s would end it
+    // before the pull-off
+    let s_end = 0.05 * start.s;
     for _ in 0..max_steps {
         let mut accepted = None;
         for _ in 0..30 {
@@ -177,7 +181,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         if t[0] > 0.0 {
             passed_fold = true; // the contact size grows again
         }
-        if z[1] < 0.05 || (passed_fold && z[0] > start.a) {
+        if z[1] < s_end || (passed_fold && z[0] > start.a) {
             reached_end = true;
             break;
         }
@@ -186,8 +190,9 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         // never a silently shortened curve: say where it stopped
         let z = from_z(&w);
         return Err(Error::NoState(format!(
-            "curve at rho = {}: the trace did not reach its end (s < 0.05, or ā back above its start past the contact-size fold) within {max_steps} steps; it stopped at a_bar = {}, s = {}, delta_bar = {}",
+            "curve at rho = {}: the trace did not reach its end (s < {}, a twentieth of its start, or ā back above its start past the contact-size fold) within {max_steps} steps; it stopped at a_bar = {}, s = {}, delta_bar = {}",
             short(rho),
+            crate::error::rounded(s_end),
             short(z[0]),
             short(z[1]),
             short(z[2])
@@ -225,6 +230,18 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
             if f1 < f0 && f1 <= f2 {
                 folds.push(refine(contact, FoldKind::Load, &states_all[k])?);
             }
+        }
+    }
+    // a curve reaches the pull-off of its model, or says why not
+    if !folds.iter().any(|f| f.kind == FoldKind::Load) {
+        if let Ok(p) = contact.pull_off_load() {
+            return Err(Error::NoState(format!(
+                "curve at rho = {}: the trace ended at s = {} without reaching the pull-off (force {} at s = {})",
+                short(rho),
+                crate::error::rounded(states_all.last().map(|st| st.s).unwrap_or(f64::NAN)),
+                crate::error::rounded(p.state.force),
+                crate::error::rounded(p.state.s)
+            )));
         }
     }
     // resample evenly in arclength

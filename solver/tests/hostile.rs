@@ -158,3 +158,28 @@ fn the_pull_off_force_itself_solves() {
         }
     }
 }
+
+/// A curve reaches the pull-off of its model, at small ρ too (where the
+/// whole branch is elongated): its load fold is the pull-off state.
+#[test]
+fn curves_reach_the_pull_off_at_small_rho() {
+    use thinjkr::curve::{trace, FoldKind};
+    use thinjkr::Contact;
+    for rho in [0.001, 0.003, 0.1] {
+        let c = Contact::new(rho).unwrap();
+        let curve = trace(&c, 200, 20.0).unwrap();
+        let po = c.pull_off_load().unwrap();
+        let fold = curve
+            .folds
+            .iter()
+            .find(|f| f.kind == FoldKind::Load)
+            .unwrap_or_else(|| panic!("rho = {rho}: no load fold"));
+        assert!(
+            (fold.state.force / po.state.force - 1.0).abs() < 1e-9,
+            "rho = {rho}: {} vs {}",
+            fold.state.force,
+            po.state.force
+        );
+        assert!(curve.states.first().unwrap().delta > curve.states.last().unwrap().delta);
+    }
+}
