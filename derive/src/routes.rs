@@ -130,7 +130,7 @@ fn quadrature_over_ellipse(
 }
 
 /// Gauss–Legendre nodes and weights on [−1, 1] by Newton on P_n.
-fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
+pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
     let mut x = vec![0.0; n];
     let mut w = vec![0.0; n];
     for i in 0..n {

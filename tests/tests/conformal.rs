@@ -130,7 +130,7 @@ fn potential_equals_a_quadrature_of_its_definition() {
                     })
                     .sum::<f64>()
             };
-            let (nodes, weights) = gauss_legendre(64);
+            let (nodes, weights) = thinjkr_derive::routes::gauss_legendre(64);
             let mut pi_bar = 0.0;
             for (&u, &wu) in nodes.iter().zip(&weights) {
                 let r = 0.5 * (u + 1.0);
@@ -185,38 +185,4 @@ fn conformal_1_is_the_energy_model_on_the_circle() {
             "{ellipse} vs {circle}"
         );
     }
-}
-
-fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
-    let mut x = vec![0.0; n];
-    let mut w = vec![0.0; n];
-    for i in 0..n {
-        let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-        for _ in 0..100 {
-            let (mut p1, mut p2) = (1.0, 0.0);
-            for j in 0..n {
-                let p3 = p2;
-                p2 = p1;
-                p1 = ((2 * j + 1) as f64 * z * p2 - j as f64 * p3) / (j + 1) as f64;
-            }
-            let pp = n as f64 * (z * p1 - p2) / (z * z - 1.0);
-            let dz = p1 / pp;
-            z -= dz;
-            if dz.abs() < 1e-16 {
-                let pp = {
-                    let (mut p1, mut p2) = (1.0, 0.0);
-                    for j in 0..n {
-                        let p3 = p2;
-                        p2 = p1;
-                        p1 = ((2 * j + 1) as f64 * z * p2 - j as f64 * p3) / (j + 1) as f64;
-                    }
-                    n as f64 * (z * p1 - p2) / (z * z - 1.0)
-                };
-                x[i] = z;
-                w[i] = 2.0 / ((1.0 - z * z) * pp * pp);
-                break;
-            }
-        }
-    }
-    (x, w)
 }
