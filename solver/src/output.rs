@@ -114,12 +114,13 @@ impl Drop for Spinner {
     }
 }
 
-/// A number for a person: six decimals in the plain range, six significant
-/// digits in scientific notation outside it (no `100000000000000016384.000000`),
-/// and no sign on a value that rounds to zero (no `-0.000000`).
+/// A number for a person: six decimals (a round-off residue such as the
+/// force 1e-15 of a zero-force state reads 0.000000, without a sign), six
+/// significant digits in scientific notation from 1e7 up (no
+/// `100000000000000016384.000000`). `--json` carries every digit.
 pub fn num(x: f64) -> String {
     let a = x.abs();
-    let s = if x != 0.0 && !(1e-4..1e7).contains(&a) {
+    let s = if a >= 1e7 {
         format!("{x:.5e}")
     } else {
         format!("{x:.6}")
@@ -134,10 +135,10 @@ pub fn num(x: f64) -> String {
 mod tests {
     #[test]
     fn numbers_for_a_person() {
-        assert_eq!(super::num(-1e-12), "-1.00000e-12");
+        assert_eq!(super::num(-1e-12), "0.000000");
         assert_eq!(super::num(-0.0), "0.000000");
-        assert_eq!(super::num(-4e-7 * 1e-3), "-4.00000e-10");
-        assert_eq!(super::num(-0.0000001), "-1.00000e-7");
+        assert_eq!(super::num(1.76806e-15), "0.000000");
+        assert_eq!(super::num(-0.0000016), "-0.000002");
         assert_eq!(super::num(1e20), "1.00000e20");
         assert_eq!(super::num(2.5), "2.500000");
         assert_eq!(super::num(-4.1976054), "-4.197605");
