@@ -947,13 +947,25 @@ impl Contact {
     /// Load control: the stable state at force `force` (on the branch from
     /// the non-adhesive end down to pull-off).
     pub fn at_load(&self, force: f64) -> Result<State> {
-        self.at_load_unexplained(force).map_err(|e| match e {
-            Error::OutOfRange {
-                name: "force",
-                value,
-                ..
-            } => match self.pull_off_load() {
-                Ok(p) => Error::OutOfRange {
+        check_range("force", force, true, "finite")?;
+        // a solve that fails looks at the pull-off once: the range
+        // [pull-off force, ∞) is closed, and at its end (to 1e-9, where
+        // Newton on the load is singular) the state is the pull-off's, the
+        // fold where the stable branch ends; below it, the range error
+        // states the bound
+        self.at_load_inside(force).or_else(|e| {
+            let Ok(p) = self.pull_off_load() else {
+                return Err(e);
+            };
+            if (force - p.state.force).abs() <= 1e-9 * (1.0 + p.state.force.abs()) {
+                return Ok(p.state);
+            }
+            Err(match e {
+                Error::OutOfRange {
+                    name: "force",
+                    value,
+                    ..
+                } => Error::OutOfRange {
                     name: "force",
                     value,
                     range: format!(
@@ -964,24 +976,8 @@ impl Contact {
                     )
                     .into(),
                 },
-                Err(_) => e,
-            },
-            other => other,
-        })
-    }
-
-    fn at_load_unexplained(&self, force: f64) -> Result<State> {
-        check_range("force", force, true, "finite")?;
-        self.at_load_inside(force).or_else(|e| {
-            // the range [pull-off force, ∞) is closed: at its end (to 1e-9,
-            // where Newton on the load is singular) the state is the
-            // pull-off's, the fold where the stable branch ends
-            match self.pull_off_load() {
-                Ok(p) if (force - p.state.force).abs() <= 1e-9 * (1.0 + p.state.force.abs()) => {
-                    Ok(p.state)
-                }
-                _ => Err(e),
-            }
+                other => other,
+            })
         })
     }
 

@@ -586,7 +586,7 @@ impl Conformal {
         let n = k + 1;
         let h = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
         let hcc = h.view((0, 0), (k, k)).into_owned();
-        let (stable_d, modes) = self.modes(&hcc, rho);
+        let (stable_d, modes) = self.modes(&hcc);
         let stable_l = positive_definite(&h);
         let force = e.grad[k];
         let out = ConformalState {
@@ -621,7 +621,7 @@ impl Conformal {
     /// contour's radius by Re(δw(e^{iθ}) e^{−iθ}) = Σ δc_k cos((n_k − 1)θ),
     /// so the mode of c_k is n_k − 1; each negative eigenvector reports the
     /// mode of its largest component.
-    fn modes(&self, hcc: &DMatrix<f64>, _rho: f64) -> (bool, Vec<u32>) {
+    fn modes(&self, hcc: &DMatrix<f64>) -> (bool, Vec<u32>) {
         let eig = hcc.clone().symmetric_eigen();
         let top = eig.eigenvalues.amax().max(1e-300);
         let mut modes = Vec::new();

@@ -13,7 +13,7 @@
 //!
 //! Owns: [`to_extremum`]. May use: the parent module, nalgebra.
 
-use super::Conformal;
+use super::{Conformal, Equations};
 use crate::error::{short, Error, Result};
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -42,12 +42,14 @@ const MAX_STEPS: usize = 20_000;
 struct Point {
     x: DVector<f64>,
     t: DVector<f64>,
+    /// The equations at x (one evaluation serves the tangent, the
+    /// monitored rate and the fold record).
+    e: Equations,
 }
 
-/// The unit tangent at x, oriented like `prev`.
-fn tangent(m: &Conformal, x: &DVector<f64>, rho: f64, prev: &DVector<f64>) -> Option<DVector<f64>> {
-    let e = m.equations(x, rho);
-    let n = x.len();
+/// The unit tangent where the equations are `e`, oriented like `prev`.
+fn tangent(e: &Equations, prev: &DVector<f64>) -> Option<DVector<f64>> {
+    let n = prev.len();
     let mut a = DMatrix::zeros(n, n);
     a.rows_mut(0, n - 1).copy_from(&e.j);
     a.row_mut(n - 1).copy_from(&prev.transpose());
@@ -58,8 +60,14 @@ fn tangent(m: &Conformal, x: &DVector<f64>, rho: f64, prev: &DVector<f64>) -> Op
     (norm.is_finite() && norm > 0.0).then(|| t / norm)
 }
 
-/// Corrector: x with ∇_c Π̄ = 0 and t·(x − base) = sigma, from base + sigma t.
-fn correct(m: &Conformal, base: &Point, sigma: f64, rho: f64) -> Option<(DVector<f64>, usize)> {
+/// Corrector: x with ∇_c Π̄ = 0 and t·(x − base) = sigma, from base + sigma t;
+/// with the iterations used and the equations at x.
+fn correct(
+    m: &Conformal,
+    base: &Point,
+    sigma: f64,
+    rho: f64,
+) -> Option<(DVector<f64>, usize, Equations)> {
     let n = base.x.len();
     let mut x = &base.x + &base.t * sigma;
     for it in 0..12 {
@@ -77,17 +85,18 @@ fn correct(m: &Conformal, base: &Point, sigma: f64, rho: f64) -> Option<(DVector
         }
         if dx.norm() < 1e-12 * (1.0 + x.norm()) {
             let e = m.equations(&x, rho);
-            return (e.r.norm() / e.scale < 1e-10).then_some((x, it + 1));
+            return (e.r.norm() / e.scale < 1e-10).then_some((x, it + 1, e));
         }
     }
     None
 }
 
-/// The monitored quantity's rate along the tangent.
-fn rate(m: &Conformal, p: &Point, rho: f64, control: PullOffControl) -> f64 {
+/// The monitored quantity's rate along the tangent `t` where the equations
+/// are `e`.
+fn rate(e: &Equations, t: &DVector<f64>, control: PullOffControl) -> f64 {
     match control {
-        PullOffControl::Load => m.equations(&p.x, rho).force_grad.dot(&p.t),
-        PullOffControl::Displacement => p.t[p.t.len() - 1],
+        PullOffControl::Load => e.force_grad.dot(t),
+        PullOffControl::Displacement => t[t.len() - 1],
     }
 }
 
@@ -104,24 +113,26 @@ pub fn to_extremum(
     // start towards smaller ā = Σ c_k
     let mut towards = DVector::zeros(n);
     towards.rows_mut(0, k).fill(-1.0);
-    let t0 = tangent(m, x0, rho, &towards).ok_or_else(|| stuck(m, x0, rho, "at its start"))?;
+    let e0 = m.equations(x0, rho);
+    let t0 = tangent(&e0, &towards).ok_or_else(|| stuck(m, x0, rho, "at its start"))?;
     let mut p = Point {
         x: x0.clone(),
         t: t0,
+        e: e0,
     };
     let mut h = 0.02;
     let mut folds = Vec::new();
-    let mut g = rate(m, &p, rho, control);
+    let mut g = rate(&p.e, &p.t, control);
     // the branch starts on the side where the load falls as the contact shrinks
     for _ in 0..MAX_STEPS {
-        let Some((y, iterations)) = correct(m, &p, h, rho) else {
+        let Some((y, iterations, ey)) = correct(m, &p, h, rho) else {
             h *= 0.5;
             if h < 1e-10 {
                 return Err(stuck(m, &p.x, rho, "the corrector fails for every step"));
             }
             continue;
         };
-        let Some(ty) = tangent(m, &y, rho, &p.t) else {
+        let Some(ty) = tangent(&ey, &p.t) else {
             return Err(stuck(m, &y, rho, "the tangent is undefined"));
         };
         if ty.dot(&p.t) < 0.995 {
@@ -133,13 +144,13 @@ pub fn to_extremum(
             continue;
         }
         m.univalence(&y.as_slice()[..k])?;
-        let q = Point { x: y, t: ty };
-        let gq = rate(m, &q, rho, control);
+        let q = Point { x: y, t: ty, e: ey };
+        let gq = rate(&q.e, &q.t, control);
         let a_rate = |pt: &Point| pt.t.rows(0, k).sum();
         if a_rate(&p) * a_rate(&q) < 0.0 {
             folds.push(Extremum {
                 a_bar: q.x.rows(0, k).sum(),
-                force_bar: m.equations(&q.x, rho).force,
+                force_bar: q.e.force,
             });
         }
         // F̄ (or δ̄) falls along the trace until the extremum: its rate
@@ -175,29 +186,29 @@ fn refine(
     control: PullOffControl,
 ) -> Result<DVector<f64>> {
     let (mut a, mut b, mut fa, mut fb) = (0.0, h, g0, g1);
-    let mut best = None;
     for _ in 0..100 {
         let s = (a * fb - b * fa) / (fb - fa);
-        let (x, _) =
+        let (x, _, e) =
             correct(m, p, s, rho).ok_or_else(|| stuck(m, &p.x, rho, "refining the extremum"))?;
-        let t =
-            tangent(m, &x, rho, &p.t).ok_or_else(|| stuck(m, &x, rho, "refining the extremum"))?;
-        let fs = rate(m, &Point { x: x.clone(), t }, rho, control);
-        best = Some(x);
-        if fs == 0.0 || (b - a).abs() < 1e-14 {
-            break;
-        }
+        let t = tangent(&e, &p.t).ok_or_else(|| stuck(m, &x, rho, "refining the extremum"))?;
+        let fs = rate(&e, &t, control);
         if fs * fb < 0.0 {
             (a, fa) = (b, fb);
         } else {
             fa *= 0.5; // Illinois: the retained end's value is halved
         }
         (b, fb) = (s, fs);
-        if (b - a).abs() < 1e-13 * (1.0 + h) {
-            break;
+        if fs == 0.0 || (b - a).abs() < 1e-13 * (1.0 + h) {
+            return Ok(x);
         }
     }
-    best.ok_or_else(|| stuck(m, &p.x, rho, "refining the extremum"))
+    // never the last iterate in place of a located extremum
+    Err(stuck(
+        m,
+        &p.x,
+        rho,
+        "the extremum's location did not converge in 100 Illinois steps",
+    ))
 }
 
 fn stuck(m: &Conformal, x: &DVector<f64>, rho: f64, why: &str) -> Error {
