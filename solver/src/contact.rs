@@ -27,6 +27,9 @@
 //! May use: `model`, `newton`, `fold`, `error`.
 
 mod cold;
+mod near_circle;
+
+pub use near_circle::NEAR_CIRCLE;
 
 use crate::error::{check_range, Error, Result};
 use crate::fold::{self, FoldCondition};
@@ -109,6 +112,10 @@ pub enum FoldBasis {
     ModelFold,
     /// The minimum of F̄ on the exact axisymmetric solution (ρ = 1).
     AxisymmetricMinimum,
+    /// At ρ = 1, where the circle loses stability to an elliptic contour
+    /// under displacement control (det ∂r/∂(ā, s) = 0 at s = 1): the limit
+    /// of the folds at ρ < 1.
+    CircleBifurcation,
 }
 
 /// Pull-off: the state where a controlled branch ends, and why.
@@ -192,8 +199,9 @@ impl Control {
     }
 }
 
-/// Tolerance within which ρ counts as 1 (the axisymmetric case).
-const AXISYMMETRIC: f64 = 1e-12;
+/// Tolerance within which ρ counts as 1 (the axisymmetric case): none, only
+/// ρ = 1 itself (near it, module `near_circle`).
+const AXISYMMETRIC: f64 = 0.0;
 
 impl Contact {
     /// The paper's model (`max`) at radii ratio `rho` ∈ (0, 1].
@@ -914,6 +922,11 @@ impl Contact {
             return Ok(st);
         }
         let what = "displacement control";
+        if self.near_circle() {
+            let circle = self.circle()?.at_displacement(delta)?;
+            let anchor = self.anchor()?.at_displacement(delta)?;
+            return self.near_circle_controlled(&circle, &anchor, Control::Delta, delta, what);
+        }
         match self.search {
             Search::Cold => self.cold_crossings(Control::Delta, delta, what, true, false)?,
             Search::Walk => self.crossings(Control::Delta, delta, what)?,
@@ -930,6 +943,17 @@ impl Contact {
         if self.axisymmetric() {
             return Ok(vec![self.axisymmetric_state(a)?]);
         }
+        if self.near_circle() {
+            let circle = self.circle()?.axisymmetric_state(a)?;
+            return self
+                .anchor()?
+                .at_contact_size(a)?
+                .iter()
+                .map(|anchor| {
+                    self.near_circle_controlled(&circle, anchor, Control::ABar, a, "contact-size control")
+                })
+                .collect();
+        }
         self.crossings(Control::ABar, a, "contact-size control")
     }
 
@@ -939,6 +963,10 @@ impl Contact {
             return Err(Error::NoState(
                 "no fold in a_bar at rho = 1: a_bar decreases to 0".into(),
             ));
+        }
+        if self.near_circle() {
+            let anchor = self.anchor()?.size_fold()?;
+            return self.near_circle_sqrt_fold(&anchor, FoldCondition::ContactSize);
         }
         let guess = self.branch_minimum(Control::ABar, "fold of the contact size")?;
         self.refine_fold(&guess, FoldCondition::ContactSize)
@@ -982,6 +1010,11 @@ impl Contact {
     }
 
     fn at_load_inside(&self, force: f64) -> Result<State> {
+        if self.near_circle() {
+            let circle = self.circle()?.at_load_inside(force)?;
+            let anchor = self.anchor()?.at_load_inside(force)?;
+            return self.near_circle_controlled(&circle, &anchor, Control::Force, force, "load control");
+        }
         if self.search == Search::Cold && !self.axisymmetric() {
             return self
                 .cold_crossings(Control::Force, force, "load control", true, true)?
@@ -1024,6 +1057,15 @@ impl Contact {
             }
             return Ok(out);
         }
+        if self.near_circle() {
+            let circle = self.circle()?.at_load_all(force)?;
+            let anchor = self.anchor()?.at_load_all(force)?;
+            return circle
+                .iter()
+                .zip(&anchor)
+                .map(|(c, a)| self.near_circle_controlled(c, a, Control::Force, force, "load control"))
+                .collect();
+        }
         self.crossings(Control::Force, force, "load control")
     }
 
@@ -1042,6 +1084,15 @@ impl Contact {
                 basis: FoldBasis::AxisymmetricMinimum,
             });
         }
+        if self.near_circle() {
+            let circle = self.circle()?.axisymmetric_pull_off()?;
+            let anchor = self.anchor()?.pull_off_load()?.state;
+            return Ok(PullOff {
+                state: self.near_circle_fold(&circle, &anchor, FoldCondition::Load)?,
+                control: FoldCondition::Load,
+                basis,
+            });
+        }
         let guess = self.branch_minimum(Control::Force, "pull-off under load control")?;
         Ok(PullOff {
             state: self.refine_fold(&guess, FoldCondition::Load)?,
@@ -1058,8 +1109,51 @@ impl Contact {
     /// minimum of δ̄ or the fold of the contact size, whichever comes first;
     /// labelled a fold of the model, not a proven instability.
     pub fn pull_off_displacement(&self) -> Result<PullOff> {
+        let basis = if self.has_energy() {
+            FoldBasis::EnergyInstability
+        } else {
+            FoldBasis::ModelFold
+        };
+        let from_anchor = |e: Error| match e {
+            Error::NoState(why) => Error::NoState(format!(
+                "at rho = {}, as at the near-circular anchor rho = {}: {why}",
+                crate::error::short(self.rho),
+                crate::error::short(1.0 - NEAR_CIRCLE)
+            )),
+            other => other,
+        };
         if self.axisymmetric() {
-            return Err(Error::NoState("at rho = 1, delta_bar(a_bar) = a_bar^2/4 - 2/a_bar increases for all a_bar: no displacement-controlled pull-off at finite size".into()));
+            // δ̄(ā) increases along the circle, but below ā_b the circle is
+            // a saddle (the cos 2θ mode). Where the branches at ρ < 1 have
+            // a fold, it tends to that point (a subcritical bifurcation);
+            // where they stay stable (the energy closure), so does the
+            // limit: the stable state elongates
+            self.anchor()?.pull_off_displacement().map_err(from_anchor)?;
+            return Ok(PullOff {
+                state: self.circle_bifurcation()?,
+                control: FoldCondition::Displacement,
+                basis: FoldBasis::CircleBifurcation,
+            });
+        }
+        if self.near_circle() {
+            let anchor = self.anchor()?.pull_off_displacement().map_err(from_anchor)?;
+            let fold = self.near_circle_sqrt_fold(&anchor.state, FoldCondition::Displacement);
+            let state = if self.has_energy() {
+                fold?
+            } else {
+                // as below: the minimum of δ̄ or the fold of the contact
+                // size, whichever comes first
+                let size = self.size_fold()?;
+                match fold {
+                    Ok(m) if m.s > size.s => m,
+                    _ => size,
+                }
+            };
+            return Ok(PullOff {
+                state,
+                control: FoldCondition::Displacement,
+                basis,
+            });
         }
         if self.has_energy() && self.search == Search::Cold {
             let guess = self.cold_first_unstable()?;

@@ -55,6 +55,11 @@ pub struct Curve {
 /// allocation failure).
 pub const MAX_POINTS: usize = 100_000;
 
+/// 1 − ρ below which (but above 0) a curve is refused: its trace lost the
+/// sharp turn of the branch by the circle's bifurcation below about 1e-10
+/// (`apex45`) and 1e-11 (`energy`).
+pub const CURVE_NEAR_CIRCLE: f64 = 1e-9;
+
 /// Trace the curve of `contact` from δ̄ = `delta_start` (on the stable
 /// branch) past pull-off and the folds, and return `points` states spaced
 /// evenly in arclength.
@@ -66,8 +71,16 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         "2 ..= 100000",
     )?;
     let rho = contact.rho();
+    // (with a margin for the rounding of a typed 0.999999999)
+    if rho < 1.0 && 1.0 - rho < 0.999 * CURVE_NEAR_CIRCLE {
+        return Err(Error::Unsupported {
+            name: "rho",
+            value: rho,
+            supported: "(0, 1 - 1e-9] or 1 for a curve: closer to 1 the branch turns within √(1 − rho) of the circle's bifurcation (a_bar ≈ 1.5874) more sharply than the trace resolves; solve, pull-off and zero-force answer there, and the curve at rho = 1 is the circle's",
+        });
+    }
     let start = contact.at_displacement(delta_start)?;
-    if rho >= 1.0 - 1e-12 {
+    if rho >= 1.0 {
         // s ≡ 1: the exact axisymmetric curve, parametrised by ā.
         let states: Vec<State> = (0..points)
             .map(|k| {
@@ -167,8 +180,9 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
                 s: from_z(&w)[1],
                 residual: f64::NAN,
                 context: format!(
-                    "pseudo-arclength corrector at delta_bar = {}",
-                    from_z(&w)[2]
+                    "pseudo-arclength corrector at delta_bar = {} (rho = {})",
+                    crate::error::rounded(from_z(&w)[2]),
+                    short(rho)
                 ),
             });
         };

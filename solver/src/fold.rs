@@ -79,6 +79,21 @@ pub fn locate(
     guess: Vector3<f64>,
     which: FoldCondition,
 ) -> Result<Vector3<f64>> {
+    locate_within(model, rho, guess, which, 1e-10)
+}
+
+/// [`locate`], accepting a Newton step that stagnates below `stagnation`
+/// (relative) with the residuals at round-off: where the fold condition
+/// itself is only known to round-off that large (near ρ = 1 the fold of a
+/// nearly circular contact, whose condition is a difference of nearly
+/// equal terms), the fold is located to that precision.
+pub(crate) fn locate_within(
+    model: &dyn Model,
+    rho: f64,
+    guess: Vector3<f64>,
+    which: FoldCondition,
+    stagnation: f64,
+) -> Result<Vector3<f64>> {
     let mut z = guess;
     let mut last = f64::INFINITY;
     for _ in 0..40 {
@@ -88,7 +103,12 @@ pub fn locate(
         let c = condition(model, rho, z, which);
         let mut grad = Vector3::zeros();
         for k in 0..3 {
-            let h = 1e-6 * (1.0 + z[k].abs());
+            // the s-step stays below s = 1 (beyond it some models'
+            // functions are not defined), except at s = 1 itself
+            let mut h = 1e-6 * (1.0 + z[k].abs());
+            if k == 1 && z[1] < 1.0 {
+                h = h.min(0.5 * (1.0 - z[1]));
+            }
             let mut zp = z;
             let mut zm = z;
             zp[k] += h;
@@ -117,7 +137,7 @@ pub fn locate(
         z += step * lambda;
         let size = step.component_div(&z.map(|v| 1.0 + v.abs())).amax();
         let rn = r.norm() / model.residual_scale(z[0], z[2]);
-        let converged = size < 1e-13 || (size < 1e-10 && size >= 0.5 * last && rn < 1e-12);
+        let converged = size < 1e-13 || (size < stagnation && size >= 0.5 * last && rn < 1e-12);
         if converged && condition(model, rho, z, which).is_finite() {
             return Ok(z);
         }

@@ -183,3 +183,28 @@ fn curves_reach_the_pull_off_at_small_rho() {
         assert!(curve.states.first().unwrap().delta > curve.states.last().unwrap().delta);
     }
 }
+
+/// Items 8 and 9 through the binary: the energy model at 1 − ρ = 1e-8
+/// (no state before), and the displacement-controlled pull-off continuous
+/// up to ρ = 1 (it jumped from −2.618 to "none" within 1e-12 of 1). The
+/// library-level continuity checks are in `near_circle.rs`.
+#[test]
+fn near_circular_inputs_answer_continuously() {
+    let json = |args: &str| -> serde_json::Value {
+        let (code, out, err) = bash(&format!("\"$0\" {args} --json"));
+        assert_eq!(code, Some(0), "{args}: {err}");
+        serde_json::from_str(&out).unwrap_or_else(|e| panic!("{args}: {e}: {out}"))
+    };
+    let st = json("solve --model energy --rho 0.99999999 --delta 2");
+    let s = st["s"].as_f64().unwrap();
+    assert!(s < 1.0 && s > 1.0 - 1e-7, "s = {s}");
+    let force = |rho: &str| {
+        let v = json(&format!("pull-off --control displacement --rho {rho}"));
+        v["pull_off"]["state"]["force"]
+            .as_f64()
+            .or_else(|| v["state"]["force"].as_f64())
+            .unwrap_or_else(|| panic!("{v}"))
+    };
+    let (near, one) = (force("0.9999999999999"), force("1"));
+    assert!((near - one).abs() < 1e-5, "{near} vs {one}");
+}
