@@ -273,6 +273,7 @@ fn basis(p: &PullOff) -> &'static str {
         FoldBasis::EnergyInstability => "loss of stability of the model's energy (Hessian of the potential)",
         FoldBasis::ModelFold => "a fold of the model's solution curve; the model has no energy, so this is not a proven instability",
         FoldBasis::AxisymmetricMinimum => "the minimum of the force on the exact axisymmetric solution",
+        FoldBasis::CircleBifurcation => "the circle loses stability to an elliptic contour (the limit of the folds at rho < 1)",
     }
 }
 
@@ -763,10 +764,11 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    match output::check_open()
-        .and_then(|()| run(cli))
-        .and_then(|status| output::finish().map(|()| status))
-    {
+    // what was written before an error is flushed too (its own write
+    // error, if any, then takes the place of the first)
+    let result = output::check_open().and_then(|()| run(cli));
+    let flushed = output::finish();
+    match result.and_then(|status| flushed.map(|()| status)) {
         Ok(status) => ExitCode::from(status),
         // a closed pipe: the reader has what it wanted; end quietly
         Err(_) if output::broken_pipe() => ExitCode::from(output::BROKEN_PIPE_STATUS),
