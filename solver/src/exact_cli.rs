@@ -162,6 +162,7 @@ fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
         st.truncation.modes,
         st.truncation.points
     );
+    outln!("  found: {}", st.route);
     outln!(
         "  displacement control: {}",
         modes(&st.stability.displacement)

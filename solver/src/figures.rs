@@ -588,6 +588,7 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
             deviation_from_ellipse: 0.0,
             truncation: ex.truncation(),
             stability: Default::default(),
+            route: Default::default(),
         };
         let exact: Vec<(f64, f64)> = ex
             .boundary_profile(&st)?

@@ -417,3 +417,28 @@ fn near_elliptical_family_splits_at_the_mode_8_crossing_at_rho_0_8() {
 fn doubling_the_truncation_changes_little_at_rho_0_5() {
     doubling_changes_little(0.5, 24);
 }
+
+/// Issue 23: the states at ρ = 0.5 that the circle's route missed (its
+/// arm folds before the control is reached) are found from `conformal:8`
+/// at the same control, converged (boundary error ≤ 1e-9 on the fine
+/// grid, the escalation to 48 modes) and near an independent solver's
+/// values quoted in the issue (exterior conformal map with its own
+/// boundary-integral check): zero force ā ≈ 2.977, s ≈ 0.752, δ̄ ≈ 1.573;
+/// F̄ = 10 ā ≈ 3.380, s ≈ 0.767 (to the digits quoted).
+#[test]
+fn states_at_rho_one_half_are_found_from_the_richest_model() {
+    use thinjkr::exact::branch::ExactControl;
+    use thinjkr::exact::{at_resolved, Route, CONVERGED};
+    let zero = at_resolved(0.5, ExactControl::Force(0.0)).unwrap();
+    assert!(zero.bc_error <= CONVERGED, "{}", zero.bc_error);
+    assert_eq!(zero.route, Route::FromModel);
+    assert!(zero.force_bar.abs() < 1e-9);
+    assert!((zero.a_bar - 2.977).abs() < 1e-3, "{}", zero.a_bar);
+    assert!((zero.s - 0.752).abs() < 1e-3, "{}", zero.s);
+    assert!((zero.delta_bar - 1.573).abs() < 1e-3, "{}", zero.delta_bar);
+    let ten = at_resolved(0.5, ExactControl::Force(10.0)).unwrap();
+    assert!(ten.bc_error <= CONVERGED, "{}", ten.bc_error);
+    assert!((ten.force_bar - 10.0).abs() < 1e-8);
+    assert!((ten.a_bar - 3.380).abs() < 1e-3, "{}", ten.a_bar);
+    assert!((ten.s - 0.767).abs() < 1e-3, "{}", ten.s);
+}

@@ -18,7 +18,7 @@
 //! - zero force: the state at F̄ = 0.
 //!
 //! Every state is checked to be a contact: the map must be one-to-one on
-//! the closed disk ([`univalence`]).
+//! the closed disk ([`Conformal::univalence`]).
 //!
 //! Owns: [`Tables`], [`Conformal`], [`ConformalState`], the family's solves.
 //! May use: `generated::conformal`, `error`, nalgebra.

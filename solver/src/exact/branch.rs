@@ -10,9 +10,10 @@
 //! Bifurcation points are flagged where the determinant of the bordered
 //! Jacobian [∂r/∂u; tᵀ] changes sign (at a fold it does not).
 //!
-//! Owns: [`Branch`], [`BranchPoint`], [`Event`]. May use: `exact`, `error`.
+//! Owns: [`Branch`], [`BranchPoint`], [`Event`]. May use: `exact`, `error`,
+//! `conformal` (the richest member's state as a start).
 
-use super::{Exact, ExactState};
+use super::{Exact, ExactState, Route};
 use crate::error::{Error, Result};
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -456,7 +457,73 @@ impl Exact {
         Ok((Branch { points, events }, None))
     }
 
-    /// The exact state at approach δ̄ or force F̄: the exact circle at
+    /// The state at `control` started from the richest `conformal:K`'s
+    /// (K = 8) state at the
+    /// same control: Newton at its ā from the ellipse with its ā and b̄
+    /// and its δ̄, then the family traced to the control (a step or two).
+    /// `None` where the model has no state there (ρ below its range), the
+    /// start does not converge, or the answer is not near the model's
+    /// (within 2 % in ā, 5 % in s) and near-elliptical (boundary error
+    /// below 1e-2); the caller decides whether it is resolved.
+    fn from_model(&self, control: ExactControl) -> Option<ExactState> {
+        use crate::conformal::{Conformal, Control};
+        // the richest member generated
+        let model: Conformal = crate::conformal::members().last()?;
+        let guess = model
+            .solve(
+                self.rho,
+                match control {
+                    ExactControl::Delta(v) => Control::Delta(v),
+                    ExactControl::Force(v) => Control::Force(v),
+                },
+            )
+            .ok()?;
+        let nm = self.truncation.modes;
+        let start = self
+            .solve(
+                guess.a_bar,
+                &super::Contour::ellipse(guess.a_bar, guess.b_bar, nm),
+                guess.delta_bar,
+            );
+        let start = start.ok()?;
+        // the exact state near the model's: same side of the circle's
+        // bifurcations (a contour within a few per cent of the model's)
+        if (start.s / guess.s - 1.0).abs() > 0.05 {
+            return None;
+        }
+        let here = match control {
+            ExactControl::Delta(v) => start.delta_bar - v,
+            ExactControl::Force(v) => start.force_bar - v,
+        };
+        let direction = if here < 0.0 { 1.0 } else { -1.0 };
+        let (_, found) = self
+            .trace_general(
+                &start,
+                direction,
+                0.5,
+                1e3,
+                0.02,
+                200,
+                direction < 0.0,
+                Some(control),
+            )
+            .ok()?;
+        let mut st = found?;
+        // near-elliptical and near the model's (an unresolved answer is
+        // still returned: more contour modes may resolve it)
+        if st.bc_error > 1e-2 || (st.a_bar / guess.a_bar - 1.0).abs() > 0.02 {
+            return None;
+        }
+        st.route = Route::FromModel;
+        Some(st)
+    }
+
+    /// The exact state at approach δ̄ or force F̄. First from the richest
+    /// model's state at the same control ([`Route::FromModel`]: only a
+    /// start, the state is the exact family's, accepted near the model's;
+    /// found but not resolved with this truncation, an
+    /// [`Error::Unresolved`] that asks for more modes). Otherwise
+    /// ([`Route::FromCircle`]) the exact circle at
     /// ρ = 1 with the same δ̄ or F̄ (δ̄ = ā²/4 − 2/ā, F̄ = π(ā⁶ − 24ā³)/96,
     /// (22)–(25); for F̄ the root above the pull-off) is continued in ρ at
     /// its ā ([`Exact::from_circle`]), and the family is traced from there
@@ -464,8 +531,8 @@ impl Exact {
     /// the near-elliptical arm it starts on: it stops at a size fold (where
     /// the arm turns into an undulated contour at an imperfect bifurcation
     /// of a mode n, near the circle's ā³ = 4(n − 1)) and at the
-    /// load-controlled pull-off. No approximate model is used. An
-    /// unresolved state is [`Error::Unresolved`], a value not reached is
+    /// load-controlled pull-off; no approximate model is used on this
+    /// route. An unresolved state is [`Error::Unresolved`], a value not reached is
     /// [`Error::NoState`] saying where the arm ended.
     pub fn at(&self, control: ExactControl) -> Result<ExactState> {
         let a_circle = match control {
@@ -483,9 +550,28 @@ impl Exact {
         };
         if !(a_circle.is_finite() && a_circle > 0.0) {
             return Err(Error::NoState(format!(
-                "exact state at rho = {}: {control:?} has no circle to start from",
+                "exact state at rho = {}: {control} has no circle to start from",
                 self.rho
             )));
+        }
+        // first from the richest model at the same control (the contour
+        // family converges to the exact solution); its answer is accepted
+        // only resolved (below), so a start that lands elsewhere falls
+        // back to the circle's route
+        // (found but not resolved with this truncation: the same state by
+        // the circle's route would be no better resolved, so more modes
+        // are asked for at once)
+        if let Some(st) = self.from_model(control) {
+            if st.bc_error <= super::RESOLVED {
+                return Ok(st);
+            }
+            return Err(Error::Unresolved {
+                what: format!(
+                    "exact state at rho = {}, {control}: max |dp/dnu - 1| = {:.1e} with {} modes ({})",
+                    self.rho, st.bc_error, self.truncation.modes, st.route
+                ),
+                residual: st.bc_error,
+            });
         }
         // a start whose arm folds before the value is reached is retried
         // once from the far side of the fold (0.3 beyond it in ā)
@@ -549,7 +635,7 @@ impl Exact {
         if st.bc_error > super::RESOLVED {
             return Err(Error::Unresolved {
                 what: format!(
-                    "exact state at rho = {}, {control:?}: max |dp/dnu - 1| = {:.1e} with {} modes",
+                    "exact state at rho = {}, {control}: max |dp/dnu - 1| = {:.1e} with {} modes",
                     self.rho, st.bc_error, self.truncation.modes
                 ),
                 residual: st.bc_error,

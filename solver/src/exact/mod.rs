@@ -367,6 +367,31 @@ pub struct ExactState {
     /// Which contour modes are unstable under displacement and load
     /// control (the second variation of Π, [`stability`]).
     pub stability: stability::ExactStability,
+    /// How the state was found (its start).
+    pub route: Route,
+}
+
+/// How an exact state was found: the start of its Newton iterations.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Route {
+    /// From the richest approximate model at the same control
+    /// (`conformal:8`): its ā, b̄ and δ̄ as an ellipse, Newton at its ā,
+    /// then the family traced to the control.
+    FromModel,
+    /// From the exact circle at ρ = 1, continued in ρ at fixed ā, then the
+    /// family traced to the control (no approximate model used).
+    #[default]
+    FromCircle,
+}
+
+impl std::fmt::Display for Route {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Route::FromModel => "started from conformal:8 at the same control",
+            Route::FromCircle => "continued in rho from the circle at rho = 1",
+        })
+    }
 }
 
 /// The exact problem at one ρ and truncation.
@@ -699,7 +724,19 @@ impl Exact {
                     rho = next;
                     step = (step * 1.5).min(0.1);
                 }
-                Err(e) if step < 1e-4 => return Err(e),
+                Err(e) if step < 1e-4 => {
+                    // in the user's words: where the continuation stopped,
+                    // rounded (not the intermediate ρ to 17 digits)
+                    return Err(match e {
+                        Error::NoConvergence { .. } | Error::Unresolved { .. } | Error::NoState(_) => Error::NoState(format!(
+                            "exact state at rho = {}: the continuation in rho from the circle at a_bar = {} stopped at rho = {} (Newton failed there with steps in rho down to 1e-4)",
+                            crate::error::short(self.rho),
+                            crate::error::rounded(a_bar),
+                            crate::error::rounded(rho)
+                        )),
+                        other => other,
+                    });
+                }
                 Err(_) => step *= 0.5,
             }
         }
@@ -737,6 +774,7 @@ impl Exact {
                 displacement: Vec::new(),
                 load: Vec::new(),
             },
+            route: Route::FromCircle,
         };
         st.stability = self.stability(&st)?;
         Ok(st)

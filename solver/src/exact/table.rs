@@ -209,8 +209,10 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          not one curve: at each neutral point of the circle, ā³ = 4(n − 1), an imperfect bifurcation of the \
          contour mode n splits it into arms that fold in ā and turn undulated (exact.md, \"Which family\"). \
          The pull-off is the minimum of F̄ on the arm through the state at ā = 2.6 continued in ρ from the \
-         circle; a state at given F̄ is looked for on the arm through the circle with that F̄ continued in ρ \
-         (and once more from beyond a fold the trace meets), and a row says where the arm ended when the \
+         circle; a state at given F̄ is started from `conformal:8`'s state at the same F̄ (Newton at its ā \
+         from the ellipse with its ā, b̄ and δ̄, then the family traced to the F̄) and, where that finds \
+         nothing near the model's state, looked for on the arm through the circle with that F̄ continued in ρ \
+         (and once more from beyond a fold the trace meets); a row says where the arm ended when the \
          value is not on it. Each is computed with the first of 12, 16, 24, 32, 48 contour modes whose boundary error \
          max|∂p̄/∂ν − 1| on the fine grid is below 1e-9, or, where none is, the one with the smallest error below \
          1e-5 (given as N and bc; a boundary error above 1e-2 \
