@@ -14,9 +14,14 @@ fn parse_model(s: &str) -> Result<ModelChoice, String> {
     } else if let Some(c) = Conformal::parse(s) {
         c.map(ModelChoice::Conformal)
     } else {
-        s.parse()
-            .map(ModelChoice::Approx)
-            .map_err(|e: String| format!("{e}, conformal:K (K = 1 ..= 8), exact"))
+        s.parse().map(ModelChoice::Approx).map_err(|_: String| {
+            let names: Vec<&str> = ModelId::ALL.iter().map(|m| m.name()).collect();
+            format!(
+                "unknown model '{}' (allowed: {}, conformal:K with K = 1 ..= 8, exact)",
+                thinjkr::batch::quote_start(s).trim_matches('"'),
+                names.join(", ")
+            )
+        })
     }
 }
 
@@ -731,10 +736,11 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                 }
                 None => {
                     let need = |n: &'static str, v: Option<f64>| {
-                        v.ok_or(thinjkr::Error::OutOfRange {
-                            name: n,
-                            value: f64::NAN,
-                            range: "required".into(),
+                        v.ok_or_else(|| {
+                            thinjkr::Error::Usage(format!(
+                                "physical needs --{} (or every input in a --file)",
+                                n.replace('_', "-")
+                            ))
                         })
                     };
                     Cylinders {

@@ -208,3 +208,18 @@ fn near_circular_inputs_answer_continuously() {
     let (near, one) = (force("0.9999999999999"), force("1"));
     assert!((near - one).abs() < 1e-5, "{near} vs {one}");
 }
+
+/// Item 14: an unknown `--model` lists every model the solver accepts; a
+/// `physical` without a needed input names the flag (no "= NaN").
+#[test]
+fn model_and_missing_input_errors_name_what_is_accepted() {
+    let (code, _, err) = bash("\"$0\" solve --model nosuch --rho 0.8 --delta 2");
+    assert_eq!(code, Some(2));
+    for name in thinjkr::ModelId::ALL.iter().map(|m| m.name()) {
+        assert!(err.contains(name), "{err}");
+    }
+    assert!(err.contains("conformal:K") && err.contains("exact"), "{err}");
+    let (code, _, err) = bash("\"$0\" physical --h1 1e300");
+    assert_eq!(code, Some(1));
+    assert!(err.contains("--r1") && !err.contains("NaN"), "{err}");
+}
