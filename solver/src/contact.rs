@@ -103,6 +103,7 @@ pub struct State {
 /// What ends a controlled branch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum FoldBasis {
     /// The Hessian of the model's potential energy loses definiteness here:
     /// an instability of the model, proven by its energy.
@@ -116,6 +117,18 @@ pub enum FoldBasis {
     /// under displacement control (det ∂r/∂(ā, s) = 0 at s = 1): the limit
     /// of the folds at ρ < 1.
     CircleBifurcation,
+}
+
+impl FoldBasis {
+    /// What the end point is, in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            FoldBasis::EnergyInstability => "loss of stability of the model's energy (Hessian of the potential)",
+            FoldBasis::ModelFold => "a fold of the model's solution curve; the model has no energy, so this is not a proven instability",
+            FoldBasis::AxisymmetricMinimum => "the minimum of the force on the exact axisymmetric solution",
+            FoldBasis::CircleBifurcation => "the circle loses stability to an elliptic contour (the limit of the folds at rho < 1)",
+        }
+    }
 }
 
 /// Pull-off: the state where a controlled branch ends, and why.

@@ -23,6 +23,7 @@ use serde::{Deserialize, Serialize};
 /// What folds at a fold point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum FoldKind {
     /// A minimum of F̄: pull-off under load control.
     Load,

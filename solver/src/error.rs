@@ -5,6 +5,7 @@
 
 /// Everything that can go wrong in thinjkr.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     /// A parameter outside its allowed range.
     #[error("parameter {name} = {} is outside its allowed range {range}", short(*value))]
@@ -73,6 +74,23 @@ pub enum Error {
         /// Why, from the derivation.
         why: &'static str,
     },
+}
+
+impl Error {
+    /// The kind of failure, one snake-case word per variant (for machine
+    /// readers: the Python package's exception classes, JSON errors).
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Error::OutOfRange { .. } => "out_of_range",
+            Error::NoConvergence { .. } => "no_convergence",
+            Error::Unresolved { .. } => "unresolved",
+            Error::NoState(_) => "no_state",
+            Error::Usage(_) => "usage",
+            Error::Unsupported { .. } => "unsupported",
+            Error::Io(_) => "io",
+            Error::Unavailable { .. } => "unavailable",
+        }
+    }
 }
 
 /// Shorthand.

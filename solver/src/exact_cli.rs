@@ -6,7 +6,7 @@
 //! `thinjkr::Contact`.
 
 use clap::{Args, Subcommand};
-use thinjkr::exact::branch::{Event, ExactControl};
+use thinjkr::exact::branch::ExactControl;
 use thinjkr::exact::stability::UnstableMode;
 use thinjkr::exact::{resolved, Exact, ExactState, Truncation};
 use thinjkr::{Contact, Error, ModelId, Result};
@@ -208,17 +208,8 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     );
     show_quality(&po)?;
     for e in &events {
-        match e {
-            Event::SizeFold { a_bar } => {
-                outln!("  on the way: the family turns back in a near a = {a_bar:.6}")
-            }
-            Event::Bifurcation { between, mode } => outln!(
-                "  on the way: a bifurcation point between a = {:.6} and {:.6} (contour mode {})",
-                between[0],
-                between[1],
-                mode.map_or("not computed".to_string(), |n| format!("n = {n}"))
-            ),
-            Event::ForceMinimum { .. } => {}
+        if let Some(words) = e.describe() {
+            outln!("  on the way: {words}")
         }
     }
     for (m, r) in &models {

@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 /// Which quantity turns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum FoldCondition {
     /// A turning point in δ̄: the end of displacement control.
     Displacement,

@@ -21,6 +21,7 @@ pub mod contact;
 pub mod curve;
 pub mod error;
 pub mod exact;
+#[cfg(feature = "figures")]
 pub mod figures;
 pub mod fold;
 #[allow(missing_docs)]
@@ -31,7 +32,17 @@ pub mod model;
 pub mod newton;
 pub mod units;
 
-#[doc = include_str!("../../docs/guide.md")]
+/// The user's guide.
+///
+/// In the source repository (where `.cargo/config.toml` sets
+/// `--cfg thinjkr_guide` for rustdoc) this module holds `docs/guide.md`
+/// itself, whose Rust examples run as doctests; in the packaged crate,
+/// which has no `docs/`, it points there.
+#[cfg_attr(thinjkr_guide, doc = include_str!("../../docs/guide.md"))]
+#[cfg_attr(
+    not(thinjkr_guide),
+    doc = "The guide is `docs/guide.md` in thinjkr's source repository: the model in a page, units, the library, the command line, limits and exit statuses."
+)]
 pub mod guide {}
 
 pub use contact::{Contact, FoldBasis, PullOff, Search, Stability, State};

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use thinjkr::conformal::{self as family, Conformal};
 use thinjkr::curve::trace;
 use thinjkr::units::Cylinders;
-use thinjkr::{Contact, FoldBasis, ModelId, PullOff, State};
+use thinjkr::{Contact, ModelId, PullOff, State};
 
 fn parse_model(s: &str) -> Result<ModelChoice, String> {
     if s == "exact" {
@@ -274,12 +274,7 @@ fn show(label: &str, st: &State) -> thinjkr::Result<()> {
 }
 
 fn basis(p: &PullOff) -> &'static str {
-    match p.basis {
-        FoldBasis::EnergyInstability => "loss of stability of the model's energy (Hessian of the potential)",
-        FoldBasis::ModelFold => "a fold of the model's solution curve; the model has no energy, so this is not a proven instability",
-        FoldBasis::AxisymmetricMinimum => "the minimum of the force on the exact axisymmetric solution",
-        FoldBasis::CircleBifurcation => "the circle loses stability to an elliptic contour (the limit of the folds at rho < 1)",
-    }
+    p.basis.describe()
 }
 
 fn emit_pull_off(p: &PullOff, as_json: bool) -> thinjkr::Result<()> {

@@ -20,6 +20,7 @@ pub use crate::generated::ModelId;
 /// How a model imposes the second boundary condition (3)₂.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum ClosureKind {
     /// The maximum of ∂p/∂ν along Γ₀ equals √(2mΔγ) (the paper's (13)).
     Max,

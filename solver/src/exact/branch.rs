@@ -20,6 +20,7 @@ use serde::Serialize;
 
 /// What happens between two traced points.
 #[derive(Clone, Debug, Serialize)]
+#[non_exhaustive]
 pub enum Event {
     /// ā turns (a fold of the contact size) near this ā.
     SizeFold {
@@ -44,6 +45,25 @@ pub enum Event {
         /// the singular vectors could not be computed).
         mode: Option<usize>,
     },
+}
+
+impl Event {
+    /// The event in words, for a person (`None` for the force minimum,
+    /// which is reported as the pull-off itself).
+    pub fn describe(&self) -> Option<String> {
+        match self {
+            Event::SizeFold { a_bar } => Some(format!(
+                "the family turns back in a near a = {a_bar:.6}"
+            )),
+            Event::Bifurcation { between, mode } => Some(format!(
+                "a bifurcation point between a = {:.6} and {:.6} (contour mode {})",
+                between[0],
+                between[1],
+                mode.map_or("not computed".to_string(), |n| format!("n = {n}"))
+            )),
+            Event::ForceMinimum { .. } => None,
+        }
+    }
 }
 
 /// What an exact state is asked for by.

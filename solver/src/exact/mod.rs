@@ -374,6 +374,7 @@ pub struct ExactState {
 /// How an exact state was found: the start of its Newton iterations.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum Route {
     /// From the richest approximate model at the same control
     /// (`conformal:8`): its ā, b̄ and δ̄ as an ellipse, Newton at its ā,
