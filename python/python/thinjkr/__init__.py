@@ -1,0 +1,220 @@
+"""thinjkr: the approximate JKR model of adhesive contact between two thin
+incompressible elastic coatings on rigid cylinders (Argatov, Mishuris &
+Popov, Tribology Letters 64:12, 2016), solved in Rust.
+
+Dimensionless variables are those of the paper's (17): ``a_bar`` (major
+semi-axis ā), ``b_bar`` (b̄ = s ā), ``s`` (aspect ratio (12)), ``delta_bar``
+(approach δ̄), ``force_bar`` (F̄ = F/(2R₁Δγ)); ``rho`` = R₂/R₁ (21).
+
+Models (``models()`` lists them): ``max`` (the paper's closure (13) with
+collocation (10), the default), ``apexes``, ``energy`` (Ritz, with
+stability), ``apex45``, the contour family ``conformal:K`` (K = 1 … 8), and
+``exact`` (the free-boundary problem (2)–(3) itself, also under
+``thinjkr.exact``).
+
+Every call releases the GIL; array calls run on all cores.
+"""
+
+from __future__ import annotations
+
+import json as _json
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as _np
+
+from . import _thinjkr
+from ._errors import (
+    InvalidInput,
+    NoConvergence,
+    NoState,
+    ThinJkrError,
+    Unavailable,
+    Unresolved,
+    _raise,
+)
+from ._state import State, States
+
+__all__ = [
+    "State",
+    "States",
+    "ThinJkrError",
+    "InvalidInput",
+    "NoConvergence",
+    "NoState",
+    "Unavailable",
+    "Unresolved",
+    "solve",
+    "pull_off",
+    "zero_force",
+    "curve",
+    "models",
+    "physical",
+    "exact",
+]
+
+__version__ = "0.1.0"
+
+# the command line's JSON names of a state of the ellipse models, and the
+# names of this API (those of the conformal and exact states)
+_RENAME = {"a": "a_bar", "b": "b_bar", "delta": "delta_bar", "force": "force_bar"}
+
+
+def _state_from(d: Dict[str, Any]) -> State:
+    fields = {_RENAME.get(k, k): v for k, v in d.items()}
+    stab = fields.pop("stability", None)
+    if isinstance(stab, dict) and "displacement" in stab and "load" in stab:
+        if isinstance(stab["displacement"], list):  # an exact state: unstable modes
+            fields["unstable_modes_displacement"] = stab["displacement"]
+            fields["unstable_modes_load"] = stab["load"]
+        else:
+            fields["stable_displacement"] = stab["displacement"]
+            fields["stable_load"] = stab["load"]
+    return State(fields)
+
+
+def _call(f, *args):
+    try:
+        return f(*args)
+    except _thinjkr.RawError as e:
+        _raise(e)
+
+
+def models() -> List[Tuple[str, str]]:
+    """Every model the solver has, with a one-line description each."""
+    return [(n, d) for n, d in _thinjkr.models()]
+
+
+def _control(delta, force, a) -> Tuple[str, Any]:
+    given = [(k, v) for k, v in (("delta", delta), ("force", force), ("a", a)) if v is not None]
+    if len(given) != 1:
+        raise InvalidInput(
+            "give exactly one control: delta (approach δ̄), force (F̄) or a (contact size ā)",
+            kind="usage",
+        )
+    return given[0]
+
+
+def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
+    """The state at radii ratio ``rho`` with exactly one control: approach
+    ``delta`` (δ̄), force ``force`` (F̄, the stable state on the branch down
+    to pull-off) or contact size ``a`` (ā, the state before the size fold).
+
+    Scalars give a :class:`State`. When ``rho`` or the control is an array
+    (broadcast together), the answer is a :class:`States` of arrays of
+    that shape, computed in Rust on all cores; a point without a state is
+    NaN in the arrays and has its reason in ``States.error``.
+    """
+    control, value = _control(delta, force, a)
+    if _np.ndim(rho) == 0 and _np.ndim(value) == 0:
+        text = _call(_thinjkr.solve, model, float(rho), control, float(value))
+        return _state_from(_json.loads(text))
+    r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
+    shape = r.shape
+    cols, errors = _call(
+        _thinjkr.solve_many,
+        model,
+        _np.ascontiguousarray(r.ravel()),
+        control,
+        _np.ascontiguousarray(v.ravel()),
+    )
+    arrays = {k: _np.asarray(x).reshape(shape) for k, x in cols.items()}
+    kinds = _np.array([e[0] if e else "" for e in errors], dtype=object).reshape(shape)
+    msgs = _np.array([e[1] if e else "" for e in errors], dtype=object).reshape(shape)
+    return States(model=model, rho=r.copy(), arrays=arrays, error=msgs, error_kind=kinds)
+
+
+def zero_force(rho, *, model: str = "max") -> State:
+    """The zero-force state (the paper's Section 5)."""
+    return solve(rho, force=0.0, model=model)
+
+
+class PullOff(State):
+    """A pull-off: a :class:`State` with ``control`` ("load" or
+    "displacement") and, for the models of the ellipse, ``basis`` (what
+    ends the branch there) and ``basis_words``."""
+
+
+def pull_off(rho: float, *, model: str = "max", control: str = "load") -> State:
+    """The pull-off under load control (the minimum of F̄ along the branch,
+    the paper's Section 6) or under displacement control (the end of the
+    branch in δ̄)."""
+    d = _json.loads(_call(_thinjkr.pull_off, model, float(rho), control))
+    st = _state_from(d["state"])
+    fields = st.to_dict()
+    fields["control"] = control
+    for k in ("basis", "basis_words"):
+        if k in d:
+            fields[k] = d[k]
+    return PullOff(fields)
+
+
+class Curve:
+    """A traced curve: numpy arrays along the branch (``a_bar``, ``b_bar``,
+    ``s``, ``delta_bar``, ``force_bar``, ``bc_error``, ``beyond_size_fold``)
+    and ``folds``, a list of (kind, State) with kind "displacement",
+    "load" or "contact_size"."""
+
+    def __init__(self, states: List[State], folds: List[Tuple[str, State]]):
+        self.states = states
+        self.folds = folds
+        for k in ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"):
+            setattr(self, k, _np.array([getattr(st, k) for st in states], dtype=float))
+        self.beyond_size_fold = _np.array([st.beyond_size_fold for st in states], dtype=bool)
+
+    def __len__(self) -> int:
+        return len(self.states)
+
+    def __repr__(self) -> str:
+        return f"Curve({len(self.states)} states, folds: {[k for k, _ in self.folds]})"
+
+
+def curve(rho: float, *, model: str = "max", points: int = 200, delta_start: float = 20.0) -> Curve:
+    """The curve of a model of the ellipse at ``rho`` from δ̄ =
+    ``delta_start`` past pull-off and its folds, ``points`` states evenly
+    spaced in arclength (the paper's Figs. 6–8)."""
+    d = _json.loads(_call(_thinjkr.curve, model, float(rho), int(points), float(delta_start)))
+    states = [_state_from(s) for s in d["states"]]
+    folds = [(f["kind"], _state_from(f["state"])) for f in d["folds"]]
+    return Curve(states, folds)
+
+
+_CYLINDER_KEYS = ("r1", "r2", "theta_deg", "h1", "h2", "g1", "g2", "work_of_adhesion")
+
+
+def physical(
+    *,
+    r1: float,
+    r2: float,
+    theta_deg: float,
+    h1: float,
+    h2: float,
+    g1: float,
+    g2: float,
+    work_of_adhesion: float,
+    delta: Optional[float] = None,
+    force: Optional[float] = None,
+) -> State:
+    """A contact in SI units (the command line's ``physical``): cylinder
+    radii r1, r2 (m), crossing angle theta_deg (degrees), coating
+    thicknesses h1, h2 (m), out-of-plane shear moduli g1, g2 (Pa), work of
+    adhesion (J/m²); at approach ``delta`` (m), at ``force`` (N), or the
+    pull-off when neither is given. The answer carries the SI values
+    (``a``, ``b``, ``delta``, ``force``, ``p0``, ``h_over_a``) and the
+    dimensionless state under ``state``."""
+    cyl = dict(r1=r1, r2=r2, theta_deg=theta_deg, h1=h1, h2=h2, g1=g1, g2=g2,
+               work_of_adhesion=work_of_adhesion)
+    for k, v in cyl.items():
+        if not isinstance(v, (int, float)):
+            raise InvalidInput(f"parameter {k} must be a number, got {type(v).__name__}", kind="out_of_range")
+        if not _np.isfinite(v):
+            raise InvalidInput(f"parameter {k} = {v} is outside its allowed range finite and > 0",
+                               kind="out_of_range")
+    d = _json.loads(_call(_thinjkr.physical, _json.dumps(cyl),
+                          None if delta is None else float(delta),
+                          None if force is None else float(force)))
+    inner = _state_from(d.pop("state"))
+    d["state"] = inner
+    return State(d)
+
+
+from . import exact  # noqa: E402  (uses the helpers above)

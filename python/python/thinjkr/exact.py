@@ -1,0 +1,42 @@
+"""The exact solution of the free-boundary problem (2)–(3): states whose
+contour is a Fourier series, with its independent check max|∂p̄/∂ν − 1| on a
+fine grid (``bc_error``), the truncation used, the route that found it, and
+the contour as numpy arrays (``x``, ``y``)."""
+
+from __future__ import annotations
+
+import json as _json
+
+import numpy as _np
+
+from . import _thinjkr
+from . import _call, _control, _state_from, State
+
+
+def _with_contour(d, points: int) -> State:
+    st = _state_from(d)
+    fields = {"model": "exact", **st.to_dict()}
+    x, y = _call(_thinjkr.exact_contour, _json.dumps(d["contour"]), int(points))
+    fields["x"] = _np.asarray(x)
+    fields["y"] = _np.asarray(y)
+    return State(fields)
+
+
+def solve(rho: float, *, delta=None, force=None, points: int = 256) -> State:
+    """The exact state at approach ``delta`` (δ̄) or force ``force`` (F̄),
+    its contour sampled at ``points`` angles."""
+    control, value = _control(delta, force, None)
+    d = _json.loads(_call(_thinjkr.solve, "exact", float(rho), control, float(value)))
+    return _with_contour(d, points)
+
+
+def zero_force(rho: float, *, points: int = 256) -> State:
+    """The exact zero-force state."""
+    return solve(rho, force=0.0, points=points)
+
+
+def pull_off(rho: float, *, points: int = 256) -> State:
+    """The exact load-controlled pull-off (the first minimum of F̄ along the
+    family through ā = 2.6)."""
+    d = _json.loads(_call(_thinjkr.pull_off, "exact", float(rho), "load"))
+    return _with_contour(d["state"], points)

@@ -1,0 +1,404 @@
+//! The extension module `thinjkr._thinjkr`: the solver crate `thinjkr`
+//! (without its command line) behind a few functions that the pure-Python
+//! package `thinjkr` wraps into its API. Every solve releases the GIL
+//! (`Python::detach`), so Python threads run side by side and a batch
+//! runs on all cores (rayon).
+//!
+//! Results cross as JSON text of the solver's own serde types (the same
+//! serialisation as the command line's `--json`), or, for batches and
+//! curves, as numpy arrays. Errors cross as `RawError(kind, message)`,
+//! which the Python side maps onto its exception classes.
+//!
+//! Owns: the extension module. May use: `thinjkr` (no symbolica).
+
+use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::PyException;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use rayon::prelude::*;
+use thinjkr::batch::{solve_all, Given, Item};
+use thinjkr::conformal::{self, Conformal, PullOffControl};
+use thinjkr::exact::branch::ExactControl;
+use thinjkr::{Contact, Error, ModelId};
+
+pyo3::create_exception!(_thinjkr, RawError, PyException, "A solver error: args (kind, message).");
+
+fn raw(e: Error) -> PyErr {
+    RawError::new_err((e.kind(), e.to_string()))
+}
+
+fn usage(message: String) -> PyErr {
+    raw(Error::Usage(message))
+}
+
+/// A model chosen by name.
+#[derive(Clone, Copy)]
+enum Choice {
+    Approx(ModelId),
+    Conformal(Conformal),
+    Exact,
+}
+
+fn choice(name: &str) -> PyResult<Choice> {
+    if name == "exact" {
+        return Ok(Choice::Exact);
+    }
+    if let Some(c) = Conformal::parse(name) {
+        return c.map(Choice::Conformal).map_err(usage);
+    }
+    name.parse::<ModelId>().map(Choice::Approx).map_err(|_| {
+        let names: Vec<&str> = ModelId::ALL.iter().map(|m| m.name()).collect();
+        raw(Error::OutOfRange {
+            name: "model",
+            value: f64::NAN,
+            range: format!(
+                "one of {}, conformal:K with K = 1 ..= 8, exact (got '{name}')",
+                names.join(", ")
+            )
+            .into(),
+        })
+    })
+}
+
+fn json<T: serde::Serialize>(v: &T) -> String {
+    serde_json::to_string(v).expect("the solver's types serialise")
+}
+
+/// Every model the solver has: (name, one-line description).
+#[pyfunction]
+fn models() -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = ModelId::ALL
+        .iter()
+        .map(|m| (m.name().to_string(), m.model().info().title.to_string()))
+        .collect();
+    out.extend(conformal::members().map(|c| (c.name(), conformal::title().to_string())));
+    out.push((
+        "exact".into(),
+        "the free-boundary problem (2)-(3) itself (boundary integral equation on a contour series)".into(),
+    ));
+    out
+}
+
+/// One state at `control` in {"delta", "force", "a"} = `value`, as JSON.
+fn solve_one(model: Choice, rho: f64, control: &str, value: f64) -> thinjkr::Result<String> {
+    match model {
+        Choice::Approx(m) => {
+            let c = Contact::with_model(m, rho)?;
+            let st = match control {
+                "delta" => c.at_displacement(value)?,
+                "force" => c.at_load(value)?,
+                _ => c
+                    .at_contact_size(value)?
+                    .into_iter()
+                    .next()
+                    .ok_or_else(|| Error::NoState(format!("no state with a = {value} at rho = {rho}")))?,
+            };
+            Ok(json(&st))
+        }
+        Choice::Conformal(m) => {
+            let ctl = match control {
+                "delta" => conformal::Control::Delta(value),
+                "force" => conformal::Control::Force(value),
+                _ => conformal::Control::Size(value),
+            };
+            Ok(json(&m.solve(rho, ctl)?))
+        }
+        Choice::Exact => {
+            let ctl = match control {
+                "delta" => ExactControl::Delta(value),
+                "force" => ExactControl::Force(value),
+                _ => {
+                    return Err(Error::Unavailable {
+                        model: "exact",
+                        what: "a state at given contact size from the Python API".into(),
+                        why: "the exact solver is asked by approach or force",
+                    })
+                }
+            };
+            Ok(json(&thinjkr::exact::at_resolved(rho, ctl)?))
+        }
+    }
+}
+
+fn check_control(control: &str) -> PyResult<()> {
+    match control {
+        "delta" | "force" | "a" => Ok(()),
+        other => Err(usage(format!("control must be delta, force or a (got '{other}')"))),
+    }
+}
+
+/// The state of `model` at `rho` with `control` = `value`, as JSON.
+#[pyfunction]
+fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> PyResult<String> {
+    let m = choice(model)?;
+    check_control(control)?;
+    let control = control.to_string();
+    py.detach(move || solve_one(m, rho, &control, value)).map_err(raw)
+}
+
+/// Many states on all cores: arrays (a_bar, b_bar, s, delta_bar,
+/// force_bar, bc_error) with NaN where a point has no state, and for each
+/// point its error (kind, message) or None.
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn solve_many<'py>(
+    py: Python<'py>,
+    model: &str,
+    rho: PyReadonlyArray1<'py, f64>,
+    control: &str,
+    value: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>)> {
+    let m = choice(model)?;
+    check_control(control)?;
+    let rho = rho.as_slice()?.to_vec();
+    let value = value.as_slice()?.to_vec();
+    if rho.len() != value.len() {
+        return Err(usage(format!(
+            "rho and the control have {} and {} points after broadcasting",
+            rho.len(),
+            value.len()
+        )));
+    }
+    let control = control.to_string();
+    // (a_bar, b_bar, s, delta_bar, force_bar, bc_error) or the error
+    type Row = Result<[f64; 6], (String, String)>;
+    let err = |e: Error| (e.kind().to_string(), e.to_string());
+    let rows: Vec<Row> = py.detach(|| match (m, control.as_str()) {
+        (Choice::Approx(id), "delta" | "force") => {
+            let items: Vec<Item> = rho
+                .iter()
+                .zip(&value)
+                .map(|(&rho, &v)| Item {
+                    rho,
+                    given: if control == "delta" { Given::Delta(v) } else { Given::Force(v) },
+                })
+                .collect();
+            solve_all(id, &items)
+                .into_iter()
+                .map(|r| {
+                    r.map(|st| [st.a, st.b, st.s, st.delta, st.force, st.bc_error])
+                        .map_err(err)
+                })
+                .collect()
+        }
+        _ => rho
+            .par_iter()
+            .zip(value.par_iter())
+            .map(|(&r, &v)| {
+                let text = solve_one(m, r, &control, v).map_err(err)?;
+                let j: serde_json::Value = serde_json::from_str(&text).expect("own JSON");
+                let g = |k: &str, alt: &str| {
+                    j.get(k).or_else(|| j.get(alt)).and_then(|x| x.as_f64()).unwrap_or(f64::NAN)
+                };
+                Ok([
+                    g("a_bar", "a"),
+                    g("b_bar", "b"),
+                    g("s", "s"),
+                    g("delta_bar", "delta"),
+                    g("force_bar", "force"),
+                    g("bc_error", "bc_defect"),
+                ])
+            })
+            .collect(),
+    });
+    let n = rows.len();
+    let names = ["a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"];
+    let mut cols = vec![Vec::with_capacity(n); names.len()];
+    let mut errors = Vec::with_capacity(n);
+    for r in rows {
+        match r {
+            Ok(v) => {
+                for (c, x) in cols.iter_mut().zip(v) {
+                    c.push(x);
+                }
+                errors.push(None);
+            }
+            Err(e) => {
+                for c in cols.iter_mut() {
+                    c.push(f64::NAN);
+                }
+                errors.push(Some(e));
+            }
+        }
+    }
+    let d = PyDict::new(py);
+    for (name, c) in names.iter().zip(cols) {
+        d.set_item(name, c.into_pyarray(py))?;
+    }
+    Ok((d, errors))
+}
+
+/// The pull-off under `control` ("load" or "displacement"), as JSON: the
+/// state and what ends the branch there.
+#[pyfunction]
+fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<String> {
+    let m = choice(model)?;
+    let load = match control {
+        "load" => true,
+        "displacement" => false,
+        other => return Err(usage(format!("control must be load or displacement (got '{other}')"))),
+    };
+    py.detach(move || -> thinjkr::Result<String> {
+        match m {
+            Choice::Approx(id) => {
+                let c = Contact::with_model(id, rho)?;
+                let p = if load { c.pull_off_load()? } else { c.pull_off_displacement()? };
+                Ok(json(&serde_json::json!({
+                    "state": p.state,
+                    "basis": p.basis,
+                    "basis_words": p.basis.describe(),
+                })))
+            }
+            Choice::Conformal(k) => {
+                let ctl = if load { PullOffControl::Load } else { PullOffControl::Displacement };
+                let (st, _) = k.pull_off(rho, ctl)?;
+                Ok(json(&serde_json::json!({ "state": st })))
+            }
+            Choice::Exact => {
+                if !load {
+                    return Err(Error::Unavailable {
+                        model: "exact",
+                        what: "a displacement-controlled pull-off".into(),
+                        why: "the exact solver locates the load-controlled one",
+                    });
+                }
+                let (st, _) = thinjkr::exact::pull_off_resolved(rho)?;
+                Ok(json(&serde_json::json!({ "state": st })))
+            }
+        }
+    })
+    .map_err(raw)
+}
+
+/// The contour of an exact state (JSON of its `contour`) at `n` points
+/// of θ ∈ [0, 2π): x and y arrays.
+#[pyfunction]
+fn exact_contour<'py>(
+    py: Python<'py>,
+    contour_json: &str,
+    n: usize,
+) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)> {
+    if !(3..=100_000).contains(&n) {
+        return Err(raw(Error::OutOfRange {
+            name: "points",
+            value: n as f64,
+            range: "3 ..= 100000".into(),
+        }));
+    }
+    let c: thinjkr::exact::Contour =
+        serde_json::from_str(contour_json).map_err(|e| usage(format!("not a contour: {e}")))?;
+    let (mut x, mut y) = (Vec::with_capacity(n), Vec::with_capacity(n));
+    for k in 0..n {
+        let z = c.at(2.0 * std::f64::consts::PI * k as f64 / n as f64)[0];
+        x.push(z.re);
+        y.push(z.im);
+    }
+    Ok((x.into_pyarray(py), y.into_pyarray(py)))
+}
+
+/// The curve of an approximate model at `rho` from δ̄ = `delta_start`
+/// past pull-off: JSON of its states and folds.
+#[pyfunction]
+fn curve(py: Python<'_>, model: &str, rho: f64, points: usize, delta_start: f64) -> PyResult<String> {
+    let id = match choice(model)? {
+        Choice::Approx(id) => id,
+        _ => {
+            return Err(raw(Error::Unavailable {
+                model: "conformal:K / exact",
+                what: "a curve".into(),
+                why: "curves are traced for the models of the ellipse",
+            }))
+        }
+    };
+    py.detach(move || -> thinjkr::Result<String> {
+        let c = Contact::with_model(id, rho)?;
+        let cv = thinjkr::curve::trace(&c, points, delta_start)?;
+        Ok(json(&serde_json::json!({ "states": cv.states, "folds": cv.folds })))
+    })
+    .map_err(raw)
+}
+
+/// A contact in SI units (JSON of `thinjkr::units::Cylinders`) at the
+/// approach `delta` (m) or the force `force` (N), or its pull-off when
+/// both are None: JSON of the physical state.
+#[pyfunction]
+#[pyo3(signature = (cylinders_json, delta=None, force=None))]
+fn physical(py: Python<'_>, cylinders_json: &str, delta: Option<f64>, force: Option<f64>) -> PyResult<String> {
+    let cyl: thinjkr::units::Cylinders =
+        serde_json::from_str(cylinders_json).map_err(|e| usage(format!("{e}")))?;
+    py.detach(move || -> thinjkr::Result<String> {
+        let st = match (delta, force) {
+            (Some(d), None) => cyl.at_displacement(d)?,
+            (None, Some(f)) => cyl.at_load(f)?,
+            (None, None) => cyl.pull_off()?,
+            _ => return Err(Error::Usage("give delta or force, not both".into())),
+        };
+        Ok(json(&st))
+    })
+    .map_err(raw)
+}
+
+/// For the benchmark (python/benchmarks/bench.py): seconds that
+/// `thinjkr::batch::solve_all` takes in Rust for these points, the work
+/// `solve` with arrays does, without building Python arrays.
+#[pyfunction]
+fn _batch_api_seconds(
+    py: Python<'_>,
+    model: &str,
+    rho: PyReadonlyArray1<'_, f64>,
+    control: &str,
+    value: PyReadonlyArray1<'_, f64>,
+) -> PyResult<f64> {
+    let Choice::Approx(id) = choice(model)? else {
+        return Err(usage("the batch API serves the models of the ellipse".into()));
+    };
+    let items: Vec<Item> = rho
+        .as_slice()?
+        .iter()
+        .zip(value.as_slice()?)
+        .map(|(&rho, &v)| Item {
+            rho,
+            given: if control == "delta" { Given::Delta(v) } else { Given::Force(v) },
+        })
+        .collect();
+    Ok(py.detach(move || {
+        let t = std::time::Instant::now();
+        let out = solve_all(id, &items);
+        let secs = t.elapsed().as_secs_f64();
+        drop(std::hint::black_box(out));
+        secs
+    }))
+}
+
+/// For the benchmark: seconds per call of one solve in Rust (the work of
+/// one scalar `solve`), over `repeat` calls.
+#[pyfunction]
+fn _scalar_seconds(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64, repeat: usize) -> PyResult<f64> {
+    let m = choice(model)?;
+    check_control(control)?;
+    let control = control.to_string();
+    let repeat = repeat.clamp(1, 1_000_000);
+    py.detach(move || {
+        let t = std::time::Instant::now();
+        for _ in 0..repeat {
+            std::hint::black_box(solve_one(m, rho, &control, value)).map_err(raw)?;
+        }
+        Ok(t.elapsed().as_secs_f64() / repeat as f64)
+    })
+}
+
+/// The extension module.
+#[pymodule]
+fn _thinjkr(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("RawError", m.py().get_type::<RawError>())?;
+    m.add_function(wrap_pyfunction!(models, m)?)?;
+    m.add_function(wrap_pyfunction!(solve, m)?)?;
+    m.add_function(wrap_pyfunction!(solve_many, m)?)?;
+    m.add_function(wrap_pyfunction!(pull_off, m)?)?;
+    m.add_function(wrap_pyfunction!(exact_contour, m)?)?;
+    m.add_function(wrap_pyfunction!(curve, m)?)?;
+    m.add_function(wrap_pyfunction!(physical, m)?)?;
+    m.add_function(wrap_pyfunction!(_batch_api_seconds, m)?)?;
+    m.add_function(wrap_pyfunction!(_scalar_seconds, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,19 @@
+"""Where the command line is: THINJKR_BIN (set by .ci/test), else the
+workspace's debug or release build."""
+
+import os
+import pathlib
+import shutil
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="session")
+def cli():
+    for cand in (os.environ.get("THINJKR_BIN"), ROOT / "target/debug/thinjkr",
+                 ROOT / "target/release/thinjkr", shutil.which("thinjkr")):
+        if cand and pathlib.Path(cand).is_file():
+            return str(cand)
+    pytest.fail("no thinjkr binary: build it (cargo build -p thinjkr) or set THINJKR_BIN")

@@ -1,0 +1,176 @@
+"""The Python API against the command line's JSON (the same inputs, every
+model), arrays against loops of scalar calls, every error class from the
+input that should raise it, pickling, and threads."""
+
+import concurrent.futures
+import json
+import math
+import pickle
+import subprocess
+
+import numpy as np
+import pytest
+
+import thinjkr
+
+ELLIPSE = ["max", "apexes", "energy", "apex45"]
+RENAME = {"a": "a_bar", "b": "b_bar", "delta": "delta_bar", "force": "force_bar"}
+
+
+def run_json(cli, *args):
+    out = subprocess.run([cli, *args, "--json"], check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def close(x, y, rel=1e-12):
+    return math.isclose(x, y, rel_tol=rel, abs_tol=1e-12)
+
+
+def assert_same_state(st, d):
+    """Every number of the command line's state, to the digits it prints
+    (it prints every digit of an f64: equal to round-off)."""
+    for k, v in d.items():
+        name = RENAME.get(k, k)
+        if isinstance(v, float):
+            assert close(getattr(st, name), v), (name, getattr(st, name), v)
+        elif isinstance(v, str):
+            assert getattr(st, name) == v, (name, getattr(st, name), v)
+
+
+@pytest.mark.parametrize("model", ELLIPSE + ["conformal:2", "conformal:8"])
+def test_solve_equals_the_command_line(cli, model):
+    for args, kwargs in [
+        (["--delta", "2"], {"delta": 2.0}),
+        (["--force", "10"], {"force": 10.0}),
+    ]:
+        d = run_json(cli, "solve", "--model", model, "--rho", "0.8", *args)
+        d = d.get("state", d)
+        assert_same_state(thinjkr.solve(0.8, model=model, **kwargs), d)
+
+
+@pytest.mark.parametrize("model", ELLIPSE + ["conformal:4"])
+def test_pull_off_and_zero_force_equal_the_command_line(cli, model):
+    d = run_json(cli, "pull-off", "--model", model, "--rho", "0.8")
+    po = thinjkr.pull_off(0.8, model=model)
+    assert_same_state(po, d["state"])
+    if "basis" in d:
+        assert po.basis == d["basis"]
+    z = run_json(cli, "zero-force", "--model", model, "--rho", "0.8")
+    assert_same_state(thinjkr.zero_force(0.8, model=model), z.get("state", z))
+
+
+def test_exact_equals_the_command_line(cli):
+    d = run_json(cli, "exact", "solve", "--rho", "0.8", "--force", "10")["exact"]
+    st = thinjkr.exact.solve(0.8, force=10.0)
+    for k in ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"):
+        assert close(getattr(st, k), d[k]), k
+    assert st.route == d["route"]
+    # the contour arrays: ā is the largest x, b̄ the largest y
+    assert close(st.x.max(), st.a_bar, 1e-9) and close(st.y.max(), st.b_bar, 1e-6)
+
+
+def test_models_lists_every_model(cli):
+    names = [n for n, _ in thinjkr.models()]
+    assert names[:4] == ELLIPSE and "conformal:8" in names and names[-1] == "exact"
+    out = subprocess.run([cli, "models"], check=True, capture_output=True, text=True).stdout
+    assert [line.split()[0] for line in out.splitlines()] == names
+
+
+@pytest.mark.parametrize("model", ["max", "energy", "conformal:3"])
+def test_arrays_equal_loops_of_scalar_calls(model):
+    rho = np.array([[0.5], [0.8], [0.95]])
+    delta = np.array([-10.0, 0.5, 2.0, 5.0])
+    many = thinjkr.solve(rho, delta=delta, model=model)
+    assert many.shape == (3, 4)
+    for i in range(3):
+        for j in range(4):
+            try:
+                st = thinjkr.solve(float(rho[i, 0]), delta=float(delta[j]), model=model)
+            except thinjkr.ThinJkrError as e:
+                assert math.isnan(many.a_bar[i, j]) and many.error[i, j] == str(e)
+                assert many.error_kind[i, j] == e.kind
+                continue
+            assert many.error[i, j] == ""
+            for k in ("a_bar", "b_bar", "s", "delta_bar", "force_bar"):
+                assert close(getattr(many, k)[i, j], getattr(st, k)), (k, i, j)
+    # delta = 2 and 5 solve everywhere; -10 lies below the paper's model's
+    # displacement-controlled pull-off (the energy closure stays stable
+    # and elongates, and has states there)
+    assert many.ok[:, 2:].all()
+    if model == "max":
+        assert not many.ok[:, 0].any()
+
+
+def test_force_arrays_and_scalar_broadcast():
+    many = thinjkr.solve(0.8, force=np.linspace(-1.0, 10.0, 7))
+    for f, a in zip(np.linspace(-1.0, 10.0, 7), many.a_bar):
+        assert close(a, thinjkr.solve(0.8, force=float(f)).a_bar)
+
+
+@pytest.mark.parametrize(
+    "call, cls, words",
+    [
+        (lambda: thinjkr.solve(1.5, delta=2.0), thinjkr.InvalidInput, "rho"),
+        (lambda: thinjkr.solve(0.8, force=-100.0), thinjkr.InvalidInput, "force"),
+        (lambda: thinjkr.solve(0.8, delta=2.0, force=1.0), thinjkr.InvalidInput, "exactly one"),
+        (lambda: thinjkr.solve(0.8, delta=2.0, model="nosuch"), thinjkr.InvalidInput, "model"),
+        (lambda: thinjkr.solve(0.8, delta=-10.0), thinjkr.NoState, "delta"),
+        (lambda: thinjkr.curve(0.8, model="conformal:4"), thinjkr.Unavailable, "curve"),
+        (lambda: thinjkr.pull_off(0.8, model="energy", control="displacement"), thinjkr.NoState,
+         "stays stable"),
+        (lambda: thinjkr.exact.zero_force(0.3), thinjkr.NoState, "rho"),
+        (lambda: thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e300, h2=1e-4, g1=1e6, g2=1e6,
+                                  work_of_adhesion=0.05, force=0.0), thinjkr.InvalidInput, "m computed"),
+    ],
+)
+def test_each_error_class_from_its_input(call, cls, words):
+    with pytest.raises(cls) as info:
+        call()
+    assert words in str(info.value)
+    assert isinstance(info.value, thinjkr.ThinJkrError)
+    if cls is thinjkr.InvalidInput:
+        assert isinstance(info.value, ValueError)
+
+
+def test_pickling_round_trips():
+    for obj in [thinjkr.solve(0.8, delta=2.0), thinjkr.pull_off(0.8, model="energy"),
+                thinjkr.solve(0.8, delta=2.0, model="conformal:4"), thinjkr.exact.solve(0.8, force=10.0)]:
+        back = pickle.loads(pickle.dumps(obj))
+        assert back == obj and type(back) is type(obj)
+    e = thinjkr.NoState("no contact state: x", "no_state")
+    back = pickle.loads(pickle.dumps(e))
+    assert type(back) is thinjkr.NoState and str(back) == str(e) and back.kind == "no_state"
+
+
+def test_state_reads_and_prints():
+    st = thinjkr.solve(0.8, delta=2.0)
+    assert close(st.s, st.b_bar / st.a_bar)
+    text = repr(st)
+    assert text.startswith("State(model='max', rho=0.8, a_bar=3.21") and "xi=" in text
+    assert st.to_dict()["delta_bar"] == 2.0
+    with pytest.raises(AttributeError):
+        st.nosuch
+
+
+def test_threads_give_the_serial_results():
+    rhos = [0.5 + 0.05 * k for k in range(10)]
+    serial = [thinjkr.pull_off(r, model="energy").force_bar for r in rhos]
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        threaded = list(pool.map(lambda r: thinjkr.pull_off(r, model="energy").force_bar, rhos))
+    assert threaded == serial
+
+
+def test_curve_marks_its_folds():
+    c = thinjkr.curve(0.8, points=100)
+    assert len(c) == 100 and c.s.shape == (100,)
+    kinds = [k for k, _ in c.folds]
+    assert "load" in kinds
+    load = dict(c.folds)["load"]
+    assert close(load.force_bar, thinjkr.pull_off(0.8).force_bar, 1e-9)
+
+
+def test_physical_units():
+    st = thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6,
+                          work_of_adhesion=0.05, force=0.0)
+    assert st.a > 0 and st.force == pytest.approx(0.0, abs=1e-12)
+    assert abs(st.state.force_bar) < 1e-9 and st.state.model == "max"
