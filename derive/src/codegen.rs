@@ -1027,6 +1027,7 @@ fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
         /// A generated model, chosen at run time.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
         #[serde(rename_all = "snake_case")]
+        #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
         #[non_exhaustive]
         pub enum ModelId {
             #(#[doc = #docs] #variants,)*

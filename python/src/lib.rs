@@ -176,7 +176,7 @@ fn solve_many<'py>(
             solve_all(id, &items)
                 .into_iter()
                 .map(|r| {
-                    r.map(|st| [st.a, st.b, st.s, st.delta, st.force, st.bc_error])
+                    r.map(|st| [st.a_bar, st.b_bar, st.s, st.delta_bar, st.force_bar, st.bc_error])
                         .map_err(err)
                 })
                 .collect()

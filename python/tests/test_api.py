@@ -60,7 +60,7 @@ def test_pull_off_and_zero_force_equal_the_command_line(cli, model):
 
 
 def test_exact_equals_the_command_line(cli):
-    d = run_json(cli, "exact", "solve", "--rho", "0.8", "--force", "10")["exact"]
+    d = run_json(cli, "exact", "solve", "--rho", "0.8", "--force", "10")["state"]
     st = thinjkr.exact.solve(0.8, force=10.0)
     for k in ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"):
         assert close(getattr(st, k), d[k]), k

@@ -20,7 +20,7 @@ fn benches(c: &mut Criterion) {
             solve(
                 |x| model.residuals_and_jacobian(x, 0.8, black_box(1.999)),
                 |a| model.residual_scale(a, 1.999),
-                Vector2::new(prev.a, prev.s),
+                Vector2::new(prev.a_bar, prev.s),
                 &cfg,
                 "bench",
             )

@@ -146,7 +146,7 @@ fn cold(path: &str, repeats: usize) {
         let st = Contact::new(rho)
             .and_then(|c| c.at_displacement(delta))
             .expect("a state");
-        (st.a, st.s)
+        (st.a_bar, st.s)
     });
 }
 
@@ -170,7 +170,7 @@ fn main() {
     let mut times = Vec::new();
     for _ in 0..repeats {
         let t = Instant::now();
-        sweep(f, (start.a, start.s), &mut out);
+        sweep(f, (start.a_bar, start.s), &mut out);
         times.push(t.elapsed().as_secs_f64());
     }
     times.sort_by(f64::total_cmp);
@@ -181,7 +181,7 @@ fn main() {
     println!(
         "median_seconds={:.6e} start_a={:.17e} start_s={:.17e}",
         times[times.len() / 2],
-        start.a,
+        start.a_bar,
         start.s
     );
 }

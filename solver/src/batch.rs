@@ -158,7 +158,7 @@ pub fn csv_row(number: usize, item: Option<&Item>, result: &Result<State>) -> St
     match result {
         Ok(s) => format!(
             "{number},{rho},{control},{value},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},",
-            s.a, s.b, s.s, s.delta, s.force, s.xi, s.p0, s.bc_error
+            s.a_bar, s.b_bar, s.s, s.delta_bar, s.force_bar, s.xi, s.p0, s.bc_error
         ),
         Err(e) => format!(
             "{number},{rho},{control},{value},,,,,,,,,\"{}\"",

@@ -5,6 +5,7 @@
 //! Owns: the printing of conformal states. May use: `thinjkr::conformal`.
 
 use thinjkr::conformal::{Conformal, ConformalState, Control, Extremum, PullOffControl};
+use thinjkr::report::{AnyState, Document, Passed};
 
 fn modes(st: &ConformalState) -> String {
     if st.unstable_modes.is_empty() {
@@ -45,7 +46,11 @@ pub fn show(label: &str, st: &ConformalState) -> thinjkr::Result<()> {
 
 fn emit(label: &str, st: &ConformalState, json: bool) -> thinjkr::Result<()> {
     if json {
-        outln!("{}", serde_json::json!({ "state": st }));
+        let doc = Document::State {
+            state: AnyState::Conformal(st.clone()),
+            models: Vec::new(),
+        };
+        outln!("{}", doc.to_json());
     } else {
         show(label, st)?;
     }
@@ -73,10 +78,17 @@ pub fn pull_off(
 ) -> thinjkr::Result<()> {
     let (st, folds) = m.pull_off(rho, control)?;
     if json {
-        outln!(
-            "{}",
-            serde_json::json!({ "state": st, "folds": folds, "start_a_bar": thinjkr::conformal::TRACE_START_A })
-        );
+        let doc = Document::PullOff {
+            state: AnyState::Conformal(st),
+            control: match control {
+                PullOffControl::Load => thinjkr::fold::FoldCondition::Load,
+                _ => thinjkr::fold::FoldCondition::Displacement,
+            },
+            basis: None,
+            passed: Passed::from_conformal(&folds),
+            models: Vec::new(),
+        };
+        outln!("{}", doc.to_json());
         return Ok(());
     }
     show("pull-off", &st)?;

@@ -47,11 +47,12 @@ use serde::{Deserialize, Serialize};
 /// there, whichever sign round-off gives its smallest eigenvalue.
 /// `None` for models without an energy, whose stability is not defined.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Stability {
     /// Stable under displacement control.
-    pub displacement: Option<bool>,
+    pub stable_displacement: Option<bool>,
     /// Stable under load control.
-    pub load: Option<bool>,
+    pub stable_load: Option<bool>,
 }
 
 /// The smallest radii ratio the solver supports: the paper's model is
@@ -64,15 +65,16 @@ pub const RHO_MIN: f64 = 1e-8;
 /// One state of a model, dimensionless as in (17) (lengths in
 /// L = (2R₁²Δγ/m)^(1/6), pressures in √(2mΔγ) L).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct State {
     /// The model that produced this state.
     pub model: ModelId,
     /// Radii ratio ρ = R₂/R₁ (21).
     pub rho: f64,
     /// Major semi-axis ā (17).
-    pub a: f64,
+    pub a_bar: f64,
     /// Minor semi-axis b̄ = s ā.
-    pub b: f64,
+    pub b_bar: f64,
     /// Aspect ratio s = b/a (12).
     pub s: f64,
     /// Collocation parameter ξ ((15)₁ for collocation models; from the
@@ -85,9 +87,9 @@ pub struct State {
     /// Maximum pressure p₀ / (√(2mΔγ) L) (Section 6).
     pub p0: f64,
     /// Force F̄ = F/(2R₁Δγ) (for the paper's model the derived form of (18)).
-    pub force: f64,
+    pub force_bar: f64,
     /// Approach δ̄ (17).
-    pub delta: f64,
+    pub delta_bar: f64,
     /// A-posteriori error (14) of the boundary condition (3)₂: (max − min)/min
     /// of ∂p/∂ν along Γ₀, as a fraction.
     pub bc_error: f64,
@@ -96,12 +98,15 @@ pub struct State {
     /// The state lies beyond the fold of the contact size, where s
     /// collapses towards 0: far from the physical branch.
     pub beyond_size_fold: bool,
-    /// Stability, where the model has an energy.
+    /// Stability, where the model has an energy (in JSON its two fields
+    /// sit beside the others).
+    #[serde(flatten)]
     pub stability: Stability,
 }
 
 /// What ends a controlled branch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum FoldBasis {
@@ -133,6 +138,7 @@ impl FoldBasis {
 
 /// Pull-off: the state where a controlled branch ends, and why.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct PullOff {
     /// The state.
     pub state: State,
@@ -205,9 +211,9 @@ enum Control {
 impl Control {
     fn value(self, st: &State) -> f64 {
         match self {
-            Control::Delta => st.delta,
-            Control::ABar => st.a,
-            Control::Force => st.force,
+            Control::Delta => st.delta_bar,
+            Control::ABar => st.a_bar,
+            Control::Force => st.force_bar,
         }
     }
 }
@@ -285,17 +291,17 @@ impl Contact {
     /// The pressure p/(√(2mΔγ) L) of `state` at (x̄, ȳ) = (x, y)/L; zero
     /// outside the ellipse (7).
     pub fn pressure(&self, state: &State, x: f64, y: f64) -> f64 {
-        if (x / state.a).powi(2) + (y / state.b).powi(2) > 1.0 {
+        if (x / state.a_bar).powi(2) + (y / state.b_bar).powi(2) > 1.0 {
             return 0.0;
         }
         self.model
-            .pressure(x, y, Vector2::new(state.a, state.s), self.rho, state.delta)
+            .pressure(x, y, Vector2::new(state.a_bar, state.s), self.rho, state.delta_bar)
     }
 
     /// ∂p̄/∂ν of `state` on Γ₀ at u = sin²t, in units of √(2mΔγ).
     pub fn normal_derivative(&self, state: &State, u: f64) -> f64 {
         self.model
-            .normal_derivative(Vector2::new(state.a, state.s), self.rho, state.delta, u)
+            .normal_derivative(Vector2::new(state.a_bar, state.s), self.rho, state.delta_bar, u)
     }
 
     /// s∞(ρ): the non-adhesive aspect ratio (for the paper, (29)), where
@@ -434,25 +440,25 @@ impl Contact {
         let p = m.pressure_parameters(x, self.rho, delta);
         let stability = match m.potential_hessian(x, self.rho, delta) {
             Some(h) => Stability {
-                displacement: Some(strictly_positive_definite(
+                stable_displacement: Some(strictly_positive_definite(
                     h.fixed_view::<2, 2>(0, 0).into_owned(),
                 )),
-                load: Some(strictly_positive_definite(h)),
+                stable_load: Some(strictly_positive_definite(h)),
             },
             None => Stability::default(),
         };
         State {
             model: m.info().id,
             rho: self.rho,
-            a,
-            b: s * a,
+            a_bar: a,
+            b_bar: s * a,
             s,
             xi: p.xi,
             shape_a: p.shape[0],
             shape_b: p.shape[1],
             p0: p.p0,
-            force: m.force_bar(x, self.rho, delta),
-            delta,
+            force_bar: m.force_bar(x, self.rho, delta),
+            delta_bar: delta,
             bc_error: if s >= 1.0 {
                 0.0
             } else if with_bc_error {
@@ -472,7 +478,7 @@ impl Contact {
             .axisymmetric(a)
             .ok_or_else(|| self.unavailable("the axisymmetric solution (22)-(25)"))?;
         let mut st = self.state_from(a, 1.0, delta);
-        st.force = force;
+        st.force_bar = force;
         st.bc_error = 0.0;
         Ok(st)
     }
@@ -579,7 +585,7 @@ impl Contact {
         }
         // the fold of the contact size: the first ā along the walk that is
         // the smallest within 20 points on either side
-        let sizes: Vec<f64> = out.iter().map(|st| st.a).collect();
+        let sizes: Vec<f64> = out.iter().map(|st| st.a_bar).collect();
         if let Some(k) = first_window_minimum(&sizes) {
             for st in &mut out[k + 1..] {
                 st.beyond_size_fold = true;
@@ -611,14 +617,14 @@ impl Contact {
 
     /// Polish a state by Newton's method on the model's residuals at its δ̄.
     fn polish(&self, guess: &State, context: &str) -> Result<State> {
-        let delta = guess.delta;
+        let delta = guess.delta_bar;
         let m = self.model;
         // a guess on the adhesive side stays there
-        let adhesive_start = self.edge_slope(guess.a, guess.s, delta) > 0.0;
+        let adhesive_start = self.edge_slope(guess.a_bar, guess.s, delta) > 0.0;
         let sol = newton::solve_within(
             |x| m.residuals_and_jacobian(x, self.rho, delta),
             |a| m.residual_scale(a, delta),
-            Vector2::new(guess.a, guess.s),
+            Vector2::new(guess.a_bar, guess.s),
             &self.newton,
             context,
             |x| !adhesive_start || self.edge_slope(x[0], x[1], delta) > 0.0,
@@ -665,13 +671,13 @@ impl Contact {
             } else {
                 self.tail_guess(&w[0], &w[1], control, target)
             };
-            let guess = Vector3::new(guess.a, guess.s, guess.delta);
+            let guess = Vector3::new(guess.a_bar, guess.s, guess.delta_bar);
             let mut st = self.solve_controlled(guess, control, target, what)?;
             st.beyond_size_fold = w[1].beyond_size_fold;
             out.push(st);
         }
         if out.is_empty() {
-            self.within_reach(control, target, what, all.iter().map(|st| (key(st), st.a)))?;
+            self.within_reach(control, target, what, all.iter().map(|st| (key(st), st.a_bar)))?;
         }
         Ok(out)
     }
@@ -689,10 +695,10 @@ impl Contact {
             (k0 - target) / (k0 - k1)
         };
         let mut g = *w0;
-        g.a = w0.a * (t * (w1.a / w0.a).ln()).exp();
+        g.a_bar = w0.a_bar * (t * (w1.a_bar / w0.a_bar).ln()).exp();
         g.s += t * (w1.s - w0.s);
-        g.delta = w0.delta * (t * (w1.delta / w0.delta).ln()).exp();
-        if self.edge_slope(g.a, g.s, g.delta) > 0.0 {
+        g.delta_bar = w0.delta_bar * (t * (w1.delta_bar / w0.delta_bar).ln()).exp();
+        if self.edge_slope(g.a_bar, g.s, g.delta_bar) > 0.0 {
             g
         } else if t < 0.5 {
             *w0
@@ -820,12 +826,12 @@ impl Contact {
     /// the two roots of a quadratic closure are nearly equal in (ā, s, δ̄),
     /// and Newton may reach the compressive-edge one.
     fn adhesive_or_error(&self, st: State, what: &str) -> Result<State> {
-        if self.edge_slope(st.a, st.s, st.delta) > 0.0 {
+        if self.edge_slope(st.a_bar, st.s, st.delta_bar) > 0.0 {
             return Ok(st);
         }
         Err(Error::NoState(format!(
             "{what}: Newton reached the compressive-edge (non-adhesive) root at a_bar = {:.6e}, s = {:.6e}, delta_bar = {:.6e} (rho = {}), not the adhesive state; at such loads the two roots of model {} are nearly equal",
-            st.a, st.s, st.delta, self.rho, self.model_id()
+            st.a_bar, st.s, st.delta_bar, self.rho, self.model_id()
         )))
     }
 
@@ -846,18 +852,18 @@ impl Contact {
             [a, b, ..] => (*a, *b),
             _ => return out,
         };
-        while prev.a < 1e4 && prev.delta > 0.0 && older.delta > 0.0 && older.delta != prev.delta {
+        while prev.a_bar < 1e4 && prev.delta_bar > 0.0 && older.delta_bar > 0.0 && older.delta_bar != prev.delta_bar {
             let step = 1.25f64.ln();
-            let dl = (prev.delta / older.delta).ln();
+            let dl = (prev.delta_bar / older.delta_bar).ln();
             let mut g = prev;
-            g.delta = prev.delta * step.exp();
-            g.a = prev.a * ((prev.a / older.a).ln() / dl * step).exp();
+            g.delta_bar = prev.delta_bar * step.exp();
+            g.a_bar = prev.a_bar * ((prev.a_bar / older.a_bar).ln() / dl * step).exp();
             g.s = prev.s + (prev.s - older.s) / dl * step;
             match self.polish(&g, "large-load continuation") {
                 Ok(st)
-                    if st.a > prev.a
+                    if st.a_bar > prev.a_bar
                         && (st.s - prev.s).abs() < 0.1
-                        && self.edge_slope(st.a, st.s, st.delta) > 0.0 =>
+                        && self.edge_slope(st.a_bar, st.s, st.delta_bar) > 0.0 =>
                 {
                     out.push(st);
                     older = prev;
@@ -906,7 +912,7 @@ impl Contact {
         let z = fold::locate(
             self.model,
             self.rho,
-            Vector3::new(guess.a, guess.s, guess.delta),
+            Vector3::new(guess.a_bar, guess.s, guess.delta_bar),
             which,
         )?;
         let mut st = self.state_from(z[0], z[1], z[2]);
@@ -931,7 +937,7 @@ impl Contact {
             )?;
             // ā is the root to round-off; the state is at the δ̄ asked for
             let mut st = self.axisymmetric_state(a)?;
-            st.delta = delta;
+            st.delta_bar = delta;
             return Ok(st);
         }
         let what = "displacement control";
@@ -998,7 +1004,7 @@ impl Contact {
             let Ok(p) = self.pull_off_load() else {
                 return Err(e);
             };
-            if (force - p.state.force).abs() <= 1e-9 * (1.0 + p.state.force.abs()) {
+            if (force - p.state.force_bar).abs() <= 1e-9 * (1.0 + p.state.force_bar.abs()) {
                 return Ok(p.state);
             }
             Err(match e {
@@ -1011,7 +1017,7 @@ impl Contact {
                     value,
                     range: format!(
                         "[{}, ∞): from the pull-off force of model {} at rho = {}",
-                        crate::error::rounded(p.state.force),
+                        crate::error::rounded(p.state.force_bar),
                         self.model_id(),
                         self.rho
                     )
@@ -1036,7 +1042,7 @@ impl Contact {
                 .ok_or_else(|| Error::NoState(format!("no state at force {force}")));
         }
         match self.pull_off_load() {
-            Ok(pull) if force < pull.state.force => {
+            Ok(pull) if force < pull.state.force_bar => {
                 return Err(Error::OutOfRange {
                     name: "force",
                     value: force,
@@ -1062,10 +1068,10 @@ impl Contact {
             let f = |a: f64| m.axisymmetric(a).map(|v| v.1).unwrap_or(f64::NAN);
             let pull = self.axisymmetric_pull_off()?;
             let mut out = Vec::new();
-            if force >= pull.force {
-                out.push(self.axisymmetric_state(bisect(|a| f(a) - force, pull.a, 1e6)?)?);
+            if force >= pull.force_bar {
+                out.push(self.axisymmetric_state(bisect(|a| f(a) - force, pull.a_bar, 1e6)?)?);
                 if force < f(1e-9) {
-                    out.push(self.axisymmetric_state(bisect(|a| f(a) - force, 1e-9, pull.a)?)?);
+                    out.push(self.axisymmetric_state(bisect(|a| f(a) - force, 1e-9, pull.a_bar)?)?);
                 }
             }
             return Ok(out);
@@ -1180,7 +1186,7 @@ impl Contact {
             let walk = self.walk()?;
             let k = walk
                 .iter()
-                .position(|st| st.stability.displacement == Some(false))
+                .position(|st| st.stability.stable_displacement == Some(false))
                 .ok_or_else(|| self.stable_throughout(walk.last().map(|st| st.s)))?;
             let guess = walk[k.saturating_sub(1)];
             return Ok(PullOff {
@@ -1210,7 +1216,7 @@ impl Contact {
                 self.model_id(),
                 self.rho,
                 self.pull_off_load()
-                    .map(|p| crate::error::rounded(p.state.force))
+                    .map(|p| crate::error::rounded(p.state.force_bar))
                     .unwrap_or_else(|_| "not located".into())
             )),
             other => other,

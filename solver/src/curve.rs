@@ -22,6 +22,7 @@ use serde::{Deserialize, Serialize};
 
 /// What folds at a fold point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum FoldKind {
@@ -35,6 +36,7 @@ pub enum FoldKind {
 
 /// A fold of the solution curve.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Fold {
     /// Which quantity turns.
     pub kind: FoldKind,
@@ -45,6 +47,7 @@ pub struct Fold {
 
 /// A traced curve.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Curve {
     /// States in order along the curve, from large approach downwards.
     pub states: Vec<State>,
@@ -85,7 +88,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         // s ≡ 1: the exact axisymmetric curve, parametrised by ā.
         let states: Vec<State> = (0..points)
             .map(|k| {
-                let a = start.a * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
+                let a = start.a_bar * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
                 contact.at_contact_size(a).map(|v| v[0])
             })
             .collect::<Result<_>>()?;
@@ -106,7 +109,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         )
     };
     // variables scaled so that a unit step means a comparable change
-    let scale = Vector3::new(start.a, 0.1, start.delta.abs().max(1.0));
+    let scale = Vector3::new(start.a_bar, 0.1, start.delta_bar.abs().max(1.0));
     let tangent = |z: &Vector3<f64>, prev: Option<&Vector3<f64>>| -> Vector3<f64> {
         let (_, j) = f(z);
         let r1 = Vector3::new(j[0][0] * scale[0], j[0][1] * scale[1], j[0][2] * scale[2]);
@@ -119,7 +122,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         }
         t
     };
-    let to_z = |st: &State| Vector3::new(st.a / scale[0], st.s / scale[1], st.delta / scale[2]);
+    let to_z = |st: &State| Vector3::new(st.a_bar / scale[0], st.s / scale[1], st.delta_bar / scale[2]);
     let from_z = |w: &Vector3<f64>| Vector3::new(w[0] * scale[0], w[1] * scale[1], w[2] * scale[2]);
     let mut w = to_z(&start);
     let mut t = tangent(&from_z(&w), None);
@@ -196,7 +199,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         if t[0] > 0.0 {
             passed_fold = true; // the contact size grows again
         }
-        if z[1] < s_end || (passed_fold && z[0] > start.a) {
+        if z[1] < s_end || (passed_fold && z[0] > start.a_bar) {
             reached_end = true;
             break;
         }
@@ -238,9 +241,9 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         }
         if k + 1 < trail.len() {
             let (f0, f1, f2) = (
-                states_all[k - 1].force,
-                states_all[k].force,
-                states_all[k + 1].force,
+                states_all[k - 1].force_bar,
+                states_all[k].force_bar,
+                states_all[k + 1].force_bar,
             );
             if f1 < f0 && f1 <= f2 {
                 folds.push(refine(contact, FoldKind::Load, &states_all[k])?);
@@ -254,7 +257,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
                 "curve at rho = {}: the trace ended at s = {} without reaching the pull-off (force {} at s = {})",
                 short(rho),
                 crate::error::rounded(states_all.last().map(|st| st.s).unwrap_or(f64::NAN)),
-                crate::error::rounded(p.state.force),
+                crate::error::rounded(p.state.force_bar),
                 crate::error::rounded(p.state.s)
             )));
         }
@@ -289,7 +292,7 @@ fn refine(contact: &Contact, kind: FoldKind, near: &State) -> Result<Fold> {
     let z = fold::locate(
         contact.model(),
         contact.rho(),
-        Vector3::new(near.a, near.s, near.delta),
+        Vector3::new(near.a_bar, near.s, near.delta_bar),
         which,
     )?;
     let mut state = contact.state_from(z[0], z[1], z[2]);

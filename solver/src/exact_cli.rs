@@ -7,6 +7,7 @@
 
 use clap::{Args, Subcommand};
 use thinjkr::exact::branch::ExactControl;
+use thinjkr::report::{AnyState, Document, ModelAnswer, Passed};
 use thinjkr::exact::stability::UnstableMode;
 use thinjkr::exact::{resolved, Exact, ExactState, Truncation};
 use thinjkr::{Contact, Error, ModelId, Result};
@@ -107,6 +108,17 @@ pub enum ExactCommand {
 }
 
 /// Run one `thinjkr exact` subcommand.
+impl ExactCommand {
+    /// Whether the subcommand prints JSON.
+    pub fn json(&self) -> bool {
+        match self {
+            ExactCommand::PullOff { json, .. }
+            | ExactCommand::Solve { json, .. }
+            | ExactCommand::ZeroForce { json, .. } => *json,
+        }
+    }
+}
+
 pub fn run(c: ExactCommand) -> Result<()> {
     match c {
         ExactCommand::PullOff {
@@ -186,17 +198,17 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
         .collect();
     drop(spin);
     if json {
-        let m: Vec<_> = models
-            .iter()
-            .map(|(m, r)| match r {
-                Ok(p) => serde_json::json!({"model": m.name(), "state": p.state, "force_error": p.state.force / po.force_bar - 1.0}),
-                Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
-            })
-            .collect();
-        outln!(
-            "{}",
-            serde_json::json!({"exact_pull_off": po, "events": events, "models": m})
-        );
+        let doc = Document::PullOff {
+            state: AnyState::Exact(Box::new(po)),
+            control: thinjkr::fold::FoldCondition::Load,
+            basis: None,
+            passed: Passed::from_exact(&events),
+            models: models
+                .iter()
+                .map(|(m, r)| ModelAnswer::new(m.name(), &r.clone().map(|p| p.state)))
+                .collect(),
+        };
+        outln!("{}", doc.to_json());
         return Ok(());
     }
     // F̄ is stationary at the pull-off and accurate to round-off; its
@@ -216,10 +228,10 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
         match r {
             Ok(p) => outln!(
                 "  model {m}: force = {:.6} ({:+.3} %), a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %)",
-                p.state.force,
-                100.0 * (p.state.force / po.force_bar - 1.0),
-                p.state.a,
-                100.0 * (p.state.a / po.a_bar - 1.0),
+                p.state.force_bar,
+                100.0 * (p.state.force_bar / po.force_bar - 1.0),
+                p.state.a_bar,
+                100.0 * (p.state.a_bar / po.a_bar - 1.0),
                 p.state.s,
                 100.0 * (p.state.s / po.s - 1.0)
             ),
@@ -259,14 +271,14 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
         .collect();
     drop(spin);
     if json {
-        let m: Vec<_> = model_states
-            .iter()
-            .map(|(m, r)| match r {
-                Ok(p) => serde_json::json!({"model": m.name(), "state": p}),
-                Err(e) => serde_json::json!({"model": m.name(), "error": e.to_string()}),
-            })
-            .collect();
-        outln!("{}", serde_json::json!({"exact": st, "models": m}));
+        let doc = Document::State {
+            state: AnyState::Exact(Box::new(st)),
+            models: model_states
+                .iter()
+                .map(|(m, r)| ModelAnswer::new(m.name(), r))
+                .collect(),
+        };
+        outln!("{}", doc.to_json());
         return Ok(());
     }
     outln!(
@@ -278,12 +290,12 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
         match r {
             Ok(p) => outln!(
                 "  model {m}: a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %), delta = {:.6}, force = {:.6}",
-                p.a,
-                100.0 * (p.a / st.a_bar - 1.0),
+                p.a_bar,
+                100.0 * (p.a_bar / st.a_bar - 1.0),
                 p.s,
                 100.0 * (p.s / st.s - 1.0),
-                p.delta,
-                p.force
+                p.delta_bar,
+                p.force_bar
             ),
             Err(e) => outln!("  model {m}: {e}"),
         }

@@ -91,7 +91,7 @@ fn branch(rho: f64, n: usize) -> Result<Vec<crate::contact::State>> {
             let t = k as f64 / n as f64;
             c.state_at_s(s_inf - (s_inf - fold.s) * 10f64.powf(-6.0 * (1.0 - t)))
         })
-        .filter(|st| st.force < 40.0)
+        .filter(|st| st.force_bar < 40.0)
         .collect())
 }
 
@@ -182,7 +182,7 @@ fn figures() -> Result<Vec<Figure>> {
             Contact::new(r)
                 .and_then(|c| c.zero_force())
                 .ok()
-                .map(|st| (r, st.delta, st.a))
+                .map(|st| (r, st.delta_bar, st.a_bar))
         })
         .collect();
     let printed_zf: Vec<(f64, f64, f64)> = rhos
@@ -226,14 +226,14 @@ fn figures() -> Result<Vec<Figure>> {
     // Figs. 6–8 at ρ = 0.8.
     let b = branch(0.8, 600)?;
     let s_inf = limits::non_adhesive_s(ModelId::Max, 0.8)?;
-    let a_max = b.iter().map(|st| st.a).fold(0.0, f64::max);
+    let a_max = b.iter().map(|st| st.a_bar).fold(0.0, f64::max);
     out.push(Figure {
         file: "fig6_s_vs_a.svg",
         title: "Fig. 6: aspect ratio against semi-axis, ρ = 0.8".into(),
         x_label: "semi-axis ā",
         y_label: "aspect ratio s",
         series: vec![
-            solid("model", b.iter().map(|st| (st.a, st.s)).collect(), BLUE),
+            solid("model", b.iter().map(|st| (st.a_bar, st.s)).collect(), BLUE),
             dashed(
                 "(29), non-adhesive",
                 vec![(1.9, s_inf), (a_max, s_inf)],
@@ -254,7 +254,7 @@ fn figures() -> Result<Vec<Figure>> {
                 "derived (18)",
                 b.iter()
                     .filter(|st| st.s >= pull.s)
-                    .map(|st| (st.force, st.s))
+                    .map(|st| (st.force_bar, st.s))
                     .collect(),
                 BLUE,
             ),
@@ -262,14 +262,14 @@ fn figures() -> Result<Vec<Figure>> {
                 "derived (18), past pull-off",
                 b.iter()
                     .filter(|st| st.s < pull.s)
-                    .map(|st| (st.force, st.s))
+                    .map(|st| (st.force_bar, st.s))
                     .collect(),
                 BLUE,
             ),
             dashed(
                 "printed (18) (no η): differs",
                 b.iter()
-                    .map(|st| (printed_force(st.a, st.s, st.delta), st.s))
+                    .map(|st| (printed_force(st.a_bar, st.s, st.delta_bar), st.s))
                     .collect(),
                 RED,
             ),
@@ -299,7 +299,7 @@ fn figures() -> Result<Vec<Figure>> {
                 "derived (18)",
                 b.iter()
                     .filter(|st| st.s >= pull.s)
-                    .map(|st| (st.delta, st.force))
+                    .map(|st| (st.delta_bar, st.force_bar))
                     .collect(),
                 BLUE,
             ),
@@ -307,7 +307,7 @@ fn figures() -> Result<Vec<Figure>> {
                 "derived, past pull-off",
                 b.iter()
                     .filter(|st| st.s < pull.s)
-                    .map(|st| (st.delta, st.force))
+                    .map(|st| (st.delta_bar, st.force_bar))
                     .collect(),
                 BLUE,
             ),
@@ -315,7 +315,7 @@ fn figures() -> Result<Vec<Figure>> {
             dashed(
                 "printed (18): differs",
                 b.iter()
-                    .map(|st| (st.delta, printed_force(st.a, st.s, st.delta)))
+                    .map(|st| (st.delta_bar, printed_force(st.a_bar, st.s, st.delta_bar)))
                     .collect(),
                 RED,
             ),
@@ -335,7 +335,7 @@ fn figures() -> Result<Vec<Figure>> {
         let br = branch(rho, 600)?;
         series.push(solid(
             &format!("ρ = {rho}"),
-            br.iter().map(|st| (st.delta, st.force)).collect(),
+            br.iter().map(|st| (st.delta_bar, st.force_bar)).collect(),
             color,
         ));
     }
@@ -356,7 +356,7 @@ fn figures() -> Result<Vec<Figure>> {
         let rho = (th.to_radians() / 2.0).tan().powi(2).min(1.0);
         let po = Contact::new(rho)?.pull_off_load()?.state;
         s_pts.push((th, po.s));
-        f_pts.push((th, -po.force / (1.5 * std::f64::consts::PI)));
+        f_pts.push((th, -po.force_bar / (1.5 * std::f64::consts::PI)));
     }
     let theta_08 = 2.0 * 0.8f64.sqrt().atan().to_degrees();
     out.push(Figure {
@@ -515,7 +515,7 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
             .map(|rho| {
                 Contact::with_model(*m, rho)
                     .and_then(|c| c.pull_off_load())
-                    .map(|p| (rho, p.state.force))
+                    .map(|p| (rho, p.state.force_bar))
             })
             .collect::<Result<Vec<_>>>()?;
         series.push(solid(&format!("model {m}"), pts, c));
@@ -546,7 +546,7 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         series.push(solid(&format!("exact, ρ = {rho}"), z, c));
         let m = Contact::new(rho)?.pull_off_load()?.state;
         let ell = grid(0.0, 2.0 * std::f64::consts::PI, 241)
-            .map(|t| (m.a * t.cos(), m.b * t.sin()))
+            .map(|t| (m.a_bar * t.cos(), m.b_bar * t.sin()))
             .collect();
         series.push(dashed(&format!("paper's ellipse, ρ = {rho}"), ell, c));
     }
@@ -600,7 +600,7 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         let model: Vec<(f64, f64)> = grid(0.0, std::f64::consts::FRAC_PI_2, 181)
             .map(|t| {
                 let u = t.sin().powi(2);
-                let phi = (m.b * t.sin()).atan2(m.a * t.cos());
+                let phi = (m.b_bar * t.sin()).atan2(m.a_bar * t.cos());
                 let dn = contact.normal_derivative(&m, u);
                 (phi.to_degrees(), (dn - 1.0).abs().max(floor).log10())
             })

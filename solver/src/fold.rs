@@ -25,6 +25,7 @@ use serde::{Deserialize, Serialize};
 
 /// Which quantity turns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum FoldCondition {

@@ -30,6 +30,7 @@ pub mod generated;
 pub mod limits;
 pub mod model;
 pub mod newton;
+pub mod report;
 pub mod units;
 
 /// The user's guide.

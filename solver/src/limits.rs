@@ -34,7 +34,7 @@ pub fn axisymmetric(model: ModelId, a: f64) -> Result<(f64, f64)> {
 /// ρ = 1: (ā_c, F̄_c, δ̄_c); for the paper's model (12^(1/3), −3π/2, 12^(−1/3)).
 pub fn axisymmetric_critical(model: ModelId) -> Result<(f64, f64, f64)> {
     let st = Contact::with_model(model, 1.0)?.pull_off_load()?.state;
-    Ok((st.a, st.force, st.delta))
+    Ok((st.a_bar, st.force_bar, st.delta_bar))
 }
 
 /// The non-adhesive aspect ratio s∞(ρ): for the paper's model the root of

@@ -6,6 +6,7 @@ use std::process::ExitCode;
 use thinjkr::conformal::{self as family, Conformal};
 use thinjkr::curve::trace;
 use thinjkr::units::Cylinders;
+use thinjkr::report::{AnyState, Document, ErrorBody, ModelEntry};
 use thinjkr::{Contact, ModelId, PullOff, State};
 
 fn parse_model(s: &str) -> Result<ModelChoice, String> {
@@ -38,7 +39,7 @@ fn not_for_conformal(m: &Conformal, what: &str) -> thinjkr::Error {
     thinjkr::Error::Unavailable {
         model: "conformal:K",
         what: format!("{what} for {}", m.name()),
-        why: "the conformal family is solved by solve, pull-off and zero-force so far",
+        why: "the conformal family is solved by solve, pull-off, zero-force and physical so far",
     }
 }
 
@@ -217,10 +218,29 @@ enum Command {
         /// Work of adhesion Δγ [J/m²], > 0.
         #[arg(long, allow_hyphen_values = true)]
         work_of_adhesion: Option<f64>,
-        /// Force [N] (the stable state); without it, pull-off.
-        #[arg(long, allow_hyphen_values = true)]
+        /// Force [N] (the stable state); without it and --delta, pull-off under load control.
+        #[arg(long, allow_hyphen_values = true, group = "physical_control")]
         force: Option<f64>,
+        /// Approach [m].
+        #[arg(long, allow_hyphen_values = true, group = "physical_control")]
+        delta: Option<f64>,
+        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K, or exact; `thinjkr models` lists them.
+        #[arg(long, default_value = "max", value_parser = parse_model)]
+        model: ModelChoice,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
     },
+    /// The JSON Schema of every `--json` output (docs/schema.json).
+    Schema,
+    /// Shell completions for SHELL (bash, zsh, fish, elvish, powershell) on standard output.
+    #[command(after_help = "Example:\n  thinjkr completions bash > ~/.local/share/bash-completion/completions/thinjkr")]
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// The manual page (roff) on standard output (docs/thinjkr.1).
+    Manpage,
 }
 
 #[derive(Clone, Copy, PartialEq, ValueEnum)]
@@ -235,8 +255,27 @@ enum Format {
     Json,
 }
 
-fn json(st: &State) -> serde_json::Value {
-    serde_json::to_value(st).expect("a state serialises")
+/// One state as the output schema's document.
+fn state_doc(st: &State) -> String {
+    Document::State {
+        state: AnyState::Ellipse(*st),
+        models: Vec::new(),
+    }
+    .to_json()
+}
+
+/// Whether the subcommand prints JSON (then an error is JSON on stdout too).
+fn wants_json(c: &Option<Command>) -> bool {
+    match c {
+        Some(Command::Solve { json, .. })
+        | Some(Command::PullOff { json, .. })
+        | Some(Command::ZeroForce { json, .. })
+        | Some(Command::Models { json, .. })
+        | Some(Command::Physical { json, .. }) => *json,
+        Some(Command::Curve { format, .. }) => matches!(format, Format::Json),
+        Some(Command::Exact { command }) => command.json(),
+        _ => false,
+    }
 }
 
 fn stability(st: &State) -> String {
@@ -245,7 +284,7 @@ fn stability(st: &State) -> String {
         Some(false) => "unstable",
         None => "n/a",
     };
-    match (st.stability.displacement, st.stability.load) {
+    match (st.stability.stable_displacement, st.stability.stable_load) {
         (None, None) => String::new(),
         (d, l) => format!(
             " [displacement control: {}, load control: {}]",
@@ -259,10 +298,10 @@ fn show(label: &str, st: &State) -> thinjkr::Result<()> {
     outln!(
         "{label}: model {}, a = {}, s = {}, delta = {}, force = {}, xi = {}, p0 = {}, error (14) = {:.4} %{}{}{}",
         st.model,
-        output::num(st.a),
+        output::num(st.a_bar),
         output::num(st.s),
-        output::num(st.delta),
-        output::num(st.force),
+        output::num(st.delta_bar),
+        output::num(st.force_bar),
         output::num(st.xi),
         output::num(st.p0),
         100.0 * st.bc_error,
@@ -279,10 +318,14 @@ fn basis(p: &PullOff) -> &'static str {
 
 fn emit_pull_off(p: &PullOff, as_json: bool) -> thinjkr::Result<()> {
     if as_json {
-        outln!(
-            "{}",
-            serde_json::to_value(p).expect("a pull-off serialises")
-        );
+        let doc = Document::PullOff {
+            state: AnyState::Ellipse(p.state),
+            control: p.control,
+            basis: Some(p.basis),
+            passed: Vec::new(),
+            models: Vec::new(),
+        };
+        outln!("{}", doc.to_json());
     } else {
         show("pull-off", &p.state)?;
         outln!("  end point: {}", basis(p));
@@ -292,7 +335,7 @@ fn emit_pull_off(p: &PullOff, as_json: bool) -> thinjkr::Result<()> {
 
 fn emit(label: &str, st: &State, as_json: bool) -> thinjkr::Result<()> {
     if as_json {
-        outln!("{}", json(st));
+        outln!("{}", state_doc(st));
     } else {
         show(label, st)?;
     }
@@ -383,16 +426,13 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                             thinjkr::error::short(rho)
                         )));
                     }
-                    if j {
-                        let v: Vec<_> = states.iter().map(json).collect();
-                        outln!(
-                            "{}",
-                            if v.len() == 1 {
-                                v[0].clone()
-                            } else {
-                                serde_json::Value::Array(v)
-                            }
-                        );
+                    if j && states.len() == 1 {
+                        outln!("{}", state_doc(&states[0]));
+                    } else if j {
+                        let doc = Document::States {
+                            states: states.iter().map(|st| AnyState::Ellipse(*st)).collect(),
+                        };
+                        outln!("{}", doc.to_json());
                     } else {
                         for st in &states {
                             show("state", st)?;
@@ -654,7 +694,11 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
             let curve = trace(&c, points, 20.0)?;
             match format {
                 Format::Json => {
-                    outln!("{}", serde_json::to_string(&curve).expect("serialisable"))
+                    let doc = Document::Curve {
+                        states: curve.states,
+                        folds: curve.folds,
+                    };
+                    outln!("{}", doc.to_json())
                 }
                 Format::Csv => {
                     outln!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
@@ -663,14 +707,14 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                         outln!(
                             "{},{},{},{},{},{},{},{},{}",
                             st.model,
-                            st.delta,
-                            st.force,
-                            st.a,
+                            st.delta_bar,
+                            st.force_bar,
+                            st.a_bar,
                             st.s,
                             st.bc_error,
                             st.beyond_size_fold,
-                            flag(st.stability.displacement),
-                            flag(st.stability.load)
+                            flag(st.stability.stable_displacement),
+                            flag(st.stability.stable_load)
                         );
                     }
                 }
@@ -689,17 +733,26 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                 "the free-boundary problem (2)-(3) itself (boundary integral equation on a contour series)".into(),
             ));
             if j {
-                let v: Vec<_> = rows
-                    .iter()
-                    .map(|(n, t)| serde_json::json!({ "name": n, "description": t }))
-                    .collect();
-                outln!("{}", serde_json::json!({ "models": v }));
+                let doc = Document::Models {
+                    models: rows
+                        .into_iter()
+                        .map(|(name, description)| ModelEntry { name, description })
+                        .collect(),
+                };
+                outln!("{}", doc.to_json());
             } else {
                 for (n, t) in rows {
                     outln!("{n:<13} {t}");
                 }
             }
         }
+        Some(Command::Schema) => outln!("{}", thinjkr::report::schema().trim_end()),
+        Some(Command::Completions { shell }) => {
+            let mut buf = Vec::new();
+            clap_complete::generate(shell, &mut <Cli as clap::CommandFactory>::command(), "thinjkr", &mut buf);
+            out!("{}", String::from_utf8_lossy(&buf));
+        }
+        Some(Command::Manpage) => out!("{}", manpage()),
         Some(Command::Figures { out }) => {
             for p in thinjkr::figures::write(&out)? {
                 outln!("{}", p.display());
@@ -716,6 +769,9 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
             g2,
             work_of_adhesion,
             force,
+            delta,
+            model,
+            json,
         }) => {
             let cyl = match file {
                 Some(p) => {
@@ -750,24 +806,157 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                     }
                 }
             };
-            let st = match force {
-                Some(f) => cyl.at_load(f)?,
-                None => cyl.pull_off()?,
-            };
-            outln!(
-                "{}",
-                serde_json::to_string_pretty(&st).expect("serialisable")
-            );
+            physical(&cyl, model, force, delta, json)?;
         }
     }
     Ok(status)
 }
 
+/// The manual page, generated from the command-line definitions.
+fn manpage() -> String {
+    let mut buf = Vec::new();
+    clap_mangen::Man::new(<Cli as clap::CommandFactory>::command())
+        .render(&mut buf)
+        .expect("rendering into memory");
+    String::from_utf8_lossy(&buf).into_owned()
+}
+
+/// `physical`: the state of `model` for the contact `cyl` at force `force`
+/// (N) or approach `delta` (m), or its pull-off under load control; in SI
+/// units beside the dimensionless state, with a warning on stderr where
+/// the input lies outside the model's stated range (it still answers).
+fn physical(
+    cyl: &Cylinders,
+    model: ModelChoice,
+    force: Option<f64>,
+    delta: Option<f64>,
+    json: bool,
+) -> thinjkr::Result<()> {
+    use thinjkr::exact::branch::ExactControl;
+    let check_range = |name: &'static str, v: f64, _: bool, range: &'static str| {
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(thinjkr::Error::OutOfRange { name, value: v, range: range.into() })
+        }
+    };
+    let sc = cyl.scales()?;
+    let force = force
+        .map(|f| check_range("force", f, true, "finite").map(|f| f / sc.force))
+        .transpose()?;
+    let delta = delta
+        .map(|d| check_range("delta", d, true, "finite").map(|d| d / sc.approach))
+        .transpose()?;
+    let state = match model {
+        ModelChoice::Approx(m) => {
+            let c = Contact::with_model(m, sc.rho)?;
+            AnyState::Ellipse(match (force, delta) {
+                (Some(f), _) => c.at_load(f)?,
+                (_, Some(d)) => c.at_displacement(d)?,
+                _ => c.pull_off_load()?.state,
+            })
+        }
+        ModelChoice::Conformal(m) => AnyState::Conformal(match (force, delta) {
+            (Some(f), _) => m.solve(sc.rho, family::Control::Force(f))?,
+            (_, Some(d)) => m.solve(sc.rho, family::Control::Delta(d))?,
+            _ => m.pull_off(sc.rho, family::PullOffControl::Load)?.0,
+        }),
+        ModelChoice::Exact => AnyState::Exact(Box::new(match (force, delta) {
+            (Some(f), _) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Force(f))?,
+            (_, Some(d)) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Delta(d))?,
+            _ => thinjkr::exact::pull_off_resolved(sc.rho)?.0,
+        })),
+    };
+    let (a_bar, b_bar, delta_bar, force_bar) = match &state {
+        AnyState::Ellipse(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
+        AnyState::Conformal(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
+        AnyState::Exact(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
+    };
+    let si = thinjkr::report::Si {
+        a: a_bar * sc.length,
+        b: b_bar * sc.length,
+        delta: delta_bar * sc.approach,
+        force: force_bar * sc.force,
+        h_over_a: cyl.h1.max(cyl.h2) / (a_bar * sc.length),
+    };
+    for (v, name) in [(si.a, "a"), (si.b, "b"), (si.delta, "delta"), (si.force, "force"), (si.h_over_a, "h/a")] {
+        if !v.is_finite() {
+            return Err(thinjkr::Error::Usage(format!(
+                "the result {name} in SI units is not a finite number for these inputs (their magnitudes are at the ends of f64)"
+            )));
+        }
+    }
+    let mut warnings = Vec::new();
+    if sc.rho < 0.8 {
+        warnings.push(format!(
+            "rho = R2/R1 = {} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
+            output::num(sc.rho)
+        ));
+    }
+    if si.h_over_a > 0.1 {
+        warnings.push(format!(
+            "h/a = {}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
+            output::num(si.h_over_a)
+        ));
+    }
+    for w in &warnings {
+        eprintln!("thinjkr: warning: {w}");
+    }
+    if json {
+        let doc = Document::Physical {
+            state,
+            si,
+            scales: sc,
+            warnings,
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    let model_name = match &state {
+        AnyState::Ellipse(st) => st.model.name().to_string(),
+        AnyState::Conformal(st) => st.model.clone(),
+        _ => "exact".into(),
+    };
+    outln!(
+        "physical: model {model_name}, rho = {}, a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, h/a = {:.4}",
+        output::num(sc.rho),
+        si.a,
+        si.b,
+        si.delta,
+        si.force,
+        si.h_over_a
+    );
+    outln!(
+        "  dimensionless (17): a = {}, s = {}, delta = {}, force = {}; scales: L = {:.6e} m, approach {:.6e} m, force {:.6e} N",
+        output::num(a_bar),
+        output::num(b_bar / a_bar),
+        output::num(delta_bar),
+        output::num(force_bar),
+        sc.length,
+        sc.approach,
+        sc.force
+    );
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let json_mode = wants_json(&cli.command);
+    let mut result = output::check_open().and_then(|()| run(cli));
+    // in --json mode an error is a JSON document on stdout as well (and
+    // the same words on stderr), with the nonzero status
+    if let Err(e) = &result {
+        if json_mode && !output::broken_pipe() {
+            let doc = Document::Error {
+                error: ErrorBody::from(e),
+            };
+            if let Err(w) = output::line(format_args!("{}", doc.to_json())) {
+                result = Err(w);
+            }
+        }
+    }
     // what was written before an error is flushed too (its own write
     // error, if any, then takes the place of the first)
-    let result = output::check_open().and_then(|()| run(cli));
     let flushed = output::finish();
     match result.and_then(|status| flushed.map(|()| status)) {
         Ok(status) => ExitCode::from(status),

@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 
 /// Two coated cylinders in SI units (as a TOML file: these keys, no others).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Cylinders {
     /// Radius r₁ of cylinder 1 (m).
@@ -33,6 +34,7 @@ pub struct Cylinders {
 
 /// The derived model parameters of a [`Cylinders`] contact.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Scales {
     /// Principal radius R₁ ≥ R₂ of the gap (1) (m).
     pub big_r1: f64,
@@ -54,6 +56,7 @@ pub struct Scales {
 
 /// A state in SI units.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct PhysicalState {
     /// The dimensionless state.
     pub state: State,
@@ -147,12 +150,12 @@ impl Cylinders {
     pub fn to_physical(&self, sc: &Scales, st: State) -> Result<PhysicalState> {
         let p = PhysicalState {
             state: st,
-            a: st.a * sc.length,
-            b: st.b * sc.length,
-            delta: st.delta * sc.approach,
-            force: st.force * sc.force,
+            a: st.a_bar * sc.length,
+            b: st.b_bar * sc.length,
+            delta: st.delta_bar * sc.approach,
+            force: st.force_bar * sc.force,
             p0: st.p0 * sc.pressure,
-            h_over_a: self.h1.max(self.h2) / (st.a * sc.length),
+            h_over_a: self.h1.max(self.h2) / (st.a_bar * sc.length),
         };
         for (v, name) in [
             (p.a, "a"),

@@ -75,8 +75,8 @@ fn ten_thousand_lines_round_trip_in_order() {
         match res {
             Ok(st) => {
                 states += 1;
-                assert_eq!(f[4].parse::<f64>().unwrap(), st.a, "row {row}");
-                assert_eq!(f[8].parse::<f64>().unwrap(), st.force, "row {row}");
+                assert_eq!(f[4].parse::<f64>().unwrap(), st.a_bar, "row {row}");
+                assert_eq!(f[8].parse::<f64>().unwrap(), st.force_bar, "row {row}");
                 assert_eq!(f[12], "");
             }
             Err(e) => assert!(f[12].contains(&e.to_string().replace('"', "'")), "{row}"),

@@ -28,10 +28,10 @@ const SIZES: [f64; 10] = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 10.0, 50.0];
 /// 1 + |value| for δ̄ and F̄, which cross zero), s absolute.
 fn difference(x: &State, y: &State) -> f64 {
     [
-        (x.a - y.a) / y.a,
+        (x.a_bar - y.a_bar) / y.a_bar,
         x.s - y.s,
-        (x.delta - y.delta) / (1.0 + y.delta.abs()),
-        (x.force - y.force) / (1.0 + y.force.abs()),
+        (x.delta_bar - y.delta_bar) / (1.0 + y.delta_bar.abs()),
+        (x.force_bar - y.force_bar) / (1.0 + y.force_bar.abs()),
     ]
     .iter()
     .fold(0.0f64, |m, v| m.max(v.abs()))
@@ -52,7 +52,7 @@ fn compare(tally: &mut Tally, what: String, cold: Result<State>, walk: Result<St
             if d.is_nan() || d > 1e-10 || x.beyond_size_fold != y.beyond_size_fold {
                 tally.mismatches.push(format!(
                     "{what}: states differ by {d:e} (cold a = {}, s = {}, beyond fold {}; walk a = {}, s = {}, beyond fold {})",
-                    x.a, x.s, x.beyond_size_fold, y.a, y.s, y.beyond_size_fold
+                    x.a_bar, x.s, x.beyond_size_fold, y.a_bar, y.s, y.beyond_size_fold
                 ));
             }
         }
@@ -66,8 +66,8 @@ fn compare(tally: &mut Tally, what: String, cold: Result<State>, walk: Result<St
         }
         _ => tally.mismatches.push(format!(
             "{what}: cold {:?}, walk {:?}",
-            cold.map(|s| (s.a, s.s)),
-            walk.map(|s| (s.a, s.s))
+            cold.map(|s| (s.a_bar, s.s)),
+            walk.map(|s| (s.a_bar, s.s))
         )),
     }
 }

@@ -25,10 +25,10 @@ fn models() -> [ModelId; 4] {
 fn close(label: &str, st: &State, circle: &State, eps: f64) {
     let tol = 10.0 * eps + 1e-12;
     for (name, x, y) in [
-        ("a_bar", st.a, circle.a),
+        ("a_bar", st.a_bar, circle.a_bar),
         ("s", st.s, circle.s),
-        ("delta_bar", st.delta, circle.delta),
-        ("force_bar", st.force, circle.force),
+        ("delta_bar", st.delta_bar, circle.delta_bar),
+        ("force_bar", st.force_bar, circle.force_bar),
     ] {
         assert!(
             (x - y).abs() <= tol * (1.0 + y.abs()),
@@ -73,7 +73,7 @@ fn end_of_displacement_control_tends_to_the_circles_bifurcation() {
                 .unwrap()
                 .state;
             assert!(st.s < 1.0, "{m} at 1 - rho = {eps:e}");
-            (st.force - at_one.force).abs()
+            (st.force_bar - at_one.force_bar).abs()
         };
         let (d8, d10) = (dist(1e-8), dist(1e-10));
         let ratio = d8 / d10;

@@ -51,10 +51,10 @@ proptest! {
         let ad = eval_prec(&simplify(&subs(&subs(&l.zero_force.dbar, "eta", eta), "abar", &rat(1, 1))), &at, 30).unwrap();
         let a3 = eval_prec(&simplify(&subs(&l.zero_force.abar_cubed, "eta", eta)), &at, 30).unwrap();
         let r = eval_prec(&l.zero_force.rho, &at, 30).unwrap();
-        prop_assert!((st.a * st.delta - ad).abs() < 1e-8 * ad.abs(), "a δ {} vs {}", st.a * st.delta, ad);
-        prop_assert!((st.a.powi(3) - a3).abs() < 1e-8 * a3, "a³ {} vs {}", st.a.powi(3), a3);
+        prop_assert!((st.a_bar * st.delta_bar - ad).abs() < 1e-8 * ad.abs(), "a δ {} vs {}", st.a_bar * st.delta_bar, ad);
+        prop_assert!((st.a_bar.powi(3) - a3).abs() < 1e-8 * a3, "a³ {} vs {}", st.a_bar.powi(3), a3);
         prop_assert!((r - rho).abs() < 1e-9, "(28): {} vs {}", r, rho);
-        prop_assert!(st.force.abs() < 1e-9);
+        prop_assert!(st.force_bar.abs() < 1e-9);
     }
 
     /// Solving again at a state's own δ̄ returns the same state.
@@ -62,12 +62,12 @@ proptest! {
     fn resolving_at_own_delta_is_idempotent(rho in 0.2f64..1.0, delta in -0.2f64..40.0) {
         let c = Contact::new(rho).unwrap();
         if let Ok(st) = c.at_displacement(delta) {
-            let again = c.at_displacement(st.delta).unwrap();
-            prop_assert!((again.a - st.a).abs() < 1e-9 * st.a && (again.s - st.s).abs() < 1e-9);
+            let again = c.at_displacement(st.delta_bar).unwrap();
+            prop_assert!((again.a_bar - st.a_bar).abs() < 1e-9 * st.a_bar && (again.s - st.s).abs() < 1e-9);
             // and at its own force, when it lies on the part that is stable under load control
             if st.s >= c.pull_off_load().unwrap().state.s {
-                let by_force = c.at_load(st.force).unwrap();
-                prop_assert!((by_force.a - st.a).abs() < 1e-7 * st.a, "{} vs {}", by_force.a, st.a);
+                let by_force = c.at_load(st.force_bar).unwrap();
+                prop_assert!((by_force.a_bar - st.a_bar).abs() < 1e-7 * st.a_bar, "{} vs {}", by_force.a_bar, st.a_bar);
             }
         }
     }
@@ -123,20 +123,20 @@ fn axisymmetric_limit() {
         assert_eq!(st.s, 1.0);
         // δ̄ is the one asked for and ā its root; at δ̄ = 0 the two terms
         // cancel, so the comparison is relative to their size
-        let terms = st.a * st.a / 4.0 + 2.0 / st.a;
+        let terms = st.a_bar * st.a_bar / 4.0 + 2.0 / st.a_bar;
         assert_relative_eq!(
-            st.delta,
-            st.a * st.a / 4.0 - 2.0 / st.a,
+            st.delta_bar,
+            st.a_bar * st.a_bar / 4.0 - 2.0 / st.a_bar,
             max_relative = 1e-12,
             epsilon = 1e-14 * terms
         );
-        let f = std::f64::consts::PI / 96.0 * st.a.powi(4) * (st.a * st.a - 24.0 / st.a);
-        assert_relative_eq!(st.force, f, max_relative = 1e-12, epsilon = 1e-12);
+        let f = std::f64::consts::PI / 96.0 * st.a_bar.powi(4) * (st.a_bar * st.a_bar - 24.0 / st.a_bar);
+        assert_relative_eq!(st.force_bar, f, max_relative = 1e-12, epsilon = 1e-12);
         assert!(st.bc_error.abs() < 1e-15);
     }
     let po = c.pull_off_load().unwrap().state;
-    assert_relative_eq!(po.force, -1.5 * std::f64::consts::PI, max_relative = 1e-12);
-    assert_relative_eq!(po.a, 12f64.cbrt(), max_relative = 1e-12);
+    assert_relative_eq!(po.force_bar, -1.5 * std::f64::consts::PI, max_relative = 1e-12);
+    assert_relative_eq!(po.a_bar, 12f64.cbrt(), max_relative = 1e-12);
     // the model is continuous as ρ → 1
     let near = Contact::new(1.0 - 1e-7)
         .unwrap()
@@ -144,7 +144,7 @@ fn axisymmetric_limit() {
         .unwrap();
     let exact = c.at_displacement(2.0).unwrap();
     assert!(
-        (near.s - 1.0).abs() < 1e-5 && (near.a - exact.a).abs() < 1e-5 * exact.a,
+        (near.s - 1.0).abs() < 1e-5 && (near.a_bar - exact.a_bar).abs() < 1e-5 * exact.a_bar,
         "{near:?} vs {exact:?}"
     );
     let near_po = Contact::new(1.0 - 1e-6)
@@ -152,7 +152,7 @@ fn axisymmetric_limit() {
         .pull_off_load()
         .unwrap()
         .state;
-    assert!((near_po.force - po.force).abs() < 1e-4);
+    assert!((near_po.force_bar - po.force_bar).abs() < 1e-4);
 }
 
 /// F̄(δ̄) is continuous along a traced curve, and every traced point solves
@@ -168,7 +168,7 @@ fn curve_is_continuous_and_solves_the_equations() {
             let cv = thinjkr::curve::trace(&c, n, 20.0).unwrap();
             cv.states
                 .windows(2)
-                .map(|w| (w[1].force - w[0].force).abs())
+                .map(|w| (w[1].force_bar - w[0].force_bar).abs())
                 .fold(0.0, f64::max)
         };
         let (j1, j2) = (max_jump(500), max_jump(1000));
@@ -178,22 +178,22 @@ fn curve_is_continuous_and_solves_the_equations() {
         );
         for st in &curve.states {
             let (r, _) = thinjkr::ModelId::Max.model().residuals_and_jacobian(
-                nalgebra::Vector2::new(st.a, st.s),
+                nalgebra::Vector2::new(st.a_bar, st.s),
                 rho,
-                st.delta,
+                st.delta_bar,
             );
-            assert!(r.norm() < 1e-8 * (1.0 + st.a.powi(3)));
-            assert!(st.force.is_finite() && st.a > 0.0 && st.s > 0.0 && st.s <= 1.0);
+            assert!(r.norm() < 1e-8 * (1.0 + st.a_bar.powi(3)));
+            assert!(st.force_bar.is_finite() && st.a_bar > 0.0 && st.s > 0.0 && st.s <= 1.0);
         }
         let min_f = curve
             .states
             .iter()
-            .map(|s| s.force)
+            .map(|s| s.force_bar)
             .fold(f64::INFINITY, f64::min);
         assert!(
-            min_f >= po.force - 1e-6 && min_f < po.force + 0.05,
+            min_f >= po.force_bar - 1e-6 && min_f < po.force_bar + 0.05,
             "rho {rho}: {min_f} vs pull-off {}",
-            po.force
+            po.force_bar
         );
         let kinds: Vec<_> = curve.folds.iter().map(|f| f.kind).collect();
         assert!(kinds.contains(&thinjkr::curve::FoldKind::Load), "{kinds:?}");
@@ -205,8 +205,8 @@ fn curve_is_continuous_and_solves_the_equations() {
             .find(|f| f.kind == thinjkr::curve::FoldKind::Load)
             .unwrap();
         let (df, da, ds) = (
-            (fold.state.force - po.force).abs() / po.force.abs(),
-            (fold.state.a - po.a).abs() / po.a,
+            (fold.state.force_bar - po.force_bar).abs() / po.force_bar.abs(),
+            (fold.state.a_bar - po.a_bar).abs() / po.a_bar,
             (fold.state.s - po.s).abs(),
         );
         assert!(
@@ -226,16 +226,16 @@ fn curve_is_continuous_and_solves_the_equations() {
 fn contact_size_control() {
     let c = Contact::new(0.8).unwrap();
     let st = c.at_displacement(2.0).unwrap();
-    let by_size = c.at_contact_size(st.a).unwrap();
+    let by_size = c.at_contact_size(st.a_bar).unwrap();
     assert!(
         by_size
             .iter()
-            .any(|x| (x.s - st.s).abs() < 1e-9 && (x.delta - 2.0).abs() < 1e-8),
+            .any(|x| (x.s - st.s).abs() < 1e-9 && (x.delta_bar - 2.0).abs() < 1e-8),
         "{by_size:?}"
     );
     // below the fold of the contact size there is no state
     let fold = c.size_fold().unwrap();
-    assert!(c.at_contact_size(0.9 * fold.a).unwrap().is_empty());
+    assert!(c.at_contact_size(0.9 * fold.a_bar).unwrap().is_empty());
 }
 
 /// The dimensional and the nondimensional APIs agree.
@@ -267,12 +267,12 @@ fn physical_units_agree_with_dimensionless() {
     let dimless = Contact::new(sc.rho).unwrap().pull_off_load().unwrap().state;
     assert_relative_eq!(
         phys.force,
-        dimless.force * 2.0 * sc.big_r1 * 0.05,
+        dimless.force_bar * 2.0 * sc.big_r1 * 0.05,
         max_relative = 1e-9
     );
     assert_relative_eq!(
         phys.a,
-        dimless.a * (2.0 * sc.big_r1.powi(2) * 0.05 / sc.m).powf(1.0 / 6.0),
+        dimless.a_bar * (2.0 * sc.big_r1.powi(2) * 0.05 / sc.m).powf(1.0 / 6.0),
         max_relative = 1e-9
     );
     let at_f = cyl.at_load(0.5 * phys.force).unwrap();
@@ -349,7 +349,7 @@ fn bad_inputs_are_typed_errors() {
     }
     let c = Contact::new(0.8).unwrap();
     let po = c.pull_off_load().unwrap().state;
-    assert_eq!(names(c.at_load(po.force - 0.1).unwrap_err()), "force");
+    assert_eq!(names(c.at_load(po.force_bar - 0.1).unwrap_err()), "force");
     assert_eq!(names(c.at_contact_size(-1.0).unwrap_err()), "a");
     assert_eq!(names(c.at_displacement(f64::NAN).unwrap_err()), "delta");
     assert_eq!(names(good.at_load(f64::NAN).unwrap_err()), "force");
@@ -369,10 +369,10 @@ fn sweep_converges_or_reports_no_state() {
                 Ok(st) => {
                     solved += 1;
                     for v in [
-                        st.a,
+                        st.a_bar,
                         st.s,
-                        st.delta,
-                        st.force,
+                        st.delta_bar,
+                        st.force_bar,
                         st.xi,
                         st.p0,
                         st.bc_error,

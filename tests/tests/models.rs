@@ -13,11 +13,11 @@ use thinjkr_derive::{ansatz, energy};
 
 fn finite_state(st: &thinjkr::State) -> bool {
     [
-        st.a,
-        st.b,
+        st.a_bar,
+        st.b_bar,
         st.s,
-        st.delta,
-        st.force,
+        st.delta_bar,
+        st.force_bar,
         st.xi,
         st.p0,
         st.bc_error,
@@ -67,15 +67,15 @@ fn every_model_sweeps_without_nan_or_panic() {
                         solved += 1;
                         assert!(finite_state(&st), "{id} rho {rho} delta {delta}: {st:?}");
                         // the state is at the requested approach, not near it
-                        assert_eq!(st.delta, delta, "{id} rho {rho}");
+                        assert_eq!(st.delta_bar, delta, "{id} rho {rho}");
                         assert_eq!(st.model, id);
                         let (r, _) = id.model().residuals_and_jacobian(
-                            Vector2::new(st.a, st.s),
+                            Vector2::new(st.a_bar, st.s),
                             rho,
-                            st.delta,
+                            st.delta_bar,
                         );
                         assert!(
-                            r.norm() <= 1e-8 * id.model().residual_scale(st.a, st.delta),
+                            r.norm() <= 1e-8 * id.model().residual_scale(st.a_bar, st.delta_bar),
                             "{id} rho {rho} delta {delta}: residual {r}"
                         );
                     }
@@ -87,7 +87,7 @@ fn every_model_sweeps_without_nan_or_panic() {
             }
             match c.pull_off_load() {
                 Ok(po) => assert!(
-                    finite_state(&po.state) && po.state.force < 0.0,
+                    finite_state(&po.state) && po.state.force_bar < 0.0,
                     "{id} rho {rho}: {po:?}"
                 ),
                 // the `apexes` closure at small ρ: F̄ decreases along the
@@ -102,7 +102,7 @@ fn every_model_sweeps_without_nan_or_panic() {
                 .unwrap_or_else(|e| panic!("{id} rho {rho}: {e}"));
             // F̄ ~ ā⁶ terms cancel to zero here
             assert!(
-                zf.force.abs() < 1e-11 * zf.a.powi(6) && finite_state(&zf),
+                zf.force_bar.abs() < 1e-11 * zf.a_bar.powi(6) && finite_state(&zf),
                 "{id} rho {rho}: {zf:?}"
             );
             if rho < 1.0 {
@@ -136,15 +136,15 @@ fn energy_model_reproduces_the_axisymmetric_solution() {
             assert_eq!(st.s, 1.0);
             // δ̄ is the one asked for and ā its root; at δ̄ = 0 the two terms
             // cancel, so the comparison is relative to their size
-            let terms = st.a * st.a / 4.0 + 2.0 / st.a;
+            let terms = st.a_bar * st.a_bar / 4.0 + 2.0 / st.a_bar;
             assert_relative_eq!(
-                st.delta,
-                st.a * st.a / 4.0 - 2.0 / st.a,
+                st.delta_bar,
+                st.a_bar * st.a_bar / 4.0 - 2.0 / st.a_bar,
                 max_relative = 1e-12,
                 epsilon = 1e-14 * terms
             );
-            let f = std::f64::consts::PI / 96.0 * st.a.powi(4) * (st.a * st.a - 24.0 / st.a);
-            assert_relative_eq!(st.force, f, max_relative = 1e-12, epsilon = 1e-12);
+            let f = std::f64::consts::PI / 96.0 * st.a_bar.powi(4) * (st.a_bar * st.a_bar - 24.0 / st.a_bar);
+            assert_relative_eq!(st.force_bar, f, max_relative = 1e-12, epsilon = 1e-12);
             // the edge is tensile and (3)₂ holds exactly on the circle
             for u in [0.0, 0.3, 1.0] {
                 assert_relative_eq!(c.normal_derivative(&st, u), 1.0, max_relative = 1e-12);
@@ -152,11 +152,11 @@ fn energy_model_reproduces_the_axisymmetric_solution() {
         }
         let po = c.pull_off_load().unwrap();
         assert_relative_eq!(
-            po.state.force,
+            po.state.force_bar,
             -1.5 * std::f64::consts::PI,
             max_relative = 1e-12
         );
-        assert_relative_eq!(po.state.a, 12f64.cbrt(), max_relative = 1e-12);
+        assert_relative_eq!(po.state.a_bar, 12f64.cbrt(), max_relative = 1e-12);
     }
 }
 
@@ -268,25 +268,25 @@ fn energy_fold_is_the_minimum_of_the_traced_force() {
             .iter()
             .enumerate()
             .filter(|(_, st)| !st.beyond_size_fold)
-            .min_by(|x, y| x.1.force.total_cmp(&y.1.force))
+            .min_by(|x, y| x.1.force_bar.total_cmp(&y.1.force_bar))
             .unwrap();
         assert!(
-            po.state.force <= min.force + 1e-12,
+            po.state.force_bar <= min.force_bar + 1e-12,
             "fold {} above traced minimum {}",
-            po.state.force,
-            min.force
+            po.state.force_bar,
+            min.force_bar
         );
         assert!(
-            (po.state.force - min.force).abs() < 1e-5 * min.force.abs(),
+            (po.state.force_bar - min.force_bar).abs() < 1e-5 * min.force_bar.abs(),
             "rho {rho}: fold F {} vs traced minimum {}",
-            po.state.force,
-            min.force
+            po.state.force_bar,
+            min.force_bar
         );
         // load-controlled stability flips there
         let before = &curve.states[k.saturating_sub(20)];
         let after = &curve.states[(k + 20).min(curve.states.len() - 1)];
-        assert_eq!(before.stability.load, Some(true), "rho {rho}: {before:?}");
-        assert_eq!(after.stability.load, Some(false), "rho {rho}: {after:?}");
+        assert_eq!(before.stability.stable_load, Some(true), "rho {rho}: {before:?}");
+        assert_eq!(after.stability.stable_load, Some(false), "rho {rho}: {after:?}");
     }
 }
 
@@ -297,8 +297,8 @@ fn models_without_energy_do_not_claim_stability() {
     for id in [ModelId::Max, ModelId::Apexes, ModelId::Apex45] {
         let c = Contact::with_model(id, 0.8).unwrap();
         let st = c.at_displacement(2.0).unwrap();
-        assert_eq!(st.stability.displacement, None);
-        assert_eq!(st.stability.load, None);
+        assert_eq!(st.stability.stable_displacement, None);
+        assert_eq!(st.stability.stable_load, None);
         assert_eq!(
             c.pull_off_displacement().unwrap().basis,
             FoldBasis::ModelFold
@@ -320,7 +320,7 @@ fn controls_hit_their_targets() {
                     .at_load(force)
                     .unwrap_or_else(|e| panic!("{id} rho {rho} F {force}: {e}"));
                 assert!(
-                    (st.force - force).abs() <= 1e-9 * (1.0 + force.abs()),
+                    (st.force_bar - force).abs() <= 1e-9 * (1.0 + force.abs()),
                     "{id} rho {rho}: {st:?}"
                 );
                 assert!(
@@ -333,12 +333,12 @@ fn controls_hit_their_targets() {
                     .at_contact_size(a)
                     .unwrap_or_else(|e| panic!("{id} rho {rho} a {a}: {e}"))
                 {
-                    assert!((st.a - a).abs() <= 1e-12 * a, "{id} rho {rho}: {st:?}");
+                    assert!((st.a_bar - a).abs() <= 1e-12 * a, "{id} rho {rho}: {st:?}");
                     let (r, _) =
                         id.model()
-                            .residuals_and_jacobian(Vector2::new(st.a, st.s), rho, st.delta);
+                            .residuals_and_jacobian(Vector2::new(st.a_bar, st.s), rho, st.delta_bar);
                     assert!(
-                        r.norm() <= 1e-9 * id.model().residual_scale(st.a, st.delta),
+                        r.norm() <= 1e-9 * id.model().residual_scale(st.a_bar, st.delta_bar),
                         "{id} rho {rho}: {r}"
                     );
                 }
@@ -357,6 +357,6 @@ fn energy_pull_off_is_continuous_at_rho_one() {
         .pull_off_load()
         .unwrap();
     let exact = -1.5 * std::f64::consts::PI;
-    assert!((po.state.force - exact).abs() < 1e-4, "{:?}", po.state);
-    assert!((po.state.a - 12f64.cbrt()).abs() < 1e-4, "{:?}", po.state);
+    assert!((po.state.force_bar - exact).abs() < 1e-4, "{:?}", po.state);
+    assert!((po.state.a_bar - 12f64.cbrt()).abs() < 1e-4, "{:?}", po.state);
 }

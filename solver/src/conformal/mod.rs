@@ -85,6 +85,7 @@ static DECODED: [std::sync::OnceLock<Decoded>; poly::MAX_UNKNOWNS - 1] =
 
 /// A state of a `conformal:K` model.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct ConformalState {
     /// The model, `conformal:K`.
     pub model: String,

@@ -29,6 +29,7 @@ pub enum PullOffControl {
 
 /// A fold in ā passed by the trace, before the pull-off.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Extremum {
     /// ā at the fold (to the trace's step).
     pub a_bar: f64,

@@ -389,10 +389,10 @@ impl Contact {
                 }
                 let z = if k < n_tail {
                     let g = self.tail_guess(&w[0], &w[1], control, target);
-                    Vector3::new(g.a, g.s, g.delta)
+                    Vector3::new(g.a_bar, g.s, g.delta_bar)
                 } else {
                     let (lo, hi) = (w[1], w[0]);
-                    let point = |st: State| self.point(st.s, st.a, st.delta);
+                    let point = |st: State| self.point(st.s, st.a_bar, st.delta_bar);
                     self.refine_crossing(scan.s_inf, control, target, point(lo), point(hi))
                         .z()
                 };
@@ -401,7 +401,7 @@ impl Contact {
                     return Ok(out);
                 }
             }
-            tail_reach = all.iter().map(|st| (control.value(st), st.a)).collect();
+            tail_reach = all.iter().map(|st| (control.value(st), st.a_bar)).collect();
         }
         let io = (control, target, what);
         let mut minimum_seen = false;
@@ -492,7 +492,7 @@ impl Contact {
         let stable = |p: &Point| {
             self.state_with(p.a, p.s, p.delta, false)
                 .stability
-                .displacement
+                .stable_displacement
                 != Some(false)
         };
         let mut scan = Scan::new(self)?;

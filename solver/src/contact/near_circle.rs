@@ -41,7 +41,7 @@ pub const NEAR_CIRCLE: f64 = 1e-6;
 const FOLD_FLOOR: f64 = 1e-8;
 
 fn z(st: &State) -> Vector3<f64> {
-    Vector3::new(st.a, st.s, st.delta)
+    Vector3::new(st.a_bar, st.s, st.delta_bar)
 }
 
 impl Contact {
@@ -162,7 +162,7 @@ impl Contact {
                 .1
                 .determinant()
         };
-        let top = self.axisymmetric_pull_off()?.a;
+        let top = self.axisymmetric_pull_off()?.a_bar;
         let n = 200;
         let grid: Vec<f64> = (0..=n)
             .map(|k| top * 10f64.powf(-2.0 * k as f64 / n as f64))

@@ -20,6 +20,8 @@ use serde::Serialize;
 
 /// What happens between two traced points.
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum Event {
     /// ā turns (a fold of the contact size) near this ā.

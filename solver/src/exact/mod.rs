@@ -141,6 +141,7 @@ pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState
 
 /// The discretisation: contour modes and quadrature points.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Truncation {
     /// Number of contour coefficients b_j (and of imposed modes minus one).
     pub modes: usize,
@@ -159,6 +160,7 @@ impl Default for Truncation {
 
 /// The contour z(θ) = A e^{iθ} + Σ b_j e^{−(2j+1)iθ}.
 #[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Contour {
     /// The leading coefficient A.
     pub a: f64,
@@ -342,6 +344,7 @@ impl Field {
 
 /// One exact state: a member of the solution family of (2)–(3).
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct ExactState {
     /// Radii ratio ρ.
     pub rho: f64,
@@ -373,6 +376,7 @@ pub struct ExactState {
 
 /// How an exact state was found: the start of its Newton iterations.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum Route {

@@ -36,6 +36,7 @@ use serde::Serialize;
 
 /// One unstable direction of the second variation.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct UnstableMode {
     /// The contour mode the eigenvector is made of: the radius perturbed
     /// by cos nθ (n = 0: the size; under load control also δ̄).
@@ -48,6 +49,7 @@ pub struct UnstableMode {
 
 /// Which modes of an exact state are unstable.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct ExactStability {
     /// Under displacement control (δ̄ fixed).
     pub displacement: Vec<UnstableMode>,

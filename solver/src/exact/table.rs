@@ -172,10 +172,10 @@ pub fn render_row(r: &Row) -> String {
                 cells.push(match m {
                     Ok(st) => {
                         let first = match r.quantity {
-                            Quantity::PullOff => pct(st.force, e.force_bar),
-                            _ => pct(st.delta, e.delta_bar),
+                            Quantity::PullOff => pct(st.force_bar, e.force_bar),
+                            _ => pct(st.delta_bar, e.delta_bar),
                         };
-                        format!("{first} / {} / {}", pct(st.a, e.a_bar), pct(st.s, e.s))
+                        format!("{first} / {} / {}", pct(st.a_bar, e.a_bar), pct(st.s, e.s))
                     }
                     Err(_) => "no state".into(),
                 });

@@ -11,6 +11,7 @@ pub mod conformal;
 /// A generated model, chosen at run time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[non_exhaustive]
 pub enum ModelId {
     /// `max`: Eq. (5) with collocation (10) and closure (13): the paper's model.

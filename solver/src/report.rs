@@ -1,0 +1,242 @@
+//! The one output schema of the command line's `--json` (issue 22): every
+//! subcommand prints one [`Document`]. One state sits under `"state"`,
+//! several under `"states"`, each with the names of the Rust fields (and
+//! of the Python package's `State`): `a_bar`, `b_bar`, `s`, `delta_bar`,
+//! `force_bar`, … ; a state of `conformal:K` and an exact state add their
+//! own keys to the same object. Events and verdicts are tagged objects
+//! (`{"kind": "force_minimum", "state": {…}}`); an error is
+//! `{"error": {"kind": …, "message": …}}`. With the feature `schema` the
+//! JSON Schema of [`Document`] is derived from these types (`thinjkr
+//! schema`, committed as docs/schema.json).
+//!
+//! Owns: [`Document`] and its parts. May use: `contact`, `conformal`,
+//! `exact`, `curve`, `fold`, `units`, `error`.
+
+use crate::conformal::{ConformalState, Extremum};
+use crate::contact::{FoldBasis, State};
+use crate::curve::Fold;
+use crate::error::Error;
+use crate::exact::branch::Event;
+use crate::exact::ExactState;
+use crate::fold::FoldCondition;
+use crate::units::Scales;
+use serde::Serialize;
+
+/// A state of any model: of the ellipse, of the contour family, or exact.
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(untagged)]
+pub enum AnyState {
+    /// A model of the ellipse (`max`, `apexes`, `energy`, `apex45`).
+    Ellipse(State),
+    /// A member of `conformal:K`.
+    Conformal(ConformalState),
+    /// The exact solution of (2)–(3).
+    Exact(Box<ExactState>),
+}
+
+/// What happens along a branch on the way to a state (tagged by `kind`).
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Passed {
+    /// ā turns (a fold of the contact size) near `a_bar`.
+    SizeFold {
+        /// ā there.
+        a_bar: f64,
+        /// F̄ there, where known.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        force_bar: Option<f64>,
+    },
+    /// A bifurcation point of the exact family between two ā.
+    Bifurcation {
+        /// The ā of the traced points that bracket it.
+        between: [f64; 2],
+        /// The contour mode n that dominates its null direction.
+        mode: Option<usize>,
+    },
+}
+
+impl Passed {
+    /// The exact solver's events (its force minimum is the pull-off itself
+    /// and is not repeated).
+    pub fn from_exact(events: &[Event]) -> Vec<Passed> {
+        events
+            .iter()
+            .filter_map(|e| match e {
+                Event::SizeFold { a_bar } => Some(Passed::SizeFold {
+                    a_bar: *a_bar,
+                    force_bar: None,
+                }),
+                Event::Bifurcation { between, mode } => Some(Passed::Bifurcation {
+                    between: *between,
+                    mode: *mode,
+                }),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// The folds in ā that the trace of `conformal:K` passed.
+    pub fn from_conformal(folds: &[Extremum]) -> Vec<Passed> {
+        folds
+            .iter()
+            .map(|f| Passed::SizeFold {
+                a_bar: f.a_bar,
+                force_bar: Some(f.force_bar),
+            })
+            .collect()
+    }
+}
+
+/// An error, in words and by kind ([`Error::kind`]).
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct ErrorBody {
+    /// `out_of_range`, `no_convergence`, `unresolved`, `no_state`, `usage`,
+    /// `unsupported`, `io` or `unavailable`.
+    pub kind: String,
+    /// The message, as the command line prints it.
+    pub message: String,
+}
+
+impl From<&Error> for ErrorBody {
+    fn from(e: &Error) -> Self {
+        ErrorBody {
+            kind: e.kind().into(),
+            message: e.to_string(),
+        }
+    }
+}
+
+/// One model's answer beside the exact one: its state, or why it has none.
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct ModelAnswer {
+    /// The model's name.
+    pub model: String,
+    /// Its state at the same control (or its pull-off).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub state: Option<State>,
+    /// Why it has none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error: Option<ErrorBody>,
+}
+
+impl ModelAnswer {
+    /// From a model's result.
+    pub fn new(model: &str, r: &crate::Result<State>) -> Self {
+        ModelAnswer {
+            model: model.into(),
+            state: r.as_ref().ok().copied(),
+            error: r.as_ref().err().map(ErrorBody::from),
+        }
+    }
+}
+
+/// A model in the list of `thinjkr models`.
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct ModelEntry {
+    /// The name `--model` takes.
+    pub name: String,
+    /// What it is, in a line.
+    pub description: String,
+}
+
+/// A state in SI units (`physical`).
+#[derive(Clone, Copy, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Si {
+    /// Major semi-axis a (m).
+    pub a: f64,
+    /// Minor semi-axis b (m).
+    pub b: f64,
+    /// Approach δ (m).
+    pub delta: f64,
+    /// Force F (N).
+    pub force: f64,
+    /// max(h₁, h₂)/a, the thin-layer model's small parameter.
+    pub h_over_a: f64,
+}
+
+/// Everything `--json` prints: exactly one of these objects.
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(untagged)]
+pub enum Document {
+    /// A pull-off: the state where a controlled branch ends.
+    PullOff {
+        /// The state.
+        state: AnyState,
+        /// The control it ends.
+        control: FoldCondition,
+        /// What ends it there (models of the ellipse).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        basis: Option<FoldBasis>,
+        /// What the trace passed on the way.
+        passed: Vec<Passed>,
+        /// The models of the ellipse at the same control (beside an exact
+        /// pull-off).
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        models: Vec<ModelAnswer>,
+    },
+    /// A state in SI units and its dimensionless state.
+    Physical {
+        /// The dimensionless state.
+        state: AnyState,
+        /// The same state in SI units.
+        si: Si,
+        /// The scales of (17) of this contact.
+        scales: Scales,
+        /// Inputs outside the model's stated range of validity.
+        warnings: Vec<String>,
+    },
+    /// One state (`solve`, `zero-force`, `exact solve`), with the models
+    /// of the ellipse at the same control beside an exact one.
+    State {
+        /// The state.
+        state: AnyState,
+        /// The models at the same control (beside an exact state).
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        models: Vec<ModelAnswer>,
+    },
+    /// A curve (`curve --format json`): its states in order and its folds
+    /// (`{"kind": "load", "state": {…}}`).
+    Curve {
+        /// The states along the branch.
+        states: Vec<State>,
+        /// The folds met.
+        folds: Vec<Fold>,
+    },
+    /// Several states (`solve --a`: every state of that contact size).
+    States {
+        /// The states.
+        states: Vec<AnyState>,
+    },
+    /// The models (`models --json`).
+    Models {
+        /// Every model.
+        models: Vec<ModelEntry>,
+    },
+    /// A failure.
+    Error {
+        /// What failed.
+        error: ErrorBody,
+    },
+}
+
+impl Document {
+    /// The JSON text of the document (one line).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).expect("the output types serialise")
+    }
+}
+
+/// The JSON Schema of [`Document`] (pretty, as committed in
+/// docs/schema.json).
+#[cfg(feature = "schema")]
+pub fn schema() -> String {
+    let s = schemars::schema_for!(Document);
+    serde_json::to_string_pretty(&s).expect("a schema serialises") + "\n"
+}
