@@ -270,6 +270,40 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
     .map_err(raw)
 }
 
+/// The exact state at `what` in {"delta", "force"} = `value`, or its
+/// load-controlled pull-off (`what` = "pull_off"), as JSON; with `modes`
+/// contour modes (16 quadrature points each) instead of the default
+/// escalation 12, 16, 24, 32, 48.
+#[pyfunction]
+#[pyo3(signature = (rho, what, value, modes=None))]
+fn exact(py: Python<'_>, rho: f64, what: &str, value: f64, modes: Option<usize>) -> PyResult<String> {
+    use thinjkr::exact::{default_tries, resolved, Exact, Truncation};
+    let tries = match modes {
+        None => default_tries(),
+        Some(m) if (1..=64).contains(&m) => vec![Truncation { modes: m, points: 16 * m }],
+        Some(m) => {
+            return Err(raw(Error::OutOfRange {
+                name: "modes",
+                value: m as f64,
+                range: "1 ..= 64".into(),
+            }))
+        }
+    };
+    let what = what.to_string();
+    py.detach(move || -> thinjkr::Result<String> {
+        match what.as_str() {
+            "pull_off" => {
+                let (st, _) = resolved(rho, &tries, Exact::pull_off_load)?;
+                Ok(json(&st))
+            }
+            "delta" => Ok(json(&resolved(rho, &tries, |ex| ex.at(ExactControl::Delta(value)))?)),
+            "force" => Ok(json(&resolved(rho, &tries, |ex| ex.at(ExactControl::Force(value)))?)),
+            other => Err(Error::Usage(format!("what must be delta, force or pull_off (got '{other}')"))),
+        }
+    })
+    .map_err(raw)
+}
+
 /// The contour of an exact state (JSON of its `contour`) at `n` points
 /// of θ ∈ [0, 2π): x and y arrays.
 #[pyfunction]
@@ -396,6 +430,7 @@ fn _thinjkr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solve_many, m)?)?;
     m.add_function(wrap_pyfunction!(pull_off, m)?)?;
     m.add_function(wrap_pyfunction!(exact_contour, m)?)?;
+    m.add_function(wrap_pyfunction!(exact, m)?)?;
     m.add_function(wrap_pyfunction!(curve, m)?)?;
     m.add_function(wrap_pyfunction!(physical, m)?)?;
     m.add_function(wrap_pyfunction!(_batch_api_seconds, m)?)?;

@@ -119,6 +119,12 @@ def test_force_arrays_and_scalar_broadcast():
         (lambda: thinjkr.pull_off(0.8, model="energy", control="displacement"), thinjkr.NoState,
          "stays stable"),
         (lambda: thinjkr.exact.zero_force(0.3), thinjkr.NoState, "rho"),
+        # the energy closure's displacement fold near the smallest rho
+        # supported: Newton on the fold condition does not converge there
+        (lambda: thinjkr.pull_off(1e-8, model="energy", control="displacement"),
+         thinjkr.NoConvergence, "no convergence"),
+        (lambda: thinjkr.exact.pull_off(0.5, modes=4), thinjkr.Unresolved, "more modes"),
+        (lambda: thinjkr.exact.pull_off(0.5, modes=100), thinjkr.InvalidInput, "modes"),
         (lambda: thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e300, h2=1e-4, g1=1e6, g2=1e6,
                                   work_of_adhesion=0.05, force=0.0), thinjkr.InvalidInput, "m computed"),
     ],

@@ -22,21 +22,27 @@ def _with_contour(d, points: int) -> State:
     return State(fields)
 
 
-def solve(rho: float, *, delta=None, force=None, points: int = 256) -> State:
+def solve(rho: float, *, delta=None, force=None, points: int = 256, modes=None) -> State:
     """The exact state at approach ``delta`` (δ̄) or force ``force`` (F̄),
-    its contour sampled at ``points`` angles."""
+    its contour sampled at ``points`` angles. ``modes``: the contour series'
+    length (1 … 64); by default 12, 16, 24, 32, 48 are tried until one
+    converges (an answer not resolved by any raises :class:`Unresolved`)."""
     control, value = _control(delta, force, None)
-    d = _json.loads(_call(_thinjkr.solve, "exact", float(rho), control, float(value)))
+    d = _json.loads(_call(_thinjkr.exact, float(rho), control, float(value), _modes(modes)))
     return _with_contour(d, points)
 
 
-def zero_force(rho: float, *, points: int = 256) -> State:
+def zero_force(rho: float, *, points: int = 256, modes=None) -> State:
     """The exact zero-force state."""
-    return solve(rho, force=0.0, points=points)
+    return solve(rho, force=0.0, points=points, modes=modes)
 
 
-def pull_off(rho: float, *, points: int = 256) -> State:
+def pull_off(rho: float, *, points: int = 256, modes=None) -> State:
     """The exact load-controlled pull-off (the first minimum of F̄ along the
     family through ā = 2.6)."""
-    d = _json.loads(_call(_thinjkr.pull_off, "exact", float(rho), "load"))
-    return _with_contour(d["state"], points)
+    d = _json.loads(_call(_thinjkr.exact, float(rho), "pull_off", 0.0, _modes(modes)))
+    return _with_contour(d, points)
+
+
+def _modes(modes):
+    return None if modes is None else int(modes)
