@@ -148,6 +148,85 @@ pub fn decode_line(number: usize, raw: &[u8]) -> std::result::Result<&str, Error
 /// form that reads back to the same f64, e.g. `1e-300`)
 /// or empty fields and the error, quoted.
 pub fn csv_row(number: usize, item: Option<&Item>, result: &Result<State>) -> String {
+    csv_row_values(number, item, &result.as_ref().map(Row::from).map_err(Clone::clone))
+}
+
+/// The numbers of one output row: the state's, with ξ and p₀ where the
+/// model has them (the models of the ellipse), and its boundary error:
+/// (14) for the ellipse, max |∂p̄/∂ν − 1| on the contour for `conformal:K`.
+#[derive(Clone, Copy, Debug)]
+pub struct Row {
+    /// ā.
+    pub a_bar: f64,
+    /// b̄.
+    pub b_bar: f64,
+    /// s.
+    pub s: f64,
+    /// δ̄.
+    pub delta_bar: f64,
+    /// F̄.
+    pub force_bar: f64,
+    /// ξ (the ellipse models).
+    pub xi: Option<f64>,
+    /// p₀ (the ellipse models).
+    pub p0: Option<f64>,
+    /// The boundary error.
+    pub bc_error: f64,
+}
+
+impl From<&State> for Row {
+    fn from(s: &State) -> Row {
+        Row {
+            a_bar: s.a_bar,
+            b_bar: s.b_bar,
+            s: s.s,
+            delta_bar: s.delta_bar,
+            force_bar: s.force_bar,
+            xi: Some(s.xi),
+            p0: Some(s.p0),
+            bc_error: s.bc_error,
+        }
+    }
+}
+
+impl From<&crate::conformal::ConformalState> for Row {
+    fn from(s: &crate::conformal::ConformalState) -> Row {
+        Row {
+            a_bar: s.a_bar,
+            b_bar: s.b_bar,
+            s: s.s,
+            delta_bar: s.delta_bar,
+            force_bar: s.force_bar,
+            xi: None,
+            p0: None,
+            bc_error: s.bc_defect,
+        }
+    }
+}
+
+/// Solve every item with a member of `conformal:K` on all cores (each from
+/// the circle, continued in ρ); the results in the order of `items`.
+pub fn solve_all_conformal(
+    model: &crate::conformal::Conformal,
+    items: &[Item],
+) -> Vec<Result<crate::conformal::ConformalState>> {
+    use crate::conformal::Control;
+    items
+        .par_iter()
+        .map(|it| {
+            model.solve(
+                it.rho,
+                match it.given {
+                    Given::Delta(d) => Control::Delta(d),
+                    Given::Force(f) => Control::Force(f),
+                },
+            )
+        })
+        .collect()
+}
+
+/// One output row from its numbers (or the error naming the line).
+pub fn csv_row_values(number: usize, item: Option<&Item>, result: &Result<Row>) -> String {
     let (rho, control, value) = match item {
         Some(it) => match it.given {
             Given::Delta(v) => (format!("{:?}", it.rho), "delta", format!("{v:?}")),
@@ -155,10 +234,18 @@ pub fn csv_row(number: usize, item: Option<&Item>, result: &Result<State>) -> St
         },
         None => (String::new(), "", String::new()),
     };
+    let opt = |v: Option<f64>| v.map(|x| format!("{x:?}")).unwrap_or_default();
     match result {
         Ok(s) => format!(
-            "{number},{rho},{control},{value},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},",
-            s.a_bar, s.b_bar, s.s, s.delta_bar, s.force_bar, s.xi, s.p0, s.bc_error
+            "{number},{rho},{control},{value},{:?},{:?},{:?},{:?},{:?},{},{},{:?},",
+            s.a_bar,
+            s.b_bar,
+            s.s,
+            s.delta_bar,
+            s.force_bar,
+            opt(s.xi),
+            opt(s.p0),
+            s.bc_error
         ),
         Err(e) => format!(
             "{number},{rho},{control},{value},,,,,,,,,\"{}\"",

@@ -169,9 +169,9 @@ enum Command {
         after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error. A line that cannot be read or solved gets an empty state and the error (naming the line) in the last column; the other lines are still written. A progress count is shown on stderr when it is a terminal."
     )]
     Batch {
-        /// Model: max (the paper's, default), apexes, energy, apex45.
-        #[arg(long, default_value = "max")]
-        model: ModelId,
+        /// Model: max (the paper's, default), apexes, energy, apex45, or conformal:K (K = 1 ..= 8; its bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty).
+        #[arg(long, default_value = "max", value_parser = parse_model)]
+        model: ModelChoice,
     },
     /// The models the solver has, one line each.
     Models {
@@ -483,7 +483,17 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
         Some(Command::Exact { command }) => exact_cli::run(command)?,
         Some(Command::Batch { model }) => {
             use std::io::{BufRead, IsTerminal};
-            use thinjkr::batch::{csv_row, decode_line, parse_line, solve_all, CSV_HEADER};
+            use thinjkr::batch::{
+                csv_row_values, decode_line, parse_line, solve_all, solve_all_conformal, Row,
+                CSV_HEADER,
+            };
+            if matches!(model, ModelChoice::Exact) {
+                return Err(thinjkr::Error::Unavailable {
+                    model: "exact",
+                    what: "batch".into(),
+                    why: "an exact state takes up to seconds: use `thinjkr exact solve` per state",
+                });
+            }
             let stdin = std::io::stdin();
             outln!("{CSV_HEADER}");
             let bar = std::io::stderr().is_terminal().then(|| {
@@ -522,7 +532,18 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                     .iter()
                     .filter_map(|(_, p)| p.as_ref().ok().copied())
                     .collect();
-                let mut solved = solve_all(model, &items).into_iter();
+                let rows: Vec<thinjkr::Result<Row>> = match &model {
+                    ModelChoice::Approx(id) => solve_all(*id, &items)
+                        .iter()
+                        .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
+                        .collect(),
+                    ModelChoice::Conformal(m) => solve_all_conformal(m, &items)
+                        .iter()
+                        .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
+                        .collect(),
+                    ModelChoice::Exact => unreachable!("refused above"),
+                };
+                let mut solved = rows.into_iter();
                 for (n, parsed) in &block {
                     let row = match parsed {
                         Ok(item) => {
@@ -534,12 +555,12 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
                                 }
                                 Ok(_) => solved_any = true,
                             }
-                            csv_row(*n, Some(item), &r)
+                            csv_row_values(*n, Some(item), &r)
                         }
                         Err(e) => {
                             eprintln!("thinjkr: {e}");
                             failed += 1;
-                            csv_row(*n, None, &Err(e.clone()))
+                            csv_row_values(*n, None, &Err(e.clone()))
                         }
                     };
                     outln!("{row}");

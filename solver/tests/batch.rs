@@ -152,3 +152,45 @@ fn every_line_gets_a_row_whatever_it_holds() {
         "a first line that is not the header is data"
     );
 }
+
+/// `batch --model conformal:K`: every row is the state `solve --model
+/// conformal:K` gives for its input (xi and p0 empty, bc_error the
+/// contour's max |dp/dnu - 1|), and `exact` is refused in words.
+#[test]
+fn conformal_batch_rows_are_its_states() {
+    let out = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(["batch", "--model", "conformal:4"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .and_then(|mut c| {
+            c.stdin
+                .take()
+                .unwrap()
+                .write_all(b"rho,control,value\n0.8,delta,2\n0.6,force,1\n")?;
+            c.wait_with_output()
+        })
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let m = thinjkr::conformal::Conformal::new(4).unwrap();
+    for (row, (rho, control)) in text.lines().skip(1).zip([
+        (0.8, thinjkr::conformal::Control::Delta(2.0)),
+        (0.6, thinjkr::conformal::Control::Force(1.0)),
+    ]) {
+        let st = m.solve(rho, control).unwrap();
+        let f: Vec<&str> = row.split(',').collect();
+        assert_eq!(f[4].parse::<f64>().unwrap(), st.a_bar, "{row}");
+        assert_eq!(f[6].parse::<f64>().unwrap(), st.s, "{row}");
+        assert_eq!(f[8].parse::<f64>().unwrap(), st.force_bar, "{row}");
+        assert_eq!((f[9], f[10]), ("", ""), "{row}");
+        assert_eq!(f[11].parse::<f64>().unwrap(), st.bc_defect, "{row}");
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(["batch", "--model", "exact"])
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("exact solve"));
+}
