@@ -924,27 +924,9 @@ impl Contact {
     /// that continues the non-adhesive one (the first met from s∞).
     pub fn at_displacement(&self, delta: f64) -> Result<State> {
         check_range("delta", delta, true, "finite")?;
-        if self.axisymmetric() {
-            // δ̄(ā) = ā²/4 − 2/ā is increasing: one state for every δ̄.
-            let m = self.model;
-            if !m.info().has_axisymmetric_limit {
-                return Err(self.unavailable("the axisymmetric solution (22)-(25)"));
-            }
-            let a = bisect(
-                |a| m.axisymmetric(a).map(|v| v.0).unwrap_or(f64::NAN) - delta,
-                1e-9,
-                1e9,
-            )?;
-            // ā is the root to round-off; the state is at the δ̄ asked for
-            let mut st = self.axisymmetric_state(a)?;
-            st.delta_bar = delta;
-            return Ok(st);
-        }
         let what = "displacement control";
-        if self.near_circle() {
-            let circle = self.circle()?.at_displacement(delta)?;
-            let anchor = self.anchor()?.at_displacement(delta)?;
-            return self.near_circle_controlled(&circle, &anchor, Control::Delta, delta, what);
+        if self.axisymmetric() || self.near_circle() {
+            return self.near_circle_at_displacement(delta, what);
         }
         match self.search {
             Search::Cold => self.cold_crossings(Control::Delta, delta, what, true, false)?,
@@ -953,6 +935,25 @@ impl Contact {
             .into_iter()
             .next()
             .ok_or_else(|| Error::NoState(format!("no contact at delta = {delta} for rho = {} (below the displacement-controlled pull-off)", self.rho)))
+    }
+
+    /// The circle's state at approach `delta` (ρ = 1, whatever this
+    /// contact's ρ): δ̄(ā) = ā²/4 − 2/ā is increasing, one state for every δ̄.
+    fn circle_at_displacement(&self, delta: f64) -> Result<State> {
+        let m = self.model;
+        if !m.info().has_axisymmetric_limit {
+            return Err(self.unavailable("the axisymmetric solution (22)-(25)"));
+        }
+        let a = bisect(
+            |a| m.axisymmetric(a).map(|v| v.0).unwrap_or(f64::NAN) - delta,
+            1e-9,
+            1e9,
+        )?;
+        // ā is the root to round-off; the state is at the δ̄ asked for
+        let mut st = self.axisymmetric_state(a)?;
+        st.delta_bar = delta;
+        st.rho = 1.0;
+        Ok(st)
     }
 
     /// Contact-size control: every state with major semi-axis `a` (none, one
@@ -969,7 +970,7 @@ impl Contact {
                 .at_contact_size(a)?
                 .iter()
                 .map(|anchor| {
-                    self.near_circle_controlled(&circle, anchor, Control::ABar, a, "contact-size control")
+                    self.near_circle_controlled(Some(&circle), anchor, Control::ABar, a, "contact-size control")
                 })
                 .collect();
         }
@@ -1031,8 +1032,8 @@ impl Contact {
     fn at_load_inside(&self, force: f64) -> Result<State> {
         if self.near_circle() {
             let circle = self.circle()?.at_load_inside(force)?;
-            let anchor = self.anchor()?.at_load_inside(force)?;
-            return self.near_circle_controlled(&circle, &anchor, Control::Force, force, "load control");
+            let anchor = self.anchor()?.at_load_inside(force).map_err(|e| self.from_anchor(e))?;
+            return self.near_circle_controlled(Some(&circle), &anchor, Control::Force, force, "load control");
         }
         if self.search == Search::Cold && !self.axisymmetric() {
             return self
@@ -1082,7 +1083,7 @@ impl Contact {
             return circle
                 .iter()
                 .zip(&anchor)
-                .map(|(c, a)| self.near_circle_controlled(c, a, Control::Force, force, "load control"))
+                .map(|(c, a)| self.near_circle_controlled(Some(c), a, Control::Force, force, "load control"))
                 .collect();
         }
         self.crossings(Control::Force, force, "load control")

@@ -109,3 +109,23 @@ fn curve_near_one_is_refused_in_words_not_traced_wrong() {
         assert!(thinjkr::curve::trace(&Contact::new(rho).unwrap(), 10, 20.0).is_ok());
     }
 }
+
+/// Displacement control below the circle's loss of stability (δ̄ < δ̄_b):
+/// at ρ = 1 the answer is the limit of ρ < 1, not the circle (a saddle
+/// there): the energy closure's elongated state, the same at 1 − ρ = 1e-13
+/// and at ρ = 1; the paper's model below its displacement-controlled
+/// pull-off, as at ρ < 1. Above δ̄_b the circle's state.
+#[test]
+fn displacement_control_below_the_bifurcation_is_the_limit_of_rho_below_one() {
+    let at = |m, rho: f64, d| Contact::with_model(m, rho).unwrap().at_displacement(d);
+    for d in [-10.0, -0.7] {
+        let one = at(ModelId::Energy, 1.0, d).unwrap();
+        let near = at(ModelId::Energy, 1.0 - 1e-13, d).unwrap();
+        assert!(one.s < 0.9, "energy at delta = {d}: s = {}", one.s);
+        assert!((one.a_bar - near.a_bar).abs() < 1e-9 && (one.s - near.s).abs() < 1e-9);
+    }
+    let e = at(ModelId::Max, 1.0, -10.0).unwrap_err().to_string();
+    assert!(e.contains("below the displacement-controlled pull-off"), "{e}");
+    let st = at(ModelId::Max, 1.0, -0.6).unwrap();
+    assert_eq!(st.s, 1.0);
+}

@@ -118,7 +118,12 @@ fn near_circular_agreement_rate() {
 #[test]
 fn axisymmetric_limit() {
     let c = Contact::new(1.0).unwrap();
-    for delta in [-1.0, 0.0, 0.3, 2.0, 10.0] {
+    // below δ̄ = 2^(4/3)/4 − 2^(1/3) (ā = 2^(2/3), where the circle loses
+    // stability to an ellipse) the circle is not the answer: as for ρ < 1,
+    // the paper's model is below its displacement-controlled pull-off
+    let e = c.at_displacement(-1.0).unwrap_err().to_string();
+    assert!(e.contains("below the displacement-controlled pull-off"), "{e}");
+    for delta in [-0.6, 0.0, 0.3, 2.0, 10.0] {
         let st = c.at_displacement(delta).unwrap();
         assert_eq!(st.s, 1.0);
         // δ̄ is the one asked for and ā its root; at δ̄ = 0 the two terms

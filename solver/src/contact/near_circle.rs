@@ -34,6 +34,10 @@ use nalgebra::{Vector2, Vector3};
 /// 1 − ρ below which states are continued from ρ₀ = 1 − NEAR_CIRCLE.
 pub const NEAR_CIRCLE: f64 = 1e-6;
 
+/// 1 − s above which the anchor's state is not near the circle (1 − s of
+/// a near-circular state there is of order 1e-6).
+const ELONGATED: f64 = 1e-3;
+
 /// The relative precision to which a near-circular fold that moves as √ε
 /// is located: its condition is a difference of nearly equal terms, known
 /// to about 1e-13, and so the fold to about 1e-9 at 1 − ρ = 1e-12 (Newton
@@ -73,19 +77,82 @@ impl Contact {
         (1.0 - self.rho) / NEAR_CIRCLE
     }
 
-    /// A regular state at ρ from the circle's and the anchor's states at the
-    /// same control: predictor linear in ε, then Newton on the residuals
-    /// with `control` = `target`.
+    /// A state at ρ from the anchor's at the same control. Near the circle
+    /// (1 − s of the anchor's state at most [`ELONGATED`]) with the circle's
+    /// state at that control: predictor linear in ε, then Newton on the
+    /// residuals with `control` = `target`. Otherwise (the branch has
+    /// turned into an elongated contact past the circle's bifurcation, or
+    /// the circle has no such state) continued from the anchor's in steps
+    /// of ε by 10, down to ρ itself (ρ = 1 included).
     pub(super) fn near_circle_controlled(
         &self,
-        circle: &State,
+        circle: Option<&State>,
         anchor: &State,
         control: Control,
         target: f64,
         what: &str,
     ) -> Result<State> {
-        let guess = z(circle) + (z(anchor) - z(circle)) * self.fraction();
-        self.solve_controlled(guess, control, target, what)
+        match circle {
+            Some(c) if 1.0 - anchor.s <= ELONGATED => {
+                let guess = z(c) + (z(anchor) - z(c)) * self.fraction();
+                self.solve_controlled(guess, control, target, what)
+            }
+            _ => {
+                let end = 1.0 - self.rho;
+                let mut eps = NEAR_CIRCLE;
+                let mut x = z(anchor);
+                loop {
+                    eps = if eps * 0.1 > end.max(1e-16) { eps * 0.1 } else { end };
+                    x = z(&self.at_rho(1.0 - eps)?.solve_controlled(x, control, target, what)?);
+                    if eps <= end {
+                        break;
+                    }
+                }
+                let mut st = self.state_from(x[0], x[1], x[2]);
+                st.beyond_size_fold = anchor.beyond_size_fold;
+                Ok(st)
+            }
+        }
+    }
+
+    /// An error of the anchor's, said for this ρ.
+    pub(super) fn from_anchor(&self, e: Error) -> Error {
+        match e {
+            Error::NoState(why) => Error::NoState(format!(
+                "at rho = {}, as at the near-circular anchor rho = {}: {why}",
+                crate::error::short(self.rho),
+                crate::error::short(1.0 - NEAR_CIRCLE)
+            )),
+            other => other,
+        }
+    }
+
+    /// At displacement δ̄ for 0 < 1 − ρ < NEAR_CIRCLE and at ρ = 1: the
+    /// circle's state while it is stable (ā above the circle's
+    /// bifurcation, continued to ρ from there and the anchor's); below it
+    /// the limit of the states at ρ < 1: the anchor's state continued to ρ,
+    /// or the anchor's error (below the displacement-controlled pull-off
+    /// of the models whose branch folds there).
+    pub(super) fn near_circle_at_displacement(&self, delta: f64, what: &str) -> Result<State> {
+        let circle = self.circle()?.circle_at_displacement(delta)?;
+        let a_b = self.circle()?.circle_bifurcation().map(|b| b.a_bar).unwrap_or(0.0);
+        let stable_circle = circle.a_bar > a_b;
+        if self.rho == 1.0 && stable_circle {
+            return Ok(circle);
+        }
+        match self.anchor()?.at_displacement(delta) {
+            Ok(anchor) => self.near_circle_controlled(
+                stable_circle.then_some(&circle),
+                &anchor,
+                Control::Delta,
+                delta,
+                what,
+            ),
+            // between the circle's bifurcation and the anchor's fold: from
+            // the circle's state itself
+            Err(_) if stable_circle => self.solve_controlled(z(&circle), Control::Delta, delta, what),
+            Err(e) => Err(self.from_anchor(e)),
+        }
     }
 
     /// A regular fold (the pull-off under load control) at ρ from the
