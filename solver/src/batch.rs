@@ -148,7 +148,11 @@ pub fn decode_line(number: usize, raw: &[u8]) -> std::result::Result<&str, Error
 /// form that reads back to the same f64, e.g. `1e-300`)
 /// or empty fields and the error, quoted.
 pub fn csv_row(number: usize, item: Option<&Item>, result: &Result<State>) -> String {
-    csv_row_values(number, item, &result.as_ref().map(Row::from).map_err(Clone::clone))
+    csv_row_values(
+        number,
+        item,
+        &result.as_ref().map(Row::from).map_err(Clone::clone),
+    )
 }
 
 /// The numbers of one output row: the state's, with ξ and p₀ where the

@@ -294,14 +294,23 @@ impl Contact {
         if (x / state.a_bar).powi(2) + (y / state.b_bar).powi(2) > 1.0 {
             return 0.0;
         }
-        self.model
-            .pressure(x, y, Vector2::new(state.a_bar, state.s), self.rho, state.delta_bar)
+        self.model.pressure(
+            x,
+            y,
+            Vector2::new(state.a_bar, state.s),
+            self.rho,
+            state.delta_bar,
+        )
     }
 
     /// ∂p̄/∂ν of `state` on Γ₀ at u = sin²t, in units of √(2mΔγ).
     pub fn normal_derivative(&self, state: &State, u: f64) -> f64 {
-        self.model
-            .normal_derivative(Vector2::new(state.a_bar, state.s), self.rho, state.delta_bar, u)
+        self.model.normal_derivative(
+            Vector2::new(state.a_bar, state.s),
+            self.rho,
+            state.delta_bar,
+            u,
+        )
     }
 
     /// s∞(ρ): the non-adhesive aspect ratio (for the paper, (29)), where
@@ -677,7 +686,12 @@ impl Contact {
             out.push(st);
         }
         if out.is_empty() {
-            self.within_reach(control, target, what, all.iter().map(|st| (key(st), st.a_bar)))?;
+            self.within_reach(
+                control,
+                target,
+                what,
+                all.iter().map(|st| (key(st), st.a_bar)),
+            )?;
         }
         Ok(out)
     }
@@ -852,7 +866,11 @@ impl Contact {
             [a, b, ..] => (*a, *b),
             _ => return out,
         };
-        while prev.a_bar < 1e4 && prev.delta_bar > 0.0 && older.delta_bar > 0.0 && older.delta_bar != prev.delta_bar {
+        while prev.a_bar < 1e4
+            && prev.delta_bar > 0.0
+            && older.delta_bar > 0.0
+            && older.delta_bar != prev.delta_bar
+        {
             let step = 1.25f64.ln();
             let dl = (prev.delta_bar / older.delta_bar).ln();
             let mut g = prev;
@@ -970,7 +988,13 @@ impl Contact {
                 .at_contact_size(a)?
                 .iter()
                 .map(|anchor| {
-                    self.near_circle_controlled(Some(&circle), anchor, Control::ABar, a, "contact-size control")
+                    self.near_circle_controlled(
+                        Some(&circle),
+                        anchor,
+                        Control::ABar,
+                        a,
+                        "contact-size control",
+                    )
                 })
                 .collect();
         }
@@ -1032,8 +1056,17 @@ impl Contact {
     fn at_load_inside(&self, force: f64) -> Result<State> {
         if self.near_circle() {
             let circle = self.circle()?.at_load_inside(force)?;
-            let anchor = self.anchor()?.at_load_inside(force).map_err(|e| self.from_anchor(e))?;
-            return self.near_circle_controlled(Some(&circle), &anchor, Control::Force, force, "load control");
+            let anchor = self
+                .anchor()?
+                .at_load_inside(force)
+                .map_err(|e| self.from_anchor(e))?;
+            return self.near_circle_controlled(
+                Some(&circle),
+                &anchor,
+                Control::Force,
+                force,
+                "load control",
+            );
         }
         if self.search == Search::Cold && !self.axisymmetric() {
             return self
@@ -1072,7 +1105,11 @@ impl Contact {
             if force >= pull.force_bar {
                 out.push(self.axisymmetric_state(bisect(|a| f(a) - force, pull.a_bar, 1e6)?)?);
                 if force < f(1e-9) {
-                    out.push(self.axisymmetric_state(bisect(|a| f(a) - force, 1e-9, pull.a_bar)?)?);
+                    out.push(self.axisymmetric_state(bisect(
+                        |a| f(a) - force,
+                        1e-9,
+                        pull.a_bar,
+                    )?)?);
                 }
             }
             return Ok(out);
@@ -1083,7 +1120,9 @@ impl Contact {
             return circle
                 .iter()
                 .zip(&anchor)
-                .map(|(c, a)| self.near_circle_controlled(Some(c), a, Control::Force, force, "load control"))
+                .map(|(c, a)| {
+                    self.near_circle_controlled(Some(c), a, Control::Force, force, "load control")
+                })
                 .collect();
         }
         self.crossings(Control::Force, force, "load control")
@@ -1148,7 +1187,9 @@ impl Contact {
             // a fold, it tends to that point (a subcritical bifurcation);
             // where they stay stable (the energy closure), so does the
             // limit: the stable state elongates
-            self.anchor()?.pull_off_displacement().map_err(from_anchor)?;
+            self.anchor()?
+                .pull_off_displacement()
+                .map_err(from_anchor)?;
             return Ok(PullOff {
                 state: self.circle_bifurcation()?,
                 control: FoldCondition::Displacement,
@@ -1156,7 +1197,10 @@ impl Contact {
             });
         }
         if self.near_circle() {
-            let anchor = self.anchor()?.pull_off_displacement().map_err(from_anchor)?;
+            let anchor = self
+                .anchor()?
+                .pull_off_displacement()
+                .map_err(from_anchor)?;
             let fold = self.near_circle_sqrt_fold(&anchor.state, FoldCondition::Displacement);
             let state = if self.has_energy() {
                 fold?

@@ -122,7 +122,13 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         }
         t
     };
-    let to_z = |st: &State| Vector3::new(st.a_bar / scale[0], st.s / scale[1], st.delta_bar / scale[2]);
+    let to_z = |st: &State| {
+        Vector3::new(
+            st.a_bar / scale[0],
+            st.s / scale[1],
+            st.delta_bar / scale[2],
+        )
+    };
     let from_z = |w: &Vector3<f64>| Vector3::new(w[0] * scale[0], w[1] * scale[1], w[2] * scale[2]);
     let mut w = to_z(&start);
     let mut t = tangent(&from_z(&w), None);

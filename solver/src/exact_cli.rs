@@ -7,9 +7,9 @@
 
 use clap::{Args, Subcommand};
 use thinjkr::exact::branch::ExactControl;
-use thinjkr::report::{AnyState, Document, ModelAnswer, Passed};
 use thinjkr::exact::stability::UnstableMode;
 use thinjkr::exact::{resolved, Exact, ExactState, Truncation};
+use thinjkr::report::{AnyState, Document, ModelAnswer, Passed};
 use thinjkr::{Contact, Error, ModelId, Result};
 
 /// The truncation of the exact solver.

@@ -5,8 +5,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
 use thinjkr::conformal::{self as family, Conformal};
 use thinjkr::curve::trace;
-use thinjkr::units::Cylinders;
 use thinjkr::report::{AnyState, Document, ErrorBody, ModelEntry};
+use thinjkr::units::Cylinders;
 use thinjkr::{Contact, ModelId, PullOff, State};
 
 fn parse_model(s: &str) -> Result<ModelChoice, String> {
@@ -234,7 +234,9 @@ enum Command {
     /// The JSON Schema of every `--json` output (docs/schema.json).
     Schema,
     /// Shell completions for SHELL (bash, zsh, fish, elvish, powershell) on standard output.
-    #[command(after_help = "Example:\n  thinjkr completions bash > ~/.local/share/bash-completion/completions/thinjkr")]
+    #[command(
+        after_help = "Example:\n  thinjkr completions bash > ~/.local/share/bash-completion/completions/thinjkr"
+    )]
     Completions {
         /// The shell.
         shell: clap_complete::Shell,
@@ -770,7 +772,12 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
         Some(Command::Schema) => outln!("{}", thinjkr::report::schema().trim_end()),
         Some(Command::Completions { shell }) => {
             let mut buf = Vec::new();
-            clap_complete::generate(shell, &mut <Cli as clap::CommandFactory>::command(), "thinjkr", &mut buf);
+            clap_complete::generate(
+                shell,
+                &mut <Cli as clap::CommandFactory>::command(),
+                "thinjkr",
+                &mut buf,
+            );
             out!("{}", String::from_utf8_lossy(&buf));
         }
         Some(Command::Manpage) => out!("{}", manpage()),
@@ -858,7 +865,11 @@ fn physical(
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(thinjkr::Error::OutOfRange { name, value: v, range: range.into() })
+            Err(thinjkr::Error::OutOfRange {
+                name,
+                value: v,
+                range: range.into(),
+            })
         }
     };
     let sc = cyl.scales()?;
@@ -900,7 +911,13 @@ fn physical(
         force: force_bar * sc.force,
         h_over_a: cyl.h1.max(cyl.h2) / (a_bar * sc.length),
     };
-    for (v, name) in [(si.a, "a"), (si.b, "b"), (si.delta, "delta"), (si.force, "force"), (si.h_over_a, "h/a")] {
+    for (v, name) in [
+        (si.a, "a"),
+        (si.b, "b"),
+        (si.delta, "delta"),
+        (si.force, "force"),
+        (si.h_over_a, "h/a"),
+    ] {
         if !v.is_finite() {
             return Err(thinjkr::Error::Usage(format!(
                 "the result {name} in SI units is not a finite number for these inputs (their magnitudes are at the ends of f64)"

@@ -97,7 +97,10 @@ fn json_has_the_keys_and_round_trips() {
         // one state under "state"; a pull-off adds its control and what
         // ends the branch, as plain strings
         if args[0] == "pull-off" {
-            assert!(whole["basis"].is_string() && whole["control"].is_string(), "{out}");
+            assert!(
+                whole["basis"].is_string() && whole["control"].is_string(),
+                "{out}"
+            );
             assert!(whole["passed"].is_array(), "{out}");
         }
         let v = whole["state"].clone();
@@ -117,7 +120,12 @@ fn json_has_the_keys_and_round_trips() {
     assert_eq!(states.len(), 20);
     // folds are tagged objects {"kind": ..., "state": {...}}
     let folds = v["folds"].as_array().unwrap();
-    assert!(folds.iter().any(|f| f["kind"] == "load" && f["state"]["force_bar"].is_f64()), "{out}");
+    assert!(
+        folds
+            .iter()
+            .any(|f| f["kind"] == "load" && f["state"]["force_bar"].is_f64()),
+        "{out}"
+    );
 }
 
 /// An error in --json mode is a JSON document on stdout as well, with the
@@ -127,15 +135,29 @@ fn errors_are_json_in_json_mode() {
     for args in [
         vec!["solve", "--rho", "1.5", "--delta", "2", "--json"],
         vec!["pull-off", "--rho", "0", "--json"],
-        vec!["zero-force", "--rho", "-1", "--model", "conformal:4", "--json"],
+        vec![
+            "zero-force",
+            "--rho",
+            "-1",
+            "--model",
+            "conformal:4",
+            "--json",
+        ],
         vec!["exact", "solve", "--rho", "2", "--force", "1", "--json"],
         vec!["curve", "--rho", "1.5", "--format", "json"],
     ] {
         let (ok, out, err) = thinjkr(&args);
         assert!(!ok, "{args:?}");
-        let v: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{args:?}: {e}: {out}"));
-        assert!(v["error"]["kind"].is_string() && v["error"]["message"].is_string(), "{out}");
-        assert!(err.contains(v["error"]["message"].as_str().unwrap()), "{err}");
+        let v: serde_json::Value =
+            serde_json::from_str(&out).unwrap_or_else(|e| panic!("{args:?}: {e}: {out}"));
+        assert!(
+            v["error"]["kind"].is_string() && v["error"]["message"].is_string(),
+            "{out}"
+        );
+        assert!(
+            err.contains(v["error"]["message"].as_str().unwrap()),
+            "{err}"
+        );
     }
 }
 
@@ -145,7 +167,10 @@ fn errors_are_json_in_json_mode() {
 #[test]
 fn committed_schema_and_man_page_are_fresh() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    for (args, file) in [(["schema"], "docs/schema.json"), (["manpage"], "docs/thinjkr.1")] {
+    for (args, file) in [
+        (["schema"], "docs/schema.json"),
+        (["manpage"], "docs/thinjkr.1"),
+    ] {
         let (ok, out, err) = thinjkr(&args);
         assert!(ok, "{err}");
         let committed = std::fs::read_to_string(root.join(file)).unwrap();

@@ -217,7 +217,10 @@ fn model_and_missing_input_errors_name_what_is_accepted() {
     for name in thinjkr::ModelId::ALL.iter().map(|m| m.name()) {
         assert!(err.contains(name), "{err}");
     }
-    assert!(err.contains("conformal:K") && err.contains("exact"), "{err}");
+    assert!(
+        err.contains("conformal:K") && err.contains("exact"),
+        "{err}"
+    );
     let (code, _, err) = bash("\"$0\" physical --h1 1e300");
     assert_eq!(code, Some(1));
     assert!(err.contains("--r1") && !err.contains("NaN"), "{err}");

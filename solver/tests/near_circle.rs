@@ -19,7 +19,12 @@ use thinjkr::{Contact, ModelId, State};
 const EPS: [f64; 6] = [1e-7, 1e-9, 1e-11, 1e-12, 1e-14, 1.1e-16];
 
 fn models() -> [ModelId; 4] {
-    [ModelId::Max, ModelId::Apexes, ModelId::Energy, ModelId::Apex45]
+    [
+        ModelId::Max,
+        ModelId::Apexes,
+        ModelId::Energy,
+        ModelId::Apex45,
+    ]
 }
 
 fn close(label: &str, st: &State, circle: &State, eps: f64) {
@@ -35,7 +40,10 @@ fn close(label: &str, st: &State, circle: &State, eps: f64) {
             "{label} at 1 - rho = {eps:e}: {name} = {x} against {y} at rho = 1"
         );
     }
-    assert!(st.s < 1.0 || eps < 1e-15, "{label}: s = 1 at 1 - rho = {eps:e}");
+    assert!(
+        st.s < 1.0 || eps < 1e-15,
+        "{label}: s = 1 at 1 - rho = {eps:e}"
+    );
 }
 
 #[test]
@@ -49,10 +57,20 @@ fn regular_states_are_continuous_up_to_rho_one() {
         for eps in EPS {
             let c = Contact::with_model(m, 1.0 - eps).unwrap();
             let label = |what: &str| format!("{m} {what}");
-            close(&label("delta 2"), &c.at_displacement(2.0).unwrap(), &c_delta, eps);
+            close(
+                &label("delta 2"),
+                &c.at_displacement(2.0).unwrap(),
+                &c_delta,
+                eps,
+            );
             close(&label("force 10"), &c.at_load(10.0).unwrap(), &c_force, eps);
             close(&label("zero force"), &c.zero_force().unwrap(), &c_zero, eps);
-            close(&label("pull-off"), &c.pull_off_load().unwrap().state, &c_pull, eps);
+            close(
+                &label("pull-off"),
+                &c.pull_off_load().unwrap().state,
+                &c_pull,
+                eps,
+            );
         }
     }
 }
@@ -77,12 +95,18 @@ fn end_of_displacement_control_tends_to_the_circles_bifurcation() {
         };
         let (d8, d10) = (dist(1e-8), dist(1e-10));
         let ratio = d8 / d10;
-        assert!((ratio - 10.0).abs() < 0.3, "{m}: distances {d8:e}, {d10:e}, ratio {ratio}");
+        assert!(
+            (ratio - 10.0).abs() < 0.3,
+            "{m}: distances {d8:e}, {d10:e}, ratio {ratio}"
+        );
         // and on below: within round-off of the √ε law (the fold's
         // condition is known to about 1e-13 near the circle)
         for eps in [1e-12, 1e-14, 1.1e-16] {
             let d = dist(eps);
-            assert!(d <= d10 * (eps / 1e-10).sqrt() * 1.1 + 1e-7, "{m} at {eps:e}: {d:e}");
+            assert!(
+                d <= d10 * (eps / 1e-10).sqrt() * 1.1 + 1e-7,
+                "{m} at {eps:e}: {d:e}"
+            );
         }
     }
 }
@@ -125,7 +149,10 @@ fn displacement_control_below_the_bifurcation_is_the_limit_of_rho_below_one() {
         assert!((one.a_bar - near.a_bar).abs() < 1e-9 && (one.s - near.s).abs() < 1e-9);
     }
     let e = at(ModelId::Max, 1.0, -10.0).unwrap_err().to_string();
-    assert!(e.contains("below the displacement-controlled pull-off"), "{e}");
+    assert!(
+        e.contains("below the displacement-controlled pull-off"),
+        "{e}"
+    );
     let st = at(ModelId::Max, 1.0, -0.6).unwrap();
     assert_eq!(st.s, 1.0);
 }

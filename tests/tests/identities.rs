@@ -122,7 +122,10 @@ fn axisymmetric_limit() {
     // stability to an ellipse) the circle is not the answer: as for ρ < 1,
     // the paper's model is below its displacement-controlled pull-off
     let e = c.at_displacement(-1.0).unwrap_err().to_string();
-    assert!(e.contains("below the displacement-controlled pull-off"), "{e}");
+    assert!(
+        e.contains("below the displacement-controlled pull-off"),
+        "{e}"
+    );
     for delta in [-0.6, 0.0, 0.3, 2.0, 10.0] {
         let st = c.at_displacement(delta).unwrap();
         assert_eq!(st.s, 1.0);
@@ -135,12 +138,18 @@ fn axisymmetric_limit() {
             max_relative = 1e-12,
             epsilon = 1e-14 * terms
         );
-        let f = std::f64::consts::PI / 96.0 * st.a_bar.powi(4) * (st.a_bar * st.a_bar - 24.0 / st.a_bar);
+        let f = std::f64::consts::PI / 96.0
+            * st.a_bar.powi(4)
+            * (st.a_bar * st.a_bar - 24.0 / st.a_bar);
         assert_relative_eq!(st.force_bar, f, max_relative = 1e-12, epsilon = 1e-12);
         assert!(st.bc_error.abs() < 1e-15);
     }
     let po = c.pull_off_load().unwrap().state;
-    assert_relative_eq!(po.force_bar, -1.5 * std::f64::consts::PI, max_relative = 1e-12);
+    assert_relative_eq!(
+        po.force_bar,
+        -1.5 * std::f64::consts::PI,
+        max_relative = 1e-12
+    );
     assert_relative_eq!(po.a_bar, 12f64.cbrt(), max_relative = 1e-12);
     // the model is continuous as ρ → 1
     let near = Contact::new(1.0 - 1e-7)

@@ -147,7 +147,9 @@ fn energy_model_reproduces_the_axisymmetric_solution() {
                 max_relative = 1e-12,
                 epsilon = 1e-14 * terms
             );
-            let f = std::f64::consts::PI / 96.0 * st.a_bar.powi(4) * (st.a_bar * st.a_bar - 24.0 / st.a_bar);
+            let f = std::f64::consts::PI / 96.0
+                * st.a_bar.powi(4)
+                * (st.a_bar * st.a_bar - 24.0 / st.a_bar);
             assert_relative_eq!(st.force_bar, f, max_relative = 1e-12, epsilon = 1e-12);
             // the edge is tensile and (3)₂ holds exactly on the circle
             for u in [0.0, 0.3, 1.0] {
@@ -289,8 +291,16 @@ fn energy_fold_is_the_minimum_of_the_traced_force() {
         // load-controlled stability flips there
         let before = &curve.states[k.saturating_sub(20)];
         let after = &curve.states[(k + 20).min(curve.states.len() - 1)];
-        assert_eq!(before.stability.stable_load, Some(true), "rho {rho}: {before:?}");
-        assert_eq!(after.stability.stable_load, Some(false), "rho {rho}: {after:?}");
+        assert_eq!(
+            before.stability.stable_load,
+            Some(true),
+            "rho {rho}: {before:?}"
+        );
+        assert_eq!(
+            after.stability.stable_load,
+            Some(false),
+            "rho {rho}: {after:?}"
+        );
     }
 }
 
@@ -338,9 +348,11 @@ fn controls_hit_their_targets() {
                     .unwrap_or_else(|e| panic!("{id} rho {rho} a {a}: {e}"))
                 {
                     assert!((st.a_bar - a).abs() <= 1e-12 * a, "{id} rho {rho}: {st:?}");
-                    let (r, _) =
-                        id.model()
-                            .residuals_and_jacobian(Vector2::new(st.a_bar, st.s), rho, st.delta_bar);
+                    let (r, _) = id.model().residuals_and_jacobian(
+                        Vector2::new(st.a_bar, st.s),
+                        rho,
+                        st.delta_bar,
+                    );
                     assert!(
                         r.norm() <= 1e-9 * id.model().residual_scale(st.a_bar, st.delta_bar),
                         "{id} rho {rho}: {r}"
@@ -362,5 +374,9 @@ fn energy_pull_off_is_continuous_at_rho_one() {
         .unwrap();
     let exact = -1.5 * std::f64::consts::PI;
     assert!((po.state.force_bar - exact).abs() < 1e-4, "{:?}", po.state);
-    assert!((po.state.a_bar - 12f64.cbrt()).abs() < 1e-4, "{:?}", po.state);
+    assert!(
+        (po.state.a_bar - 12f64.cbrt()).abs() < 1e-4,
+        "{:?}",
+        po.state
+    );
 }

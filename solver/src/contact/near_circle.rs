@@ -102,8 +102,14 @@ impl Contact {
                 let mut eps = NEAR_CIRCLE;
                 let mut x = z(anchor);
                 loop {
-                    eps = if eps * 0.1 > end.max(1e-16) { eps * 0.1 } else { end };
-                    x = z(&self.at_rho(1.0 - eps)?.solve_controlled(x, control, target, what)?);
+                    eps = if eps * 0.1 > end.max(1e-16) {
+                        eps * 0.1
+                    } else {
+                        end
+                    };
+                    x = z(&self
+                        .at_rho(1.0 - eps)?
+                        .solve_controlled(x, control, target, what)?);
                     if eps <= end {
                         break;
                     }
@@ -135,7 +141,11 @@ impl Contact {
     /// of the models whose branch folds there).
     pub(super) fn near_circle_at_displacement(&self, delta: f64, what: &str) -> Result<State> {
         let circle = self.circle()?.circle_at_displacement(delta)?;
-        let a_b = self.circle()?.circle_bifurcation().map(|b| b.a_bar).unwrap_or(0.0);
+        let a_b = self
+            .circle()?
+            .circle_bifurcation()
+            .map(|b| b.a_bar)
+            .unwrap_or(0.0);
         let stable_circle = circle.a_bar > a_b;
         if self.rho == 1.0 && stable_circle {
             return Ok(circle);
@@ -150,7 +160,9 @@ impl Contact {
             ),
             // between the circle's bifurcation and the anchor's fold: from
             // the circle's state itself
-            Err(_) if stable_circle => self.solve_controlled(z(&circle), Control::Delta, delta, what),
+            Err(_) if stable_circle => {
+                self.solve_controlled(z(&circle), Control::Delta, delta, what)
+            }
             Err(e) => Err(self.from_anchor(e)),
         }
     }

@@ -54,9 +54,9 @@ impl Event {
     /// which is reported as the pull-off itself).
     pub fn describe(&self) -> Option<String> {
         match self {
-            Event::SizeFold { a_bar } => Some(format!(
-                "the family turns back in a near a = {a_bar:.6}"
-            )),
+            Event::SizeFold { a_bar } => {
+                Some(format!("the family turns back in a near a = {a_bar:.6}"))
+            }
             Event::Bifurcation { between, mode } => Some(format!(
                 "a bifurcation point between a = {:.6} and {:.6} (contour mode {})",
                 between[0],
@@ -501,12 +501,11 @@ impl Exact {
             )
             .ok()?;
         let nm = self.truncation.modes;
-        let start = self
-            .solve(
-                guess.a_bar,
-                &super::Contour::ellipse(guess.a_bar, guess.b_bar, nm),
-                guess.delta_bar,
-            );
+        let start = self.solve(
+            guess.a_bar,
+            &super::Contour::ellipse(guess.a_bar, guess.b_bar, nm),
+            guess.delta_bar,
+        );
         let start = start.ok()?;
         // the exact state near the model's: same side of the circle's
         // bifurcations (a contour within a few per cent of the model's)
