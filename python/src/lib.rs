@@ -67,16 +67,10 @@ fn json<T: serde::Serialize>(v: &T) -> String {
 /// Every model the solver has: (name, one-line description).
 #[pyfunction]
 fn models() -> Vec<(String, String)> {
-    let mut out: Vec<(String, String)> = ModelId::ALL
-        .iter()
-        .map(|m| (m.name().to_string(), m.model().info().title.to_string()))
-        .collect();
-    out.extend(conformal::members().map(|c| (c.name(), conformal::title().to_string())));
-    out.push((
-        "exact".into(),
-        "the free-boundary problem (2)-(3) itself (boundary integral equation on a contour series)".into(),
-    ));
-    out
+    thinjkr::report::models()
+        .into_iter()
+        .map(|m| (m.name, m.description))
+        .collect()
 }
 
 /// One state at `control` in {"delta", "force", "a"} = `value`, as JSON.

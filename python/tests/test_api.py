@@ -14,7 +14,6 @@ import pytest
 import thinjkr
 
 ELLIPSE = ["max", "apexes", "energy", "apex45"]
-RENAME = {"a": "a_bar", "b": "b_bar", "delta": "delta_bar", "force": "force_bar"}
 
 
 def run_json(cli, *args):
@@ -30,7 +29,7 @@ def assert_same_state(st, d):
     """Every number of the command line's state, to the digits it prints
     (it prints every digit of an f64: equal to round-off)."""
     for k, v in d.items():
-        name = RENAME.get(k, k)
+        name = k
         if isinstance(v, float):
             assert close(getattr(st, name), v), (name, getattr(st, name), v)
         elif isinstance(v, str):

@@ -5,7 +5,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
 use thinjkr::conformal::{self as family, Conformal};
 use thinjkr::curve::trace;
-use thinjkr::report::{AnyState, Document, ErrorBody, ModelEntry};
+use thinjkr::report::{AnyState, Document, ErrorBody};
 use thinjkr::units::Cylinders;
 use thinjkr::{Contact, ModelId, PullOff, State};
 
@@ -744,28 +744,12 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
             }
         }
         Some(Command::Models { json: j }) => {
-            let mut rows: Vec<(String, String)> = ModelId::ALL
-                .iter()
-                .map(|m| (m.name().to_string(), m.model().info().title.to_string()))
-                .collect();
-            for m in family::members() {
-                rows.push((m.name(), family::title().to_string()));
-            }
-            rows.push((
-                "exact".into(),
-                "the free-boundary problem (2)-(3) itself (boundary integral equation on a contour series)".into(),
-            ));
+            let models = thinjkr::report::models();
             if j {
-                let doc = Document::Models {
-                    models: rows
-                        .into_iter()
-                        .map(|(name, description)| ModelEntry { name, description })
-                        .collect(),
-                };
-                outln!("{}", doc.to_json());
+                outln!("{}", Document::Models { models }.to_json());
             } else {
-                for (n, t) in rows {
-                    outln!("{n:<13} {t}");
+                for m in models {
+                    outln!("{:<13} {}", m.name, m.description);
                 }
             }
         }
@@ -860,18 +844,8 @@ fn physical(
     delta: Option<f64>,
     json: bool,
 ) -> thinjkr::Result<()> {
+    use thinjkr::error::check_range;
     use thinjkr::exact::branch::ExactControl;
-    let check_range = |name: &'static str, v: f64, _: bool, range: &'static str| {
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(thinjkr::Error::OutOfRange {
-                name,
-                value: v,
-                range: range.into(),
-            })
-        }
-    };
     let sc = cyl.scales()?;
     let force = force
         .map(|f| check_range("force", f, true, "finite").map(|f| f / sc.force))
@@ -904,26 +878,7 @@ fn physical(
         AnyState::Conformal(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
         AnyState::Exact(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
     };
-    let si = thinjkr::report::Si {
-        a: a_bar * sc.length,
-        b: b_bar * sc.length,
-        delta: delta_bar * sc.approach,
-        force: force_bar * sc.force,
-        h_over_a: cyl.h1.max(cyl.h2) / (a_bar * sc.length),
-    };
-    for (v, name) in [
-        (si.a, "a"),
-        (si.b, "b"),
-        (si.delta, "delta"),
-        (si.force, "force"),
-        (si.h_over_a, "h/a"),
-    ] {
-        if !v.is_finite() {
-            return Err(thinjkr::Error::Usage(format!(
-                "the result {name} in SI units is not a finite number for these inputs (their magnitudes are at the ends of f64)"
-            )));
-        }
-    }
+    let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
     let mut warnings = Vec::new();
     if sc.rho < 0.8 {
         warnings.push(format!(

@@ -144,20 +144,27 @@ pub struct ModelEntry {
     pub description: String,
 }
 
-/// A state in SI units (`physical`).
-#[derive(Clone, Copy, Debug, Serialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct Si {
-    /// Major semi-axis a (m).
-    pub a: f64,
-    /// Minor semi-axis b (m).
-    pub b: f64,
-    /// Approach δ (m).
-    pub delta: f64,
-    /// Force F (N).
-    pub force: f64,
-    /// max(h₁, h₂)/a, the thin-layer model's small parameter.
-    pub h_over_a: f64,
+pub use crate::units::Si;
+
+/// Every model the solver has, in the order `thinjkr models` lists them:
+/// the models of the ellipse, the members of `conformal:K`, and `exact`.
+pub fn models() -> Vec<ModelEntry> {
+    let mut out: Vec<ModelEntry> = crate::ModelId::ALL
+        .iter()
+        .map(|m| ModelEntry {
+            name: m.name().to_string(),
+            description: m.model().info().title.to_string(),
+        })
+        .collect();
+    out.extend(crate::conformal::members().map(|c| ModelEntry {
+        name: c.name(),
+        description: crate::conformal::title().to_string(),
+    }));
+    out.push(ModelEntry {
+        name: "exact".into(),
+        description: "the free-boundary problem (2)-(3) itself (boundary integral equation on a contour series)".into(),
+    });
+    out
 }
 
 /// Everything `--json` prints: exactly one of these objects.

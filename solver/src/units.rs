@@ -3,7 +3,7 @@
 //! moduli G'₁, G'₂ and the work of adhesion Δγ, in SI units. Converted to the
 //! model's variables by (1) (R₁, R₂ from r₁, r₂, θ), (4) (m) and (17).
 //!
-//! Owns: [`Cylinders`], [`PhysicalState`]. May use: `contact`, `error`.
+//! Owns: [`Cylinders`], [`PhysicalState`], [`Si`]. May use: `contact`, `error`.
 
 use crate::contact::{Contact, State};
 use crate::error::{check_range, Error, Result};
@@ -72,6 +72,32 @@ pub struct PhysicalState {
     pub p0: f64,
     /// max(h₁, h₂)/a: the asymptotic model's small parameter.
     pub h_over_a: f64,
+}
+
+/// A state in SI units (`physical`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Si {
+    /// Major semi-axis a (m).
+    pub a: f64,
+    /// Minor semi-axis b (m).
+    pub b: f64,
+    /// Approach δ (m).
+    pub delta: f64,
+    /// Force F (N).
+    pub force: f64,
+    /// max(h₁, h₂)/a, the thin-layer model's small parameter.
+    pub h_over_a: f64,
+}
+
+fn finite_si(name: &str, v: f64) -> Result<f64> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Error::Usage(format!(
+            "the result {name} in SI units is not a finite number for these inputs (their magnitudes are at the ends of f64)"
+        )))
+    }
 }
 
 fn positive(name: &'static str, v: f64) -> Result<f64> {
@@ -148,30 +174,37 @@ impl Cylinders {
     /// Convert a dimensionless state to SI units; a value that is not a
     /// finite f64 is an error naming it.
     pub fn to_physical(&self, sc: &Scales, st: State) -> Result<PhysicalState> {
-        let p = PhysicalState {
+        let si = self.si(sc, st.a_bar, st.b_bar, st.delta_bar, st.force_bar)?;
+        let p0 = finite_si("p0", st.p0 * sc.pressure)?;
+        Ok(PhysicalState {
             state: st,
-            a: st.a_bar * sc.length,
-            b: st.b_bar * sc.length,
-            delta: st.delta_bar * sc.approach,
-            force: st.force_bar * sc.force,
-            p0: st.p0 * sc.pressure,
-            h_over_a: self.h1.max(self.h2) / (st.a_bar * sc.length),
-        };
-        for (v, name) in [
-            (p.a, "a"),
-            (p.b, "b"),
-            (p.delta, "delta"),
-            (p.force, "force"),
-            (p.p0, "p0"),
-            (p.h_over_a, "h/a"),
-        ] {
-            if !v.is_finite() {
-                return Err(Error::Usage(format!(
-                    "the result {name} in SI units is not a finite number for these inputs (their magnitudes are at the ends of f64)"
-                )));
-            }
-        }
-        Ok(p)
+            a: si.a,
+            b: si.b,
+            delta: si.delta,
+            force: si.force,
+            p0,
+            h_over_a: si.h_over_a,
+        })
+    }
+
+    /// The semi-axes, approach and force of any model's state (ā, b̄, δ̄, F̄
+    /// of (17)) in SI units, and h/a; a value that is not a finite f64 is
+    /// an error naming it.
+    pub fn si(
+        &self,
+        sc: &Scales,
+        a_bar: f64,
+        b_bar: f64,
+        delta_bar: f64,
+        force_bar: f64,
+    ) -> Result<Si> {
+        Ok(Si {
+            a: finite_si("a", a_bar * sc.length)?,
+            b: finite_si("b", b_bar * sc.length)?,
+            delta: finite_si("delta", delta_bar * sc.approach)?,
+            force: finite_si("force", force_bar * sc.force)?,
+            h_over_a: finite_si("h/a", self.h1.max(self.h2) / (a_bar * sc.length))?,
+        })
     }
 
     /// The state at approach `delta` (m).

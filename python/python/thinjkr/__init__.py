@@ -54,13 +54,8 @@ __all__ = [
 
 __version__ = "0.1.0"
 
-# the command line's JSON names of a state of the ellipse models, and the
-# names of this API (those of the conformal and exact states)
-_RENAME = {"a": "a_bar", "b": "b_bar", "delta": "delta_bar", "force": "force_bar"}
-
-
 def _state_from(d: Dict[str, Any]) -> State:
-    fields = {_RENAME.get(k, k): v for k, v in d.items()}
+    fields = dict(d)
     stab = fields.pop("stability", None)
     if isinstance(stab, dict) and "displacement" in stab and "load" in stab:
         if isinstance(stab["displacement"], list):  # an exact state: unstable modes

@@ -141,11 +141,14 @@ impl Contact {
     /// of the models whose branch folds there).
     pub(super) fn near_circle_at_displacement(&self, delta: f64, what: &str) -> Result<State> {
         let circle = self.circle()?.circle_at_displacement(delta)?;
-        let a_b = self
-            .circle()?
-            .circle_bifurcation()
-            .map(|b| b.a_bar)
-            .unwrap_or(0.0);
+        // the size below which the circle is a saddle; none (0) only where
+        // the scan found the circle stable throughout, any other failure
+        // is the answer's
+        let a_b = match self.circle()?.circle_bifurcation() {
+            Ok(b) => b.a_bar,
+            Err(Error::NoState(_)) => 0.0,
+            Err(e) => return Err(e),
+        };
         let stable_circle = circle.a_bar > a_b;
         if self.rho == 1.0 && stable_circle {
             return Ok(circle);
