@@ -181,16 +181,21 @@ fn solve_many<'py>(
             .map(|(&r, &v)| {
                 let text = solve_one(m, r, &control, v).map_err(err)?;
                 let j: serde_json::Value = serde_json::from_str(&text).expect("own JSON");
-                let g = |k: &str, alt: &str| {
-                    j.get(k).or_else(|| j.get(alt)).and_then(|x| x.as_f64()).unwrap_or(f64::NAN)
+                // every state of every model carries these (bc_defect is
+                // the boundary error of conformal:K); a missing one is an
+                // error of that point, never a NaN
+                let g = |keys: &[&str]| {
+                    keys.iter()
+                        .find_map(|k| j.get(*k).and_then(|x| x.as_f64()))
+                        .ok_or_else(|| ("usage".to_string(), format!("the state has no {}", keys[0])))
                 };
                 Ok([
-                    g("a_bar", "a"),
-                    g("b_bar", "b"),
-                    g("s", "s"),
-                    g("delta_bar", "delta"),
-                    g("force_bar", "force"),
-                    g("bc_error", "bc_defect"),
+                    g(&["a_bar"])?,
+                    g(&["b_bar"])?,
+                    g(&["s"])?,
+                    g(&["delta_bar"])?,
+                    g(&["force_bar"])?,
+                    g(&["bc_error", "bc_defect"])?,
                 ])
             })
             .collect(),
