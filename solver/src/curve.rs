@@ -1,23 +1,27 @@
-//! The whole force–displacement curve, including its unstable part, traced
-//! by pseudo-arclength continuation in (ā, s, δ̄). The solution set of
-//! (19)–(20) folds in δ̄ and in ā, so no single variable parametrises it
-//! everywhere; the arclength does. Tangent: the null vector of the 2 × 3
-//! Jacobian [∂r/∂(ā, s) | ∂r/∂δ̄] (generated), i.e. the cross product of its
-//! rows. Corrector: Newton on (19), (20) plus the arclength condition.
-//! Folds are detected where a tangent component (dā, dδ̄) or dF̄ changes
-//! sign, and located by Newton's method on the fold condition
-//! ([`crate::fold`]).
+//! The whole force–displacement curve of an ellipse model, including its
+//! unstable part, traced by the one continuation engine
+//! ([`crate::continuation`]) in (ā, s, δ̄), static 3-vectors. The solution
+//! set of (19)–(20) folds in δ̄ and in ā, so no single variable
+//! parametrises it everywhere; the arclength does. Jacobian: the generated
+//! [∂r/∂(ā, s) | ∂r/∂δ̄], in variables scaled so that a unit step means a
+//! comparable change. Folds are the engine's events (a tangent component
+//! dā, dδ̄ or dF̄ changes sign), located by Newton's method on the fold
+//! condition ([`crate::fold`]).
 //!
 //! Written once for every model. Residual scaling: a model's residuals are
 //! of degree d in (ā³, δ̄ā); the corrector's convergence test is on the
 //! step, which is scale-free.
 //!
-//! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `model`, `fold`, `error`.
+//! Owns: [`Curve`], [`Fold`], [`trace`], the ellipse models' [`Family`]
+//! implementation. May use: `contact`, `model`, `fold`, `continuation`,
+//! `error`.
 
 use crate::contact::{Contact, State};
+use crate::continuation::{self, End, EventKind, Family, Linear, On, Settings, Watch};
 use crate::error::{check_range, short, Error, Result};
 use crate::fold::{self, FoldCondition};
-use nalgebra::{Matrix3, Vector2, Vector3};
+use crate::model::Model;
+use nalgebra::{Matrix3, Vector2, Vector3, U3};
 use serde::{Deserialize, Serialize};
 
 /// What folds at a fold point.
@@ -98,130 +102,72 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         }];
         return Ok(Curve { states, folds });
     }
-    let model = contact.model();
-    let f = |z: &Vector3<f64>| -> ([f64; 2], [[f64; 3]; 2]) {
-        let x = Vector2::new(z[0], z[1]);
-        let (r, j) = model.residuals_and_jacobian(x, rho, z[2]);
-        let d = model.residuals_d_delta(x, rho, z[2]);
-        (
-            [r[0], r[1]],
-            [[j[(0, 0)], j[(0, 1)], d[0]], [j[(1, 0)], j[(1, 1)], d[1]]],
-        )
-    };
     // variables scaled so that a unit step means a comparable change
-    let scale = Vector3::new(start.a_bar, 0.1, start.delta_bar.abs().max(1.0));
-    let tangent = |z: &Vector3<f64>, prev: Option<&Vector3<f64>>| -> Vector3<f64> {
-        let (_, j) = f(z);
-        let r1 = Vector3::new(j[0][0] * scale[0], j[0][1] * scale[1], j[0][2] * scale[2]);
-        let r2 = Vector3::new(j[1][0] * scale[0], j[1][1] * scale[1], j[1][2] * scale[2]);
-        let mut t = r1.cross(&r2).normalize();
-        match prev {
-            Some(p) if t.dot(p) < 0.0 => t = -t,
-            None if t[2] > 0.0 => t = -t, // start towards smaller δ̄
-            _ => {}
-        }
-        t
+    let family = Ellipse {
+        model: contact.model(),
+        rho,
+        scale: Vector3::new(start.a_bar, 0.1, start.delta_bar.abs().max(1.0)),
     };
-    let to_z = |st: &State| {
-        Vector3::new(
-            st.a_bar / scale[0],
-            st.s / scale[1],
-            st.delta_bar / scale[2],
-        )
-    };
-    let from_z = |w: &Vector3<f64>| Vector3::new(w[0] * scale[0], w[1] * scale[1], w[2] * scale[2]);
-    let mut w = to_z(&start);
-    let mut t = tangent(&from_z(&w), None);
+    let w0 = Vector3::new(
+        start.a_bar / family.scale[0],
+        start.s / family.scale[1],
+        start.delta_bar / family.scale[2],
+    );
     // the trace is at least four times finer than the output
     let h_max = (0.5 / points as f64).min(0.05);
-    let mut h = h_max.min(0.01);
-    let mut trail: Vec<(Vector3<f64>, Vector3<f64>)> = vec![(w, t)];
-    // the step is at most 0.5/points, so the budget grows with the points
-    let max_steps = 20_000.max(50 * points);
-    let mut passed_fold = false;
-    let mut reached_end = false;
+    let settings = Settings {
+        step: h_max.min(0.01),
+        min_step: h_max * 1e-9,
+        max_step: h_max,
+        grow: 1.3,
+        fast_iterations: usize::MAX,
+        turn: -1.0,
+        corrector_iterations: 20,
+        step_tolerance: 1e-12,
+        // the step is at most 0.5/points, so the budget grows with the points
+        max_steps: 20_000.max(50 * points),
+    };
+    let watch = Watch {
+        size_fold: On::Note,
+        displacement_fold: On::Note,
+        force_minimum: On::Note,
+        bifurcation: On::Ignore,
+        crossing: None,
+    };
     // the end of the trace, relative to the start: at small ρ the whole
     // branch is elongated (s of order ρ^(1/2)), and a fixed s would end it
     // before the pull-off
     let s_end = 0.05 * start.s;
-    for _ in 0..max_steps {
-        let mut accepted = None;
-        for _ in 0..30 {
-            let wp = w + t * h;
-            let mut wc = wp;
-            let mut ok = false;
-            for _ in 0..20 {
-                let z = from_z(&wc);
-                if !(z[0] > 0.0 && z[1] > 0.0 && z[1] <= 1.0) {
-                    break;
-                }
-                let (r, j) = f(&z);
-                let arc = t.dot(&(wc - wp));
-                let m = Matrix3::new(
-                    j[0][0] * scale[0],
-                    j[0][1] * scale[1],
-                    j[0][2] * scale[2],
-                    j[1][0] * scale[0],
-                    j[1][1] * scale[1],
-                    j[1][2] * scale[2],
-                    t[0],
-                    t[1],
-                    t[2],
-                );
-                let Some(dw) = m.lu().solve(&Vector3::new(-r[0], -r[1], -arc)) else {
-                    break;
-                };
-                wc += dw;
-                if dw.norm() < 1e-12 {
-                    ok = true;
-                    break;
-                }
+    let mut passed_fold = false;
+    let traced = continuation::trace(
+        &family,
+        w0,
+        &Vector3::new(0.0, 0.0, -1.0), // start towards smaller δ̄
+        settings,
+        watch,
+        |p| {
+            if p.d_a_bar > 0.0 {
+                passed_fold = true; // the contact size grows again
             }
-            if ok {
-                accepted = Some(wc);
-                break;
-            }
-            h *= 0.5;
-        }
-        let Some(wn) = accepted else {
-            return Err(Error::NoConvergence {
-                iterations: 20,
-                a_bar: from_z(&w)[0],
-                s: from_z(&w)[1],
-                residual: f64::NAN,
-                context: format!(
-                    "pseudo-arclength corrector at delta_bar = {} (rho = {})",
-                    crate::error::rounded(from_z(&w)[2]),
-                    short(rho)
-                ),
-            });
-        };
-        let tn = tangent(&from_z(&wn), Some(&t));
-        w = wn;
-        t = tn;
-        h = (h * 1.3).min(h_max);
-        trail.push((w, t));
-        let z = from_z(&w);
-        if t[0] > 0.0 {
-            passed_fold = true; // the contact size grows again
-        }
-        if z[1] < s_end || (passed_fold && z[0] > start.a_bar) {
-            reached_end = true;
-            break;
-        }
-    }
-    if !reached_end {
+            p.u[1] * family.scale[1] < s_end || (passed_fold && p.a_bar > start.a_bar)
+        },
+    )?;
+    if traced.end != End::Until {
         // never a silently shortened curve: say where it stopped
-        let z = from_z(&w);
+        let z = family.unscaled(&traced.points.last().expect("one point").u);
         return Err(Error::NoState(format!(
-            "curve at rho = {}: the trace did not reach its end (s < {}, a twentieth of its start, or ā back above its start past the contact-size fold) within {max_steps} steps; it stopped at a_bar = {}, s = {}, delta_bar = {}",
+            "curve at rho = {}: the trace did not reach its end (s < {}, a twentieth of its start, or ā back above its start past the contact-size fold) within {} steps; it stopped at a_bar = {}, s = {}, delta_bar = {}",
             short(rho),
             crate::error::rounded(s_end),
+            settings.max_steps,
             short(z[0]),
             short(z[1]),
             short(z[2])
         )));
     }
+    let trail: Vec<(Vector3<f64>, Vector3<f64>)> =
+        traced.points.iter().map(|p| (p.u, p.t)).collect();
+    let from_z = |w: &Vector3<f64>| family.unscaled(w);
     // states (flagged beyond the first contact-size fold) and folds
     let size_fold = trail
         .windows(2)
@@ -237,23 +183,25 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         })
         .collect();
     let mut folds = Vec::new();
-    for k in 1..trail.len() {
-        let (t0, t1) = (trail[k - 1].1, trail[k].1);
-        if t0[0].signum() != t1[0].signum() {
-            folds.push(refine(contact, FoldKind::ContactSize, &states_all[k])?);
-        }
-        if t0[2].signum() != t1[2].signum() {
-            folds.push(refine(contact, FoldKind::Displacement, &states_all[k])?);
-        }
-        if k + 1 < trail.len() {
-            let (f0, f1, f2) = (
-                states_all[k - 1].force_bar,
-                states_all[k].force_bar,
-                states_all[k + 1].force_bar,
-            );
-            if f1 < f0 && f1 <= f2 {
-                folds.push(refine(contact, FoldKind::Load, &states_all[k])?);
+    for e in &traced.events {
+        let [i, k] = e.between;
+        match e.kind {
+            EventKind::SizeFold => {
+                folds.push(refine(contact, FoldKind::ContactSize, &states_all[k])?)
             }
+            EventKind::DisplacementFold => {
+                folds.push(refine(contact, FoldKind::Displacement, &states_all[k])?)
+            }
+            EventKind::ForceMinimum => {
+                // from the traced point with the lower force
+                let near = if states_all[i].force_bar < states_all[k].force_bar {
+                    &states_all[i]
+                } else {
+                    &states_all[k]
+                };
+                folds.push(refine(contact, FoldKind::Load, near)?)
+            }
+            _ => {}
         }
     }
     // a curve reaches the pull-off of its model, or says why not
@@ -284,6 +232,84 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         states.push(states_all[j.min(states_all.len() - 1)]);
     }
     Ok(Curve { states, folds })
+}
+
+/// An ellipse model's branch at fixed ρ in scaled variables
+/// w = (ā, s, δ̄)/scale.
+struct Ellipse<'a> {
+    model: &'a dyn Model,
+    rho: f64,
+    scale: Vector3<f64>,
+}
+
+impl Ellipse<'_> {
+    fn unscaled(&self, w: &Vector3<f64>) -> Vector3<f64> {
+        w.component_mul(&self.scale)
+    }
+}
+
+impl Family<U3> for Ellipse<'_> {
+    fn linearise(&self, w: &Vector3<f64>) -> Option<Linear<U3>> {
+        let z = self.unscaled(w);
+        let x = Vector2::new(z[0], z[1]);
+        let (r, j) = self.model.residuals_and_jacobian(x, self.rho, z[2]);
+        let d = self.model.residuals_d_delta(x, self.rho, z[2]);
+        let sc = &self.scale;
+        let jj = Matrix3::new(
+            j[(0, 0)] * sc[0],
+            j[(0, 1)] * sc[1],
+            d[0] * sc[2],
+            j[(1, 0)] * sc[0],
+            j[(1, 1)] * sc[1],
+            d[1] * sc[2],
+            0.0,
+            0.0,
+            0.0,
+        );
+        let force = self.model.force_bar(x, self.rho, z[2]);
+        let g = self.model.force_bar_gradient(x, self.rho, z[2]);
+        let out = Linear {
+            r: Vector3::new(r[0], r[1], 0.0),
+            j: jj,
+            force,
+            force_grad: g.component_mul(sc),
+        };
+        let finite = out.r.iter().chain(out.j.iter()).all(|v| v.is_finite());
+        finite.then_some(out)
+    }
+
+    fn converged(&self, _w: &Vector3<f64>, _r: &Vector3<f64>) -> bool {
+        // the corrector's test is on its step, which is scale-free
+        true
+    }
+
+    fn in_domain(&self, w: &Vector3<f64>) -> bool {
+        let z = self.unscaled(w);
+        z[0] > 0.0 && z[1] > 0.0 && z[1] <= 1.0
+    }
+
+    fn a_bar_gradient(&self) -> Vector3<f64> {
+        Vector3::new(self.scale[0], 0.0, 0.0)
+    }
+
+    fn delta_bar_gradient(&self) -> Vector3<f64> {
+        Vector3::new(0.0, 0.0, self.scale[2])
+    }
+
+    fn stuck(&self, w: &Vector3<f64>, why: &str) -> Error {
+        let z = self.unscaled(w);
+        Error::NoConvergence {
+            iterations: 20,
+            a_bar: z[0],
+            s: z[1],
+            residual: f64::NAN,
+            context: format!(
+                "pseudo-arclength corrector at delta_bar = {} (rho = {}): {why}",
+                crate::error::rounded(z[2]),
+                short(self.rho)
+            ),
+        }
+    }
 }
 
 /// The fold of `kind` near the traced state `near`, by Newton's method on

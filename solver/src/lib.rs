@@ -18,6 +18,7 @@
 pub mod batch;
 pub mod conformal;
 pub mod contact;
+pub mod continuation;
 pub mod curve;
 pub mod error;
 pub mod exact;

@@ -233,7 +233,6 @@ impl Conformal {
             j: DMatrix::from_fn(k, n, |i, j| e.hess[i][j]),
             force: e.grad[k],
             force_grad: DVector::from_fn(n, |j, _| e.hess[k][j]),
-            scale: 1.0 + x.rows(0, k).amax().powi(7),
         }
     }
 
@@ -669,5 +668,4 @@ struct Equations {
     j: DMatrix<f64>,
     force: f64,
     force_grad: DVector<f64>,
-    scale: f64,
 }

@@ -1,21 +1,23 @@
-//! The solution family of the exact problem traced by pseudo-arclength
-//! continuation in u = (A, b₀..b_{N−1}, δ̄), with ā free: the family can
-//! turn back in ā (a fold of the contact size, where the contour turns
-//! strongly non-elliptical near a bifurcation of the circle branch), so ā
-//! is not a safe parameter. Folds in ā and in F̄ are reported as data; the
-//! load-controlled pull-off is the first minimum of F̄ along the family,
-//! located by golden-section search on F̄ in the
-//! arclength (dF̄/dσ changes sign there; at ρ = 1 it sits on a bifurcation
-//! point, where the tangent is not defined).
-//! Bifurcation points are flagged where the determinant of the bordered
-//! Jacobian [∂r/∂u; tᵀ] changes sign (at a fold it does not).
+//! The solution family of the exact problem traced by the one continuation
+//! engine ([`crate::continuation`]) in u = (A, b₀..b_{N−1}, δ̄), with ā
+//! free: the family can turn back in ā (a fold of the contact size, where
+//! the contour turns strongly non-elliptical near a bifurcation of the
+//! circle branch), so ā is not a safe parameter. Folds in ā and in F̄ are
+//! reported as data; the load-controlled pull-off is the first minimum of
+//! F̄ along the family (at ρ = 1 it sits on a bifurcation point, where the
+//! engine locates it by values of F̄). Bifurcation points are flagged where
+//! the determinant of the bordered Jacobian [∂r/∂u; tᵀ] changes sign (at a
+//! fold it does not). The Jacobian is by central differences, so the
+//! corrector keeps it while the residual falls fast (the chord method).
 //!
-//! Owns: [`Branch`], [`BranchPoint`], [`Event`]. May use: `exact`, `error`,
+//! Owns: [`Branch`], [`BranchPoint`], [`Event`], the family's
+//! [`Family`] implementation. May use: `exact`, `continuation`, `error`,
 //! `conformal` (the richest member's state as a start).
 
 use super::{Exact, ExactState, Route};
+use crate::continuation::{self, EventKind, Family, Linear, On, Quantity, Settings, Watch};
 use crate::error::{Error, Result};
-use nalgebra::{DMatrix, DVector};
+use nalgebra::{DMatrix, DVector, Dyn};
 use serde::Serialize;
 
 /// What happens between two traced points.
@@ -148,36 +150,14 @@ fn linearise(ex: &Exact, u: &DVector<f64>) -> Option<(DVector<f64>, DMatrix<f64>
     Some((r, j, g))
 }
 
-/// The unit tangent t with ∂r/∂u t = 0 and t·t_prev > 0, and the
-/// determinant of the bordered matrix [∂r/∂u; t_prevᵀ].
-fn tangent(j: &DMatrix<f64>, t_prev: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
-    let n = t_prev.len();
-    let mut m = DMatrix::zeros(n, n);
-    m.rows_mut(0, n - 1).copy_from(j);
-    m.row_mut(n - 1).copy_from(&t_prev.transpose());
-    let mut rhs = DVector::zeros(n);
-    rhs[n - 1] = 1.0;
-    let lu = m.lu();
-    let det = lu.determinant();
-    let t = lu.solve(&rhs)?;
-    let norm = t.norm();
-    (norm.is_finite() && norm > 0.0).then(|| (t / norm, det))
-}
-
-/// A factored bordered Jacobian.
-type Bordered = nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>;
-
 /// The contour mode of the near-null direction of the bordered Jacobian
 /// [∂r/∂u; tᵀ]: the largest component, among the b_j, of the right
 /// singular vector of its smallest singular value; b_j perturbs the radius
 /// by cos (2j + 2)θ. 0 when A or δ̄ dominates; `None` when the SVD gives
 /// no singular vectors.
-fn null_mode(j: &DMatrix<f64>, t: &DVector<f64>) -> Option<usize> {
-    let n = t.len();
-    let mut m = DMatrix::zeros(n, n);
-    m.rows_mut(0, n - 1).copy_from(j);
-    m.row_mut(n - 1).copy_from(&t.transpose());
-    let svd = m.svd(false, true);
+fn null_mode(bordered: &DMatrix<f64>) -> Option<usize> {
+    let n = bordered.nrows();
+    let svd = bordered.clone().svd(false, true);
     let v_t = svd.v_t.as_ref()?;
     let k = svd.singular_values.imin();
     let i = (0..n)
@@ -197,74 +177,73 @@ fn a_bar_gradient(n: usize) -> DVector<f64> {
     g
 }
 
-impl Exact {
-    /// Newton's method for r(u) = 0 with t·(u − u_pred) = 0: first keeping
-    /// the bordered Jacobian while each step reduces the residual at least
-    /// fourfold (the chord method; refreshed otherwise), and where that
-    /// fails with the Jacobian renewed at every step. The answer is
-    /// accepted only when the residual is below the tolerance.
-    fn correct(&self, u_pred: &DVector<f64>, t: &DVector<f64>) -> Option<DVector<f64>> {
-        self.correct_with(u_pred, t, true, None)
-            .or_else(|| self.correct_with(u_pred, t, false, None))
-    }
-
-    /// [`Exact::correct`] starting from the factored bordered Jacobian
-    /// `start` of a nearby point (the refinements between two traced
-    /// points reuse the one of the first).
-    fn correct_near(
-        &self,
-        u_pred: &DVector<f64>,
-        t: &DVector<f64>,
-        start: &Bordered,
-    ) -> Option<DVector<f64>> {
-        self.correct_with(u_pred, t, true, Some(start.clone()))
-            .or_else(|| self.correct(u_pred, t))
-    }
-
-    /// The factored bordered Jacobian [∂r/∂u; tᵀ] at u.
-    fn bordered(&self, u: &DVector<f64>, t: &DVector<f64>) -> Option<Bordered> {
+/// The exact family at one ρ and truncation.
+impl Family<Dyn> for Exact {
+    fn linearise(&self, u: &DVector<f64>) -> Option<Linear<Dyn>> {
+        let (r, j, g) = linearise(self, u)?;
         let n = u.len();
-        let (_, j, _) = linearise(self, u)?;
-        let mut m = DMatrix::zeros(n, n);
-        m.rows_mut(0, n - 1).copy_from(&j);
-        m.row_mut(n - 1).copy_from(&t.transpose());
-        Some(m.lu())
+        let mut rr = DVector::zeros(n);
+        rr.rows_mut(0, n - 1).copy_from(&r);
+        let mut jj = DMatrix::zeros(n, n);
+        jj.rows_mut(0, n - 1).copy_from(&j);
+        let (_, force) = self.modes(u)?;
+        Some(Linear {
+            r: rr,
+            j: jj,
+            force,
+            force_grad: g,
+        })
     }
 
-    fn correct_with(
-        &self,
-        u_pred: &DVector<f64>,
-        t: &DVector<f64>,
-        chord: bool,
-        start: Option<Bordered>,
-    ) -> Option<DVector<f64>> {
-        let n = u_pred.len();
-        let mut u = u_pred.clone();
-        let mut lu = start;
-        let mut last = f64::INFINITY;
-        for _ in 0..if chord { 40 } else { 25 } {
-            let r = self.modes(&u)?.0;
-            let res = r.amax();
-            if lu.is_none() || !chord || res > 0.25 * last {
-                lu = Some(self.bordered(&u, t)?);
-            }
-            last = res;
-            let mut rhs = DVector::zeros(n);
-            rhs.rows_mut(0, n - 1).copy_from(&(-&r));
-            rhs[n - 1] = -t.dot(&(&u - u_pred));
-            let step = lu.as_ref()?.solve(&rhs)?;
-            if !step.iter().all(|v| v.is_finite()) {
-                return None;
-            }
-            u += &step;
-            if step.amax() < 1e-12 * (1.0 + u.amax()) {
-                let (r, _) = self.modes(&u)?;
-                return (r.amax() < super::RESIDUAL_TOLERANCE).then_some(u);
-            }
+    fn residuals(&self, u: &DVector<f64>) -> Option<DVector<f64>> {
+        let (r, _) = self.modes(u)?;
+        let n = u.len();
+        let mut rr = DVector::zeros(n);
+        rr.rows_mut(0, n - 1).copy_from(&r);
+        Some(rr)
+    }
+
+    fn converged(&self, u: &DVector<f64>, r: &DVector<f64>) -> bool {
+        r.rows(0, u.len() - 1).amax() < super::RESIDUAL_TOLERANCE
+    }
+
+    fn a_bar_gradient(&self) -> DVector<f64> {
+        a_bar_gradient(self.truncation.modes + 2)
+    }
+
+    fn delta_bar_gradient(&self) -> DVector<f64> {
+        let n = self.truncation.modes + 2;
+        let mut g = DVector::zeros(n);
+        g[n - 1] = 1.0;
+        g
+    }
+
+    fn chord(&self) -> bool {
+        true
+    }
+
+    fn bifurcation_mode(&self, bordered: &DMatrix<f64>) -> Option<usize> {
+        null_mode(bordered)
+    }
+
+    fn stuck(&self, u: &DVector<f64>, why: &str) -> Error {
+        let nm = self.truncation.modes;
+        let contour = super::Contour {
+            a: u[0],
+            b: u.rows(1, nm).iter().copied().collect(),
+        };
+        let (a_bar, b_bar) = (contour.a_bar(), contour.b_bar());
+        Error::NoConvergence {
+            iterations: 25,
+            a_bar,
+            s: b_bar / a_bar,
+            residual: f64::NAN,
+            context: format!("exact branch at rho = {}: {why}", self.rho),
         }
-        None
     }
+}
 
+impl Exact {
     /// Trace the family from `start` (a converged state) towards smaller
     /// ā, for at most `max_points` points or until ā < `a_min`, with
     /// arclength steps (in u) adapted between 1e-4 and `max_step`. Every
@@ -351,7 +330,10 @@ impl Exact {
     /// Trace from `start` with ā first moving in the direction of
     /// `direction` (±1), between `a_min` and `a_max`; stop at the first
     /// force minimum when asked, or at the first crossing of
-    /// `control` = target, which is refined and returned.
+    /// `control` = target, which is located and returned. A state asked for
+    /// by δ̄ or F̄ is looked for on the near-elliptical stretch only: the
+    /// trace ends at a size fold, past which the contour turns strongly
+    /// non-elliptical (a crossing in the step of the fold is not taken).
     #[allow(clippy::too_many_arguments)]
     fn trace_general(
         &self,
@@ -365,118 +347,81 @@ impl Exact {
         control: Option<ExactControl>,
     ) -> Result<(Branch, Option<ExactState>)> {
         let n = self.truncation.modes + 2;
-        let da = a_bar_gradient(n);
-        let fail = |st: &ExactState, why: String| Error::NoConvergence {
-            iterations: 25,
-            a_bar: st.a_bar,
-            s: st.s,
-            residual: f64::NAN,
-            context: format!("exact branch at rho = {}: {why}", self.rho),
+        let towards = a_bar_gradient(n) * direction;
+        let settings = Settings {
+            step: max_step,
+            min_step: 1e-4,
+            max_step,
+            grow: 1.3,
+            fast_iterations: usize::MAX,
+            turn: 0.95,
+            corrector_iterations: 20,
+            step_tolerance: 1e-12,
+            max_steps: max_points.saturating_sub(1),
         };
-        let mut u = self.unknowns(start);
-        let (_, j, g) = linearise(self, &u).ok_or_else(|| fail(start, "singular start".into()))?;
-        // the initial tangent points to ā moving in `direction`
-        let (mut t, mut det) =
-            tangent(&j, &(&da * direction)).ok_or_else(|| fail(start, "no tangent".into()))?;
-        if t.dot(&da) * direction < 0.0 {
-            t = -t;
+        let crossing = control.map(|c| match c {
+            ExactControl::Delta(v) => (Quantity::Delta, v, On::Stop),
+            ExactControl::Force(v) => (Quantity::Force, v, On::Stop),
+        });
+        let watch = Watch {
+            size_fold: if control.is_some() { On::Stop } else { On::Note },
+            displacement_fold: On::Ignore,
+            force_minimum: if stop_at_force_minimum {
+                On::Stop
+            } else {
+                On::Locate
+            },
+            bifurcation: On::Note,
+            crossing,
+        };
+        let trace = continuation::trace(self, self.unknowns(start), &towards, settings, watch, |p| {
+            p.a_bar < a_min || p.a_bar > a_max
+        })?;
+        let mut points = Vec::with_capacity(trace.points.len());
+        for (k, p) in trace.points.iter().enumerate() {
+            let state = if k == 0 {
+                start.clone()
+            } else {
+                self.state(&p.u)?
+            };
+            points.push(BranchPoint {
+                state,
+                d_force: p.d_force,
+                d_a_bar: p.d_a_bar,
+            });
         }
-        let key = |u: &DVector<f64>, force: f64| match control {
-            Some(ExactControl::Delta(target)) => u[n - 1] - target,
-            Some(ExactControl::Force(target)) => force - target,
-            None => f64::NAN,
-        };
-        let mut points = vec![BranchPoint {
-            state: start.clone(),
-            d_force: g.dot(&t),
-            d_a_bar: da.dot(&t),
-        }];
         let mut events = Vec::new();
-        let mut h = max_step;
-        while points.len() < max_points {
-            let last = points.last().expect("one point").state.clone();
-            if last.a_bar < a_min || last.a_bar > a_max {
-                break;
-            }
-            let Some(un) = self.correct(&(&u + &t * h), &t) else {
-                if h <= 1e-4 {
-                    return Err(fail(
-                        &last,
-                        format!(
-                            "no corrected point at step {h:e} after a_bar = {}",
-                            last.a_bar
-                        ),
-                    ));
+        let mut found = None;
+        for e in &trace.events {
+            let [i, j] = e.between;
+            match e.kind {
+                EventKind::SizeFold => events.push(Event::SizeFold {
+                    a_bar: points[j].state.a_bar,
+                }),
+                EventKind::Bifurcation(mode) => events.push(Event::Bifurcation {
+                    between: [points[i].state.a_bar, points[j].state.a_bar],
+                    mode,
+                }),
+                EventKind::ForceMinimum => {
+                    if let Some(u) = &e.at {
+                        events.push(Event::ForceMinimum {
+                            state: Box::new(self.state(u)?),
+                        });
+                    }
                 }
-                h = (h * 0.5).max(1e-4);
-                continue;
-            };
-            let (_, j, g) =
-                linearise(self, &un).ok_or_else(|| fail(&last, "singular system".into()))?;
-            let Some((tn, detn)) = tangent(&j, &t) else {
-                return Err(fail(&last, "no tangent".into()));
-            };
-            // a step that turns the tangent by more than ~18° may have
-            // jumped to another sheet of the family: retry it shorter
-            if tn.dot(&t) < 0.95 && h > 1e-4 {
-                h = (h * 0.5).max(1e-4);
-                continue;
-            }
-            let st = self.state(&un)?;
-            let p = BranchPoint {
-                d_force: g.dot(&tn),
-                d_a_bar: da.dot(&tn),
-                state: st,
-            };
-            let prev = points.last().expect("one point");
-            if prev.d_a_bar.signum() != p.d_a_bar.signum() {
-                events.push(Event::SizeFold {
-                    a_bar: p.state.a_bar,
-                });
-                if control.is_some() {
-                    // a state asked for by δ̄ or F̄ is looked for on the
-                    // near-elliptical stretch only: past a size fold the
-                    // contour turns strongly non-elliptical
-                    points.push(p);
-                    break;
+                EventKind::Crossing => {
+                    let past_fold = trace
+                        .events
+                        .iter()
+                        .any(|f| f.kind == EventKind::SizeFold && f.between == e.between);
+                    if let (Some(u), false) = (&e.at, past_fold) {
+                        found = Some(self.state(u)?);
+                    }
                 }
+                EventKind::DisplacementFold => {}
             }
-            if detn.signum() != det.signum() {
-                events.push(Event::Bifurcation {
-                    between: [prev.state.a_bar, p.state.a_bar],
-                    mode: null_mode(&j, &t),
-                });
-            }
-            if control.is_some() {
-                let (k0, k1) = (key(&u, prev.state.force_bar), key(&un, p.state.force_bar));
-                if k0 == 0.0 {
-                    let hit = prev.state.clone();
-                    return Ok((Branch { points, events }, Some(hit)));
-                }
-                if k0.signum() != k1.signum() {
-                    let value = |v: &DVector<f64>| self.modes(v).map(|(_, force)| key(v, force));
-                    let hit = self.refine(&u, &t, k0, &un, k1, &value, "exact state")?;
-                    points.push(p);
-                    return Ok((Branch { points, events }, Some(hit)));
-                }
-            }
-            if prev.d_force < 0.0 && p.d_force >= 0.0 {
-                let refined = self.minimise_force(&u, &t, &un)?;
-                events.push(Event::ForceMinimum {
-                    state: Box::new(refined),
-                });
-                if stop_at_force_minimum {
-                    points.push(p);
-                    break;
-                }
-            }
-            u = un;
-            t = tn;
-            det = detn;
-            points.push(p);
-            h = (h * 1.3).min(max_step);
         }
-        Ok((Branch { points, events }, None))
+        Ok((Branch { points, events }, found))
     }
 
     /// The state at `control` started from the richest `conformal:K`'s
@@ -663,108 +608,5 @@ impl Exact {
             });
         }
         Ok(st)
-    }
-
-    /// The minimum of F̄ between two traced points u0 (tangent t0,
-    /// dF̄/dσ < 0) and u1 (dF̄/dσ ≥ 0), by golden-section search on F̄ of
-    /// the corrected points along the arclength σ from u0 (F̄ values, not
-    /// dF̄/dσ: at ρ = 1 the minimum sits on the bifurcation point of the
-    /// mode n = 4, ā³ = 12, where the tangent is not defined). 45 steps
-    /// shrink the bracket by 0.618⁴⁵ ≈ 4e-10; F̄ is flat there, so its
-    /// error is of the order of the square of that.
-    fn minimise_force(
-        &self,
-        u0: &DVector<f64>,
-        t0: &DVector<f64>,
-        u1: &DVector<f64>,
-    ) -> Result<ExactState> {
-        let fail = |sigma: f64| {
-            Error::NoState(format!(
-                "exact pull-off at rho = {}: no corrected point near sigma = {sigma}",
-                self.rho
-            ))
-        };
-        let jac0 = self.bordered(u0, t0).ok_or_else(|| fail(0.0))?;
-        let at = |sigma: f64| -> Result<(DVector<f64>, f64)> {
-            let u = [
-                0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4,
-            ]
-            .iter()
-            .find_map(|off| {
-                self.correct_near(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0, &jac0)
-            })
-            .ok_or_else(|| fail(sigma))?;
-            let (_, force) = self.modes(&u).ok_or_else(|| fail(sigma))?;
-            Ok((u, force))
-        };
-        let g = 0.5 * (5f64.sqrt() - 1.0);
-        let (mut lo, mut hi) = (0.0, t0.dot(&(u1 - u0)));
-        let mut x1 = hi - g * (hi - lo);
-        let mut x2 = lo + g * (hi - lo);
-        let (mut p1, mut f1) = at(x1)?;
-        let (mut p2, mut f2) = at(x2)?;
-        for _ in 0..45 {
-            if f1 < f2 {
-                hi = x2;
-                (x2, p2, f2) = (x1, p1.clone(), f1);
-                x1 = hi - g * (hi - lo);
-                (p1, f1) = at(x1)?;
-            } else {
-                lo = x1;
-                (x1, p1, f1) = (x2, p2.clone(), f2);
-                x2 = lo + g * (hi - lo);
-                (p2, f2) = at(x2)?;
-            }
-        }
-        self.state(if f1 < f2 { &p1 } else { &p2 })
-    }
-
-    /// The zero of `value` between two traced points (u0 with tangent t0
-    /// and value f0, u1 with value f1 of the other sign), by regula falsi
-    /// (Illinois) on the arclength σ from u0: σ stays inside the bracket.
-    /// A point where the bordered system is singular (a bifurcation
-    /// point) is corrected a little beside it (from 1e-9 in σ up).
-    #[allow(clippy::too_many_arguments)]
-    fn refine(
-        &self,
-        u0: &DVector<f64>,
-        t0: &DVector<f64>,
-        f0: f64,
-        u1: &DVector<f64>,
-        f1: f64,
-        value: &dyn Fn(&DVector<f64>) -> Option<f64>,
-        what: &str,
-    ) -> Result<ExactState> {
-        let (mut sa, mut fa) = (0.0, f0);
-        let (mut sb, mut fb) = (t0.dot(&(u1 - u0)), f1);
-        let mut best = u1.clone();
-        let fail = |why: &str| Error::NoState(format!("{what} at rho = {}: {why}", self.rho));
-        let jac0 = self
-            .bordered(u0, t0)
-            .ok_or_else(|| fail("singular bordered system"))?;
-        for _ in 0..60 {
-            let sigma = sb - fb * (sb - sa) / (fb - fa);
-            let u = [0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-4, -1e-4]
-                .iter()
-                .find_map(|off| {
-                    self.correct_near(&(u0 + t0 * (sigma + off * (1.0 + sigma.abs()))), t0, &jac0)
-                })
-                .ok_or_else(|| fail(&format!("no corrected point near sigma = {sigma}")))?;
-            let f = value(&u).ok_or_else(|| fail("singular system"))?;
-            best = u;
-            if f == 0.0 || (sb - sa).abs() < 1e-12 * (1.0 + sigma.abs()) {
-                break;
-            }
-            if f.signum() == fb.signum() {
-                fa *= 0.5;
-            } else {
-                (sa, fa) = (sb, fb);
-            }
-            (sb, fb) = (sigma, f);
-            if (sigma - sa).abs() < 1e-12 * (1.0 + sigma.abs()) {
-                break;
-            }
-        }
-        self.state(&best)
     }
 }

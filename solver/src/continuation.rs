@@ -1,0 +1,669 @@
+//! Pseudo-arclength continuation, written once for every family of states:
+//! the paper's ellipse models (u = (ā, s, δ̄), static 3-vectors), the
+//! contour family `conformal:K` (u = (c₁ … c_K, δ̄)) and the exact solution
+//! (u = (A, b₀ … b_{N−1}, δ̄)). A family is n − 1 equations in n unknowns
+//! whose last is δ̄ (or a multiple of it); the engine follows its solution
+//! curve by arclength, so folds in ā, δ̄ or F̄ are passed, not stopped at.
+//!
+//! - Predictor: a step σ along the unit tangent t, the null vector of the
+//!   (n − 1) × n Jacobian, found from the bordered system [∂r/∂u; t_prevᵀ]
+//!   t = eₙ and oriented like the previous tangent.
+//! - Corrector: Newton's method on the equations bordered by the arclength
+//!   condition t·(u − u_pred) = 0; for families whose Jacobian is costly
+//!   ([`Family::chord`]) the factored bordered Jacobian is kept while each
+//!   step reduces the residual at least fourfold.
+//! - Step control: halved when the corrector fails or the tangent turns by
+//!   more than [`Settings::turn`] (a turn at the smallest step is taken:
+//!   a corner of the branch), grown by [`Settings::grow`] after a fast
+//!   correction.
+//! - Events between two traced points: a fold in ā (dā/dσ changes sign), in
+//!   δ̄ (dδ̄/dσ), a minimum of F̄ (dF̄/dσ from < 0 to ≥ 0), a bifurcation point
+//!   (the determinant of the bordered Jacobian changes sign; at a fold it
+//!   does not) and the crossing of a target value of ā, δ̄ or F̄. Each is
+//!   ignored, noted at the bracketing points, located, or located and made
+//!   the end of the trace ([`On`]). A fold in δ̄, a crossing and a force
+//!   minimum are located by the Illinois method on σ (on dδ̄/dσ, the value,
+//!   dF̄/dσ); a force minimum in a step that also holds a bifurcation point
+//!   by golden-section search on F̄ along σ (the tangent is undefined there:
+//!   at ρ = 1 the minimum sits on the bifurcation point of mode 4).
+//!
+//! Owns: [`Family`], [`Linear`], [`Settings`], [`Watch`], [`On`],
+//! [`Quantity`], [`Point`], [`EventKind`], [`Event`], [`Trace`], [`trace`].
+//! May use: `error`, nalgebra.
+
+use crate::error::{Error, Result};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim, DimMin, OMatrix, OVector, LU};
+
+/// The equations of a family and their Jacobian at one point.
+#[derive(Clone, Debug)]
+pub struct Linear<D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    /// The n − 1 residuals in the first n − 1 entries (the last is unused).
+    pub r: OVector<f64, D>,
+    /// Their Jacobian ∂r/∂u in the first n − 1 rows (the last row is the
+    /// engine's).
+    pub j: OMatrix<f64, D, D>,
+    /// F̄ at u.
+    pub force: f64,
+    /// ∂F̄/∂u.
+    pub force_grad: OVector<f64, D>,
+}
+
+/// A family of states: n − 1 equations in the n unknowns u.
+pub trait Family<D: Dim>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    /// The equations, their Jacobian and F̄ at u (`None` where they are not
+    /// defined).
+    fn linearise(&self, u: &OVector<f64, D>) -> Option<Linear<D>>;
+    /// The residuals alone (the chord method's cheap evaluation).
+    fn residuals(&self, u: &OVector<f64, D>) -> Option<OVector<f64, D>> {
+        self.linearise(u).map(|l| l.r)
+    }
+    /// Whether the residuals at u are small enough for a state.
+    fn converged(&self, u: &OVector<f64, D>, r: &OVector<f64, D>) -> bool;
+    /// Whether u lies in the domain of the equations (a corrector iterate
+    /// outside it fails the step).
+    fn in_domain(&self, _u: &OVector<f64, D>) -> bool {
+        true
+    }
+    /// Whether an accepted point is a state; an error ends the trace with
+    /// its reason (for `conformal:K`: the map is not one-to-one).
+    fn admissible(&self, _u: &OVector<f64, D>) -> Result<()> {
+        Ok(())
+    }
+    /// ā = g·u: the constant gradient g.
+    fn a_bar_gradient(&self) -> OVector<f64, D>;
+    /// δ̄ = g·u: the constant gradient g.
+    fn delta_bar_gradient(&self) -> OVector<f64, D>;
+    /// Keep the factored bordered Jacobian while the residual falls fast
+    /// (for families whose Jacobian costs many residual evaluations).
+    fn chord(&self) -> bool {
+        false
+    }
+    /// The contour mode of the near-null direction of the bordered
+    /// Jacobian at a bifurcation point, where the family knows it.
+    fn bifurcation_mode(&self, _bordered: &OMatrix<f64, D, D>) -> Option<usize> {
+        None
+    }
+    /// The trace stopped at u for the reason `why`: the error, in the
+    /// family's words (where it stopped, rounded).
+    fn stuck(&self, u: &OVector<f64, D>, why: &str) -> Error;
+}
+
+/// Step control and budgets of a trace.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// The first step.
+    pub step: f64,
+    /// The smallest step: a step that fails at this size ends the trace
+    /// with an error.
+    pub min_step: f64,
+    /// The largest step.
+    pub max_step: f64,
+    /// The factor a step grows by after a correction within
+    /// `fast_iterations`.
+    pub grow: f64,
+    /// See `grow`.
+    pub fast_iterations: usize,
+    /// The least cosine between consecutive tangents; a step that turns
+    /// more is retried shorter (−1: any turn).
+    pub turn: f64,
+    /// Corrector iterations.
+    pub corrector_iterations: usize,
+    /// The corrector has converged when its step is below this times
+    /// 1 + max |u|.
+    pub step_tolerance: f64,
+    /// The most accepted steps.
+    pub max_steps: usize,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            step: 0.02,
+            min_step: 1e-10,
+            max_step: 0.1,
+            grow: 1.3,
+            fast_iterations: usize::MAX,
+            turn: -1.0,
+            corrector_iterations: 20,
+            step_tolerance: 1e-12,
+            max_steps: 20_000,
+        }
+    }
+}
+
+/// What the engine does with an event.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum On {
+    /// Nothing.
+    Ignore,
+    /// Record it between the two traced points that bracket it.
+    Note,
+    /// Record it, located.
+    Locate,
+    /// Record it located (a fold in ā: at the later traced point) and end
+    /// the trace there.
+    Stop,
+}
+
+/// A quantity the engine watches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Quantity {
+    /// ā.
+    ABar,
+    /// δ̄.
+    Delta,
+    /// F̄.
+    Force,
+}
+
+/// The events a trace watches for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Watch {
+    /// Folds in ā.
+    pub size_fold: On,
+    /// Folds in δ̄ (extrema of δ̄: pull-off under displacement control).
+    pub displacement_fold: On,
+    /// Minima of F̄ (pull-off under load control).
+    pub force_minimum: On,
+    /// Sign changes of the bordered determinant.
+    pub bifurcation: On,
+    /// The crossing of a value.
+    pub crossing: Option<(Quantity, f64, On)>,
+}
+
+impl Default for Watch {
+    fn default() -> Self {
+        Watch {
+            size_fold: On::Note,
+            displacement_fold: On::Note,
+            force_minimum: On::Note,
+            bifurcation: On::Ignore,
+            crossing: None,
+        }
+    }
+}
+
+/// One traced point.
+#[derive(Clone, Debug)]
+pub struct Point<D: Dim>
+where
+    DefaultAllocator: Allocator<D>,
+{
+    /// The unknowns.
+    pub u: OVector<f64, D>,
+    /// The unit tangent (oriented along the trace).
+    pub t: OVector<f64, D>,
+    /// ā.
+    pub a_bar: f64,
+    /// δ̄.
+    pub delta_bar: f64,
+    /// F̄.
+    pub force: f64,
+    /// dā/dσ.
+    pub d_a_bar: f64,
+    /// dδ̄/dσ.
+    pub d_delta_bar: f64,
+    /// dF̄/dσ.
+    pub d_force: f64,
+    /// The sign of the bordered determinant.
+    det_sign: f64,
+}
+
+impl<D: Dim> Point<D>
+where
+    DefaultAllocator: Allocator<D>,
+{
+    /// The watched quantity here.
+    pub fn value(&self, q: Quantity) -> f64 {
+        match q {
+            Quantity::ABar => self.a_bar,
+            Quantity::Delta => self.delta_bar,
+            Quantity::Force => self.force,
+        }
+    }
+}
+
+/// What happened.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// ā turns.
+    SizeFold,
+    /// δ̄ turns.
+    DisplacementFold,
+    /// F̄ has a minimum.
+    ForceMinimum,
+    /// A bifurcation point, with the contour mode of the null direction
+    /// where the family knows it.
+    Bifurcation(Option<usize>),
+    /// The watched value is reached.
+    Crossing,
+}
+
+/// An event of a trace.
+#[derive(Clone, Debug)]
+pub struct Event<D: Dim>
+where
+    DefaultAllocator: Allocator<D>,
+{
+    /// What happened.
+    pub kind: EventKind,
+    /// The indices of the traced points that bracket it.
+    pub between: [usize; 2],
+    /// Where, when located.
+    pub at: Option<OVector<f64, D>>,
+}
+
+/// How a trace ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End {
+    /// At an event watched with [`On::Stop`].
+    Event(EventKind),
+    /// Where the caller's `until` said so.
+    Until,
+    /// The step budget ran out.
+    Budget,
+}
+
+/// A trace: its points, events and end.
+#[derive(Clone, Debug)]
+pub struct Trace<D: Dim>
+where
+    DefaultAllocator: Allocator<D>,
+{
+    /// The traced points, in order.
+    pub points: Vec<Point<D>>,
+    /// The events, in order.
+    pub events: Vec<Event<D>>,
+    /// How it ended.
+    pub end: End,
+}
+
+impl<D: Dim> Trace<D>
+where
+    DefaultAllocator: Allocator<D>,
+{
+    /// The located point of the first event of `kind`.
+    pub fn located(&self, kind: EventKind) -> Option<&OVector<f64, D>> {
+        self.events
+            .iter()
+            .find(|e| e.kind == kind)
+            .and_then(|e| e.at.as_ref())
+    }
+}
+
+/// The engine's bounds on the dimension.
+pub trait Size: Dim + DimMin<Self, Output = Self> {}
+impl<D: Dim + DimMin<D, Output = D>> Size for D {}
+
+struct Engine<'a, D: Size, F: Family<D>>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    family: &'a F,
+    settings: Settings,
+    ga: OVector<f64, D>,
+    gd: OVector<f64, D>,
+}
+
+impl<D: Size, F: Family<D>> Engine<'_, D, F>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    fn bordered(&self, j: &OMatrix<f64, D, D>, t: &OVector<f64, D>) -> OMatrix<f64, D, D> {
+        let mut m = j.clone();
+        let n = t.len();
+        for k in 0..n {
+            m[(n - 1, k)] = t[k];
+        }
+        m
+    }
+
+    /// The unit tangent where the Jacobian is `j`, oriented like `prev`,
+    /// and the sign of the bordered determinant.
+    fn tangent(
+        &self,
+        j: &OMatrix<f64, D, D>,
+        prev: &OVector<f64, D>,
+    ) -> Option<(OVector<f64, D>, f64)> {
+        let n = prev.len();
+        let lu = self.bordered(j, prev).lu();
+        let det = lu.determinant();
+        let mut rhs = prev.clone();
+        rhs.fill(0.0);
+        rhs[n - 1] = 1.0;
+        let t = lu.solve(&rhs)?;
+        let norm = t.norm();
+        (norm.is_finite() && norm > 0.0).then(|| (t / norm, det.signum()))
+    }
+
+    /// The corrector from `base + t σ`; with the iterations used and the
+    /// linearisation at the answer.
+    fn correct(
+        &self,
+        base: &OVector<f64, D>,
+        t: &OVector<f64, D>,
+        sigma: f64,
+        start: Option<&LU<f64, D, D>>,
+    ) -> Option<(OVector<f64, D>, usize, Linear<D>)> {
+        let pred = base + t * sigma;
+        if self.family.chord() {
+            self.correct_with(&pred, t, true, start.cloned())
+                .or_else(|| self.correct_with(&pred, t, false, None))
+        } else {
+            self.correct_with(&pred, t, false, None)
+        }
+    }
+
+    fn correct_with(
+        &self,
+        pred: &OVector<f64, D>,
+        t: &OVector<f64, D>,
+        chord: bool,
+        start: Option<LU<f64, D, D>>,
+    ) -> Option<(OVector<f64, D>, usize, Linear<D>)> {
+        let n = pred.len();
+        let mut u = pred.clone();
+        let mut lu = start;
+        let mut last = f64::INFINITY;
+        let iterations = self.settings.corrector_iterations * if chord { 2 } else { 1 };
+        for it in 0..iterations {
+            if !self.family.in_domain(&u) {
+                return None;
+            }
+            let mut r = None;
+            if chord && lu.is_some() {
+                let cheap = self.family.residuals(&u)?;
+                let res = cheap.rows(0, n - 1).amax();
+                if res <= 0.25 * last {
+                    last = res;
+                    r = Some(cheap);
+                }
+            }
+            let r = match r {
+                Some(r) => r,
+                None => {
+                    // a fresh Jacobian: at the start, without the chord
+                    // method, or where the residual fell too slowly
+                    let l = self.family.linearise(&u)?;
+                    last = l.r.rows(0, n - 1).amax();
+                    lu = Some(self.bordered(&l.j, t).lu());
+                    l.r
+                }
+            };
+            let mut rhs = -r;
+            rhs[n - 1] = -t.dot(&(&u - pred));
+            let step = lu.as_ref()?.solve(&rhs)?;
+            if !step.iter().all(|v| v.is_finite()) {
+                return None;
+            }
+            u += &step;
+            if step.amax() < self.settings.step_tolerance * (1.0 + u.amax()) {
+                if !self.family.in_domain(&u) {
+                    return None;
+                }
+                let l = self.family.linearise(&u)?;
+                return self.family.converged(&u, &l.r).then_some((u, it + 1, l));
+            }
+        }
+        None
+    }
+
+    fn point(&self, u: OVector<f64, D>, t: OVector<f64, D>, l: &Linear<D>, det_sign: f64) -> Point<D> {
+        Point {
+            a_bar: self.ga.dot(&u),
+            delta_bar: self.gd.dot(&u),
+            force: l.force,
+            d_a_bar: self.ga.dot(&t),
+            d_delta_bar: self.gd.dot(&t),
+            d_force: l.force_grad.dot(&t),
+            det_sign,
+            u,
+            t,
+        }
+    }
+
+    /// A corrected point at σ from `p`, or a little beside it (a bifurcation
+    /// point makes the bordered system singular on the point itself).
+    fn beside(
+        &self,
+        p: &Point<D>,
+        sigma: f64,
+        lu: &LU<f64, D, D>,
+    ) -> Result<(OVector<f64, D>, Linear<D>)> {
+        [
+            0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4,
+        ]
+        .iter()
+        .find_map(|off| {
+            self.correct(&p.u, &p.t, sigma + off * (1.0 + sigma.abs()), Some(lu))
+                .map(|(u, _, l)| (u, l))
+        })
+        .ok_or_else(|| {
+            self.family
+                .stuck(&p.u, &format!("no corrected point near arclength {sigma:.3e} while locating an event"))
+        })
+    }
+
+    fn factored(&self, p: &Point<D>) -> Result<LU<f64, D, D>> {
+        let l = self
+            .family
+            .linearise(&p.u)
+            .ok_or_else(|| self.family.stuck(&p.u, "the equations are not defined"))?;
+        Ok(self.bordered(&l.j, &p.t).lu())
+    }
+
+    /// The minimum of F̄ between `p` (dF̄/dσ < 0) and `q`, by golden-section
+    /// search on F̄ along σ: 45 steps shrink the bracket by 0.618⁴⁵ ≈ 4e-10.
+    fn force_minimum(&self, p: &Point<D>, q: &Point<D>) -> Result<OVector<f64, D>> {
+        let lu = self.factored(p)?;
+        let at = |sigma: f64| self.beside(p, sigma, &lu).map(|(u, l)| (u, l.force));
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut lo, mut hi) = (0.0, p.t.dot(&(&q.u - &p.u)));
+        let mut x1 = hi - g * (hi - lo);
+        let mut x2 = lo + g * (hi - lo);
+        let (mut u1, mut f1) = at(x1)?;
+        let (mut u2, mut f2) = at(x2)?;
+        for _ in 0..45 {
+            if f1 < f2 {
+                hi = x2;
+                (x2, u2, f2) = (x1, u1.clone(), f1);
+                x1 = hi - g * (hi - lo);
+                (u1, f1) = at(x1)?;
+            } else {
+                lo = x1;
+                (x1, u1, f1) = (x2, u2.clone(), f2);
+                x2 = lo + g * (hi - lo);
+                (u2, f2) = at(x2)?;
+            }
+        }
+        Ok(if f1 < f2 { u1 } else { u2 })
+    }
+
+    /// The zero of `value` (of the corrected point, its tangent and
+    /// linearisation) between `p` (value f0) and `q` (value f1, the other
+    /// sign), by the Illinois method on σ.
+    fn zero(
+        &self,
+        p: &Point<D>,
+        q: &Point<D>,
+        f0: f64,
+        f1: f64,
+        value: &dyn Fn(&Point<D>) -> f64,
+    ) -> Result<OVector<f64, D>> {
+        let lu = self.factored(p)?;
+        let (mut sa, mut fa) = (0.0, f0);
+        let (mut sb, mut fb) = (p.t.dot(&(&q.u - &p.u)), f1);
+        let mut best = q.u.clone();
+        for _ in 0..100 {
+            let sigma = sb - fb * (sb - sa) / (fb - fa);
+            let (u, l) = self.beside(p, sigma, &lu)?;
+            let (t, det) = self
+                .tangent(&l.j, &p.t)
+                .ok_or_else(|| self.family.stuck(&u, "no tangent while locating an event"))?;
+            let f = value(&self.point(u.clone(), t, &l, det));
+            best = u;
+            if f == 0.0 || (sb - sa).abs() < 1e-13 * (1.0 + sigma.abs()) {
+                return Ok(best);
+            }
+            if f.signum() == fb.signum() {
+                fa *= 0.5; // Illinois: the retained end's value is halved
+            } else {
+                (sa, fa) = (sb, fb);
+            }
+            (sb, fb) = (sigma, f);
+            if (sigma - sa).abs() < 1e-13 * (1.0 + sigma.abs()) {
+                return Ok(best);
+            }
+        }
+        // never the last iterate in place of a located event
+        Err(self
+            .family
+            .stuck(&best, "the event's location did not converge in 100 Illinois steps"))
+    }
+}
+
+/// Trace the family from the state `start` with the first tangent oriented
+/// along `towards`, watching `watch`, until an event watched with
+/// [`On::Stop`], `until` (called on each new point) or the budget.
+pub fn trace<D: Size, F: Family<D>>(
+    family: &F,
+    start: OVector<f64, D>,
+    towards: &OVector<f64, D>,
+    settings: Settings,
+    watch: Watch,
+    mut until: impl FnMut(&Point<D>) -> bool,
+) -> Result<Trace<D>>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    let engine = Engine {
+        family,
+        settings,
+        ga: family.a_bar_gradient(),
+        gd: family.delta_bar_gradient(),
+    };
+    let l0 = family
+        .linearise(&start)
+        .ok_or_else(|| family.stuck(&start, "the equations are not defined at its start"))?;
+    let (mut t0, det0) = engine
+        .tangent(&l0.j, towards)
+        .ok_or_else(|| family.stuck(&start, "no tangent at its start"))?;
+    if t0.dot(towards) < 0.0 {
+        t0 = -t0;
+    }
+    let mut points = vec![engine.point(start, t0, &l0, det0)];
+    let mut events: Vec<Event<D>> = Vec::new();
+    let mut h = settings.step;
+    let mut accepted = 0;
+    let shorter = |h: f64, p: &Point<D>, why: &str| -> Result<f64> {
+        if h <= settings.min_step {
+            return Err(family.stuck(&p.u, why));
+        }
+        Ok((h * 0.5).max(settings.min_step))
+    };
+    while accepted < settings.max_steps {
+        let p = points.last().expect("one point");
+        let Some((u, iterations, l)) = engine.correct(&p.u, &p.t, h, None) else {
+            h = shorter(h, p, "the corrector fails at every step size")?;
+            continue;
+        };
+        let Some((t, det)) = engine.tangent(&l.j, &p.t) else {
+            return Err(family.stuck(&u, "the tangent is undefined"));
+        };
+        if t.dot(&p.t) < settings.turn && h > settings.min_step {
+            // the tangent turned too much: a sharp bend, or a jump to
+            // another sheet of the family (taken at the smallest step)
+            h = (h * 0.5).max(settings.min_step);
+            continue;
+        }
+        family.admissible(&u)?;
+        accepted += 1;
+        let q = engine.point(u, t, &l, det);
+        let i = points.len();
+        let between = [i - 1, i];
+        let mut stop = None;
+        let mut note = |kind: EventKind, on: On, at: Option<OVector<f64, D>>| {
+            events.push(Event { kind, between, at });
+            if on == On::Stop && stop.is_none() {
+                stop = Some(kind);
+            }
+        };
+        let located = |on: On| matches!(on, On::Locate | On::Stop);
+        if watch.size_fold != On::Ignore && p.d_a_bar.signum() != q.d_a_bar.signum() {
+            let at = located(watch.size_fold).then(|| q.u.clone());
+            note(EventKind::SizeFold, watch.size_fold, at);
+        }
+        if watch.bifurcation != On::Ignore && p.det_sign != q.det_sign {
+            let mode = family.bifurcation_mode(&engine.bordered(&l.j, &p.t));
+            note(EventKind::Bifurcation(mode), watch.bifurcation, None);
+        }
+        if let Some((quantity, target, on)) = watch.crossing {
+            let (k0, k1) = (p.value(quantity) - target, q.value(quantity) - target);
+            if on != On::Ignore && k0 != 0.0 && k0.signum() != k1.signum() {
+                let at = if located(on) {
+                    Some(engine.zero(p, &q, k0, k1, &|x: &Point<D>| x.value(quantity) - target)?)
+                } else {
+                    None
+                };
+                note(EventKind::Crossing, on, at);
+            }
+        }
+        if watch.displacement_fold != On::Ignore
+            && p.d_delta_bar.signum() != q.d_delta_bar.signum()
+        {
+            let at = if located(watch.displacement_fold) {
+                Some(engine.zero(p, &q, p.d_delta_bar, q.d_delta_bar, &|x: &Point<D>| {
+                    x.d_delta_bar
+                })?)
+            } else {
+                None
+            };
+            note(EventKind::DisplacementFold, watch.displacement_fold, at);
+        }
+        if watch.force_minimum != On::Ignore && p.d_force < 0.0 && q.d_force >= 0.0 {
+            let at = if located(watch.force_minimum) {
+                // on the rate where the tangent is defined throughout the
+                // step; by values where a bifurcation point lies in it
+                Some(if p.det_sign == q.det_sign {
+                    engine.zero(p, &q, p.d_force, q.d_force, &|x: &Point<D>| x.d_force)?
+                } else {
+                    engine.force_minimum(p, &q)?
+                })
+            } else {
+                None
+            };
+            note(EventKind::ForceMinimum, watch.force_minimum, at);
+        }
+        let done = until(&q);
+        points.push(q);
+        if let Some(kind) = stop {
+            return Ok(Trace {
+                points,
+                events,
+                end: End::Event(kind),
+            });
+        }
+        if done {
+            return Ok(Trace {
+                points,
+                events,
+                end: End::Until,
+            });
+        }
+        if iterations <= settings.fast_iterations {
+            h = (h * settings.grow).min(settings.max_step);
+        }
+    }
+    Ok(Trace {
+        points,
+        events,
+        end: End::Budget,
+    })
+}
