@@ -330,16 +330,28 @@ fn exact_contour<'py>(
 }
 
 /// The curve of an approximate model at `rho` from δ̄ = `delta_start`
-/// past pull-off: JSON of its states and folds.
+/// past pull-off: JSON of its states and folds (for `conformal:K` also
+/// each state's arm and how the arms end).
 #[pyfunction]
 fn curve(py: Python<'_>, model: &str, rho: f64, points: usize, delta_start: f64) -> PyResult<String> {
     let id = match choice(model)? {
         Choice::Approx(id) => id,
+        Choice::Conformal(m) => {
+            return py
+                .detach(move || -> thinjkr::Result<String> {
+                    let cv = m.curve(rho, points, delta_start)?;
+                    Ok(json(&serde_json::json!({
+                        "states": cv.states, "folds": cv.folds, "arm": cv.arm,
+                        "beyond_size_fold": cv.beyond_size_fold, "end": cv.end
+                    })))
+                })
+                .map_err(raw)
+        }
         _ => {
             return Err(raw(Error::Unavailable {
-                model: "conformal:K / exact",
+                model: "exact",
                 what: "a curve".into(),
-                why: "curves are traced for the models of the ellipse",
+                why: "the exact solution gives states at given loads (exact)",
             }))
         }
     };

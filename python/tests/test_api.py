@@ -114,7 +114,7 @@ def test_force_arrays_and_scalar_broadcast():
         (lambda: thinjkr.solve(0.8, delta=2.0, force=1.0), thinjkr.InvalidInput, "exactly one"),
         (lambda: thinjkr.solve(0.8, delta=2.0, model="nosuch"), thinjkr.InvalidInput, "model"),
         (lambda: thinjkr.solve(0.8, delta=-10.0), thinjkr.NoState, "delta"),
-        (lambda: thinjkr.curve(0.8, model="conformal:4"), thinjkr.Unavailable, "curve"),
+        (lambda: thinjkr.curve(0.8, model="exact"), thinjkr.Unavailable, "curve"),
         (lambda: thinjkr.pull_off(0.8, model="energy", control="displacement"), thinjkr.NoState,
          "stays stable"),
         (lambda: thinjkr.exact.zero_force(0.3), thinjkr.NoState, "rho"),
@@ -172,6 +172,16 @@ def test_curve_marks_its_folds():
     assert "load" in kinds
     load = dict(c.folds)["load"]
     assert close(load.force_bar, thinjkr.pull_off(0.8).force_bar, 1e-9)
+
+
+def test_a_conformal_curve_has_the_pull_off_on_its_second_arm():
+    c = thinjkr.curve(0.8, model="conformal:8", points=60)
+    assert len(c) == 60 and set(c.arm.tolist()) == {0, 1}
+    assert c.end and "pull-off arm" in c.end
+    least = min(st.force_bar for k, st in c.folds if k == "load")
+    po = thinjkr.pull_off(0.8, model="conformal:8")
+    assert close(least, po.force_bar, 1e-9)
+    assert c.bc_error.shape == (60,) and c.beyond_size_fold.dtype == bool
 
 
 def test_physical_units():

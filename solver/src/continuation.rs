@@ -415,7 +415,13 @@ where
         None
     }
 
-    fn point(&self, u: OVector<f64, D>, t: OVector<f64, D>, l: &Linear<D>, det_sign: f64) -> Point<D> {
+    fn point(
+        &self,
+        u: OVector<f64, D>,
+        t: OVector<f64, D>,
+        l: &Linear<D>,
+        det_sign: f64,
+    ) -> Point<D> {
         Point {
             a_bar: self.ga.dot(&u),
             delta_bar: self.gd.dot(&u),
@@ -446,8 +452,10 @@ where
                 .map(|(u, _, l)| (u, l))
         })
         .ok_or_else(|| {
-            self.family
-                .stuck(&p.u, &format!("no corrected point near arclength {sigma:.3e} while locating an event"))
+            self.family.stuck(
+                &p.u,
+                &format!("no corrected point near arclength {sigma:.3e} while locating an event"),
+            )
         })
     }
 
@@ -523,9 +531,10 @@ where
             }
         }
         // never the last iterate in place of a located event
-        Err(self
-            .family
-            .stuck(&best, "the event's location did not converge in 100 Illinois steps"))
+        Err(self.family.stuck(
+            &best,
+            "the event's location did not converge in 100 Illinois steps",
+        ))
     }
 }
 
@@ -615,13 +624,14 @@ where
                 note(EventKind::Crossing, on, at);
             }
         }
-        if watch.displacement_fold != On::Ignore
-            && p.d_delta_bar.signum() != q.d_delta_bar.signum()
+        if watch.displacement_fold != On::Ignore && p.d_delta_bar.signum() != q.d_delta_bar.signum()
         {
             let at = if located(watch.displacement_fold) {
-                Some(engine.zero(p, &q, p.d_delta_bar, q.d_delta_bar, &|x: &Point<D>| {
-                    x.d_delta_bar
-                })?)
+                Some(
+                    engine.zero(p, &q, p.d_delta_bar, q.d_delta_bar, &|x: &Point<D>| {
+                        x.d_delta_bar
+                    })?,
+                )
             } else {
                 None
             };
@@ -666,4 +676,121 @@ where
         events,
         end: End::Budget,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    //! The engine on a family whose answers are known in closed form: the
+    //! unit circle x² + δ² = 1 (one equation, u = (x, δ)) with ā = x and
+    //! F̄ = x. Traced from (1, 0) towards smaller δ it passes the fold in δ
+    //! at (0, −1) and the minimum of F̄ at (−1, 0), where x also turns.
+
+    use super::*;
+    use nalgebra::{Matrix2, Vector2, U2};
+
+    struct Circle;
+
+    impl Family<U2> for Circle {
+        fn linearise(&self, u: &Vector2<f64>) -> Option<Linear<U2>> {
+            Some(Linear {
+                r: Vector2::new(u[0] * u[0] + u[1] * u[1] - 1.0, 0.0),
+                j: Matrix2::new(2.0 * u[0], 2.0 * u[1], 0.0, 0.0),
+                force: u[0],
+                force_grad: Vector2::new(1.0, 0.0),
+            })
+        }
+        fn converged(&self, _u: &Vector2<f64>, r: &Vector2<f64>) -> bool {
+            r[0].abs() < 1e-12
+        }
+        fn a_bar_gradient(&self) -> Vector2<f64> {
+            Vector2::new(1.0, 0.0)
+        }
+        fn delta_bar_gradient(&self) -> Vector2<f64> {
+            Vector2::new(0.0, 1.0)
+        }
+        fn stuck(&self, u: &Vector2<f64>, why: &str) -> Error {
+            Error::NoState(format!("circle at ({}, {}): {why}", u[0], u[1]))
+        }
+    }
+
+    #[test]
+    fn the_circle_folds_where_its_closed_form_says() {
+        let watch = Watch {
+            size_fold: On::Note,
+            displacement_fold: On::Locate,
+            force_minimum: On::Stop,
+            bifurcation: On::Ignore,
+            crossing: Some((Quantity::Delta, -0.5, On::Locate)),
+        };
+        let settings = Settings {
+            step: 0.05,
+            max_step: 0.2,
+            ..Settings::default()
+        };
+        let t = trace(
+            &Circle,
+            Vector2::new(1.0, 0.0),
+            &Vector2::new(0.0, -1.0),
+            settings,
+            watch,
+            |_| false,
+        )
+        .expect("traced");
+        assert_eq!(t.end, End::Event(EventKind::ForceMinimum));
+        // δ = −1/2 first, at x = √3/2
+        let c = t.located(EventKind::Crossing).expect("crossing located");
+        assert!(
+            (c[0] - 0.75f64.sqrt()).abs() < 1e-12 && (c[1] + 0.5).abs() < 1e-12,
+            "{c}"
+        );
+        // δ turns at (0, −1)
+        let d = t
+            .located(EventKind::DisplacementFold)
+            .expect("fold located");
+        assert!(d[0].abs() < 1e-9 && (d[1] + 1.0).abs() < 1e-12, "{d}");
+        // F̄ = x is least at (−1, 0), where x turns too
+        let f = t.located(EventKind::ForceMinimum).expect("minimum located");
+        assert!((f[0] + 1.0).abs() < 1e-12 && f[1].abs() < 1e-9, "{f}");
+        assert!(t.events.iter().any(|e| e.kind == EventKind::SizeFold));
+        let order: Vec<EventKind> = t.events.iter().map(|e| e.kind).collect();
+        let pos = |k| order.iter().position(|&e| e == k).expect("present");
+        assert!(pos(EventKind::Crossing) < pos(EventKind::DisplacementFold));
+        assert!(pos(EventKind::DisplacementFold) < pos(EventKind::ForceMinimum));
+        // every traced point is on the circle
+        for p in &t.points {
+            assert!((p.u.norm() - 1.0).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn a_corrector_that_always_fails_is_an_error_that_says_where() {
+        struct Nowhere;
+        impl Family<U2> for Nowhere {
+            fn linearise(&self, u: &Vector2<f64>) -> Option<Linear<U2>> {
+                Circle.linearise(u)
+            }
+            fn converged(&self, _u: &Vector2<f64>, _r: &Vector2<f64>) -> bool {
+                false
+            }
+            fn a_bar_gradient(&self) -> Vector2<f64> {
+                Circle.a_bar_gradient()
+            }
+            fn delta_bar_gradient(&self) -> Vector2<f64> {
+                Circle.delta_bar_gradient()
+            }
+            fn stuck(&self, u: &Vector2<f64>, why: &str) -> Error {
+                Circle.stuck(u, why)
+            }
+        }
+        let e = trace(
+            &Nowhere,
+            Vector2::new(1.0, 0.0),
+            &Vector2::new(0.0, -1.0),
+            Settings::default(),
+            Watch::default(),
+            |_| false,
+        )
+        .expect_err("no step is accepted");
+        assert!(e.to_string().contains("circle at (1, 0)"), "{e}");
+    }
 }

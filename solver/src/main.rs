@@ -5,7 +5,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
 use thinjkr::conformal::{self as family, Conformal};
 use thinjkr::curve::trace;
-use thinjkr::report::{AnyState, Document, ErrorBody};
+use thinjkr::report::{AnyFold, AnyState, Document, ErrorBody};
 use thinjkr::units::Cylinders;
 use thinjkr::{Contact, ModelId, PullOff, State};
 
@@ -33,14 +33,6 @@ enum ModelChoice {
     Approx(ModelId),
     Conformal(Conformal),
     Exact,
-}
-
-fn not_for_conformal(m: &Conformal, what: &str) -> thinjkr::Error {
-    thinjkr::Error::Unavailable {
-        model: "conformal:K",
-        what: format!("{what} for {}", m.name()),
-        why: "the conformal family is solved by solve, pull-off, zero-force and physical so far",
-    }
 }
 
 #[macro_use]
@@ -154,7 +146,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45 (conformal:K and exact give states, not curves: use solve).
+        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8); exact gives states, not curves (use exact solve).
         #[arg(long, default_value = "max", value_parser = parse_model)]
         model: ModelChoice,
         /// Number of points, 2 ..= 100000.
@@ -701,48 +693,7 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
             model,
             points,
             format,
-        }) => {
-            let model = match model {
-                ModelChoice::Exact => {
-                    return Err(thinjkr::Error::Unavailable {
-                        model: "exact",
-                        what: "curve command".into(),
-                        why: "use `thinjkr exact solve` at the loads wanted",
-                    })
-                }
-                ModelChoice::Conformal(m) => return Err(not_for_conformal(&m, "curve command")),
-                ModelChoice::Approx(m) => m,
-            };
-            let c = Contact::with_model(model, rho)?;
-            let curve = trace(&c, points, 20.0)?;
-            match format {
-                Format::Json => {
-                    let doc = Document::Curve {
-                        states: curve.states,
-                        folds: curve.folds,
-                    };
-                    outln!("{}", doc.to_json())
-                }
-                Format::Csv => {
-                    outln!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
-                    let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
-                    for st in &curve.states {
-                        outln!(
-                            "{},{},{},{},{},{},{},{},{}",
-                            st.model,
-                            st.delta_bar,
-                            st.force_bar,
-                            st.a_bar,
-                            st.s,
-                            st.bc_error,
-                            st.beyond_size_fold,
-                            flag(st.stability.stable_displacement),
-                            flag(st.stability.stable_load)
-                        );
-                    }
-                }
-            }
-        }
+        }) => curve_command(model, rho, points, format)?,
         Some(Command::Models { json: j }) => {
             let models = thinjkr::report::models();
             if j {
@@ -960,4 +911,115 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// One row of `curve --format csv`.
+struct CurveRow<'a> {
+    model: &'a str,
+    delta_bar: f64,
+    force_bar: f64,
+    a_bar: f64,
+    s: f64,
+    bc_error: f64,
+    beyond_size_fold: bool,
+    stable_displacement: Option<bool>,
+    stable_load: Option<bool>,
+}
+
+/// `thinjkr curve`: the branch from δ̄ = 20 past pull-off, as CSV or JSON.
+fn curve_command(
+    model: ModelChoice,
+    rho: f64,
+    points: usize,
+    format: Format,
+) -> thinjkr::Result<()> {
+    const DELTA_START: f64 = 20.0;
+    let (states, folds, end, rows): (Vec<AnyState>, Vec<AnyFold>, Option<String>, Vec<String>);
+    let row = |r: CurveRow<'_>| {
+        let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
+        format!(
+            "{},{},{},{},{},{},{},{},{}",
+            r.model,
+            r.delta_bar,
+            r.force_bar,
+            r.a_bar,
+            r.s,
+            r.bc_error,
+            r.beyond_size_fold,
+            flag(r.stable_displacement),
+            flag(r.stable_load)
+        )
+    };
+    match model {
+        ModelChoice::Exact => {
+            return Err(thinjkr::Error::Unavailable {
+                model: "exact",
+                what: "curve command".into(),
+                why: "use `thinjkr exact solve` at the loads wanted",
+            })
+        }
+        ModelChoice::Conformal(m) => {
+            let cv = m.curve(rho, points, DELTA_START)?;
+            rows = cv
+                .states
+                .iter()
+                .zip(&cv.beyond_size_fold)
+                .map(|(st, &beyond)| {
+                    row(CurveRow {
+                        model: &st.model,
+                        delta_bar: st.delta_bar,
+                        force_bar: st.force_bar,
+                        a_bar: st.a_bar,
+                        s: st.s,
+                        bc_error: st.bc_defect,
+                        beyond_size_fold: beyond,
+                        stable_displacement: Some(st.stable_displacement),
+                        stable_load: Some(st.stable_load),
+                    })
+                })
+                .collect();
+            states = cv.states.into_iter().map(AnyState::Conformal).collect();
+            folds = cv.folds.into_iter().map(AnyFold::from).collect();
+            end = Some(cv.end);
+        }
+        ModelChoice::Approx(m) => {
+            let c = Contact::with_model(m, rho)?;
+            let cv = trace(&c, points, DELTA_START)?;
+            rows = cv
+                .states
+                .iter()
+                .map(|st| {
+                    row(CurveRow {
+                        model: st.model.name(),
+                        delta_bar: st.delta_bar,
+                        force_bar: st.force_bar,
+                        a_bar: st.a_bar,
+                        s: st.s,
+                        bc_error: st.bc_error,
+                        beyond_size_fold: st.beyond_size_fold,
+                        stable_displacement: st.stability.stable_displacement,
+                        stable_load: st.stability.stable_load,
+                    })
+                })
+                .collect();
+            states = cv.states.into_iter().map(AnyState::Ellipse).collect();
+            folds = cv.folds.into_iter().map(AnyFold::from).collect();
+            end = None;
+        }
+    }
+    match format {
+        Format::Json => {
+            let doc = Document::Curve { states, folds, end };
+            outln!("{}", doc.to_json())
+        }
+        Format::Csv => {
+            outln!(
+                "model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load"
+            );
+            for r in rows {
+                outln!("{r}");
+            }
+        }
+    }
+    Ok(())
 }

@@ -14,7 +14,7 @@
 
 use crate::conformal::{ConformalState, Extremum};
 use crate::contact::{FoldBasis, State};
-use crate::curve::Fold;
+use crate::curve::{Fold, FoldKind};
 use crate::error::Error;
 use crate::exact::branch::Event;
 use crate::exact::ExactState;
@@ -33,6 +33,34 @@ pub enum AnyState {
     Conformal(ConformalState),
     /// The exact solution of (2)–(3).
     Exact(Box<ExactState>),
+}
+
+/// A fold of a curve, of any model.
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct AnyFold {
+    /// Which quantity turns.
+    pub kind: FoldKind,
+    /// The state there.
+    pub state: AnyState,
+}
+
+impl From<Fold> for AnyFold {
+    fn from(f: Fold) -> AnyFold {
+        AnyFold {
+            kind: f.kind,
+            state: AnyState::Ellipse(f.state),
+        }
+    }
+}
+
+impl From<crate::conformal::CurveFold> for AnyFold {
+    fn from(f: crate::conformal::CurveFold) -> AnyFold {
+        AnyFold {
+            kind: f.kind,
+            state: AnyState::Conformal(f.state),
+        }
+    }
 }
 
 /// What happens along a branch on the way to a state (tagged by `kind`).
@@ -212,9 +240,14 @@ pub enum Document {
     /// (`{"kind": "load", "state": {…}}`).
     Curve {
         /// The states along the branch.
-        states: Vec<State>,
+        states: Vec<AnyState>,
         /// The folds met.
-        folds: Vec<Fold>,
+        folds: Vec<AnyFold>,
+        /// Why the trace ended, where that is not the model's own end of
+        /// the branch (`conformal:K`: the map stops being one-to-one, or
+        /// the contact shrank away).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        end: Option<String>,
     },
     /// Several states (`solve --a`: every state of that contact size).
     States {

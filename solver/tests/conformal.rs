@@ -154,3 +154,50 @@ fn bad_input_is_a_typed_error() {
     assert!(Conformal::parse("conformal:x").unwrap().is_err());
     assert!(Conformal::parse("max").is_none());
 }
+
+/// The curve of a member holds its pull-off, found on the arm that carries
+/// it (at ρ = 0.8 for K = 8 another arm than the one from large contacts),
+/// and at ρ = 1 the circle's: F̄ = −3π/2 and the circle's δ̄(ā) = ā²/4 − 2/ā
+/// at every state ((25), independent of the family's code).
+#[test]
+fn the_curve_holds_the_pull_off_and_at_rho_one_the_circle() {
+    use thinjkr::curve::FoldKind;
+    let m = Conformal::new(8).unwrap();
+    let (po, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
+    let cv = m.curve(0.8, 60, 20.0).unwrap();
+    assert_eq!(cv.states.len(), 60);
+    assert!(
+        cv.arm.contains(&1),
+        "the pull-off lies on a second arm: {}",
+        cv.end
+    );
+    let loads: Vec<f64> = cv
+        .folds
+        .iter()
+        .filter(|f| f.kind == FoldKind::Load)
+        .map(|f| f.state.force_bar)
+        .collect();
+    let least = loads.iter().copied().fold(f64::INFINITY, f64::min);
+    assert!(
+        (least - po.force_bar).abs() < 1e-9,
+        "{least} vs {}",
+        po.force_bar
+    );
+    for st in &cv.states {
+        assert!(st.a_bar > 0.0 && st.force_bar.is_finite());
+    }
+
+    let cv = Conformal::new(4).unwrap().curve(1.0, 40, 20.0).unwrap();
+    assert!(cv.arm.iter().all(|&a| a == 0));
+    for st in &cv.states {
+        let a = st.a_bar;
+        assert!((st.delta_bar - (a * a / 4.0 - 2.0 / a)).abs() < 1e-9 * (1.0 + st.delta_bar.abs()));
+        assert!((st.s - 1.0).abs() < 1e-12);
+    }
+    let load = cv
+        .folds
+        .iter()
+        .find(|f| f.kind == FoldKind::Load)
+        .expect("a load fold");
+    assert!((load.state.force_bar + 1.5 * std::f64::consts::PI).abs() < 1e-10);
+}

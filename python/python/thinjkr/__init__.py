@@ -145,16 +145,35 @@ def pull_off(rho: float, *, model: str = "max", control: str = "load") -> State:
 
 class Curve:
     """A traced curve: numpy arrays along the branch (``a_bar``, ``b_bar``,
-    ``s``, ``delta_bar``, ``force_bar``, ``bc_error``, ``beyond_size_fold``)
-    and ``folds``, a list of (kind, State) with kind "displacement",
-    "load" or "contact_size"."""
+    ``s``, ``delta_bar``, ``force_bar``, ``bc_error``, ``beyond_size_fold``,
+    ``arm``) and ``folds``, a list of (kind, State) with kind
+    "displacement", "load" or "contact_size". ``bc_error`` is the model's
+    quantity (14) for the models of the ellipse and max |∂p̄/∂ν − 1| on the
+    contour for ``conformal:K``. ``arm`` is 0 along one branch; a
+    ``conformal:K`` curve for ρ < 1 may have a second arm (1), the one that
+    carries the load-controlled pull-off, and ``end`` says how each arm
+    ended (None for the models of the ellipse)."""
 
-    def __init__(self, states: List[State], folds: List[Tuple[str, State]]):
+    def __init__(
+        self,
+        states: List[State],
+        folds: List[Tuple[str, State]],
+        arm: Optional[List[int]] = None,
+        beyond_size_fold: Optional[List[bool]] = None,
+        end: Optional[str] = None,
+    ):
         self.states = states
         self.folds = folds
-        for k in ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"):
+        self.end = end
+        for k in ("a_bar", "b_bar", "s", "delta_bar", "force_bar"):
             setattr(self, k, _np.array([getattr(st, k) for st in states], dtype=float))
-        self.beyond_size_fold = _np.array([st.beyond_size_fold for st in states], dtype=bool)
+        self.bc_error = _np.array(
+            [st.bc_error if "bc_error" in st.keys() else st.bc_defect for st in states], dtype=float
+        )
+        if beyond_size_fold is None:
+            beyond_size_fold = [st.beyond_size_fold for st in states]
+        self.beyond_size_fold = _np.array(beyond_size_fold, dtype=bool)
+        self.arm = _np.array(arm if arm is not None else [0] * len(states), dtype=int)
 
     def __len__(self) -> int:
         return len(self.states)
@@ -164,13 +183,13 @@ class Curve:
 
 
 def curve(rho: float, *, model: str = "max", points: int = 200, delta_start: float = 20.0) -> Curve:
-    """The curve of a model of the ellipse at ``rho`` from δ̄ =
-    ``delta_start`` past pull-off and its folds, ``points`` states evenly
-    spaced in arclength (the paper's Figs. 6–8)."""
+    """The curve of a model of the ellipse or of ``conformal:K`` at ``rho``
+    from δ̄ = ``delta_start`` past pull-off and its folds, ``points`` states
+    evenly spaced in arclength (the paper's Figs. 6–8)."""
     d = _json.loads(_call(_thinjkr.curve, model, float(rho), int(points), float(delta_start)))
     states = [_state_from(s) for s in d["states"]]
     folds = [(f["kind"], _state_from(f["state"])) for f in d["folds"]]
-    return Curve(states, folds)
+    return Curve(states, folds, d.get("arm"), d.get("beyond_size_fold"), d.get("end"))
 
 
 _CYLINDER_KEYS = ("r1", "r2", "theta_deg", "h1", "h2", "g1", "g2", "work_of_adhesion")

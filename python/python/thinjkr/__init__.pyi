@@ -64,6 +64,8 @@ class Curve:
     force_bar: np.ndarray
     bc_error: np.ndarray
     beyond_size_fold: np.ndarray
+    arm: np.ndarray
+    end: Optional[str]
     def __len__(self) -> int: ...
 
 @overload

@@ -30,7 +30,7 @@ use crate::error::{check_range, short, Error, Result};
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-pub use trace::{Extremum, PullOffControl};
+pub use trace::{Curve, CurveFold, Extremum, PullOffControl};
 
 /// The generated tables of one member (`crate::generated::conformal::MEMBERS`).
 #[derive(Debug)]
@@ -574,6 +574,19 @@ impl Conformal {
         x = x.push(start.delta_bar);
         let (found, folds) = trace::to_extremum(self, &x, rho, control)?;
         Ok((self.state(&found, rho)?, folds))
+    }
+
+    /// The curve at `rho` from δ̄ = `delta_start` through the pull-off and
+    /// the folds of every mode ([`trace::curve`]), `points` states.
+    pub fn curve(&self, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
+        let rho = check_rho(rho)?;
+        check_range(
+            "points",
+            points as f64,
+            (2..=crate::curve::MAX_POINTS).contains(&points),
+            "2 ..= 100000",
+        )?;
+        trace::curve(self, rho, points, delta_start)
     }
 
     /// The state record at x, with its checks.

@@ -169,3 +169,279 @@ fn stuck(m: &Conformal, x: &DVector<f64>, rho: f64, why: &str) -> Error {
         b / a
     ))
 }
+
+/// A fold of a `conformal:K` curve.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct CurveFold {
+    /// Which quantity turns.
+    pub kind: crate::curve::FoldKind,
+    /// The state there (located by the engine; a fold in ā at the traced
+    /// point after it).
+    pub state: super::ConformalState,
+}
+
+/// A traced `conformal:K` curve.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Curve {
+    /// States in order along each arm, the arm of large contacts first.
+    pub states: Vec<super::ConformalState>,
+    /// The index of the arm of each state (0: from large contacts; 1: the
+    /// arm that carries the load-controlled pull-off, where that is
+    /// another arm).
+    pub arm: Vec<usize>,
+    /// Whether each state lies beyond the first fold in ā met from where
+    /// its arm was started (the contour grows undulated there).
+    pub beyond_size_fold: Vec<bool>,
+    /// The folds met on the way.
+    pub folds: Vec<CurveFold>,
+    /// How each arm ends, in words.
+    pub end: String,
+}
+
+/// The smallest ā a curve is traced to.
+const CURVE_A_MIN: f64 = 0.5;
+
+/// One arm: its points, whether each lies beyond the first fold in ā, the
+/// folds on it (as (kind, x)), and how it ends.
+struct Arm {
+    points: Vec<continuation::Point<Dyn>>,
+    beyond: Vec<bool>,
+    folds: Vec<(crate::curve::FoldKind, DVector<f64>)>,
+    end: String,
+}
+
+/// Trace one arm from `x0` along `towards` past its folds until ā <
+/// [`CURVE_A_MIN`] or above `a_max` or the first state whose map is not
+/// one-to-one (not returned: past its folds in ā the contour grows
+/// undulated until it is no contact).
+fn arm(
+    m: &Conformal,
+    rho: f64,
+    x0: DVector<f64>,
+    towards: &DVector<f64>,
+    settings: Settings,
+    a_max: f64,
+) -> Result<Arm> {
+    let n = x0.len();
+    let family = Branch { m, rho };
+    let watch = Watch {
+        size_fold: On::Note,
+        displacement_fold: On::Locate,
+        force_minimum: On::Locate,
+        bifurcation: On::Ignore,
+        crossing: None,
+    };
+    let mut broke = None;
+    let traced = continuation::trace(&Unchecked(&family), x0, towards, settings, watch, |p| {
+        if let Err(e) = m.univalence(&p.u.as_slice()[..n - 1]) {
+            broke = Some(e);
+            return true;
+        }
+        p.a_bar < CURVE_A_MIN || p.a_bar > a_max
+    })?;
+    let mut pts = traced.points;
+    let end = match (&broke, traced.end) {
+        (Some(e), _) => {
+            pts.pop();
+            format!("the map stops being one-to-one ({e})")
+        }
+        (None, End::Until) => {
+            let q = pts.last().expect("one point");
+            format!("it reaches a = {:.4}, the end of the traced range", q.a_bar)
+        }
+        (None, _) => {
+            let last = &pts.last().expect("one point").u;
+            return Err(stuck(m, last, rho, "the curve's step budget ended"));
+        }
+    };
+    let kept = pts.len();
+    let mut folds = Vec::new();
+    for e in &traced.events {
+        if e.between[1] >= kept {
+            continue;
+        }
+        let kind = match e.kind {
+            EventKind::SizeFold => crate::curve::FoldKind::ContactSize,
+            EventKind::DisplacementFold => crate::curve::FoldKind::Displacement,
+            EventKind::ForceMinimum => crate::curve::FoldKind::Load,
+            _ => continue,
+        };
+        let x = e.at.clone().unwrap_or_else(|| pts[e.between[1]].u.clone());
+        folds.push((kind, x));
+    }
+    let first_fold = traced
+        .events
+        .iter()
+        .find(|e| e.kind == EventKind::SizeFold)
+        .map(|e| e.between[1]);
+    let beyond = (0..kept)
+        .map(|k| first_fold.is_some_and(|f| k >= f))
+        .collect();
+    Ok(Arm {
+        points: pts,
+        beyond,
+        folds,
+        end,
+    })
+}
+
+/// The curve of one member at ρ: the arm from δ̄ = `delta_start` downwards
+/// and, where the load-controlled pull-off lies on another arm (each
+/// mode's imperfect bifurcation splits the family for ρ < 1), that arm,
+/// traced both ways from its state at ā = [`super::TRACE_START_A`]
+/// (continued in ρ from the circle); each arm past its folds until its
+/// contour is no longer one-to-one, or back above the contact it started
+/// from. `points` states in all, spaced evenly
+/// in arclength and shared among the arms by length.
+pub fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
+    let start = m.solve(rho, super::Control::Delta(delta_start))?;
+    let mut x0 = DVector::from_vec(start.coefficients.clone());
+    x0 = x0.push(start.delta_bar);
+    let n = x0.len();
+    let family = Branch { m, rho };
+    let mut down = DVector::zeros(n);
+    down[n - 1] = -1.0;
+    // at least four traced points per output point
+    let max_step = (0.25 * (start.a_bar + delta_start.abs()) / points as f64).clamp(1e-3, 0.1);
+    let settings = Settings {
+        step: max_step.min(0.02),
+        min_step: 1e-10,
+        max_step,
+        grow: 1.3,
+        fast_iterations: 3,
+        turn: 0.995,
+        corrector_iterations: 12,
+        step_tolerance: 1e-12,
+        max_steps: 20_000.max(50 * points),
+    };
+    // no arm is followed back above the contact it starts from
+    let a_max = start.a_bar;
+    let first = arm(m, rho, x0, &down, settings, a_max)?;
+    let mut folds = first.folds.clone();
+    let mut ends = vec![format!("the arm from large contacts: {}", first.end)];
+    let has_pull_off = folds
+        .iter()
+        .any(|(k, _)| *k == crate::curve::FoldKind::Load);
+    // the arm from large contacts passes ā = 2.6 on its near-elliptic
+    // stretch (before its first fold): it is the pull-off arm
+    let passes_seed = first
+        .points
+        .iter()
+        .zip(&first.beyond)
+        .any(|(p, &b)| !b && p.a_bar <= super::TRACE_START_A);
+    let mut arms = vec![(first.points, first.beyond)];
+    if !(has_pull_off && passes_seed) {
+        match m.solve(rho, super::Control::Size(super::TRACE_START_A)) {
+            Ok(seed) => {
+                let mut x = DVector::from_vec(seed.coefficients.clone());
+                x = x.push(seed.delta_bar);
+                let up = family.a_bar_gradient();
+                let upper = arm(m, rho, x.clone(), &up, settings, a_max)?;
+                let lower = arm(m, rho, x, &-up, settings, a_max)?;
+                let mut pts: Vec<_> = upper.points.into_iter().rev().collect();
+                let mut beyond: Vec<bool> = upper.beyond.into_iter().rev().collect();
+                // the seed is the first of the lower part
+                pts.pop();
+                beyond.pop();
+                pts.extend(lower.points);
+                beyond.extend(lower.beyond);
+                arms.push((pts, beyond));
+                folds.extend(upper.folds);
+                folds.extend(lower.folds);
+                ends.push(format!(
+                    "the pull-off arm through a = {}: upwards {}; downwards {}",
+                    super::TRACE_START_A,
+                    upper.end,
+                    lower.end
+                ));
+            }
+            Err(e) => ends.push(format!(
+                "no pull-off arm through a = {}: {e}",
+                super::TRACE_START_A
+            )),
+        }
+    }
+    // resample each arm evenly in arclength, the points shared by length
+    let lengths: Vec<Vec<f64>> = arms
+        .iter()
+        .map(|(pts, _)| {
+            let mut arc = vec![0.0];
+            for k in 1..pts.len() {
+                arc.push(arc[k - 1] + (&pts[k].u - &pts[k - 1].u).norm());
+            }
+            arc
+        })
+        .collect();
+    let total: f64 = lengths
+        .iter()
+        .map(|a| a.last().copied().unwrap_or(0.0))
+        .sum();
+    let mut states = Vec::with_capacity(points);
+    let mut arm_of = Vec::with_capacity(points);
+    let mut beyond_of = Vec::with_capacity(points);
+    let mut left = points;
+    for (i, ((pts, beyond), arc)) in arms.iter().zip(&lengths).enumerate() {
+        let len = arc.last().copied().unwrap_or(0.0);
+        let share = if i + 1 == arms.len() {
+            left
+        } else {
+            (((points as f64) * len / total.max(f64::MIN_POSITIVE)).round() as usize)
+                .clamp(2.min(left), left)
+        };
+        left -= share;
+        let mut j = 0;
+        for p in 0..share {
+            let target = if share > 1 {
+                len * p as f64 / (share - 1) as f64
+            } else {
+                0.0
+            };
+            while j + 1 < arc.len() && arc[j + 1] < target {
+                j += 1;
+            }
+            let k = j.min(pts.len() - 1);
+            states.push(m.state(&pts[k].u, rho)?);
+            arm_of.push(i);
+            beyond_of.push(beyond[k]);
+        }
+    }
+    let folds = folds
+        .into_iter()
+        .map(|(kind, x)| {
+            Ok(CurveFold {
+                kind,
+                state: m.state(&x, rho)?,
+            })
+        })
+        .collect::<Result<_>>()?;
+    Ok(Curve {
+        states,
+        arm: arm_of,
+        beyond_size_fold: beyond_of,
+        folds,
+        end: ends.join("; "),
+    })
+}
+
+/// The branch without the univalence check that ends a trace with an
+/// error: a curve ends where the map stops being one-to-one, as data.
+struct Unchecked<'a, 'b>(&'a Branch<'b>);
+
+impl Family<Dyn> for Unchecked<'_, '_> {
+    fn linearise(&self, x: &DVector<f64>) -> Option<Linear<Dyn>> {
+        self.0.linearise(x)
+    }
+    fn converged(&self, x: &DVector<f64>, r: &DVector<f64>) -> bool {
+        self.0.converged(x, r)
+    }
+    fn a_bar_gradient(&self) -> DVector<f64> {
+        self.0.a_bar_gradient()
+    }
+    fn delta_bar_gradient(&self) -> DVector<f64> {
+        self.0.delta_bar_gradient()
+    }
+    fn stuck(&self, x: &DVector<f64>, why: &str) -> Error {
+        self.0.stuck(x, why)
+    }
+}

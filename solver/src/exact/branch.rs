@@ -364,7 +364,11 @@ impl Exact {
             ExactControl::Force(v) => (Quantity::Force, v, On::Stop),
         });
         let watch = Watch {
-            size_fold: if control.is_some() { On::Stop } else { On::Note },
+            size_fold: if control.is_some() {
+                On::Stop
+            } else {
+                On::Note
+            },
             displacement_fold: On::Ignore,
             force_minimum: if stop_at_force_minimum {
                 On::Stop
@@ -374,9 +378,10 @@ impl Exact {
             bifurcation: On::Note,
             crossing,
         };
-        let trace = continuation::trace(self, self.unknowns(start), &towards, settings, watch, |p| {
-            p.a_bar < a_min || p.a_bar > a_max
-        })?;
+        let trace =
+            continuation::trace(self, self.unknowns(start), &towards, settings, watch, |p| {
+                p.a_bar < a_min || p.a_bar > a_max
+            })?;
         let mut points = Vec::with_capacity(trace.points.len());
         for (k, p) in trace.points.iter().enumerate() {
             let state = if k == 0 {
