@@ -569,11 +569,92 @@ impl Conformal {
         control: PullOffControl,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
         let rho = check_rho(rho)?;
+        let direct = self.pull_off_traced(rho, control);
+        if direct.is_ok() || rho >= 1.0 {
+            return direct;
+        }
+        // the arm through ā = 2.6 folds in ρ above `rho`: the pull-off
+        // itself is continued in ρ from where the direct route finds it
+        self.pull_off_continued(rho, control)
+            .map_err(|e| match direct {
+                Err(first) => Error::NoState(format!(
+                    "{first}; continued in rho from above: {}",
+                    e.to_string().trim_start_matches("no contact state: ")
+                )),
+                Ok(_) => e,
+            })
+    }
+
+    /// The pull-off traced from the state at ā = [`TRACE_START_A`]
+    /// continued in ρ from the circle.
+    fn pull_off_traced(
+        &self,
+        rho: f64,
+        control: PullOffControl,
+    ) -> Result<(ConformalState, Vec<Extremum>)> {
         let start = self.solve(rho, Control::Size(TRACE_START_A))?;
         let mut x = DVector::from_vec(start.coefficients.clone());
         x = x.push(start.delta_bar);
         let (found, folds) = trace::to_extremum(self, &x, rho, control)?;
         Ok((self.state(&found, rho)?, folds))
+    }
+
+    /// The pull-off continued in ρ: found by [`Conformal::pull_off_traced`]
+    /// at the largest ρ₀ = `rho` + 0.05 j (j = 1, 2, …) where that works,
+    /// then followed down to `rho` in steps of at most 0.02 (halved on
+    /// failure, down to 1e-4): at each step the state with the previous
+    /// pull-off's ā (or δ̄), by Newton from it, is traced to the nearby
+    /// extremum.
+    fn pull_off_continued(
+        &self,
+        rho: f64,
+        control: PullOffControl,
+    ) -> Result<(ConformalState, Vec<Extremum>)> {
+        let k = self.terms();
+        let (mut rho_now, mut x, mut folds) = (1..)
+            .map(|j| rho + 0.05 * j as f64)
+            .take_while(|r| *r < 1.0)
+            .find_map(|r| {
+                let (st, folds) = self.pull_off_traced(r, control).ok()?;
+                let mut x = DVector::from_vec(st.coefficients);
+                x = x.push(st.delta_bar);
+                Some((r, x, folds))
+            })
+            .ok_or_else(|| {
+                Error::NoState(format!(
+                    "{}: no pull-off between rho = {} and 1 to continue from",
+                    self.name(),
+                    short(rho)
+                ))
+            })?;
+        let mut step = 0.02f64;
+        while rho_now > rho {
+            let next = (rho_now - step).max(rho);
+            // a state near the last pull-off at the new ρ: at its ā, or
+            // at its δ̄ where ā is no parameter there (a fold in ā)
+            let a_bar: f64 = x.rows(0, k).sum();
+            let found = self
+                .newton(&x, next, Control::Size(a_bar))
+                .or_else(|_| self.newton(&x, next, Control::Delta(x[k])))
+                .and_then(|y| trace::to_nearby_extremum(self, &y, next, control, 0.3))
+                .ok()
+                .filter(|(y, _)| (y - &x).amax() < 0.2 * (1.0 + x.amax()));
+            match found {
+                Some((y, f)) => {
+                    (x, folds, rho_now) = (y, f, next);
+                    step = (step * 1.5).min(0.02);
+                }
+                None if step > 1e-4 => step *= 0.5,
+                None => {
+                    return Err(Error::NoState(format!(
+                        "{}: the pull-off continued in rho stops near rho = {:.4}",
+                        self.name(),
+                        rho_now
+                    )))
+                }
+            }
+        }
+        Ok((self.state(&x, rho)?, folds))
     }
 
     /// The curve at `rho` from δ̄ = `delta_start` through the pull-off and
@@ -681,4 +762,44 @@ struct Equations {
     j: DMatrix<f64>,
     force: f64,
     force_grad: DVector<f64>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Where the direct route works, the pull-off continued in ρ from
+    /// above lands on the same state: the continuation tracks the
+    /// extremum, not another one.
+    #[test]
+    fn the_pull_off_continued_in_rho_is_the_traced_one() {
+        for (k, rho) in [(4, 0.6), (8, 0.6), (8, 0.75)] {
+            let m = Conformal::new(k).unwrap();
+            for control in [PullOffControl::Load, PullOffControl::Displacement] {
+                let (a, _) = m.pull_off_traced(rho, control).unwrap();
+                let (b, _) = m.pull_off_continued(rho, control).unwrap();
+                assert!(
+                    (a.force_bar - b.force_bar).abs() < 1e-9 && (a.a_bar - b.a_bar).abs() < 1e-6,
+                    "K = {k}, rho = {rho}, {control:?}: {} at {} against {} at {}",
+                    a.force_bar,
+                    a.a_bar,
+                    b.force_bar,
+                    b.a_bar
+                );
+            }
+        }
+    }
+
+    /// Every member has a load-controlled pull-off down to ρ = 0.5, by the
+    /// direct route or continued in ρ.
+    #[test]
+    fn every_member_pulls_off_down_to_rho_one_half() {
+        for k in 1..=8 {
+            let (st, _) = Conformal::new(k)
+                .unwrap()
+                .pull_off(0.5, PullOffControl::Load)
+                .unwrap_or_else(|e| panic!("K = {k}: {e}"));
+            assert!(st.force_bar < 0.0 && st.a_bar > 1.0, "K = {k}: {st:?}");
+        }
+    }
 }

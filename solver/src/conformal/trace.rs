@@ -98,10 +98,42 @@ pub fn to_extremum(
     rho: f64,
     control: PullOffControl,
 ) -> Result<(DVector<f64>, Vec<Extremum>)> {
+    // towards smaller ā = Σ c_k
+    let towards = -Branch { m, rho }.a_bar_gradient();
+    extremum_along(m, x0, rho, control, &towards, f64::INFINITY)
+}
+
+/// Trace from `x0` near an extremum of F̄ (load) or δ̄ (displacement) to
+/// it: towards falling F̄ or δ̄, no farther than `reach` in ā.
+pub fn to_nearby_extremum(
+    m: &Conformal,
+    x0: &DVector<f64>,
+    rho: f64,
+    control: PullOffControl,
+    reach: f64,
+) -> Result<(DVector<f64>, Vec<Extremum>)> {
+    let family = Branch { m, rho };
+    let towards = match control {
+        PullOffControl::Load => -family
+            .linearise(x0)
+            .map(|l| l.force_grad)
+            .ok_or_else(|| stuck(m, x0, rho, "the equations are not defined at the start"))?,
+        PullOffControl::Displacement => -family.delta_bar_gradient(),
+    };
+    extremum_along(m, x0, rho, control, &towards, reach)
+}
+
+fn extremum_along(
+    m: &Conformal,
+    x0: &DVector<f64>,
+    rho: f64,
+    control: PullOffControl,
+    towards: &DVector<f64>,
+    reach: f64,
+) -> Result<(DVector<f64>, Vec<Extremum>)> {
     let n = x0.len();
     let family = Branch { m, rho };
-    // start towards smaller ā = Σ c_k
-    let towards = -family.a_bar_gradient();
+    let a0: f64 = x0.rows(0, n - 1).sum();
     let settings = Settings {
         step: 0.02,
         min_step: 1e-10,
@@ -124,8 +156,8 @@ pub fn to_extremum(
         bifurcation: On::Ignore,
         crossing: None,
     };
-    let trace = continuation::trace(&family, x0.clone(), &towards, settings, watch, |p| {
-        p.a_bar < 0.3
+    let trace = continuation::trace(&family, x0.clone(), towards, settings, watch, |p| {
+        p.a_bar < 0.3 || (p.a_bar - a0).abs() > reach
     })?;
     let folds = trace
         .events
