@@ -344,377 +344,39 @@ const BATCH_NONE_SOLVED: u8 = 4;
 /// Run a subcommand; the exit status when it succeeds (0, or a batch's
 /// partial status).
 fn run(cli: Cli) -> thinjkr::Result<u8> {
-    let mut status = 0u8;
     match cli.command {
-        None => {
-            let c = Contact::new(0.8)?;
-            outln!("thinjkr: the paper's example, rho = R2/R1 = 0.8 (dimensionless, Eq. (17)); derived forms of (18), (26), (27)");
-            show("pull-off (load control)        ", &c.pull_off_load()?.state)?;
-            show(
-                "pull-off (displacement control)",
-                &c.pull_off_displacement()?.state,
-            )?;
-            show("zero force                     ", &c.zero_force()?)?;
-            let e = Contact::with_model(ModelId::Energy, 0.8)?;
-            outln!("the same contact with the energy (Ritz) closure of the same ellipse (--model energy):");
-            show("pull-off (load control)        ", &e.pull_off_load()?.state)?;
-            show("zero force                     ", &e.zero_force()?)?;
-        }
+        None => example()?,
         Some(Command::Solve {
             rho,
             model,
             delta,
             force,
             a,
-            json: j,
-        }) => {
-            let model = match model {
-                ModelChoice::Exact => {
-                    let control = match (delta, force, a) {
-                        (Some(d), _, _) => thinjkr::exact::branch::ExactControl::Delta(d),
-                        (_, Some(f), _) => thinjkr::exact::branch::ExactControl::Force(f),
-                        (_, _, Some(_)) => return Err(thinjkr::Error::Unavailable {
-                            model: "exact",
-                            what: "contact-size control (--a)".into(),
-                            why: "the exact family is traced in arclength; give --delta or --force",
-                        }),
-                        _ => {
-                            return Err(thinjkr::Error::Usage(
-                                "give one of --delta, --force".into(),
-                            ))
-                        }
-                    };
-                    return exact_cli::state(
-                        rho,
-                        control,
-                        &exact_cli::Discretisation::default(),
-                        j,
-                    )
-                    .map(|()| 0);
-                }
-                ModelChoice::Conformal(m) => {
-                    let control = match (delta, force, a) {
-                        (Some(d), _, _) => family::Control::Delta(d),
-                        (_, Some(f), _) => family::Control::Force(f),
-                        (_, _, Some(a)) => family::Control::Size(a),
-                        _ => {
-                            return Err(thinjkr::Error::Usage(
-                                "give one of --delta, --force, --a".into(),
-                            ))
-                        }
-                    };
-                    return conformal_cli::solve(&m, rho, control, j).map(|()| 0);
-                }
-                ModelChoice::Approx(m) => m,
-            };
-            let c = Contact::with_model(model, rho)?;
-            match (delta, force, a) {
-                (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j)?,
-                (_, Some(f), _) => emit("state", &c.at_load(f)?, j)?,
-                (_, _, Some(a)) => {
-                    let states = c.at_contact_size(a)?;
-                    if states.is_empty() {
-                        return Err(thinjkr::Error::NoState(format!(
-                            "no state with a = {} at rho = {}",
-                            thinjkr::error::short(a),
-                            thinjkr::error::short(rho)
-                        )));
-                    }
-                    if j && states.len() == 1 {
-                        outln!("{}", state_doc(&states[0]));
-                    } else if j {
-                        let doc = Document::States {
-                            states: states.iter().map(|st| AnyState::Ellipse(*st)).collect(),
-                        };
-                        outln!("{}", doc.to_json());
-                    } else {
-                        for st in &states {
-                            show("state", st)?;
-                        }
-                    }
-                }
-                _ => {
-                    return Err(thinjkr::Error::Usage(
-                        "give one of --delta, --force, --a".into(),
-                    ))
-                }
-            }
-        }
+            json,
+        }) => solve_command(rho, model, delta, force, a, json)?,
         Some(Command::PullOff {
             rho,
             model,
             control,
-            json: j,
-        }) => {
-            let model = match model {
-                ModelChoice::Exact if control == Control::Load => {
-                    return exact_cli::pull_off(rho, &exact_cli::Discretisation::default(), j)
-                        .map(|()| 0)
-                }
-                ModelChoice::Exact => {
-                    return Err(thinjkr::Error::Unavailable {
-                        model: "exact",
-                        what: "pull-off under displacement control".into(),
-                        why: "only the load-controlled pull-off of the exact family is located",
-                    })
-                }
-                ModelChoice::Conformal(m) => {
-                    let control = match control {
-                        Control::Load => family::PullOffControl::Load,
-                        Control::Displacement => family::PullOffControl::Displacement,
-                    };
-                    return conformal_cli::pull_off(&m, rho, control, j).map(|()| 0);
-                }
-                ModelChoice::Approx(m) => m,
-            };
-            let c = Contact::with_model(model, rho)?;
-            let p = match control {
-                Control::Load => c.pull_off_load()?,
-                Control::Displacement => c.pull_off_displacement()?,
-            };
-            emit_pull_off(&p, j)?;
-        }
+            json,
+        }) => pull_off_command(rho, model, control, json)?,
         Some(Command::Exact { command }) => exact_cli::run(command)?,
-        Some(Command::Batch { model }) => {
-            use std::io::{BufRead, IsTerminal};
-            use thinjkr::batch::{
-                csv_row_values, decode_line, parse_line, solve_all, solve_all_conformal, Row,
-                CSV_HEADER,
-            };
-            if matches!(model, ModelChoice::Exact) {
-                return Err(thinjkr::Error::Unavailable {
-                    model: "exact",
-                    what: "batch".into(),
-                    why: "an exact state takes up to seconds: use `thinjkr exact solve` per state",
-                });
-            }
-            let stdin = std::io::stdin();
-            outln!("{CSV_HEADER}");
-            let bar = std::io::stderr().is_terminal().then(|| {
-                let b = indicatif::ProgressBar::new_spinner();
-                b.set_style(
-                    indicatif::ProgressStyle::with_template("{spinner} {pos} lines, {elapsed}")
-                        .expect("template"),
-                );
-                b
-            });
-            // raw lines: a line that is not UTF-8 is an error row of its own
-            let mut lines = stdin.lock().split(b'\n').enumerate();
-            let (mut failed, mut solved_any) = (0usize, false);
-            loop {
-                // a block of input lines, solved in parallel, written in order
-                let mut block = Vec::with_capacity(4096);
-                for (i, raw) in lines.by_ref() {
-                    let raw = raw.map_err(|e| {
-                        thinjkr::Error::Io(format!("reading line {} of the input: {e}", i + 1))
-                    })?;
-                    let parsed = match decode_line(i + 1, &raw) {
-                        Ok(line) => parse_line(i + 1, line),
-                        Err(e) => Some(Err(e)),
-                    };
-                    if let Some(parsed) = parsed {
-                        block.push((i + 1, parsed));
-                        if block.len() == 4096 {
-                            break;
-                        }
-                    }
-                }
-                if block.is_empty() {
-                    break;
-                }
-                let items: Vec<_> = block
-                    .iter()
-                    .filter_map(|(_, p)| p.as_ref().ok().copied())
-                    .collect();
-                let rows: Vec<thinjkr::Result<Row>> = match &model {
-                    ModelChoice::Approx(id) => solve_all(*id, &items)
-                        .iter()
-                        .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
-                        .collect(),
-                    ModelChoice::Conformal(m) => solve_all_conformal(m, &items)
-                        .iter()
-                        .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
-                        .collect(),
-                    ModelChoice::Exact => unreachable!("refused above"),
-                };
-                let mut solved = rows.into_iter();
-                for (n, parsed) in &block {
-                    let row = match parsed {
-                        Ok(item) => {
-                            let r = solved.next().expect("one result per item");
-                            match &r {
-                                Err(e) => {
-                                    eprintln!("thinjkr: line {n}: {e}");
-                                    failed += 1;
-                                }
-                                Ok(_) => solved_any = true,
-                            }
-                            csv_row_values(*n, Some(item), &r)
-                        }
-                        Err(e) => {
-                            eprintln!("thinjkr: {e}");
-                            failed += 1;
-                            csv_row_values(*n, None, &Err(e.clone()))
-                        }
-                    };
-                    outln!("{row}");
-                }
-                if let Some(b) = &bar {
-                    b.inc(block.len() as u64);
-                }
-            }
-            if let Some(b) = bar {
-                b.finish_and_clear();
-            }
-            if failed > 0 {
-                eprintln!("thinjkr: {failed} line(s) without a state (see the error column)");
-                status = if solved_any {
-                    BATCH_SOME_FAILED
-                } else {
-                    BATCH_NONE_SOLVED
-                };
-            }
-        }
+        Some(Command::Batch { model }) => return batch_command(model),
         Some(Command::Accuracy {
             out,
             reference,
             figures,
-        }) => {
-            // every output path is checked before the minutes of work
-            for p in [&out, &reference].into_iter().flatten() {
-                std::fs::OpenOptions::new()
-                    .append(true)
-                    .create(true)
-                    .open(p)
-                    .map_err(|e| {
-                        thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
-                    })?;
-            }
-            if let Some(dir) = &figures {
-                if !dir.is_dir() {
-                    return Err(thinjkr::Error::Io(format!(
-                        "{} is not a directory to draw the figures into",
-                        dir.display()
-                    )));
-                }
-            }
-            use rayon::prelude::*;
-            use thinjkr::exact::table::{
-                doubling, reference as reference_of, render, row, Quantity, RHOS,
-            };
-            let jobs: Vec<(f64, Quantity)> = RHOS
-                .iter()
-                .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (r, q)))
-                .collect();
-            let bar = indicatif::ProgressBar::new(jobs.len() as u64);
-            bar.set_style(
-                indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {elapsed}")
-                    .expect("template"),
-            );
-            let rows: Vec<_> = jobs
-                .par_iter()
-                .map(|&(r, q)| {
-                    let x = row(r, q);
-                    bar.inc(1);
-                    x
-                })
-                .collect();
-            bar.finish_and_clear();
-            let pull_offs: Vec<_> = rows
-                .iter()
-                .filter(|r| r.quantity == Quantity::PullOff)
-                .filter_map(|r| r.exact.as_ref().ok())
-                .collect();
-            let bar = indicatif::ProgressBar::new(pull_offs.len() as u64);
-            bar.set_style(
-                indicatif::ProgressStyle::with_template(
-                    "{bar:40} {pos}/{len} doublings, {elapsed}",
-                )
-                .expect("template"),
-            );
-            let doublings: Vec<_> = pull_offs
-                .par_iter()
-                .map(|st| {
-                    let d = doubling(st);
-                    bar.inc(1);
-                    d
-                })
-                .collect();
-            bar.finish_and_clear();
-            let text = render(&rows, &doublings);
-            let refdata = reference_of(&doublings);
-            if let Some(dir) = figures {
-                for (name, svg) in thinjkr::figures::exact_all(&refdata)? {
-                    let p = dir.join(name);
-                    std::fs::write(&p, svg).map_err(|e| {
-                        thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
-                    })?;
-                }
-            }
-            if let Some(p) = reference {
-                let json = serde_json::to_string_pretty(&refdata).expect("plain data serialises");
-                std::fs::write(&p, json + "\n").map_err(|e| {
-                    thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
-                })?;
-            }
-            match out {
-                Some(p) => std::fs::write(&p, text).map_err(|e| {
-                    thinjkr::Error::Io(format!("cannot write {}: {e}", p.display()))
-                })?,
-                None => out!("{text}"),
-            }
-        }
-        Some(Command::ZeroForce {
-            rho,
-            model: ModelChoice::Exact,
-            json: j,
-        }) => exact_cli::state(
-            rho,
-            thinjkr::exact::branch::ExactControl::Force(0.0),
-            &exact_cli::Discretisation::default(),
-            j,
-        )?,
-        Some(Command::ZeroForce {
-            rho,
-            model: ModelChoice::Conformal(m),
-            json: j,
-        }) => conformal_cli::zero_force(&m, rho, j)?,
-        Some(Command::ZeroForce {
-            rho,
-            model: ModelChoice::Approx(model),
-            json: j,
-        }) => emit(
-            "zero force",
-            &Contact::with_model(model, rho)?.zero_force()?,
-            j,
-        )?,
+        }) => accuracy_command(out, reference, figures)?,
+        Some(Command::ZeroForce { rho, model, json }) => zero_force_command(rho, model, json)?,
         Some(Command::Curve {
             rho,
             model,
             points,
             format,
         }) => curve_command(model, rho, points, format)?,
-        Some(Command::Models { json: j }) => {
-            let models = thinjkr::report::models();
-            if j {
-                outln!("{}", Document::Models { models }.to_json());
-            } else {
-                for m in models {
-                    outln!("{:<13} {}", m.name, m.description);
-                }
-            }
-        }
+        Some(Command::Models { json }) => models_command(json)?,
         Some(Command::Schema) => outln!("{}", thinjkr::report::schema().trim_end()),
-        Some(Command::Completions { shell }) => {
-            let mut buf = Vec::new();
-            clap_complete::generate(
-                shell,
-                &mut <Cli as clap::CommandFactory>::command(),
-                "thinjkr",
-                &mut buf,
-            );
-            out!("{}", String::from_utf8_lossy(&buf));
-        }
+        Some(Command::Completions { shell }) => completions_command(shell)?,
         Some(Command::Manpage) => out!("{}", manpage()),
         Some(Command::Figures { out }) => {
             for p in thinjkr::figures::write(&out)? {
@@ -736,43 +398,407 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
             model,
             json,
         }) => {
-            let cyl = match file {
-                Some(p) => {
-                    let text = std::fs::read_to_string(&p).map_err(|e| {
-                        thinjkr::Error::Io(format!("cannot read {}: {e}", p.display()))
-                    })?;
-                    toml::from_str::<Cylinders>(&text).map_err(|e| {
-                        thinjkr::Error::Usage(format!(
-                            "{} is not a valid contact file: {e}",
-                            p.display()
-                        ))
-                    })?
-                }
-                None => {
-                    let need = |n: &'static str, v: Option<f64>| {
-                        v.ok_or_else(|| {
-                            thinjkr::Error::Usage(format!(
-                                "physical needs --{} (or every input in a --file)",
-                                n.replace('_', "-")
-                            ))
-                        })
-                    };
-                    Cylinders {
-                        r1: need("r1", r1)?,
-                        r2: need("r2", r2)?,
-                        theta_deg: need("theta_deg", theta_deg)?,
-                        h1: need("h1", h1)?,
-                        h2: need("h2", h2)?,
-                        g1: need("g1", g1)?,
-                        g2: need("g2", g2)?,
-                        work_of_adhesion: need("work_of_adhesion", work_of_adhesion)?,
-                    }
-                }
-            };
-            physical(&cyl, model, force, delta, json)?;
+            let inputs = [r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion];
+            physical(&cylinders(file, inputs)?, model, force, delta, json)?
         }
     }
-    Ok(status)
+    Ok(0)
+}
+
+/// No subcommand: the paper's ρ = 0.8 example.
+fn example() -> thinjkr::Result<()> {
+    let c = Contact::new(0.8)?;
+    outln!("thinjkr: the paper's example, rho = R2/R1 = 0.8 (dimensionless, Eq. (17)); derived forms of (18), (26), (27)");
+    show("pull-off (load control)        ", &c.pull_off_load()?.state)?;
+    show(
+        "pull-off (displacement control)",
+        &c.pull_off_displacement()?.state,
+    )?;
+    show("zero force                     ", &c.zero_force()?)?;
+    let e = Contact::with_model(ModelId::Energy, 0.8)?;
+    outln!("the same contact with the energy (Ritz) closure of the same ellipse (--model energy):");
+    show("pull-off (load control)        ", &e.pull_off_load()?.state)?;
+    show("zero force                     ", &e.zero_force()?)?;
+    Ok(())
+}
+
+/// `thinjkr solve`: one state at given δ̄, F̄ or ā (every state of that ā).
+fn solve_command(
+    rho: f64,
+    model: ModelChoice,
+    delta: Option<f64>,
+    force: Option<f64>,
+    a: Option<f64>,
+    j: bool,
+) -> thinjkr::Result<()> {
+    let model = match model {
+        ModelChoice::Exact => {
+            let control = match (delta, force, a) {
+                (Some(d), _, _) => thinjkr::exact::branch::ExactControl::Delta(d),
+                (_, Some(f), _) => thinjkr::exact::branch::ExactControl::Force(f),
+                (_, _, Some(_)) => {
+                    return Err(thinjkr::Error::Unavailable {
+                        model: "exact",
+                        what: "contact-size control (--a)".into(),
+                        why: "the exact family is traced in arclength; give --delta or --force",
+                    })
+                }
+                _ => return Err(thinjkr::Error::Usage("give one of --delta, --force".into())),
+            };
+            return exact_cli::state(rho, control, &exact_cli::Discretisation::default(), j);
+        }
+        ModelChoice::Conformal(m) => {
+            let control = match (delta, force, a) {
+                (Some(d), _, _) => family::Control::Delta(d),
+                (_, Some(f), _) => family::Control::Force(f),
+                (_, _, Some(a)) => family::Control::Size(a),
+                _ => {
+                    return Err(thinjkr::Error::Usage(
+                        "give one of --delta, --force, --a".into(),
+                    ))
+                }
+            };
+            return conformal_cli::solve(&m, rho, control, j);
+        }
+        ModelChoice::Approx(m) => m,
+    };
+    let c = Contact::with_model(model, rho)?;
+    match (delta, force, a) {
+        (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j)?,
+        (_, Some(f), _) => emit("state", &c.at_load(f)?, j)?,
+        (_, _, Some(a)) => {
+            let states = c.at_contact_size(a)?;
+            if states.is_empty() {
+                return Err(thinjkr::Error::NoState(format!(
+                    "no state with a = {} at rho = {}",
+                    thinjkr::error::short(a),
+                    thinjkr::error::short(rho)
+                )));
+            }
+            if j && states.len() == 1 {
+                outln!("{}", state_doc(&states[0]));
+            } else if j {
+                let doc = Document::States {
+                    states: states.iter().map(|st| AnyState::Ellipse(*st)).collect(),
+                };
+                outln!("{}", doc.to_json());
+            } else {
+                for st in &states {
+                    show("state", st)?;
+                }
+            }
+        }
+        _ => {
+            return Err(thinjkr::Error::Usage(
+                "give one of --delta, --force, --a".into(),
+            ))
+        }
+    }
+    Ok(())
+}
+
+/// `thinjkr pull-off`: the end of the branch under load or displacement control.
+fn pull_off_command(
+    rho: f64,
+    model: ModelChoice,
+    control: Control,
+    j: bool,
+) -> thinjkr::Result<()> {
+    let model = match model {
+        ModelChoice::Exact if control == Control::Load => {
+            return exact_cli::pull_off(rho, &exact_cli::Discretisation::default(), j)
+        }
+        ModelChoice::Exact => {
+            return Err(thinjkr::Error::Unavailable {
+                model: "exact",
+                what: "pull-off under displacement control".into(),
+                why: "only the load-controlled pull-off of the exact family is located",
+            })
+        }
+        ModelChoice::Conformal(m) => {
+            let control = match control {
+                Control::Load => family::PullOffControl::Load,
+                Control::Displacement => family::PullOffControl::Displacement,
+            };
+            return conformal_cli::pull_off(&m, rho, control, j);
+        }
+        ModelChoice::Approx(m) => m,
+    };
+    let c = Contact::with_model(model, rho)?;
+    let p = match control {
+        Control::Load => c.pull_off_load()?,
+        Control::Displacement => c.pull_off_displacement()?,
+    };
+    emit_pull_off(&p, j)?;
+    Ok(())
+}
+
+/// `thinjkr batch`: CSV lines on stdin, one row each on stdout, in blocks
+/// solved on all cores; the exit status says whether every line solved.
+fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
+    use std::io::{BufRead, IsTerminal};
+    use thinjkr::batch::{
+        csv_row_values, decode_line, parse_line, solve_all, solve_all_conformal, Row, CSV_HEADER,
+    };
+    if matches!(model, ModelChoice::Exact) {
+        return Err(thinjkr::Error::Unavailable {
+            model: "exact",
+            what: "batch".into(),
+            why: "an exact state takes up to seconds: use `thinjkr exact solve` per state",
+        });
+    }
+    let stdin = std::io::stdin();
+    outln!("{CSV_HEADER}");
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} {pos} lines, {elapsed}")
+                .expect("template"),
+        );
+        b
+    });
+    // raw lines: a line that is not UTF-8 is an error row of its own
+    let mut lines = stdin.lock().split(b'\n').enumerate();
+    let (mut failed, mut solved_any) = (0usize, false);
+    loop {
+        // a block of input lines, solved in parallel, written in order
+        let mut block = Vec::with_capacity(4096);
+        for (i, raw) in lines.by_ref() {
+            let raw = raw.map_err(|e| {
+                thinjkr::Error::Io(format!("reading line {} of the input: {e}", i + 1))
+            })?;
+            let parsed = match decode_line(i + 1, &raw) {
+                Ok(line) => parse_line(i + 1, line),
+                Err(e) => Some(Err(e)),
+            };
+            if let Some(parsed) = parsed {
+                block.push((i + 1, parsed));
+                if block.len() == 4096 {
+                    break;
+                }
+            }
+        }
+        if block.is_empty() {
+            break;
+        }
+        let items: Vec<_> = block
+            .iter()
+            .filter_map(|(_, p)| p.as_ref().ok().copied())
+            .collect();
+        let rows: Vec<thinjkr::Result<Row>> = match &model {
+            ModelChoice::Approx(id) => solve_all(*id, &items)
+                .iter()
+                .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
+                .collect(),
+            ModelChoice::Conformal(m) => solve_all_conformal(m, &items)
+                .iter()
+                .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
+                .collect(),
+            ModelChoice::Exact => unreachable!("refused above"),
+        };
+        let mut solved = rows.into_iter();
+        for (n, parsed) in &block {
+            let row = match parsed {
+                Ok(item) => {
+                    let r = solved.next().expect("one result per item");
+                    match &r {
+                        Err(e) => {
+                            eprintln!("thinjkr: line {n}: {e}");
+                            failed += 1;
+                        }
+                        Ok(_) => solved_any = true,
+                    }
+                    csv_row_values(*n, Some(item), &r)
+                }
+                Err(e) => {
+                    eprintln!("thinjkr: {e}");
+                    failed += 1;
+                    csv_row_values(*n, None, &Err(e.clone()))
+                }
+            };
+            outln!("{row}");
+        }
+        if let Some(b) = &bar {
+            b.inc(block.len() as u64);
+        }
+    }
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    if failed == 0 {
+        return Ok(0);
+    }
+    eprintln!("thinjkr: {failed} line(s) without a state (see the error column)");
+    Ok(if solved_any {
+        BATCH_SOME_FAILED
+    } else {
+        BATCH_NONE_SOLVED
+    })
+}
+
+/// `thinjkr accuracy`: the table of docs/accuracy.md, on all cores.
+fn accuracy_command(
+    out: Option<std::path::PathBuf>,
+    reference: Option<std::path::PathBuf>,
+    figures: Option<std::path::PathBuf>,
+) -> thinjkr::Result<()> {
+    // every output path is checked before the minutes of work
+    for p in [&out, &reference].into_iter().flatten() {
+        std::fs::OpenOptions::new()
+            .append(true)
+            .create(true)
+            .open(p)
+            .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?;
+    }
+    if let Some(dir) = &figures {
+        if !dir.is_dir() {
+            return Err(thinjkr::Error::Io(format!(
+                "{} is not a directory to draw the figures into",
+                dir.display()
+            )));
+        }
+    }
+    use rayon::prelude::*;
+    use thinjkr::exact::table::{doubling, reference as reference_of, render, row, Quantity, RHOS};
+    let jobs: Vec<(f64, Quantity)> = RHOS
+        .iter()
+        .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (r, q)))
+        .collect();
+    let bar = indicatif::ProgressBar::new(jobs.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {elapsed}")
+            .expect("template"),
+    );
+    let rows: Vec<_> = jobs
+        .par_iter()
+        .map(|&(r, q)| {
+            let x = row(r, q);
+            bar.inc(1);
+            x
+        })
+        .collect();
+    bar.finish_and_clear();
+    let pull_offs: Vec<_> = rows
+        .iter()
+        .filter(|r| r.quantity == Quantity::PullOff)
+        .filter_map(|r| r.exact.as_ref().ok())
+        .collect();
+    let bar = indicatif::ProgressBar::new(pull_offs.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} doublings, {elapsed}")
+            .expect("template"),
+    );
+    let doublings: Vec<_> = pull_offs
+        .par_iter()
+        .map(|st| {
+            let d = doubling(st);
+            bar.inc(1);
+            d
+        })
+        .collect();
+    bar.finish_and_clear();
+    let text = render(&rows, &doublings);
+    let refdata = reference_of(&doublings);
+    if let Some(dir) = figures {
+        for (name, svg) in thinjkr::figures::exact_all(&refdata)? {
+            let p = dir.join(name);
+            std::fs::write(&p, svg)
+                .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?;
+        }
+    }
+    if let Some(p) = reference {
+        let json = serde_json::to_string_pretty(&refdata).expect("plain data serialises");
+        std::fs::write(&p, json + "\n")
+            .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?;
+    }
+    match out {
+        Some(p) => std::fs::write(&p, text)
+            .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?,
+        None => out!("{text}"),
+    }
+    Ok(())
+}
+
+/// `thinjkr zero-force`.
+fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> thinjkr::Result<()> {
+    match model {
+        ModelChoice::Exact => exact_cli::state(
+            rho,
+            thinjkr::exact::branch::ExactControl::Force(0.0),
+            &exact_cli::Discretisation::default(),
+            j,
+        ),
+        ModelChoice::Conformal(m) => conformal_cli::zero_force(&m, rho, j),
+        ModelChoice::Approx(model) => emit(
+            "zero force",
+            &Contact::with_model(model, rho)?.zero_force()?,
+            j,
+        ),
+    }
+}
+
+/// `thinjkr models`.
+fn models_command(j: bool) -> thinjkr::Result<()> {
+    let models = thinjkr::report::models();
+    if j {
+        outln!("{}", Document::Models { models }.to_json());
+    } else {
+        for m in models {
+            outln!("{:<13} {}", m.name, m.description);
+        }
+    }
+    Ok(())
+}
+
+/// `thinjkr completions`.
+fn completions_command(shell: clap_complete::Shell) -> thinjkr::Result<()> {
+    let mut buf = Vec::new();
+    clap_complete::generate(
+        shell,
+        &mut <Cli as clap::CommandFactory>::command(),
+        "thinjkr",
+        &mut buf,
+    );
+    out!("{}", String::from_utf8_lossy(&buf));
+    Ok(())
+}
+
+/// The contact of `physical`: from its TOML file, or every input given
+/// (r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion).
+fn cylinders(
+    file: Option<std::path::PathBuf>,
+    inputs: [Option<f64>; 8],
+) -> thinjkr::Result<Cylinders> {
+    let [r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion] = inputs;
+    Ok(match file {
+        Some(p) => {
+            let text = std::fs::read_to_string(&p)
+                .map_err(|e| thinjkr::Error::Io(format!("cannot read {}: {e}", p.display())))?;
+            toml::from_str::<Cylinders>(&text).map_err(|e| {
+                thinjkr::Error::Usage(format!("{} is not a valid contact file: {e}", p.display()))
+            })?
+        }
+        None => {
+            let need = |n: &'static str, v: Option<f64>| {
+                v.ok_or_else(|| {
+                    thinjkr::Error::Usage(format!(
+                        "physical needs --{} (or every input in a --file)",
+                        n.replace('_', "-")
+                    ))
+                })
+            };
+            Cylinders {
+                r1: need("r1", r1)?,
+                r2: need("r2", r2)?,
+                theta_deg: need("theta_deg", theta_deg)?,
+                h1: need("h1", h1)?,
+                h2: need("h2", h2)?,
+                g1: need("g1", g1)?,
+                g2: need("g2", g2)?,
+                work_of_adhesion: need("work_of_adhesion", work_of_adhesion)?,
+            }
+        }
+    })
 }
 
 /// The manual page, generated from the command-line definitions.
