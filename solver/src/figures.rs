@@ -96,6 +96,20 @@ fn branch(rho: f64, n: usize) -> Result<Vec<crate::contact::State>> {
 }
 
 fn figures() -> Result<Vec<Figure>> {
+    let rhos: Vec<f64> = grid(0.05, 1.0, 200).collect();
+    let mut out = Vec::new();
+    out.extend(fig2_bc_error()?);
+    out.extend(fig3_axisymmetric()?);
+    out.extend(fig4_zero_force_s(&rhos)?);
+    out.extend(fig5_zero_force(&rhos)?);
+    out.extend(figs6_to_8()?);
+    out.extend(fig9_comparison()?);
+    out.extend(crossing_angle()?);
+    Ok(out)
+}
+
+/// Fig. 2: quantity (14) against s.
+fn fig2_bc_error() -> Result<Vec<Figure>> {
     let mut out = Vec::new();
     // Fig. 2: quantity (14) against s.
     out.push(Figure {
@@ -113,6 +127,12 @@ fn figures() -> Result<Vec<Figure>> {
         shade: None,
         equal: false,
     });
+    Ok(out)
+}
+
+/// Fig. 3: the axisymmetric force–displacement curve.
+fn fig3_axisymmetric() -> Result<Vec<Figure>> {
+    let mut out = Vec::new();
     // Fig. 3: axisymmetric force–displacement.
     let (a_c, _, _) = limits::axisymmetric_critical(ModelId::Max)?;
     let stable: Vec<(f64, f64)> = grid(a_c, 3.4, 200)
@@ -144,8 +164,13 @@ fn figures() -> Result<Vec<Figure>> {
         shade: None,
         equal: false,
     });
+    Ok(out)
+}
+
+/// Fig. 4: s against ρ at zero force, and the non-adhesive (29).
+fn fig4_zero_force_s(rhos: &[f64]) -> Result<Vec<Figure>> {
+    let mut out = Vec::new();
     // Fig. 4: s against ρ at zero force, and the non-adhesive (29).
-    let rhos: Vec<f64> = grid(0.05, 1.0, 200).collect();
     out.push(Figure {
         file: "fig4_zero_force_s.svg",
         title: "Fig. 4: aspect ratio at zero force".into(),
@@ -175,6 +200,12 @@ fn figures() -> Result<Vec<Figure>> {
         shade: None,
         equal: false,
     });
+    Ok(out)
+}
+
+/// Fig. 5: δ̄ and ā at zero force against ρ.
+fn fig5_zero_force(rhos: &[f64]) -> Result<Vec<Figure>> {
+    let mut out = Vec::new();
     // Fig. 5: δ̄ and ā at zero force against ρ; printed (26), (27) lack η.
     let zf: Vec<(f64, f64, f64)> = rhos
         .iter()
@@ -223,6 +254,12 @@ fn figures() -> Result<Vec<Figure>> {
         shade: None,
         equal: false,
     });
+    Ok(out)
+}
+
+/// Figs. 6–8 at ρ = 0.8.
+fn figs6_to_8() -> Result<Vec<Figure>> {
+    let mut out = Vec::new();
     // Figs. 6–8 at ρ = 0.8.
     let b = branch(0.8, 600)?;
     let s_inf = limits::non_adhesive_s(ModelId::Max, 0.8)?;
@@ -323,7 +360,14 @@ fn figures() -> Result<Vec<Figure>> {
         shade: None,
         equal: false,
     });
+    Ok(out)
+}
+
+/// Fig. 9: comparison across ρ.
+fn fig9_comparison() -> Result<Vec<Figure>> {
+    let mut out = Vec::new();
     // Fig. 9: comparison across ρ.
+    let (a_c, _, _) = limits::axisymmetric_critical(ModelId::Max)?;
     let mut series = vec![solid(
         "ρ = 1 (exact)",
         grid(a_c * 0.7, 3.4, 200)
@@ -348,6 +392,12 @@ fn figures() -> Result<Vec<Figure>> {
         shade: None,
         equal: false,
     });
+    Ok(out)
+}
+
+/// Pull-off of equal cylinders against their crossing angle.
+fn crossing_angle() -> Result<Vec<Figure>> {
+    let mut out = Vec::new();
     // Crossing angle of two equal cylinders: ρ = tan²(θ/2).
     let thetas: Vec<f64> = grid(20.0, 90.0, 141).collect();
     let mut s_pts = Vec::new();
