@@ -1,12 +1,17 @@
-//! Damped Newton's method for a model's two residuals in x = (ā, s) (for
-//! the paper's model, (19)–(20)), with a backtracking line search on ‖r‖²
-//! that also keeps the iterate inside the domain ā > 0, 0 < s ≤ 1. Written
-//! once for every model.
+//! Damped Newton's method, written once for every model and any number of
+//! unknowns ([`damped`]: static nalgebra vectors where the size is known,
+//! dynamic otherwise), with a backtracking line search on the scaled
+//! residual norm that also keeps the iterate inside the model's domain.
+//! [`solve`] and [`solve_within`] are its form for the ellipse models'
+//! two residuals in x = (ā, s) (for the paper's model, (19)–(20)) on the
+//! domain ā > 0, 0 < s ≤ 1; `conformal:K` uses it in x = (c, δ̄).
 //!
-//! Owns: [`NewtonConfig`], [`solve`], [`solve_within`]. May use: `error`, nalgebra.
+//! Owns: [`NewtonConfig`], [`Problem`], [`Iterate`], [`damped`], [`solve`],
+//! [`solve_within`]. May use: `error`, nalgebra.
 
 use crate::error::{Error, Result};
-use nalgebra::{Matrix2, Vector2};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim, DimMin, Matrix2, OMatrix, OVector, Vector2};
 
 /// Controls of Newton's method.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -78,59 +83,117 @@ pub fn solve_within(
     context: &str,
     admissible: impl Fn(Vector2<f64>) -> bool,
 ) -> Result<Solution> {
-    let (mut a, mut s) = (start[0], start[1]);
-    let norm = |r: Vector2<f64>, a: f64| r.norm() / scale(a);
-    let (mut r, mut j) = f(Vector2::new(a, s));
-    let mut rn = norm(r, a);
+    let problem = Problem {
+        equations: |x: &Vector2<f64>| f(*x),
+        norm: |r: &Vector2<f64>, x: &Vector2<f64>| r.norm() / scale(x[0]),
+        // ā > 0, 0 < s ≤ 1 (s a hair above 1 is taken as 1)
+        domain: |x: &Vector2<f64>| {
+            (x[0] > 0.0 && x[1] > 0.0 && x[1] <= 1.0 + 1e-12)
+                .then(|| Vector2::new(x[0], x[1].min(1.0)))
+                .filter(|y| admissible(*y))
+        },
+        // ā relative, s absolute
+        small_step: |d: &Vector2<f64>, x: &Vector2<f64>| {
+            d[0].abs() <= config.step_tolerance * (1.0 + x[0].abs())
+                && d[1].abs() <= config.step_tolerance
+        },
+    };
+    match damped(&problem, start, config) {
+        Ok(c) => Ok(Solution {
+            a_bar: c.x[0],
+            s: c.x[1],
+            iterations: c.iterations,
+            residual: c.residual,
+        }),
+        Err(c) => Err(Error::NoConvergence {
+            iterations: config.max_iterations,
+            a_bar: c.x[0],
+            s: c.x[1],
+            residual: c.residual,
+            context: context.to_string(),
+        }),
+    }
+}
+
+/// A system for [`damped`]: its equations with their Jacobian, the norm
+/// that decides convergence, its domain and what a negligible step is.
+pub struct Problem<F, N, P, S> {
+    /// The residuals r(x) and ∂r/∂x, side by side.
+    pub equations: F,
+    /// The scaled residual norm at x.
+    pub norm: N,
+    /// x itself (or x moved onto the domain's edge) where it lies in the
+    /// domain; `None` outside (the line search then shortens the step).
+    pub domain: P,
+    /// Whether a Newton step d at x is negligible.
+    pub small_step: S,
+}
+
+/// Where [`damped`] ended: the last iterate, its scaled residual norm and
+/// the iterations used.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Iterate<D: Dim>
+where
+    DefaultAllocator: Allocator<D>,
+{
+    /// The iterate.
+    pub x: OVector<f64, D>,
+    /// Its scaled residual norm.
+    pub residual: f64,
+    /// Iterations used.
+    pub iterations: usize,
+}
+
+/// Damped Newton's method for r(x) = 0 in any number of unknowns (static
+/// or dynamic nalgebra vectors), written once for every model: a full
+/// step, halved until the scaled norm falls (Armijo, 1e-4) and the iterate
+/// stays in the domain. Converged when the norm is below the tolerance, or
+/// below `stall_residual` with a negligible step or an iteration that no
+/// longer halves it (the round-off floor of its evaluation). `Err` with the
+/// last iterate otherwise.
+pub fn damped<D, F, N, P, S>(
+    problem: &Problem<F, N, P, S>,
+    start: OVector<f64, D>,
+    config: &NewtonConfig,
+) -> std::result::Result<Iterate<D>, Iterate<D>>
+where
+    D: Dim + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+    F: Fn(&OVector<f64, D>) -> (OVector<f64, D>, OMatrix<f64, D, D>),
+    N: Fn(&OVector<f64, D>, &OVector<f64, D>) -> f64,
+    P: Fn(&OVector<f64, D>) -> Option<OVector<f64, D>>,
+    S: Fn(&OVector<f64, D>, &OVector<f64, D>) -> bool,
+{
+    let mut x = start;
+    let (mut r, mut j) = (problem.equations)(&x);
+    let mut rn = (problem.norm)(&r, &x);
+    let done = |x: OVector<f64, D>, residual: f64, iterations: usize| Iterate {
+        x,
+        residual,
+        iterations,
+    };
     for it in 0..config.max_iterations {
         if rn.is_finite() && rn < config.tolerance {
-            return Ok(Solution {
-                a_bar: a,
-                s,
-                iterations: it,
-                residual: rn,
-            });
+            return Ok(done(x, rn, it));
         }
-        let step = j.lu().solve(&(-r));
-        let Some(step) = step.filter(|d| d.iter().all(|x| x.is_finite())) else {
+        let step = j.clone().lu().solve(&(-&r));
+        let Some(step) = step.filter(|d| d.iter().all(|v| v.is_finite())) else {
             break;
         };
-        if step[0].abs() <= config.step_tolerance * (1.0 + a.abs())
-            && step[1].abs() <= config.step_tolerance
-            && rn < config.stall_residual
-        {
-            return Ok(Solution {
-                a_bar: a,
-                s,
-                iterations: it,
-                residual: rn,
-            });
+        if (problem.small_step)(&step, &x) && rn < config.stall_residual {
+            return Ok(done(x, rn, it));
         }
         let mut lambda = 1.0;
         let mut accepted = false;
         while lambda >= config.min_step {
-            let (an, sn) = (a + lambda * step[0], s + lambda * step[1]);
-            if an > 0.0
-                && sn > 0.0
-                && sn <= 1.0 + 1e-12
-                && admissible(Vector2::new(an, sn.min(1.0)))
-            {
-                let (rt, jt) = f(Vector2::new(an, sn.min(1.0)));
-                let rtn = norm(rt, an);
+            if let Some(xn) = (problem.domain)(&(&x + &step * lambda)) {
+                let (rt, jt) = (problem.equations)(&xn);
+                let rtn = (problem.norm)(&rt, &xn);
                 if rtn.is_finite() && rtn < rn * (1.0 - 1e-4 * lambda) {
                     if rn < config.stall_residual && rtn > 0.5 * rn {
-                        return Ok(Solution {
-                            a_bar: an,
-                            s: sn.min(1.0),
-                            iterations: it + 1,
-                            residual: rtn,
-                        });
+                        return Ok(done(xn, rtn, it + 1));
                     }
-                    a = an;
-                    s = sn.min(1.0);
-                    r = rt;
-                    j = jt;
-                    rn = rtn;
+                    (x, r, j, rn) = (xn, rt, jt, rtn);
                     accepted = true;
                     break;
                 }
@@ -139,29 +202,13 @@ pub fn solve_within(
         }
         if !accepted {
             if rn < config.tolerance * 1e3 {
-                return Ok(Solution {
-                    a_bar: a,
-                    s,
-                    iterations: it,
-                    residual: rn,
-                });
+                return Ok(done(x, rn, it));
             }
             break;
         }
     }
     if rn.is_finite() && rn < config.tolerance {
-        return Ok(Solution {
-            a_bar: a,
-            s,
-            iterations: config.max_iterations,
-            residual: rn,
-        });
+        return Ok(done(x, rn, config.max_iterations));
     }
-    Err(Error::NoConvergence {
-        iterations: config.max_iterations,
-        a_bar: a,
-        s,
-        residual: rn,
-        context: context.to_string(),
-    })
+    Err(done(x, rn, config.max_iterations))
 }

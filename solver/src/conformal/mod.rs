@@ -372,45 +372,40 @@ impl Conformal {
     }
 
     /// Damped Newton on (∇_c Π̄ = 0, control) in x = (c, δ̄) at ρ from
-    /// `start`; the step is halved while the residual grows.
+    /// `start` ([`crate::newton::damped`], the solver's one Newton).
     fn newton(&self, start: &DVector<f64>, rho: f64, control: Control) -> Result<DVector<f64>> {
-        let mut x = start.clone();
-        let mut norm = f64::INFINITY;
-        for _ in 0..40 {
-            let (r, j, scale) = self.controlled(&x, rho, control, true);
-            norm = r.norm() / scale;
-            if !norm.is_finite() {
-                break;
-            }
-            let Some(step) = j.expect("asked for").lu().solve(&r) else {
-                break;
-            };
-            if norm < 1e-13 || (norm < 1e-9 && step.norm() < 1e-13 * (1.0 + x.norm())) {
-                return Ok(x);
-            }
-            let mut t = 1.0;
-            while t >= 1e-3 {
-                let trial = &x - &step * t;
-                let (rt, _, st) = self.controlled(&trial, rho, control, false);
-                let nt = rt.norm() / st;
-                if nt.is_finite() && nt < norm {
-                    break;
+        let config = crate::newton::NewtonConfig {
+            tolerance: 1e-13,
+            max_iterations: 40,
+            min_step: 1e-3,
+            step_tolerance: 1e-13,
+            stall_residual: 1e-9,
+        };
+        let problem = crate::newton::Problem {
+            equations: |x: &DVector<f64>| {
+                let (r, j, _) = self.controlled(x, rho, control, true);
+                (r, j.expect("asked for"))
+            },
+            norm: |r: &DVector<f64>, x: &DVector<f64>| {
+                r.norm() / (1.0 + x.rows(0, self.terms()).amax().powi(7))
+            },
+            domain: |x: &DVector<f64>| Some(x.clone()),
+            small_step: |d: &DVector<f64>, x: &DVector<f64>| {
+                d.norm() < config.step_tolerance * (1.0 + x.norm())
+            },
+        };
+        crate::newton::damped(&problem, start.clone(), &config)
+            .map(|it| it.x)
+            .map_err(|it| {
+                let (a, b) = self.semi_axes(&it.x.as_slice()[..self.terms()]);
+                Error::NoConvergence {
+                    iterations: it.iterations,
+                    a_bar: a,
+                    s: b / a,
+                    residual: it.residual,
+                    context: format!("{} at rho = {}", self.name(), short(rho)),
                 }
-                t *= 0.5;
-            }
-            if t < 1e-3 {
-                break;
-            }
-            x -= &step * t;
-        }
-        let (a, b) = self.semi_axes(&x.as_slice()[..self.terms()]);
-        Err(Error::NoConvergence {
-            iterations: 40,
-            a_bar: a,
-            s: b / a,
-            residual: norm,
-            context: format!("{} at rho = {}", self.name(), short(rho)),
-        })
+            })
     }
 
     /// The circle's state at ρ = 1 under `control`: c = (ā, 0, …, 0) with
