@@ -105,7 +105,71 @@ fn figures() -> Result<Vec<Figure>> {
     out.extend(figs6_to_8()?);
     out.extend(fig9_comparison()?);
     out.extend(crossing_angle()?);
+    out.extend(conformal_arms()?);
     Ok(out)
+}
+
+/// `conformal:K` at ρ = 0.8: F̄ against ā on each arm of its curve (the
+/// arm from large contacts and the arm that carries the pull-off), solid
+/// up to an arm's first fold in ā and dashed beyond (the contour grows
+/// undulated there), beside the paper's model.
+fn conformal_arms() -> Result<Vec<Figure>> {
+    let (lo, hi) = (2.2, 3.6);
+    let inside = |a: f64, f: f64| (lo..=hi).contains(&a) && (-5.0..=25.0).contains(&f);
+    let b = branch(0.8, 600)?;
+    let mut series = vec![dashed(
+        "max (the paper's model)",
+        b.iter()
+            .filter(|st| inside(st.a_bar, st.force_bar))
+            .map(|st| (st.a_bar, st.force_bar))
+            .collect(),
+        GREY,
+    )];
+    for (k, color) in [(2, GREEN), (4, ORANGE), (8, BLUE)] {
+        let m = crate::conformal::Conformal::new(k)?;
+        let cv = m.curve(0.8, 800, 20.0)?;
+        // contiguous pieces of one arm on one side of its first fold
+        let mut label = m.name();
+        let mut piece: Vec<(f64, f64)> = Vec::new();
+        let mut key = (usize::MAX, false);
+        let flush = |piece: &mut Vec<(f64, f64)>,
+                     beyond: bool,
+                     label: &mut String,
+                     series: &mut Vec<Series>| {
+            if piece.len() > 1 {
+                let pts = std::mem::take(piece);
+                let l = std::mem::take(label);
+                series.push(if beyond {
+                    dashed(&l, pts, color)
+                } else {
+                    solid(&l, pts, color)
+                });
+            }
+            piece.clear();
+        };
+        for (i, st) in cv.states.iter().enumerate() {
+            let here = (cv.arm[i], cv.beyond_size_fold[i]);
+            if here != key {
+                flush(&mut piece, key.1, &mut label, &mut series);
+                key = here;
+            }
+            if inside(st.a_bar, st.force_bar) {
+                piece.push((st.a_bar, st.force_bar));
+            } else {
+                flush(&mut piece, key.1, &mut label, &mut series);
+            }
+        }
+        flush(&mut piece, key.1, &mut label, &mut series);
+    }
+    Ok(vec![Figure {
+        file: "conformal_arms.svg",
+        title: "conformal:K at ρ = 0.8: force against contact size on each arm".into(),
+        x_label: "semi-axis ā",
+        y_label: "force F̄",
+        series,
+        shade: None,
+        equal: false,
+    }])
 }
 
 /// Fig. 2: quantity (14) against s.
@@ -498,22 +562,21 @@ fn render(fig: &Figure) -> Result<String> {
         for s in &fig.series {
             let color = s.color;
             let pts: Vec<(f64, f64)> = s.points.iter().filter(finite).copied().collect();
-            if s.dashed {
+            let drawn = if s.dashed {
                 chart
                     .draw_series(DashedLineSeries::new(pts, 6, 4, color.stroke_width(2)))
                     .map_err(|e| err(&e))?
-                    .label(&s.label)
-                    .legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-                    });
             } else {
                 chart
                     .draw_series(LineSeries::new(pts, color.stroke_width(2)))
                     .map_err(|e| err(&e))?
-                    .label(&s.label)
-                    .legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-                    });
+            };
+            // a series without a label (a further piece of a labelled one)
+            // stays out of the legend
+            if !s.label.is_empty() {
+                drawn.label(&s.label).legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+                });
             }
         }
         chart
