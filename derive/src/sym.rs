@@ -325,6 +325,29 @@ pub fn factor_list(e: &Atom) -> Vec<Atom> {
     }
 }
 
+/// d ln e / d`x` for `e` a product of powers: Σ p f′/f over its factors
+/// f^p (numbers dropped), in rational normal form.
+pub fn log_derivative(e: &Atom, x: &str) -> Atom {
+    let mut sum = Atom::num(0);
+    let mut add = |f: AtomView<'_>| match f {
+        AtomView::Num(_) => {}
+        AtomView::Pow(p) => {
+            let (b, q) = p.get_base_exp();
+            let (b, q) = (b.to_owned(), q.to_owned());
+            sum = &sum + &(&q * &diff(&b, x) / &b);
+        }
+        other => {
+            let b = other.to_owned();
+            sum = &sum + &(diff(&b, x) / &b);
+        }
+    };
+    match e.as_view() {
+        AtomView::Mul(m) => m.iter().for_each(&mut add),
+        v => add(v),
+    }
+    simplify(&sum)
+}
+
 /// Replace every radical `base^(p/q)` (q > 1) by `rk^p` with a fresh symbol
 /// `rk` standing for `base^(1/q)`, so that polynomial algorithms (factoring)
 /// see a plain polynomial. Returns the frozen expression and the rules that
@@ -586,8 +609,9 @@ pub fn compact(e: &Atom) -> Atom {
 }
 
 /// `e` factored over the integers with its radicals frozen, then thawed and
-/// normalised.
-fn factored(e: &Atom) -> Atom {
+/// normalised (equal bases merged: `(1 + 2s + 3s² + 2s³ + s⁴)/(1 + s + s²)^(1/2)`
+/// becomes `(1 + s + s²)^(3/2)`).
+pub fn factored(e: &Atom) -> Atom {
     let (frozen, table) = freeze_radicals(e);
     normalize_radicals(&thaw(&frozen.factor(), &table))
 }

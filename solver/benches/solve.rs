@@ -1,10 +1,16 @@
 //! criterion benchmarks of the solver at ρ = 0.8: one warm-started
 //! displacement-controlled solve (Newton on the generated residuals from a
 //! nearby state), one cold solve (bracketing along the branch, then Newton),
-//! pull-off, zero force, and a curve of 1 000 points.
+//! pull-off, zero force, and a curve of 1 000 points; and, side by side in
+//! one group, the warm sweep of the peer comparison (20 000 solves, δ̄ from
+//! 6 to 0.5, each from the previous) with the generated residuals through
+//! `&dyn Model` and with the hand-written ones.
+
+#[path = "peer/handwritten.rs"]
+mod handwritten;
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use nalgebra::Vector2;
+use nalgebra::{Matrix2, Vector2};
 use thinjkr::curve::trace;
 use thinjkr::newton::{solve, NewtonConfig};
 use thinjkr::{Contact, ModelId};
@@ -41,5 +47,51 @@ fn benches(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(solver_benches, benches);
+/// 20 000 warm-started solves at ρ = 0.8, δ̄ from 6 down to 0.5.
+fn sweep(
+    f: impl Fn(Vector2<f64>, f64) -> (Vector2<f64>, Matrix2<f64>),
+    start: Vector2<f64>,
+) -> Vector2<f64> {
+    let cfg = NewtonConfig::default();
+    let mut x = start;
+    for k in 0..20_000 {
+        let delta = 6.0 - 5.5 * k as f64 / 19_999.0;
+        let sol = solve(|v| f(v, delta), |a| 1.0 + a * a * a, x, &cfg, "sweep").unwrap();
+        x = Vector2::new(sol.a_bar, sol.s);
+    }
+    x
+}
+
+fn warm_sweep(c: &mut Criterion) {
+    let start = Contact::new(0.8).unwrap().at_displacement(6.0).unwrap();
+    let x0 = Vector2::new(start.a_bar, start.s);
+    let model = ModelId::Max.model();
+    let mut g = c.benchmark_group("warm sweep, 20000 solves");
+    g.sample_size(30);
+    g.bench_function("generated, &dyn Model", |b| {
+        b.iter(|| {
+            sweep(
+                |v, d| model.residuals_and_jacobian(v, 0.8, d),
+                black_box(x0),
+            )
+        })
+    });
+    g.bench_function("hand-written", |b| {
+        b.iter(|| {
+            sweep(
+                |v, d| {
+                    let (r, j) = handwritten::residuals_and_jacobian(v[0], v[1], 0.8, d);
+                    (
+                        Vector2::new(r[0], r[1]),
+                        Matrix2::new(j[0][0], j[0][1], j[1][0], j[1][1]),
+                    )
+                },
+                black_box(x0),
+            )
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(solver_benches, benches, warm_sweep);
 criterion_main!(solver_benches);

@@ -1,8 +1,8 @@
 //! The sweep of the side-by-side comparison (solver/benches/peer/compare.py):
 //! 20 000 warm-started displacement-controlled solves at ρ = 0.8, δ̄ from 6
 //! down to 0.5, each continued from the previous solution, with either the
-//! generated residuals (`generated`) or the hand-written ones
-//! (`handwritten`). Prints the median wall time of `repeats` sweeps and
+//! generated residuals through `&dyn Model` (`generated`), through the
+//! static model type (`static`), or the hand-written ones (`handwritten`). Prints the median wall time of `repeats` sweeps and
 //! writes the solutions of the last sweep.
 //!
 //! With `cold`: 10 000 cold solves at pseudo-random (ρ, δ̄) (ρ in
@@ -15,7 +15,7 @@
 //! uses (ā from the axisymmetric (25)₁, s from (30)): the same algorithm as
 //! fsolve there, without the bracketing that makes a cold solve safe.
 //!
-//! usage: peer_sweep generated|handwritten|cold|cold-newton OUT_FILE [repeats]
+//! usage: peer_sweep generated|static|handwritten|cold|cold-newton OUT_FILE [repeats]
 
 #[path = "../benches/peer/handwritten.rs"]
 mod handwritten;
@@ -23,29 +23,26 @@ mod handwritten;
 use nalgebra::{Matrix2, Vector2};
 use std::io::Write;
 use std::time::Instant;
+use thinjkr::generated::max::Max;
+use thinjkr::model::Model;
 use thinjkr::newton::{solve, NewtonConfig};
 use thinjkr::{Contact, ModelId};
-
-/// Residuals and Jacobian of (19)–(20) at (ā, s, ρ, δ̄).
-type Residuals = fn(f64, f64, f64, f64) -> ([f64; 2], [[f64; 2]; 2]);
 
 const N: usize = 20_000;
 const RHO: f64 = 0.8;
 
-fn sweep(f: Residuals, start: (f64, f64), out: &mut Vec<(f64, f64, f64)>) {
+fn sweep(
+    f: impl Fn(Vector2<f64>, f64) -> (Vector2<f64>, Matrix2<f64>),
+    start: (f64, f64),
+    out: &mut Vec<(f64, f64, f64)>,
+) {
     out.clear();
     let cfg = NewtonConfig::default();
     let mut x = start;
     for k in 0..N {
         let delta = 6.0 - 5.5 * k as f64 / (N - 1) as f64;
         let sol = solve(
-            |v: Vector2<f64>| {
-                let (r, j) = f(v[0], v[1], RHO, delta);
-                (
-                    Vector2::new(r[0], r[1]),
-                    Matrix2::new(j[0][0], j[0][1], j[1][0], j[1][1]),
-                )
-            },
+            |v: Vector2<f64>| f(v, delta),
             |a| 1.0 + a * a * a,
             Vector2::new(x.0, x.1),
             &cfg,
@@ -57,14 +54,12 @@ fn sweep(f: Residuals, start: (f64, f64), out: &mut Vec<(f64, f64, f64)>) {
     }
 }
 
-/// The generated residuals of the paper's model, through the model interface.
-fn generated(a: f64, s: f64, rho: f64, delta: f64) -> ([f64; 2], [[f64; 2]; 2]) {
-    let (r, j) = ModelId::Max
-        .model()
-        .residuals_and_jacobian(Vector2::new(a, s), rho, delta);
+/// The hand-written residuals in the model interface's types.
+fn handwritten_nalgebra(v: Vector2<f64>, delta: f64) -> (Vector2<f64>, Matrix2<f64>) {
+    let (r, j) = handwritten::residuals_and_jacobian(v[0], v[1], RHO, delta);
     (
-        [r[0], r[1]],
-        [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]],
+        Vector2::new(r[0], r[1]),
+        Matrix2::new(j[0][0], j[0][1], j[1][0], j[1][1]),
     )
 }
 
@@ -160,17 +155,25 @@ fn main() {
         "cold-newton" => return cold_newton(&path, repeats),
         _ => {}
     }
-    let f: Residuals = match which {
-        "generated" => generated,
-        "handwritten" => handwritten::residuals_and_jacobian,
-        other => panic!("unknown variant {other}"),
-    };
     let start = Contact::new(RHO).unwrap().at_displacement(6.0).unwrap();
     let mut out = Vec::with_capacity(N);
     let mut times = Vec::new();
+    let dynamic: &dyn Model = ModelId::Max.model();
     for _ in 0..repeats {
         let t = Instant::now();
-        sweep(f, (start.a_bar, start.s), &mut out);
+        let x0 = (start.a_bar, start.s);
+        match which {
+            // the model as the solver holds it, `&dyn Model`
+            "generated" => sweep(
+                |v, d| dynamic.residuals_and_jacobian(v, RHO, d),
+                x0,
+                &mut out,
+            ),
+            // the static model type (`thinjkr::generated::max::Max`)
+            "static" => sweep(|v, d| Max.residuals_and_jacobian(v, RHO, d), x0, &mut out),
+            "handwritten" => sweep(handwritten_nalgebra, x0, &mut out),
+            other => panic!("unknown variant {other}"),
+        }
         times.push(t.elapsed().as_secs_f64());
     }
     times.sort_by(f64::total_cmp);

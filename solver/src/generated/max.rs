@@ -7,31 +7,18 @@
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn eta(s: f64) -> f64 {
-    let t0 = 1.7320508075688772;
-    let t1 = s.powi(2);
-    let t2 = (1.0 + s);
-    let t3 = (1.0 + s + t1);
-    (0.2222222222222222
-        * (t0 + (2.0 * t0 * s) + (3.0 * t0 * t1) + (2.0 * t0 * s.powi(3))
-            + (t0 * s.powi(4))) / ((s * t2 * t3.sqrt())))
+    let t0 = (1.0 + s);
+    (0.2222222222222222 * 1.7320508075688772
+        * ((1.0 + s + s.powi(2)).sqrt() * (1.0 + s + s.powi(2))) / ((s * t0)))
 }
 /// dη/ds, derivative of Eq. (16).
 #[inline]
 #[allow(clippy::all, unused_parens, unused_variables)]
 pub fn eta_s(s: f64) -> f64 {
-    let t0 = 1.7320508075688772;
-    let t1 = s.powi(2);
-    let t2 = (1.0 + s + t1);
-    let t3 = s.powi(3);
-    let t4 = s.powi(4);
-    let t5 = s.powi(5);
-    let t6 = (1.0 + s);
-    (-0.1111111111111111
-        * ((t0 * s) + (4.0 * t0 * s * t2) + (2.0 * t0 * t2) + (5.0 * t0 * t1)
-            - (2.0 * t0 * t1 * t2) + (11.0 * t0 * t3) - (8.0 * t0 * t3 * t2)
-            + (15.0 * t0 * t4) - (10.0 * t0 * t4 * t2) + (13.0 * t0 * t5)
-            - (4.0 * t0 * t5 * t2) + (7.0 * t0 * s.powi(6)) + (2.0 * t0 * s.powi(7)))
-        / ((t1 * t6.powi(2) * (t2.sqrt() * t2))))
+    let t0 = s.powi(2);
+    let t1 = (1.0 + s);
+    (0.1111111111111111 * 1.7320508075688772 * (1.0 + s + t0).sqrt()
+        * (-2.0 - (3.0 * s) + (3.0 * t0) + (2.0 * s.powi(3))) / ((t0 * t1.powi(2))))
 }
 /// `[η, dη/ds]` of Eq. (16), side by side (shared subexpressions computed once).
 #[inline]
@@ -39,21 +26,12 @@ pub fn eta_s(s: f64) -> f64 {
 pub fn eta_and_eta_s(s: f64) -> [f64; 2] {
     let t0 = 1.7320508075688772;
     let t1 = s.powi(2);
-    let t2 = s.powi(3);
-    let t3 = s.powi(4);
-    let t4 = (1.0 + s);
-    let t5 = (1.0 + s + t1);
-    let t6 = s.powi(5);
+    let t2 = (1.0 + s + t1);
+    let t3 = (1.0 + s);
     [
-        (0.2222222222222222
-            * (t0 + (2.0 * t0 * s) + (3.0 * t0 * t1) + (2.0 * t0 * t2) + (t0 * t3))
-            / ((s * t4 * t5.sqrt()))),
-        (-0.1111111111111111
-            * ((t0 * s) + (4.0 * t0 * s * t5) + (2.0 * t0 * t5) + (5.0 * t0 * t1)
-                - (2.0 * t0 * t1 * t5) + (11.0 * t0 * t2) - (8.0 * t0 * t2 * t5)
-                + (15.0 * t0 * t3) - (10.0 * t0 * t3 * t5) + (13.0 * t0 * t6)
-                - (4.0 * t0 * t6 * t5) + (7.0 * t0 * s.powi(6)) + (2.0 * t0 * s.powi(7)))
-            / ((t1 * t4.powi(2) * (t5.sqrt() * t5)))),
+        (0.2222222222222222 * t0 * (t2.sqrt() * t2) / ((s * t3))),
+        (0.1111111111111111 * t0 * t2.sqrt()
+            * (-2.0 - (3.0 * s) + (3.0 * t1) + (2.0 * s.powi(3))) / ((t1 * t3.powi(2)))),
     ]
 }
 /** Quantity (14) as a fraction: (max − min)/min of ∂p/∂ν on the contour Γ₀.
@@ -112,43 +90,36 @@ pub fn residuals_and_jacobian_eta(
     eta_s: f64,
 ) -> [f64; 6] {
     let t0 = s.powi(2);
-    let t1 = abar.powi(3);
-    let t2 = s.powi(3);
-    let t3 = s.powi(4);
-    let t4 = (-2.0 - (12.0 * t0) - (2.0 * t0 * eta * abar * dbar) + (t0 * eta * t1)
-        + (4.0 * t2) - (6.0 * t3) - (6.0 * t3 * eta * abar * dbar) + (t3 * eta * t1));
-    let t5 = (1.0 + t0);
-    let t6 = (t0 * eta * t5);
-    let t7 = s.powi(5);
-    let t8 = (-(6.0 * s * eta * abar * dbar * rho) + (4.0 * s * rho) - (6.0 * rho)
-        - (12.0 * t0 * rho) - (2.0 * t2 * eta * abar * dbar * rho) + (t2 * eta * t1)
-        - (2.0 * t3 * rho) + (t7 * eta * t1));
-    let t9 = (t2 * eta * t5);
-    let t10 = abar.powi(2);
+    let t1 = s.powi(3);
+    let t2 = s.powi(4);
+    let t3 = (1.0 + (6.0 * t0) - (2.0 * t1) + (3.0 * t2));
+    let t4 = (1.0 + t0);
+    let t5 = abar.powi(3);
+    let t6 = (t0 * t5);
+    let t7 = (t0 * t4);
+    let t8 = (-(2.0 * s * rho) + (3.0 * rho) + (6.0 * t0 * rho) + (t2 * rho));
+    let t9 = abar.powi(2);
+    let t10 = t4.powi(2);
     let t11 = eta.powi(2);
-    let t12 = t5.powi(2);
     [
-        (t4 / (t6)),
-        (t8 / (t9)),
-        ((-(2.0 * t0 * eta * dbar) + (3.0 * t0 * eta * t10) - (6.0 * t3 * eta * dbar)
-            + (3.0 * t3 * eta * t10)) / (t6)),
-        ((eta_s
-            * (((-(2.0 * t0 * abar * dbar) + (t0 * t1) - (6.0 * t3 * abar * dbar)
-                + (t3 * t1)) / (t6)) - (t4 / ((t0 * t11 * t5)))))
-            - (2.0 * t4 / ((s * eta * t12)))
-            + ((-(24.0 * s) - (4.0 * s * eta * abar * dbar) + (2.0 * s * eta * t1)
-                + (12.0 * t0) - (24.0 * t2) - (24.0 * t2 * eta * abar * dbar)
-                + (4.0 * t2 * eta * t1)) / (t6)) - (2.0 * t4 / (t9))),
-        ((-(6.0 * s * eta * dbar * rho) - (2.0 * t2 * eta * dbar * rho)
-            + (3.0 * t2 * eta * t10) + (3.0 * t7 * eta * t10)) / (t9)),
-        ((eta_s
-            * (((-(6.0 * s * abar * dbar * rho) - (2.0 * t2 * abar * dbar * rho)
-                + (t2 * t1) + (t7 * t1)) / (t9)) - (t8 / ((t2 * t11 * t5)))))
-            - (2.0 * t8 / ((t0 * eta * t12)))
-            + ((-(24.0 * s * rho) - (6.0 * eta * abar * dbar * rho) + (4.0 * rho)
-                - (6.0 * t0 * eta * abar * dbar * rho) + (3.0 * t0 * eta * t1)
-                - (8.0 * t2 * rho) + (5.0 * t3 * eta * t1)) / (t9))
-            - (3.0 * t8 / ((t3 * eta * t5)))),
+        (-(2.0 * t3 / ((t0 * eta * t4)))
+            + ((-(2.0 * abar * dbar) - (6.0 * t0 * abar * dbar) + t6 + t5) / (t4))),
+        (((-(6.0 * abar * dbar * rho) - (2.0 * t0 * abar * dbar * rho) + t6 + (t2 * t5))
+            / (t7)) - (2.0 * t8 / ((t1 * eta * t4)))),
+        (-1.0 * ((2.0 * dbar) + (6.0 * t0 * dbar) - (3.0 * t0 * t9) - (3.0 * t9))
+            / (t4)),
+        (-(8.0 * s * abar * dbar / (t10)) + (2.0 * eta_s * t3 / ((t0 * t11 * t4)))
+            - (4.0 * (-1.0 - (2.0 * t0) - t1 - (3.0 * t2) + s.powi(5))
+                / ((t1 * eta * t10)))),
+        ((-(6.0 * dbar * rho) - (2.0 * t0 * dbar * rho) + (3.0 * t0 * t9)
+            + (3.0 * t2 * t9)) / (t7)),
+        ((2.0 * eta_s * t8 / ((t1 * t11 * t4)))
+            + (4.0
+                * ((3.0 * abar * dbar * rho) + (6.0 * t0 * abar * dbar * rho)
+                    + (t2 * abar * dbar * rho)) / ((t1 * t10)))
+            + (2.0
+                * (-(4.0 * s * rho) + (9.0 * rho) + (21.0 * t0 * rho) - (8.0 * t1 * rho)
+                    + (17.0 * t2 * rho) + (s.powi(6) * rho)) / ((t2 * eta * t10)))),
     ]
 }
 /// ∂(19)/∂δ̄, ∂(20)/∂δ̄ (for continuation and load control); η passed in.
