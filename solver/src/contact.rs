@@ -31,6 +31,7 @@ mod near_circle;
 
 pub use near_circle::NEAR_CIRCLE;
 
+use crate::equations::{held, Hold};
 use crate::error::{check_range, Error, Result};
 use crate::fold::{self, FoldCondition};
 use crate::model::{brent_minimum, ClosureKind, Model, ModelId};
@@ -770,20 +771,16 @@ impl Contact {
         let mut z = guess;
         let adhesive_start = self.edge_slope(z[0], z[1], z[2]) > 0.0;
         let mut last = f64::INFINITY;
+        let hold = match control {
+            Control::Delta => Hold::Delta(target),
+            Control::ABar => Hold::ABar(target),
+            Control::Force => Hold::Force(target),
+        };
         for _ in 0..60 {
-            let x = Vector2::new(z[0], z[1]);
-            let (r, j) = m.residuals_and_jacobian(x, self.rho, z[2]);
-            let d = m.residuals_d_delta(x, self.rho, z[2]);
-            let (g, grad) = match control {
-                Control::Force => (
-                    m.force_bar(x, self.rho, z[2]),
-                    m.force_bar_gradient(x, self.rho, z[2]),
-                ),
-                Control::ABar => (z[0], Vector3::new(1.0, 0.0, 0.0)),
-                Control::Delta => (z[2], Vector3::new(0.0, 0.0, 1.0)),
-            };
-            let mat = crate::fold::bordered(&j, &d, &grad);
-            let rhs = -Vector3::new(r[0], r[1], g - target);
+            // the state equations under the control, written once for
+            // every model (`equations::held`)
+            let (r, mat, _) = held(m, &z, self.rho, hold);
+            let rhs = -r;
             let Some(step) = mat
                 .lu()
                 .solve(&rhs)

@@ -1,7 +1,8 @@
 //! The whole force–displacement curve of an ellipse model, including its
 //! unstable part, traced by the one continuation engine
-//! ([`crate::continuation`]) in (ā, s, δ̄), static 3-vectors. The solution
-//! set of (19)–(20) folds in δ̄ and in ā, so no single variable
+//! ([`crate::continuation`]) through the one model interface's family
+//! ([`crate::equations::Branch`]) in (ā, s, δ̄), static 3-vectors. The
+//! solution set of (19)–(20) folds in δ̄ and in ā, so no single variable
 //! parametrises it everywhere; the arclength does. Jacobian: the generated
 //! [∂r/∂(ā, s) | ∂r/∂δ̄], in variables scaled so that a unit step means a
 //! comparable change. Folds are the engine's events (a tangent component
@@ -12,16 +13,15 @@
 //! of degree d in (ā³, δ̄ā); the corrector's convergence test is on the
 //! step, which is scale-free.
 //!
-//! Owns: [`Curve`], [`Fold`], [`trace`], the ellipse models' [`Family`]
-//! implementation. May use: `contact`, `model`, `fold`, `continuation`,
-//! `error`.
+//! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `equations`,
+//! `fold`, `continuation`, `error`.
 
 use crate::contact::{Contact, State};
-use crate::continuation::{self, End, EventKind, Family, Linear, On, Settings, Watch};
+use crate::continuation::{self, End, EventKind, On, Settings, Watch};
+use crate::equations::Branch;
 use crate::error::{check_range, short, Error, Result};
 use crate::fold::{self, FoldCondition};
-use crate::model::Model;
-use nalgebra::{Matrix3, Vector2, Vector3, U3};
+use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// What folds at a fold point.
@@ -103,16 +103,13 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         return Ok(Curve { states, folds });
     }
     // variables scaled so that a unit step means a comparable change
-    let family = Ellipse {
-        model: contact.model(),
+    let family = Branch {
+        equations: contact.model(),
         rho,
         scale: Vector3::new(start.a_bar, 0.1, start.delta_bar.abs().max(1.0)),
+        strict: true,
     };
-    let w0 = Vector3::new(
-        start.a_bar / family.scale[0],
-        start.s / family.scale[1],
-        start.delta_bar / family.scale[2],
-    );
+    let w0 = family.join(&Vector2::new(start.a_bar, start.s), start.delta_bar);
     // the trace is at least four times finer than the output
     let h_max = (0.5 / points as f64).min(0.05);
     let settings = Settings {
@@ -154,7 +151,9 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
     )?;
     if traced.end != End::Until {
         // never a silently shortened curve: say where it stopped
-        let z = family.unscaled(&traced.points.last().expect("one point").u);
+        let w = traced.points.last().expect("one point").u;
+        let (x, d) = family.split(&w);
+        let z = Vector3::new(x[0], x[1], d);
         return Err(Error::NoState(format!(
             "curve at rho = {}: the trace did not reach its end (s < {}, a twentieth of its start, or ā back above its start past the contact-size fold) within {} steps; it stopped at a_bar = {}, s = {}, delta_bar = {}",
             short(rho),
@@ -167,7 +166,10 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
     }
     let trail: Vec<(Vector3<f64>, Vector3<f64>)> =
         traced.points.iter().map(|p| (p.u, p.t)).collect();
-    let from_z = |w: &Vector3<f64>| family.unscaled(w);
+    let from_z = |w: &Vector3<f64>| {
+        let (x, d) = family.split(w);
+        Vector3::new(x[0], x[1], d)
+    };
     // states (flagged beyond the first contact-size fold) and folds
     let size_fold = trail
         .windows(2)
@@ -232,84 +234,6 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         states.push(states_all[j.min(states_all.len() - 1)]);
     }
     Ok(Curve { states, folds })
-}
-
-/// An ellipse model's branch at fixed ρ in scaled variables
-/// w = (ā, s, δ̄)/scale.
-struct Ellipse<'a> {
-    model: &'a dyn Model,
-    rho: f64,
-    scale: Vector3<f64>,
-}
-
-impl Ellipse<'_> {
-    fn unscaled(&self, w: &Vector3<f64>) -> Vector3<f64> {
-        w.component_mul(&self.scale)
-    }
-}
-
-impl Family<U3> for Ellipse<'_> {
-    fn linearise(&self, w: &Vector3<f64>) -> Option<Linear<U3>> {
-        let z = self.unscaled(w);
-        let x = Vector2::new(z[0], z[1]);
-        let (r, j) = self.model.residuals_and_jacobian(x, self.rho, z[2]);
-        let d = self.model.residuals_d_delta(x, self.rho, z[2]);
-        let sc = &self.scale;
-        let jj = Matrix3::new(
-            j[(0, 0)] * sc[0],
-            j[(0, 1)] * sc[1],
-            d[0] * sc[2],
-            j[(1, 0)] * sc[0],
-            j[(1, 1)] * sc[1],
-            d[1] * sc[2],
-            0.0,
-            0.0,
-            0.0,
-        );
-        let force = self.model.force_bar(x, self.rho, z[2]);
-        let g = self.model.force_bar_gradient(x, self.rho, z[2]);
-        let out = Linear {
-            r: Vector3::new(r[0], r[1], 0.0),
-            j: jj,
-            force,
-            force_grad: g.component_mul(sc),
-        };
-        let finite = out.r.iter().chain(out.j.iter()).all(|v| v.is_finite());
-        finite.then_some(out)
-    }
-
-    fn converged(&self, _w: &Vector3<f64>, _r: &Vector3<f64>) -> bool {
-        // the corrector's test is on its step, which is scale-free
-        true
-    }
-
-    fn in_domain(&self, w: &Vector3<f64>) -> bool {
-        let z = self.unscaled(w);
-        z[0] > 0.0 && z[1] > 0.0 && z[1] <= 1.0
-    }
-
-    fn a_bar_gradient(&self) -> Vector3<f64> {
-        Vector3::new(self.scale[0], 0.0, 0.0)
-    }
-
-    fn delta_bar_gradient(&self) -> Vector3<f64> {
-        Vector3::new(0.0, 0.0, self.scale[2])
-    }
-
-    fn stuck(&self, w: &Vector3<f64>, why: &str) -> Error {
-        let z = self.unscaled(w);
-        Error::NoConvergence {
-            iterations: 20,
-            a_bar: z[0],
-            s: z[1],
-            residual: f64::NAN,
-            context: format!(
-                "pseudo-arclength corrector at delta_bar = {} (rho = {}): {why}",
-                crate::error::rounded(z[2]),
-                short(self.rho)
-            ),
-        }
-    }
 }
 
 /// The fold of `kind` near the traced state `near`, by Newton's method on

@@ -20,6 +20,7 @@ pub mod conformal;
 pub mod contact;
 pub mod continuation;
 pub mod curve;
+pub mod equations;
 pub mod error;
 pub mod exact;
 #[cfg(feature = "figures")]

@@ -26,6 +26,7 @@
 pub mod poly;
 mod trace;
 
+use crate::equations::{held, Hold};
 use crate::error::{check_range, short, Error, Result};
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -223,19 +224,6 @@ impl Conformal {
         )
     }
 
-    /// The residuals ∇_c Π̄ and their Jacobian in (c, δ̄) (K × (K + 1)), and
-    /// the gradient of F̄ = ∂Π̄/∂δ̄ with F̄ itself.
-    fn equations(&self, x: &DVector<f64>, rho: f64) -> Equations {
-        let e = self.potential(x, rho);
-        let (k, n) = (self.terms(), self.terms() + 1);
-        Equations {
-            r: DVector::from_fn(k, |i, _| e.grad[i]),
-            j: DMatrix::from_fn(k, n, |i, j| e.hess[i][j]),
-            force: e.grad[k],
-            force_grad: DVector::from_fn(n, |j, _| e.hess[k][j]),
-        }
-    }
-
     /// w(ζ) and w′(ζ) at a complex ζ = (re, im) (the powers n_k increase).
     fn map(&self, c: &[f64], z: (f64, f64)) -> ((f64, f64), (f64, f64)) {
         let mul = |a: (f64, f64), b: (f64, f64)| (a.0 * b.0 - a.1 * b.1, a.0 * b.1 + a.1 * b.0);
@@ -335,40 +323,20 @@ impl Conformal {
         Ok(())
     }
 
-    /// The residuals (∇_c Π̄, control) at x, their Jacobian in (c, δ̄) when
-    /// asked, and the residuals' scale.
+    /// The residuals (∇_c Π̄, control) at x = (c, δ̄), their Jacobian and
+    /// the residuals' scale: the one model interface's [`held`] system.
     fn controlled(
         &self,
         x: &DVector<f64>,
         rho: f64,
         control: Control,
-        jacobian: bool,
-    ) -> (DVector<f64>, Option<DMatrix<f64>>, f64) {
-        let (k, n) = (self.terms(), self.terms() + 1);
-        let e = self.potential_to(x, rho, if jacobian { 2 } else { 1 });
-        let mut r = DVector::from_fn(n, |i, _| e.grad[i]);
-        r[k] = match control {
-            Control::Delta(d) => x[k] - d,
-            Control::Force(f) => e.grad[k] - f,
-            // ā = w(1) = Σ c_k
-            Control::Size(a) => x.rows(0, k).sum() - a,
+    ) -> (DVector<f64>, DMatrix<f64>, f64) {
+        let hold = match control {
+            Control::Delta(d) => Hold::Delta(d),
+            Control::Force(f) => Hold::Force(f),
+            Control::Size(a) => Hold::ABar(a),
         };
-        let j = jacobian.then(|| {
-            let mut j = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
-            match control {
-                Control::Delta(_) => {
-                    j.row_mut(k).fill(0.0);
-                    j[(k, k)] = 1.0;
-                }
-                Control::Force(_) => {}
-                Control::Size(_) => {
-                    j.row_mut(k).fill(1.0);
-                    j[(k, k)] = 0.0;
-                }
-            }
-            j
-        });
-        (r, j, 1.0 + x.rows(0, k).amax().powi(7))
+        held(self, x, rho, hold)
     }
 
     /// Damped Newton on (∇_c Π̄ = 0, control) in x = (c, δ̄) at ρ from
@@ -383,8 +351,8 @@ impl Conformal {
         };
         let problem = crate::newton::Problem {
             equations: |x: &DVector<f64>| {
-                let (r, j, _) = self.controlled(x, rho, control, true);
-                (r, j.expect("asked for"))
+                let (r, j, _) = self.controlled(x, rho, control);
+                (r, j)
             },
             norm: |r: &DVector<f64>, x: &DVector<f64>| {
                 r.norm() / (1.0 + x.rows(0, self.terms()).amax().powi(7))
@@ -751,14 +719,6 @@ fn check_rho(rho: f64) -> Result<f64> {
     Ok(rho)
 }
 
-/// The residuals and what goes with them at one point.
-struct Equations {
-    r: DVector<f64>,
-    j: DMatrix<f64>,
-    force: f64,
-    force_grad: DVector<f64>,
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -796,5 +756,76 @@ mod tests {
                 .unwrap_or_else(|e| panic!("K = {k}: {e}"));
             assert!(st.force_bar < 0.0 && st.a_bar > 1.0, "K = {k}: {st:?}");
         }
+    }
+}
+
+/// `conformal:K` in the solver's one model interface: x = c₁ … c_K
+/// (dynamic), the residuals ∇_c Π̄ at fixed δ̄, F̄ = ∂Π̄/∂δ̄.
+impl crate::equations::Equations for Conformal {
+    type Dim = nalgebra::Dyn;
+    fn dim(&self) -> nalgebra::Dyn {
+        nalgebra::Dyn(self.terms())
+    }
+    fn label(&self) -> String {
+        self.name()
+    }
+    fn residuals_and_jacobian(
+        &self,
+        c: &DVector<f64>,
+        rho: f64,
+        delta_bar: f64,
+    ) -> (DVector<f64>, DMatrix<f64>) {
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        (
+            DVector::from_fn(k, |i, _| e.grad[i]),
+            DMatrix::from_fn(k, k, |i, j| e.hess[i][j]),
+        )
+    }
+    fn residuals_d_delta(&self, c: &DVector<f64>, rho: f64, delta_bar: f64) -> DVector<f64> {
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        DVector::from_fn(k, |i, _| e.hess[i][k])
+    }
+    fn force_bar(&self, c: &DVector<f64>, rho: f64, delta_bar: f64) -> (f64, DVector<f64>, f64) {
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        (
+            e.grad[k],
+            DVector::from_fn(k, |j, _| e.hess[k][j]),
+            e.hess[k][k],
+        )
+    }
+    fn linearised(
+        &self,
+        c: &DVector<f64>,
+        rho: f64,
+        delta_bar: f64,
+    ) -> crate::equations::Linearised<nalgebra::Dyn> {
+        // one evaluation of Π̄ with its first and second derivatives
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        crate::equations::Linearised {
+            r: DVector::from_fn(k, |i, _| e.grad[i]),
+            j: DMatrix::from_fn(k, k, |i, j| e.hess[i][j]),
+            r_delta: DVector::from_fn(k, |i, _| e.hess[i][k]),
+            force: e.grad[k],
+            force_x: DVector::from_fn(k, |j, _| e.hess[k][j]),
+            force_delta: e.hess[k][k],
+        }
+    }
+    fn a_bar_gradient(&self) -> DVector<f64> {
+        // ā = w(1) = Σ c_k
+        DVector::from_element(self.terms(), 1.0)
+    }
+    fn residual_scale(&self, c: &DVector<f64>, _delta_bar: f64) -> f64 {
+        1.0 + c.amax().powi(7)
+    }
+    fn admissible(&self, c: &DVector<f64>) -> Result<()> {
+        self.univalence(c.as_slice())
+    }
+    fn size_and_shape(&self, c: &DVector<f64>) -> (f64, f64) {
+        let (a, b) = self.semi_axes(c.as_slice());
+        (a, b / a)
     }
 }

@@ -1,5 +1,6 @@
-//! A `conformal:K` branch at fixed ρ as a family of the one continuation
-//! engine ([`crate::continuation`]): the K equations ∇_c Π̄ = 0 in the
+//! A `conformal:K` branch at fixed ρ, traced by the one continuation
+//! engine ([`crate::continuation`]) through the one model interface's
+//! family ([`crate::equations::Branch`]): the K equations ∇_c Π̄ = 0 in the
 //! K + 1 unknowns x = (c, δ̄). Steps grow while the corrector converges in
 //! few iterations and the tangent turns little, and halve otherwise, so the
 //! trace passes the folds in ā that each mode's imperfect bifurcation
@@ -10,13 +11,15 @@
 //! golden-section search on F̄) or of δ̄ (displacement control: Illinois on
 //! dδ̄/dσ). Folds in ā passed on the way are reported.
 //!
-//! Owns: [`to_extremum`], the family's [`Family`] implementation. May use:
-//! the parent module, `continuation`, nalgebra.
+//! Owns: [`to_extremum`], [`curve`]. May use: the parent module,
+//! `equations` (the family of the one model interface), `continuation`,
+//! nalgebra.
 
 use super::Conformal;
-use crate::continuation::{self, End, EventKind, Family, Linear, On, Settings, Watch};
+use crate::continuation::{self, End, EventKind, Family, On, Settings, Watch};
+use crate::equations::{unit_scale, Branch};
 use crate::error::{short, Error, Result};
-use nalgebra::{DMatrix, DVector, Dyn};
+use nalgebra::{DVector, Dyn};
 use serde::Serialize;
 
 /// Which extremum ends the trace.
@@ -38,55 +41,16 @@ pub struct Extremum {
     pub force_bar: f64,
 }
 
-/// The branch of one member at one ρ.
-struct Branch<'a> {
-    m: &'a Conformal,
-    rho: f64,
-}
-
-impl Family<Dyn> for Branch<'_> {
-    fn linearise(&self, x: &DVector<f64>) -> Option<Linear<Dyn>> {
-        let e = self.m.equations(x, self.rho);
-        let n = x.len();
-        let mut r = DVector::zeros(n);
-        r.rows_mut(0, n - 1).copy_from(&e.r);
-        let mut j = DMatrix::zeros(n, n);
-        j.rows_mut(0, n - 1).copy_from(&e.j);
-        let ok = r.iter().chain(j.iter()).all(|v| v.is_finite());
-        ok.then_some(Linear {
-            r,
-            j,
-            force: e.force,
-            force_grad: e.force_grad,
-        })
-    }
-
-    fn converged(&self, x: &DVector<f64>, r: &DVector<f64>) -> bool {
-        let k = x.len() - 1;
-        r.rows(0, k).norm() / (1.0 + x.rows(0, k).amax().powi(7)) < 1e-10
-    }
-
-    fn admissible(&self, x: &DVector<f64>) -> Result<()> {
-        self.m.univalence(&x.as_slice()[..x.len() - 1])
-    }
-
-    fn a_bar_gradient(&self) -> DVector<f64> {
-        // ā = w(1) = Σ c_k
-        let n = self.m.terms() + 1;
-        let mut g = DVector::from_element(n, 1.0);
-        g[n - 1] = 0.0;
-        g
-    }
-
-    fn delta_bar_gradient(&self) -> DVector<f64> {
-        let n = self.m.terms() + 1;
-        let mut g = DVector::zeros(n);
-        g[n - 1] = 1.0;
-        g
-    }
-
-    fn stuck(&self, x: &DVector<f64>, why: &str) -> Error {
-        stuck(self.m, x, self.rho, why)
+/// The branch of one member at one ρ: the solver's one model interface's
+/// family ([`crate::equations::Branch`]) in u = (c, δ̄), unscaled; with
+/// `strict`, a state whose map is not one-to-one ends the trace with that
+/// error.
+fn branch(m: &Conformal, rho: f64, strict: bool) -> Branch<'_, Conformal> {
+    Branch {
+        equations: m,
+        rho,
+        scale: unit_scale(m),
+        strict,
     }
 }
 
@@ -99,7 +63,7 @@ pub fn to_extremum(
     control: PullOffControl,
 ) -> Result<(DVector<f64>, Vec<Extremum>)> {
     // towards smaller ā = Σ c_k
-    let towards = -Branch { m, rho }.a_bar_gradient();
+    let towards = -branch(m, rho, true).a_bar_gradient();
     extremum_along(m, x0, rho, control, &towards, f64::INFINITY)
 }
 
@@ -112,7 +76,7 @@ pub fn to_nearby_extremum(
     control: PullOffControl,
     reach: f64,
 ) -> Result<(DVector<f64>, Vec<Extremum>)> {
-    let family = Branch { m, rho };
+    let family = branch(m, rho, true);
     let towards = match control {
         PullOffControl::Load => -family
             .linearise(x0)
@@ -132,7 +96,7 @@ fn extremum_along(
     reach: f64,
 ) -> Result<(DVector<f64>, Vec<Extremum>)> {
     let n = x0.len();
-    let family = Branch { m, rho };
+    let family = branch(m, rho, true);
     let a0: f64 = x0.rows(0, n - 1).sum();
     let settings = Settings {
         step: 0.02,
@@ -256,7 +220,7 @@ fn arm(
     a_max: f64,
 ) -> Result<Arm> {
     let n = x0.len();
-    let family = Branch { m, rho };
+    let family = branch(m, rho, false);
     let watch = Watch {
         size_fold: On::Note,
         displacement_fold: On::Locate,
@@ -265,7 +229,7 @@ fn arm(
         crossing: None,
     };
     let mut broke = None;
-    let traced = continuation::trace(&Unchecked(&family), x0, towards, settings, watch, |p| {
+    let traced = continuation::trace(&family, x0, towards, settings, watch, |p| {
         if let Err(e) = m.univalence(&p.u.as_slice()[..n - 1]) {
             broke = Some(e);
             return true;
@@ -331,7 +295,7 @@ pub fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result
     let mut x0 = DVector::from_vec(start.coefficients.clone());
     x0 = x0.push(start.delta_bar);
     let n = x0.len();
-    let family = Branch { m, rho };
+    let family = branch(m, rho, false);
     let mut down = DVector::zeros(n);
     down[n - 1] = -1.0;
     // at least four traced points per output point
@@ -454,26 +418,4 @@ pub fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result
         folds,
         end: ends.join("; "),
     })
-}
-
-/// The branch without the univalence check that ends a trace with an
-/// error: a curve ends where the map stops being one-to-one, as data.
-struct Unchecked<'a, 'b>(&'a Branch<'b>);
-
-impl Family<Dyn> for Unchecked<'_, '_> {
-    fn linearise(&self, x: &DVector<f64>) -> Option<Linear<Dyn>> {
-        self.0.linearise(x)
-    }
-    fn converged(&self, x: &DVector<f64>, r: &DVector<f64>) -> bool {
-        self.0.converged(x, r)
-    }
-    fn a_bar_gradient(&self) -> DVector<f64> {
-        self.0.a_bar_gradient()
-    }
-    fn delta_bar_gradient(&self) -> DVector<f64> {
-        self.0.delta_bar_gradient()
-    }
-    fn stuck(&self, x: &DVector<f64>, why: &str) -> Error {
-        self.0.stuck(x, why)
-    }
 }
