@@ -273,14 +273,32 @@ impl Conformal {
     /// ∂p̄/∂ν on the contour at the angles `thetas` of the disk, in units of
     /// √(2mΔγ) (1 where (3)₂ holds).
     pub fn normal_derivative(&self, x: &DVector<f64>, rho: f64, thetas: &[f64]) -> Vec<f64> {
+        let units: Vec<(f64, f64)> = thetas.iter().map(|t| (t.cos(), t.sin())).collect();
+        self.normal_derivative_at(x, rho, &units)
+    }
+
+    /// [`Conformal::normal_derivative`] at the points e^{iθ} = (cos θ, sin θ)
+    /// given: cos nθ by the Chebyshev recurrence from cos θ, |w′| without
+    /// `hypot` (no overflow at these sizes).
+    fn normal_derivative_at(&self, x: &DVector<f64>, rho: f64, units: &[(f64, f64)]) -> Vec<f64> {
         let g = self.slope_coefficients(x, rho);
         let c = &x.as_slice()[..self.terms()];
-        thetas
+        let top = g.iter().map(|(n, _)| *n as usize).max().unwrap_or(0);
+        let mut cos_k = vec![0.0; top + 1];
+        units
             .iter()
-            .map(|&t| {
-                let slope: f64 = g.iter().map(|(n, gn)| gn * (n * t).cos()).sum();
-                let (_, dw) = self.map(c, (t.cos(), t.sin()));
-                slope / dw.0.hypot(dw.1)
+            .map(|&(ct, st)| {
+                // cos kθ, k = 0 … top: T_{k+1} = 2 cos θ T_k − T_{k−1}
+                cos_k[0] = 1.0;
+                if top >= 1 {
+                    cos_k[1] = ct;
+                }
+                for k in 2..=top {
+                    cos_k[k] = 2.0 * ct * cos_k[k - 1] - cos_k[k - 2];
+                }
+                let slope: f64 = g.iter().map(|(n, gn)| gn * cos_k[*n as usize]).sum();
+                let (_, dw) = self.map(c, (ct, st));
+                slope / (dw.0 * dw.0 + dw.1 * dw.1).sqrt()
             })
             .collect()
     }
@@ -288,11 +306,18 @@ impl Conformal {
     /// max |∂p̄/∂ν − 1| over the contour (sampled at 721 angles of a quarter
     /// turn, which the two symmetries make the whole contour).
     pub fn bc_defect(&self, x: &DVector<f64>, rho: f64) -> f64 {
-        let n = 720;
-        let thetas: Vec<f64> = (0..=n)
-            .map(|j| std::f64::consts::FRAC_PI_2 * j as f64 / n as f64)
-            .collect();
-        self.normal_derivative(x, rho, &thetas)
+        // θ = (π/2) j/720, j = 0 … 720, tabulated once
+        static UNITS: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
+        let units = UNITS.get_or_init(|| {
+            let n = 720;
+            (0..=n)
+                .map(|j| {
+                    let t = std::f64::consts::FRAC_PI_2 * j as f64 / n as f64;
+                    (t.cos(), t.sin())
+                })
+                .collect()
+        });
+        self.normal_derivative_at(x, rho, units)
             .into_iter()
             .map(|v| (v - 1.0).abs())
             .fold(0.0, f64::max)
@@ -303,10 +328,19 @@ impl Conformal {
     /// the map is univalent by the argument principle); sampled at 1024
     /// angles.
     pub fn univalence(&self, c: &[f64]) -> Result<()> {
+        // ζ = e^{iθ}, θ = 2π(j + 1/2)/1024, tabulated once
+        static UNITS: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
         let n = 1024;
-        for j in 0..n {
+        let units = UNITS.get_or_init(|| {
+            (0..n)
+                .map(|j| {
+                    let t = 2.0 * std::f64::consts::PI * (j as f64 + 0.5) / n as f64;
+                    (t.cos(), t.sin())
+                })
+                .collect()
+        });
+        for (j, &z) in units.iter().enumerate() {
             let t = 2.0 * std::f64::consts::PI * (j as f64 + 0.5) / n as f64;
-            let z = (t.cos(), t.sin());
             let (w, dw) = self.map(c, z);
             // d arg w/dθ = Re(ζ w′/w)
             let zdw = (z.0 * dw.0 - z.1 * dw.1, z.0 * dw.1 + z.1 * dw.0);
