@@ -658,6 +658,7 @@ fn accuracy_command(
             )));
         }
     }
+    let began = std::time::Instant::now();
     use rayon::prelude::*;
     use thinjkr::exact::table::{doubling, reference as reference_of, render, row, Quantity, RHOS};
     let jobs: Vec<(f64, Quantity)> = RHOS
@@ -716,6 +717,13 @@ fn accuracy_command(
             .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?,
         None => out!("{text}"),
     }
+    eprintln!(
+        "thinjkr: accuracy table: {} rows and {} doublings in {:.1} s on {} threads",
+        rows.len(),
+        doublings.len(),
+        began.elapsed().as_secs_f64(),
+        rayon::current_num_threads()
+    );
     Ok(())
 }
 
