@@ -615,11 +615,19 @@ where
         }
         if let Some((quantity, target, on)) = watch.crossing {
             let (k0, k1) = (p.value(quantity) - target, q.value(quantity) - target);
-            if on != On::Ignore && k0 != 0.0 && k0.signum() != k1.signum() {
-                let at = if located(on) {
-                    Some(engine.zero(p, &q, k0, k1, &|x: &Point<D>| x.value(quantity) - target)?)
-                } else {
+            // a point exactly at the value is the crossing (the start, or a
+            // point the last step landed on)
+            let crossed =
+                (k0 == 0.0 && i == 1) || k1 == 0.0 || (k0 != 0.0 && k0.signum() != k1.signum());
+            if on != On::Ignore && crossed {
+                let at = if !located(on) {
                     None
+                } else if k0 == 0.0 {
+                    Some(p.u.clone())
+                } else if k1 == 0.0 {
+                    Some(q.u.clone())
+                } else {
+                    Some(engine.zero(p, &q, k0, k1, &|x: &Point<D>| x.value(quantity) - target)?)
                 };
                 note(EventKind::Crossing, on, at);
             }
@@ -760,6 +768,30 @@ mod tests {
         for p in &t.points {
             assert!((p.u.norm() - 1.0).abs() < 1e-12);
         }
+    }
+
+    /// A start exactly at the watched value is the crossing (it has no
+    /// bracket to refine).
+    #[test]
+    fn a_start_on_the_value_is_the_crossing() {
+        let watch = Watch {
+            crossing: Some((Quantity::Delta, 0.0, On::Stop)),
+            ..Watch::default()
+        };
+        let t = trace(
+            &Circle,
+            Vector2::new(1.0, 0.0),
+            &Vector2::new(0.0, -1.0),
+            Settings::default(),
+            watch,
+            |_| false,
+        )
+        .expect("traced");
+        assert_eq!(t.end, End::Event(EventKind::Crossing));
+        assert_eq!(
+            t.located(EventKind::Crossing),
+            Some(&Vector2::new(1.0, 0.0))
+        );
     }
 
     #[test]

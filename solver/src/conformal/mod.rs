@@ -278,49 +278,80 @@ impl Conformal {
     }
 
     /// [`Conformal::normal_derivative`] at the points e^{iθ} = (cos θ, sin θ)
-    /// given: cos nθ by the Chebyshev recurrence from cos θ, |w′| without
-    /// `hypot` (no overflow at these sizes).
+    /// given.
     fn normal_derivative_at(&self, x: &DVector<f64>, rho: f64, units: &[(f64, f64)]) -> Vec<f64> {
-        let g = self.slope_coefficients(x, rho);
-        let c = &x.as_slice()[..self.terms()];
-        let top = g.iter().map(|(n, _)| *n as usize).max().unwrap_or(0);
-        let mut cos_k = vec![0.0; top + 1];
-        units
-            .iter()
-            .map(|&(ct, st)| {
-                // cos kθ, k = 0 … top: T_{k+1} = 2 cos θ T_k − T_{k−1}
-                cos_k[0] = 1.0;
-                if top >= 1 {
-                    cos_k[1] = ct;
-                }
-                for k in 2..=top {
-                    cos_k[k] = 2.0 * ct * cos_k[k - 1] - cos_k[k - 2];
-                }
-                let slope: f64 = g.iter().map(|(n, gn)| gn * cos_k[*n as usize]).sum();
-                let (_, dw) = self.map(c, (ct, st));
-                slope / (dw.0 * dw.0 + dw.1 * dw.1).sqrt()
-            })
-            .collect()
+        let slope = self.slope(x, rho);
+        units.iter().map(|&u| slope(u)).collect()
     }
 
-    /// max |∂p̄/∂ν − 1| over the contour (sampled at 721 angles of a quarter
-    /// turn, which the two symmetries make the whole contour).
+    /// ∂p̄/∂ν at e^{iθ} = (cos θ, sin θ) as a function, its cosine
+    /// coefficients evaluated once: cos nθ by the Chebyshev recurrence from
+    /// cos θ, |w′| without `hypot` (no overflow at these sizes).
+    fn slope(&self, x: &DVector<f64>, rho: f64) -> impl Fn((f64, f64)) -> f64 + '_ {
+        let g = self.slope_coefficients(x, rho);
+        let c: Vec<f64> = x.as_slice()[..self.terms()].to_vec();
+        let top = g.iter().map(|(n, _)| *n as usize).max().unwrap_or(0);
+        move |(ct, st): (f64, f64)| {
+            // cos kθ, k = 0 … top: T_{k+1} = 2 cos θ T_k − T_{k−1}
+            let mut cos_k = [0.0f64; 128];
+            let mut slope = 0.0;
+            cos_k[0] = 1.0;
+            if top >= 1 {
+                cos_k[1] = ct;
+            }
+            for k in 2..=top.min(127) {
+                cos_k[k] = 2.0 * ct * cos_k[k - 1] - cos_k[k - 2];
+            }
+            for (n, gn) in &g {
+                let n = *n as usize;
+                slope += gn
+                    * if n < 128 {
+                        cos_k[n]
+                    } else {
+                        (n as f64 * st.atan2(ct)).cos()
+                    };
+            }
+            let (_, dw) = self.map(&c, (ct, st));
+            slope / (dw.0 * dw.0 + dw.1 * dw.1).sqrt()
+        }
+    }
+
+    /// max |∂p̄/∂ν − 1| over the contour: sampled at 181 angles of a quarter
+    /// turn (which the two symmetries make the whole contour), the largest
+    /// refined by golden-section search within a sample's spacing.
     pub fn bc_defect(&self, x: &DVector<f64>, rho: f64) -> f64 {
-        // θ = (π/2) j/720, j = 0 … 720, tabulated once
-        static UNITS: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
-        let units = UNITS.get_or_init(|| {
-            let n = 720;
-            (0..=n)
-                .map(|j| {
-                    let t = std::f64::consts::FRAC_PI_2 * j as f64 / n as f64;
-                    (t.cos(), t.sin())
-                })
-                .collect()
-        });
-        self.normal_derivative_at(x, rho, units)
-            .into_iter()
-            .map(|v| (v - 1.0).abs())
-            .fold(0.0, f64::max)
+        // on θ = (π/2) j/180, j = 0 … 180, then the largest refined by
+        // golden-section search within one grid step on either side
+        let slope = self.slope(x, rho);
+        let defect = |t: f64| (slope((t.cos(), t.sin())) - 1.0).abs();
+        let n = 180;
+        let h = std::f64::consts::FRAC_PI_2 / n as f64;
+        let (mut best, mut at) = (f64::NEG_INFINITY, 0.0);
+        for j in 0..=n {
+            let t = h * j as f64;
+            let v = defect(t);
+            if !(v <= best) {
+                (best, at) = (v, t);
+            }
+        }
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut lo, mut hi) = ((at - h).max(0.0), (at + h).min(std::f64::consts::FRAC_PI_2));
+        let (mut x1, mut x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        let (mut f1, mut f2) = (defect(x1), defect(x2));
+        for _ in 0..30 {
+            if f1 > f2 {
+                hi = x2;
+                (x2, f2) = (x1, f1);
+                x1 = hi - g * (hi - lo);
+                f1 = defect(x1);
+            } else {
+                lo = x1;
+                (x1, f1) = (x2, f2);
+                x2 = lo + g * (hi - lo);
+                f2 = defect(x2);
+            }
+        }
+        best.max(f1).max(f2)
     }
 
     /// Fails unless the map is one-to-one on the closed disk: the argument
@@ -480,8 +511,27 @@ impl Conformal {
                 let f = value(&v) - target;
                 if let Some((a0, f0)) = prev {
                     if f0 * f <= 0.0 {
-                        let a_lin = a0 + (a - a0) * f0 / (f0 - f);
-                        let start = at(a_lin).unwrap_or(v);
+                        // the crossing on the circle's explicit branch by a
+                        // few Illinois steps (cheap: the circle's rows), then
+                        // Newton in every unknown
+                        let (mut lo, mut flo, mut hi, mut fhi) = (a, f, a0, f0);
+                        let mut start = v;
+                        for _ in 0..8 {
+                            let am = hi - fhi * (hi - lo) / (fhi - flo);
+                            let Some(vm) = at(am) else { break };
+                            let fm = value(&vm) - target;
+                            start = vm;
+                            if fm == 0.0 {
+                                break;
+                            }
+                            if fm.signum() == fhi.signum() {
+                                (hi, fhi) = (am, fm);
+                                flo *= 0.5;
+                            } else {
+                                (lo, flo) = (am, fm);
+                                fhi *= 0.5;
+                            }
+                        }
                         return self.newton(&start, 1.0, control);
                     }
                 }
