@@ -393,3 +393,86 @@ where
     });
     (r, j, e.residual_scale(&x, d))
 }
+
+#[cfg(test)]
+mod tests {
+    //! The interface's Jacobians against central differences of its own
+    //! residuals, for a static (the paper's model) and a dynamic
+    //! (`conformal:4`) member; the branch's scaling round-trips.
+
+    use super::*;
+    use crate::conformal::{Conformal, Control};
+    use crate::contact::Contact;
+    use crate::model::ModelId;
+    use nalgebra::{DVector, Vector3};
+
+    /// max |J − J_fd| / (1 + |J|) over the entries, J_fd by central
+    /// differences of `held`'s residuals.
+    fn mismatch<E: Equations + ?Sized>(
+        e: &E,
+        u: &OVector<f64, WithDelta<E>>,
+        rho: f64,
+        hold: Hold,
+    ) -> f64
+    where
+        DefaultAllocator: Allocator<E::Dim>
+            + Allocator<E::Dim, E::Dim>
+            + Allocator<WithDelta<E>>
+            + Allocator<WithDelta<E>, WithDelta<E>>,
+    {
+        let (_, j, _) = held(e, u, rho, hold);
+        let n = u.len();
+        let mut worst: f64 = 0.0;
+        for c in 0..n {
+            let h = 1e-6 * (1.0 + u[c].abs());
+            let (mut up, mut um) = (u.clone(), u.clone());
+            up[c] += h;
+            um[c] -= h;
+            let (rp, _, _) = held(e, &up, rho, hold);
+            let (rm, _, _) = held(e, &um, rho, hold);
+            for i in 0..n {
+                let fd = (rp[i] - rm[i]) / (2.0 * h);
+                worst = worst.max((j[(i, c)] - fd).abs() / (1.0 + j[(i, c)].abs()));
+            }
+        }
+        worst
+    }
+
+    #[test]
+    fn held_jacobians_match_central_differences() {
+        let st = Contact::new(0.8).unwrap().at_displacement(2.0).unwrap();
+        let model = ModelId::Max.model();
+        let u = Vector3::new(st.a_bar, st.s, st.delta_bar);
+        for hold in [Hold::Delta(2.0), Hold::Force(8.0), Hold::ABar(3.0)] {
+            let m = mismatch(model, &u, 0.8, hold);
+            assert!(m < 1e-6, "max, {hold:?}: {m:e}");
+        }
+        let c4 = Conformal::new(4).unwrap();
+        let st = c4.solve(0.8, Control::Force(1.0)).unwrap();
+        let u = DVector::from_vec(st.coefficients.clone()).push(st.delta_bar);
+        for hold in [Hold::Delta(1.0), Hold::Force(1.0), Hold::ABar(3.0)] {
+            let m = mismatch(&c4, &u, 0.8, hold);
+            assert!(m < 1e-6, "conformal:4, {hold:?}: {m:e}");
+        }
+        // the state solves its own held system
+        let (r, _, scale) = held(&c4, &u, 0.8, Hold::Force(1.0));
+        assert!(r.norm() / scale < 1e-10, "{}", r.norm());
+    }
+
+    #[test]
+    fn the_branch_scaling_round_trips() {
+        let model = ModelId::Max.model();
+        let b = Branch {
+            equations: model,
+            rho: 0.8,
+            scale: Vector3::new(3.0, 0.1, 2.0),
+            strict: true,
+        };
+        let u = b.join(&nalgebra::Vector2::new(3.2, 0.9), 2.5);
+        assert_eq!(u, Vector3::new(3.2 / 3.0, 0.9 / 0.1, 1.25));
+        let (x, d) = b.split(&u);
+        assert!(
+            (x[0] - 3.2).abs() < 1e-15 && (x[1] - 0.9).abs() < 1e-15 && (d - 2.5).abs() < 1e-15
+        );
+    }
+}
