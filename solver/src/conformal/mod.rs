@@ -553,13 +553,11 @@ impl Conformal {
         rho: f64,
         control: Control,
     ) -> Result<DVector<f64>> {
-        // steps in ρ of at most 0.1, halved on failure; each Newton starts
-        // from the secant through the last two states
-        let (mut x, mut rho_now) = (x1, 1.0f64);
+        // steps in ρ of at most 0.1; each Newton starts from the secant
+        // through the last two states
+        let mut x = x1;
         let mut last: Option<(DVector<f64>, f64)> = None;
-        let mut step = 0.1f64;
-        while rho_now > rho {
-            let next = (rho_now - step).max(rho);
+        walk_rho(1.0, rho, 0.1, |rho_now, next| {
             let guess = match &last {
                 Some((xp, rp)) => &x + (&x - xp) * ((rho_now - next) / (rp - rho_now)),
                 None => x.clone(),
@@ -569,23 +567,18 @@ impl Conformal {
                 .newton(&guess, next, control)
                 .ok()
                 .filter(|y| (y - &x).amax() < 0.5 * (1.0 + x.amax()));
-            match found {
-                Some(y) => {
-                    last = Some((std::mem::replace(&mut x, y), rho_now));
-                    rho_now = next;
-                    step = (step * 1.5).min(0.1);
-                }
-                None if step > 1e-4 => step *= 0.5,
-                None => {
-                    return Err(Error::NoState(format!(
-                        "{}: the state at {control} continued from the circle (rho = 1) ends near rho = {:.4}, above the rho = {} asked for (its arm folds in rho there)",
-                        self.name(),
-                        rho_now,
-                        short(rho)
-                    )))
-                }
-            }
-        }
+            found
+                .map(|y| last = Some((std::mem::replace(&mut x, y), rho_now)))
+                .is_some()
+        })
+        .map_err(|rho_now| {
+            Error::NoState(format!(
+                "{}: the state at {control} continued from the circle (rho = 1) ends near rho = {:.4}, above the rho = {} asked for (its arm folds in rho there)",
+                self.name(),
+                rho_now,
+                short(rho)
+            ))
+        })?;
         Ok(x)
     }
 
@@ -658,7 +651,7 @@ impl Conformal {
         control: PullOffControl,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
         let k = self.terms();
-        let (mut rho_now, mut x, mut folds) = (1..)
+        let (rho_now, mut x, mut folds) = (1..)
             .map(|j| rho + 0.05 * j as f64)
             .take_while(|r| *r < 1.0)
             .find_map(|r| {
@@ -674,9 +667,7 @@ impl Conformal {
                     short(rho)
                 ))
             })?;
-        let mut step = 0.02f64;
-        while rho_now > rho {
-            let next = (rho_now - step).max(rho);
+        walk_rho(rho_now, rho, 0.02, |_, next| {
             // a state near the last pull-off at the new ρ: at its ā, or
             // at its δ̄ where ā is no parameter there (a fold in ā)
             let a_bar: f64 = x.rows(0, k).sum();
@@ -686,21 +677,15 @@ impl Conformal {
                 .and_then(|y| trace::to_nearby_extremum(self, &y, next, control, 0.3))
                 .ok()
                 .filter(|(y, _)| (y - &x).amax() < 0.2 * (1.0 + x.amax()));
-            match found {
-                Some((y, f)) => {
-                    (x, folds, rho_now) = (y, f, next);
-                    step = (step * 1.5).min(0.02);
-                }
-                None if step > 1e-4 => step *= 0.5,
-                None => {
-                    return Err(Error::NoState(format!(
-                        "{}: the pull-off continued in rho stops near rho = {:.4}",
-                        self.name(),
-                        rho_now
-                    )))
-                }
-            }
-        }
+            found.map(|(y, f)| (x, folds) = (y, f)).is_some()
+        })
+        .map_err(|rho_now| {
+            Error::NoState(format!(
+                "{}: the pull-off continued in rho stops near rho = {:.4}",
+                self.name(),
+                rho_now
+            ))
+        })?;
         Ok((self.state(&x, rho)?, folds))
     }
 
@@ -776,6 +761,31 @@ impl Conformal {
         modes.sort_unstable();
         (modes.is_empty(), modes)
     }
+}
+
+/// Steps ρ from `from` down to `to`, each step at most `max_step`: grown by
+/// 1.5 after a step `advance(ρ, ρ_next)` takes (it returns whether it did),
+/// halved after one it does not take. `Err` with the ρ reached when a step
+/// of 1e-4 fails.
+fn walk_rho(
+    from: f64,
+    to: f64,
+    max_step: f64,
+    mut advance: impl FnMut(f64, f64) -> bool,
+) -> std::result::Result<(), f64> {
+    let (mut rho_now, mut step) = (from, max_step);
+    while rho_now > to {
+        let next = (rho_now - step).max(to);
+        if advance(rho_now, next) {
+            rho_now = next;
+            step = (step * 1.5).min(max_step);
+        } else if step > 1e-4 {
+            step *= 0.5;
+        } else {
+            return Err(rho_now);
+        }
+    }
+    Ok(())
 }
 
 fn positive_definite(h: &DMatrix<f64>) -> bool {
