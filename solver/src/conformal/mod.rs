@@ -690,7 +690,7 @@ impl Conformal {
     }
 
     /// The curve at `rho` from δ̄ = `delta_start` through the pull-off and
-    /// the folds of every mode ([`trace::curve`]), `points` states.
+    /// the folds of every mode (the arms of `trace`), `points` states.
     pub fn curve(&self, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
         let rho = check_rho(rho)?;
         check_range(

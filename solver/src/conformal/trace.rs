@@ -11,7 +11,9 @@
 //! golden-section search on F̄) or of δ̄ (displacement control: Illinois on
 //! dδ̄/dσ). Folds in ā passed on the way are reported.
 //!
-//! Owns: [`to_extremum`], [`curve`]. May use: the parent module,
+//! Owns: [`PullOffControl`], [`Extremum`], [`to_extremum`],
+//! [`to_nearby_extremum`], [`Curve`], [`CurveFold`], [`curve`]. May use:
+//! the parent module,
 //! `equations` (the family of the one model interface), `continuation`,
 //! nalgebra.
 
