@@ -145,7 +145,6 @@ fn extremum_along(
         (End::Event(_), Some(x)) => Ok((x.clone(), folds)),
         _ => {
             let last = &trace.points.last().expect("one point").u;
-            debug_assert_eq!(last.len(), n);
             Err(stuck(
                 m,
                 last,

@@ -131,8 +131,12 @@ fn circle_a_bar_at_delta(delta_bar: f64) -> f64 {
 }
 
 /// Residuals, Jacobian (central differences) and ∇F̄ at u.
-fn linearise(ex: &Exact, u: &DVector<f64>) -> Option<(DVector<f64>, DMatrix<f64>, DVector<f64>)> {
-    let (r, _) = ex.modes(u)?;
+#[allow(clippy::type_complexity)]
+fn linearise(
+    ex: &Exact,
+    u: &DVector<f64>,
+) -> Option<(DVector<f64>, f64, DMatrix<f64>, DVector<f64>)> {
+    let (r, force) = ex.modes(u)?;
     let n = u.len();
     let mut j = DMatrix::zeros(r.len(), n);
     let mut g = DVector::zeros(n);
@@ -147,7 +151,7 @@ fn linearise(ex: &Exact, u: &DVector<f64>) -> Option<(DVector<f64>, DMatrix<f64>
         j.set_column(k, &((rp - rm) / (2.0 * h)));
         g[k] = (fp - fm) / (2.0 * h);
     }
-    Some((r, j, g))
+    Some((r, force, j, g))
 }
 
 /// The contour mode of the near-null direction of the bordered Jacobian
@@ -180,13 +184,12 @@ fn a_bar_gradient(n: usize) -> DVector<f64> {
 /// The exact family at one ρ and truncation.
 impl Family<Dyn> for Exact {
     fn linearise(&self, u: &DVector<f64>) -> Option<Linear<Dyn>> {
-        let (r, j, g) = linearise(self, u)?;
+        let (r, force, j, g) = linearise(self, u)?;
         let n = u.len();
         let mut rr = DVector::zeros(n);
         rr.rows_mut(0, n - 1).copy_from(&r);
         let mut jj = DMatrix::zeros(n, n);
         jj.rows_mut(0, n - 1).copy_from(&j);
-        let (_, force) = self.modes(u)?;
         Some(Linear {
             r: rr,
             j: jj,

@@ -260,9 +260,9 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          unit disk under an odd polynomial map of K terms, solves (2) and p̄ = 0 on the contour exactly and \
          closes (3)₂ by the Ritz method. Its pull-off is the first minimum of F̄ on the branch traced from \
          ā = 2.6 (as for the exact solution) by pseudo-arclength continuation (where the state at ā = 2.6 \
-         folds in ρ before the ρ asked for, as for `conformal:4` below ρ ≈ 0.504, the pull-off itself is \
-         continued in ρ from ρ + 0.05); its states at given F̄ are continued in ρ from the circle. \
-         Convergence in K is not monotone at small ρ: `conformal:4` is worse than `conformal:2` at ρ = 0.5. Relative errors (not per cent) of the first quantity / ā / s, \
+         folds in ρ before the ρ asked for, the pull-off itself is continued in ρ from ρ + 0.05); its \
+         states at given F̄ are continued in ρ from the circle. Convergence in K need not be monotone at \
+         small ρ (compare the columns). Relative errors (not per cent) of the first quantity / ā / s, \
          \"< 1e-10\" where the difference is within the two solves' tolerances; \
          `docs/figures/conformal_convergence.svg` shows the pull-off's error against K.\n",
     );
