@@ -121,6 +121,41 @@ fn check_control(control: &str) -> PyResult<()> {
     }
 }
 
+/// The batch items of points (ρ, value) under `control` ("delta" or
+/// "force").
+fn items_of(rho: &[f64], value: &[f64], control: &str) -> Vec<Item> {
+    rho.iter()
+        .zip(value)
+        .map(|(&rho, &v)| Item {
+            rho,
+            given: if control == "delta" { Given::Delta(v) } else { Given::Force(v) },
+        })
+        .collect()
+}
+
+/// Every item solved by the one batch of the solver (`batch::solve_all`),
+/// as (a_bar, b_bar, s, delta_bar, force_bar, bc_error) or the error.
+fn rows_of<S>(
+    model: &S,
+    items: &[Item],
+    err: impl Fn(Error) -> (String, String),
+) -> Vec<Result<[f64; 6], (String, String)>>
+where
+    S: thinjkr::batch::Solves,
+    for<'a> thinjkr::batch::Row: From<&'a S::State>,
+{
+    solve_all(model, items)
+        .into_iter()
+        .map(|r| {
+            r.map(|st| {
+                let row = thinjkr::batch::Row::from(&st);
+                [row.a_bar, row.b_bar, row.s, row.delta_bar, row.force_bar, row.bc_error]
+            })
+            .map_err(&err)
+        })
+        .collect()
+}
+
 /// The state of `model` at `rho` with `control` = `value`, as JSON.
 #[pyfunction]
 fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> PyResult<String> {
@@ -158,23 +193,8 @@ fn solve_many<'py>(
     type Row = Result<[f64; 6], (String, String)>;
     let err = |e: Error| (e.kind().to_string(), e.to_string());
     let rows: Vec<Row> = py.detach(|| match (m, control.as_str()) {
-        (Choice::Approx(id), "delta" | "force") => {
-            let items: Vec<Item> = rho
-                .iter()
-                .zip(&value)
-                .map(|(&rho, &v)| Item {
-                    rho,
-                    given: if control == "delta" { Given::Delta(v) } else { Given::Force(v) },
-                })
-                .collect();
-            solve_all(id, &items)
-                .into_iter()
-                .map(|r| {
-                    r.map(|st| [st.a_bar, st.b_bar, st.s, st.delta_bar, st.force_bar, st.bc_error])
-                        .map_err(err)
-                })
-                .collect()
-        }
+        (Choice::Approx(id), "delta" | "force") => rows_of(&id, &items_of(&rho, &value, &control), err),
+        (Choice::Conformal(m), "delta" | "force") => rows_of(&m, &items_of(&rho, &value, &control), err),
         _ => rho
             .par_iter()
             .zip(value.par_iter())
@@ -408,7 +428,7 @@ fn _batch_api_seconds(
         .collect();
     Ok(py.detach(move || {
         let t = std::time::Instant::now();
-        let out = solve_all(id, &items);
+        let out = solve_all(&id, &items);
         let secs = t.elapsed().as_secs_f64();
         drop(std::hint::black_box(out));
         secs

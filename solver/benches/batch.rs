@@ -49,7 +49,7 @@ fn benches(c: &mut Criterion) {
         let mut g = c.benchmark_group(format!("batch, {model}"));
         g.sample_size(10);
         g.bench_function("1000 x 1000 (rho, delta) grid, all cores", |b| {
-            b.iter(|| solve_all(model, black_box(&grid)))
+            b.iter(|| solve_all(&model, black_box(&grid)))
         });
         g.finish();
     }

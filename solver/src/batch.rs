@@ -1,10 +1,12 @@
 //! Batch solves: a slice of (ρ, control value) solved on all cores
-//! (rayon), results in input order with a typed error per item; and the
-//! CSV reading and writing of `thinjkr batch`, streamed in blocks so that
-//! inputs of any length run in bounded memory.
+//! (rayon), results in input order with a typed error per item, written
+//! once for every model through [`Solves`]; and the CSV reading and
+//! writing of `thinjkr batch`, streamed in blocks so that inputs of any
+//! length run in bounded memory.
 //!
-//! Owns: [`Item`], [`Given`], [`solve_all`], [`parse_line`], [`csv_row`],
-//! [`CSV_HEADER`]. May use: `contact`, `error`, `model`.
+//! Owns: [`Item`], [`Given`], [`Solves`], [`solve_all`], [`parse_line`],
+//! [`csv_row`], [`CSV_HEADER`]. May use: `contact`, `conformal`, `error`,
+//! `model`.
 
 use crate::contact::{Contact, State};
 use crate::error::{Error, Result};
@@ -29,36 +31,79 @@ pub struct Item {
     pub given: Given,
 }
 
+/// A model a batch runs: the state at a control for a given ρ, with what
+/// is made once per ρ (an ellipse model's [`Contact`], which may find s∞
+/// numerically) shared by every item at that ρ. [`solve_all`] is written
+/// once against it; the ellipse models ([`ModelId`]) and the members of
+/// `conformal:K` implement it.
+pub trait Solves: Sync {
+    /// What is made once per ρ.
+    type AtRho: Send + Sync;
+    /// A state.
+    type State: Send;
+    /// Make what the items at `rho` share (or the error every one of them
+    /// gets).
+    fn at_rho(&self, rho: f64) -> Result<Self::AtRho>;
+    /// The state under `given`.
+    fn solve(&self, at: &Self::AtRho, given: Given) -> Result<Self::State>;
+}
+
+impl Solves for ModelId {
+    type AtRho = Contact;
+    type State = State;
+    fn at_rho(&self, rho: f64) -> Result<Contact> {
+        Contact::with_model(*self, rho)
+    }
+    fn solve(&self, c: &Contact, given: Given) -> Result<State> {
+        match given {
+            Given::Delta(d) => c.at_displacement(d),
+            Given::Force(f) => c.at_load(f),
+        }
+    }
+}
+
+impl Solves for crate::conformal::Conformal {
+    type AtRho = f64;
+    type State = crate::conformal::ConformalState;
+    fn at_rho(&self, rho: f64) -> Result<f64> {
+        Ok(rho)
+    }
+    fn solve(&self, rho: &f64, given: Given) -> Result<Self::State> {
+        use crate::conformal::Control;
+        // each from the circle, continued in ρ
+        self.solve(
+            *rho,
+            match given {
+                Given::Delta(d) => Control::Delta(d),
+                Given::Force(f) => Control::Force(f),
+            },
+        )
+    }
+}
+
 /// Solve one item with `model`.
-pub fn solve_one(model: ModelId, item: &Item) -> Result<State> {
-    solve_with(&Contact::with_model(model, item.rho)?, item)
+pub fn solve_one<S: Solves + ?Sized>(model: &S, item: &Item) -> Result<S::State> {
+    model.solve(&model.at_rho(item.rho)?, item.given)
 }
 
 /// Solve every item with `model` on all cores; the results are in the
 /// order of `items`, each a state or the typed error for that item.
-pub fn solve_all(model: ModelId, items: &[Item]) -> Vec<Result<State>> {
-    // one contact per distinct ρ (making one may find s∞ numerically)
+pub fn solve_all<S: Solves + ?Sized>(model: &S, items: &[Item]) -> Vec<Result<S::State>> {
+    // what the items share, once per distinct ρ
     let mut rhos: Vec<f64> = items.iter().map(|it| it.rho).collect();
     rhos.sort_by(f64::total_cmp);
     rhos.dedup_by(|a, b| a.to_bits() == b.to_bits());
-    let contacts: std::collections::HashMap<u64, Result<Contact>> = rhos
+    let shared: std::collections::HashMap<u64, Result<S::AtRho>> = rhos
         .par_iter()
-        .map(|&rho| (rho.to_bits(), Contact::with_model(model, rho)))
+        .map(|&rho| (rho.to_bits(), model.at_rho(rho)))
         .collect();
     items
         .par_iter()
-        .map(|it| match &contacts[&it.rho.to_bits()] {
-            Ok(c) => solve_with(c, it),
+        .map(|it| match &shared[&it.rho.to_bits()] {
+            Ok(at) => model.solve(at, it.given),
             Err(e) => Err(e.clone()),
         })
         .collect()
-}
-
-fn solve_with(c: &Contact, item: &Item) -> Result<State> {
-    match item.given {
-        Given::Delta(d) => c.at_displacement(d),
-        Given::Force(f) => c.at_load(f),
-    }
 }
 
 /// The header of the output CSV.
@@ -206,27 +251,6 @@ impl From<&crate::conformal::ConformalState> for Row {
             bc_error: s.bc_defect,
         }
     }
-}
-
-/// Solve every item with a member of `conformal:K` on all cores (each from
-/// the circle, continued in ρ); the results in the order of `items`.
-pub fn solve_all_conformal(
-    model: &crate::conformal::Conformal,
-    items: &[Item],
-) -> Vec<Result<crate::conformal::ConformalState>> {
-    use crate::conformal::Control;
-    items
-        .par_iter()
-        .map(|it| {
-            model.solve(
-                it.rho,
-                match it.given {
-                    Given::Delta(d) => Control::Delta(d),
-                    Given::Force(f) => Control::Force(f),
-                },
-            )
-        })
-        .collect()
 }
 
 /// One output row from its numbers (or the error naming the line).

@@ -538,7 +538,7 @@ fn pull_off_command(
 fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
     use std::io::{BufRead, IsTerminal};
     use thinjkr::batch::{
-        csv_row_values, decode_line, parse_line, solve_all, solve_all_conformal, Row, CSV_HEADER,
+        csv_row_values, decode_line, parse_line, solve_all, Row, CSV_HEADER,
     };
     if matches!(model, ModelChoice::Exact) {
         return Err(thinjkr::Error::Unavailable {
@@ -586,11 +586,11 @@ fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
             .filter_map(|(_, p)| p.as_ref().ok().copied())
             .collect();
         let rows: Vec<thinjkr::Result<Row>> = match &model {
-            ModelChoice::Approx(id) => solve_all(*id, &items)
+            ModelChoice::Approx(id) => solve_all(id, &items)
                 .iter()
                 .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
                 .collect(),
-            ModelChoice::Conformal(m) => solve_all_conformal(m, &items)
+            ModelChoice::Conformal(m) => solve_all(m, &items)
                 .iter()
                 .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
                 .collect(),

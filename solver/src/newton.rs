@@ -129,15 +129,18 @@ pub struct Problem<F, N, P, S> {
     pub small_step: S,
 }
 
-/// Where [`damped`] ended: the last iterate, its scaled residual norm and
-/// the iterations used.
+/// Where [`damped`] ended: the last iterate, its scaled residual norm, the
+/// Jacobian there and the iterations used.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Iterate<D: Dim>
 where
-    DefaultAllocator: Allocator<D>,
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
     /// The iterate.
     pub x: OVector<f64, D>,
+    /// ∂r/∂x at the iterate (as the equations gave it), for a caller that
+    /// goes on from there (a tangent, a stability test).
+    pub jacobian: OMatrix<f64, D, D>,
     /// Its scaled residual norm.
     pub residual: f64,
     /// Iterations used.
@@ -167,21 +170,22 @@ where
     let mut x = start;
     let (mut r, mut j) = (problem.equations)(&x);
     let mut rn = (problem.norm)(&r, &x);
-    let done = |x: OVector<f64, D>, residual: f64, iterations: usize| Iterate {
+    let done = |x: OVector<f64, D>, jacobian: OMatrix<f64, D, D>, residual: f64, iterations: usize| Iterate {
         x,
+        jacobian,
         residual,
         iterations,
     };
     for it in 0..config.max_iterations {
         if rn.is_finite() && rn < config.tolerance {
-            return Ok(done(x, rn, it));
+            return Ok(done(x, j, rn, it));
         }
         let step = j.clone().lu().solve(&(-&r));
         let Some(step) = step.filter(|d| d.iter().all(|v| v.is_finite())) else {
             break;
         };
         if (problem.small_step)(&step, &x) && rn < config.stall_residual {
-            return Ok(done(x, rn, it));
+            return Ok(done(x, j, rn, it));
         }
         let mut lambda = 1.0;
         let mut accepted = false;
@@ -191,7 +195,7 @@ where
                 let rtn = (problem.norm)(&rt, &xn);
                 if rtn.is_finite() && rtn < rn * (1.0 - 1e-4 * lambda) {
                     if rn < config.stall_residual && rtn > 0.5 * rn {
-                        return Ok(done(xn, rtn, it + 1));
+                        return Ok(done(xn, jt, rtn, it + 1));
                     }
                     (x, r, j, rn) = (xn, rt, jt, rtn);
                     accepted = true;
@@ -202,13 +206,13 @@ where
         }
         if !accepted {
             if rn < config.tolerance * 1e3 {
-                return Ok(done(x, rn, it));
+                return Ok(done(x, j, rn, it));
             }
             break;
         }
     }
     if rn.is_finite() && rn < config.tolerance {
-        return Ok(done(x, rn, config.max_iterations));
+        return Ok(done(x, j, rn, config.max_iterations));
     }
-    Err(done(x, rn, config.max_iterations))
+    Err(done(x, j, rn, config.max_iterations))
 }

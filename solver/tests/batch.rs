@@ -55,14 +55,14 @@ fn ten_thousand_lines_round_trip_in_order() {
             Given::Force(v) => input.push_str(&format!("{:?},force,{v:?}\n", it.rho)),
         }
     }
-    let failing = solve_all(ModelId::Max, &items)
+    let failing = solve_all(&ModelId::Max, &items)
         .iter()
         .filter(|r| r.is_err())
         .count();
     let (out, _) = run(input.as_bytes(), if failing > 0 { 3 } else { 0 });
     let rows: Vec<&str> = out.lines().skip(1).collect();
     assert_eq!(rows.len(), items.len());
-    let direct = solve_all(ModelId::Max, &items);
+    let direct = solve_all(&ModelId::Max, &items);
     let mut states = 0;
     for (k, (row, (it, res))) in rows.iter().zip(items.iter().zip(&direct)).enumerate() {
         let f: Vec<&str> = row.splitn(13, ',').collect();
@@ -83,7 +83,7 @@ fn ten_thousand_lines_round_trip_in_order() {
         }
         // and the parallel batch equals the one-by-one solve (every 10th)
         if k % 10 == 0 {
-            assert_eq!(res, &solve_one(ModelId::Max, it));
+            assert_eq!(res, &solve_one(&ModelId::Max, it));
         }
     }
     assert!(states > 9000, "{states} states");

@@ -10,7 +10,9 @@
 //! [`poly`], the boundary slope, and the map's powers. Solves:
 //! - a state at given δ̄, F̄ or ā: Newton on (∇_c Π̄ = 0, control), started
 //!   from the circle at ρ = 1 (where every member has the circle's state)
-//!   and continued in μ = 1/ρ to the requested ρ;
+//!   and continued in μ = 1/ρ to the requested ρ; where that ends at a fold
+//!   in ρ first, bracketed by the states at fixed ā, which reach the pieces
+//!   of the family beyond it (`from_sizes`);
 //! - pull-off under load or displacement control: pseudo-arclength
 //!   continuation of the branch in (c, δ̄) from ā = [`TRACE_START_A`] towards
 //!   smaller contacts, to the first extremum of F̄ (load) or δ̄
@@ -21,7 +23,8 @@
 //! the closed disk ([`Conformal::univalence`]).
 //!
 //! Owns: [`Tables`], [`Conformal`], [`ConformalState`], the family's solves.
-//! May use: `generated::conformal`, `error`, nalgebra.
+//! May use: `generated::conformal`, `error`, `equations`, `newton`,
+//! nalgebra.
 
 pub mod poly;
 mod trace;
@@ -75,10 +78,12 @@ pub struct Conformal {
 #[derive(Debug)]
 struct Decoded {
     potential: poly::Decoded,
-    /// The rows of Π̄ that matter on the circle c = (c₁, 0, …, 0).
+    /// The rows of Π̄ on the circle c = (c₁, 0, …, 0) (its value and
+    /// derivatives in c₁ and δ̄ there).
     potential_circle: poly::Decoded,
     slope: Vec<(u16, poly::Decoded)>,
-    slope_circle: Vec<(u16, poly::Decoded)>,
+    /// The rows of ∂p̄/∂r at ζ = 1 (Σ of every mode's) on the circle.
+    slope_circle_at_zero: poly::Decoded,
 }
 
 static DECODED: [std::sync::OnceLock<Decoded>; poly::MAX_UNKNOWNS - 1] =
@@ -169,9 +174,18 @@ impl Conformal {
                             Some((n, poly::Decoded::new(&rows[..len], tables.terms)))
                         })
                         .collect();
+                    // Σ_n g_n = ∂p̄/∂r at θ = 0: every mode's rows in one
+                    // table
+                    let at_zero = poly::Decoded::sum(
+                        tables.slope_rows.iter().filter_map(|&(n, len)| {
+                            let (_, rows) = tables.slope.iter().find(|(m, _)| *m == n)?;
+                            Some(&rows[..len])
+                        }),
+                        tables.terms,
+                    );
                     Decoded {
-                        potential_circle: potential.near_circle(),
-                        slope_circle: slope.iter().map(|(n, d)| (*n, d.near_circle())).collect(),
+                        potential_circle: potential.on_circle(),
+                        slope_circle_at_zero: at_zero.on_circle(),
                         potential,
                         slope,
                     }
@@ -288,31 +302,18 @@ impl Conformal {
     /// coefficients evaluated once: cos nθ by the Chebyshev recurrence from
     /// cos θ, |w′| without `hypot` (no overflow at these sizes).
     fn slope(&self, x: &DVector<f64>, rho: f64) -> impl Fn((f64, f64)) -> f64 + '_ {
+        let s = self.slopes(x, rho);
+        move |u| s.at([u])[0]
+    }
+
+    /// ∂p̄/∂ν on the contour at x, its cosine coefficients evaluated once.
+    fn slopes(&self, x: &DVector<f64>, rho: f64) -> Slopes<'_> {
         let g = self.slope_coefficients(x, rho);
-        let c: Vec<f64> = x.as_slice()[..self.terms()].to_vec();
-        let top = g.iter().map(|(n, _)| *n as usize).max().unwrap_or(0);
-        move |(ct, st): (f64, f64)| {
-            // cos kθ, k = 0 … top: T_{k+1} = 2 cos θ T_k − T_{k−1}
-            let mut cos_k = [0.0f64; 128];
-            let mut slope = 0.0;
-            cos_k[0] = 1.0;
-            if top >= 1 {
-                cos_k[1] = ct;
-            }
-            for k in 2..=top.min(127) {
-                cos_k[k] = 2.0 * ct * cos_k[k - 1] - cos_k[k - 2];
-            }
-            for (n, gn) in &g {
-                let n = *n as usize;
-                slope += gn
-                    * if n < 128 {
-                        cos_k[n]
-                    } else {
-                        (n as f64 * st.atan2(ct)).cos()
-                    };
-            }
-            let (_, dw) = self.map(&c, (ct, st));
-            slope / (dw.0 * dw.0 + dw.1 * dw.1).sqrt()
+        debug_assert!(g.windows(2).all(|w| w[0].0 < w[1].0), "modes increase");
+        Slopes {
+            model: self,
+            g,
+            c: x.as_slice()[..self.terms()].to_vec(),
         }
     }
 
@@ -322,16 +323,28 @@ impl Conformal {
     pub fn bc_defect(&self, x: &DVector<f64>, rho: f64) -> f64 {
         // on θ = (π/2) j/180, j = 0 … 180, then the largest refined by
         // golden-section search within one grid step on either side
-        let slope = self.slope(x, rho);
-        let defect = |t: f64| (slope((t.cos(), t.sin())) - 1.0).abs();
-        let n = 180;
-        let h = std::f64::consts::FRAC_PI_2 / n as f64;
+        const N: usize = 180;
+        // (cos θ, sin θ) on the grid, tabulated once
+        static UNITS: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
+        let h = std::f64::consts::FRAC_PI_2 / N as f64;
+        let units = UNITS.get_or_init(|| {
+            (0..=N)
+                .map(|j| ((h * j as f64).cos(), (h * j as f64).sin()))
+                .collect()
+        });
+        let slopes = self.slopes(x, rho);
+        let defect = |t: f64| (slopes.at([(t.cos(), t.sin())])[0] - 1.0).abs();
         let (mut best, mut at) = (f64::NEG_INFINITY, 0.0);
-        for j in 0..=n {
-            let t = h * j as f64;
-            let v = defect(t);
-            if !(v <= best) {
-                (best, at) = (v, t);
+        // eight angles at a time (their recurrences interleave)
+        const W: usize = 8;
+        for (block, some) in units.chunks(W).enumerate() {
+            let mut u = [some[0]; W];
+            u[..some.len()].copy_from_slice(some);
+            for (i, v) in slopes.at(u).iter().take(some.len()).enumerate() {
+                let v = (v - 1.0).abs();
+                if !(v <= best) {
+                    (best, at) = (v, h * (W * block + i) as f64);
+                }
             }
         }
         let g = 0.5 * (5f64.sqrt() - 1.0);
@@ -358,7 +371,22 @@ impl Conformal {
     /// of w(e^{iθ}) must increase strictly with θ (a starlike contour, then
     /// the map is univalent by the argument principle); sampled at 1024
     /// angles.
+    ///
+    /// A sufficient condition is tried first: c₁ > 0 and Σ_{k≥2} n_k |c_k| <
+    /// c₁. Then w(ζ)/(c₁ζ) = 1 + Σ a_k ζ^(n_k − 1) with a_k = c_k/c₁ and
+    /// Σ n_k |a_k| < 1, so on the closed disk |ζw′/w − 1| ≤ Σ (n_k − 1)|a_k| /
+    /// (1 − Σ |a_k|) < 1: Re(ζw′/w) > 0, the argument of w(e^{iθ}) increases
+    /// strictly, and no sample is needed (Alexander's coefficient condition).
     pub fn univalence(&self, c: &[f64]) -> Result<()> {
+        if self.starlike_by_coefficients(c) {
+            return Ok(());
+        }
+        self.univalence_sampled(c)
+    }
+
+    /// The sampled test of [`Conformal::univalence`]: d arg w/dθ > 0 at 1024
+    /// angles.
+    fn univalence_sampled(&self, c: &[f64]) -> Result<()> {
         // ζ = e^{iθ}, θ = 2π(j + 1/2)/1024, tabulated once
         static UNITS: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
         let n = 1024;
@@ -388,6 +416,21 @@ impl Conformal {
         Ok(())
     }
 
+    /// Σ_{k≥2} n_k |c_k| < c₁ (with a margin of 1e-12 c₁ for rounding):
+    /// the sufficient condition of [`Conformal::univalence`].
+    fn starlike_by_coefficients(&self, c: &[f64]) -> bool {
+        let (first, rest) = match c.split_first() {
+            Some(v) => v,
+            None => return false,
+        };
+        let tail: f64 = rest
+            .iter()
+            .zip(&self.tables.powers[1..])
+            .map(|(ck, &n)| n as f64 * ck.abs())
+            .sum();
+        self.tables.powers[0] == 1 && *first > 0.0 && tail < first * (1.0 - 1e-12)
+    }
+
     /// The residuals (∇_c Π̄, control) at x = (c, δ̄), their Jacobian and
     /// the residuals' scale: the one model interface's [`held`] system.
     fn controlled(
@@ -407,8 +450,20 @@ impl Conformal {
     /// Damped Newton on (∇_c Π̄ = 0, control) in x = (c, δ̄) at ρ from
     /// `start` ([`crate::newton::damped`], the solver's one Newton).
     fn newton(&self, start: &DVector<f64>, rho: f64, control: Control) -> Result<DVector<f64>> {
+        self.newton_to(start, rho, control, 1e-13).map(|it| it.x)
+    }
+
+    /// [`Conformal::newton`] to the scaled residual `tolerance`; the
+    /// solution with the held system's Jacobian there.
+    fn newton_to(
+        &self,
+        start: &DVector<f64>,
+        rho: f64,
+        control: Control,
+        tolerance: f64,
+    ) -> Result<crate::newton::Iterate<nalgebra::Dyn>> {
         let config = crate::newton::NewtonConfig {
-            tolerance: 1e-13,
+            tolerance,
             max_iterations: 40,
             min_step: 1e-3,
             step_tolerance: 1e-13,
@@ -427,9 +482,7 @@ impl Conformal {
                 d.norm() < config.step_tolerance * (1.0 + x.norm())
             },
         };
-        crate::newton::damped(&problem, start.clone(), &config)
-            .map(|it| it.x)
-            .map_err(|it| {
+        crate::newton::damped(&problem, start.clone(), &config).map_err(|it| {
                 let (a, b) = self.semi_axes(&it.x.as_slice()[..self.terms()]);
                 Error::NoConvergence {
                     iterations: it.iterations,
@@ -441,10 +494,38 @@ impl Conformal {
             })
     }
 
+    /// dx/dμ (μ = 1/ρ) along the states at fixed `control` through x:
+    /// J dx/dμ = −∂r/∂μ with J the held system's Jacobian at x (given);
+    /// `None` where J is singular.
+    fn mu_tangent(
+        &self,
+        x: &DVector<f64>,
+        rho: f64,
+        control: Control,
+        j: DMatrix<f64>,
+    ) -> Option<DVector<f64>> {
+        let k = self.terms();
+        let d = poly::evaluate_mu_derivative(
+            &self.decoded.potential,
+            &x.as_slice()[..k],
+            x[k],
+            1.0 / rho,
+            1,
+        );
+        let r_mu = DVector::from_fn(k + 1, |i, _| match (i < k, control) {
+            (true, _) => d.grad[i],
+            (false, Control::Force(_)) => d.grad[k],
+            (false, _) => 0.0,
+        });
+        j.lu()
+            .solve(&(-r_mu))
+            .filter(|t| t.iter().all(|v| v.is_finite()))
+    }
+
     /// The circle's state at ρ = 1 under `control`: c = (ā, 0, …, 0) with
     /// ∂Π̄/∂c₁ = 0 solved for δ̄ (a quadratic: Π̄ is quadratic in δ̄), on the
     /// adhesive root (tensile edge, ∂p̄/∂ν = +1), then Newton on the control.
-    fn circle(&self, control: Control) -> Result<DVector<f64>> {
+    fn circle(&self, control: Control) -> Result<(DVector<f64>, Option<DMatrix<f64>>)> {
         let k = self.terms();
         let at = |a: f64| -> Option<DVector<f64>> {
             let x = |d: f64| {
@@ -474,13 +555,7 @@ impl Conformal {
             .find(|v| {
                 // the boundary slope at θ = 0 (w′(1) > 0 on the circle)
                 let c = &v.as_slice()[..k];
-                let g: f64 = self
-                    .decoded
-                    .slope_circle
-                    .iter()
-                    .map(|(_, d)| poly::evaluate(d, c, v[k], 1.0, 0).value)
-                    .sum();
-                g > 0.0
+                poly::evaluate(&self.decoded.slope_circle_at_zero, c, v[k], 1.0, 0).value > 0.0
             })
         };
         let value = |v: &DVector<f64>| match control {
@@ -500,7 +575,7 @@ impl Conformal {
         let target = match control {
             Control::Delta(d) => d,
             Control::Force(f) => f,
-            Control::Size(a) => return at(a).ok_or_else(|| no_circle(a)),
+            Control::Size(a) => return at(a).map(|x| (x, None)).ok_or_else(|| no_circle(a)),
         };
         // the circle's branch is explicit in ā: scan it from large ā down;
         // the first crossing is the stable state
@@ -511,28 +586,34 @@ impl Conformal {
                 let f = value(&v) - target;
                 if let Some((a0, f0)) = prev {
                     if f0 * f <= 0.0 {
-                        // the crossing on the circle's explicit branch by a
-                        // few Illinois steps (cheap: the circle's rows), then
-                        // Newton in every unknown
-                        let (mut lo, mut flo, mut hi, mut fhi) = (a, f, a0, f0);
+                        // the crossing on the circle's explicit branch by
+                        // the Illinois method to round-off (cheap: the
+                        // circle's rows), then Newton in every unknown
+                        // (which finds it solved); (a_keep, f_keep) is the
+                        // retained end, (a_new, f_new) the latest iterate
+                        let (mut a_keep, mut f_keep, mut a_new, mut f_new) = (a0, f0, a, f);
                         let mut start = v;
-                        for _ in 0..8 {
-                            let am = hi - fhi * (hi - lo) / (fhi - flo);
+                        for _ in 0..100 {
+                            if f_new == 0.0 {
+                                break;
+                            }
+                            let am = a_new - f_new * (a_new - a_keep) / (f_new - f_keep);
                             let Some(vm) = at(am) else { break };
                             let fm = value(&vm) - target;
                             start = vm;
-                            if fm == 0.0 {
+                            if fm == 0.0 || (am - a_new).abs() <= 4.0 * f64::EPSILON * am {
                                 break;
                             }
-                            if fm.signum() == fhi.signum() {
-                                (hi, fhi) = (am, fm);
-                                flo *= 0.5;
+                            if fm.signum() == f_new.signum() {
+                                f_keep *= 0.5; // Illinois: the retained end's value halved
                             } else {
-                                (lo, flo) = (am, fm);
-                                fhi *= 0.5;
+                                (a_keep, f_keep) = (a_new, f_new);
                             }
+                            (a_new, f_new) = (am, fm);
                         }
-                        return self.newton(&start, 1.0, control);
+                        return self
+                            .newton_to(&start, 1.0, control, 1e-13)
+                            .map(|it| (it.x, Some(it.jacobian)));
                     }
                 }
                 prev = Some((a, f));
@@ -546,30 +627,45 @@ impl Conformal {
     }
 
     /// Continue a state from ρ = 1 to `rho` at fixed control, in steps of
-    /// μ = 1/ρ that halve on failure.
+    /// ρ of at most 0.1 that halve on failure, each a Newton solve to 1e-13
+    /// from a guess by the tangents dx/dμ (from the Jacobian the last Newton
+    /// ended with): Euler's from the circle, then the cubic through the last
+    /// two states and their tangents (Hermite). A step is kept when Newton
+    /// lands within half the step of the guess: the guess's error is of
+    /// second order in the step, so a larger correction is another sheet of
+    /// states. The walk stays on the sheet it starts on and ends where that
+    /// folds in ρ (states solved only to 1e-8 on the way were off by up to
+    /// 1e-5 near such a fold, and were dropped for that).
     fn continue_in_rho(
         &self,
         x1: DVector<f64>,
+        j1: DMatrix<f64>,
         rho: f64,
         control: Control,
     ) -> Result<DVector<f64>> {
-        // steps in ρ of at most 0.1; each Newton starts from the secant
-        // through the last two states
-        let mut x = x1;
-        let mut last: Option<(DVector<f64>, f64)> = None;
+        let (mut x, mut j) = (x1, j1);
+        // the state and its tangent one step back, with its μ
+        let mut before: Option<(DVector<f64>, DVector<f64>, f64)> = None;
         walk_rho(1.0, rho, 0.1, |rho_now, next| {
-            let guess = match &last {
-                Some((xp, rp)) => &x + (&x - xp) * ((rho_now - next) / (rp - rho_now)),
-                None => x.clone(),
+            let (mu, mu_next) = (1.0 / rho_now, 1.0 / next);
+            let tangent = self.mu_tangent(&x, rho_now, control, j.clone());
+            let guess = match (&tangent, &before) {
+                (Some(t), Some((xp, tp, mp))) => hermite(xp, tp, *mp, &x, t, mu, mu_next),
+                (Some(t), None) => &x + t * (mu_next - mu),
+                (None, _) => return false,
             };
+            let reach = 0.5 * (&guess - &x).amax() + 1e-9 * (1.0 + x.amax());
             // univalence is checked at the state reached (`state`)
             let found = self
-                .newton(&guess, next, control)
+                .newton_to(&guess, next, control, 1e-13)
                 .ok()
-                .filter(|y| (y - &x).amax() < 0.5 * (1.0 + x.amax()));
-            found
-                .map(|y| last = Some((std::mem::replace(&mut x, y), rho_now)))
-                .is_some()
+                .filter(|it| (&it.x - &guess).amax() < reach);
+            let (Some(it), Some(t)) = (found, tangent) else {
+                return false;
+            };
+            j = it.jacobian;
+            before = Some((std::mem::replace(&mut x, it.x), t, mu));
+            true
         })
         .map_err(|rho_now| {
             Error::NoState(format!(
@@ -590,9 +686,114 @@ impl Conformal {
             Control::Force(f) => check_range("force", f, true, "finite").map(|_| ())?,
             Control::Size(a) => check_range("a", a, a > 0.0, "(0, inf)").map(|_| ())?,
         }
-        let x1 = self.circle(control)?;
-        let x = self.continue_in_rho(x1, rho, control)?;
+        let (x1, j1) = self.circle(control)?;
+        let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, control).1);
+        let a_circle = x1[0];
+        let x = match self.continue_in_rho(x1, j1, rho, control) {
+            Ok(x) => x,
+            Err(first) => self.from_sizes(rho, control, a_circle).map_err(|e| {
+                Error::NoState(format!(
+                    "{}; {}",
+                    first.to_string().trim_start_matches("no contact state: "),
+                    e.to_string().trim_start_matches("no contact state: ")
+                ))
+            })?,
+        };
         self.state(&x, rho)
+    }
+
+    /// The state at `control` between two states at fixed ā whose control
+    /// values minus the target, `va` and `vb`, have opposite signs: the
+    /// Illinois method in ā, each state at fixed ā by Newton from the
+    /// nearer known one, to 1e-12 in ā; then Newton under the control from
+    /// the last (which it finds solved or nearly). `None` where a state at
+    /// fixed ā in between is not found.
+    fn between_sizes(
+        &self,
+        rho: f64,
+        control: Control,
+        (xa, va): (&DVector<f64>, f64),
+        (xb, vb): (&DVector<f64>, f64),
+        value: &dyn Fn(&DVector<f64>) -> f64,
+    ) -> Option<DVector<f64>> {
+        let k = self.terms();
+        let size = |x: &DVector<f64>| -> f64 { x.rows(0, k).sum() };
+        let (mut keep, mut newest) = ((xa.clone(), va), (xb.clone(), vb));
+        for _ in 0..60 {
+            let (ak, an) = (size(&keep.0), size(&newest.0));
+            if newest.1 == 0.0 || (an - ak).abs() < 1e-12 * an {
+                break;
+            }
+            let am = an - newest.1 * (an - ak) / (newest.1 - keep.1);
+            let w = (am - ak) / (an - ak);
+            let guess = &keep.0 + (&newest.0 - &keep.0) * w;
+            let xm = self.newton(&guess, rho, Control::Size(am)).ok()?;
+            let vm = value(&xm);
+            let vm = vm - (value(&newest.0) - newest.1); // minus the target
+            if vm.signum() == newest.1.signum() {
+                keep.1 *= 0.5; // Illinois: the retained end's value halved
+            } else {
+                keep = newest;
+            }
+            newest = (xm, vm);
+        }
+        self.newton(&newest.0, rho, control).ok()
+    }
+
+    /// The state at `control` (δ̄ or F̄) bracketed by near-elliptic states
+    /// at fixed ā: on the grid ā_j = ā₀(1 + 0.01 j), j = 0, 1, … 30, then
+    /// j = −1 … −30, each the state at that ā continued in ρ from the circle;
+    /// the first two neighbours that are both near-elliptic (defect of (3)₂
+    /// below 1e-2) and whose control values bracket the target give the
+    /// start, interpolated linearly between them, for Newton under the
+    /// control. The route where the state at fixed control, continued in ρ,
+    /// ends at a fold in ρ first: the states at fixed ā reach the pieces of
+    /// the family that lie beyond it.
+    fn from_sizes(&self, rho: f64, control: Control, a0: f64) -> Result<DVector<f64>> {
+        let k = self.terms();
+        let (target, value): (f64, Box<dyn Fn(&DVector<f64>) -> f64>) = match control {
+            Control::Delta(d) => (d, Box::new(move |x: &DVector<f64>| x[k])),
+            Control::Force(f) => (f, Box::new(|x: &DVector<f64>| self.potential_to(x, rho, 1).grad[k])),
+            Control::Size(_) => {
+                return Err(Error::NoState(format!(
+                    "{}: no other route to a state at given a",
+                    self.name()
+                )))
+            }
+        };
+        let near_elliptic = |a: f64| -> Option<(DVector<f64>, f64)> {
+            let (x1, j1) = self.circle(Control::Size(a)).ok()?;
+            let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, Control::Size(a)).1);
+            let x = self
+                .continue_in_rho(x1, j1, rho, Control::Size(a))
+                .ok()?;
+            (self.univalence(&x.as_slice()[..k]).is_ok() && self.bc_defect(&x, rho) < 1e-2)
+                .then(|| {
+                    let v = value(&x) - target;
+                    (x, v)
+                })
+        };
+        for side in [1.0, -1.0] {
+            let mut last = if side > 0.0 { None } else { near_elliptic(a0) };
+            let first = if side > 0.0 { 0 } else { 1 };
+            for j in first..=30 {
+                let here = near_elliptic(a0 * (1.0 + 0.01 * side * j as f64));
+                if let (Some((xa, va)), Some((xb, vb))) = (&last, &here) {
+                    if va * vb <= 0.0 {
+                        if let Some(x) = self.between_sizes(rho, control, (xa, *va), (xb, *vb), &value) {
+                            return Ok(x);
+                        }
+                    }
+                }
+                last = here;
+            }
+        }
+        Err(Error::NoState(format!(
+            "{}: no two near-elliptic states at fixed a within 30 % of the circle's a = {:.4} bracket {control} at rho = {}",
+            self.name(),
+            a0,
+            short(rho)
+        )))
     }
 
     /// The zero-force state at `rho`.
@@ -775,7 +976,8 @@ fn walk_rho(
 ) -> std::result::Result<(), f64> {
     let (mut rho_now, mut step) = (from, max_step);
     while rho_now > to {
-        let next = (rho_now - step).max(to);
+        // a step that would stop within 1e-9 of the end goes to the end
+        let next = if rho_now - step - to < 1e-9 { to } else { rho_now - step };
         if advance(rho_now, next) {
             rho_now = next;
             step = (step * 1.5).min(max_step);
@@ -786,6 +988,63 @@ fn walk_rho(
         }
     }
     Ok(())
+}
+
+/// ∂p̄/∂ν on the contour of one state: its cosine coefficients g_n of
+/// ∂p̄/∂r and the map's coefficients.
+struct Slopes<'a> {
+    model: &'a Conformal,
+    g: Vec<(f64, f64)>,
+    c: Vec<f64>,
+}
+
+impl Slopes<'_> {
+    /// ∂p̄/∂ν at N points e^{iθ} = (cos θ, sin θ): cos nθ by the
+    /// Chebyshev recurrence T_{k+1} = 2 cos θ T_k − T_{k−1}, taken as the
+    /// modes (increasing) come, N recurrences side by side; |w′| without
+    /// `hypot` (no overflow at these sizes).
+    fn at<const N: usize>(&self, u: [(f64, f64); N]) -> [f64; N] {
+        let ct = u.map(|u| u.0);
+        // T_{−1} = T_1, T_0 = 1
+        let (mut t_prev, mut t_k, mut k) = (ct, [1.0; N], 0usize);
+        let mut slope = [0.0; N];
+        for &(n, gn) in &self.g {
+            let n = n as usize;
+            while k < n {
+                for i in 0..N {
+                    (t_prev[i], t_k[i]) = (t_k[i], 2.0 * ct[i] * t_k[i] - t_prev[i]);
+                }
+                k += 1;
+            }
+            for i in 0..N {
+                slope[i] += gn * t_k[i];
+            }
+        }
+        std::array::from_fn(|i| {
+            let (_, dw) = self.model.map(&self.c, u[i]);
+            slope[i] / (dw.0 * dw.0 + dw.1 * dw.1).sqrt()
+        })
+    }
+}
+
+/// The cubic through (μ₀, x₀) and (μ₁, x₁) with slopes t₀ and t₁ (Hermite),
+/// at μ.
+fn hermite(
+    x0: &DVector<f64>,
+    t0: &DVector<f64>,
+    mu0: f64,
+    x1: &DVector<f64>,
+    t1: &DVector<f64>,
+    mu1: f64,
+    mu: f64,
+) -> DVector<f64> {
+    let h = mu1 - mu0;
+    let s = (mu - mu0) / h;
+    let (s2, s3) = (s * s, s * s * s);
+    x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
+        + t0 * (h * (s3 - 2.0 * s2 + s))
+        + x1 * (3.0 * s2 - 2.0 * s3)
+        + t1 * (h * (s3 - s2))
 }
 
 fn positive_definite(h: &DMatrix<f64>) -> bool {
@@ -816,6 +1075,80 @@ fn check_rho(rho: f64) -> Result<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The Hermite cubic is exact for cubics, and extrapolates them too.
+    #[test]
+    fn hermite_reproduces_a_cubic() {
+        let f = |m: f64| DVector::from_vec(vec![m * m * m - 2.0 * m, 1.0 + 0.5 * m * m]);
+        let df = |m: f64| DVector::from_vec(vec![3.0 * m * m - 2.0, m]);
+        for mu in [0.3, 1.0, 1.7, 2.5] {
+            let p = hermite(&f(1.0), &df(1.0), 1.0, &f(1.4), &df(1.4), 1.4, mu);
+            assert!((p - f(mu)).amax() < 1e-12, "{mu}");
+        }
+    }
+
+    #[test]
+    fn the_tangent_in_rho_is_the_derivative_of_the_states() {
+        let h = 1e-4;
+        for (k, control) in [
+            (4, Control::Force(1.0)),
+            (6, Control::Delta(1.5)),
+            (8, Control::Size(2.7)),
+        ] {
+            let m = Conformal::new(k).unwrap();
+            let at = |mu: f64| {
+                let st = m.solve(1.0 / mu, control).unwrap();
+                DVector::from_vec(st.coefficients).push(st.delta_bar)
+            };
+            let mu = 1.25;
+            let fd = (at(mu + h) - at(mu - h)) / (2.0 * h);
+            let x = at(mu);
+            let j = m.controlled(&x, 1.0 / mu, control).1;
+            let t = m.mu_tangent(&x, 1.0 / mu, control, j).unwrap();
+            assert!(
+                (&t - &fd).amax() < 1e-6 * (1.0 + fd.amax()),
+                "K = {k}: {t} vs {fd}"
+            );
+        }
+    }
+
+    /// Where the coefficient condition accepts a map, the sampled test
+    /// accepts it too (the condition is sufficient); maps just beyond it
+    /// exist that are still univalent, and ones that are not are rejected by
+    /// the samples. Pseudo-random maps of every member, c₁ = 1.
+    #[test]
+    fn the_coefficient_condition_implies_the_sampled_test() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut accepted, mut beyond_univalent, mut rejected) = (0, 0, 0);
+        for k in 2..=8 {
+            let m = Conformal::new(k).unwrap();
+            for _ in 0..400 {
+                let mut c = vec![1.0];
+                for _ in 1..k {
+                    c.push((2.0 * next() - 1.0) * 0.6 / k as f64);
+                }
+                let sampled = m.univalence_sampled(&c);
+                if m.starlike_by_coefficients(&c) {
+                    accepted += 1;
+                    assert!(sampled.is_ok(), "{c:?}");
+                } else if sampled.is_ok() {
+                    beyond_univalent += 1;
+                } else {
+                    rejected += 1;
+                }
+            }
+        }
+        assert!(
+            accepted > 100 && beyond_univalent > 10 && rejected > 10,
+            "{accepted} {beyond_univalent} {rejected}"
+        );
+    }
 
     /// Where the direct route works, the pull-off continued in ρ from
     /// above lands on the same state: the continuation tracks the

@@ -91,21 +91,26 @@ impl Decoded {
 }
 
 impl Decoded {
-    /// The rows that can contribute, up to second derivatives, where every
-    /// coefficient but c₁ vanishes (the circle): those whose exponents of
-    /// c₂ … c_K add up to at most 2.
-    pub fn near_circle(&self) -> Decoded {
+    /// The sum of several tables' polynomials, decoded (rows grouped by
+    /// their c-exponents).
+    pub fn sum<'a>(tables: impl Iterator<Item = &'a [(u64, f64)]>, k: usize) -> Decoded {
+        let mut rows: Vec<(u64, f64)> = tables.flatten().copied().collect();
+        let c_mask = (1u64 << DBAR_SHIFT) - 1;
+        rows.sort_by_key(|&(p, _)| p & c_mask);
+        Decoded::new(&rows, k)
+    }
+
+    /// The rows that are not zero where every coefficient but c₁ vanishes
+    /// (the circle): those without c₂ … c_K. They give the value and the
+    /// derivatives in c₁ and δ̄ there, not those in c₂ … c_K.
+    pub fn on_circle(&self) -> Decoded {
         let mut out = Decoded {
             k: self.k,
             groups: Vec::new(),
             rows: Vec::new(),
         };
         for g in &self.groups {
-            let others: u32 = (0..g.m as usize)
-                .filter(|&x| g.idx[x] != 0)
-                .map(|x| g.exp[x] as u32)
-                .sum();
-            if others <= 2 {
+            if (0..g.m as usize).all(|x| g.idx[x] == 0) {
                 let mut h = g.clone();
                 h.first = out.rows.len() as u32;
                 out.rows
@@ -121,6 +126,16 @@ impl Decoded {
 /// `order` (0: value; 1: and the gradient; 2: and the Hessian).
 /// `c.len()` must be the table's K.
 pub fn evaluate(t: &Decoded, c: &[f64], dbar: f64, mu: f64, order: u8) -> Second {
+    evaluate_in(t, c, dbar, mu, order, false)
+}
+
+/// The derivative in μ of [`evaluate`]'s value, gradient and Hessian (the
+/// rows' μ exponents differentiated exactly).
+pub fn evaluate_mu_derivative(t: &Decoded, c: &[f64], dbar: f64, mu: f64, order: u8) -> Second {
+    evaluate_in(t, c, dbar, mu, order, true)
+}
+
+fn evaluate_in(t: &Decoded, c: &[f64], dbar: f64, mu: f64, order: u8, d_mu: bool) -> Second {
     let k = t.k;
     assert_eq!(c.len(), k, "one value per map coefficient");
     let n = k + 1;
@@ -153,7 +168,13 @@ pub fn evaluate(t: &Decoded, c: &[f64], dbar: f64, mu: f64, order: u8) -> Second
         }
         let (mut a0, mut a1, mut a2) = (0.0, 0.0, 0.0);
         for &(dp, q, kappa) in &t.rows[g.first as usize..(g.first + g.len) as usize] {
-            let (dp, coef) = (dp as usize, kappa * mu_pw[q as usize]);
+            let q = q as usize;
+            let coef = match (d_mu, q) {
+                (false, _) => kappa * mu_pw[q],
+                (true, 0) => continue,
+                (true, _) => kappa * q as f64 * mu_pw[q - 1],
+            };
+            let dp = dp as usize;
             a0 += coef * d_pw[dp];
             if dp >= 1 {
                 a1 += coef * dp as f64 * d_pw[dp - 1];
@@ -257,6 +278,31 @@ mod tests {
         let v = 2.0 * c1.powi(3) * c2 * d * mu + c2 * c2 * d * d - c1;
         assert!((s.value - v).abs() < 1e-14);
         assert!((value(&rows, &[c1, c2], d, mu) - v).abs() < 1e-14);
+        // on the circle (c₂ = 0) the rows without c₂ give the value and the
+        // derivatives in c₁ and δ̄
+        let full = evaluate(&Decoded::new(&rows, 2), &[c1, 0.0], d, mu, 2);
+        let circle = evaluate(&Decoded::new(&rows, 2).on_circle(), &[c1, 0.0], d, mu, 2);
+        for (a, b) in [
+            (full.value, circle.value),
+            (full.grad[0], circle.grad[0]),
+            (full.grad[2], circle.grad[2]),
+            (full.hess[0][0], circle.hess[0][0]),
+            (full.hess[0][2], circle.hess[0][2]),
+            (full.hess[2][2], circle.hess[2][2]),
+        ] {
+            assert_eq!(a, b);
+        }
+        // the same polynomial as a sum of two tables (rows interleaved)
+        let summed = Decoded::sum([&rows[..1], &rows[1..]].into_iter(), 2);
+        let t = evaluate(&summed, &[c1, c2], d, mu, 2);
+        assert!((t.value - v).abs() < 1e-14 && (t.hess[0][1] - s.hess[0][1]).abs() < 1e-14);
+        // ∂/∂μ: only the middle row depends on μ, linearly
+        let dm = evaluate_mu_derivative(&Decoded::new(&rows, 2), &[c1, c2], d, mu, 2);
+        assert!((dm.value - 2.0 * c1.powi(3) * c2 * d).abs() < 1e-14);
+        assert!((dm.grad[0] - 6.0 * c1 * c1 * c2 * d).abs() < 1e-13);
+        assert!((dm.grad[1] - 2.0 * c1.powi(3) * d).abs() < 1e-13);
+        assert!((dm.grad[2] - 2.0 * c1.powi(3) * c2).abs() < 1e-13);
+        assert!((dm.hess[0][1] - 6.0 * c1 * c1 * d).abs() < 1e-13);
         let g = [
             6.0 * c1 * c1 * c2 * d * mu - 1.0,
             2.0 * c1.powi(3) * d * mu + 2.0 * c2 * d * d,
