@@ -21,7 +21,12 @@ use thinjkr::conformal::{self, Conformal, PullOffControl};
 use thinjkr::exact::branch::ExactControl;
 use thinjkr::{Contact, Error, ModelId};
 
-pyo3::create_exception!(_thinjkr, RawError, PyException, "A solver error: args (kind, message).");
+pyo3::create_exception!(
+    _thinjkr,
+    RawError,
+    PyException,
+    "A solver error: args (kind, message)."
+);
 
 fn raw(e: Error) -> PyErr {
     RawError::new_err((e.kind(), e.to_string()))
@@ -85,7 +90,9 @@ fn solve_one(model: Choice, rho: f64, control: &str, value: f64) -> thinjkr::Res
                     .at_contact_size(value)?
                     .into_iter()
                     .next()
-                    .ok_or_else(|| Error::NoState(format!("no state with a = {value} at rho = {rho}")))?,
+                    .ok_or_else(|| {
+                        Error::NoState(format!("no state with a = {value} at rho = {rho}"))
+                    })?,
             };
             Ok(json(&st))
         }
@@ -117,7 +124,9 @@ fn solve_one(model: Choice, rho: f64, control: &str, value: f64) -> thinjkr::Res
 fn check_control(control: &str) -> PyResult<()> {
     match control {
         "delta" | "force" | "a" => Ok(()),
-        other => Err(usage(format!("control must be delta, force or a (got '{other}')"))),
+        other => Err(usage(format!(
+            "control must be delta, force or a (got '{other}')"
+        ))),
     }
 }
 
@@ -128,7 +137,11 @@ fn items_of(rho: &[f64], value: &[f64], control: &str) -> Vec<Item> {
         .zip(value)
         .map(|(&rho, &v)| Item {
             rho,
-            given: if control == "delta" { Given::Delta(v) } else { Given::Force(v) },
+            given: if control == "delta" {
+                Given::Delta(v)
+            } else {
+                Given::Force(v)
+            },
         })
         .collect()
 }
@@ -149,7 +162,14 @@ where
         .map(|r| {
             r.map(|st| {
                 let row = thinjkr::batch::Row::from(&st);
-                [row.a_bar, row.b_bar, row.s, row.delta_bar, row.force_bar, row.bc_error]
+                [
+                    row.a_bar,
+                    row.b_bar,
+                    row.s,
+                    row.delta_bar,
+                    row.force_bar,
+                    row.bc_error,
+                ]
             })
             .map_err(&err)
         })
@@ -162,7 +182,8 @@ fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> Py
     let m = choice(model)?;
     check_control(control)?;
     let control = control.to_string();
-    py.detach(move || solve_one(m, rho, &control, value)).map_err(raw)
+    py.detach(move || solve_one(m, rho, &control, value))
+        .map_err(raw)
 }
 
 /// Many states on all cores: arrays (a_bar, b_bar, s, delta_bar,
@@ -193,8 +214,12 @@ fn solve_many<'py>(
     type Row = Result<[f64; 6], (String, String)>;
     let err = |e: Error| (e.kind().to_string(), e.to_string());
     let rows: Vec<Row> = py.detach(|| match (m, control.as_str()) {
-        (Choice::Approx(id), "delta" | "force") => rows_of(&id, &items_of(&rho, &value, &control), err),
-        (Choice::Conformal(m), "delta" | "force") => rows_of(&m, &items_of(&rho, &value, &control), err),
+        (Choice::Approx(id), "delta" | "force") => {
+            rows_of(&id, &items_of(&rho, &value, &control), err)
+        }
+        (Choice::Conformal(m), "delta" | "force") => {
+            rows_of(&m, &items_of(&rho, &value, &control), err)
+        }
         _ => rho
             .par_iter()
             .zip(value.par_iter())
@@ -207,7 +232,9 @@ fn solve_many<'py>(
                 let g = |keys: &[&str]| {
                     keys.iter()
                         .find_map(|k| j.get(*k).and_then(|x| x.as_f64()))
-                        .ok_or_else(|| ("usage".to_string(), format!("the state has no {}", keys[0])))
+                        .ok_or_else(|| {
+                            ("usage".to_string(), format!("the state has no {}", keys[0]))
+                        })
                 };
                 Ok([
                     g(&["a_bar"])?,
@@ -255,13 +282,21 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
     let load = match control {
         "load" => true,
         "displacement" => false,
-        other => return Err(usage(format!("control must be load or displacement (got '{other}')"))),
+        other => {
+            return Err(usage(format!(
+                "control must be load or displacement (got '{other}')"
+            )))
+        }
     };
     py.detach(move || -> thinjkr::Result<String> {
         match m {
             Choice::Approx(id) => {
                 let c = Contact::with_model(id, rho)?;
-                let p = if load { c.pull_off_load()? } else { c.pull_off_displacement()? };
+                let p = if load {
+                    c.pull_off_load()?
+                } else {
+                    c.pull_off_displacement()?
+                };
                 Ok(json(&serde_json::json!({
                     "state": p.state,
                     "basis": p.basis,
@@ -269,7 +304,11 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
                 })))
             }
             Choice::Conformal(k) => {
-                let ctl = if load { PullOffControl::Load } else { PullOffControl::Displacement };
+                let ctl = if load {
+                    PullOffControl::Load
+                } else {
+                    PullOffControl::Displacement
+                };
                 let (st, _) = k.pull_off(rho, ctl)?;
                 Ok(json(&serde_json::json!({ "state": st })))
             }
@@ -295,11 +334,20 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
 /// escalation 12, 16, 24, 32, 48.
 #[pyfunction]
 #[pyo3(signature = (rho, what, value, modes=None))]
-fn exact(py: Python<'_>, rho: f64, what: &str, value: f64, modes: Option<usize>) -> PyResult<String> {
+fn exact(
+    py: Python<'_>,
+    rho: f64,
+    what: &str,
+    value: f64,
+    modes: Option<usize>,
+) -> PyResult<String> {
     use thinjkr::exact::{default_tries, resolved, Exact, Truncation};
     let tries = match modes {
         None => default_tries(),
-        Some(m) if (1..=64).contains(&m) => vec![Truncation { modes: m, points: 16 * m }],
+        Some(m) if (1..=64).contains(&m) => vec![Truncation {
+            modes: m,
+            points: 16 * m,
+        }],
         Some(m) => {
             return Err(raw(Error::OutOfRange {
                 name: "modes",
@@ -315,9 +363,15 @@ fn exact(py: Python<'_>, rho: f64, what: &str, value: f64, modes: Option<usize>)
                 let (st, _) = resolved(rho, &tries, Exact::pull_off_load)?;
                 Ok(json(&st))
             }
-            "delta" => Ok(json(&resolved(rho, &tries, |ex| ex.at(ExactControl::Delta(value)))?)),
-            "force" => Ok(json(&resolved(rho, &tries, |ex| ex.at(ExactControl::Force(value)))?)),
-            other => Err(Error::Usage(format!("what must be delta, force or pull_off (got '{other}')"))),
+            "delta" => Ok(json(&resolved(rho, &tries, |ex| {
+                ex.at(ExactControl::Delta(value))
+            })?)),
+            "force" => Ok(json(&resolved(rho, &tries, |ex| {
+                ex.at(ExactControl::Force(value))
+            })?)),
+            other => Err(Error::Usage(format!(
+                "what must be delta, force or pull_off (got '{other}')"
+            ))),
         }
     })
     .map_err(raw)
@@ -353,7 +407,13 @@ fn exact_contour<'py>(
 /// past pull-off: JSON of its states and folds (for `conformal:K` also
 /// each state's arm and how the arms end).
 #[pyfunction]
-fn curve(py: Python<'_>, model: &str, rho: f64, points: usize, delta_start: f64) -> PyResult<String> {
+fn curve(
+    py: Python<'_>,
+    model: &str,
+    rho: f64,
+    points: usize,
+    delta_start: f64,
+) -> PyResult<String> {
     let id = match choice(model)? {
         Choice::Approx(id) => id,
         Choice::Conformal(m) => {
@@ -378,7 +438,9 @@ fn curve(py: Python<'_>, model: &str, rho: f64, points: usize, delta_start: f64)
     py.detach(move || -> thinjkr::Result<String> {
         let c = Contact::with_model(id, rho)?;
         let cv = thinjkr::curve::trace(&c, points, delta_start)?;
-        Ok(json(&serde_json::json!({ "states": cv.states, "folds": cv.folds })))
+        Ok(json(
+            &serde_json::json!({ "states": cv.states, "folds": cv.folds }),
+        ))
     })
     .map_err(raw)
 }
@@ -388,7 +450,12 @@ fn curve(py: Python<'_>, model: &str, rho: f64, points: usize, delta_start: f64)
 /// both are None: JSON of the physical state.
 #[pyfunction]
 #[pyo3(signature = (cylinders_json, delta=None, force=None))]
-fn physical(py: Python<'_>, cylinders_json: &str, delta: Option<f64>, force: Option<f64>) -> PyResult<String> {
+fn physical(
+    py: Python<'_>,
+    cylinders_json: &str,
+    delta: Option<f64>,
+    force: Option<f64>,
+) -> PyResult<String> {
     let cyl: thinjkr::units::Cylinders =
         serde_json::from_str(cylinders_json).map_err(|e| usage(format!("{e}")))?;
     py.detach(move || -> thinjkr::Result<String> {
@@ -415,7 +482,9 @@ fn _batch_api_seconds(
     value: PyReadonlyArray1<'_, f64>,
 ) -> PyResult<f64> {
     let Choice::Approx(id) = choice(model)? else {
-        return Err(usage("the batch API serves the models of the ellipse".into()));
+        return Err(usage(
+            "the batch API serves the models of the ellipse".into(),
+        ));
     };
     let items: Vec<Item> = rho
         .as_slice()?
@@ -423,7 +492,11 @@ fn _batch_api_seconds(
         .zip(value.as_slice()?)
         .map(|(&rho, &v)| Item {
             rho,
-            given: if control == "delta" { Given::Delta(v) } else { Given::Force(v) },
+            given: if control == "delta" {
+                Given::Delta(v)
+            } else {
+                Given::Force(v)
+            },
         })
         .collect();
     Ok(py.detach(move || {
@@ -438,7 +511,14 @@ fn _batch_api_seconds(
 /// For the benchmark: seconds per call of one solve in Rust (the work of
 /// one scalar `solve`), over `repeat` calls.
 #[pyfunction]
-fn _scalar_seconds(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64, repeat: usize) -> PyResult<f64> {
+fn _scalar_seconds(
+    py: Python<'_>,
+    model: &str,
+    rho: f64,
+    control: &str,
+    value: f64,
+    repeat: usize,
+) -> PyResult<f64> {
     let m = choice(model)?;
     check_control(control)?;
     let control = control.to_string();

@@ -537,9 +537,7 @@ fn pull_off_command(
 /// solved on all cores; the exit status says whether every line solved.
 fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
     use std::io::{BufRead, IsTerminal};
-    use thinjkr::batch::{
-        csv_row_values, decode_line, parse_line, solve_all, Row, CSV_HEADER,
-    };
+    use thinjkr::batch::{csv_row_values, decode_line, parse_line, solve_all, Row, CSV_HEADER};
     if matches!(model, ModelChoice::Exact) {
         return Err(thinjkr::Error::Unavailable {
             model: "exact",

@@ -170,7 +170,10 @@ where
     let mut x = start;
     let (mut r, mut j) = (problem.equations)(&x);
     let mut rn = (problem.norm)(&r, &x);
-    let done = |x: OVector<f64, D>, jacobian: OMatrix<f64, D, D>, residual: f64, iterations: usize| Iterate {
+    let done = |x: OVector<f64, D>,
+                jacobian: OMatrix<f64, D, D>,
+                residual: f64,
+                iterations: usize| Iterate {
         x,
         jacobian,
         residual,

@@ -12,7 +12,7 @@
 //!   from the circle at ρ = 1 (where every member has the circle's state)
 //!   and continued in μ = 1/ρ to the requested ρ; where that ends at a fold
 //!   in ρ first, bracketed by the states at fixed ā, which reach the pieces
-//!   of the family beyond it (`from_sizes`);
+//!   of the family beyond it (`bracketed_by_sizes`);
 //! - pull-off under load or displacement control: pseudo-arclength
 //!   continuation of the branch in (c, δ̄) from ā = [`TRACE_START_A`] towards
 //!   smaller contacts, to the first extremum of F̄ (load) or δ̄
@@ -483,15 +483,15 @@ impl Conformal {
             },
         };
         crate::newton::damped(&problem, start.clone(), &config).map_err(|it| {
-                let (a, b) = self.semi_axes(&it.x.as_slice()[..self.terms()]);
-                Error::NoConvergence {
-                    iterations: it.iterations,
-                    a_bar: a,
-                    s: b / a,
-                    residual: it.residual,
-                    context: format!("{} at rho = {}", self.name(), short(rho)),
-                }
-            })
+            let (a, b) = self.semi_axes(&it.x.as_slice()[..self.terms()]);
+            Error::NoConvergence {
+                iterations: it.iterations,
+                a_bar: a,
+                s: b / a,
+                residual: it.residual,
+                context: format!("{} at rho = {}", self.name(), short(rho)),
+            }
+        })
     }
 
     /// dx/dμ (μ = 1/ρ) along the states at fixed `control` through x:
@@ -691,13 +691,15 @@ impl Conformal {
         let a_circle = x1[0];
         let x = match self.continue_in_rho(x1, j1, rho, control) {
             Ok(x) => x,
-            Err(first) => self.from_sizes(rho, control, a_circle).map_err(|e| {
-                Error::NoState(format!(
-                    "{}; {}",
-                    first.to_string().trim_start_matches("no contact state: "),
-                    e.to_string().trim_start_matches("no contact state: ")
-                ))
-            })?,
+            Err(first) => self
+                .bracketed_by_sizes(rho, control, a_circle)
+                .map_err(|e| {
+                    Error::NoState(format!(
+                        "{}; {}",
+                        first.to_string().trim_start_matches("no contact state: "),
+                        e.to_string().trim_start_matches("no contact state: ")
+                    ))
+                })?,
         };
         self.state(&x, rho)
     }
@@ -749,11 +751,10 @@ impl Conformal {
     /// control. The route where the state at fixed control, continued in ρ,
     /// ends at a fold in ρ first: the states at fixed ā reach the pieces of
     /// the family that lie beyond it.
-    fn from_sizes(&self, rho: f64, control: Control, a0: f64) -> Result<DVector<f64>> {
+    fn bracketed_by_sizes(&self, rho: f64, control: Control, a0: f64) -> Result<DVector<f64>> {
         let k = self.terms();
-        let (target, value): (f64, Box<dyn Fn(&DVector<f64>) -> f64>) = match control {
-            Control::Delta(d) => (d, Box::new(move |x: &DVector<f64>| x[k])),
-            Control::Force(f) => (f, Box::new(|x: &DVector<f64>| self.potential_to(x, rho, 1).grad[k])),
+        let target = match control {
+            Control::Delta(v) | Control::Force(v) => v,
             Control::Size(_) => {
                 return Err(Error::NoState(format!(
                     "{}: no other route to a state at given a",
@@ -761,17 +762,20 @@ impl Conformal {
                 )))
             }
         };
+        let value = |x: &DVector<f64>| match control {
+            Control::Force(_) => self.potential_to(x, rho, 1).grad[k],
+            _ => x[k],
+        };
         let near_elliptic = |a: f64| -> Option<(DVector<f64>, f64)> {
             let (x1, j1) = self.circle(Control::Size(a)).ok()?;
             let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, Control::Size(a)).1);
-            let x = self
-                .continue_in_rho(x1, j1, rho, Control::Size(a))
-                .ok()?;
-            (self.univalence(&x.as_slice()[..k]).is_ok() && self.bc_defect(&x, rho) < 1e-2)
-                .then(|| {
+            let x = self.continue_in_rho(x1, j1, rho, Control::Size(a)).ok()?;
+            (self.univalence(&x.as_slice()[..k]).is_ok() && self.bc_defect(&x, rho) < 1e-2).then(
+                || {
                     let v = value(&x) - target;
                     (x, v)
-                })
+                },
+            )
         };
         for side in [1.0, -1.0] {
             let mut last = if side > 0.0 { None } else { near_elliptic(a0) };
@@ -780,7 +784,9 @@ impl Conformal {
                 let here = near_elliptic(a0 * (1.0 + 0.01 * side * j as f64));
                 if let (Some((xa, va)), Some((xb, vb))) = (&last, &here) {
                     if va * vb <= 0.0 {
-                        if let Some(x) = self.between_sizes(rho, control, (xa, *va), (xb, *vb), &value) {
+                        if let Some(x) =
+                            self.between_sizes(rho, control, (xa, *va), (xb, *vb), &value)
+                        {
                             return Ok(x);
                         }
                     }
@@ -977,7 +983,11 @@ fn walk_rho(
     let (mut rho_now, mut step) = (from, max_step);
     while rho_now > to {
         // a step that would stop within 1e-9 of the end goes to the end
-        let next = if rho_now - step - to < 1e-9 { to } else { rho_now - step };
+        let next = if rho_now - step - to < 1e-9 {
+            to
+        } else {
+            rho_now - step
+        };
         if advance(rho_now, next) {
             rho_now = next;
             step = (step * 1.5).min(max_step);
