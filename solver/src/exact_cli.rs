@@ -90,6 +90,22 @@ pub enum ExactCommand {
         #[arg(long)]
         json: bool,
     },
+    /// The band map: the intervals of contact size ā where no near-elliptic exact state exists, with the contour mode responsible and F̄, δ̄ at both edges (screened by conformal:8 in steps of 0.01, each gap settled by the exact family's folds).
+    #[command(after_help = "Example:\n  thinjkr exact bands --rho 0.8")]
+    Bands {
+        /// Radii ratio ρ in (0, 1).
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        /// Smallest ā screened.
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+        from: f64,
+        /// Largest ā screened (at most from + 9.99).
+        #[arg(long, default_value_t = 4.0, allow_hyphen_values = true)]
+        to: f64,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
     /// The exact zero-force state.
     #[command(
         name = "zero-force",
@@ -114,7 +130,8 @@ impl ExactCommand {
         match self {
             ExactCommand::PullOff { json, .. }
             | ExactCommand::Solve { json, .. }
-            | ExactCommand::ZeroForce { json, .. } => *json,
+            | ExactCommand::ZeroForce { json, .. }
+            | ExactCommand::Bands { json, .. } => *json,
         }
     }
 }
@@ -145,7 +162,85 @@ pub fn run(c: ExactCommand) -> Result<()> {
             discretisation,
             json,
         } => state(rho, ExactControl::Force(0.0), &discretisation, json),
+        ExactCommand::Bands {
+            rho,
+            from,
+            to,
+            json,
+        } => bands(rho, from, to, json),
     }
+}
+
+/// `thinjkr exact bands`.
+pub fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
+    let map = thinjkr::exact::bands::bands(rho, from, to)?;
+    if json {
+        outln!("{}", Document::Bands { bands: map }.to_json());
+        return Ok(());
+    }
+    outln!(
+        "near-elliptic exact states at rho = {} for a from {} to {} (screened by {} in steps of {}, each gap settled by the exact family's folds):",
+        map.rho,
+        map.range[0],
+        map.range[1],
+        map.screen,
+        map.step
+    );
+    if map.bands.is_empty() {
+        outln!("  no band: a near-elliptic state at every a screened");
+    }
+    let mode = |m: Option<usize>| match m {
+        Some(0) => "the size".to_string(),
+        Some(n) => format!("cos {n}θ"),
+        None => "not computed".to_string(),
+    };
+    for b in &map.bands {
+        outln!(
+            "  band {:.4} < a < {:.4}, mode {}: the arms beside it fold back at its edges",
+            b.lower.a_bar,
+            b.upper.a_bar,
+            mode(b.lower.mode)
+        );
+        for (edge, e) in [("lower", &b.lower), ("upper", &b.upper)] {
+            outln!(
+                "    {edge} edge: a = {:.6}, s = {:.6}, force = {:.6}, delta = {:.6} (mode {}; N = {}, bc {:.0e})",
+                e.a_bar,
+                e.s,
+                e.force_bar,
+                e.delta_bar,
+                mode(e.mode),
+                e.modes,
+                e.bc_error
+            );
+        }
+    }
+    for c in &map.crossed {
+        outln!(
+            "  no band where {} has none between a = {:.2} and {:.2}: {}",
+            map.screen,
+            c.screened[0],
+            c.screened[1],
+            c.why
+        );
+    }
+    for c in &map.unsettled {
+        outln!(
+            "  not settled where {} has none between a = {:.2} and {:.2}: {}",
+            map.screen,
+            c.screened[0],
+            c.screened[1],
+            c.why
+        );
+    }
+    for o in &map.open_ends {
+        outln!(
+            "  {} has no near-elliptic state from a = {:.2} to {:.2}, at an end of the range (not settled)",
+            map.screen,
+            o[0],
+            o[1]
+        );
+    }
+    Ok(())
 }
 
 fn modes(v: &[UnstableMode]) -> String {
@@ -255,7 +350,15 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
             range: "finite".into(),
         });
     }
-    let st = resolved(rho, &d.tries()?, |ex| ex.at(control))?;
+    let st = resolved(rho, &d.tries()?, |ex| ex.at(control)).map_err(|e| {
+        // a control in a band of the near-elliptic family says so
+        thinjkr::exact::bands::explain(
+            rho,
+            control,
+            thinjkr::exact::branch::circle_a_bar(control),
+            e,
+        )
+    })?;
     let model_states: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {

@@ -590,6 +590,96 @@ fn render(fig: &Figure) -> Result<String> {
     Ok(svg)
 }
 
+/// The band map of the exact family (docs/figures/exact_bands.svg) from
+/// the maps `bands` (one per ρ, as `thinjkr exact bands --json` writes
+/// them): each band a bar over its ā-interval at its ρ, coloured by its
+/// contour mode; the circle's neutral points ā³ = 4(n − 1) dashed; the
+/// exact pull-off's ā from `reference`.
+pub fn exact_bands(
+    bands: &[crate::exact::bands::BandMap],
+    reference: &crate::exact::table::Reference,
+) -> Result<(&'static str, String)> {
+    // one colour per mode n = 2, 4, …, 16
+    let colors = [
+        RGBColor(120, 120, 120),
+        BLUE,
+        RED,
+        GREEN,
+        ORANGE,
+        RGBColor(130, 60, 160),
+        RGBColor(140, 90, 40),
+        RGBColor(0, 150, 150),
+    ];
+    let color = |n: usize| colors[(n / 2).saturating_sub(1) % colors.len()];
+    let (lo, hi) = bands
+        .iter()
+        .map(|m| m.rho)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+            (a.min(r), b.max(r))
+        });
+    let mut series = Vec::new();
+    let mut labelled = Vec::new();
+    for m in bands {
+        for b in &m.bands {
+            let n = b.lower.mode.unwrap_or(0);
+            let label = if labelled.contains(&n) {
+                String::new()
+            } else {
+                labelled.push(n);
+                format!("band, mode cos {n}θ")
+            };
+            series.push(solid(
+                &label,
+                vec![(b.lower.a_bar, m.rho), (b.upper.a_bar, m.rho)],
+                color(n),
+            ));
+        }
+    }
+    labelled.sort_unstable();
+    // the circle's neutral points within the range screened, dashed in
+    // their mode's colour, one legend entry for all
+    let range = bands
+        .iter()
+        .map(|m| (m.range[0], m.range[1]))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (c, d)| {
+            (a.min(c), b.max(d))
+        });
+    let mut first = true;
+    for &n in &labelled {
+        let a = (4.0 * (n as f64 - 1.0)).cbrt();
+        if a < range.0 || a > range.1 {
+            continue;
+        }
+        let label = if std::mem::take(&mut first) {
+            "the circle's neutral points ā³ = 4(n − 1)"
+        } else {
+            ""
+        };
+        series.push(dashed(
+            label,
+            vec![(a, lo - 0.05), (a, hi + 0.05)],
+            color(n),
+        ));
+    }
+    let po: Vec<(f64, f64)> = reference
+        .pull_off
+        .iter()
+        .filter(|e| e.rho >= lo - 1e-12 && e.rho <= hi + 1e-12)
+        .map(|e| (e.a_bar, e.rho))
+        .collect();
+    series.push(solid("exact pull-off", po, BLACK));
+    let fig = Figure {
+        file: "exact_bands.svg",
+        title: "No near-elliptic exact state: the bands in ā".into(),
+        x_label: "ā",
+        y_label: "ρ = R₁/R₂",
+        series,
+        shade: None,
+        equal: false,
+    };
+    Ok((fig.file, render(&fig)?))
+}
+
 /// The exact solution's figures from `reference`: the pull-off F̄ against
 /// ρ (exact and every model), the exact contours at pull-off beside the
 /// paper's ellipse at ρ = 0.8, 0.5 and the lowest resolved ρ, and

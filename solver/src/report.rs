@@ -254,6 +254,11 @@ pub enum Document {
         /// The states.
         states: Vec<AnyState>,
     },
+    /// The band map of the exact family (`exact bands`).
+    Bands {
+        /// The bands at one ρ.
+        bands: crate::exact::bands::BandMap,
+    },
     /// The models (`models --json`).
     Models {
         /// Every model.

@@ -28,7 +28,9 @@ fn figures_are_fresh_and_deterministic() {
 /// The exact solution's figures (docs/figures/exact_*.svg) are what
 /// `thinjkr accuracy --figures docs/figures` draws from the committed
 /// reference derive/data/exact_reference.json (whose freshness
-/// solver/tests/accuracy_table.rs checks).
+/// solver/tests/accuracy_table.rs checks), and the band map
+/// (exact_bands.svg) what `figures::exact_bands` draws from the committed
+/// band maps docs/data/exact_bands.jsonl with it.
 #[test]
 fn exact_figures_are_fresh() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -36,8 +38,20 @@ fn exact_figures_are_fresh() {
         .expect("the exact reference exists");
     let reference: thinjkr::exact::table::Reference =
         serde_json::from_str(&text).expect("the exact reference parses");
-    let figs = thinjkr::figures::exact_all(&reference).expect("exact figures draw");
+    let mut figs = thinjkr::figures::exact_all(&reference).expect("exact figures draw");
     assert_eq!(figs.len(), 4);
+    // the band map, from the committed band maps (whose ρ = 0.8 line
+    // solver/tests/bands.rs recomputes)
+    let bands: Vec<thinjkr::exact::bands::BandMap> =
+        std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
+            .expect("the committed band maps exist")
+            .lines()
+            .map(|l| {
+                let v: serde_json::Value = serde_json::from_str(l).expect("a JSON line");
+                serde_json::from_value(v["bands"].clone()).expect("a band map")
+            })
+            .collect();
+    figs.push(thinjkr::figures::exact_bands(&bands, &reference).expect("the band map draws"));
     let mut stale = Vec::new();
     for (name, svg) in &figs {
         let p = root.join("docs/figures").join(name);

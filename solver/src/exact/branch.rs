@@ -108,6 +108,23 @@ pub struct Branch {
     pub events: Vec<Event>,
 }
 
+/// The half-width of the exact circle (ρ = 1) at `control` (22)–(25): for
+/// F̄ the root of π(ā⁶ − 24ā³)/96 = F̄ above the pull-off; NaN below the
+/// circle's pull-off force −3π/2.
+pub fn circle_a_bar(control: ExactControl) -> f64 {
+    match control {
+        ExactControl::Delta(v) => circle_a_bar_at_delta(v),
+        ExactControl::Force(v) => {
+            let disc = 144.0 + 96.0 * v / std::f64::consts::PI;
+            if disc.is_nan() || disc < 0.0 {
+                f64::NAN
+            } else {
+                (12.0 + disc.sqrt()).cbrt()
+            }
+        }
+    }
+}
+
 /// The half-width of the exact circle (ρ = 1) with approach δ̄:
 /// the root of ā²/4 − 2/ā = δ̄ (increasing in ā), by bisection.
 fn circle_a_bar_at_delta(delta_bar: f64) -> f64 {
@@ -172,6 +189,20 @@ fn null_mode(bordered: &DMatrix<f64>) -> Option<usize> {
     } else {
         2 * (i - 1) + 2
     })
+}
+
+/// The contour mode of the null direction of the state equations at fixed
+/// ā (singular at a fold in ā): the largest b_j component of the right
+/// singular vector of the smallest singular value (A and δ̄ move with
+/// it, but the shape change is in the b_j); b_j perturbs the radius by
+/// cos (2j + 2)θ. `None` when the SVD gives no singular vectors.
+fn contour_mode(held: &DMatrix<f64>) -> Option<usize> {
+    let n = held.nrows();
+    let svd = held.clone().svd(false, true);
+    let v_t = svd.v_t.as_ref()?;
+    let k = svd.singular_values.imin();
+    let i = (1..n - 1).max_by(|&a, &b| v_t[(k, a)].abs().total_cmp(&v_t[(k, b)].abs()))?;
+    Some(2 * (i - 1) + 2)
 }
 
 /// dā/du: ā = A + Σ b_j.
@@ -432,6 +463,57 @@ impl Exact {
         Ok((Branch { points, events }, found))
     }
 
+    /// Trace from `start` with ā first moving in `direction` (±1) to the
+    /// first fold of the contact size, located and returned with the
+    /// contour mode of its null direction (the dominant b_j of the null
+    /// vector of the state equations at fixed ā there); `None` when ā
+    /// passes `a_limit` first. Steps of at most `max_step` in u.
+    pub(crate) fn to_size_fold(
+        &self,
+        start: &ExactState,
+        direction: f64,
+        a_limit: f64,
+        max_step: f64,
+    ) -> Result<Option<(ExactState, Option<usize>)>> {
+        let n = self.truncation.modes + 2;
+        let settings = Settings {
+            step: max_step,
+            min_step: 1e-4,
+            max_step,
+            grow: 1.3,
+            fast_iterations: usize::MAX,
+            turn: 0.95,
+            corrector_iterations: 20,
+            step_tolerance: 1e-12,
+            max_steps: 2000,
+        };
+        let watch = Watch {
+            size_fold: On::Stop,
+            displacement_fold: On::Ignore,
+            force_minimum: On::Ignore,
+            bifurcation: On::Ignore,
+            crossing: None,
+        };
+        let trace = continuation::trace(
+            self,
+            self.unknowns(start),
+            &(a_bar_gradient(n) * direction),
+            settings,
+            watch,
+            |p| (p.a_bar - a_limit) * direction > 0.0,
+        )?;
+        let Some(u) = trace.located(EventKind::SizeFold) else {
+            return Ok(None);
+        };
+        // the state equations at fixed ā, singular at the fold
+        let (_, _, j, _) = linearise(self, u)
+            .ok_or_else(|| self.stuck(u, "no linearisation at the located fold"))?;
+        let mut held = DMatrix::zeros(n, n);
+        held.rows_mut(0, n - 1).copy_from(&j);
+        held.set_row(n - 1, &a_bar_gradient(n).transpose());
+        Ok(Some((self.state(u)?, contour_mode(&held))))
+    }
+
     /// The state at `control` started from the richest `conformal:K`'s
     /// (K = 8) state at the
     /// same control: Newton at its ā from the ellipse with its ā and b̄
@@ -509,19 +591,13 @@ impl Exact {
     /// route. An unresolved state is [`Error::Unresolved`], a value not reached is
     /// [`Error::NoState`] saying where the arm ended.
     pub fn at(&self, control: ExactControl) -> Result<ExactState> {
-        let a_circle = match control {
-            ExactControl::Delta(v) => circle_a_bar_at_delta(v),
-            ExactControl::Force(v) => {
-                let disc = 144.0 + 96.0 * v / std::f64::consts::PI;
-                if disc.is_nan() || disc < 0.0 {
-                    return Err(Error::NoState(format!(
-                        "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, -3 pi/2, and so below that of every rho",
-                        self.rho
-                    )));
-                }
-                (12.0 + disc.sqrt()).cbrt()
-            }
-        };
+        let a_circle = circle_a_bar(control);
+        if let (ExactControl::Force(v), true) = (control, a_circle.is_nan()) {
+            return Err(Error::NoState(format!(
+                "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, -3 pi/2, and so below that of every rho",
+                self.rho
+            )));
+        }
         if !(a_circle.is_finite() && a_circle > 0.0) {
             return Err(Error::NoState(format!(
                 "exact state at rho = {}: {control} has no circle to start from",

@@ -35,6 +35,7 @@
 //! nalgebra; no model of the ellipse (it is the reference for them), except
 //! as a starting guess supplied by the caller.
 
+pub mod bands;
 pub mod bie;
 pub mod branch;
 pub mod stability;
@@ -134,9 +135,12 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
 }
 
 /// The exact state at `control` with the default escalation of
-/// truncations ([`resolved`], [`default_tries`]).
+/// truncations ([`resolved`], [`default_tries`]); where there is none, and
+/// the control lies in a band of the near-elliptic family, the error says
+/// so ([`bands::explain`]).
 pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
     resolved(rho, &default_tries(), |ex| ex.at(control))
+        .map_err(|e| bands::explain(rho, control, branch::circle_a_bar(control), e))
 }
 
 /// The discretisation: contour modes and quadrature points.
@@ -584,16 +588,24 @@ impl Exact {
             u[j + 1] = guess.b.get(j).copied().unwrap_or(0.0);
         }
         u[nm + 1] = delta_guess;
-        let fail = |u: &DVector<f64>, res: f64, it: usize, why: &str| Error::NoConvergence {
-            iterations: it,
-            a_bar,
-            s: f64::NAN,
-            residual: res,
-            context: format!(
-                "exact solution at rho = {}, a_bar = {a_bar} (delta_bar = {}): {why}",
-                self.rho,
-                u[nm + 1]
-            ),
+        let fail = |u: &DVector<f64>, res: f64, it: usize, why: &str| {
+            // where it stopped: the contour of the last iterate
+            let c = Contour {
+                a: u[0],
+                b: u.rows(1, nm).iter().copied().collect(),
+            };
+            Error::NoConvergence {
+                iterations: it,
+                a_bar,
+                s: c.b_bar() / c.a_bar(),
+                residual: res,
+                context: format!(
+                    "exact solution at rho = {}, a_bar = {} (delta_bar = {}): {why}",
+                    crate::error::rounded(self.rho),
+                    crate::error::rounded(a_bar),
+                    crate::error::rounded(u[nm + 1])
+                ),
+            }
         };
         // Newton's method with the Jacobian kept while it serves (the chord
         // method): it is refreshed after a step that reduced the residual

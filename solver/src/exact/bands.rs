@@ -1,0 +1,376 @@
+//! The band map of the near-elliptic exact family at one ρ: the intervals
+//! of the contact size ā where no near-elliptic exact state exists, each
+//! with the contour mode responsible and F̄, δ̄ at both edges.
+//!
+//! At ρ = 1 the circle branch meets, at each neutral point ā³ = 4(n − 1),
+//! the branch of contours undulated with cos nθ; for ρ < 1 the crossing is
+//! imperfect and the near-elliptic family can split there: the arm from
+//! smaller ā folds back at ā₁, the arm from larger ā at ā₂, and when
+//! ā₁ < ā₂ no near-elliptic state has a size in between (docs/exact.md,
+//! "Which family"). Pieces of the family can also lie in such a gap
+//! without joining either arm, so the gaps are not read off two traces:
+//! - a screen: the richest `conformal:K`'s states at fixed ā (each
+//!   continued in ρ from the circle at its ā) on a grid of step 0.01; a
+//!   grid point is near-elliptic when that state exists with a defect of
+//!   (3)₂ below 1e-2. Runs of points that are not bound candidate gaps.
+//! - each candidate is settled by the exact family itself: from the exact
+//!   state at the last near-elliptic grid point on either side (started
+//!   from the model's ellipse, with the first truncation of 12, 16, 24,
+//!   32, 48 modes that resolves it) the family is traced into the gap
+//!   (steps of at most 0.01 in its unknowns) to its first fold in ā,
+//!   located. Both arms folding, the lower fold below the upper, make a
+//!   band; an arm that crosses the gap without folding, or folds that
+//!   overlap, mean near-elliptic states exist across it (the model's gap
+//!   is its own), and the candidate is reported as such.
+//!
+//! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`bands`]. May use: `exact`
+//! (its family and traces), `conformal` (the screen), `error`, rayon.
+
+use super::{Contour, Exact};
+use crate::conformal::{Conformal, ConformalState, Control};
+use crate::error::{Error, Result};
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+/// The most grid points of a screen.
+pub const MAX_GRID: usize = 1000;
+
+/// One edge of a band: the located fold in ā of an arm of the exact
+/// family.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct BandEdge {
+    /// ā at the fold.
+    pub a_bar: f64,
+    /// s there.
+    pub s: f64,
+    /// F̄ there.
+    pub force_bar: f64,
+    /// δ̄ there.
+    pub delta_bar: f64,
+    /// The contour mode n (cos nθ) of the fold's null direction (0 where
+    /// the size or δ̄ dominates; `None` when it could not be computed).
+    pub mode: Option<usize>,
+    /// max |∂p̄/∂ν − 1| of the fold state on the fine grid.
+    pub bc_error: f64,
+    /// Contour modes N of the truncation used.
+    pub modes: usize,
+}
+
+/// An interval of ā with no near-elliptic exact state.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Band {
+    /// The fold of the arm from smaller ā (the band's lower edge).
+    pub lower: BandEdge,
+    /// The fold of the arm from larger ā (the band's upper edge).
+    pub upper: BandEdge,
+}
+
+/// A gap of the screen that the exact family crosses: no band there.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Crossed {
+    /// The near-elliptic grid points of the model on either side.
+    pub screened: [f64; 2],
+    /// Why it is no band, in words.
+    pub why: String,
+}
+
+/// The band map at one ρ over a range of ā.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct BandMap {
+    /// ρ.
+    pub rho: f64,
+    /// The ā range screened.
+    pub range: [f64; 2],
+    /// The grid step of the screen.
+    pub step: f64,
+    /// The model that screened.
+    pub screen: String,
+    /// The bands, by increasing ā.
+    pub bands: Vec<Band>,
+    /// The model's gaps that the exact family crosses.
+    pub crossed: Vec<Crossed>,
+    /// The model's gaps the exact family could not settle (no resolved
+    /// exact state beside them, or a trace that failed), with why.
+    pub unsettled: Vec<Crossed>,
+    /// Gaps of the screen at an end of the range (not bracketed, not
+    /// settled).
+    pub open_ends: Vec<[f64; 2]>,
+}
+
+/// The model's near-elliptic states at fixed ā on the grid from `from` to
+/// `to` in steps of [`STEP`] (`None` where there is none), with the grid
+/// and the model.
+#[allow(clippy::type_complexity)]
+fn screen(
+    rho: f64,
+    from: f64,
+    to: f64,
+) -> Result<(Conformal, Vec<f64>, Vec<Option<ConformalState>>)> {
+    let count = ((to - from) / STEP).round() as usize + 1;
+    crate::error::check_range(
+        "to",
+        to,
+        count <= MAX_GRID,
+        "at most from + 9.99 (a screen of at most 1000 grid points)",
+    )?;
+    let model: Conformal = crate::conformal::members()
+        .last()
+        .ok_or_else(|| Error::NoState("no member of conformal:K generated".into()))?;
+    let grid: Vec<f64> = (0..count).map(|j| from + STEP * j as f64).collect();
+    let states = grid
+        .par_iter()
+        .map(|&a| {
+            model
+                .solve(rho, Control::Size(a))
+                .ok()
+                .filter(|st| st.bc_defect < 1e-2)
+        })
+        .collect();
+    Ok((model, grid, states))
+}
+
+/// A run of grid points without a near-elliptic state.
+enum Gap {
+    /// Bracketed by the near-elliptic points lo and hi.
+    Inside(usize, usize),
+    /// At an end of the grid: its first and last points.
+    AtEnd(usize, usize),
+}
+
+/// The runs of grid points without a near-elliptic state.
+fn gaps(states: &[Option<ConformalState>]) -> Vec<Gap> {
+    let (count, mut out, mut j) = (states.len(), Vec::new(), 0);
+    while j < count {
+        if states[j].is_some() {
+            j += 1;
+            continue;
+        }
+        let start = j;
+        while j < count && states[j].is_none() {
+            j += 1;
+        }
+        out.push(match (start.checked_sub(1), (j < count).then_some(j)) {
+            (Some(lo), Some(hi)) => Gap::Inside(lo, hi),
+            (lo, hi) => Gap::AtEnd(lo.unwrap_or(start), hi.unwrap_or(count - 1)),
+        });
+    }
+    out
+}
+
+/// The model's near-elliptic states beside the gap between lo and hi,
+/// nearest first, up to five grid points away on either side (an exact
+/// start that fails next to the gap may succeed a little further out).
+#[allow(clippy::type_complexity)]
+fn beside(
+    states: &[Option<ConformalState>],
+    lo: usize,
+    hi: usize,
+) -> (Vec<&ConformalState>, Vec<&ConformalState>) {
+    (
+        states[..=lo]
+            .iter()
+            .rev()
+            .take(5)
+            .map_while(|s| s.as_ref())
+            .collect(),
+        states[hi..]
+            .iter()
+            .take(5)
+            .map_while(|s| s.as_ref())
+            .collect(),
+    )
+}
+
+/// The grid step of the screen in ā.
+const STEP: f64 = 0.01;
+
+/// The band map at `rho` for ā in [`from`, `to`] (see the module).
+pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
+    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+    crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
+    crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
+    let (model, grid, states) = screen(rho, from, to)?;
+    let mut map = BandMap {
+        rho,
+        range: [from, to],
+        step: STEP,
+        screen: model.name(),
+        bands: Vec::new(),
+        crossed: Vec::new(),
+        unsettled: Vec::new(),
+        open_ends: Vec::new(),
+    };
+    for gap in gaps(&states) {
+        match gap {
+            Gap::Inside(lo, hi) => {
+                let (left, right) = beside(&states, lo, hi);
+                let screened = [grid[lo], grid[hi]];
+                match settle(rho, &left, &right) {
+                    Ok(Ok(band)) => map.bands.push(band),
+                    Ok(Err(why)) => map.crossed.push(Crossed { screened, why }),
+                    Err(e) => map.unsettled.push(Crossed {
+                        screened,
+                        why: e.to_string(),
+                    }),
+                }
+            }
+            Gap::AtEnd(first, last) => map.open_ends.push([grid[first], grid[last]]),
+        }
+    }
+    Ok(map)
+}
+
+/// Why the exact solver found no state at `control`, in words, where a
+/// band is the reason: the model's screen over ā within 15 % of the
+/// circle's ā at that control (`a_circle`); each gap whose neighbours'
+/// values of the control lie on either side of the control is settled by
+/// the exact family's folds, and a band whose edges' values bracket the
+/// control is named. Otherwise (no such band, or a failure on the way)
+/// `err` itself.
+pub fn explain(rho: f64, control: super::branch::ExactControl, a_circle: f64, err: Error) -> Error {
+    use super::branch::ExactControl;
+    if !(matches!(err, Error::NoState(_)) && rho > 0.0 && rho < 1.0 && a_circle > 1.0) {
+        return err;
+    }
+    type Of<T> = fn(&T) -> f64;
+    let (target, of_state, of_edge, name): (f64, Of<ConformalState>, Of<BandEdge>, &str) =
+        match control {
+            ExactControl::Force(f) => (f, |s| s.force_bar, |e| e.force_bar, "force"),
+            ExactControl::Delta(d) => (d, |s| s.delta_bar, |e| e.delta_bar, "delta"),
+        };
+    let Ok((_, _, states)) = screen(rho, 0.85 * a_circle, 1.15 * a_circle) else {
+        return err;
+    };
+    for gap in gaps(&states) {
+        let Gap::Inside(lo, hi) = gap else { continue };
+        let (left, right) = beside(&states, lo, hi);
+        if (of_state(left[0]) - target) * (of_state(right[0]) - target) > 0.0 {
+            continue;
+        }
+        if let Ok(Ok(band)) = settle(rho, &left, &right) {
+            let (v0, v1) = (of_edge(&band.lower), of_edge(&band.upper));
+            if (v0 - target) * (v1 - target) <= 0.0 {
+                let mode = band
+                    .lower
+                    .mode
+                    .map(|n| format!(", mode cos {n}θ"))
+                    .unwrap_or_default();
+                return Error::NoState(format!(
+                    "no near-elliptic exact state at {control} for rho = {}: that {name} lies in the band {:.4} < a < {:.4}{mode} (its edges, where the family folds back, have {name} = {:.4} and {:.4})",
+                    crate::error::short(rho),
+                    band.lower.a_bar,
+                    band.upper.a_bar,
+                    v0,
+                    v1
+                ));
+            }
+        }
+    }
+    err
+}
+
+/// Settle one candidate gap between the model's near-elliptic states
+/// `left` and `right`: the band, or why there is none.
+fn settle(
+    rho: f64,
+    left: &[&ConformalState],
+    right: &[&ConformalState],
+) -> Result<std::result::Result<Band, String>> {
+    let margin = 0.05;
+    let lower = fold_from(rho, left, 1.0, right[0].a_bar + margin)?;
+    let upper = fold_from(rho, right, -1.0, left[0].a_bar - margin)?;
+    Ok(match (lower, upper) {
+        (Some(lower), Some(upper)) if lower.a_bar < upper.a_bar => Ok(Band { lower, upper }),
+        (Some(lower), Some(upper)) => Err(format!(
+            "the arms' folds overlap (the lower arm folds at a = {:.4}, the upper at a = {:.4}): near-elliptic states exist at every a between",
+            lower.a_bar, upper.a_bar
+        )),
+        (None, _) => Err(format!(
+            "the exact family from a = {:.2} crosses the gap without folding",
+            left[0].a_bar
+        )),
+        (_, None) => Err(format!(
+            "the exact family from a = {:.2} crosses the gap without folding",
+            right[0].a_bar
+        )),
+    })
+}
+
+/// The located fold of the exact family traced in `direction` from the
+/// exact state near the first of the model's states `beside` the gap (in
+/// order) that gives one; `None` when ā passes `limit` first.
+/// The truncations 12, 16, 24, 32, 48 are tried in turn, from the first
+/// that resolves the start, until the fold state's boundary error is below
+/// [`super::CONVERGED`] (else the best below [`super::RESOLVED`], else an
+/// [`Error::Unresolved`]).
+fn fold_from(
+    rho: f64,
+    beside: &[&ConformalState],
+    direction: f64,
+    limit: f64,
+) -> Result<Option<BandEdge>> {
+    let mut best: Option<BandEdge> = None;
+    let mut last_error = None;
+    let near = beside[0];
+    for t in super::default_tries() {
+        let ex = Exact::new(rho, t)?;
+        // the first of the model's states beside the gap whose exact
+        // neighbour this truncation resolves
+        let start = beside.iter().find_map(|m| {
+            ex.solve(
+                m.a_bar,
+                &Contour::ellipse(m.a_bar, m.b_bar, t.modes),
+                m.delta_bar,
+            )
+            .map_err(|e| last_error = Some(e.to_string()))
+            .ok()
+        });
+        let start = match start {
+            Some(st) if st.bc_error <= super::RESOLVED => st,
+            Some(st) => {
+                last_error = Some(format!(
+                    "boundary error {:.0e} with {} modes",
+                    st.bc_error, t.modes
+                ));
+                continue;
+            }
+            None => continue,
+        };
+        let Some((fold, mode)) = ex.to_size_fold(&start, direction, limit, 0.01)? else {
+            return Ok(None);
+        };
+        let edge = BandEdge {
+            a_bar: fold.a_bar,
+            s: fold.s,
+            force_bar: fold.force_bar,
+            delta_bar: fold.delta_bar,
+            mode,
+            bc_error: fold.bc_error,
+            modes: t.modes,
+        };
+        if edge.bc_error <= super::CONVERGED {
+            return Ok(Some(edge));
+        }
+        if edge.bc_error <= super::RESOLVED
+            && best.as_ref().is_none_or(|b| edge.bc_error < b.bc_error)
+        {
+            best = Some(edge);
+        }
+    }
+    match best {
+        Some(edge) => Ok(Some(edge)),
+        None => Err(Error::Unresolved {
+            what: format!(
+                "the band edge of the exact family traced from a = {:.2} at rho = {} ({})",
+                near.a_bar,
+                rho,
+                last_error.unwrap_or_else(|| "no truncation resolves the fold".into())
+            ),
+            residual: f64::NAN,
+        }),
+    }
+}

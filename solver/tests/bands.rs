@@ -1,0 +1,124 @@
+//! The band map of the exact family (`thinjkr::exact::bands`): at ρ = 0.8
+//! one band at each of the circle's neutral points ā³ = 4(n − 1),
+//! n = 4, 6, 8, in that mode, with resolved edges; the mode-8 band's edges
+//! against the folds of the two arms traced by the family's own tracer
+//! from the zero-force state and the state at F̄ = 10 (a second route that
+//! uses no model); none at ρ = 1; bad input a typed error.
+
+use thinjkr::exact::bands::bands;
+use thinjkr::exact::branch::{Event, ExactControl};
+use thinjkr::exact::{Exact, Truncation};
+use thinjkr::Error;
+
+#[test]
+fn bands_at_rho_0_8_sit_at_the_circle_modes_and_match_the_arms_folds() {
+    let map = bands(0.8, 2.0, 4.0).unwrap();
+    let modes: Vec<Option<usize>> = map.bands.iter().map(|b| b.lower.mode).collect();
+    assert_eq!(modes, vec![Some(4), Some(6), Some(8)], "{map:#?}");
+    for b in &map.bands {
+        let n = b.lower.mode.unwrap() as f64;
+        let neutral = (4.0 * (n - 1.0)).cbrt();
+        assert_eq!(b.lower.mode, b.upper.mode, "{b:#?}");
+        assert!(b.lower.a_bar < b.upper.a_bar, "{b:#?}");
+        assert!(
+            (b.lower.a_bar - neutral).abs() < 0.12 && (b.upper.a_bar - neutral).abs() < 0.12,
+            "band {} .. {} far from the neutral point {neutral}",
+            b.lower.a_bar,
+            b.upper.a_bar
+        );
+        assert!(
+            b.lower.bc_error <= 1e-9 && b.upper.bc_error <= 1e-9,
+            "{b:#?}"
+        );
+    }
+    assert!(
+        map.crossed.is_empty() && map.unsettled.is_empty() && map.open_ends.is_empty(),
+        "{map:#?}"
+    );
+    // the committed band maps (docs/data/exact_bands.jsonl, drawn in
+    // docs/figures/exact_bands.svg) hold this one
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/data/exact_bands.jsonl"),
+    )
+    .expect("the committed band maps exist");
+    let committed: Vec<thinjkr::exact::bands::BandMap> = text
+        .lines()
+        .map(|l| {
+            let v: serde_json::Value = serde_json::from_str(l).expect("a JSON line");
+            serde_json::from_value(v["bands"].clone()).expect("a band map")
+        })
+        .collect();
+    let at = committed
+        .iter()
+        .find(|m| m.rho == 0.8)
+        .expect("the committed maps have rho = 0.8");
+    assert_eq!(at.bands.len(), map.bands.len());
+    for (c, b) in at.bands.iter().zip(&map.bands) {
+        for (ce, be) in [(&c.lower, &b.lower), (&c.upper, &b.upper)] {
+            assert!(
+                (ce.a_bar - be.a_bar).abs() < 1e-8
+                    && (ce.force_bar - be.force_bar).abs() < 1e-8
+                    && ce.mode == be.mode,
+                "committed {ce:?}, now {be:?}: regenerate docs/data/exact_bands.jsonl (docs/exact.md, \"Bands\")"
+            );
+        }
+    }
+    // the mode-8 band against the arms traced without any model, in steps
+    // of at most 0.01 (the fold's ā as the nearer traced point)
+    let ex = Exact::new(
+        0.8,
+        Truncation {
+            modes: 16,
+            points: 256,
+        },
+    )
+    .unwrap();
+    let traced_fold = |from: ExactControl, direction: f64| {
+        let start = ex.at(from).unwrap();
+        let br = ex
+            .trace_from(&start, direction, 2.5, 3.6, 0.01, 80)
+            .unwrap();
+        br.events
+            .iter()
+            .find_map(|e| match e {
+                Event::SizeFold { a_bar } => Some(*a_bar),
+                _ => None,
+            })
+            .unwrap()
+    };
+    let band = &map.bands[2];
+    let lower = traced_fold(ExactControl::Force(0.0), 1.0);
+    let upper = traced_fold(ExactControl::Force(10.0), -1.0);
+    assert!(
+        (band.lower.a_bar - lower).abs() < 0.01 && (band.upper.a_bar - upper).abs() < 0.01,
+        "band {} .. {}, traced folds {lower} .. {upper}",
+        band.lower.a_bar,
+        band.upper.a_bar
+    );
+}
+
+#[test]
+fn no_band_at_rho_one() {
+    let map = bands(1.0, 2.0, 3.5).unwrap();
+    assert!(
+        map.bands.is_empty()
+            && map.crossed.is_empty()
+            && map.unsettled.is_empty()
+            && map.open_ends.is_empty(),
+        "{map:#?}"
+    );
+}
+
+#[test]
+fn band_map_input_is_a_typed_error() {
+    let name = |r: thinjkr::Result<_>| match r {
+        Err(Error::OutOfRange { name, .. }) => name,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(name(bands(0.0, 2.0, 4.0)), "rho");
+    assert_eq!(name(bands(1.5, 2.0, 4.0)), "rho");
+    assert_eq!(name(bands(f64::NAN, 2.0, 4.0)), "rho");
+    assert_eq!(name(bands(0.8, f64::NAN, 4.0)), "from");
+    assert_eq!(name(bands(0.8, 2.0, 1.0)), "to");
+    assert_eq!(name(bands(0.8, 2.0, 40.0)), "to");
+}
