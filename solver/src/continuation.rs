@@ -505,18 +505,31 @@ where
         f1: f64,
         value: &dyn Fn(&Point<D>) -> f64,
     ) -> Result<OVector<f64, D>> {
+        self.zero_point(p, q, f0, f1, value).map(|z| z.u)
+    }
+
+    /// [`Engine::zero`] as a point (with its tangent and rates).
+    fn zero_point(
+        &self,
+        p: &Point<D>,
+        q: &Point<D>,
+        f0: f64,
+        f1: f64,
+        value: &dyn Fn(&Point<D>) -> f64,
+    ) -> Result<Point<D>> {
         let lu = self.factored(p)?;
         let (mut sa, mut fa) = (0.0, f0);
         let (mut sb, mut fb) = (p.t.dot(&(&q.u - &p.u)), f1);
-        let mut best = q.u.clone();
+        let mut best = q.clone();
         for _ in 0..100 {
             let sigma = sb - fb * (sb - sa) / (fb - fa);
             let (u, l) = self.beside(p, sigma, &lu)?;
             let (t, det) = self
                 .tangent(&l.j, &p.t)
                 .ok_or_else(|| self.family.stuck(&u, "no tangent while locating an event"))?;
-            let f = value(&self.point(u.clone(), t, &l, det));
-            best = u;
+            let here = self.point(u, t, &l, det);
+            let f = value(&here);
+            best = here;
             if f == 0.0 || (sb - sa).abs() < 1e-13 * (1.0 + sigma.abs()) {
                 return Ok(best);
             }
@@ -532,7 +545,7 @@ where
         }
         // never the last iterate in place of a located event
         Err(self.family.stuck(
-            &best,
+            &best.u,
             "the event's location did not converge in 100 Illinois steps",
         ))
     }
@@ -605,8 +618,19 @@ where
             }
         };
         let located = |on: On| matches!(on, On::Locate | On::Stop);
+        // the located fold of ā in this step, if any: a minimum of F̄ just
+        // before it, in the same step, is looked for up to it
+        let mut size_fold = None;
         if watch.size_fold != On::Ignore && p.d_a_bar.signum() != q.d_a_bar.signum() {
-            let at = located(watch.size_fold).then(|| q.u.clone());
+            let at = if located(watch.size_fold) {
+                let f =
+                    engine.zero_point(p, &q, p.d_a_bar, q.d_a_bar, &|x: &Point<D>| x.d_a_bar)?;
+                let u = f.u.clone();
+                size_fold = Some(f);
+                Some(u)
+            } else {
+                None
+            };
             note(EventKind::SizeFold, watch.size_fold, at);
         }
         if watch.bifurcation != On::Ignore && p.det_sign != q.det_sign {
@@ -645,14 +669,23 @@ where
             };
             note(EventKind::DisplacementFold, watch.displacement_fold, at);
         }
-        if watch.force_minimum != On::Ignore && p.d_force < 0.0 && q.d_force >= 0.0 {
+        // a minimum of F̄ in the step: looked for on either side of a
+        // located fold of ā (F̄ can turn twice in a step that passes one)
+        let pieces: Vec<(&Point<D>, &Point<D>)> = match &size_fold {
+            Some(f) => vec![(p, f), (f, &q)],
+            None => vec![(p, &q)],
+        };
+        let minimum = pieces
+            .into_iter()
+            .find(|(a, b)| a.d_force < 0.0 && b.d_force >= 0.0);
+        if let (true, Some((a, b))) = (watch.force_minimum != On::Ignore, minimum) {
             let at = if located(watch.force_minimum) {
                 // on the rate where the tangent is defined throughout the
                 // step; by values where a bifurcation point lies in it
-                Some(if p.det_sign == q.det_sign {
-                    engine.zero(p, &q, p.d_force, q.d_force, &|x: &Point<D>| x.d_force)?
+                Some(if a.det_sign == b.det_sign {
+                    engine.zero(a, b, a.d_force, b.d_force, &|x: &Point<D>| x.d_force)?
                 } else {
-                    engine.force_minimum(p, &q)?
+                    engine.force_minimum(a, b)?
                 })
             } else {
                 None
@@ -768,6 +801,37 @@ mod tests {
         for p in &t.points {
             assert!((p.u.norm() - 1.0).abs() < 1e-12);
         }
+    }
+
+    /// A fold of ā watched with `Locate` is located where dā/dσ = 0 (on the
+    /// circle traced from (cos 0.3, sin 0.3) towards smaller δ, x turns at
+    /// (1, 0)), not at the first point past it.
+    #[test]
+    fn a_size_fold_is_located_where_the_size_turns() {
+        let watch = Watch {
+            size_fold: On::Stop,
+            ..Watch::default()
+        };
+        let settings = Settings {
+            step: 0.05,
+            max_step: 0.2,
+            ..Settings::default()
+        };
+        let t = trace(
+            &Circle,
+            Vector2::new(0.3f64.cos(), 0.3f64.sin()),
+            &Vector2::new(0.0, -1.0),
+            settings,
+            watch,
+            |_| false,
+        )
+        .expect("traced");
+        assert_eq!(t.end, End::Event(EventKind::SizeFold));
+        let f = t.located(EventKind::SizeFold).expect("fold located");
+        assert!((f[0] - 1.0).abs() < 1e-12 && f[1].abs() < 1e-6, "{f}");
+        // the last traced point is past it, a step away
+        let last = &t.points.last().expect("points").u;
+        assert!(last[1] < -1e-3, "{last}");
     }
 
     /// A start exactly at the watched value is the crossing (it has no
