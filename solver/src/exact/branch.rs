@@ -503,7 +503,18 @@ impl Exact {
             |p| (p.a_bar - a_limit) * direction > 0.0,
         )?;
         let Some(u) = trace.located(EventKind::SizeFold) else {
-            return Ok(None);
+            // past the limit without a fold; a trace that ran out of steps
+            // first says where it stopped
+            return match trace.end {
+                continuation::End::Budget => Err(self.stuck(
+                    &trace
+                        .points
+                        .last()
+                        .map_or_else(|| self.unknowns(start), |p| p.u.clone()),
+                    "no fold of the contact size within 2000 steps",
+                )),
+                _ => Ok(None),
+            };
         };
         // the state equations at fixed ā, singular at the fold
         let (_, _, j, _) = linearise(self, u)
