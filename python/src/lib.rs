@@ -486,19 +486,7 @@ fn _batch_api_seconds(
             "the batch API serves the models of the ellipse".into(),
         ));
     };
-    let items: Vec<Item> = rho
-        .as_slice()?
-        .iter()
-        .zip(value.as_slice()?)
-        .map(|(&rho, &v)| Item {
-            rho,
-            given: if control == "delta" {
-                Given::Delta(v)
-            } else {
-                Given::Force(v)
-            },
-        })
-        .collect();
+    let items = items_of(rho.as_slice()?, value.as_slice()?, control);
     Ok(py.detach(move || {
         let t = std::time::Instant::now();
         let out = solve_all(&id, &items);

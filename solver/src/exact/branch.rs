@@ -205,6 +205,22 @@ fn contour_mode(held: &DMatrix<f64>) -> Option<usize> {
     Some(2 * (i - 1) + 2)
 }
 
+/// The exact family's step control: arclength steps in u between 1e-4 and
+/// `max_step` (grown by 1.3), the chord corrector, at most `max_steps`.
+fn trace_settings(max_step: f64, max_steps: usize) -> Settings {
+    Settings {
+        step: max_step,
+        min_step: 1e-4,
+        max_step,
+        grow: 1.3,
+        fast_iterations: usize::MAX,
+        turn: 0.95,
+        corrector_iterations: 20,
+        step_tolerance: 1e-12,
+        max_steps,
+    }
+}
+
 /// dā/du: ā = A + Σ b_j.
 fn a_bar_gradient(n: usize) -> DVector<f64> {
     let mut g = DVector::from_element(n, 1.0);
@@ -382,17 +398,7 @@ impl Exact {
     ) -> Result<(Branch, Option<ExactState>)> {
         let n = self.truncation.modes + 2;
         let towards = a_bar_gradient(n) * direction;
-        let settings = Settings {
-            step: max_step,
-            min_step: 1e-4,
-            max_step,
-            grow: 1.3,
-            fast_iterations: usize::MAX,
-            turn: 0.95,
-            corrector_iterations: 20,
-            step_tolerance: 1e-12,
-            max_steps: max_points.saturating_sub(1),
-        };
+        let settings = trace_settings(max_step, max_points.saturating_sub(1));
         let crossing = control.map(|c| match c {
             ExactControl::Delta(v) => (Quantity::Delta, v, On::Stop),
             ExactControl::Force(v) => (Quantity::Force, v, On::Stop),
@@ -476,17 +482,7 @@ impl Exact {
         max_step: f64,
     ) -> Result<Option<(ExactState, Option<usize>)>> {
         let n = self.truncation.modes + 2;
-        let settings = Settings {
-            step: max_step,
-            min_step: 1e-4,
-            max_step,
-            grow: 1.3,
-            fast_iterations: usize::MAX,
-            turn: 0.95,
-            corrector_iterations: 20,
-            step_tolerance: 1e-12,
-            max_steps: 2000,
-        };
+        let settings = trace_settings(max_step, 2000);
         let watch = Watch {
             size_fold: On::Stop,
             displacement_fold: On::Ignore,
