@@ -705,7 +705,8 @@ impl Conformal {
     }
 
     /// The state at `control` between two states at fixed ā whose control
-    /// values minus the target, `va` and `vb`, have opposite signs: the
+    /// values minus the target (`value`), `va` and `vb`, have opposite
+    /// signs: the
     /// Illinois method in ā, each state at fixed ā by Newton from the
     /// nearer known one, to 1e-12 in ā; then Newton under the control from
     /// the last (which it finds solved or nearly). `None` where a state at
@@ -731,7 +732,6 @@ impl Conformal {
             let guess = &keep.0 + (&newest.0 - &keep.0) * w;
             let xm = self.newton(&guess, rho, Control::Size(am)).ok()?;
             let vm = value(&xm);
-            let vm = vm - (value(&newest.0) - newest.1); // minus the target
             if vm.signum() == newest.1.signum() {
                 keep.1 *= 0.5; // Illinois: the retained end's value halved
             } else {
@@ -747,8 +747,7 @@ impl Conformal {
     /// j = −1 … −30, each the state at that ā continued in ρ from the circle;
     /// the first two neighbours that are both near-elliptic (defect of (3)₂
     /// below 1e-2) and whose control values bracket the target give the
-    /// start, interpolated linearly between them, for Newton under the
-    /// control. The route where the state at fixed control, continued in ρ,
+    /// bracket of [`Conformal::between_sizes`]. The route where the state at fixed control, continued in ρ,
     /// ends at a fold in ρ first: the states at fixed ā reach the pieces of
     /// the family that lie beyond it.
     fn bracketed_by_sizes(&self, rho: f64, control: Control, a0: f64) -> Result<DVector<f64>> {
@@ -762,9 +761,13 @@ impl Conformal {
                 )))
             }
         };
-        let value = |x: &DVector<f64>| match control {
-            Control::Force(_) => self.potential_to(x, rho, 1).grad[k],
-            _ => x[k],
+        // the control's value at x minus the target
+        let value = |x: &DVector<f64>| {
+            let v = match control {
+                Control::Force(_) => self.potential_to(x, rho, 1).grad[k],
+                _ => x[k],
+            };
+            v - target
         };
         let near_elliptic = |a: f64| -> Option<(DVector<f64>, f64)> {
             let (x1, j1) = self.circle(Control::Size(a)).ok()?;
@@ -772,7 +775,7 @@ impl Conformal {
             let x = self.continue_in_rho(x1, j1, rho, Control::Size(a)).ok()?;
             (self.univalence(&x.as_slice()[..k]).is_ok() && self.bc_defect(&x, rho) < 1e-2).then(
                 || {
-                    let v = value(&x) - target;
+                    let v = value(&x);
                     (x, v)
                 },
             )
