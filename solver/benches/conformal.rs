@@ -1,6 +1,7 @@
 //! criterion benchmarks of the family `conformal:K` at ρ = 0.8, per K: one
 //! evaluation of Π̄ with its gradient and Hessian (the residuals and their
-//! Jacobian), one cold state at F̄ = 1 (from the circle at ρ = 1, continued
+//! Jacobian; for K ≤ 4 by the unrolled evaluator and, side by side, by the
+//! table evaluator it unrolls), one cold state at F̄ = 1 (from the circle at ρ = 1, continued
 //! in ρ), and the load-controlled pull-off (pseudo-arclength trace from
 //! ā = 2.6). The goals: conformal:4 state ≤ 50 µs, conformal:8
 //! state ≤ 5 ms, conformal:8 pull-off ≤ 100 ms.
@@ -19,6 +20,12 @@ fn benches(c: &mut Criterion) {
         g.bench_function(format!("K={k} residuals and Jacobian"), |b| {
             b.iter(|| m.potential(black_box(&x), 0.8))
         });
+        if k <= 4 {
+            g.bench_function(
+                format!("K={k} residuals and Jacobian, table evaluator"),
+                |b| b.iter(|| m.potential_by_table(black_box(&x), 0.8)),
+            );
+        }
         g.bench_function(format!("K={k} cold state at F=1"), |b| {
             b.iter(|| m.solve(0.8, Control::Force(black_box(1.0))).unwrap())
         });

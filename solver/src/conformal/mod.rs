@@ -53,6 +53,10 @@ pub struct Tables {
     /// … of which this member has the modes n listed here, each with its
     /// leading rows.
     pub slope_rows: &'static [(u16, usize)],
+    /// Π̄ with its gradient and Hessian from the table evaluator unrolled
+    /// over this member's rows (bit for bit [`poly::evaluate`] at order 2,
+    /// faster), generated for the small members.
+    pub second: Option<fn(&[f64], f64, f64) -> poly::Second>,
 }
 
 /// ā at which the pull-off trace starts, as for the exact solution
@@ -226,9 +230,27 @@ impl Conformal {
         self.potential_to(x, rho, 2)
     }
 
-    /// Π̄ with its derivatives up to `order` (0, 1 or 2).
+    /// Π̄ with its gradient and Hessian from the table evaluator, also for
+    /// a member that has an unrolled one (which returns the same bits): the
+    /// comparison in `benches/conformal.rs`.
+    pub fn potential_by_table(&self, x: &DVector<f64>, rho: f64) -> poly::Second {
+        let k = self.terms();
+        poly::evaluate(
+            &self.decoded.potential,
+            &x.as_slice()[..k],
+            x[k],
+            1.0 / rho,
+            2,
+        )
+    }
+
+    /// Π̄ with its derivatives up to `order` (0, 1 or 2); at order 2 by the
+    /// member's unrolled evaluator where it has one.
     pub fn potential_to(&self, x: &DVector<f64>, rho: f64, order: u8) -> poly::Second {
         let k = self.terms();
+        if let (2, Some(second)) = (order, self.tables.second) {
+            return second(&x.as_slice()[..k], x[k], 1.0 / rho);
+        }
         poly::evaluate(
             &self.decoded.potential,
             &x.as_slice()[..k],
@@ -527,20 +549,24 @@ impl Conformal {
     /// adhesive root (tensile edge, ∂p̄/∂ν = +1), then Newton on the control.
     fn circle(&self, control: Control) -> Result<(DVector<f64>, Option<DMatrix<f64>>)> {
         let k = self.terms();
-        let at = |a: f64| -> Option<DVector<f64>> {
+        // the circle's state at ā with its control value
+        let at = |a: f64| -> Option<(DVector<f64>, f64)> {
             let x = |d: f64| {
                 let mut v = DVector::zeros(k + 1);
                 v[0] = a;
                 v[k] = d;
                 v
             };
-            // r(δ̄) = r0 + q1 δ̄ + q2 δ̄², from the rows that matter on the circle
+            // Π̄ = P₀ + P₁δ̄ + P₂δ̄² with Pᵢ functions of c, from the rows
+            // that matter on the circle: ∂Π̄/∂c₁ = r₀ + q₁δ̄ + q₂δ̄² and
+            // F̄ = ∂Π̄/∂δ̄ = P₁ + 2P₂δ̄
             let circle = &self.decoded.potential_circle;
             let eval = |v: &DVector<f64>, order| {
                 poly::evaluate(circle, &v.as_slice()[..k], v[k], 1.0, order)
             };
             let e0 = eval(&x(0.0), 2);
             let (r0, q1) = (e0.grad[0], e0.hess[0][k]);
+            let (p1, two_p2) = (e0.grad[k], e0.hess[k][k]);
             let q2 = eval(&x(1.0), 1).grad[0] - r0 - q1;
             let disc = q1 * q1 - 4.0 * q2 * r0;
             if q2 == 0.0 || disc < 0.0 {
@@ -557,33 +583,27 @@ impl Conformal {
                 let c = &v.as_slice()[..k];
                 poly::evaluate(&self.decoded.slope_circle_at_zero, c, v[k], 1.0, 0).value > 0.0
             })
-        };
-        let value = |v: &DVector<f64>| match control {
-            Control::Delta(_) => v[k],
-            Control::Force(_) => {
-                poly::evaluate(
-                    &self.decoded.potential_circle,
-                    &v.as_slice()[..k],
-                    v[k],
-                    1.0,
-                    1,
-                )
-                .grad[k]
-            }
-            Control::Size(_) => v[0],
+            .map(|v| {
+                let value = match control {
+                    Control::Delta(_) => v[k],
+                    Control::Force(_) => p1 + two_p2 * v[k],
+                    Control::Size(_) => v[0],
+                };
+                (v, value)
+            })
         };
         let target = match control {
             Control::Delta(d) => d,
             Control::Force(f) => f,
-            Control::Size(a) => return at(a).map(|x| (x, None)).ok_or_else(|| no_circle(a)),
+            Control::Size(a) => return at(a).map(|(x, _)| (x, None)).ok_or_else(|| no_circle(a)),
         };
         // the circle's branch is explicit in ā: scan it from large ā down;
         // the first crossing is the stable state
         let mut prev: Option<(f64, f64)> = None;
         let mut a = 16.0;
         while a > 0.2 {
-            if let Some(v) = at(a) {
-                let f = value(&v) - target;
+            if let Some((v, value)) = at(a) {
+                let f = value - target;
                 if let Some((a0, f0)) = prev {
                     if f0 * f <= 0.0 {
                         // the crossing on the circle's explicit branch by
@@ -598,8 +618,8 @@ impl Conformal {
                                 break;
                             }
                             let am = a_new - f_new * (a_new - a_keep) / (f_new - f_keep);
-                            let Some(vm) = at(am) else { break };
-                            let fm = value(&vm) - target;
+                            let Some((vm, value)) = at(am) else { break };
+                            let fm = value - target;
                             start = vm;
                             if fm == 0.0 || (am - a_new).abs() <= 4.0 * f64::EPSILON * am {
                                 break;
@@ -1088,6 +1108,46 @@ fn check_rho(rho: f64) -> Result<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The generated `second` of a small member is the table evaluator
+        /// at order 2, bit for bit (±0 alike), across the domain and on the
+        /// circle (c₂ … c_K = 0 exactly, where the evaluator skips rows).
+        #[test]
+        fn the_unrolled_evaluator_is_the_table_evaluator(
+            k in 1usize..=4,
+            c1 in 0.2f64..8.0,
+            tail in proptest::collection::vec(-0.3f64..0.3, 7),
+            circle in proptest::bool::ANY,
+            dbar in -5.0f64..20.0,
+            rho in 0.3f64..=1.0,
+        ) {
+            let m = Conformal::new(k).unwrap();
+            let second = m.tables.second.expect("K ≤ 4 is unrolled");
+            let c: Vec<f64> = std::iter::once(c1)
+                .chain(tail[..k - 1].iter().map(|&t| if circle { 0.0 } else { t * c1 }))
+                .collect();
+            let (u, t) = (
+                second(&c, dbar, 1.0 / rho),
+                poly::evaluate(&m.decoded.potential, &c, dbar, 1.0 / rho, 2),
+            );
+            prop_assert_eq!(u.value, t.value);
+            prop_assert_eq!(&u.grad[..], &t.grad[..]);
+            for i in 0..poly::MAX_UNKNOWNS {
+                prop_assert_eq!(&u.hess[i][..], &t.hess[i][..], "row {}", i);
+            }
+        }
+    }
+
+    /// The members that have an unrolled evaluator: K ≤ 4, generated.
+    #[test]
+    fn the_small_members_are_unrolled() {
+        for k in 1..=8 {
+            let m = Conformal::new(k).unwrap();
+            assert_eq!(m.tables.second.is_some(), k <= 4, "conformal:{k}");
+        }
+    }
 
     /// The Hermite cubic is exact for cubics, and extrapolates them too.
     #[test]

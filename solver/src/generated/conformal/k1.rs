@@ -9,3 +9,150 @@ pub const POWERS: [u16; 1] = [1];
 pub const POTENTIAL_ROWS: usize = 7;
 /// The boundary slope's modes n and how many leading rows of `table::SLOPE`'s mode n are this member's.
 pub const SLOPE_ROWS: &[(u16, usize)] = &[(0, 3), (2, 2)];
+/// Π̄ with its gradient and Hessian in (c, δ̄) at μ = 1/ρ: the table
+/// evaluator (`crate::conformal::poly::evaluate`, order 2) unrolled
+/// over this member's rows, the same operations in the same order.
+/// `c` holds the K map coefficients.
+#[allow(clippy::all, unused_parens, unused_variables)]
+pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::conformal::poly::Second {
+    assert_eq!(c.len(), 1usize, "one value per map coefficient");
+    let c0_0 = 1.0f64;
+    let c0_1 = c[0usize];
+    let c0_2 = c0_1 * c0_1;
+    let c0_3 = c0_2 * c0_1;
+    let c0_4 = c0_3 * c0_1;
+    let c0_5 = c0_4 * c0_1;
+    let c0_6 = c0_5 * c0_1;
+    let c0_7 = c0_6 * c0_1;
+    let c0_8 = c0_7 * c0_1;
+    let d_0 = 1.0f64;
+    let d_1 = dbar;
+    let d_2 = d_1 * d_1;
+    let d_3 = d_2 * d_1;
+    let d_4 = d_3 * d_1;
+    let d_5 = d_4 * d_1;
+    let d_6 = d_5 * d_1;
+    let d_7 = d_6 * d_1;
+    let d_8 = d_7 * d_1;
+    let m_0 = 1.0f64;
+    let m_1 = mu;
+    let m_2 = m_1 * m_1;
+    let m_3 = m_2 * m_1;
+    let m_4 = m_3 * m_1;
+    let m_5 = m_4 * m_1;
+    let m_6 = m_5 * m_1;
+    let m_7 = m_6 * m_1;
+    let m_8 = m_7 * m_1;
+    let mut value = 0.0f64;
+    let mut g0 = 0.0f64;
+    let mut h0_0 = 0.0f64;
+    let mut h0_1 = 0.0f64;
+    let mut g1 = 0.0f64;
+    let mut h1_1 = 0.0f64;
+    {
+        let (mut a0, mut a1, mut a2) = (0.0f64, 0.0f64, 0.0f64);
+        let coef = -1.5707963267948966 * m_0;
+        a0 += coef * d_0;
+        let f0_0 = c0_2;
+        let f1_0 = 2.0 * c0_1;
+        let pre_0 = 1.0f64;
+        let pre_1 = pre_0 * f0_0;
+        let suf_1 = 1.0f64;
+        let suf_0 = suf_1 * f0_0;
+        let mono = pre_1;
+        value += a0 * mono;
+        g1 += a1 * mono;
+        h1_1 += a2 * mono;
+        let others = pre_0 * suf_1;
+        let d_i = f1_0 * others;
+        g0 += a0 * d_i;
+        h0_1 += a1 * d_i;
+        h0_0 += a0 * (2.0 * c0_0) * others;
+    }
+    {
+        let (mut a0, mut a1, mut a2) = (0.0f64, 0.0f64, 0.0f64);
+        let coef = 0.19634954084936207 * m_0;
+        a0 += coef * d_2;
+        a1 += coef * 2.0 * d_1;
+        a2 += coef * 2.0 * d_0;
+        let f0_0 = c0_4;
+        let f1_0 = 4.0 * c0_3;
+        let pre_0 = 1.0f64;
+        let pre_1 = pre_0 * f0_0;
+        let suf_1 = 1.0f64;
+        let suf_0 = suf_1 * f0_0;
+        let mono = pre_1;
+        value += a0 * mono;
+        g1 += a1 * mono;
+        h1_1 += a2 * mono;
+        let others = pre_0 * suf_1;
+        let d_i = f1_0 * others;
+        g0 += a0 * d_i;
+        h0_1 += a1 * d_i;
+        h0_0 += a0 * (12.0 * c0_2) * others;
+    }
+    {
+        let (mut a0, mut a1, mut a2) = (0.0f64, 0.0f64, 0.0f64);
+        let coef = -0.03272492347489368 * m_0;
+        a0 += coef * d_1;
+        a1 += coef * 1.0 * d_0;
+        let coef = -0.03272492347489368 * m_1;
+        a0 += coef * d_1;
+        a1 += coef * 1.0 * d_0;
+        let f0_0 = c0_6;
+        let f1_0 = 6.0 * c0_5;
+        let pre_0 = 1.0f64;
+        let pre_1 = pre_0 * f0_0;
+        let suf_1 = 1.0f64;
+        let suf_0 = suf_1 * f0_0;
+        let mono = pre_1;
+        value += a0 * mono;
+        g1 += a1 * mono;
+        h1_1 += a2 * mono;
+        let others = pre_0 * suf_1;
+        let d_i = f1_0 * others;
+        g0 += a0 * d_i;
+        h0_1 += a1 * d_i;
+        h0_0 += a0 * (30.0 * c0_4) * others;
+    }
+    {
+        let (mut a0, mut a1, mut a2) = (0.0f64, 0.0f64, 0.0f64);
+        let coef = 0.0018748654074157837 * m_0;
+        a0 += coef * d_0;
+        let coef = 0.0023861923367109973 * m_1;
+        a0 += coef * d_0;
+        let coef = 0.0018748654074157837 * m_2;
+        a0 += coef * d_0;
+        let f0_0 = c0_8;
+        let f1_0 = 8.0 * c0_7;
+        let pre_0 = 1.0f64;
+        let pre_1 = pre_0 * f0_0;
+        let suf_1 = 1.0f64;
+        let suf_0 = suf_1 * f0_0;
+        let mono = pre_1;
+        value += a0 * mono;
+        g1 += a1 * mono;
+        h1_1 += a2 * mono;
+        let others = pre_0 * suf_1;
+        let d_i = f1_0 * others;
+        g0 += a0 * d_i;
+        h0_1 += a1 * d_i;
+        h0_0 += a0 * (56.0 * c0_6) * others;
+    }
+    crate::conformal::poly::Second {
+        n: 2usize,
+        value,
+        grad: [g0, g1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        hess: [
+            [h0_0, h0_1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [h0_1, h1_1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [0.0; 9],
+            [0.0; 9],
+            [0.0; 9],
+            [0.0; 9],
+            [0.0; 9],
+            [0.0; 9],
+            [0.0; 9],
+        ],
+    }
+}

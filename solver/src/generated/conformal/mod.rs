@@ -26,6 +26,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k1::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k1::SLOPE_ROWS,
+        second: Some(k1::second),
     },
     crate::conformal::Tables {
         terms: 2,
@@ -34,6 +35,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k2::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k2::SLOPE_ROWS,
+        second: Some(k2::second),
     },
     crate::conformal::Tables {
         terms: 3,
@@ -42,6 +44,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k3::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k3::SLOPE_ROWS,
+        second: Some(k3::second),
     },
     crate::conformal::Tables {
         terms: 4,
@@ -50,6 +53,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k4::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k4::SLOPE_ROWS,
+        second: Some(k4::second),
     },
     crate::conformal::Tables {
         terms: 5,
@@ -58,6 +62,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k5::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k5::SLOPE_ROWS,
+        second: None,
     },
     crate::conformal::Tables {
         terms: 6,
@@ -66,6 +71,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k6::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k6::SLOPE_ROWS,
+        second: None,
     },
     crate::conformal::Tables {
         terms: 7,
@@ -74,6 +80,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k7::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k7::SLOPE_ROWS,
+        second: None,
     },
     crate::conformal::Tables {
         terms: 8,
@@ -82,5 +89,6 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         potential_rows: k8::POTENTIAL_ROWS,
         slope: table::SLOPE,
         slope_rows: k8::SLOPE_ROWS,
+        second: None,
     },
 ];
