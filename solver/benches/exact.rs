@@ -5,13 +5,17 @@
 //! ρ = 0.5 (24 modes, 384 points), and one exact load-controlled pull-off
 //! at ρ = 0.8 (continuation from the circle, tracing, refinement) with 16
 //! modes, the truncation `exact::resolved` picks for it (boundary error
-//! 7e-10; doubling changes F̄ by 3e-14 and s by 4e-11, docs/accuracy.md). The
+//! 7e-10; doubling changes F̄ by 3e-14 and s by 4e-11, docs/accuracy.md);
+//! and, as the command line computes them, the states at F̄ = 10 at ρ = 0.8
+//! and 0.5 and the pull-off at ρ = 0.8 with the truncation escalated until
+//! the fine-grid boundary error is below 1e-9 (`exact::at_resolved`,
+//! `exact::pull_off_resolved`, from `conformal:8`'s states). The
 //! set-up checks that each benchmarked state is converged to 1e-9: solved
 //! again with twice the modes and points, F̄ and s change by less than
 //! that (measured: 6e-12 at ρ = 0.8, 1e-10 at ρ = 0.5).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use thinjkr::exact::{Exact, Truncation};
+use thinjkr::exact::{self, branch::ExactControl, Exact, Truncation};
 
 fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("exact");
@@ -58,6 +62,20 @@ fn benches(c: &mut Criterion) {
     .unwrap();
     g.bench_function("pull-off at rho = 0.8 (16 modes)", |b| {
         b.iter(|| ex.pull_off_load().unwrap())
+    });
+    // what `thinjkr exact solve --force 10` and `thinjkr exact pull-off`
+    // do: the truncation escalated until the fine-grid boundary error is
+    // below 1e-9 (12 modes for F = 10 at rho = 0.8, 48 at rho = 0.5; 12 then
+    // 16 for the pull-off at rho = 0.8), each state from conformal:8's
+    for rho in [0.8, 0.5] {
+        let st = exact::at_resolved(rho, ExactControl::Force(10.0)).unwrap();
+        assert!(st.bc_error <= exact::CONVERGED, "{}", st.bc_error);
+        g.bench_function(format!("state at F = 10, rho = {rho}, resolved"), |b| {
+            b.iter(|| exact::at_resolved(black_box(rho), ExactControl::Force(10.0)).unwrap())
+        });
+    }
+    g.bench_function("pull-off at rho = 0.8, resolved", |b| {
+        b.iter(|| exact::pull_off_resolved(black_box(0.8)).unwrap())
     });
 }
 

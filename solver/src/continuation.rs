@@ -64,6 +64,11 @@ where
     fn residuals(&self, u: &OVector<f64, D>) -> Option<OVector<f64, D>> {
         self.linearise(u).map(|l| l.r)
     }
+    /// The residuals and F̄ at u, without the Jacobian (the search for a
+    /// minimum of F̄ along the family needs no more).
+    fn residuals_and_force(&self, u: &OVector<f64, D>) -> Option<(OVector<f64, D>, f64)> {
+        self.linearise(u).map(|l| (l.r, l.force))
+    }
     /// Whether the residuals at u are small enough for a state.
     fn converged(&self, u: &OVector<f64, D>, r: &OVector<f64, D>) -> bool;
     /// Whether u lies in the domain of the equations (a corrector iterate
@@ -352,22 +357,38 @@ where
         sigma: f64,
         start: Option<&LU<f64, D, D>>,
     ) -> Option<(OVector<f64, D>, usize, Linear<D>)> {
+        let linear = |u: &OVector<f64, D>| self.family.linearise(u).map(|l| (l.r.clone(), l));
+        self.correct_then(base, t, sigma, start, &linear)
+    }
+
+    /// [`Engine::correct`] with `finish` in place of the linearisation at
+    /// the answer: it gives the residuals there (for the convergence test)
+    /// and what the caller wants.
+    fn correct_then<T>(
+        &self,
+        base: &OVector<f64, D>,
+        t: &OVector<f64, D>,
+        sigma: f64,
+        start: Option<&LU<f64, D, D>>,
+        finish: &dyn Fn(&OVector<f64, D>) -> Option<(OVector<f64, D>, T)>,
+    ) -> Option<(OVector<f64, D>, usize, T)> {
         let pred = base + t * sigma;
         if self.family.chord() {
-            self.correct_with(&pred, t, true, start.cloned())
-                .or_else(|| self.correct_with(&pred, t, false, None))
+            self.correct_with(&pred, t, true, start.cloned(), finish)
+                .or_else(|| self.correct_with(&pred, t, false, None, finish))
         } else {
-            self.correct_with(&pred, t, false, None)
+            self.correct_with(&pred, t, false, None, finish)
         }
     }
 
-    fn correct_with(
+    fn correct_with<T>(
         &self,
         pred: &OVector<f64, D>,
         t: &OVector<f64, D>,
         chord: bool,
         start: Option<LU<f64, D, D>>,
-    ) -> Option<(OVector<f64, D>, usize, Linear<D>)> {
+        finish: &dyn Fn(&OVector<f64, D>) -> Option<(OVector<f64, D>, T)>,
+    ) -> Option<(OVector<f64, D>, usize, T)> {
         let n = pred.len();
         let mut u = pred.clone();
         let mut lu = start;
@@ -408,8 +429,8 @@ where
                 if !self.family.in_domain(&u) {
                     return None;
                 }
-                let l = self.family.linearise(&u)?;
-                return self.family.converged(&u, &l.r).then_some((u, it + 1, l));
+                let (r, v) = finish(&u)?;
+                return self.family.converged(&u, &r).then_some((u, it + 1, v));
             }
         }
         None
@@ -459,6 +480,37 @@ where
         })
     }
 
+    /// F̄ at the corrected point at σ from `p`, or a little beside it, as
+    /// [`Engine::beside`] but without the Jacobian there.
+    fn force_beside(
+        &self,
+        p: &Point<D>,
+        sigma: f64,
+        lu: &LU<f64, D, D>,
+    ) -> Result<(OVector<f64, D>, f64)> {
+        let force = |u: &OVector<f64, D>| self.family.residuals_and_force(u);
+        [
+            0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4,
+        ]
+        .iter()
+        .find_map(|off| {
+            self.correct_then(
+                &p.u,
+                &p.t,
+                sigma + off * (1.0 + sigma.abs()),
+                Some(lu),
+                &force,
+            )
+            .map(|(u, _, f)| (u, f))
+        })
+        .ok_or_else(|| {
+            self.family.stuck(
+                &p.u,
+                &format!("no corrected point near arclength {sigma:.3e} while locating an event"),
+            )
+        })
+    }
+
     fn factored(&self, p: &Point<D>) -> Result<LU<f64, D, D>> {
         let l = self
             .family
@@ -471,7 +523,7 @@ where
     /// search on F̄ along σ: 45 steps shrink the bracket by 0.618⁴⁵ ≈ 4e-10.
     fn force_minimum(&self, p: &Point<D>, q: &Point<D>) -> Result<OVector<f64, D>> {
         let lu = self.factored(p)?;
-        let at = |sigma: f64| self.beside(p, sigma, &lu).map(|(u, l)| (u, l.force));
+        let at = |sigma: f64| self.force_beside(p, sigma, &lu);
         let g = 0.5 * (5f64.sqrt() - 1.0);
         let (mut lo, mut hi) = (0.0, p.t.dot(&(&q.u - &p.u)));
         let mut x1 = hi - g * (hi - lo);
@@ -538,8 +590,14 @@ where
             } else {
                 (sa, fa) = (sb, fb);
             }
+            // an Illinois step below 1e-10 of σ: converged (the value's
+            // own rounding, from difference Jacobians, makes smaller steps
+            // wander without shrinking the bracket)
+            let moved = (sigma - sb).abs();
             (sb, fb) = (sigma, f);
-            if (sigma - sa).abs() < 1e-13 * (1.0 + sigma.abs()) {
+            if (sigma - sa).abs() < 1e-13 * (1.0 + sigma.abs())
+                || moved < 1e-10 * (1.0 + sigma.abs())
+            {
                 return Ok(best);
             }
         }
@@ -671,19 +729,26 @@ where
         }
         // a minimum of F̄ in the step: looked for on either side of a
         // located fold of ā (F̄ can turn twice in a step that passes one)
-        let pieces: Vec<(&Point<D>, &Point<D>)> = match &size_fold {
-            Some(f) => vec![(p, f), (f, &q)],
-            None => vec![(p, &q)],
+        // (the flag: the piece ends at the fold)
+        let pieces: Vec<(&Point<D>, &Point<D>, bool)> = match &size_fold {
+            Some(f) => vec![(p, f, true), (f, &q, false)],
+            None => vec![(p, &q, false)],
         };
         let minimum = pieces
             .into_iter()
-            .find(|(a, b)| a.d_force < 0.0 && b.d_force >= 0.0);
-        if let (true, Some((a, b))) = (watch.force_minimum != On::Ignore, minimum) {
+            .find(|(a, b, _)| a.d_force < 0.0 && b.d_force >= 0.0);
+        if let (true, Some((a, b, to_fold))) = (watch.force_minimum != On::Ignore, minimum) {
             let at = if located(watch.force_minimum) {
                 // on the rate where the tangent is defined throughout the
-                // step; by values where a bifurcation point lies in it
-                Some(if a.det_sign == b.det_sign {
-                    engine.zero(a, b, a.d_force, b.d_force, &|x: &Point<D>| x.d_force)?
+                // step; by values where a bifurcation point lies in it. A
+                // piece that ends at the located fold is parametrised from
+                // the fold: from its other end the arclength plane can cut
+                // the family twice, on either side of the fold
+                let rate = &|x: &Point<D>| x.d_force;
+                Some(if a.det_sign == b.det_sign && to_fold {
+                    engine.zero(b, a, b.d_force, a.d_force, rate)?
+                } else if a.det_sign == b.det_sign {
+                    engine.zero(a, b, a.d_force, b.d_force, rate)?
                 } else {
                     engine.force_minimum(a, b)?
                 })

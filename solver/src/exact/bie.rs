@@ -58,15 +58,17 @@ impl Grid {
         let h = 2.0 * std::f64::consts::PI / n as f64;
         let theta = (0..n).map(|i| i as f64 * h).collect();
         // d/dθ of the trigonometric interpolant (n even):
-        // D_ij = ½ (−1)^(i−j) cot((i − j) h/2), i ≠ j
-        let d1 = DMatrix::from_fn(n, n, |i, j| {
-            if i == j {
-                0.0
-            } else {
-                let k = i as f64 - j as f64;
-                let sign = if (i + j) % 2 == 0 { 1.0 } else { -1.0 };
-                0.5 * sign / (0.5 * k * h).tan()
-            }
+        // D_ij = ½ (−1)^(i−j) cot((i − j) h/2), i ≠ j; antisymmetric, and
+        // made so exactly (the lower triangle is the upper one negated)
+        let upper = |i: usize, j: usize| {
+            let k = j as f64 - i as f64;
+            let sign = if (i + j) % 2 == 0 { 1.0 } else { -1.0 };
+            -0.5 * sign / (0.5 * k * h).tan()
+        };
+        let d1 = DMatrix::from_fn(n, n, |i, j| match i.cmp(&j) {
+            std::cmp::Ordering::Equal => 0.0,
+            std::cmp::Ordering::Less => upper(i, j),
+            std::cmp::Ordering::Greater => -upper(j, i),
         });
         Grid {
             theta,
@@ -145,13 +147,20 @@ pub fn solve_dirichlet_symmetric(grid: &Grid, c: &ContourSamples, g: &[f64]) -> 
     reps.dedup();
     let m = reps.len();
     let index = |j: usize| reps.binary_search(&of[j]).expect("a representative");
+    // each point's orbit, as the index of its representative
+    let orbit: Vec<usize> = (0..n).map(index).collect();
+    // τ'_j/(τ_j − τ_i) for the representatives i, row by row: the kernel
+    // here and the Cauchy integral of ψ in `finish_at`
+    let mut w = vec![Complex::new(0.0, 0.0); m * n];
     let mut a = DMatrix::<f64>::zeros(m, m);
     for (r, &i) in reps.iter().enumerate() {
         let mut row = 0.0;
         for j in 0..n {
             if j != i {
-                let k = (c.dz[j] / (c.z[j] - c.z[i])).im / n as f64;
-                a[(r, index(j))] += k;
+                let wij = c.dz[j] / (c.z[j] - c.z[i]);
+                w[r * n + j] = wij;
+                let k = wij.im / n as f64;
+                a[(r, orbit[j])] += k;
                 row += k;
             }
         }
@@ -159,9 +168,8 @@ pub fn solve_dirichlet_symmetric(grid: &Grid, c: &ContourSamples, g: &[f64]) -> 
     }
     let rhs = DVector::from_iterator(m, reps.iter().map(|&i| g[i]));
     let reduced = a.lu().solve(&rhs)?;
-    let orbit: Vec<usize> = (0..n).map(index).collect();
     let mu = DVector::from_iterator(n, orbit.iter().map(|&k| reduced[k]));
-    finish_at(grid, c, mu, &reps, &orbit)
+    finish_at(grid, c, mu, &reps, &orbit, Some(&w))
 }
 
 /// The matrix of the second-kind equation: K_ij = Im(τ'_j/(τ_j − τ_i))/n
@@ -186,18 +194,21 @@ fn kernel_matrix(c: &ContourSamples, n: usize) -> DMatrix<f64> {
 fn finish(grid: &Grid, c: &ContourSamples, mu: DVector<f64>) -> Option<Dirichlet> {
     let n = grid.len();
     let all: Vec<usize> = (0..n).collect();
-    finish_at(grid, c, mu, &all, &all)
+    finish_at(grid, c, mu, &all, &all, None)
 }
 
 /// ∂q/∂ν on the contour from the density μ, computed at the points
 /// `targets` and copied to every point j from `targets[of[j]]` (for a
 /// symmetric solution, one point per orbit: ∂q/∂ν is symmetric too).
+/// `w`, where given, holds τ'_j/(τ_j − τ_i) for the r-th target i at
+/// r·n + j.
 fn finish_at(
     grid: &Grid,
     c: &ContourSamples,
     mu: DVector<f64>,
     targets: &[usize],
     of: &[usize],
+    w: Option<&[Complex<f64>]>,
 ) -> Option<Dirichlet> {
     let n = grid.len();
     let i_unit = Complex::new(0.0, 1.0);
@@ -209,14 +220,29 @@ fn finish_at(
     let psi: Vec<Complex<f64>> = (0..n).map(|i| d_mu[i] / c.dz[i]).collect();
     let at: Vec<f64> = targets
         .iter()
-        .map(|&i| {
+        .enumerate()
+        .map(|(r, &i)| {
             // dψ/dθ at i, with μ'' from the differentiation matrix's row i
-            let dd_mu = grid.d1.row(i).dot(&d_mu.transpose());
+            // (minus its column i: the matrix is antisymmetric, and a
+            // column is contiguous)
+            let dd_mu = -grid.d1.column(i).dot(&d_mu);
             let d_psi = (c.dz[i] * dd_mu - c.ddz[i] * d_mu[i]) / (c.dz[i] * c.dz[i]);
             let mut sum = d_psi;
-            for j in 0..n {
-                if j != i {
-                    sum += (psi[j] - psi[i]) * c.dz[j] / (c.z[j] - c.z[i]);
+            match w {
+                Some(w) => {
+                    let w = &w[r * n..(r + 1) * n];
+                    for j in 0..n {
+                        if j != i {
+                            sum += (psi[j] - psi[i]) * w[j];
+                        }
+                    }
+                }
+                None => {
+                    for j in 0..n {
+                        if j != i {
+                            sum += (psi[j] - psi[i]) * c.dz[j] / (c.z[j] - c.z[i]);
+                        }
+                    }
                 }
             }
             let f_prime = psi[i] + sum / (i_unit * n as f64);
@@ -233,6 +259,23 @@ fn finish_at(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The differentiation matrix is exactly antisymmetric (μ'' at a point
+    /// is taken from a column) and differentiates sin 3θ spectrally.
+    #[test]
+    fn the_derivative_matrix_is_antisymmetric_and_spectral() {
+        let g = Grid::new(64);
+        for i in 0..64 {
+            for j in 0..64 {
+                assert_eq!(g.d1[(i, j)], -g.d1[(j, i)]);
+            }
+        }
+        let f = DVector::from_iterator(64, g.theta.iter().map(|t| (3.0 * t).sin()));
+        let d = g.derivative(&f);
+        for (i, t) in g.theta.iter().enumerate() {
+            assert!((d[i] - 3.0 * (3.0 * t).cos()).abs() < 1e-12, "{i}");
+        }
+    }
 
     /// An ellipse-like contour z = Ae^{iθ} + b0 e^{−iθ} + b1 e^{−3iθ}.
     fn samples(grid: &Grid, a: f64, b0: f64, b1: f64) -> ContourSamples {

@@ -20,6 +20,28 @@ use crate::error::{Error, Result};
 use nalgebra::{DMatrix, DVector, Dyn};
 use serde::Serialize;
 
+/// How far above the richest model's pull-off, in ā, the exact
+/// pull-off's trace starts ([`Exact::pull_off_load`]): `conformal:8`
+/// misses the exact pull-off's ā by 1e-5 (ρ = 0.8) to 1e-3 (ρ = 0.5), and
+/// the trace must start above it on the same arm.
+pub const ABOVE_MODEL_PULL_OFF: f64 = 0.03;
+
+/// How far above the exact pull-off with fewer modes, in ā, the trace of
+/// the next truncation starts: more modes move the pull-off's ā by less
+/// than 1e-6 where the coarser one is nearly resolved.
+pub const ABOVE_COARSER_PULL_OFF: f64 = 0.005;
+
+/// The richest model's (`conformal:8`) load-controlled pull-off at `rho`,
+/// where it has one: the start of the exact pull-off's trace.
+pub fn model_pull_off(rho: f64) -> Option<crate::conformal::ConformalState> {
+    use crate::conformal::{Conformal, PullOffControl};
+    let model: Conformal = crate::conformal::members().last()?;
+    model
+        .pull_off(rho, PullOffControl::Load)
+        .ok()
+        .map(|(po, _)| po)
+}
+
 /// What happens between two traced points.
 #[derive(Clone, Debug, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -28,7 +50,8 @@ use serde::Serialize;
 pub enum Event {
     /// ā turns (a fold of the contact size) near this ā.
     SizeFold {
-        /// ā at the fold (the nearer traced point).
+        /// ā at the fold: located, or the traced point after it where the
+        /// trace does not locate folds.
         a_bar: f64,
     },
     /// F̄ has a minimum here (the load-controlled pull-off of the arm
@@ -253,6 +276,14 @@ impl Family<Dyn> for Exact {
         Some(rr)
     }
 
+    fn residuals_and_force(&self, u: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
+        let (r, force) = self.modes(u)?;
+        let n = u.len();
+        let mut rr = DVector::zeros(n);
+        rr.rows_mut(0, n - 1).copy_from(&r);
+        Some((rr, force))
+    }
+
     fn converged(&self, u: &DVector<f64>, r: &DVector<f64>) -> bool {
         r.rows(0, u.len() - 1).amax() < super::RESIDUAL_TOLERANCE
     }
@@ -329,14 +360,42 @@ impl Exact {
     }
 
     /// The load-controlled pull-off: the first minimum of F̄ along the
-    /// family traced from the state at ā = 2.6 (continued in ρ from the
-    /// circle; 2.6 lies between the circle's neutral points ā³ = 12 and
-    /// ā³ = 20) towards smaller ā, with the events met on the way.
+    /// family traced towards smaller ā, with the events met on the way,
+    /// from the exact state just above the richest model's pull-off
+    /// ([`Route::AboveModelPullOff`]) or, where there is none, from the
+    /// state at ā = 2.6 continued in ρ from the circle (2.6 lies between
+    /// the circle's neutral points ā³ = 12 and ā³ = 20).
     pub fn pull_off_load(&self) -> Result<(ExactState, Vec<Event>)> {
-        let start = self.from_circle(2.6)?;
+        self.pull_off_load_near(model_pull_off(self.rho).as_ref(), None)
+    }
+
+    /// [`Exact::pull_off_load`] with the richest model's pull-off given
+    /// (`model`, computed once for every truncation tried), and started
+    /// from just above `coarser`, the exact pull-off with fewer contour
+    /// modes, where given (its contour padded with zeros): the escalation of
+    /// [`super::pull_off_resolved`].
+    pub fn pull_off_load_near(
+        &self,
+        model: Option<&crate::conformal::ConformalState>,
+        coarser: Option<&ExactState>,
+    ) -> Result<(ExactState, Vec<Event>)> {
+        let from_coarser = coarser.and_then(|c| {
+            let st = self.solve_from(c.a_bar + ABOVE_COARSER_PULL_OFF, c).ok()?;
+            (st.bc_error <= 1e-2 && (st.s / c.s - 1.0).abs() <= 0.05).then_some((st, c.route))
+        });
+        let (start, route) = match from_coarser {
+            Some(found) => found,
+            None => match model.and_then(|m| self.above_model_pull_off(m)) {
+                Some(st) => (st, Route::AboveModelPullOff),
+                None => (self.from_circle(2.6)?, Route::FromCircle),
+            },
+        };
         let branch = self.trace_until(&start, 0.5, 0.05, 200, true)?;
         let po = branch.events.iter().find_map(|e| match e {
-            Event::ForceMinimum { state } => Some((**state).clone()),
+            Event::ForceMinimum { state } => Some(ExactState {
+                route,
+                ..(**state).clone()
+            }),
             _ => None,
         });
         match po {
@@ -354,6 +413,24 @@ impl Exact {
                 branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN)
             ))),
         }
+    }
+
+    /// The start of the pull-off's trace near the richest model's
+    /// (`conformal:8`) load-controlled pull-off `po`: the exact state at its ā
+    /// plus [`ABOVE_MODEL_PULL_OFF`], on the same near-elliptical arm (its
+    /// s within 5 % of the model's, boundary error below 1e-2), by Newton
+    /// from the ellipse through the model's ā and b̄ scaled to that size.
+    /// `None` where the model has no pull-off or the start does not
+    /// converge there; the trace then starts from the circle's route.
+    fn above_model_pull_off(&self, po: &crate::conformal::ConformalState) -> Option<ExactState> {
+        let a = po.a_bar + ABOVE_MODEL_PULL_OFF;
+        let scale = a / po.a_bar;
+        let ellipse = super::Contour::ellipse(a, po.b_bar * scale, self.truncation.modes);
+        // δ̄ ≈ ā²/4 − 2/ā (the circle's) shifted by the model's offset
+        let circle = |a: f64| a * a / 4.0 - 2.0 / a;
+        let delta = po.delta_bar + circle(a) - circle(po.a_bar);
+        let st = self.solve(a, &ellipse, delta).ok()?;
+        (st.bc_error <= 1e-2 && (st.s / po.s - 1.0).abs() <= 0.05).then_some(st)
     }
 
     fn trace_until(
@@ -404,10 +481,12 @@ impl Exact {
             ExactControl::Force(v) => (Quantity::Force, v, On::Stop),
         });
         let watch = Watch {
+            // located (a minimum of F̄ just past a fold is then looked for
+            // from the fold, where the arclength plane cuts the family once)
             size_fold: if control.is_some() {
                 On::Stop
             } else {
-                On::Note
+                On::Locate
             },
             displacement_fold: On::Ignore,
             force_minimum: if stop_at_force_minimum {
@@ -441,7 +520,11 @@ impl Exact {
             let [i, j] = e.between;
             match e.kind {
                 EventKind::SizeFold => events.push(Event::SizeFold {
-                    a_bar: points[j].state.a_bar,
+                    // located where the trace was asked to (ā = A + Σ b_j)
+                    a_bar: e
+                        .at
+                        .as_ref()
+                        .map_or(points[j].state.a_bar, |u| u.rows(0, u.len() - 1).sum()),
                 }),
                 EventKind::Bifurcation(mode) => events.push(Event::Bifurcation {
                     between: [points[i].state.a_bar, points[j].state.a_bar],
@@ -522,9 +605,9 @@ impl Exact {
     }
 
     /// The state at `control` started from the richest `conformal:K`'s
-    /// (K = 8) state at the
-    /// same control: Newton at its ā from the ellipse with its ā and b̄
-    /// and its δ̄, then the family traced to the control (a step or two).
+    /// (K = 8) state at the same control: Newton at the control from the
+    /// ellipse with its ā and b̄ and its δ̄; where that fails, Newton at its
+    /// ā, then the family traced to the control (a step or two).
     /// `None` where the model has no state there (ρ below its range), the
     /// start does not converge, or the answer is not near the model's
     /// (within 2 % in ā, 5 % in s) and near-elliptical (boundary error
@@ -543,11 +626,23 @@ impl Exact {
             )
             .ok()?;
         let nm = self.truncation.modes;
-        let start = self.solve(
-            guess.a_bar,
-            &super::Contour::ellipse(guess.a_bar, guess.b_bar, nm),
-            guess.delta_bar,
-        );
+        let ellipse = super::Contour::ellipse(guess.a_bar, guess.b_bar, nm);
+        // Newton at the control itself from the model's ellipse: the state
+        // when it lands near the model's and near-elliptical
+        let near = |st: &ExactState| {
+            st.bc_error <= 1e-2
+                && (st.a_bar / guess.a_bar - 1.0).abs() <= 0.02
+                && (st.s / guess.s - 1.0).abs() <= 0.05
+        };
+        if let Ok(mut st) = self.solve_at(control, &ellipse, guess.delta_bar) {
+            if near(&st) {
+                st.route = Route::FromModel;
+                return Some(st);
+            }
+        }
+        // else (near a fold in the control, where that system is singular)
+        // at the model's ā, then along the family to the control
+        let start = self.solve(guess.a_bar, &ellipse, guess.delta_bar);
         let start = start.ok()?;
         // the exact state near the model's: same side of the circle's
         // bifurcations (a contour within a few per cent of the model's)

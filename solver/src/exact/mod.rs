@@ -131,7 +131,17 @@ pub fn default_tries() -> Vec<Truncation> {
 /// The load-controlled pull-off at `rho` with the default escalation of
 /// truncations ([`resolved`], [`default_tries`]).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
-    resolved(rho, &default_tries(), Exact::pull_off_load)
+    // the model's pull-off once; each truncation after the first starts
+    // just above the pull-off of the one before
+    let model = branch::model_pull_off(rho);
+    let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
+    resolved(rho, &default_tries(), |ex| {
+        let found = ex.pull_off_load_near(model.as_ref(), coarser.borrow().as_ref());
+        if let Ok((st, _)) = &found {
+            *coarser.borrow_mut() = Some(st.clone());
+        }
+        found
+    })
 }
 
 /// The exact state at `control` with the default escalation of
@@ -385,9 +395,12 @@ pub struct ExactState {
 #[non_exhaustive]
 pub enum Route {
     /// From the richest approximate model at the same control
-    /// (`conformal:8`): its ā, b̄ and δ̄ as an ellipse, Newton at its ā,
-    /// then the family traced to the control.
+    /// (`conformal:8`): its ā, b̄ and δ̄ as an ellipse, Newton at the
+    /// control (or at its ā, then the family traced to the control).
     FromModel,
+    /// The pull-off traced from the exact state just above the richest
+    /// model's pull-off (`conformal:8`'s ā + 0.03).
+    AboveModelPullOff,
     /// From the exact circle at ρ = 1, continued in ρ at fixed ā, then the
     /// family traced to the control (no approximate model used).
     #[default]
@@ -398,8 +411,26 @@ impl std::fmt::Display for Route {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {
             Route::FromModel => "started from conformal:8 at the same control",
+            Route::AboveModelPullOff => "traced from just above conformal:8's pull-off",
             Route::FromCircle => "continued in rho from the circle at rho = 1",
         })
+    }
+}
+
+/// What Newton holds besides the boundary condition: the size ā, or the
+/// control (δ̄ or F̄).
+#[derive(Clone, Copy, Debug)]
+enum Held {
+    Size(f64),
+    Control(branch::ExactControl),
+}
+
+impl std::fmt::Display for Held {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Held::Size(a) => write!(f, "a_bar = {}", crate::error::rounded(*a)),
+            Held::Control(c) => write!(f, "{c}"),
+        }
     }
 }
 
@@ -409,6 +440,8 @@ pub struct Exact {
     truncation: Truncation,
     grid: Grid,
     fine: Grid,
+    /// cos 2kθ_i on the grid, k = 0..N: the imposed modes of ∂p̄/∂ν − 1.
+    cos_modes: Vec<Vec<f64>>,
 }
 
 /// The longest contour series accepted ([`Truncation::modes`]).
@@ -452,11 +485,21 @@ impl Exact {
                 range: "at least 4 · modes + 8 (and modes ≥ 1)".into(),
             });
         }
+        let grid = Grid::with_modes(truncation.points, truncation.modes);
+        let cos_modes = (0..=truncation.modes)
+            .map(|k| {
+                grid.theta
+                    .iter()
+                    .map(|&t| (2.0 * k as f64 * t).cos())
+                    .collect()
+            })
+            .collect();
         Ok(Exact {
             rho,
             truncation,
-            grid: Grid::with_modes(truncation.points, truncation.modes),
+            grid,
             fine: Grid::with_modes(2 * truncation.points, truncation.modes),
+            cos_modes,
         })
     }
 
@@ -464,7 +507,7 @@ impl Exact {
     /// (the family's equations, ā free), and F̄.
     pub(crate) fn modes(&self, u: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
         let n_modes = self.truncation.modes;
-        let (r, force) = self.equations(u, 0.0)?;
+        let (r, force) = self.equations(u, Held::Size(0.0))?;
         Some((r.rows(1, n_modes + 1).into_owned(), force))
     }
 
@@ -549,9 +592,10 @@ impl Exact {
         })
     }
 
-    /// The equations at u = (A, b₀..b_{N−1}, δ̄): z(0) − ā and the cosine
-    /// modes k = 0..N of ∂p̄/∂ν − 1.
-    fn equations(&self, u: &DVector<f64>, a_bar: f64) -> Option<(DVector<f64>, f64)> {
+    /// The equations at u = (A, b₀..b_{N−1}, δ̄): the held quantity minus
+    /// its value (z(0) − ā, δ̄ − δ̄₀ or F̄ − F̄₀) and the cosine modes
+    /// k = 0..N of ∂p̄/∂ν − 1; and F̄.
+    fn equations(&self, u: &DVector<f64>, held: Held) -> Option<(DVector<f64>, f64)> {
         let n_modes = self.truncation.modes;
         let c = Contour {
             a: u[0],
@@ -560,11 +604,15 @@ impl Exact {
         let f = fields(&c, self.rho, u[n_modes + 1], &self.grid)?;
         let n = self.grid.len();
         let mut r = DVector::zeros(n_modes + 2);
-        r[0] = c.a_bar() - a_bar;
-        for k in 0..=n_modes {
+        r[0] = match held {
+            Held::Size(a_bar) => c.a_bar() - a_bar,
+            Held::Control(branch::ExactControl::Delta(d)) => u[n_modes + 1] - d,
+            Held::Control(branch::ExactControl::Force(v)) => f.force - v,
+        };
+        for (k, cos_k) in self.cos_modes.iter().enumerate() {
             let mut m = 0.0;
-            for (i, &t) in self.grid.theta.iter().enumerate() {
-                m += (f.normal_derivative[i] - 1.0) * (2.0 * k as f64 * t).cos();
+            for (i, c) in cos_k.iter().enumerate() {
+                m += (f.normal_derivative[i] - 1.0) * c;
             }
             r[k + 1] = m / n as f64;
         }
@@ -575,12 +623,26 @@ impl Exact {
     /// method from the contour `guess` and approach `delta_guess` (an
     /// approximate model's state, or a neighbour on the family).
     pub fn solve(&self, a_bar: f64, guess: &Contour, delta_guess: f64) -> Result<ExactState> {
-        self.state(&self.newton(a_bar, guess, delta_guess)?)
+        self.state(&self.newton(Held::Size(a_bar), guess, delta_guess)?)
+    }
+
+    /// The exact state at `control` by Newton's method from the contour
+    /// `guess` and approach `delta_guess` (an approximate model's state at
+    /// the same control): the equations with δ̄ or F̄ held instead of ā.
+    /// Near a fold of the family in that control the system is singular,
+    /// and Newton fails.
+    pub fn solve_at(
+        &self,
+        control: branch::ExactControl,
+        guess: &Contour,
+        delta_guess: f64,
+    ) -> Result<ExactState> {
+        self.state(&self.newton(Held::Control(control), guess, delta_guess)?)
     }
 
     /// The unknowns u = (A, b₀..b_{N−1}, δ̄) of the state [`Exact::solve`]
     /// returns, without the state's fine-grid check and stability.
-    fn newton(&self, a_bar: f64, guess: &Contour, delta_guess: f64) -> Result<DVector<f64>> {
+    fn newton(&self, held: Held, guess: &Contour, delta_guess: f64) -> Result<DVector<f64>> {
         let nm = self.truncation.modes;
         let mut u = DVector::zeros(nm + 2);
         u[0] = guess.a;
@@ -596,13 +658,12 @@ impl Exact {
             };
             Error::NoConvergence {
                 iterations: it,
-                a_bar,
+                a_bar: c.a_bar(),
                 s: c.b_bar() / c.a_bar(),
                 residual: res,
                 context: format!(
-                    "exact solution at rho = {}, a_bar = {} (delta_bar = {}): {why}",
+                    "exact solution at rho = {}, {held} (delta_bar = {}): {why}",
                     crate::error::rounded(self.rho),
-                    crate::error::rounded(a_bar),
                     crate::error::rounded(u[nm + 1])
                 ),
             }
@@ -621,17 +682,17 @@ impl Exact {
                 up[k] += h;
                 um[k] -= h;
                 let (rp, _) = self
-                    .equations(&up, a_bar)
+                    .equations(&up, held)
                     .ok_or_else(|| fail(u, r.amax(), it, "singular system in the Jacobian"))?;
                 let (rm, _) = self
-                    .equations(&um, a_bar)
+                    .equations(&um, held)
                     .ok_or_else(|| fail(u, r.amax(), it, "singular system in the Jacobian"))?;
                 jac.set_column(k, &((rp - rm) / (2.0 * h)));
             }
             Ok::<_, Error>(jac.lu())
         };
         let (mut r, _) = self
-            .equations(&u, a_bar)
+            .equations(&u, held)
             .ok_or_else(|| fail(&u, f64::NAN, 0, "singular boundary integral equation"))?;
         let mut lu = None;
         let mut last_step = f64::INFINITY;
@@ -658,7 +719,7 @@ impl Exact {
             let r0 = r.amax();
             let accepted = loop {
                 let un = &u + &step * lambda;
-                match self.equations(&un, a_bar) {
+                match self.equations(&un, held) {
                     Some((rn, _)) if rn.amax() < r0 || r0 < 1e-13 => break Some((un, rn)),
                     _ if !fresh => break None,
                     _ if lambda > 1e-4 => lambda *= 0.5,
@@ -722,7 +783,7 @@ impl Exact {
         let circle = Exact::new(1.0, self.truncation)?;
         // the intermediate states need no fine-grid check or stability
         let mut u = circle.newton(
-            a_bar,
+            Held::Size(a_bar),
             &Contour::ellipse(a_bar, a_bar, nm),
             a_bar * a_bar / 4.0 - 2.0 / a_bar,
         )?;
@@ -735,7 +796,7 @@ impl Exact {
         while rho > self.rho {
             let next = (rho - step).max(self.rho);
             let ex = Exact::new(next, self.truncation)?;
-            match ex.newton(a_bar, &contour(&u), u[nm + 1]) {
+            match ex.newton(Held::Size(a_bar), &contour(&u), u[nm + 1]) {
                 Ok(n) => {
                     u = n;
                     rho = next;

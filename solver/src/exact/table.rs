@@ -208,9 +208,12 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          free-boundary problem (2)–(3) ([exact.md](exact.md)) does not. The near-elliptical exact family is \
          not one curve: at each neutral point of the circle, ā³ = 4(n − 1), an imperfect bifurcation of the \
          contour mode n splits it into arms that fold in ā and turn undulated (exact.md, \"Which family\"). \
-         The pull-off is the minimum of F̄ on the arm through the state at ā = 2.6 continued in ρ from the \
-         circle; a state at given F̄ is started from `conformal:8`'s state at the same F̄ (Newton at its ā \
-         from the ellipse with its ā, b̄ and δ̄, then the family traced to the F̄) and, where that finds \
+         The pull-off is the first minimum of F̄ along the arm traced towards smaller ā from the exact state at \
+         `conformal:8`'s pull-off ā + 0.03 (the model misses the exact ā by 1e-5 to 1e-3), or, where that start \
+         is not found, from the state at ā = 2.6 continued in ρ from the circle; each truncation after the \
+         first starts just above the pull-off of the one before. A state at given F̄ is solved by Newton at that \
+         F̄ from the ellipse with `conformal:8`'s ā, b̄ and δ̄ at the same F̄ (else at the model's ā, then the \
+         family traced to the F̄) and, where that finds \
          nothing near the model's state, looked for on the arm through the circle with that F̄ continued in ρ \
          (and once more from beyond a fold the trace meets); a row says where the arm ended when the \
          value is not on it. Each is computed with the first of 12, 16, 24, 32, 48 contour modes whose boundary error \
