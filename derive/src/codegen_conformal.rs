@@ -258,7 +258,7 @@ fn unrolled_second(k: usize, rows: &[(u64, f64)]) -> TokenStream {
         /// evaluator (`crate::conformal::poly::evaluate`, order 2) unrolled
         /// over this member's rows, the same operations in the same order.
         /// `c` holds the K map coefficients.
-        #[allow(clippy::all, unused_parens, unused_variables)]
+        #[allow(clippy::all, unused_parens, unused_variables, unused_mut)]
         pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::conformal::poly::Second {
             assert_eq!(c.len(), #k, "one value per map coefficient");
             #(#body)*

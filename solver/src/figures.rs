@@ -33,8 +33,10 @@ struct Figure {
     x_label: &'static str,
     y_label: &'static str,
     series: Vec<Series>,
-    /// x-interval shaded (for the validity range).
-    shade: Option<(f64, f64)>,
+    /// x-intervals shaded (a validity range, bands), with the legend's
+    /// label for them.
+    shade: Vec<(f64, f64)>,
+    shade_label: &'static str,
     /// Same scale on both axes (contours).
     equal: bool,
 }
@@ -82,7 +84,12 @@ fn printed_force(a: f64, s: f64, d: f64) -> f64 {
 /// The states of the ρ-curve sampled along the explicit branch, from large
 /// approach to the fold of the contact size.
 fn branch(rho: f64, n: usize) -> Result<Vec<crate::contact::State>> {
-    let c = Contact::new(rho)?;
+    branch_of(ModelId::Max, rho, n)
+}
+
+/// [`branch`] of the model `model`.
+fn branch_of(model: ModelId, rho: f64, n: usize) -> Result<Vec<crate::contact::State>> {
+    let c = Contact::with_model(model, rho)?;
     let fold = c.size_fold()?;
     let s_inf = c.s_infinity()?;
     Ok((1..n)
@@ -167,7 +174,8 @@ fn conformal_arms() -> Result<Vec<Figure>> {
         x_label: "semi-axis ā",
         y_label: "force F̄",
         series,
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     }])
 }
@@ -188,7 +196,8 @@ fn fig2_bc_error() -> Result<Vec<Figure>> {
                 .collect(),
             BLUE,
         )],
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     Ok(out)
@@ -225,7 +234,8 @@ fn fig3_axisymmetric() -> Result<Vec<Figure>> {
             dashed("derived (25), unstable", unstable, BLUE),
             dashed("printed (25)₁ (2^(4/3)/ā): differs", printed, RED),
         ],
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     Ok(out)
@@ -261,7 +271,8 @@ fn fig4_zero_force_s(rhos: &[f64]) -> Result<Vec<Figure>> {
                 GREY,
             ),
         ],
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     Ok(out)
@@ -315,7 +326,8 @@ fn fig5_zero_force(rhos: &[f64]) -> Result<Vec<Figure>> {
                 RED,
             ),
         ],
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     Ok(out)
@@ -341,7 +353,8 @@ fn figs6_to_8() -> Result<Vec<Figure>> {
                 GREY,
             ),
         ],
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     let pull = Contact::new(0.8)?.pull_off_load()?.state;
@@ -375,7 +388,8 @@ fn figs6_to_8() -> Result<Vec<Figure>> {
                 RED,
             ),
         ],
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     let non_adhesive: Vec<(f64, f64)> = grid(0.0, 3.0, 100)
@@ -421,7 +435,8 @@ fn figs6_to_8() -> Result<Vec<Figure>> {
                 RED,
             ),
         ],
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     Ok(out)
@@ -453,7 +468,8 @@ fn fig9_comparison() -> Result<Vec<Figure>> {
         x_label: "approach δ̄",
         y_label: "force F̄",
         series,
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     Ok(out)
@@ -482,7 +498,8 @@ fn crossing_angle() -> Result<Vec<Figure>> {
             solid("aspect ratio s at pull-off", s_pts, BLUE),
             solid("pull-off force |F̄|/(3π/2)", f_pts, RED),
         ],
-        shade: Some((theta_08, 90.0)),
+        shade: vec![(theta_08, 90.0)],
+        shade_label: "paper's range ρ ≥ 0.8",
         equal: false,
     });
     Ok(out)
@@ -544,14 +561,13 @@ fn render(fig: &Figure) -> Result<String> {
             .y_desc(fig.y_label)
             .draw()
             .map_err(|e| err(&e))?;
-        if let Some((a, b)) = fig.shade {
+        if !fig.shade.is_empty() {
             chart
-                .draw_series(std::iter::once(Rectangle::new(
-                    [(a, y0), (b, y1)],
-                    RGBColor(220, 235, 250).filled(),
-                )))
+                .draw_series(fig.shade.iter().map(|&(a, b)| {
+                    Rectangle::new([(a, y0), (b, y1)], RGBColor(220, 235, 250).filled())
+                }))
                 .map_err(|e| err(&e))?
-                .label("paper's range ρ ≥ 0.8")
+                .label(fig.shade_label)
                 .legend(|(x, y)| {
                     Rectangle::new(
                         [(x, y - 5), (x + 18, y + 5)],
@@ -674,10 +690,98 @@ pub fn exact_bands(
         x_label: "ā",
         y_label: "ρ = R₁/R₂",
         series,
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     };
     Ok((fig.file, render(&fig)?))
+}
+
+/// The band maps with the F̄(ā) curves they carry, one figure per ρ of
+/// [`BANDS_FORCE_FILES`] (others are not drawn), for ā in [2, 3.2] (the
+/// bands of modes 4, 6 and 8 and the pull-off): the bands shaded, the exact
+/// family's F̄ at its sampled sizes (a line through them, broken where a
+/// sample is missing), `conformal:8`'s at every grid point, and each
+/// ellipse model's along its explicit branch.
+pub fn exact_bands_force(
+    bands: &[crate::exact::bands::BandMap],
+) -> Result<Vec<(&'static str, String)>> {
+    let (lo, hi) = (2.0, 3.2);
+    let mut out = Vec::new();
+    for m in bands {
+        let Some(&(_, file)) = BANDS_FORCE_FILES.iter().find(|(r, _)| *r == m.rho) else {
+            continue;
+        };
+        let inside = |a: f64| (lo..=hi).contains(&a);
+        let mut series = Vec::new();
+        // pieces of a sampled curve between missing samples
+        let pieces = |of: &dyn Fn(&crate::exact::bands::CurvePoint) -> Option<f64>| {
+            let mut all: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+            for p in m.curve.iter().filter(|p| inside(p.a_bar)) {
+                match of(p) {
+                    Some(f) => all.last_mut().expect("one").push((p.a_bar, f)),
+                    None if p.model.is_none() => all.push(Vec::new()),
+                    None => {}
+                }
+            }
+            all.retain(|v| v.len() > 1);
+            all
+        };
+        for (k, piece) in pieces(&|p| p.model).into_iter().enumerate() {
+            let label = if k == 0 { m.screen.as_str() } else { "" };
+            series.push(dashed(label, piece, BLUE));
+        }
+        for (model, color) in ModelId::ALL.iter().zip([GREY, RED, GREEN, ORANGE]) {
+            let pts: Vec<(f64, f64)> = branch_of(*model, m.rho, 400)?
+                .iter()
+                .filter(|st| inside(st.a_bar) && st.force_bar < 12.0)
+                .map(|st| (st.a_bar, st.force_bar))
+                .collect();
+            series.push(dashed(&format!("model {model}"), pts, color));
+        }
+        for (k, piece) in pieces(&|p| p.exact).into_iter().enumerate() {
+            let label = if k == 0 { "exact (2)–(3)" } else { "" };
+            series.push(solid(label, piece, BLACK));
+        }
+        out.push(
+            (Figure {
+                file,
+                title: format!(
+                    "F̄ against ā at ρ = {}: bands of the exact family shaded",
+                    m.rho
+                ),
+                x_label: "ā",
+                y_label: "F̄",
+                series,
+                shade: m
+                    .bands
+                    .iter()
+                    .filter(|b| b.upper.a_bar > lo && b.lower.a_bar < hi)
+                    .map(|b| (b.lower.a_bar.max(lo), b.upper.a_bar.min(hi)))
+                    .collect(),
+                shade_label: "no near-elliptic exact state",
+                equal: false,
+            })
+            .rendered()?,
+        );
+    }
+    Ok(out)
+}
+
+/// The files of [`exact_bands_force`], by ρ.
+pub const BANDS_FORCE_FILES: [(f64, &str); 6] = [
+    (0.9, "exact_bands_force_0.9.svg"),
+    (0.8, "exact_bands_force_0.8.svg"),
+    (0.7, "exact_bands_force_0.7.svg"),
+    (0.6, "exact_bands_force_0.6.svg"),
+    (0.5, "exact_bands_force_0.5.svg"),
+    (0.4, "exact_bands_force_0.4.svg"),
+];
+
+impl Figure {
+    fn rendered(&self) -> Result<(&'static str, String)> {
+        Ok((self.file, render(self)?))
+    }
 }
 
 /// The exact solution's figures from `reference`: the pull-off F̄ against
@@ -729,7 +833,8 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         x_label: "ρ = R₁/R₂",
         y_label: "F̄ at pull-off",
         series,
-        shade: Some((0.8, 1.0)),
+        shade: vec![(0.8, 1.0)],
+        shade_label: "paper's range ρ ≥ 0.8",
         equal: false,
     });
     // 2. contours at pull-off
@@ -761,7 +866,8 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         x_label: "X",
         y_label: "Y",
         series,
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: true,
     });
     // 3. |∂p̄/∂ν − 1| along the contour; the exact solution's is at the
@@ -817,7 +923,8 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         x_label: "polar angle of the contour point [degrees]",
         y_label: "log₁₀ |∂p̄/∂ν − 1| (floored at 1e-9)",
         series,
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     // 4. the conformal family's pull-off error against K, per ρ
@@ -849,7 +956,8 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         x_label: "K (terms of the map)",
         y_label: "log₁₀ |F̄_K / F̄_exact − 1| (floored at 1e-12)",
         series,
-        shade: None,
+        shade: Vec::new(),
+        shade_label: "",
         equal: false,
     });
     Ok(out)

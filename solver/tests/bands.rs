@@ -63,6 +63,26 @@ fn bands_at_rho_0_8_sit_at_the_circle_modes_and_match_the_arms_folds() {
             );
         }
     }
+    // and its F̄(ā): the model's at every grid point, the exact family's at
+    // every fifth, as now
+    assert_eq!(at.curve.len(), map.curve.len());
+    for (c, p) in at.curve.iter().zip(&map.curve) {
+        for (was, now) in [(c.model, p.model), (c.exact, p.exact)] {
+            assert!(
+                match (was, now) {
+                    (Some(w), Some(n)) => (w - n).abs() < 1e-8 * (1.0 + n.abs()),
+                    (None, None) => true,
+                    _ => false,
+                },
+                "the committed F(a) at a = {} is {was:?}, now {now:?}: regenerate docs/data/exact_bands.jsonl",
+                p.a_bar
+            );
+        }
+    }
+    assert!(
+        map.curve.iter().filter(|p| p.exact.is_some()).count() >= 30,
+        "the exact F(a) is sampled at most grid points outside the bands"
+    );
     // the mode-8 band against the arms traced without any model, in steps
     // of at most 0.01 (the fold's ā as the nearer traced point)
     let ex = Exact::new(

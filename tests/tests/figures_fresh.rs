@@ -29,8 +29,9 @@ fn figures_are_fresh_and_deterministic() {
 /// `thinjkr accuracy --figures docs/figures` draws from the committed
 /// reference derive/data/exact_reference.json (whose freshness
 /// solver/tests/accuracy_table.rs checks), and the band map
-/// (exact_bands.svg) what `figures::exact_bands` draws from the committed
-/// band maps docs/data/exact_bands.jsonl with it.
+/// (exact_bands.svg) and F̄(ā) over the bands (exact_bands_force_*.svg)
+/// what `figures::exact_bands` and `figures::exact_bands_force` draw from
+/// the committed band maps docs/data/exact_bands.jsonl.
 #[test]
 fn exact_figures_are_fresh() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -52,6 +53,10 @@ fn exact_figures_are_fresh() {
             })
             .collect();
     figs.push(thinjkr::figures::exact_bands(&bands, &reference).expect("the band map draws"));
+    // and F̄(ā) over the bands, one figure per ρ
+    let force = thinjkr::figures::exact_bands_force(&bands).expect("the F(a) figures draw");
+    assert_eq!(force.len(), thinjkr::figures::BANDS_FORCE_FILES.len());
+    figs.extend(force);
     let mut stale = Vec::new();
     for (name, svg) in &figs {
         let p = root.join("docs/figures").join(name);

@@ -23,7 +23,10 @@
 //!   overlap, mean near-elliptic states exist across it (the model's gap
 //!   is its own), and the candidate is reported as such.
 //!
-//! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`bands`]. May use: `exact`
+//! The map also carries F̄(ā) of the model and of the exact family over
+//! the screen ([`CurvePoint`]), for the figure.
+//!
+//! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`]. May use: `exact`
 //! (its family and traces), `conformal` (the screen), `error`, rayon.
 
 use super::{Contour, Exact};
@@ -77,6 +80,25 @@ pub struct Crossed {
     pub why: String,
 }
 
+/// F̄ at one ā of the screen: the model's and the exact family's.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct CurvePoint {
+    /// ā.
+    pub a_bar: f64,
+    /// F̄ of the screening model's near-elliptic state at this ā (`None`
+    /// where it has none).
+    pub model: Option<f64>,
+    /// F̄ of the exact state at this ā started from the model's (every
+    /// [`CURVE_EVERY`]th grid point; `None` elsewhere, where the model has
+    /// none, or where no resolved exact state lands near the model's).
+    pub exact: Option<f64>,
+}
+
+/// The exact family's F̄(ā) is sampled at every this many grid points of
+/// the screen (0.05 in ā).
+pub const CURVE_EVERY: usize = 5;
+
 /// The band map at one ρ over a range of ā.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -99,6 +121,8 @@ pub struct BandMap {
     /// Gaps of the screen at an end of the range (not bracketed, not
     /// settled).
     pub open_ends: Vec<[f64; 2]>,
+    /// F̄(ā) of the model and of the exact family over the screen.
+    pub curve: Vec<CurvePoint>,
 }
 
 /// The model's near-elliptic states at fixed ā on the grid from `from` to
@@ -203,6 +227,7 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
         crossed: Vec::new(),
         unsettled: Vec::new(),
         open_ends: Vec::new(),
+        curve: curve(rho, &grid, &states),
     };
     for gap in gaps(&states) {
         match gap {
@@ -222,6 +247,37 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
         }
     }
     Ok(map)
+}
+
+/// F̄(ā) over the screen: the model's at every grid point, the exact
+/// family's at every [`CURVE_EVERY`]th, each exact state by Newton at that ā
+/// from the model's ellipse there (truncations escalated as for every
+/// exact state, [`super::resolved`]), kept when resolved and near the
+/// model's state (s within 5 %).
+fn curve(rho: f64, grid: &[f64], states: &[Option<ConformalState>]) -> Vec<CurvePoint> {
+    grid.par_iter()
+        .zip(states)
+        .enumerate()
+        .map(|(j, (&a_bar, st))| {
+            let exact = st.as_ref().filter(|_| j % CURVE_EVERY == 0).and_then(|m| {
+                super::resolved(rho, &super::default_tries(), |ex| {
+                    ex.solve(
+                        m.a_bar,
+                        &Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes),
+                        m.delta_bar,
+                    )
+                })
+                .ok()
+                .filter(|e| e.bc_error <= super::RESOLVED && (e.s / m.s - 1.0).abs() <= 0.05)
+                .map(|e| e.force_bar)
+            });
+            CurvePoint {
+                a_bar,
+                model: st.as_ref().map(|m| m.force_bar),
+                exact,
+            }
+        })
+        .collect()
 }
 
 /// Why the exact solver found no state at `control`, in words, where a

@@ -13,7 +13,7 @@ pub const SLOPE_ROWS: &[(u16, usize)] = &[(0, 3), (2, 2)];
 /// evaluator (`crate::conformal::poly::evaluate`, order 2) unrolled
 /// over this member's rows, the same operations in the same order.
 /// `c` holds the K map coefficients.
-#[allow(clippy::all, unused_parens, unused_variables)]
+#[allow(clippy::all, unused_parens, unused_variables, unused_mut)]
 pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::conformal::poly::Second {
     assert_eq!(c.len(), 1usize, "one value per map coefficient");
     let c0_0 = 1.0f64;
