@@ -142,3 +142,41 @@ fn band_map_input_is_a_typed_error() {
     assert_eq!(name(bands(0.8, 2.0, 1.0)), "to");
     assert_eq!(name(bands(0.8, 2.0, 40.0)), "to");
 }
+
+/// The band table and its notes in docs/exact.md are what
+/// `exact::bands::markdown` renders from the committed maps
+/// (docs/data/exact_bands.jsonl) and the exact pull-offs
+/// (derive/data/exact_reference.json).
+#[test]
+fn the_band_table_in_the_docs_is_the_committed_maps() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let maps: Vec<thinjkr::exact::bands::BandMap> =
+        std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
+            .expect("the committed band maps exist")
+            .lines()
+            .map(|l| {
+                let v: serde_json::Value = serde_json::from_str(l).expect("a JSON line");
+                serde_json::from_value(v["bands"].clone()).expect("a band map")
+            })
+            .collect();
+    let reference: thinjkr::exact::table::Reference = serde_json::from_str(
+        &std::fs::read_to_string(root.join("derive/data/exact_reference.json"))
+            .expect("the exact reference exists"),
+    )
+    .expect("the exact reference parses");
+    let pull_offs: Vec<(f64, f64)> = reference
+        .pull_off
+        .iter()
+        .map(|e| (e.rho, e.a_bar))
+        .collect();
+    let table = thinjkr::exact::bands::markdown(&maps, &pull_offs);
+    let doc = std::fs::read_to_string(root.join("docs/exact.md")).expect("docs/exact.md exists");
+    assert!(
+        table.lines().filter(|l| !l.is_empty()).count() > 30,
+        "a table of every band and its notes:\n{table}"
+    );
+    assert!(
+        doc.contains(&table),
+        "docs/exact.md's band table is stale; it should read:\n{table}"
+    );
+}

@@ -280,6 +280,95 @@ fn curve(rho: f64, grid: &[f64], states: &[Option<ConformalState>]) -> Vec<Curve
         .collect()
 }
 
+/// The band maps as docs/exact.md prints them: a table of the bands (ā
+/// interval with the mode at each edge, F̄, δ̄, truncation and boundary
+/// error at the edges), then per ρ the model's gaps the exact family
+/// crosses or could not settle, the open ends of the screen, and where the
+/// exact pull-off (`pull_offs`: (ρ, ā)) lies against the band nearest it.
+pub fn markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
+    let mode = |e: &BandEdge| e.mode.map_or("?".to_string(), |n| format!("cos {n}θ"));
+    let mut o = String::from(
+        "| ρ | band in ā (mode at lower / upper edge) | F̄ at the edges | δ̄ at the edges | N, bc at the edges |\n|---|---|---|---|---|\n",
+    );
+    for m in maps {
+        for b in &m.bands {
+            let (l, u) = (&b.lower, &b.upper);
+            o.push_str(&format!(
+                "| {} | {:.4} < ā < {:.4} ({} / {}) | {:.4}, {:.4} | {:.4}, {:.4} | {}, {:.0e}; {}, {:.0e} |\n",
+                m.rho,
+                l.a_bar,
+                u.a_bar,
+                mode(l),
+                mode(u),
+                l.force_bar,
+                u.force_bar,
+                l.delta_bar,
+                u.delta_bar,
+                l.modes,
+                l.bc_error,
+                u.modes,
+                u.bc_error
+            ));
+        }
+    }
+    o.push('\n');
+    for m in maps {
+        let rho = m.rho;
+        for c in &m.crossed {
+            o.push_str(&format!(
+                "- ρ = {rho}: `{}` has no near-elliptic state between ā = {:.2} and {:.2}, but {}.\n",
+                m.screen, c.screened[0], c.screened[1], c.why
+            ));
+        }
+        for c in &m.unsettled {
+            o.push_str(&format!(
+                "- ρ = {rho}: `{}` has no near-elliptic state between ā = {:.2} and {:.2}, not settled: {}.\n",
+                m.screen, c.screened[0], c.screened[1], c.why
+            ));
+        }
+        for e in &m.open_ends {
+            o.push_str(&format!(
+                "- ρ = {rho}: `{}` has no near-elliptic state from ā = {:.2} to {:.2}, at the end of the range screened (not settled).\n",
+                m.screen, e[0], e[1]
+            ));
+        }
+        let po = pull_offs.iter().find(|(r, _)| *r == rho).map(|&(_, a)| a);
+        let nearest = po.and_then(|a| {
+            m.bands
+                .iter()
+                .min_by(|x, y| {
+                    let d = |b: &Band| (b.lower.a_bar - a).abs().min((b.upper.a_bar - a).abs());
+                    d(x).total_cmp(&d(y))
+                })
+                .map(|b| (a, b))
+        });
+        if let Some((a, b)) = nearest {
+            let place = if a > b.upper.a_bar {
+                format!(
+                    "{:.1e} above the upper edge {:.6}",
+                    a - b.upper.a_bar,
+                    b.upper.a_bar
+                )
+            } else if a < b.lower.a_bar {
+                format!(
+                    "{:.1e} below the lower edge {:.6}",
+                    b.lower.a_bar - a,
+                    b.lower.a_bar
+                )
+            } else {
+                format!(
+                    "inside it ({:.6} < ā < {:.6})",
+                    b.lower.a_bar, b.upper.a_bar
+                )
+            };
+            o.push_str(&format!(
+                "- ρ = {rho}: the exact pull-off's ā, {a:.6}, is {place} of the band nearest it.\n"
+            ));
+        }
+    }
+    o
+}
+
 /// Why the exact solver found no state at `control`, in words, where a
 /// band is the reason: the model's screen over ā within 15 % of the
 /// circle's ā at that control (`a_circle`); each gap whose neighbours'
