@@ -8,7 +8,7 @@
 use clap::{Args, Subcommand};
 use thinjkr::exact::branch::ExactControl;
 use thinjkr::exact::stability::UnstableMode;
-use thinjkr::exact::{resolved, Exact, ExactState, Truncation};
+use thinjkr::exact::{resolved, ExactState, Truncation};
 use thinjkr::report::{AnyState, Document, ModelAnswer, Passed};
 use thinjkr::{Contact, Error, ModelId, Result};
 
@@ -69,9 +69,9 @@ pub enum ExactCommand {
         #[arg(long)]
         json: bool,
     },
-    /// The exact state at given δ̄ or F̄ (on the near-elliptical arm through the circle with that value, continued in ρ).
+    /// The exact state at given δ̄ or F̄ (started from conformal:8's state at that value, else on the near-elliptical arm through the circle with that value, continued in ρ); with --all, every near-elliptic exact state at that value.
     #[command(
-        after_help = "Example:\n  thinjkr exact solve --rho 0.8 --delta 2",
+        after_help = "Examples:\n  thinjkr exact solve --rho 0.8 --delta 2\n  thinjkr exact solve --rho 0.8 --force -4 --all",
         group(clap::ArgGroup::new("control").required(true).args(["delta", "force"]))
     )]
     Solve {
@@ -84,6 +84,20 @@ pub enum ExactCommand {
         /// Force F̄.
         #[arg(long, allow_hyphen_values = true)]
         force: Option<f64>,
+        /// Every near-elliptic exact state at that value with ā in [--from, --to]: where conformal:8's states at fixed ā (steps of 0.01) cross it, each solved exactly.
+        #[arg(long)]
+        all: bool,
+        /// Smallest ā screened with --all.
+        #[arg(
+            long,
+            default_value_t = 1.0,
+            allow_hyphen_values = true,
+            requires = "all"
+        )]
+        from: f64,
+        /// Largest ā screened with --all (at most from + 9.99; default: 4, or 1.2 times the circle's ā at that value where larger).
+        #[arg(long, allow_hyphen_values = true, requires = "all")]
+        to: Option<f64>,
         #[command(flatten)]
         discretisation: Discretisation,
         /// Print JSON.
@@ -147,6 +161,9 @@ pub fn run(c: ExactCommand) -> Result<()> {
             rho,
             delta,
             force,
+            all,
+            from,
+            to,
             discretisation,
             json,
         } => {
@@ -155,6 +172,15 @@ pub fn run(c: ExactCommand) -> Result<()> {
                 (_, Some(f)) => ExactControl::Force(f),
                 _ => return Err(Error::Usage("give one of --delta, --force".into())),
             };
+            if all {
+                let circle = thinjkr::exact::branch::circle_a_bar(control);
+                let to = to.unwrap_or(if circle.is_finite() {
+                    (1.2 * circle).max(4.0)
+                } else {
+                    4.0
+                });
+                return every_state(rho, control, from, to, &discretisation, json);
+            }
             state(rho, control, &discretisation, json)
         }
         ExactCommand::ZeroForce {
@@ -281,7 +307,7 @@ fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
 /// The exact load-controlled pull-off and every model's.
 pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     let spin = crate::output::Spinner::start("locating the exact pull-off");
-    let (po, events) = resolved(rho, &d.tries()?, Exact::pull_off_load)?;
+    let (po, events) = thinjkr::exact::pull_off_with(rho, &d.tries()?)?;
     let models: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {
@@ -332,6 +358,88 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
             ),
             Err(e) => outln!("  model {m}: {e}"),
         }
+    }
+    Ok(())
+}
+
+/// `thinjkr exact solve --all`: every near-elliptic exact state at the
+/// control with ā in [from, to].
+pub fn every_state(
+    rho: f64,
+    control: ExactControl,
+    from: f64,
+    to: f64,
+    d: &Discretisation,
+    json: bool,
+) -> Result<()> {
+    let v = match control {
+        ExactControl::Delta(v) | ExactControl::Force(v) => v,
+    };
+    if !v.is_finite() {
+        return Err(Error::OutOfRange {
+            name: if matches!(control, ExactControl::Delta(_)) {
+                "delta"
+            } else {
+                "force"
+            },
+            value: v,
+            range: "finite".into(),
+        });
+    }
+    let spin = crate::output::Spinner::start("screening for every exact state");
+    let all = thinjkr::exact::bands::states_at(rho, control, from, to, &d.tries()?)?;
+    drop(spin);
+    if all.states.is_empty() {
+        let missed: Vec<String> = all
+            .missed
+            .iter()
+            .map(|(a, why)| format!("near a = {a:.3}: {why}"))
+            .collect();
+        return Err(Error::NoState(format!(
+            "no near-elliptic exact state at {control} for rho = {} with a from {} to {} (conformal:8 screened in steps of 0.01{})",
+            thinjkr::error::short(rho),
+            thinjkr::error::short(from),
+            thinjkr::error::short(to),
+            if missed.is_empty() {
+                String::new()
+            } else {
+                format!("; where it crosses that value: {}", missed.join("; "))
+            }
+        )));
+    }
+    if json {
+        let doc = Document::States {
+            states: all
+                .states
+                .into_iter()
+                .map(|st| AnyState::Exact(Box::new(st)))
+                .collect(),
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    let n = all.states.len();
+    outln!(
+        "{n} near-elliptic exact state{} at {control} for rho = {rho} with a from {} to {} (where conformal:8's states at fixed a, {} grid points, cross that value):",
+        if n == 1 { "" } else { "s" },
+        all.range[0],
+        thinjkr::error::short(all.range[1]),
+        all.screen
+    );
+    for (k, st) in all.states.iter().enumerate() {
+        outln!(
+            "exact state {} of {n}: a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
+            k + 1,
+            st.a_bar,
+            st.b_bar,
+            st.s,
+            st.delta_bar,
+            st.force_bar
+        );
+        show_quality(st)?;
+    }
+    for (a, why) in &all.missed {
+        outln!("  not accepted near a = {a:.3}: {why}");
     }
     Ok(())
 }

@@ -180,3 +180,40 @@ fn the_band_table_in_the_docs_is_the_committed_maps() {
         "docs/exact.md's band table is stale; it should read:\n{table}"
     );
 }
+
+/// `exact solve --all`: at ρ = 0.8 the force F̄ = −4 has two near-elliptic
+/// exact states, on the arm from small contacts (below the mode-4 band,
+/// unstable under load control in the size itself, n = 0, and under
+/// displacement control in mode 4) and on the arm that carries the pull-off
+/// (above the band, stable in modes 0 … 4); the latter is the state
+/// `exact::at_resolved` finds, and both are resolved.
+#[test]
+fn every_state_at_a_force_is_found() {
+    use thinjkr::exact::branch::ExactControl;
+    let all = thinjkr::exact::bands::states_at(
+        0.8,
+        ExactControl::Force(-4.0),
+        1.0,
+        4.0,
+        &thinjkr::exact::default_tries(),
+    )
+    .expect("the screen runs");
+    assert_eq!(all.states.len(), 2, "{:?}", all.missed);
+    let (small, large) = (&all.states[0], &all.states[1]);
+    for st in [small, large] {
+        assert!((st.force_bar + 4.0).abs() < 1e-9, "{}", st.force_bar);
+        assert!(st.bc_error <= thinjkr::exact::CONVERGED, "{}", st.bc_error);
+    }
+    // either side of the mode-4 band 2.2557 < a < 2.3955
+    assert!(small.a_bar < 2.2557 && large.a_bar > 2.3955);
+    let has = |v: &[thinjkr::exact::stability::UnstableMode], n: usize| v.iter().any(|m| m.n == n);
+    assert!(has(&small.stability.load, 0) && has(&small.stability.displacement, 4));
+    assert!(!has(&large.stability.load, 0) && !has(&large.stability.load, 4));
+    let one = thinjkr::exact::at_resolved(0.8, ExactControl::Force(-4.0)).expect("a state");
+    assert!(
+        (one.a_bar - large.a_bar).abs() < 1e-8,
+        "{} {}",
+        one.a_bar,
+        large.a_bar
+    );
+}

@@ -26,7 +26,11 @@
 //! The map also carries F̄(ā) of the model and of the exact family over
 //! the screen ([`CurvePoint`]), for the figure.
 //!
-//! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`]. May use: `exact`
+//! [`states_at`] uses the same screen to find every near-elliptic exact
+//! state at a given δ̄ or F̄.
+//!
+//! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
+//! [`states_at`]. May use: `exact`
 //! (its family and traces), `conformal` (the screen), `error`, rayon.
 
 use super::{Contour, Exact};
@@ -367,6 +371,104 @@ pub fn markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
         }
     }
     o
+}
+
+/// Every near-elliptic exact state at `control` with ā in [`from`, `to`]:
+/// where the screening model's (`conformal:8`'s) value of the control
+/// crosses the target between two neighbouring grid points of the screen
+/// (step 0.01), the exact state by Newton with the control held, from the
+/// ellipse of the model's state nearer the target, with the truncations
+/// `tries` escalated as for every exact state ([`super::resolved`]); kept
+/// when resolved and within one grid step of the bracket. Sorted by ā, one
+/// per state (answers within 1e-6 in ā are one). States in a band of the
+/// family, or where the model has no near-elliptic state, are not looked
+/// for; brackets where Newton fails are reported in `missed` (ā of the
+/// bracket and why).
+pub fn states_at(
+    rho: f64,
+    control: super::branch::ExactControl,
+    from: f64,
+    to: f64,
+    tries: &[super::Truncation],
+) -> Result<AllStates> {
+    use super::branch::ExactControl;
+    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+    crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
+    crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
+    let (_, grid, states) = screen(rho, from, to)?;
+    let value = |m: &ConformalState| match control {
+        ExactControl::Force(f) => m.force_bar - f,
+        ExactControl::Delta(d) => m.delta_bar - d,
+    };
+    let brackets: Vec<(&ConformalState, &ConformalState)> = states
+        .windows(2)
+        .filter_map(|w| match (&w[0], &w[1]) {
+            (Some(l), Some(r)) if value(l) * value(r) <= 0.0 && value(l) != value(r) => {
+                Some((l, r))
+            }
+            _ => None,
+        })
+        .collect();
+    let answers: Vec<(f64, Result<super::ExactState>)> = brackets
+        .par_iter()
+        .map(|&(l, r)| {
+            let start = if value(l).abs() <= value(r).abs() { l } else { r };
+            let found = super::resolved(rho, tries, |ex| {
+                ex.solve_at(
+                    control,
+                    &Contour::ellipse(start.a_bar, start.b_bar, ex.truncation().modes),
+                    start.delta_bar,
+                )
+            })
+            .and_then(|mut st| {
+                if st.a_bar >= l.a_bar - STEP && st.a_bar <= r.a_bar + STEP {
+                    st.route = super::Route::FromScreen;
+                    Ok(st)
+                } else {
+                    Err(Error::NoState(format!(
+                        "Newton from the model's state at a = {:.2} landed at a = {:.4}, outside the bracket",
+                        start.a_bar, st.a_bar
+                    )))
+                }
+            });
+            (0.5 * (l.a_bar + r.a_bar), found)
+        })
+        .collect();
+    let mut out = AllStates {
+        range: [from, to],
+        screen: grid.len(),
+        states: Vec::new(),
+        missed: Vec::new(),
+    };
+    for (a, found) in answers {
+        match found {
+            Ok(st) => {
+                if !out
+                    .states
+                    .iter()
+                    .any(|o: &super::ExactState| (o.a_bar - st.a_bar).abs() < 1e-6)
+                {
+                    out.states.push(st);
+                }
+            }
+            Err(e) => out.missed.push((a, e.to_string())),
+        }
+    }
+    out.states.sort_by(|x, y| x.a_bar.total_cmp(&y.a_bar));
+    Ok(out)
+}
+
+/// What [`states_at`] found.
+#[derive(Clone, Debug)]
+pub struct AllStates {
+    /// The ā range screened.
+    pub range: [f64; 2],
+    /// Grid points screened.
+    pub screen: usize,
+    /// The exact states, by increasing ā.
+    pub states: Vec<super::ExactState>,
+    /// Brackets of the screen where no state was accepted: their ā and why.
+    pub missed: Vec<(f64, String)>,
 }
 
 /// Why the exact solver found no state at `control`, in words, where a

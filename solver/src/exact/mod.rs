@@ -131,11 +131,16 @@ pub fn default_tries() -> Vec<Truncation> {
 /// The load-controlled pull-off at `rho` with the default escalation of
 /// truncations ([`resolved`], [`default_tries`]).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
+    pull_off_with(rho, &default_tries())
+}
+
+/// [`pull_off_resolved`] with the truncations `tries`.
+pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<branch::Event>)> {
     // the model's pull-off once; each truncation after the first starts
     // just above the pull-off of the one before
     let model = branch::model_pull_off(rho);
     let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
-    resolved(rho, &default_tries(), |ex| {
+    resolved(rho, tries, |ex| {
         let found = ex.pull_off_load_near(model.as_ref(), coarser.borrow().as_ref());
         if let Ok((st, _)) = &found {
             *coarser.borrow_mut() = Some(st.clone());
@@ -401,6 +406,10 @@ pub enum Route {
     /// The pull-off traced from the exact state just above the richest
     /// model's pull-off (`conformal:8`'s ā + 0.03).
     AboveModelPullOff,
+    /// Where the richest model's states at fixed ā cross the control
+    /// (`exact solve --all`): Newton at the control from the model's
+    /// ellipse there.
+    FromScreen,
     /// From the exact circle at ρ = 1, continued in ρ at fixed ā, then the
     /// family traced to the control (no approximate model used).
     #[default]
@@ -412,6 +421,7 @@ impl std::fmt::Display for Route {
         f.write_str(match self {
             Route::FromModel => "started from conformal:8 at the same control",
             Route::AboveModelPullOff => "traced from just above conformal:8's pull-off",
+            Route::FromScreen => "Newton at the control from conformal:8's state where its states at fixed a cross it",
             Route::FromCircle => "continued in rho from the circle at rho = 1",
         })
     }
