@@ -442,3 +442,53 @@ fn states_at_rho_one_half_are_found_from_the_richest_model() {
     assert!((ten.a_bar - 3.380).abs() < 1e-3, "{}", ten.a_bar);
     assert!((ten.s - 0.767).abs() < 1e-3, "{}", ten.s);
 }
+
+/// docs/exact.md, "Bands": at ρ = 0.8 (16 modes) the arm from large contacts
+/// folds back in ā at the mode-4 band's upper edge while F̄ still falls, and
+/// F̄ reaches its minimum (the load-controlled pull-off) just past the fold,
+/// at a larger ā on the returning stretch: traced in steps of 0.002, dā/dσ
+/// changes sign before dF̄/dσ does, and the pull-off's trace reports the
+/// located fold below the pull-off's ā.
+#[test]
+fn the_pull_off_lies_just_past_the_fold_of_the_mode_4_band() {
+    let ex = Exact::new(0.8, trunc(16, 256)).unwrap();
+    let start = ex.solve_from(2.40, &ex.from_circle(2.6).unwrap()).unwrap();
+    let b = ex.trace(&start, 2.39, 0.002, 60).unwrap();
+    let first = |f: &dyn Fn(&thinjkr::exact::branch::BranchPoint) -> bool| {
+        b.points
+            .iter()
+            .position(f)
+            .expect("the sign changes on the traced stretch")
+    };
+    let fold = first(&|p| p.d_a_bar > 0.0);
+    let minimum = first(&|p| p.d_force > 0.0);
+    assert!(
+        fold < minimum,
+        "fold at point {fold}, minimum at point {minimum}"
+    );
+    // F̄ still falls at the fold
+    assert!(b.points[fold - 1].d_force < 0.0 && b.points[fold].d_force < 0.0);
+    let (po, events) = ex.pull_off_load().unwrap();
+    let fold_a = events
+        .iter()
+        .find_map(|e| match e {
+            Event::SizeFold { a_bar } => Some(*a_bar),
+            _ => None,
+        })
+        .expect("the pull-off's trace passes the fold");
+    assert!(
+        fold_a < po.a_bar && po.a_bar - fold_a < 1e-3,
+        "fold at a = {fold_a}, pull-off at a = {}",
+        po.a_bar
+    );
+    // the located fold is the smallest a of the fine trace, to its step
+    let smallest = b
+        .points
+        .iter()
+        .map(|p| p.state.a_bar)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        (fold_a - smallest).abs() < 2e-5,
+        "{fold_a} against {smallest}"
+    );
+}
