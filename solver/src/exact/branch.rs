@@ -269,11 +269,7 @@ impl Family<Dyn> for Exact {
     }
 
     fn residuals(&self, u: &DVector<f64>) -> Option<DVector<f64>> {
-        let (r, _) = self.modes(u)?;
-        let n = u.len();
-        let mut rr = DVector::zeros(n);
-        rr.rows_mut(0, n - 1).copy_from(&r);
-        Some(rr)
+        self.residuals_and_force(u).map(|(r, _)| r)
     }
 
     fn residuals_and_force(&self, u: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
