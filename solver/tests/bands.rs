@@ -41,13 +41,7 @@ fn bands_at_rho_0_8_sit_at_the_circle_modes_and_match_the_arms_folds() {
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/data/exact_bands.jsonl"),
     )
     .expect("the committed band maps exist");
-    let committed: Vec<thinjkr::exact::bands::BandMap> = text
-        .lines()
-        .map(|l| {
-            let v: serde_json::Value = serde_json::from_str(l).expect("a JSON line");
-            serde_json::from_value(v["bands"].clone()).expect("a band map")
-        })
-        .collect();
+    let committed = thinjkr::exact::bands::from_json_lines(&text).expect("band map lines");
     let at = committed
         .iter()
         .find(|m| m.rho == 0.8)
@@ -150,15 +144,11 @@ fn band_map_input_is_a_typed_error() {
 #[test]
 fn the_band_table_in_the_docs_is_the_committed_maps() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let maps: Vec<thinjkr::exact::bands::BandMap> =
-        std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
-            .expect("the committed band maps exist")
-            .lines()
-            .map(|l| {
-                let v: serde_json::Value = serde_json::from_str(l).expect("a JSON line");
-                serde_json::from_value(v["bands"].clone()).expect("a band map")
-            })
-            .collect();
+    let maps = thinjkr::exact::bands::from_json_lines(
+        &std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
+            .expect("the committed band maps exist"),
+    )
+    .expect("band map lines");
     let reference: thinjkr::exact::table::Reference = serde_json::from_str(
         &std::fs::read_to_string(root.join("derive/data/exact_reference.json"))
             .expect("the exact reference exists"),

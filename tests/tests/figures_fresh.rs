@@ -43,15 +43,11 @@ fn exact_figures_are_fresh() {
     assert_eq!(figs.len(), 4);
     // the band map, from the committed band maps (whose ρ = 0.8 line
     // solver/tests/bands.rs recomputes)
-    let bands: Vec<thinjkr::exact::bands::BandMap> =
-        std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
-            .expect("the committed band maps exist")
-            .lines()
-            .map(|l| {
-                let v: serde_json::Value = serde_json::from_str(l).expect("a JSON line");
-                serde_json::from_value(v["bands"].clone()).expect("a band map")
-            })
-            .collect();
+    let bands = thinjkr::exact::bands::from_json_lines(
+        &std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
+            .expect("the committed band maps exist"),
+    )
+    .expect("band map lines");
     figs.push(thinjkr::figures::exact_bands(&bands, &reference).expect("the band map draws"));
     // and F̄(ā) over the bands, one figure per ρ
     let force = thinjkr::figures::exact_bands_force(&bands).expect("the F(a) figures draw");

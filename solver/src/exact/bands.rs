@@ -284,6 +284,26 @@ fn curve(rho: f64, grid: &[f64], states: &[Option<ConformalState>]) -> Vec<Curve
         .collect()
 }
 
+/// The band maps of a file of `thinjkr exact bands --json` lines (one
+/// `{"bands": …}` document per line, as docs/data/exact_bands.jsonl).
+pub fn from_json_lines(text: &str) -> Result<Vec<BandMap>> {
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .enumerate()
+        .map(|(k, l)| {
+            #[derive(Deserialize)]
+            struct Line {
+                bands: BandMap,
+            }
+            serde_json::from_str::<Line>(l)
+                .map(|d| d.bands)
+                .map_err(|e| {
+                    Error::NoState(format!("line {} is not a band map document: {e}", k + 1))
+                })
+        })
+        .collect()
+}
+
 /// The band maps as docs/exact.md prints them: a table of the bands (ā
 /// interval with the mode at each edge, F̄, δ̄, truncation and boundary
 /// error at the edges), then per ρ the model's gaps the exact family
