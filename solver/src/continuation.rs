@@ -464,20 +464,8 @@ where
         sigma: f64,
         lu: &LU<f64, D, D>,
     ) -> Result<(OVector<f64, D>, Linear<D>)> {
-        [
-            0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4,
-        ]
-        .iter()
-        .find_map(|off| {
-            self.correct(&p.u, &p.t, sigma + off * (1.0 + sigma.abs()), Some(lu))
-                .map(|(u, _, l)| (u, l))
-        })
-        .ok_or_else(|| {
-            self.family.stuck(
-                &p.u,
-                &format!("no corrected point near arclength {sigma:.3e} while locating an event"),
-            )
-        })
+        let linear = |u: &OVector<f64, D>| self.family.linearise(u).map(|l| (l.r.clone(), l));
+        self.beside_then(p, sigma, lu, &linear)
     }
 
     /// F̄ at the corrected point at σ from `p`, or a little beside it, as
@@ -489,6 +477,18 @@ where
         lu: &LU<f64, D, D>,
     ) -> Result<(OVector<f64, D>, f64)> {
         let force = |u: &OVector<f64, D>| self.family.residuals_and_force(u);
+        self.beside_then(p, sigma, lu, &force)
+    }
+
+    /// [`Engine::beside`] with `finish` at the answer (as in
+    /// [`Engine::correct_then`]).
+    fn beside_then<T>(
+        &self,
+        p: &Point<D>,
+        sigma: f64,
+        lu: &LU<f64, D, D>,
+        finish: &dyn Fn(&OVector<f64, D>) -> Option<(OVector<f64, D>, T)>,
+    ) -> Result<(OVector<f64, D>, T)> {
         [
             0.0, 1e-9, -1e-9, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4,
         ]
@@ -499,9 +499,9 @@ where
                 &p.t,
                 sigma + off * (1.0 + sigma.abs()),
                 Some(lu),
-                &force,
+                finish,
             )
-            .map(|(u, _, f)| (u, f))
+            .map(|(u, _, v)| (u, v))
         })
         .ok_or_else(|| {
             self.family.stuck(
