@@ -330,8 +330,8 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
 
 /// The exact state at `what` in {"delta", "force"} = `value`, or its
 /// load-controlled pull-off (`what` = "pull_off"), as JSON; with `modes`
-/// contour modes (16 quadrature points each) instead of the default
-/// escalation 12, 16, 24, 32, 48.
+/// contour modes (8 quadrature points each) instead of the default
+/// escalation (12 to 64 modes, `thinjkr::exact::default_tries`).
 #[pyfunction]
 #[pyo3(signature = (rho, what, value, modes=None))]
 fn exact(
@@ -341,13 +341,10 @@ fn exact(
     value: f64,
     modes: Option<usize>,
 ) -> PyResult<String> {
-    use thinjkr::exact::{default_tries, resolved, Exact, Truncation};
+    use thinjkr::exact::{at_with, default_tries, pull_off_with, Truncation};
     let tries = match modes {
         None => default_tries(),
-        Some(m) if (1..=64).contains(&m) => vec![Truncation {
-            modes: m,
-            points: 16 * m,
-        }],
+        Some(m) if (1..=64).contains(&m) => vec![Truncation::with_modes(m)],
         Some(m) => {
             return Err(raw(Error::OutOfRange {
                 name: "modes",
@@ -360,15 +357,11 @@ fn exact(
     py.detach(move || -> thinjkr::Result<String> {
         match what.as_str() {
             "pull_off" => {
-                let (st, _) = resolved(rho, &tries, Exact::pull_off_load)?;
+                let (st, _) = pull_off_with(rho, &tries)?;
                 Ok(json(&st))
             }
-            "delta" => Ok(json(&resolved(rho, &tries, |ex| {
-                ex.at(ExactControl::Delta(value))
-            })?)),
-            "force" => Ok(json(&resolved(rho, &tries, |ex| {
-                ex.at(ExactControl::Force(value))
-            })?)),
+            "delta" => Ok(json(&at_with(rho, ExactControl::Delta(value), &tries)?)),
+            "force" => Ok(json(&at_with(rho, ExactControl::Force(value), &tries)?)),
             other => Err(Error::Usage(format!(
                 "what must be delta, force or pull_off (got '{other}')"
             ))),

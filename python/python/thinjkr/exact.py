@@ -25,8 +25,9 @@ def _with_contour(d, points: int) -> State:
 def solve(rho: float, *, delta=None, force=None, points: int = 256, modes=None) -> State:
     """The exact state at approach ``delta`` (δ̄) or force ``force`` (F̄),
     its contour sampled at ``points`` angles. ``modes``: the contour series'
-    length (1 … 64); by default 12, 16, 24, 32, 48 are tried until one
-    converges (an answer not resolved by any raises :class:`Unresolved`)."""
+    length (1 … 64); by default the modes are escalated from 12 to 96 until
+    the fine-grid boundary error is below 1e-9 (where none is,
+    :class:`Unresolved` is raised with the smallest error reached)."""
     control, value = _control(delta, force, None)
     d = _json.loads(_call(_thinjkr.exact, float(rho), control, float(value), _modes(modes)))
     return _with_contour(d, points)

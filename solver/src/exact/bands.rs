@@ -15,8 +15,8 @@
 //!   (3)₂ below 1e-2. Runs of points that are not bound candidate gaps.
 //! - each candidate is settled by the exact family itself: from the exact
 //!   state at the last near-elliptic grid point on either side (started
-//!   from the model's ellipse, with the first truncation of 12, 16, 24,
-//!   32, 48 modes that resolves it) the family is traced into the gap
+//!   from the model's ellipse, with the first truncation of the default
+//!   escalation that resolves it) the family is traced into the gap
 //!   (steps of at most 0.01 in its unknowns) to its first fold in ā,
 //!   located. Both arms folding, the lower fold below the upper, make a
 //!   band; an arm that crosses the gap without folding, or folds that
@@ -570,9 +570,11 @@ fn settle(
 /// The located fold of the exact family traced in `direction` from the
 /// exact state near the first of the model's states `beside` the gap (in
 /// order) that gives one; `None` when ā passes `limit` first.
-/// The truncations 12, 16, 24, 32, 48 are tried in turn, from the first
-/// that resolves the start, until the fold state's boundary error is below
-/// [`super::CONVERGED`] (else the best below [`super::RESOLVED`], else an
+/// The truncations of [`super::default_tries`] are tried in turn (those
+/// predicted not to converge skipped, [`super::next_try`]), from the
+/// first that resolves the start, until the fold state's boundary error is
+/// below [`super::CONVERGED`] (else the best below [`super::RESOLVED`],
+/// which the band table prints with its boundary error, else an
 /// [`Error::Unresolved`]).
 fn fold_from(
     rho: f64,
@@ -583,7 +585,13 @@ fn fold_from(
     let mut best: Option<BandEdge> = None;
     let mut last_error = None;
     let near = beside[0];
-    for t in super::default_tries() {
+    let tries = super::default_tries();
+    let mut seen: Vec<(usize, f64)> = Vec::new();
+    let mut next = 0;
+    while next < tries.len() {
+        let i = next;
+        let t = tries[i];
+        next = i + 1;
         let ex = Exact::new(rho, t)?;
         // the first of the model's states beside the gap whose exact
         // neighbour this truncation resolves
@@ -622,6 +630,8 @@ fn fold_from(
         if edge.bc_error <= super::CONVERGED {
             return Ok(Some(edge));
         }
+        seen.push((t.modes, edge.bc_error));
+        next = super::next_try(&tries, i, &seen);
         if edge.bc_error <= super::RESOLVED
             && best.as_ref().is_none_or(|b| edge.bc_error < b.bc_error)
         {

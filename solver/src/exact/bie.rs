@@ -24,7 +24,7 @@ use nalgebra::{Complex, DMatrix, DVector};
 pub struct Grid {
     /// The parameter values.
     pub theta: Vec<f64>,
-    d1: DMatrix<f64>,
+    pub(crate) d1: DMatrix<f64>,
     /// The contour basis at the points: `basis[k][i]` = e^{i m_k θ_i} with
     /// m_0 = 1 and m_{j+1} = −(2j + 1) (see [`Grid::with_modes`]).
     pub basis: Vec<Vec<Complex<f64>>>,
@@ -60,11 +60,14 @@ impl Grid {
         // d/dθ of the trigonometric interpolant (n even):
         // D_ij = ½ (−1)^(i−j) cot((i − j) h/2), i ≠ j; antisymmetric, and
         // made so exactly (the lower triangle is the upper one negated)
-        let upper = |i: usize, j: usize| {
-            let k = j as f64 - i as f64;
-            let sign = if (i + j) % 2 == 0 { 1.0 } else { -1.0 };
-            -0.5 * sign / (0.5 * k * h).tan()
-        };
+        // the entry depends on j − i only: one cotangent per offset
+        let by_offset: Vec<f64> = (0..n)
+            .map(|k| {
+                let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+                -0.5 * sign / (0.5 * k as f64 * h).tan()
+            })
+            .collect();
+        let upper = |i: usize, j: usize| by_offset[j - i];
         let d1 = DMatrix::from_fn(n, n, |i, j| match i.cmp(&j) {
             std::cmp::Ordering::Equal => 0.0,
             std::cmp::Ordering::Less => upper(i, j),
@@ -133,22 +136,8 @@ pub fn solve_dirichlet(grid: &Grid, c: &ContourSamples, g: &[f64]) -> Option<Dir
 /// of the LU work.
 pub fn solve_dirichlet_symmetric(grid: &Grid, c: &ContourSamples, g: &[f64]) -> Option<Dirichlet> {
     let n = grid.len();
-    let half = n / 2;
-    // representative of each point's orbit, and the representatives
-    let rep = |j: usize| {
-        [j, (n - j) % n, (half + n - j) % n, (half + j) % n]
-            .into_iter()
-            .min()
-            .expect("four")
-    };
-    let mut reps: Vec<usize> = (0..n).map(rep).collect();
-    let of: Vec<usize> = reps.clone();
-    reps.sort_unstable();
-    reps.dedup();
+    let (reps, orbit) = orbits(n);
     let m = reps.len();
-    let index = |j: usize| reps.binary_search(&of[j]).expect("a representative");
-    // each point's orbit, as the index of its representative
-    let orbit: Vec<usize> = (0..n).map(index).collect();
     // τ'_j/(τ_j − τ_i) for the representatives i, row by row: the kernel
     // here and the Cauchy integral of ψ in `finish_at`
     let mut w = vec![Complex::new(0.0, 0.0); m * n];
@@ -170,6 +159,29 @@ pub fn solve_dirichlet_symmetric(grid: &Grid, c: &ContourSamples, g: &[f64]) -> 
     let reduced = a.lu().solve(&rhs)?;
     let mu = DVector::from_iterator(n, orbit.iter().map(|&k| reduced[k]));
     finish_at(grid, c, mu, &reps, &orbit, Some(&w))
+}
+
+/// The orbits of the grid's n points (n even) under the reflections
+/// θ → −θ and θ → π − θ: the representative of each orbit (its smallest
+/// index), in increasing order, and each point's orbit as the index of its
+/// representative in that list.
+pub fn orbits(n: usize) -> (Vec<usize>, Vec<usize>) {
+    let half = n / 2;
+    let rep = |j: usize| {
+        [j, (n - j) % n, (half + n - j) % n, (half + j) % n]
+            .into_iter()
+            .min()
+            .expect("four")
+    };
+    let of: Vec<usize> = (0..n).map(rep).collect();
+    let mut reps = of.clone();
+    reps.sort_unstable();
+    reps.dedup();
+    let orbit = of
+        .iter()
+        .map(|r| reps.binary_search(r).expect("a representative"))
+        .collect();
+    (reps, orbit)
 }
 
 /// The matrix of the second-kind equation: K_ij = Im(τ'_j/(τ_j − τ_i))/n

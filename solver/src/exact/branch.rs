@@ -7,8 +7,9 @@
 //! F̄ along the family (at ρ = 1 it sits on a bifurcation point, where the
 //! engine locates it by values of F̄). Bifurcation points are flagged where
 //! the determinant of the bordered Jacobian [∂r/∂u; tᵀ] changes sign (at a
-//! fold it does not). The Jacobian is by central differences, so the
-//! corrector keeps it while the residual falls fast (the chord method).
+//! fold it does not). The Jacobian is the derivative of the discrete
+//! equations (`exact::linear`); the corrector keeps it while the residual
+//! falls fast (the chord method).
 //!
 //! Owns: [`Branch`], [`BranchPoint`], [`Event`], the family's
 //! [`Family`] implementation. May use: `exact`, `continuation`, `error`,
@@ -75,6 +76,14 @@ pub enum Event {
 }
 
 impl Event {
+    /// The exact state the event holds, if any.
+    pub fn state_mut(&mut self) -> Option<&mut ExactState> {
+        match self {
+            Event::ForceMinimum { state } => Some(state),
+            _ => None,
+        }
+    }
+
     /// The event in words, for a person (`None` for the force minimum,
     /// which is reported as the pull-off itself).
     pub fn describe(&self) -> Option<String> {
@@ -170,28 +179,17 @@ fn circle_a_bar_at_delta(delta_bar: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
-/// Residuals, Jacobian (central differences) and ∇F̄ at u.
+/// Residuals, Jacobian and ∇F̄ at u (the Jacobian and ∇F̄ from
+/// [`Exact::linear`]).
 #[allow(clippy::type_complexity)]
 fn linearise(
     ex: &Exact,
     u: &DVector<f64>,
 ) -> Option<(DVector<f64>, f64, DMatrix<f64>, DVector<f64>)> {
     let (r, force) = ex.modes(u)?;
-    let n = u.len();
-    let mut j = DMatrix::zeros(r.len(), n);
-    let mut g = DVector::zeros(n);
-    for k in 0..n {
-        let h = 1e-6 * (1.0 + u[k].abs());
-        let mut up = u.clone();
-        let mut um = u.clone();
-        up[k] += h;
-        um[k] -= h;
-        let (rp, fp) = ex.modes(&up)?;
-        let (rm, fm) = ex.modes(&um)?;
-        j.set_column(k, &((rp - rm) / (2.0 * h)));
-        g[k] = (fp - fm) / (2.0 * h);
-    }
-    Some((r, force, j, g))
+    let lin = ex.linear(u)?;
+    let j = ex.mode_jacobian(&lin);
+    Some((r, force, j, lin.d_force))
 }
 
 /// The contour mode of the near-null direction of the bordered Jacobian
@@ -375,6 +373,16 @@ impl Exact {
         model: Option<&crate::conformal::ConformalState>,
         coarser: Option<&ExactState>,
     ) -> Result<(ExactState, Vec<Event>)> {
+        self.pull_off_found(model, coarser)
+            .and_then(|found| self.accept_resolved_pull_off(found))
+    }
+
+    /// The pull-off [`Exact::pull_off_load_near`] finds, resolved or not.
+    pub(crate) fn pull_off_found(
+        &self,
+        model: Option<&crate::conformal::ConformalState>,
+        coarser: Option<&ExactState>,
+    ) -> Result<(ExactState, Vec<Event>)> {
         let from_coarser = coarser.and_then(|c| {
             let st = self.solve_from(c.a_bar + ABOVE_COARSER_PULL_OFF, c).ok()?;
             (st.bc_error <= 1e-2 && (st.s / c.s - 1.0).abs() <= 0.05).then_some((st, c.route))
@@ -395,13 +403,6 @@ impl Exact {
             _ => None,
         });
         match po {
-            Some(st) if st.bc_error > super::RESOLVED => Err(Error::Unresolved {
-                what: format!(
-                    "exact pull-off at rho = {} with {} contour modes (max |dp/dnu - 1| = {:.1e} on the fine grid, above {:.0e}; the contour is {:.1e} a off the ellipse): use more modes",
-                    self.rho, self.truncation.modes, st.bc_error, super::RESOLVED, st.deviation_from_ellipse
-                ),
-                residual: st.bc_error,
-            }),
             Some(st) => Ok((st, branch.events)),
             None => Err(Error::NoState(format!(
                 "exact pull-off at rho = {}: no minimum of the force along the traced family (down to a_bar = {})",
@@ -409,6 +410,26 @@ impl Exact {
                 branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN)
             ))),
         }
+    }
+
+    /// The pull-off `found` if it is resolved (boundary error at most
+    /// [`super::RESOLVED`]); else an [`Error::Unresolved`] that asks for
+    /// more modes.
+    pub(crate) fn accept_resolved_pull_off(
+        &self,
+        found: (ExactState, Vec<Event>),
+    ) -> Result<(ExactState, Vec<Event>)> {
+        let st = &found.0;
+        if st.bc_error <= super::RESOLVED {
+            return Ok(found);
+        }
+        Err(Error::Unresolved {
+            what: format!(
+                "exact pull-off at rho = {} with {} contour modes (max |dp/dnu - 1| = {:.1e} on the fine grid, above {:.0e}; the contour is {:.1e} a off the ellipse): use more modes",
+                self.rho, self.truncation.modes, st.bc_error, super::RESOLVED, st.deviation_from_ellipse
+            ),
+            residual: st.bc_error,
+        })
     }
 
     /// The start of the pull-off's trace near the richest model's
@@ -689,6 +710,30 @@ impl Exact {
     /// route. An unresolved state is [`Error::Unresolved`], a value not reached is
     /// [`Error::NoState`] saying where the arm ended.
     pub fn at(&self, control: ExactControl) -> Result<ExactState> {
+        self.find(control, None)
+            .and_then(|st| self.accept_resolved(control, st))
+    }
+
+    /// The state [`Exact::at`] finds, resolved or not; first, where given,
+    /// by Newton at the control from `coarser`, the state at the same
+    /// control with fewer modes (its contour padded with zeros; accepted
+    /// near it, with its route): the escalation of [`super::at_with`].
+    pub(crate) fn find(
+        &self,
+        control: ExactControl,
+        coarser: Option<&ExactState>,
+    ) -> Result<ExactState> {
+        if let Some(c) = coarser {
+            if let Ok(mut st) = self.solve_at(control, &c.contour, c.delta_bar) {
+                if st.bc_error <= 1e-2
+                    && (st.a_bar / c.a_bar - 1.0).abs() <= 0.02
+                    && (st.s / c.s - 1.0).abs() <= 0.05
+                {
+                    st.route = c.route;
+                    return Ok(st);
+                }
+            }
+        }
         let a_circle = circle_a_bar(control);
         if let (ExactControl::Force(v), true) = (control, a_circle.is_nan()) {
             return Err(Error::NoState(format!(
@@ -710,16 +755,7 @@ impl Exact {
         // the circle's route would be no better resolved, so more modes
         // are asked for at once)
         if let Some(st) = self.from_model(control) {
-            if st.bc_error <= super::RESOLVED {
-                return Ok(st);
-            }
-            return Err(Error::Unresolved {
-                what: format!(
-                    "exact state at rho = {}, {control}: max |dp/dnu - 1| = {:.1e} with {} modes ({})",
-                    self.rho, st.bc_error, self.truncation.modes, st.route
-                ),
-                residual: st.bc_error,
-            });
+            return Ok(st);
         }
         // a start whose arm folds before the value is reached is retried
         // once from the far side of the fold (0.3 beyond it in ā)
@@ -780,15 +816,26 @@ impl Exact {
                 }
             }
         };
-        if st.bc_error > super::RESOLVED {
-            return Err(Error::Unresolved {
-                what: format!(
-                    "exact state at rho = {}, {control}: max |dp/dnu - 1| = {:.1e} with {} modes",
-                    self.rho, st.bc_error, self.truncation.modes
-                ),
-                residual: st.bc_error,
-            });
-        }
         Ok(st)
+    }
+
+    /// `st`, found at `control`, if it is resolved (boundary error at most
+    /// [`super::RESOLVED`]); else an [`Error::Unresolved`] that asks for
+    /// more modes.
+    pub(crate) fn accept_resolved(
+        &self,
+        control: ExactControl,
+        st: ExactState,
+    ) -> Result<ExactState> {
+        if st.bc_error <= super::RESOLVED {
+            return Ok(st);
+        }
+        Err(Error::Unresolved {
+            what: format!(
+                "exact state at rho = {}, {control}: max |dp/dnu - 1| = {:.1e} with {} modes ({})",
+                self.rho, st.bc_error, self.truncation.modes, st.route
+            ),
+            residual: st.bc_error,
+        })
     }
 }

@@ -11,7 +11,7 @@
 //!
 //! The gradient of Π̄ in the contour coefficients (A, b₀..b_{N−1}) is this
 //! shape derivative with V_k = Re(∂z/∂u_k · ν̄); the Hessian is its
-//! central difference (step 1e-6). Under displacement control (δ̄ fixed) a
+//! derivative, from the linearisation of ∂p̄/∂ν (`exact::linear`). Under displacement control (δ̄ fixed) a
 //! state is stable when the Hessian in the coefficients is positive
 //! definite; under load control the potential is Π̄ − 2F̄δ̄ with δ̄ free,
 //! and the Hessian is bordered by 2∂F̄/∂u and 2∂F̄/∂δ̄. Each negative
@@ -29,9 +29,9 @@
 //!
 //! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, nalgebra.
 
-use super::{Contour, Exact, ExactState};
+use super::{Exact, ExactState};
 use crate::error::{Error, Result};
-use nalgebra::{Complex, DMatrix, DVector, SymmetricEigen};
+use nalgebra::{Complex, DMatrix, SymmetricEigen};
 use serde::Serialize;
 
 /// One unstable direction of the second variation.
@@ -69,81 +69,48 @@ impl ExactStability {
 }
 
 impl Exact {
-    /// ∂Π̄/∂(A, b₀..b_{N−1}) at fixed δ̄ and F̄ for the contour `c`.
-    fn energy_gradient(&self, c: &Contour, delta_bar: f64) -> Option<(DVector<f64>, f64)> {
-        let grid = &self.grid;
-        let f = super::fields(c, self.rho, delta_bar, grid)?;
-        let n = grid.len();
-        let h = 2.0 * std::f64::consts::PI / n as f64;
-        let nm = c.b.len();
-        let mut g = DVector::zeros(nm + 1);
-        let tabulated = grid.basis.len() > nm;
-        let samples = c.samples(grid);
-        for (i, &t) in grid.theta.iter().enumerate() {
-            let dz = samples.dz[i];
-            let speed = dz.norm();
-            let nu = Complex::new(dz.im, -dz.re) / speed;
-            let w = (f.normal_derivative[i].powi(2) - 1.0) * speed * h;
-            for k in 0..=nm {
-                let e = if tabulated {
-                    grid.basis[k][i]
-                } else if k == 0 {
-                    Complex::new(0.0, t).exp()
-                } else {
-                    Complex::new(0.0, -(2.0 * (k - 1) as f64 + 1.0) * t).exp()
-                };
-                g[k] += w * (e * nu.conj()).re;
-            }
-        }
-        Some((g, f.force))
-    }
-
     /// The linear stability of `st` (a state of this problem's truncation).
     pub fn stability(&self, st: &ExactState) -> Result<ExactStability> {
         let nm = self.truncation.modes;
         let m = nm + 1;
         let err = || Error::NoState("exact stability: singular boundary integral equation".into());
-        let coef = |c: &Contour| {
-            let mut u = DVector::zeros(m);
-            u[0] = c.a;
-            for j in 0..nm {
-                u[j + 1] = c.b.get(j).copied().unwrap_or(0.0);
+        let u = self.unknowns(st);
+        let lin = self.linear(&u).ok_or_else(err)?;
+        let samples = st.contour.samples(&self.grid);
+        let n = self.grid.len();
+        let h = 2.0 * std::f64::consts::PI / n as f64;
+        let mult = |l: usize| {
+            if l == 0 {
+                1.0
+            } else {
+                -(2.0 * (l - 1) as f64 + 1.0)
             }
-            u
         };
-        let contour = |u: &DVector<f64>| Contour {
-            a: u[0],
-            b: u.rows(1, nm).iter().copied().collect(),
-        };
-        let u = coef(&st.contour);
+        // ∂Π̄/∂u_k = Σ_i ((∂p̄/∂ν)² − 1) Re(e_k(θ_i) · i conj z′_i) h at fixed δ̄
+        // (V_k|z′| = Re(∂z/∂u_k ν̄)|z′| with ν = −i z′/|z′|), and its
+        // derivative in u_l with δz′ = i m_l e_l
         let mut hess = DMatrix::zeros(m + 1, m + 1);
-        for k in 0..m {
-            let h = 1e-6 * (1.0 + u[k].abs());
-            let mut up = u.clone();
-            let mut um = u.clone();
-            up[k] += h;
-            um[k] -= h;
-            let (gp, fp) = self
-                .energy_gradient(&contour(&up), st.delta_bar)
-                .ok_or_else(err)?;
-            let (gm, fm) = self
-                .energy_gradient(&contour(&um), st.delta_bar)
-                .ok_or_else(err)?;
-            let col = (gp - gm) / (2.0 * h);
-            hess.view_mut((0, k), (m, 1)).copy_from(&col);
-            // the border: ∂²(Π̄ − 2F̄δ̄)/∂u∂δ̄ = 2∂F̄/∂u − 0 at fixed applied F̄
-            let df = 2.0 * (fp - fm) / (2.0 * h);
-            hess[(m, k)] = df;
-            hess[(k, m)] = df;
+        let basis = &self.grid.basis;
+        for i in 0..n {
+            let dn = lin.dn[i];
+            let rot = Complex::new(0.0, 1.0) * samples.dz[i].conj();
+            for k in 0..m {
+                let ek = basis[k][i];
+                let vk = (ek * rot).re * h;
+                let a = 2.0 * dn * vk;
+                let b = (dn * dn - 1.0) * h;
+                for l in 0..m {
+                    hess[(k, l)] +=
+                        a * lin.d_dn[(i, l)] + b * mult(l) * (ek * basis[l][i].conj()).re;
+                }
+            }
         }
-        let h = 1e-6 * (1.0 + st.delta_bar.abs());
-        let fp = super::fields(&st.contour, self.rho, st.delta_bar + h, &self.grid)
-            .ok_or_else(err)?
-            .force;
-        let fm = super::fields(&st.contour, self.rho, st.delta_bar - h, &self.grid)
-            .ok_or_else(err)?
-            .force;
-        hess[(m, m)] = 2.0 * (fp - fm) / (2.0 * h);
+        // the border: ∂²(Π̄ − 2F̄δ̄)/∂u∂δ̄ = 2∂F̄/∂u at fixed applied F̄, and
+        // ∂²/∂δ̄² = 2∂F̄/∂δ̄
+        for k in 0..=m {
+            hess[(m, k)] = 2.0 * lin.d_force[k];
+            hess[(k, m)] = 2.0 * lin.d_force[k];
+        }
         let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
         let unstable = |a: DMatrix<f64>, with_delta: bool| -> Vec<UnstableMode> {
             let eig = SymmetricEigen::new(sym(a));
