@@ -46,9 +46,7 @@ impl Discretisation {
             .into_iter()
             .map(|m| Truncation {
                 modes: m,
-                points: self
-                    .points
-                    .unwrap_or(thinjkr::exact::POINTS_PER_MODE * m),
+                points: self.points.unwrap_or(thinjkr::exact::POINTS_PER_MODE * m),
             })
             .collect())
     }
@@ -107,7 +105,7 @@ pub enum ExactCommand {
         #[arg(long)]
         json: bool,
     },
-    /// The band map: the intervals of contact size ā where no near-elliptic exact state exists, with the contour mode responsible and F̄, δ̄ at both edges (screened by conformal:8 in steps of 0.01, each gap settled by the exact family's folds).
+    /// The band map: the intervals of contact size ā where no near-elliptic exact state exists, with the contour mode responsible and F̄, δ̄ at both edges (screened by conformal:8 in steps of 0.01, each gap settled by the exact family's folds; the circle's neutral points ā³ = 4(n − 1) the screen passes are probed in steps of 0.002).
     #[command(after_help = "Example:\n  thinjkr exact bands --rho 0.8")]
     Bands {
         /// Radii ratio ρ in (0, 1).
@@ -208,7 +206,7 @@ pub fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
         return Ok(());
     }
     outln!(
-        "near-elliptic exact states at rho = {} for a from {} to {} (screened by {} in steps of {}, each gap settled by the exact family's folds):",
+        "near-elliptic exact states at rho = {} for a from {} to {} (screened by {} in steps of {}, each gap settled by the exact family's folds, the neutral points it passed probed):",
         map.rho,
         map.range[0],
         map.range[1],
@@ -267,6 +265,19 @@ pub fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
             map.screen,
             o[0],
             o[1]
+        );
+    }
+    for p in &map.probed {
+        outln!(
+            "  neutral point n = {} (a = {:.4}), passed by the screen, probed in steps of {}: {}",
+            p.n,
+            p.a_bar,
+            thinjkr::exact::bands::PROBE_STEP,
+            if p.outcome == "band" {
+                "a band (above)"
+            } else {
+                p.outcome.as_str()
+            }
         );
     }
     Ok(())

@@ -1,6 +1,9 @@
 //! The band map of the exact family (`thinjkr::exact::bands`): at ρ = 0.8
 //! one band at each of the circle's neutral points ā³ = 4(n − 1),
-//! n = 4, 6, 8, in that mode, with resolved edges; the mode-8 band's edges
+//! n = 4, 6, 8 (the screen's gaps) and 10 (a narrow one, found by the
+//! probe of the neutral point), in that mode, with resolved edges; at
+//! ρ = 0.9 the mode-8 band 0.003 wide that the screen steps over, its
+//! edges against Newton at fixed ā just outside them; the mode-8 band's edges
 //! against the folds of the two arms traced by the family's own tracer
 //! from the zero-force state and the state at F̄ = 10 (a second route that
 //! uses no model); none at ρ = 1; bad input a typed error.
@@ -14,7 +17,13 @@ use thinjkr::Error;
 fn bands_at_rho_0_8_sit_at_the_circle_modes_and_match_the_arms_folds() {
     let map = bands(0.8, 2.0, 4.0).unwrap();
     let modes: Vec<Option<usize>> = map.bands.iter().map(|b| b.lower.mode).collect();
-    assert_eq!(modes, vec![Some(4), Some(6), Some(8)], "{map:#?}");
+    assert_eq!(modes, vec![Some(4), Some(6), Some(8), Some(10)], "{map:#?}");
+    let probed: Vec<(usize, &str)> = map
+        .probed
+        .iter()
+        .map(|p| (p.n, p.outcome.as_str()))
+        .collect();
+    assert_eq!(probed.first(), Some(&(10, "band")), "{probed:?}");
     for b in &map.bands {
         let n = b.lower.mode.unwrap() as f64;
         let neutral = (4.0 * (n - 1.0)).cbrt();
@@ -205,5 +214,53 @@ fn every_state_at_a_force_is_found() {
         "{} {}",
         one.a_bar,
         large.a_bar
+    );
+}
+
+/// At ρ = 0.9 the mode-8 band is narrower than the screen's step (the
+/// model has a state at every grid point): the probe of the neutral point
+/// ā³ = 28 finds it. Its edges are folds of the family: Newton at fixed ā
+/// from the ellipse with the edge's s and δ̄ converges to a resolved
+/// near-elliptic state 1e-4 outside each edge, and from either edge's in
+/// the band's middle to none (a second route: no trace, no fold location).
+#[test]
+fn a_band_narrower_than_the_screen_is_found_at_its_neutral_point() {
+    let map = bands(0.9, 2.9, 3.2).unwrap();
+    assert!(
+        map.crossed.is_empty() && map.unsettled.is_empty() && map.open_ends.is_empty(),
+        "the screen finds no gap here: {map:#?}"
+    );
+    let [band] = map.bands.as_slice() else {
+        panic!("one band expected: {map:#?}");
+    };
+    assert_eq!(map.probed.len(), 1);
+    assert_eq!(
+        (map.probed[0].n, map.probed[0].outcome.as_str()),
+        (8, "band")
+    );
+    let (lo, hi) = (band.lower.a_bar, band.upper.a_bar);
+    assert!(hi - lo > 1e-3 && hi - lo < map.step, "{lo} .. {hi}");
+    assert!(band.lower.bc_error <= 1e-9 && band.upper.bc_error <= 1e-9);
+    let ex = Exact::new(0.9, Truncation::with_modes(16)).unwrap();
+    // Newton at fixed ā from the ellipse with an edge's s and δ̄: a resolved
+    // state within 1 % of that s, if it finds one
+    let near_elliptic = |a: f64, edge: &thinjkr::exact::bands::BandEdge| {
+        let ellipse = thinjkr::exact::Contour::ellipse(a, edge.s * a, 16);
+        ex.solve(a, &ellipse, edge.delta_bar)
+            .ok()
+            .filter(|st| st.bc_error <= 1e-9 && (st.s / edge.s - 1.0).abs() < 0.01)
+    };
+    assert!(
+        near_elliptic(lo - 1e-4, &band.lower).is_some(),
+        "no state below {lo}"
+    );
+    assert!(
+        near_elliptic(hi + 1e-4, &band.upper).is_some(),
+        "no state above {hi}"
+    );
+    let mid = 0.5 * (lo + hi);
+    assert!(
+        near_elliptic(mid, &band.lower).is_none() && near_elliptic(mid, &band.upper).is_none(),
+        "a near-elliptic state inside the band {lo} .. {hi}"
     );
 }

@@ -515,5 +515,10 @@ fn the_default_points_per_mode_give_the_state_of_twice_as_many() {
         assert!((x - y).abs() < 1e-11, "{what}: {x} vs {y}");
     }
     let ratio = coarse.bc_error / fine.bc_error;
-    assert!((0.5..2.0).contains(&ratio), "{:e} vs {:e}", coarse.bc_error, fine.bc_error);
+    assert!(
+        (0.5..2.0).contains(&ratio),
+        "{:e} vs {:e}",
+        coarse.bc_error,
+        fine.bc_error
+    );
 }

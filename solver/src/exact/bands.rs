@@ -22,6 +22,10 @@
 //!   band; an arm that crosses the gap without folding, or folds that
 //!   overlap, mean near-elliptic states exist across it (the model's gap
 //!   is its own), and the candidate is reported as such.
+//! - a band narrower than the screen's step can pass between two grid
+//!   points; bands sit at the circle's neutral points, so each neutral
+//!   point the screen passed without a gap is probed by the exact family
+//!   in the same way, in steps of [`PROBE_STEP`] ([`Probe`]).
 //!
 //! The map also carries F̄(ā) of the model and of the exact family over
 //! the screen ([`CurvePoint`]), for the figure.
@@ -84,6 +88,21 @@ pub struct Crossed {
     pub why: String,
 }
 
+/// A neutral point of the circle, ā³ = 4(n − 1), that the screen passed
+/// without a gap, probed by the exact family in fine steps ([`PROBE_STEP`]):
+/// a band narrower than the screen's step would show there.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Probe {
+    /// The contour mode n.
+    pub n: usize,
+    /// ā of the neutral point, (4(n − 1))^(1/3).
+    pub a_bar: f64,
+    /// "band" where one was found (it is in the map's bands), else why
+    /// there is none or why the probe failed, in words.
+    pub outcome: String,
+}
+
 /// F̄ at one ā of the screen: the model's and the exact family's.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -125,6 +144,10 @@ pub struct BandMap {
     /// Gaps of the screen at an end of the range (not bracketed, not
     /// settled).
     pub open_ends: Vec<[f64; 2]>,
+    /// The neutral points of the circle in the range that the screen
+    /// passed without a gap, each probed by the exact family.
+    #[serde(default)]
+    pub probed: Vec<Probe>,
     /// F̄(ā) of the model and of the exact family over the screen.
     pub curve: Vec<CurvePoint>,
 }
@@ -231,6 +254,7 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
         crossed: Vec::new(),
         unsettled: Vec::new(),
         open_ends: Vec::new(),
+        probed: Vec::new(),
         curve: curve(rho, &grid, &states),
     };
     for gap in gaps(&states) {
@@ -238,7 +262,7 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
             Gap::Inside(lo, hi) => {
                 let (left, right) = beside(&states, lo, hi);
                 let screened = [grid[lo], grid[hi]];
-                match settle(rho, &left, &right) {
+                match settle(rho, &left, &right, STEP) {
                     Ok(Ok(band)) => map.bands.push(band),
                     Ok(Err(why)) => map.crossed.push(Crossed { screened, why }),
                     Err(e) => map.unsettled.push(Crossed {
@@ -250,7 +274,98 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
             Gap::AtEnd(first, last) => map.open_ends.push([grid[first], grid[last]]),
         }
     }
+    probe_neutral_points(&mut map, &grid, &states)?;
     Ok(map)
+}
+
+/// The step (in the family's unknowns) of the traces that probe the
+/// neutral points: at ρ = 0.9 the mode-8 band is 0.003 wide in ā
+/// (3.0435 < ā < 3.0464), and a trace in steps of 0.01 can step across it.
+pub const PROBE_STEP: f64 = 0.002;
+
+/// Probe each neutral point of the circle ā³ = 4(n − 1) that the screen
+/// passed without a gap ([`unscreened_neutral_points`]): the exact family
+/// is traced towards it from the model's states 0.05 or more below and
+/// above, in steps of [`PROBE_STEP`], as a gap is settled; two folds that
+/// leave an interval between them are a band.
+fn probe_neutral_points(
+    map: &mut BandMap,
+    grid: &[f64],
+    states: &[Option<ConformalState>],
+) -> Result<()> {
+    let found: Vec<[f64; 2]> = map
+        .bands
+        .iter()
+        .map(|b| [b.lower.a_bar, b.upper.a_bar])
+        .chain(map.crossed.iter().map(|c| c.screened))
+        .chain(map.unsettled.iter().map(|c| c.screened))
+        .chain(map.open_ends.iter().copied())
+        .collect();
+    let mut probes = Vec::new();
+    for (n, a_n, left, right) in unscreened_neutral_points(map.range, grid, states, &found) {
+        let outcome = if left.is_empty() || right.is_empty() {
+            "the model has no near-elliptic state beside it".to_string()
+        } else {
+            match settle(map.rho, &left, &right, PROBE_STEP) {
+                Ok(Ok(band)) => {
+                    map.bands.push(band);
+                    "band".to_string()
+                }
+                Ok(Err(why)) => why.replace("crosses the gap", "passes the neutral point"),
+                Err(e) => format!("not settled: {e}"),
+            }
+        };
+        probes.push(Probe {
+            n,
+            a_bar: a_n,
+            outcome,
+        });
+    }
+    map.bands
+        .sort_by(|x, y| x.lower.a_bar.total_cmp(&y.lower.a_bar));
+    map.probed = probes;
+    Ok(())
+}
+
+/// The circle's neutral points ā_n = (4(n − 1))^(1/3), n even, 0.1 or
+/// more inside `range` and 0.1 or more from every interval of `found` (the
+/// gaps the screen found), each with the model's near-elliptic states on
+/// the grid 0.05 or more below it and above it (up to five each, nearest
+/// first, consecutive).
+#[allow(clippy::type_complexity)]
+fn unscreened_neutral_points<'a>(
+    range: [f64; 2],
+    grid: &[f64],
+    states: &'a [Option<ConformalState>],
+    found: &[[f64; 2]],
+) -> Vec<(usize, f64, Vec<&'a ConformalState>, Vec<&'a ConformalState>)> {
+    let [from, to] = range;
+    (2..=200)
+        .step_by(2)
+        .map(|n| (n, (4.0 * (n as f64 - 1.0)).cbrt()))
+        .take_while(|&(_, a_n)| a_n <= to - 0.1)
+        .filter(|&(_, a_n)| {
+            a_n >= from + 0.1 && !found.iter().any(|w| a_n > w[0] - 0.1 && a_n < w[1] + 0.1)
+        })
+        .map(|(n, a_n)| {
+            let left = grid
+                .iter()
+                .zip(states)
+                .rev()
+                .filter(|(a, _)| **a <= a_n - 0.05)
+                .take(5)
+                .map_while(|(_, s)| s.as_ref())
+                .collect();
+            let right = grid
+                .iter()
+                .zip(states)
+                .filter(|(a, _)| **a >= a_n + 0.05)
+                .take(5)
+                .map_while(|(_, s)| s.as_ref())
+                .collect();
+            (n, a_n, left, right)
+        })
+        .collect()
 }
 
 /// F̄(ā) over the screen: the model's at every grid point, the exact
@@ -354,6 +469,20 @@ pub fn markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
             o.push_str(&format!(
                 "- ρ = {rho}: `{}` has no near-elliptic state from ā = {:.2} to {:.2}, at the end of the range screened (not settled).\n",
                 m.screen, e[0], e[1]
+            ));
+        }
+        if !m.probed.is_empty() {
+            let each: Vec<String> = m
+                .probed
+                .iter()
+                .map(|p| match p.outcome.as_str() {
+                    "band" => format!("n = {} (ā = {:.3}): a band", p.n, p.a_bar),
+                    why => format!("n = {} (ā = {:.3}): none, {why}", p.n, p.a_bar),
+                })
+                .collect();
+            o.push_str(&format!(
+                "- ρ = {rho}: the circle's neutral points the screen passed without a gap, probed in steps of {PROBE_STEP}: {}.\n",
+                each.join("; ")
             ));
         }
         let po = pull_offs.iter().find(|(r, _)| *r == rho).map(|&(_, a)| a);
@@ -509,16 +638,29 @@ pub fn explain(rho: f64, control: super::branch::ExactControl, a_circle: f64, er
             ExactControl::Force(f) => (f, |s| s.force_bar, |e| e.force_bar, "force"),
             ExactControl::Delta(d) => (d, |s| s.delta_bar, |e| e.delta_bar, "delta"),
         };
-    let Ok((_, _, states)) = screen(rho, 0.85 * a_circle, 1.15 * a_circle) else {
+    let range = [0.85 * a_circle, 1.15 * a_circle];
+    let Ok((_, grid, states)) = screen(rho, range[0], range[1]) else {
         return err;
     };
+    // the screen's gaps, then the neutral points it passed (narrow bands)
+    let mut brackets = Vec::new();
+    let mut found = Vec::new();
     for gap in gaps(&states) {
         let Gap::Inside(lo, hi) = gap else { continue };
+        found.push([grid[lo], grid[hi]]);
         let (left, right) = beside(&states, lo, hi);
+        brackets.push((left, right, STEP));
+    }
+    for (_, _, left, right) in unscreened_neutral_points(range, &grid, &states, &found) {
+        if !left.is_empty() && !right.is_empty() {
+            brackets.push((left, right, PROBE_STEP));
+        }
+    }
+    for (left, right, step) in brackets {
         if (of_state(left[0]) - target) * (of_state(right[0]) - target) > 0.0 {
             continue;
         }
-        if let Ok(Ok(band)) = settle(rho, &left, &right) {
+        if let Ok(Ok(band)) = settle(rho, &left, &right, step) {
             let (v0, v1) = (of_edge(&band.lower), of_edge(&band.upper));
             if (v0 - target) * (v1 - target) <= 0.0 {
                 let mode = band
@@ -541,15 +683,17 @@ pub fn explain(rho: f64, control: super::branch::ExactControl, a_circle: f64, er
 }
 
 /// Settle one candidate gap between the model's near-elliptic states
-/// `left` and `right`: the band, or why there is none.
+/// `left` and `right`, tracing in steps of at most `step`: the band, or why
+/// there is none.
 fn settle(
     rho: f64,
     left: &[&ConformalState],
     right: &[&ConformalState],
+    step: f64,
 ) -> Result<std::result::Result<Band, String>> {
     let margin = 0.05;
-    let lower = fold_from(rho, left, 1.0, right[0].a_bar + margin)?;
-    let upper = fold_from(rho, right, -1.0, left[0].a_bar - margin)?;
+    let lower = fold_from(rho, left, 1.0, right[0].a_bar + margin, step)?;
+    let upper = fold_from(rho, right, -1.0, left[0].a_bar - margin, step)?;
     Ok(match (lower, upper) {
         (Some(lower), Some(upper)) if lower.a_bar < upper.a_bar => Ok(Band { lower, upper }),
         (Some(lower), Some(upper)) => Err(format!(
@@ -581,6 +725,7 @@ fn fold_from(
     beside: &[&ConformalState],
     direction: f64,
     limit: f64,
+    step: f64,
 ) -> Result<Option<BandEdge>> {
     let mut best: Option<BandEdge> = None;
     let mut last_error = None;
@@ -615,7 +760,7 @@ fn fold_from(
             }
             None => continue,
         };
-        let Some((fold, mode)) = ex.to_size_fold(&start, direction, limit, 0.01)? else {
+        let Some((fold, mode)) = ex.to_size_fold(&start, direction, limit, step)? else {
             return Ok(None);
         };
         let edge = BandEdge {

@@ -91,16 +91,15 @@ impl Exact {
             a[(r, r)] += 1.0 - row;
         }
         // P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4 and its gradient P_X + i P_Y
-        let grad_p: Vec<C> = s
-            .z
-            .iter()
-            .map(|z| {
-                C::new(
-                    z.re.powi(3) / 6.0 - delta * z.re / 2.0,
-                    z.im.powi(3) / (6.0 * rho) - delta * z.im / 2.0,
-                )
-            })
-            .collect();
+        let grad_p: Vec<C> =
+            s.z.iter()
+                .map(|z| {
+                    C::new(
+                        z.re.powi(3) / 6.0 - delta * z.re / 2.0,
+                        z.im.powi(3) / (6.0 * rho) - delta * z.im / 2.0,
+                    )
+                })
+                .collect();
         let g = DVector::from_iterator(
             m,
             reps.iter().map(|&i| {
@@ -140,7 +139,8 @@ impl Exact {
 
         // δz, δz′, δz″ of each unknown at each point (δ̄ moves none)
         let dz_of = |j: usize, l: usize| if l < nc { e[(j, l)] } else { C::new(0.0, 0.0) };
-        let ddz_of = |j: usize, l: usize| i_unit * mult.get(l).copied().unwrap_or(0.0) * dz_of(j, l);
+        let ddz_of =
+            |j: usize, l: usize| i_unit * mult.get(l).copied().unwrap_or(0.0) * dz_of(j, l);
         let dddz_of =
             |j: usize, l: usize| -(mult.get(l).copied().unwrap_or(0.0).powi(2)) * dz_of(j, l);
 
@@ -180,7 +180,7 @@ impl Exact {
         let d_mu_all = DMatrix::<f64>::from_fn(n, nu, |j, l| d_mu_red[(orbit[j], l)]);
         let dd_mu_all = &grid.d1 * &d_mu_all; // δμ′
         let ddd_mu_all = &grid.d1 * &dd_mu_all; // δμ″
-        // δψ_j = (δμ′_j − ψ_j δz′_j)/z′_j
+                                                // δψ_j = (δμ′_j − ψ_j δz′_j)/z′_j
         let d_psi_all = DMatrix::<C>::from_fn(n, nu, |j, l| {
             (dd_mu_all[(j, l)] - psi[j] * ddz_of(j, l)) / s.dz[j]
         });
@@ -221,8 +221,8 @@ impl Exact {
                     d_sum += i_unit * mult[l] * u1[(r, l)] - u2[(r, l)] + e[(i, l)] * s_r2[r];
                 }
                 let d_f_prime = d_psi_all[(i, l)] + d_sum / (i_unit * nf);
-                let d_nu = -i_unit
-                    * (dz2 / speed[i] - dz * ((dz.conj() * dz2).re / speed[i].powi(3)));
+                let d_nu =
+                    -i_unit * (dz2 / speed[i] - dz * ((dz.conj() * dz2).re / speed[i].powi(3)));
                 let d_grad_p = if l < nc {
                     C::new(
                         (x * x / 2.0 - delta / 2.0) * dz1.re,
@@ -249,25 +249,23 @@ impl Exact {
             let big_w = x.powi(5) / 40.0 + c2 * x.powi(3) / 3.0 + c0 * x;
             // ∂W/∂X, ∂W/∂Y, ∂W/∂δ̄
             let w_x = x.powi(4) / 8.0 + c2 * x * x + c0;
-            let w_y = x.powi(3) / 3.0 * (y / (4.0 * rho) + y / 4.0) + x * (y.powi(3) / rho - delta * y) / 2.0;
+            let w_y = x.powi(3) / 3.0 * (y / (4.0 * rho) + y / 4.0)
+                + x * (y.powi(3) / rho - delta * y) / 2.0;
             let w_delta = -x.powi(3) / 12.0 - x * y * y / 4.0;
             for l in 0..nu {
                 let (dz1, dz2) = (dz_of(i, l), ddz_of(i, l));
                 let d_ww = (x * dz1.re + y * dz1.im) / 2.0;
                 let d_speed = (dz.conj() * dz2).re / speed[i];
                 let d_big_w = w_x * dz1.re + w_y * dz1.im + if l < nc { 0.0 } else { w_delta };
-                d_force[l] += (-d_ww * dn[i] * speed[i] - ww * d_dn[(i, l)] * speed[i]
+                d_force[l] += (-d_ww * dn[i] * speed[i]
+                    - ww * d_dn[(i, l)] * speed[i]
                     - ww * dn[i] * d_speed
                     + d_big_w * dz.im
                     + big_w * dz2.im)
                     * h;
             }
         }
-        Some(Linear {
-            dn,
-            d_dn,
-            d_force,
-        })
+        Some(Linear { dn, d_dn, d_force })
     }
 }
 

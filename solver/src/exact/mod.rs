@@ -126,7 +126,8 @@ pub fn resolved<T: BoundaryError>(
     };
     // where no truncation converges: a single truncation's resolved
     // answer, else an error that says how far the escalation got
-    let or_best = |best: Option<(T, Exact)>, e: Error| match best {
+    let or_best = |best: Option<(T, Exact)>, e: Error| {
+        match best {
         Some(b) if tries.len() == 1 => with_stability(b),
         Some((v, ex)) => Err(Error::Unresolved {
             what: format!(
@@ -140,6 +141,7 @@ pub fn resolved<T: BoundaryError>(
             residual: v.bc_error(),
         }),
         None => Err(e),
+    }
     };
     let mut i = 0;
     while i < tries.len() {
@@ -149,7 +151,10 @@ pub fn resolved<T: BoundaryError>(
             Ok(v) if v.bc_error() <= CONVERGED => return with_stability((v, Exact::new(rho, t)?)),
             Ok(v) => {
                 seen.push((t.modes, v.bc_error()));
-                if best.as_ref().is_none_or(|(b, _)| v.bc_error() < b.bc_error()) {
+                if best
+                    .as_ref()
+                    .is_none_or(|(b, _)| v.bc_error() < b.bc_error())
+                {
                     best = Some((v, Exact::new(rho, t)?));
                 }
             }
@@ -349,8 +354,12 @@ impl Contour {
             let n = grid.len();
             let zero = Complex::new(0.0, 0.0);
             let (mut s0, mut s1, mut s2) = (vec![zero; n], vec![zero; n], vec![zero; n]);
-            let terms = std::iter::once((1.0, self.a))
-                .chain(self.b.iter().enumerate().map(|(j, &b)| (-(2.0 * j as f64 + 1.0), b)));
+            let terms = std::iter::once((1.0, self.a)).chain(
+                self.b
+                    .iter()
+                    .enumerate()
+                    .map(|(j, &b)| (-(2.0 * j as f64 + 1.0), b)),
+            );
             for (row, (m, coef)) in grid.basis.iter().zip(terms) {
                 for i in 0..n {
                     let t = row[i] * coef;
@@ -1006,4 +1015,3 @@ impl Exact {
         Ok(st)
     }
 }
-
