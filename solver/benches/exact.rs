@@ -24,13 +24,10 @@ fn benches(c: &mut Criterion) {
         let ex = Exact::new(rho, Truncation::with_modes(modes)).unwrap();
         let near = ex.from_circle(2.6).unwrap();
         let st = ex.solve_from(2.59, &near).unwrap();
-        let fine = Exact::new(
-            rho,
-            Truncation::with_modes(2 * modes),
-        )
-        .unwrap()
-        .solve(2.59, &st.contour, st.delta_bar)
-        .unwrap();
+        let fine = Exact::new(rho, Truncation::with_modes(2 * modes))
+            .unwrap()
+            .solve(2.59, &st.contour, st.delta_bar)
+            .unwrap();
         let change = (fine.force_bar / st.force_bar - 1.0)
             .abs()
             .max((fine.s / st.s - 1.0).abs());
