@@ -472,15 +472,20 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
             range: "finite".into(),
         });
     }
-    let st = thinjkr::exact::at_with(rho, control, &d.tries()?).map_err(|e| {
-        // a control in a band of the near-elliptic family says so
-        thinjkr::exact::bands::explain(
-            rho,
-            control,
-            thinjkr::exact::branch::circle_a_bar(control),
-            e,
-        )
-    })?;
+    let st = match (d.modes, d.points) {
+        // the default escalation, and the continuation in rho from a larger
+        // rho where no route finds the state directly
+        (None, None) => thinjkr::exact::at_resolved(rho, control),
+        _ => thinjkr::exact::at_with(rho, control, &d.tries()?).map_err(|e| {
+            // a control in a band of the near-elliptic family says so
+            thinjkr::exact::bands::explain(
+                rho,
+                control,
+                thinjkr::exact::branch::circle_a_bar(control),
+                e,
+            )
+        }),
+    }?;
     let model_states: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {

@@ -522,3 +522,28 @@ fn the_default_points_per_mode_give_the_state_of_twice_as_many() {
         fine.bc_error
     );
 }
+
+/// The continuation in ρ at a fixed control (the route for ρ where no
+/// start finds the state directly): from the state at F̄ = 10 and ρ = 0.4,
+/// continued to ρ = 0.38, it is the state found there directly from
+/// `conformal:8` (another start, another truncation): ā and s agree to
+/// 1e-9, and both are converged below 1e-9.
+#[test]
+fn continuing_in_rho_at_a_force_gives_the_state_found_there_directly() {
+    use thinjkr::exact::{at_resolved, branch::ExactControl, continued_in_rho, Route};
+    let control = ExactControl::Force(10.0);
+    let start = at_resolved(0.4, control).unwrap();
+    let continued = continued_in_rho(&start, 0.38, control).unwrap();
+    let direct = at_resolved(0.38, control).unwrap();
+    assert_eq!(continued.route, Route::ContinuedInRho);
+    assert_eq!(direct.route, Route::FromModel);
+    assert!(continued.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
+    assert!(
+        (continued.a_bar - direct.a_bar).abs() < 1e-9 && (continued.s - direct.s).abs() < 1e-9,
+        "continued a = {}, s = {}; direct a = {}, s = {}",
+        continued.a_bar,
+        continued.s,
+        direct.a_bar,
+        direct.s
+    );
+}

@@ -169,17 +169,17 @@ pub fn resolved<T: BoundaryError>(
         }
         i = next_try(tries, i, &seen);
     }
-    let tried = format!(
-        "the most modes tried: {}",
-        tries.last().map_or(0, |t| t.modes)
-    );
-    or_best(
-        best,
-        last.unwrap_or_else(|| Error::Unresolved {
-            what: tried,
-            residual: f64::NAN,
-        }),
-    )
+    let tried = Error::Unresolved {
+        what: format!(
+            "the most modes tried: {}",
+            tries.last().map_or(0, |t| t.modes)
+        ),
+        residual: f64::NAN,
+    };
+    match best {
+        Some(_) => or_best(best, tried),
+        None => Err(last.unwrap_or(tried)),
+    }
 }
 
 /// The index in `tries` of the truncation to try after the `i`-th, given
@@ -248,8 +248,113 @@ pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<
 /// the control lies in a band of the near-elliptic family, the error says
 /// so ([`bands::explain`]).
 pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
-    at_with(rho, control, &default_tries())
-        .map_err(|e| bands::explain(rho, control, branch::circle_a_bar(control), e))
+    match at_with(rho, control, &default_tries()) {
+        Ok(st) => Ok(st),
+        Err(e) => match bands::explain(rho, control, branch::circle_a_bar(control), e) {
+            // not reached, and not in a band: from the state at a larger ρ
+            Error::NoState(why) if !why.starts_with("no near-elliptic exact state") => {
+                from_larger_rho(rho, control).map_err(|more| {
+                    Error::NoState(format!(
+                        "{why}; {}",
+                        more.to_string().trim_start_matches("no contact state: ")
+                    ))
+                })
+            }
+            e => Err(e),
+        },
+    }
+}
+
+/// The state at `control` at `rho` from the first of ρ + 0.1, ρ + 0.2, …
+/// (below 1) where [`at_with`] finds it, continued in ρ
+/// ([`continued_in_rho`]).
+fn from_larger_rho(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
+    let mut k = 1;
+    let start = loop {
+        let above = ((rho + 0.1 * k as f64) * 1e6).round() / 1e6;
+        if above >= 1.0 {
+            return Err(Error::NoState(format!(
+                "no state at {control} found at any rho from {} to 0.9 in steps of 0.1 to continue from",
+                crate::error::short(rho + 0.1)
+            )));
+        }
+        if let Ok(st) = at_with(above, control, &default_tries()) {
+            break st;
+        }
+        k += 1;
+    };
+    continued_in_rho(&start, rho, control)
+}
+
+/// The state at `control` at `rho`, continued in ρ at that control from
+/// `start`, a converged state at a larger ρ: Newton with the control held
+/// at each step from the state before (steps of at most 0.01 in ρ, halved
+/// where a step fails, down to 1e-3), the contour modes escalated along
+/// [`default_tries`] wherever a state's boundary error exceeds
+/// [`CONVERGED`]. The answer only where it converges; else an error that
+/// says down to which ρ the family was followed converged, and how it
+/// stopped.
+pub fn continued_in_rho(
+    start: &ExactState,
+    rho: f64,
+    control: branch::ExactControl,
+) -> Result<ExactState> {
+    let tries = default_tries();
+    let mut k = tries
+        .iter()
+        .position(|t| t.modes >= start.truncation.modes)
+        .unwrap_or(tries.len() - 1);
+    let mut st = start.clone();
+    let mut step: f64 = 0.01;
+    let stop = |st: &ExactState, why: String| {
+        Error::NoState(format!(
+            "continued in rho at {control} from its state at rho = {} ({} modes), the family converges (boundary error below {:.0e}) down to rho = {} only: {why}",
+            crate::error::short(start.rho),
+            start.truncation.modes,
+            CONVERGED,
+            crate::error::rounded(st.rho)
+        ))
+    };
+    while st.rho > rho {
+        let next = (st.rho - step).max(rho);
+        let ex = Exact::new(next, tries[k])?.deferring_stability();
+        match ex.solve_at(control, &st.contour, st.delta_bar) {
+            Ok(n) if n.bc_error <= CONVERGED => {
+                st = n;
+                step = (step * 1.5).min(0.01);
+            }
+            Ok(n) if n.bc_error <= 1e-2 && k + 1 < tries.len() => k += 1,
+            found if step > 1e-3 => {
+                let _ = found;
+                step *= 0.5;
+            }
+            Ok(n) => {
+                return Err(stop(
+                    &st,
+                    format!(
+                        "at rho = {} the boundary error is {:.1e} with {} modes, the most tried, and the contour is {:.1e} a off the ellipse",
+                        crate::error::rounded(next),
+                        n.bc_error,
+                        n.truncation.modes,
+                        n.deviation_from_ellipse
+                    ),
+                ))
+            }
+            Err(e) => {
+                return Err(stop(
+                    &st,
+                    format!(
+                        "Newton fails below it with steps in rho down to 1e-3 (the contour is {:.1e} a off the ellipse there; {})",
+                        st.deviation_from_ellipse,
+                        e.to_string().chars().take(120).collect::<String>()
+                    ),
+                ))
+            }
+        }
+    }
+    st.stability = Exact::new(rho, st.truncation)?.stability(&st)?;
+    st.route = Route::ContinuedInRho;
+    Ok(st)
 }
 
 /// The exact state at `control` with the truncations `tries`
@@ -536,6 +641,9 @@ pub enum Route {
     /// family traced to the control (no approximate model used).
     #[default]
     FromCircle,
+    /// Continued in ρ at the control from the exact state at a larger ρ
+    /// (found there by another route), where no route finds it directly.
+    ContinuedInRho,
 }
 
 impl std::fmt::Display for Route {
@@ -545,6 +653,9 @@ impl std::fmt::Display for Route {
             Route::AboveModelPullOff => "traced from just above conformal:8's pull-off",
             Route::FromScreen => "Newton at the control from conformal:8's state where its states at fixed a cross it",
             Route::FromCircle => "continued in rho from the circle at rho = 1",
+            Route::ContinuedInRho => {
+                "continued in rho at the same control from the state at a larger rho"
+            }
         })
     }
 }

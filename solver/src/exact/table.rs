@@ -215,8 +215,10 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          F̄ from the ellipse with `conformal:8`'s ā, b̄ and δ̄ at the same F̄ (else at the model's ā, then the \
          family traced to the F̄) and, where that finds \
          nothing near the model's state, looked for on the arm through the circle with that F̄ continued in ρ \
-         (and once more from beyond a fold the trace meets); a row says where the arm ended when the \
-         value is not on it. The contour modes are escalated (12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96, \
+         (and once more from beyond a fold the trace meets); where none of these finds it, and the value lies in \
+         no band, it is continued in ρ at that F̄ from the state at the first of ρ + 0.1, ρ + 0.2, … that is found \
+         (route `continued_in_rho`); a row says where the arm ended, or down to which ρ the continuation \
+         converged and why it stopped, when the value is not reached. The contour modes are escalated (12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96, \
          8 quadrature points per mode; after two, the rungs whose boundary error, extrapolated geometrically \
          from the last two, would not converge are skipped) until the boundary error max|∂p̄/∂ν − 1| on the \
          independent fine grid is below 1e-9; only such a state is accepted (given as N and bc; a boundary \
