@@ -341,7 +341,7 @@ fn exact(
     value: f64,
     modes: Option<usize>,
 ) -> PyResult<String> {
-    use thinjkr::exact::{at_with, default_tries, pull_off_with, Truncation};
+    use thinjkr::exact::{at_resolved, at_with, default_tries, pull_off_with, Truncation};
     let tries = match modes {
         None => default_tries(),
         Some(m) if (1..=64).contains(&m) => vec![Truncation::with_modes(m)],
@@ -360,8 +360,19 @@ fn exact(
                 let (st, _) = pull_off_with(rho, &tries)?;
                 Ok(json(&st))
             }
-            "delta" => Ok(json(&at_with(rho, ExactControl::Delta(value), &tries)?)),
-            "force" => Ok(json(&at_with(rho, ExactControl::Force(value), &tries)?)),
+            "delta" | "force" => {
+                let control = if what == "delta" {
+                    ExactControl::Delta(value)
+                } else {
+                    ExactControl::Force(value)
+                };
+                // the default escalation as the command line: a value in a
+                // band says so, and one no start reaches is continued in rho
+                Ok(json(&match modes {
+                    None => at_resolved(rho, control)?,
+                    Some(_) => at_with(rho, control, &tries)?,
+                }))
+            }
             other => Err(Error::Usage(format!(
                 "what must be delta, force or pull_off (got '{other}')"
             ))),
