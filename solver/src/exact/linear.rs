@@ -152,28 +152,12 @@ impl Exact {
             }
             rhs[(r, nc)] = s.z[i].norm_sqr() / 4.0;
         }
-        // minus Σ_j Im(δw_ij)(μ_j − μ_i)/n, with
-        // Σ_j δw_ij x_j = i m_l (ι∘x)E − (ι∘w∘x)E + δz_i Σ_j ι_ij w_ij x_j
-        let mut p1 = DMatrix::<C>::zeros(m, n);
-        let mut p2 = DMatrix::<C>::zeros(m, n);
-        let mut s2 = vec![C::new(0.0, 0.0); m];
-        for (r, &i) in reps.iter().enumerate() {
-            for j in 0..n {
-                if j != i {
-                    let dmu = mu[j] - mu[i];
-                    p1[(r, j)] = inv[(r, j)] * dmu;
-                    let b = inv[(r, j)] * w[(r, j)] * dmu;
-                    p2[(r, j)] = b;
-                    s2[r] += b;
-                }
-            }
-        }
-        let q1 = product(&p1, &e);
-        let q2 = product(&p2, &e);
-        for (r, &i) in reps.iter().enumerate() {
+        // minus Σ_j Im(δw_ij)(μ_j − μ_i)/n
+        let mu_c: Vec<C> = mu.iter().map(|&v| C::new(v, 0.0)).collect();
+        let q = moving_kernel_sums(&reps, &inv, &w, &e, &mult, &mu_c);
+        for r in 0..m {
             for l in 0..nc {
-                let dw = i_unit * mult[l] * q1[(r, l)] - q2[(r, l)] + e[(i, l)] * s2[r];
-                rhs[(r, l)] -= dw.im / nf;
+                rhs[(r, l)] -= q[(r, l)].im / nf;
             }
         }
         let d_mu_red = lu.solve(&rhs)?;
@@ -184,26 +168,10 @@ impl Exact {
         let d_psi_all = DMatrix::<C>::from_fn(n, nu, |j, l| {
             (dd_mu_all[(j, l)] - psi[j] * ddz_of(j, l)) / s.dz[j]
         });
-        // Σ_j δψ_j w_ij, and Σ_j (ψ_j − ψ_i) δw_ij as above with x = ψ − ψ_i
+        // Σ_j δψ_j w_ij, and Σ_j (ψ_j − ψ_i) δw_ij
         let t = product(&w, &d_psi_all);
-        let mut r1 = DMatrix::<C>::zeros(m, n);
-        let mut r2 = DMatrix::<C>::zeros(m, n);
-        let mut s_r2 = vec![C::new(0.0, 0.0); m];
-        let mut w_sum = vec![C::new(0.0, 0.0); m];
-        for (r, &i) in reps.iter().enumerate() {
-            for j in 0..n {
-                if j != i {
-                    let dpsi = psi[j] - psi[i];
-                    r1[(r, j)] = inv[(r, j)] * dpsi;
-                    let b = inv[(r, j)] * w[(r, j)] * dpsi;
-                    r2[(r, j)] = b;
-                    s_r2[r] += b;
-                    w_sum[r] += w[(r, j)];
-                }
-            }
-        }
-        let u1 = product(&r1, &e);
-        let u2 = product(&r2, &e);
+        let w_sum: Vec<C> = (0..m).map(|r| w.row(r).iter().sum()).collect();
+        let u = moving_kernel_sums(&reps, &inv, &w, &e, &mult, &psi);
         let mut d_dn_rep = DMatrix::<f64>::zeros(m, nu);
         for (r, &i) in reps.iter().enumerate() {
             let dz = s.dz[i];
@@ -218,7 +186,7 @@ impl Exact {
                     - 2.0 * d_psi[r] * dz2 / dz;
                 let mut d_sum = d_d_psi + t[(r, l)] - d_psi_all[(i, l)] * w_sum[r];
                 if l < nc {
-                    d_sum += i_unit * mult[l] * u1[(r, l)] - u2[(r, l)] + e[(i, l)] * s_r2[r];
+                    d_sum += u[(r, l)];
                 }
                 let d_f_prime = d_psi_all[(i, l)] + d_sum / (i_unit * nf);
                 let d_nu =
@@ -267,6 +235,38 @@ impl Exact {
         }
         Some(Linear { dn, d_dn, d_force })
     }
+}
+
+/// Σ_j δw_ij (x_j − x_i) for every representative i (row r) and contour
+/// coefficient l (column), with w_ij = z′_j ι_ij, ι_ij = 1/(z_j − z_i) and
+/// δw_ij = i m_l ι_ij δz_j − w_ij ι_ij (δz_j − δz_i), δz_j = e_l(θ_j):
+/// i m_l ((ι∘Δx)E)_rl − ((ι∘w∘Δx)E)_rl + e_l(θ_i) Σ_j ι_ij w_ij Δx_ij, the
+/// sums over j for all l at once as matrix products with the basis E.
+fn moving_kernel_sums(
+    reps: &[usize],
+    inv: &DMatrix<C>,
+    w: &DMatrix<C>,
+    e: &DMatrix<C>,
+    mult: &[f64],
+    x: &[C],
+) -> DMatrix<C> {
+    let (m, n) = inv.shape();
+    let mut a = DMatrix::<C>::zeros(m, n);
+    let mut b = DMatrix::<C>::zeros(m, n);
+    let mut b_sum = vec![C::new(0.0, 0.0); m];
+    for (r, &i) in reps.iter().enumerate() {
+        for j in (0..n).filter(|&j| j != i) {
+            let dx = x[j] - x[i];
+            a[(r, j)] = inv[(r, j)] * dx;
+            b[(r, j)] = inv[(r, j)] * w[(r, j)] * dx;
+            b_sum[r] += b[(r, j)];
+        }
+    }
+    let (pa, pb) = (product(&a, e), product(&b, e));
+    let i_unit = C::new(0.0, 1.0);
+    DMatrix::from_fn(m, e.ncols(), |r, l| {
+        i_unit * mult[l] * pa[(r, l)] - pb[(r, l)] + e[(reps[r], l)] * b_sum[r]
+    })
 }
 
 /// The complex matrix product a·b as four real ones (nalgebra multiplies
