@@ -341,7 +341,9 @@ fn exact(
     value: f64,
     modes: Option<usize>,
 ) -> PyResult<String> {
-    use thinjkr::exact::{at_resolved, at_with, default_tries, pull_off_with, Truncation};
+    use thinjkr::exact::{
+        at_resolved, at_with, default_tries, pull_off_resolved, pull_off_with, Truncation,
+    };
     let tries = match modes {
         None => default_tries(),
         Some(m) if (1..=64).contains(&m) => vec![Truncation::with_modes(m)],
@@ -357,7 +359,10 @@ fn exact(
     py.detach(move || -> thinjkr::Result<String> {
         match what.as_str() {
             "pull_off" => {
-                let (st, _) = pull_off_with(rho, &tries)?;
+                let (st, _) = match modes {
+                    None => pull_off_resolved(rho)?,
+                    Some(_) => pull_off_with(rho, &tries)?,
+                };
                 Ok(json(&st))
             }
             "delta" | "force" => {

@@ -321,7 +321,12 @@ fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
 /// The exact load-controlled pull-off and every model's.
 pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     let spin = crate::output::Spinner::start("locating the exact pull-off");
-    let (po, events) = thinjkr::exact::pull_off_with(rho, &d.tries()?)?;
+    let (po, events) = match (d.modes, d.points) {
+        // the default escalation, and the continuation in rho from a larger
+        // rho where no start finds the pull-off
+        (None, None) => thinjkr::exact::pull_off_resolved(rho),
+        _ => thinjkr::exact::pull_off_with(rho, &d.tries()?),
+    }?;
     let models: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {

@@ -547,3 +547,29 @@ fn continuing_in_rho_at_a_force_gives_the_state_found_there_directly() {
         direct.s
     );
 }
+
+/// The pull-off continued in ρ (the route below the ρ that the starts from
+/// `conformal:8` and from the circle reach): from the pull-off at ρ = 0.4,
+/// continued to ρ = 0.38, it is the pull-off found there directly (another
+/// start): F̄ agrees to 1e-11, s to 1e-9 and ā (where F̄ is stationary) to
+/// 1e-8, both converged below 1e-9 (measured: all three to 2e-13).
+#[test]
+fn continuing_the_pull_off_in_rho_gives_the_pull_off_found_there_directly() {
+    use thinjkr::exact::{pull_off_continued_in_rho, pull_off_resolved, Route};
+    let (start, _) = pull_off_resolved(0.4).unwrap();
+    let (continued, _) = pull_off_continued_in_rho(&start, 0.38).unwrap();
+    let (direct, _) = pull_off_resolved(0.38).unwrap();
+    assert_eq!(continued.route, Route::ContinuedInRho);
+    assert_ne!(direct.route, Route::ContinuedInRho);
+    assert!(continued.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
+    let (df, ds, da) = (
+        (continued.force_bar - direct.force_bar).abs(),
+        (continued.s - direct.s).abs(),
+        (continued.a_bar - direct.a_bar).abs(),
+    );
+    eprintln!("pull-off at rho = 0.38, continued against direct: F {df:e}, s {ds:e}, a {da:e}");
+    assert!(
+        df < 1e-11 && ds < 1e-9 && da < 1e-8,
+        "F {df:e}, s {ds:e}, a {da:e}"
+    );
+}

@@ -313,7 +313,10 @@ impl Family<Dyn> for Exact {
             a_bar,
             s: b_bar / a_bar,
             residual: f64::NAN,
-            context: format!("exact branch at rho = {}: {why}", self.rho),
+            context: format!(
+                "exact branch at rho = {}: {why}",
+                crate::error::rounded(self.rho)
+            ),
         }
     }
 }
@@ -406,7 +409,7 @@ impl Exact {
             Some(st) => Ok((st, branch.events)),
             None => Err(Error::NoState(format!(
                 "exact pull-off at rho = {}: no minimum of the force along the traced family (down to a_bar = {})",
-                self.rho,
+                crate::error::rounded(self.rho),
                 branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN)
             ))),
         }
@@ -426,7 +429,7 @@ impl Exact {
         Err(Error::Unresolved {
             what: format!(
                 "exact pull-off at rho = {} with {} contour modes (max |dp/dnu - 1| = {:.1e} on the fine grid, above {:.0e}; the contour is {:.1e} a off the ellipse): use more modes",
-                self.rho, self.truncation.modes, st.bc_error, super::RESOLVED, st.deviation_from_ellipse
+                crate::error::rounded(self.rho), self.truncation.modes, st.bc_error, super::RESOLVED, st.deviation_from_ellipse
             ),
             residual: st.bc_error,
         })
@@ -738,13 +741,13 @@ impl Exact {
         if let (ExactControl::Force(v), true) = (control, a_circle.is_nan()) {
             return Err(Error::NoState(format!(
                 "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, -3 pi/2, and so below that of every rho",
-                self.rho
+                crate::error::rounded(self.rho)
             )));
         }
         if !(a_circle.is_finite() && a_circle > 0.0) {
             return Err(Error::NoState(format!(
                 "exact state at rho = {}: {control} has no circle to start from",
-                self.rho
+                crate::error::rounded(self.rho)
             )));
         }
         // first from the richest model at the same control (the contour
@@ -809,7 +812,7 @@ impl Exact {
                 _ => {
                     return Err(Error::NoState(format!(
                         "exact state at rho = {}: {} is not reached: {}",
-                        self.rho,
+                        crate::error::rounded(self.rho),
                         control,
                         ends.join("; then ")
                     )))
@@ -833,7 +836,10 @@ impl Exact {
         Err(Error::Unresolved {
             what: format!(
                 "exact state at rho = {}, {control}: max |dp/dnu - 1| = {:.1e} with {} modes ({})",
-                self.rho, st.bc_error, self.truncation.modes, st.route
+                crate::error::rounded(self.rho),
+                st.bc_error,
+                self.truncation.modes,
+                st.route
             ),
             residual: st.bc_error,
         })

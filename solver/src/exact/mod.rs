@@ -225,9 +225,72 @@ pub fn default_tries() -> Vec<Truncation> {
 pub const POINTS_PER_MODE: usize = 8;
 
 /// The load-controlled pull-off at `rho` with the default escalation of
-/// truncations ([`resolved`], [`default_tries`]).
+/// truncations ([`resolved`], [`default_tries`]); where no start finds it,
+/// continued in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
+/// that is found ([`pull_off_continued_in_rho`]).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
-    pull_off_with(rho, &default_tries())
+    match pull_off_with(rho, &default_tries()) {
+        Err(Error::NoState(why)) => {
+            let mut k = 1;
+            let start = loop {
+                let above = ((rho + 0.1 * k as f64) * 1e6).round() / 1e6;
+                if above >= 1.0 {
+                    return Err(Error::NoState(why));
+                }
+                if let Ok(po) = pull_off_with(above, &default_tries()) {
+                    break po;
+                }
+                k += 1;
+            };
+            pull_off_continued_in_rho(&start.0, rho).map_err(|more| {
+                Error::NoState(format!(
+                    "{why}; {}",
+                    more.to_string().trim_start_matches("no contact state: ")
+                ))
+            })
+        }
+        other => other,
+    }
+}
+
+/// The pull-off at `rho`, continued in ρ from `start`, the converged
+/// pull-off at a larger ρ: at each step (at most 0.01 in ρ, halved where it
+/// fails, down to 0.0025) the family is traced from just above the pull-off
+/// before ([`Exact::pull_off_load_near`]) with the truncations escalated
+/// ([`resolved`]). The answer only where it converges; else an error that
+/// says down to which ρ the pull-off was followed, and how it stopped.
+pub fn pull_off_continued_in_rho(
+    start: &ExactState,
+    rho: f64,
+) -> Result<(ExactState, Vec<branch::Event>)> {
+    let mut at = (start.clone(), Vec::new());
+    let mut step: f64 = 0.01;
+    while at.0.rho > rho {
+        let next = (at.0.rho - step).max(rho);
+        let before = &at.0;
+        match resolved(next, &default_tries(), |ex| {
+            ex.pull_off_load_near(None, Some(before))
+        }) {
+            Ok(found) => {
+                at = found;
+                step = (step * 1.5).min(0.01);
+            }
+            Err(_) if step > 0.0025 => step *= 0.5,
+            Err(e) => {
+                return Err(Error::NoState(format!(
+                    "the pull-off continued in rho from rho = {} converges (boundary error below {:.0e}) down to rho = {} only (its contour {:.1e} a off the ellipse there); at rho = {}: {}",
+                    crate::error::short(start.rho),
+                    CONVERGED,
+                    crate::error::rounded(at.0.rho),
+                    at.0.deviation_from_ellipse,
+                    crate::error::rounded(next),
+                    e.to_string().chars().take(200).collect::<String>()
+                )))
+            }
+        }
+    }
+    at.0.route = Route::ContinuedInRho;
+    Ok(at)
 }
 
 /// [`pull_off_resolved`] with the truncations `tries`.

@@ -211,7 +211,8 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          The pull-off is the first minimum of F̄ along the arm traced towards smaller ā from the exact state at \
          `conformal:8`'s pull-off ā + 0.03 (the model misses the exact ā by 1e-5 to 1e-3), or, where that start \
          is not found, from the state at ā = 2.6 continued in ρ from the circle; each truncation after the \
-         first starts just above the pull-off of the one before. A state at given F̄ is solved by Newton at that \
+         first starts just above the pull-off of the one before; where neither start finds it, the pull-off is \
+         continued in ρ (steps of at most 0.01) from the pull-off at the first of ρ + 0.1, ρ + 0.2, … found. A state at given F̄ is solved by Newton at that \
          F̄ from the ellipse with `conformal:8`'s ā, b̄ and δ̄ at the same F̄ (else at the model's ā, then the \
          family traced to the F̄) and, where that finds \
          nothing near the model's state, looked for on the arm through the circle with that F̄ continued in ρ \
