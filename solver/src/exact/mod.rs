@@ -387,15 +387,17 @@ pub fn continued_in_rho(
                 step = (step * 1.5).min(0.01);
             }
             Ok(n) if n.bc_error <= 1e-2 && k + 1 < tries.len() => k += 1,
-            found if step > 1e-3 => {
-                let _ = found;
-                step *= 0.5;
-            }
+            _ if step > 1e-3 => step *= 0.5,
             Ok(n) => {
+                let how = if n.bc_error <= 1e-2 {
+                    "the most tried"
+                } else {
+                    "a contour Newton reaches but the series does not resolve"
+                };
                 return Err(stop(
                     &st,
                     format!(
-                        "at rho = {} the boundary error is {:.1e} with {} modes, the most tried, and the contour is {:.1e} a off the ellipse",
+                        "at rho = {} the boundary error is {:.1e} with {} modes ({how}), and the contour is {:.1e} a off the ellipse",
                         crate::error::rounded(next),
                         n.bc_error,
                         n.truncation.modes,
