@@ -126,36 +126,26 @@ pub fn resolved<T: BoundaryError>(
     };
     // where no truncation converges: a single truncation's resolved
     // answer, else an error that says how far the escalation got
-    let or_best = |best: Option<(T, Exact)>, e: Error| {
-        match best {
+    let or_best = |best: Option<(T, Exact)>, e: Error| match best {
         Some(b) if tries.len() == 1 => with_stability(b),
-        Some((v, ex)) => Err(Error::Unresolved {
-            what: format!(
-                "exact answer at rho = {}: max |dp/dnu - 1| on the fine grid fell to {:.1e} with {} modes, not to the {:.0e} required ({})",
-                crate::error::short(rho),
-                v.bc_error(),
-                ex.truncation.modes,
-                CONVERGED,
-                e.to_string().trim_start_matches("not resolved: ")
-            ),
-            residual: v.bc_error(),
-        }),
+        Some((v, ex)) => Err(not_converged(rho, v.bc_error(), ex.truncation.modes, e)),
         None => Err(e),
-    }
     };
     let mut i = 0;
     while i < tries.len() {
         let t = tries[i];
+        // (the stability is computed with the same problem: it does not
+        // depend on the deferral, which only [`Exact::state`] reads)
         let ex = Exact::new(rho, t)?.deferring_stability();
         match solve(&ex) {
-            Ok(v) if v.bc_error() <= CONVERGED => return with_stability((v, Exact::new(rho, t)?)),
+            Ok(v) if v.bc_error() <= CONVERGED => return with_stability((v, ex)),
             Ok(v) => {
                 seen.push((t.modes, v.bc_error()));
                 if best
                     .as_ref()
                     .is_none_or(|(b, _)| v.bc_error() < b.bc_error())
                 {
-                    best = Some((v, Exact::new(rho, t)?));
+                    best = Some((v, ex));
                 }
             }
             Err(e @ Error::Unresolved { residual, .. }) if residual > 1e-2 => {
@@ -179,6 +169,22 @@ pub fn resolved<T: BoundaryError>(
     match best {
         Some(_) => or_best(best, tried),
         None => Err(last.unwrap_or(tried)),
+    }
+}
+
+/// The error of an escalation that did not converge: the smallest boundary
+/// error reached, with how many modes, and the last error met.
+fn not_converged(rho: f64, bc_error: f64, modes: usize, last: Error) -> Error {
+    Error::Unresolved {
+        what: format!(
+            "exact answer at rho = {}: max |dp/dnu - 1| on the fine grid fell to {:.1e} with {} modes, not to the {:.0e} required ({})",
+            crate::error::short(rho),
+            bc_error,
+            modes,
+            CONVERGED,
+            last.to_string().trim_start_matches("not resolved: ")
+        ),
+        residual: bc_error,
     }
 }
 
