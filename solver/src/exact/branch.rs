@@ -179,17 +179,16 @@ fn circle_a_bar_at_delta(delta_bar: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
-/// Residuals, Jacobian and ∇F̄ at u (the Jacobian and ∇F̄ from
-/// [`Exact::linear`]).
+/// Residuals, F̄, Jacobian and ∇F̄ at u, from one linearisation
+/// ([`Exact::linear`]).
 #[allow(clippy::type_complexity)]
 fn linearise(
     ex: &Exact,
     u: &DVector<f64>,
 ) -> Option<(DVector<f64>, f64, DMatrix<f64>, DVector<f64>)> {
-    let (r, force) = ex.modes(u)?;
     let lin = ex.linear(u)?;
-    let j = ex.mode_jacobian(&lin);
-    Some((r, force, j, lin.d_force))
+    let (r, j) = (ex.mode_residuals(&lin), ex.mode_jacobian(&lin));
+    Some((r, lin.force, j, lin.d_force))
 }
 
 /// The contour mode of the near-null direction of the bordered Jacobian

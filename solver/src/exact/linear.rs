@@ -1,5 +1,5 @@
-//! The linearisation of the exact problem: ∂p̄/∂ν on the contour with its
-//! derivatives, and those of F̄, in the unknowns u = (A, b₀..b_{N−1}, δ̄), by
+//! The linearisation of the exact problem: ∂p̄/∂ν on the contour and F̄,
+//! with their derivatives in the unknowns u = (A, b₀..b_{N−1}, δ̄), by
 //! differentiating the discrete boundary integral solution of [`super::bie`]
 //! (the same trapezoid rule, kernel and differentiation matrix) once for
 //! every unknown. It serves Newton's Jacobian, the trace's bordered
@@ -31,6 +31,8 @@ use nalgebra::{Complex, DMatrix, DVector};
 pub(crate) struct Linear {
     /// ∂p̄/∂ν at the grid points.
     pub dn: Vec<f64>,
+    /// F̄.
+    pub force: f64,
     /// ∂(∂p̄/∂ν)(θ_i)/∂u_l: n × (N + 2).
     pub d_dn: DMatrix<f64>,
     /// ∂F̄/∂u_l.
@@ -205,8 +207,9 @@ impl Exact {
         }
         let d_dn = DMatrix::<f64>::from_fn(n, nu, |j, l| d_dn_rep[(orbit[j], l)]);
 
-        // ∂/∂u of F̄ = Σ_i (−w ∂p̄/∂ν |z′| + W Im z′) h (`fields`)
+        // F̄ = Σ_i (−w ∂p̄/∂ν |z′| + W Im z′) h (`fields`), and its derivatives
         let h = 2.0 * std::f64::consts::PI / nf;
+        let mut force = 0.0;
         let mut d_force = DVector::<f64>::zeros(nu);
         for i in 0..n {
             let (z, dz) = (s.z[i], s.dz[i]);
@@ -215,6 +218,7 @@ impl Exact {
             let c2 = y * y / (8.0 * rho) + y * y / 8.0 - delta / 4.0;
             let c0 = y * y * (y * y / (2.0 * rho) - delta) / 4.0;
             let big_w = x.powi(5) / 40.0 + c2 * x.powi(3) / 3.0 + c0 * x;
+            force += (-ww * dn[i] * speed[i] + big_w * dz.im) * h;
             // ∂W/∂X, ∂W/∂Y, ∂W/∂δ̄
             let w_x = x.powi(4) / 8.0 + c2 * x * x + c0;
             let w_y = x.powi(3) / 3.0 * (y / (4.0 * rho) + y / 4.0)
@@ -233,7 +237,12 @@ impl Exact {
                     * h;
             }
         }
-        Some(Linear { dn, d_dn, d_force })
+        Some(Linear {
+            dn,
+            force,
+            d_dn,
+            d_force,
+        })
     }
 }
 
@@ -288,7 +297,7 @@ mod tests {
     /// [`fields`] (step 1e-6), on an undulated, non-elliptical contour
     /// at ρ = 0.7: ∂p̄/∂ν at every point and F̄ in every unknown agree to
     /// 1e-7 of the column's largest entry (measured: at most 2.6e-9, the
-    /// central differences' own error); ∂p̄/∂ν itself agrees with
+    /// central differences' own error); ∂p̄/∂ν and F̄ themselves agree with
     /// `fields` to 1e-12.
     #[test]
     fn the_linearisation_is_the_derivative_of_the_fields() {
@@ -310,6 +319,7 @@ mod tests {
             fields(&c, 0.7, u[7], &ex.grid).unwrap()
         };
         let f0 = at(&u);
+        assert!((f0.force - lin.force).abs() < 1e-12 * f0.force.abs().max(1.0));
         for (a, b) in f0.normal_derivative.iter().zip(&lin.dn) {
             assert!((a - b).abs() < 1e-12, "{a} vs {b}");
         }

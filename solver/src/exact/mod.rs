@@ -836,6 +836,23 @@ impl Exact {
         Some((r.rows(1, n_modes + 1).into_owned(), force))
     }
 
+    /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 (as [`Exact::modes`]
+    /// computes them) at the linearisation's point.
+    pub(crate) fn mode_residuals(&self, lin: &linear::Linear) -> DVector<f64> {
+        let n = self.grid.len() as f64;
+        DVector::from_iterator(
+            self.cos_modes.len(),
+            self.cos_modes.iter().map(|cos_k| {
+                cos_k
+                    .iter()
+                    .zip(&lin.dn)
+                    .map(|(c, dn)| (dn - 1.0) * c)
+                    .sum::<f64>()
+                    / n
+            }),
+        )
+    }
+
     /// ∂/∂u of the cosine modes k = 0..N of ∂p̄/∂ν − 1 (as [`Exact::modes`]
     /// computes them) from the linearisation: (N + 1) × (N + 2).
     pub(crate) fn mode_jacobian(&self, lin: &linear::Linear) -> DMatrix<f64> {
