@@ -38,11 +38,7 @@ impl Grid {
         let mut g = Grid::new(n);
         g.basis = (0..=modes)
             .map(|k| {
-                let m = if k == 0 {
-                    1.0
-                } else {
-                    -(2.0 * (k - 1) as f64 + 1.0)
-                };
+                let m = multiplier(k);
                 g.theta
                     .iter()
                     .map(|&t| Complex::new(0.0, m * t).exp())
@@ -93,6 +89,16 @@ impl Grid {
     /// Spectral derivative of periodic samples.
     pub fn derivative(&self, f: &DVector<f64>) -> DVector<f64> {
         &self.d1 * f
+    }
+}
+
+/// The multiplier m_k of θ in the k-th term of the contour series,
+/// e^{i m_k θ}: m_0 = 1 (the coefficient A), m_{j+1} = −(2j + 1) (b_j).
+pub fn multiplier(k: usize) -> f64 {
+    if k == 0 {
+        1.0
+    } else {
+        -(2.0 * (k - 1) as f64 + 1.0)
     }
 }
 

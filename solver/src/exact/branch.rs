@@ -187,7 +187,7 @@ fn linearise(
     u: &DVector<f64>,
 ) -> Option<(DVector<f64>, f64, DMatrix<f64>, DVector<f64>)> {
     let lin = ex.linear(u)?;
-    let (r, j) = (ex.mode_residuals(&lin), ex.mode_jacobian(&lin));
+    let (r, j) = (ex.cos_modes_of(&lin.dn), ex.mode_jacobian(&lin));
     Some((r, lin.force, j, lin.d_force))
 }
 

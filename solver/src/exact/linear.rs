@@ -23,7 +23,7 @@
 //! Owns: [`Linear`], [`Exact::linear`]. May use: `exact`, `exact::bie`,
 //! nalgebra.
 
-use super::bie::orbits;
+use super::bie::{multiplier, orbits};
 use super::{Contour, Exact};
 use nalgebra::{Complex, DMatrix, DVector};
 
@@ -61,19 +61,15 @@ impl Exact {
         let s = contour.samples(grid);
         let (reps, orbit) = orbits(n);
         let m = reps.len();
-        let mult: Vec<f64> = (0..nc)
-            .map(|l| {
-                if l == 0 {
-                    1.0
-                } else {
-                    -(2.0 * (l - 1) as f64 + 1.0)
-                }
-            })
-            .collect();
+        let mult: Vec<f64> = (0..nc).map(multiplier).collect();
         // the contour basis, n × (N + 1)
         let e = DMatrix::<C>::from_fn(n, nc, |j, l| grid.basis[l][j]);
 
-        // the forward solve, as bie::solve_dirichlet_symmetric
+        // the forward solve, as bie::solve_dirichlet_symmetric, keeping
+        // ι_ij = 1/(z_j − z_i) beside the kernel w_ij = z′_j ι_ij (sharing
+        // bie's kernel, w = z′_j/(z_j − z_i), rounds differently, and moved
+        // the ρ = 1 pull-off, located by values of F̄ where F̄ is flat, by
+        // 4e-8 in ā)
         let mut inv = DMatrix::<C>::zeros(m, n);
         let mut w = DMatrix::<C>::zeros(m, n);
         let mut a = DMatrix::<f64>::zeros(m, m);

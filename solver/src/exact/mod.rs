@@ -236,25 +236,19 @@ pub const POINTS_PER_MODE: usize = 8;
 /// that is found ([`pull_off_continued_in_rho`]).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     match pull_off_with(rho, &default_tries()) {
-        Err(Error::NoState(why)) => {
-            let mut k = 1;
-            let start = loop {
-                let above = ((rho + 0.1 * k as f64) * 1e6).round() / 1e6;
-                if above >= 1.0 {
-                    return Err(Error::NoState(why));
-                }
-                if let Ok(po) = pull_off_with(above, &default_tries()) {
-                    break po;
-                }
-                k += 1;
-            };
-            pull_off_continued_in_rho(&start.0, rho).map_err(|more| {
+        Err(Error::NoState(why)) => first_above(rho, |r| pull_off_with(r, &default_tries()))
+            .ok_or_else(|| {
+                Error::NoState(
+                    "no pull-off found at any rho above it in steps of 0.1 to continue from".into(),
+                )
+            })
+            .and_then(|(start, _)| pull_off_continued_in_rho(&start, rho))
+            .map_err(|more| {
                 Error::NoState(format!(
                     "{why}; {}",
                     more.to_string().trim_start_matches("no contact state: ")
                 ))
-            })
-        }
+            }),
         other => other,
     }
 }
@@ -334,25 +328,25 @@ pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState
     }
 }
 
-/// The state at `control` at `rho` from the first of ρ + 0.1, ρ + 0.2, …
-/// (below 1) where [`at_with`] finds it, continued in ρ
+/// The state at `control` at `rho` from the first larger ρ where
+/// [`at_with`] finds it ([`first_above`]), continued in ρ
 /// ([`continued_in_rho`]).
 fn from_larger_rho(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
-    let mut k = 1;
-    let start = loop {
-        let above = ((rho + 0.1 * k as f64) * 1e6).round() / 1e6;
-        if above >= 1.0 {
-            return Err(Error::NoState(format!(
-                "no state at {control} found at any rho from {} to 0.9 in steps of 0.1 to continue from",
-                crate::error::short(rho + 0.1)
-            )));
-        }
-        if let Ok(st) = at_with(above, control, &default_tries()) {
-            break st;
-        }
-        k += 1;
-    };
+    let start = first_above(rho, |r| at_with(r, control, &default_tries())).ok_or_else(|| {
+        Error::NoState(format!(
+            "no state at {control} found at any rho above it in steps of 0.1 to continue from"
+        ))
+    })?;
     continued_in_rho(&start, rho, control)
+}
+
+/// The first answer of `solve` at ρ + 0.1, ρ + 0.2, … (below 1): the start
+/// of a continuation in ρ down to `rho`.
+fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
+    (1..)
+        .map(|k| ((rho + 0.1 * k as f64) * 1e6).round() / 1e6)
+        .take_while(|&above| above < 1.0)
+        .find_map(|above| solve(above).ok())
 }
 
 /// The state at `control` at `rho`, continued in ρ at that control from
@@ -499,7 +493,7 @@ impl Contour {
         let mut dz = i * self.a * e;
         let mut ddz = -self.a * e;
         for (j, &b) in self.b.iter().enumerate() {
-            let k = -(2.0 * j as f64 + 1.0);
+            let k = bie::multiplier(j + 1);
             let ek = Complex::new(0.0, k * theta).exp();
             z += b * ek;
             dz += i * k * b * ek;
@@ -534,7 +528,7 @@ impl Contour {
                 self.b
                     .iter()
                     .enumerate()
-                    .map(|(j, &b)| (-(2.0 * j as f64 + 1.0), b)),
+                    .map(|(j, &b)| (bie::multiplier(j + 1), b)),
             );
             for (row, (m, coef)) in grid.basis.iter().zip(terms) {
                 for i in 0..n {
@@ -836,19 +830,18 @@ impl Exact {
         Some((r.rows(1, n_modes + 1).into_owned(), force))
     }
 
-    /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 (as [`Exact::modes`]
-    /// computes them) at the linearisation's point.
-    pub(crate) fn mode_residuals(&self, lin: &linear::Linear) -> DVector<f64> {
+    /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 from ∂p̄/∂ν at the grid
+    /// points `dn`: the equations' residuals besides the held quantity.
+    pub(crate) fn cos_modes_of(&self, dn: &[f64]) -> DVector<f64> {
         let n = self.grid.len() as f64;
         DVector::from_iterator(
             self.cos_modes.len(),
             self.cos_modes.iter().map(|cos_k| {
-                cos_k
-                    .iter()
-                    .zip(&lin.dn)
-                    .map(|(c, dn)| (dn - 1.0) * c)
-                    .sum::<f64>()
-                    / n
+                let mut m = 0.0;
+                for (c, dn) in cos_k.iter().zip(dn) {
+                    m += (dn - 1.0) * c;
+                }
+                m / n
             }),
         )
     }
@@ -958,20 +951,14 @@ impl Exact {
             b: u.rows(1, n_modes).iter().copied().collect(),
         };
         let f = fields(&c, self.rho, u[n_modes + 1], &self.grid)?;
-        let n = self.grid.len();
         let mut r = DVector::zeros(n_modes + 2);
         r[0] = match held {
             Held::Size(a_bar) => c.a_bar() - a_bar,
             Held::Control(branch::ExactControl::Delta(d)) => u[n_modes + 1] - d,
             Held::Control(branch::ExactControl::Force(v)) => f.force - v,
         };
-        for (k, cos_k) in self.cos_modes.iter().enumerate() {
-            let mut m = 0.0;
-            for (i, c) in cos_k.iter().enumerate() {
-                m += (f.normal_derivative[i] - 1.0) * c;
-            }
-            r[k + 1] = m / n as f64;
-        }
+        r.rows_mut(1, n_modes + 1)
+            .copy_from(&self.cos_modes_of(&f.normal_derivative));
         Some((r, f.force))
     }
 

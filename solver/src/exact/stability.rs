@@ -79,13 +79,6 @@ impl Exact {
         let samples = st.contour.samples(&self.grid);
         let n = self.grid.len();
         let h = 2.0 * std::f64::consts::PI / n as f64;
-        let mult = |l: usize| {
-            if l == 0 {
-                1.0
-            } else {
-                -(2.0 * (l - 1) as f64 + 1.0)
-            }
-        };
         // ∂Π̄/∂u_k = Σ_i ((∂p̄/∂ν)² − 1) Re(e_k(θ_i) · i conj z′_i) h at fixed δ̄
         // (V_k|z′| = Re(∂z/∂u_k ν̄)|z′| with ν = −i z′/|z′|), and its
         // derivative in u_l with δz′ = i m_l e_l
@@ -100,8 +93,8 @@ impl Exact {
                 let a = 2.0 * dn * vk;
                 let b = (dn * dn - 1.0) * h;
                 for l in 0..m {
-                    hess[(k, l)] +=
-                        a * lin.d_dn[(i, l)] + b * mult(l) * (ek * basis[l][i].conj()).re;
+                    hess[(k, l)] += a * lin.d_dn[(i, l)]
+                        + b * super::bie::multiplier(l) * (ek * basis[l][i].conj()).re;
                 }
             }
         }
