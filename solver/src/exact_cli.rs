@@ -283,21 +283,47 @@ pub fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
     Ok(())
 }
 
-fn modes(v: &[UnstableMode]) -> String {
+/// The unstable modes in words: runs of three or more consecutive even
+/// modes as one range with its wavelengths, the shortest the series of
+/// `series_modes` contour modes represents (n = 2N) named where a run
+/// reaches it.
+fn modes(v: &[UnstableMode], series_modes: usize) -> String {
     if v.is_empty() {
         return "stable".into();
     }
-    let list: Vec<String> = v
-        .iter()
-        .map(|m| {
-            if m.n == 0 {
-                "n = 0 (size)".to_string()
+    let mut parts = Vec::new();
+    let mut i = 0;
+    while i < v.len() {
+        let mut j = i;
+        while j + 1 < v.len() && v[j + 1].n == v[j].n + 2 && v[j].n > 0 {
+            j += 1;
+        }
+        if j >= i + 2 {
+            let last = if v[j].n == 2 * series_modes {
+                format!(", the shortest the {series_modes}-mode series represents")
             } else {
-                format!("n = {} (wavelength {:.3})", m.n, m.wavelength)
+                String::new()
+            };
+            parts.push(format!(
+                "n = {}, {}, …, {} (every even n{last}; wavelengths {:.3} down to {:.3})",
+                v[i].n,
+                v[i + 1].n,
+                v[j].n,
+                v[i].wavelength,
+                v[j].wavelength
+            ));
+        } else {
+            for m in &v[i..=j] {
+                parts.push(if m.n == 0 {
+                    "n = 0 (size)".to_string()
+                } else {
+                    format!("n = {} (wavelength {:.3})", m.n, m.wavelength)
+                });
             }
-        })
-        .collect();
-    format!("unstable modes {}", list.join(", "))
+        }
+        i = j + 1;
+    }
+    format!("unstable modes {}", parts.join(", "))
 }
 
 fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
@@ -312,9 +338,12 @@ fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
     outln!("  found: {}", st.route);
     outln!(
         "  displacement control: {}",
-        modes(&st.stability.displacement)
+        modes(&st.stability.displacement, st.truncation.modes)
     );
-    outln!("  load control: {}", modes(&st.stability.load));
+    outln!(
+        "  load control: {}",
+        modes(&st.stability.load, st.truncation.modes)
+    );
     Ok(())
 }
 

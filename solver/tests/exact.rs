@@ -307,6 +307,27 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
     }
 }
 
+/// Each unstable direction is named by a mode of its own. At ρ = 0.5 and
+/// F̄ = 10 (40 modes) the eigenvectors of the many short unstable modes of
+/// the elongated contour mix neighbouring modes, and naming each by its
+/// largest component alone had named mode 76 twice (and no direction
+/// mode 12); the directions are matched to distinct modes.
+#[test]
+fn unstable_directions_are_named_by_distinct_modes() {
+    use thinjkr::exact::branch::ExactControl;
+    let st = thinjkr::exact::at_resolved(0.5, ExactControl::Force(10.0)).unwrap();
+    for (control, modes) in [
+        ("displacement", &st.stability.displacement),
+        ("load", &st.stability.load),
+    ] {
+        assert!(modes.len() > 10, "{control}: {modes:?}");
+        let mut n: Vec<usize> = modes.iter().map(|m| m.n).collect();
+        n.dedup();
+        assert_eq!(n.len(), modes.len(), "{control}: {modes:?}");
+        assert!(modes.iter().all(|m| m.eigenvalue < 0.0));
+    }
+}
+
 /// States at given F̄ and δ̄: at ρ = 1 the zero-force state is the circle
 /// with ā³ = 24 (F̄ = π(ā⁶ − 24ā³)/96 = 0) and the state at δ̄ = 3 the circle
 /// with ā²/4 − 2/ā = 3; at ρ = 0.8 the states satisfy their control and a

@@ -16,8 +16,12 @@
 //! definite; under load control the potential is Π̄ − 2F̄δ̄ with δ̄ free,
 //! and the Hessian is bordered by 2∂F̄/∂u and 2∂F̄/∂δ̄. Each negative
 //! eigenvalue is reported with the contour mode its eigenvector is made
-//! of: n = 0 for A (the size), n = 2j + 2 for b_j (the radius perturbed by
-//! cos nθ, wavelength 2πā/n along the contour).
+//! of: n = 0 for A (the size; under load control also δ̄), n = 2j + 2 for
+//! b_j (the radius perturbed by cos nθ, wavelength 2πā/n along the
+//! contour). The directions are matched to distinct modes by their largest
+//! components, largest first: near the series' shortest modes, where the
+//! eigenvectors of an elongated contour mix neighbouring modes, the
+//! largest component alone can name one mode for two directions.
 //!
 //! At ρ = 1 the Hessian is diagonal in the modes with signs those of
 //! ā²/4 + 1/ā − n/ā (see `tests/exact.rs`): modes with n > ā³/4 + 1 are
@@ -108,16 +112,43 @@ impl Exact {
         let unstable = |a: DMatrix<f64>, with_delta: bool| -> Vec<UnstableMode> {
             let eig = SymmetricEigen::new(sym(a));
             let scale = eig.eigenvalues.amax().max(1e-300);
-            let mut out: Vec<UnstableMode> = (0..eig.eigenvalues.len())
+            let negative: Vec<usize> = (0..eig.eigenvalues.len())
                 .filter(|&i| eig.eigenvalues[i] < -1e-9 * scale)
-                .map(|i| {
+                .collect();
+            // the mode of the component k of an eigenvector
+            let mode_of = |k: usize| {
+                if k == 0 || (with_delta && k == m) {
+                    0
+                } else {
+                    2 * (k - 1) + 2
+                }
+            };
+            // each direction a mode of its own: (direction, component)
+            // pairs taken by decreasing |component|, a pair kept when
+            // neither its direction nor its mode is taken yet
+            let dim = eig.eigenvectors.nrows();
+            let mut pairs: Vec<(f64, usize, usize)> = negative
+                .iter()
+                .flat_map(|&i| {
                     let v = eig.eigenvectors.column(i);
-                    let k = v.iamax();
-                    let n = if k == 0 || (with_delta && k == m) {
-                        0
-                    } else {
-                        2 * (k - 1) + 2
-                    };
+                    (0..dim).map(move |k| (v[k].abs(), i, k))
+                })
+                .collect();
+            pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
+            let mut label: Vec<Option<usize>> = vec![None; eig.eigenvalues.len()];
+            let mut taken = std::collections::HashSet::new();
+            for (_, i, k) in pairs {
+                let n = mode_of(k);
+                if label[i].is_none() && !taken.contains(&n) {
+                    label[i] = Some(n);
+                    taken.insert(n);
+                }
+            }
+            let mut out: Vec<UnstableMode> = negative
+                .iter()
+                .map(|&i| {
+                    // (more directions than modes: its largest component)
+                    let n = label[i].unwrap_or_else(|| mode_of(eig.eigenvectors.column(i).iamax()));
                     UnstableMode {
                         n,
                         wavelength: if n == 0 {
