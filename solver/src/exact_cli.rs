@@ -70,7 +70,7 @@ pub enum ExactCommand {
         #[arg(long)]
         json: bool,
     },
-    /// The exact state at given δ̄ or F̄ (started from conformal:8's state at that value, else on the near-elliptical arm through the circle with that value, continued in ρ); with --all, every near-elliptic exact state at that value.
+    /// The exact state at given δ̄ or F̄ (started from conformal:8's state at that value, else on the near-elliptical arm through the circle with that value, else past the folds of the arms beside a band, else continued in ρ); with --all, every near-elliptic exact state at that value.
     #[command(
         after_help = "Examples:\n  thinjkr exact solve --rho 0.8 --delta 2\n  thinjkr exact solve --rho 0.8 --force -4 --all",
         group(clap::ArgGroup::new("control").required(true).args(["delta", "force"]))
@@ -85,7 +85,7 @@ pub enum ExactCommand {
         /// Force F̄.
         #[arg(long, allow_hyphen_values = true)]
         force: Option<f64>,
-        /// Every near-elliptic exact state at that value with ā in [--from, --to]: where conformal:8's states at fixed ā (steps of 0.01) cross it, each solved exactly.
+        /// Every near-elliptic exact state at that value with ā in [--from, --to]: where conformal:8's states at fixed ā (steps of 0.01) cross it, and on the arms beside its gaps traced past their folds, each solved exactly.
         #[arg(long)]
         all: bool,
         /// Smallest ā screened with --all.
@@ -444,7 +444,7 @@ pub fn every_state(
             .map(|(a, why)| format!("near a = {a:.3}: {why}"))
             .collect();
         return Err(Error::NoState(format!(
-            "no near-elliptic exact state at {control} for rho = {} with a from {} to {} (conformal:8 screened in steps of 0.01{})",
+            "no near-elliptic exact state at {control} for rho = {} with a from {} to {} (conformal:8 screened in steps of 0.01, the arms beside its gaps followed past their folds{})",
             thinjkr::error::short(rho),
             thinjkr::error::short(from),
             thinjkr::error::short(to),
@@ -468,7 +468,7 @@ pub fn every_state(
     }
     let n = all.states.len();
     outln!(
-        "{n} near-elliptic exact state{} at {control} for rho = {rho} with a from {} to {} (where conformal:8's states at fixed a, {} grid points, cross that value):",
+        "{n} near-elliptic exact state{} at {control} for rho = {rho} with a from {} to {} (where conformal:8's states at fixed a, {} grid points, cross that value, and past the folds of the arms beside its gaps):",
         if n == 1 { "" } else { "s" },
         all.range[0],
         thinjkr::error::short(all.range[1]),
@@ -510,15 +510,7 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
         // the default escalation, and the continuation in rho from a larger
         // rho where no route finds the state directly
         (None, None) => thinjkr::exact::at_resolved(rho, control),
-        _ => thinjkr::exact::at_with(rho, control, &d.tries()?).map_err(|e| {
-            // a control in a band of the near-elliptic family says so
-            thinjkr::exact::bands::explain(
-                rho,
-                control,
-                thinjkr::exact::branch::circle_a_bar(control),
-                e,
-            )
-        }),
+        _ => thinjkr::exact::at_searched(rho, control, &d.tries()?),
     }?;
     let model_states: Vec<_> = ModelId::ALL
         .iter()

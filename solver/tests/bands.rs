@@ -6,7 +6,9 @@
 //! edges against Newton at fixed ā just outside them; the mode-8 band's edges
 //! against the folds of the two arms traced by the family's own tracer
 //! from the zero-force state and the state at F̄ = 10 (a second route that
-//! uses no model); none at ρ = 1; bad input a typed error.
+//! uses no model); every state at F̄ = −4 for ρ = 0.8; the state at
+//! F̄ = 10 for ρ = 0.6, past the fold of the mode-10 band's arm; none at
+//! ρ = 1; bad input a typed error.
 
 use thinjkr::exact::bands::bands;
 use thinjkr::exact::branch::{Event, ExactControl};
@@ -263,4 +265,88 @@ fn a_band_narrower_than_the_screen_is_found_at_its_neutral_point() {
         near_elliptic(mid, &band.lower).is_none() && near_elliptic(mid, &band.upper).is_none(),
         "a near-elliptic state inside the band {lo} .. {hi}"
     );
+}
+
+/// At ρ = 0.6, F̄ = 10 lies between the forces of the mode-10 band's edges
+/// (3.3086 < ā < 3.3398, F̄ = 9.594 and 10.203 there), and neither the
+/// richest model's start nor the circle's arms reach it; but the arm from
+/// larger ā, traced through its fold at the band's upper edge, goes on
+/// losing load along its returning stretch, as the pull-off's arm does past
+/// the mode-4 band, and crosses F̄ = 10 there with a contour 1.1 % of ā off
+/// its ellipse. `exact::at_resolved` finds it by that route and the series
+/// converges it. A second route: Newton at the same ā from the ellipse with
+/// that s lands on the arm before its fold, a different state with a larger
+/// load (two states of the family share that ā); and solved again at its ā
+/// with twice the modes from its own contour, F̄ and s change by less than
+/// 1e-9.
+#[test]
+fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
+    use thinjkr::exact::Route;
+    let control = ExactControl::Force(10.0);
+    let st = thinjkr::exact::at_resolved(0.6, control).expect("the state past the fold");
+    assert_eq!(st.route, Route::PastFold, "{st:?}");
+    assert!((st.force_bar - 10.0).abs() < 1e-9, "{}", st.force_bar);
+    assert!(st.bc_error <= thinjkr::exact::CONVERGED, "{}", st.bc_error);
+    // above the band's upper edge, on the returning stretch of its arm
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/data/exact_bands.jsonl"),
+    )
+    .expect("the committed band maps exist");
+    let maps = thinjkr::exact::bands::from_json_lines(&text).expect("band map lines");
+    let map = maps.iter().find(|m| m.rho == 0.6).expect("rho = 0.6 map");
+    let band = map
+        .bands
+        .iter()
+        .find(|b| b.lower.mode == Some(10))
+        .expect("the mode-10 band");
+    assert!(
+        band.lower.force_bar < 10.0 && band.upper.force_bar > 10.0,
+        "{band:?}"
+    );
+    assert!(
+        st.a_bar > band.upper.a_bar && st.a_bar < band.upper.a_bar + 0.05,
+        "{} against the edge {}",
+        st.a_bar,
+        band.upper.a_bar
+    );
+    assert!(
+        st.deviation_from_ellipse > 5e-3 && st.deviation_from_ellipse < 2e-2,
+        "{}",
+        st.deviation_from_ellipse
+    );
+    // the other state at the same ā, before the fold: more load
+    let modes = st.truncation.modes;
+    let ex = Exact::new(0.6, Truncation::with_modes(modes)).unwrap();
+    let before = ex
+        .solve(
+            st.a_bar,
+            &thinjkr::exact::Contour::ellipse(st.a_bar, st.b_bar, modes),
+            st.delta_bar,
+        )
+        .expect("the arm before its fold");
+    assert!(before.bc_error <= thinjkr::exact::CONVERGED);
+    assert!(
+        before.force_bar > band.upper.force_bar,
+        "{} against the edge's {}",
+        before.force_bar,
+        band.upper.force_bar
+    );
+    assert!(before.deviation_from_ellipse < st.deviation_from_ellipse);
+    // converged under doubling
+    let fine = Exact::new(
+        0.6,
+        Truncation {
+            modes: 2 * modes,
+            points: 2 * st.truncation.points,
+        },
+    )
+    .unwrap()
+    .solve(st.a_bar, &st.contour, st.delta_bar)
+    .expect("the doubled truncation");
+    assert!(
+        (fine.force_bar / st.force_bar - 1.0).abs() < 1e-9,
+        "{}",
+        fine.force_bar
+    );
+    assert!((fine.s / st.s - 1.0).abs() < 1e-9, "{} {}", fine.s, st.s);
 }

@@ -31,10 +31,16 @@
 //! the screen ([`CurvePoint`]), for the figure.
 //!
 //! [`states_at`] uses the same screen to find every near-elliptic exact
-//! state at a given δ̄ or F̄.
+//! state at a given δ̄ or F̄. A band is an interval of ā, not of F̄ or δ̄:
+//! past its fold an arm goes on along a returning stretch whose contour
+//! undulates more and more with the band's mode, and its load and approach
+//! go on changing there (the load-controlled pull-off lies on such a
+//! stretch just past the mode-4 band). So a state at given F̄ or δ̄ is also
+//! looked for on the arms beside a gap traced past their folds
+//! ([`past_folds_or_band`], [`states_at`]).
 //!
 //! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
-//! [`states_at`]. May use: `exact`
+//! [`states_at`], [`past_folds_or_band`]. May use: `exact`
 //! (its family and traces), `conformal` (the screen), `error`, rayon.
 
 use super::{Contour, Exact};
@@ -529,10 +535,11 @@ pub fn markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
 /// ellipse of the model's state nearer the target, with the truncations
 /// `tries` escalated as for every exact state ([`super::resolved`]); kept
 /// when resolved and within one grid step of the bracket. Sorted by ā, one
-/// per state (answers within 1e-6 in ā are one). States in a band of the
-/// family, or where the model has no near-elliptic state, are not looked
-/// for; brackets where Newton fails are reported in `missed` (ā of the
-/// bracket and why).
+/// per state (answers within 1e-6 in ā are one). The states on the arms
+/// beside each gap of the screen, traced through their folds and on along
+/// their returning stretches ([`past_folds`]), are added. Brackets where
+/// Newton fails, and crossings past a fold that do not converge, are
+/// reported in `missed` (ā and why).
 pub fn states_at(
     rho: f64,
     control: super::branch::ExactControl,
@@ -583,12 +590,34 @@ pub fn states_at(
             (0.5 * (l.a_bar + r.a_bar), found)
         })
         .collect();
+    // the arms beside each gap of the screen, traced past their folds
+    let past: Vec<PastFolds> = gaps(&states)
+        .into_iter()
+        .filter_map(|gap| match gap {
+            Gap::Inside(lo, hi) => Some(beside(&states, lo, hi)),
+            Gap::AtEnd(..) => None,
+        })
+        .collect::<Vec<_>>()
+        .par_iter()
+        .map(|(left, right)| past_folds(rho, control, left, right, STEP, tries))
+        .collect();
     let mut out = AllStates {
         range: [from, to],
         screen: grid.len(),
         states: Vec::new(),
         missed: Vec::new(),
     };
+    let answers = answers.into_iter().chain(past.into_iter().flat_map(|p| {
+        let missed = p
+            .missed
+            .into_iter()
+            .map(|(a, why)| (a, Err(Error::NoState(why))));
+        p.states
+            .into_iter()
+            .map(|st| (st.a_bar, Ok(st)))
+            .chain(missed)
+            .collect::<Vec<_>>()
+    }));
     for (a, found) in answers {
         match found {
             Ok(st) => {
@@ -620,17 +649,26 @@ pub struct AllStates {
     pub missed: Vec<(f64, String)>,
 }
 
-/// Why the exact solver found no state at `control`, in words, where a
-/// band is the reason: the model's screen over ā within 15 % of the
-/// circle's ā at that control (`a_circle`); each gap whose neighbours'
-/// values of the control lie on either side of the control is settled by
-/// the exact family's folds, and a band whose edges' values bracket the
-/// control is named. Otherwise (no such band, or a failure on the way)
+/// The exact state at `control` where no route found one (`err`, from
+/// [`super::at_with`] with the truncations `tries`): on the arms beside
+/// each gap of the model's screen (ā within 15 % of the circle's ā at that
+/// control, `a_circle`) whose neighbours' values of the control lie on
+/// either side of it, traced through their folds and on along their
+/// returning stretches ([`past_folds`]); of several, the one nearest an
+/// ellipse. Where there is none and a band's edges bracket the control,
+/// an error that says so in words (the band, its mode, the values at its
+/// edges, and how far its arms were followed past their folds); otherwise
 /// `err` itself.
-pub fn explain(rho: f64, control: super::branch::ExactControl, a_circle: f64, err: Error) -> Error {
+pub fn past_folds_or_band(
+    rho: f64,
+    control: super::branch::ExactControl,
+    a_circle: f64,
+    tries: &[super::Truncation],
+    err: Error,
+) -> Result<super::ExactState> {
     use super::branch::ExactControl;
     if !(matches!(err, Error::NoState(_)) && rho > 0.0 && rho < 1.0 && a_circle > 1.0) {
-        return err;
+        return Err(err);
     }
     type Of<T> = fn(&T) -> f64;
     let (target, of_state, of_edge, name): (f64, Of<ConformalState>, Of<BandEdge>, &str) =
@@ -640,7 +678,7 @@ pub fn explain(rho: f64, control: super::branch::ExactControl, a_circle: f64, er
         };
     let range = [0.85 * a_circle, 1.15 * a_circle];
     let Ok((_, grid, states)) = screen(rho, range[0], range[1]) else {
-        return err;
+        return Err(err);
     };
     // the screen's gaps, then the neutral points it passed (narrow bands)
     let mut brackets = Vec::new();
@@ -656,10 +694,26 @@ pub fn explain(rho: f64, control: super::branch::ExactControl, a_circle: f64, er
             brackets.push((left, right, PROBE_STEP));
         }
     }
+    brackets.retain(|(left, right, _)| {
+        (of_state(left[0]) - target) * (of_state(right[0]) - target) <= 0.0
+    });
+    // the states past the arms' folds first
+    let mut past = Vec::new();
+    let mut followed = Vec::new();
+    for (left, right, step) in &brackets {
+        let found = past_folds(rho, control, left, right, *step, tries);
+        past.extend(found.states);
+        followed.extend(found.followed);
+        followed.extend(found.missed.into_iter().map(|(_, why)| why));
+    }
+    if let Some(st) = past.into_iter().min_by(|x, y| {
+        x.deviation_from_ellipse
+            .total_cmp(&y.deviation_from_ellipse)
+    }) {
+        return Ok(st);
+    }
+    // none: a band whose edges bracket the value is the reason
     for (left, right, step) in brackets {
-        if (of_state(left[0]) - target) * (of_state(right[0]) - target) > 0.0 {
-            continue;
-        }
         if let Ok(Ok(band)) = settle(rho, &left, &right, step) {
             let (v0, v1) = (of_edge(&band.lower), of_edge(&band.upper));
             if (v0 - target) * (v1 - target) <= 0.0 {
@@ -668,18 +722,134 @@ pub fn explain(rho: f64, control: super::branch::ExactControl, a_circle: f64, er
                     .mode
                     .map(|n| format!(", mode cos {n}θ"))
                     .unwrap_or_default();
-                return Error::NoState(format!(
-                    "no near-elliptic exact state at {control} for rho = {}: that {name} lies in the band {:.4} < a < {:.4}{mode} (its edges, where the family folds back, have {name} = {:.4} and {:.4})",
+                return Err(Error::NoState(format!(
+                    "no near-elliptic exact state at {control} for rho = {}: that {name} lies in the band {:.4} < a < {:.4}{mode} (its edges, where the family folds back, have {name} = {:.4} and {:.4}), and neither arm reaches it past its fold ({})",
                     crate::error::short(rho),
                     band.lower.a_bar,
                     band.upper.a_bar,
                     v0,
-                    v1
-                ));
+                    v1,
+                    followed.join("; ")
+                )));
             }
         }
     }
-    err
+    Err(err)
+}
+
+/// `st` where the contour series resolves it (boundary error at most
+/// [`super::RESOLVED`]), else an [`Error::Unresolved`] (which
+/// [`super::resolved`] escalates).
+fn resolved_only(st: super::ExactState) -> Result<super::ExactState> {
+    if st.bc_error <= super::RESOLVED {
+        Ok(st)
+    } else {
+        Err(Error::Unresolved {
+            what: format!(
+                "max |dp/dnu - 1| = {:.1e} on the fine grid with {} modes",
+                st.bc_error, st.truncation.modes
+            ),
+            residual: st.bc_error,
+        })
+    }
+}
+
+/// The exact states at `control` on the two arms beside the gap between
+/// the model's near-elliptic states `left` and `right` (nearest first),
+/// each traced into the gap through its first fold and on past it
+/// ([`Exact::crossings_past_fold`], steps of at most `step`), from the
+/// exact state near the first of them that the first truncation of
+/// `tries` to converge there (boundary error ≤ [`super::CONVERGED`], or
+/// ≤ [`super::RESOLVED`] for a single truncation) resolves. Each crossing
+/// is solved again by Newton at the control with the truncations of
+/// `tries` from its own on ([`super::resolved`]), and kept when that state
+/// lies where the trace crossed (ā within 0.01, s within 1 %); route
+/// [`super::Route::PastFold`].
+fn past_folds(
+    rho: f64,
+    control: super::branch::ExactControl,
+    left: &[&ConformalState],
+    right: &[&ConformalState],
+    step: f64,
+    tries: &[super::Truncation],
+) -> PastFolds {
+    let mut out = PastFolds::default();
+    for (beside, direction, which) in [(left, 1.0, "lower"), (right, -1.0, "upper")] {
+        let start = super::resolved(rho, tries, |ex| {
+            beside
+                .iter()
+                .find_map(|m| {
+                    let ellipse = Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes);
+                    ex.solve(m.a_bar, &ellipse, m.delta_bar).ok()
+                })
+                .ok_or_else(|| Error::NoState("no exact state beside the gap".into()))
+                .and_then(resolved_only)
+        });
+        let crossings = start.and_then(|start| {
+            let ex = Exact::new(rho, start.truncation)?.deferring_stability();
+            let (found, end) = ex.crossings_past_fold(&start, direction, control, step)?;
+            Ok((start.truncation, found, end))
+        });
+        let (truncation, found, end) = match crossings {
+            Ok(c) => c,
+            Err(e) => {
+                out.followed
+                    .push(format!("the {which} arm not followed: {e}"));
+                continue;
+            }
+        };
+        out.followed.push(match end {
+            Some(a) => format!(
+                "the {which} arm followed past its fold to a = {a:.4} with {} modes",
+                truncation.modes
+            ),
+            None => format!("the {which} arm does not fold before it leaves the gap"),
+        });
+        let from = tries
+            .iter()
+            .position(|t| t.modes >= truncation.modes)
+            .unwrap_or(tries.len() - 1);
+        for crossing in found {
+            let again = super::resolved(rho, &tries[from..], |ex| {
+                let mut contour = crossing.contour.clone();
+                contour.b.resize(ex.truncation().modes, 0.0);
+                ex.solve_at(control, &contour, crossing.delta_bar)
+                    .and_then(resolved_only)
+            });
+            match again {
+                Ok(mut st)
+                    if (st.a_bar - crossing.a_bar).abs() <= 0.01
+                        && (st.s / crossing.s - 1.0).abs() <= 0.01 =>
+                {
+                    st.route = super::Route::PastFold;
+                    out.states.push(st);
+                }
+                Ok(st) => out.missed.push((
+                    crossing.a_bar,
+                    format!(
+                        "past the fold of the {which} arm: the crossing moved to a = {:.4} with more modes",
+                        st.a_bar
+                    ),
+                )),
+                Err(e) => out.missed.push((
+                    crossing.a_bar,
+                    format!("past the fold of the {which} arm: {e}"),
+                )),
+            }
+        }
+    }
+    out
+}
+
+/// What [`past_folds`] found beside one gap.
+#[derive(Default)]
+struct PastFolds {
+    /// The converged states at the control.
+    states: Vec<super::ExactState>,
+    /// How far each arm was followed, or why not, in words.
+    followed: Vec<String>,
+    /// Crossings of the control that gave no converged state: ā, why.
+    missed: Vec<(f64, String)>,
 }
 
 /// Settle one candidate gap between the model's near-elliptic states

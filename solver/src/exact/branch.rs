@@ -32,6 +32,18 @@ pub const ABOVE_MODEL_PULL_OFF: f64 = 0.03;
 /// than 1e-6 where the coarser one is nearly resolved.
 pub const ABOVE_COARSER_PULL_OFF: f64 = 0.005;
 
+/// Where a trace past a fold ([`Exact::crossings_past_fold`]) ends: the
+/// contour's departure from an ellipse in its coefficients, Σ_{j≥1}|b_j|/ā,
+/// above this. The exact pull-off at ρ = 0.8, past the fold of the mode-4
+/// band, is 3.3e-2 ā off its ellipse; on the returning stretch of the
+/// mode-10 band's lower arm at ρ = 0.6 the boundary error with 40 modes is
+/// 5e-2 where the contour is 0.1 ā off its ellipse (a crossing found that
+/// far out is not converged by the escalation, and is reported so).
+pub const PAST_FOLD_DEPARTURE: f64 = 0.1;
+
+/// The most steps of a trace past a fold.
+pub const PAST_FOLD_STEPS: usize = 400;
+
 /// The richest model's (`conformal:8`) load-controlled pull-off at `rho`,
 /// where it has one: the start of the exact pull-off's trace.
 pub fn model_pull_off(rho: f64) -> Option<crate::conformal::ConformalState> {
@@ -621,6 +633,66 @@ impl Exact {
         held.rows_mut(0, n - 1).copy_from(&j);
         held.set_row(n - 1, &a_bar_gradient(n).transpose());
         Ok(Some((self.state(u)?, contour_mode(&held))))
+    }
+
+    /// The states at `control` on the arm through `start`, traced with ā
+    /// first moving in `direction` (±1, into a band) through the arm's first
+    /// fold in ā and on along its returning stretch, where the contour
+    /// undulates more and more with the band's mode (as the load-controlled
+    /// pull-off, just past the fold of the mode-4 band, does). Every
+    /// crossing of the control is located; the trace ends at a second fold,
+    /// where the departure from an ellipse in the coefficients,
+    /// Σ_{j≥1}|b_j|/ā, exceeds [`PAST_FOLD_DEPARTURE`], or after
+    /// [`PAST_FOLD_STEPS`] steps of at most `max_step`. The states are of
+    /// this truncation: whether the series resolves them is the caller's
+    /// to decide. Also returns how far the trace went past the fold (ā of
+    /// its last point, `None` where it met no fold) for the caller's words.
+    pub(crate) fn crossings_past_fold(
+        &self,
+        start: &ExactState,
+        direction: f64,
+        control: ExactControl,
+        max_step: f64,
+    ) -> Result<(Vec<ExactState>, Option<f64>)> {
+        let n = self.truncation.modes + 2;
+        let watch = Watch {
+            size_fold: On::Note,
+            displacement_fold: On::Ignore,
+            force_minimum: On::Ignore,
+            bifurcation: On::Ignore,
+            crossing: Some(match control {
+                ExactControl::Delta(v) => (Quantity::Delta, v, On::Locate),
+                ExactControl::Force(v) => (Quantity::Force, v, On::Locate),
+            }),
+        };
+        let mut past = false;
+        let trace = continuation::trace(
+            self,
+            self.unknowns(start),
+            &(a_bar_gradient(n) * direction),
+            trace_settings(max_step, PAST_FOLD_STEPS),
+            watch,
+            |p| {
+                let returning = p.d_a_bar * direction < 0.0;
+                let second_fold = past && !returning;
+                past |= returning;
+                let departure: f64 = p.u.rows(2, n - 3).iter().map(|b| b.abs()).sum();
+                second_fold || departure > PAST_FOLD_DEPARTURE * p.a_bar
+            },
+        )?;
+        let mut found = Vec::new();
+        for e in &trace.events {
+            if let (EventKind::Crossing, Some(u)) = (e.kind, &e.at) {
+                found.push(self.state(u)?);
+            }
+        }
+        let folded = trace.events.iter().any(|e| e.kind == EventKind::SizeFold);
+        Ok((
+            found,
+            folded
+                .then(|| trace.points.last().map(|p| p.a_bar))
+                .flatten(),
+        ))
     }
 
     /// The state at `control` started from the richest `conformal:K`'s

@@ -307,25 +307,38 @@ pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<
 }
 
 /// The exact state at `control` with the default escalation of
-/// truncations ([`resolved`], [`default_tries`]); where there is none, and
-/// the control lies in a band of the near-elliptic family, the error says
-/// so ([`bands::explain`]).
+/// truncations ([`at_searched`] with [`default_tries`]); where none is
+/// found, and the control lies in no band of the near-elliptic family,
+/// continued in ρ at the control from the state at a larger ρ
+/// ([`continued_in_rho`]).
 pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
-    match at_with(rho, control, &default_tries()) {
-        Ok(st) => Ok(st),
-        Err(e) => match bands::explain(rho, control, branch::circle_a_bar(control), e) {
-            // not reached, and not in a band: from the state at a larger ρ
-            Error::NoState(why) if !why.starts_with("no near-elliptic exact state") => {
-                from_larger_rho(rho, control).map_err(|more| {
-                    Error::NoState(format!(
-                        "{why}; {}",
-                        more.to_string().trim_start_matches("no contact state: ")
-                    ))
-                })
-            }
-            e => Err(e),
-        },
+    match at_searched(rho, control, &default_tries()) {
+        // not reached, and not in a band: from the state at a larger ρ
+        Err(Error::NoState(why)) if !why.starts_with("no near-elliptic exact state") => {
+            from_larger_rho(rho, control).map_err(|more| {
+                Error::NoState(format!(
+                    "{why}; {}",
+                    more.to_string().trim_start_matches("no contact state: ")
+                ))
+            })
+        }
+        other => other,
     }
+}
+
+/// The exact state at `control` with the truncations `tries`: by every
+/// route of [`at_with`], and where these find nothing, on the arms beside
+/// a band of the family traced past their folds; where there is none
+/// there either, and the control lies in a band, the error says so
+/// ([`bands::past_folds_or_band`]).
+pub fn at_searched(
+    rho: f64,
+    control: branch::ExactControl,
+    tries: &[Truncation],
+) -> Result<ExactState> {
+    at_with(rho, control, tries).or_else(|e| {
+        bands::past_folds_or_band(rho, control, branch::circle_a_bar(control), tries, e)
+    })
 }
 
 /// The state at `control` at `rho` from the first larger ρ where
@@ -709,6 +722,10 @@ pub enum Route {
     /// Continued in ρ at the control from the exact state at a larger ρ
     /// (found there by another route), where no route finds it directly.
     ContinuedInRho,
+    /// On an arm beside a band of the family, traced through the arm's
+    /// fold in ā and on along its returning stretch to the control
+    /// ([`bands::past_folds_or_band`]), where the other routes find nothing.
+    PastFold,
 }
 
 impl std::fmt::Display for Route {
@@ -720,6 +737,9 @@ impl std::fmt::Display for Route {
             Route::FromCircle => "continued in rho from the circle at rho = 1",
             Route::ContinuedInRho => {
                 "continued in rho at the same control from the state at a larger rho"
+            }
+            Route::PastFold => {
+                "traced from beside a band through the fold of its arm, on the returning stretch"
             }
         })
     }

@@ -111,6 +111,11 @@ fn sci(model: f64, exact: f64) -> String {
     }
 }
 
+/// Words for a markdown table cell: a `|` (as in max |dp/dnu - 1|) escaped.
+fn cell(words: &str) -> String {
+    words.replace('|', "\\|")
+}
+
 /// The markdown line of a row's conformal members.
 pub fn render_conformal_row(r: &Row) -> String {
     let mut cells = vec![format!("{}", r.rho)];
@@ -124,7 +129,7 @@ pub fn render_conformal_row(r: &Row) -> String {
                 format!("{first} / {} / {}", sci(c.a_bar, e.a_bar), sci(c.s, e.s))
             }
             (Err(_), Ok(_)) => "no exact value (see above)".into(),
-            (_, Err(why)) => why.replace('|', "/"),
+            (_, Err(why)) => cell(why),
         });
     }
     format!("| {} |", cells.join(" | "))
@@ -161,8 +166,13 @@ pub fn render_row(r: &Row) -> String {
                 Quantity::PullOff => format!("F̄ = {:.6}", e.force_bar),
                 _ => format!("δ̄ = {:.6}", e.delta_bar),
             };
+            let route = match e.route {
+                super::Route::PastFold => ", past a fold",
+                super::Route::ContinuedInRho => ", continued in ρ",
+                _ => "",
+            };
             cells.push(format!(
-                "{main}, ā = {:.6}, s = {:.6} (N = {}, bc {})",
+                "{main}, ā = {:.6}, s = {:.6} (N = {}, bc {}{route})",
                 e.a_bar,
                 e.s,
                 e.truncation.modes,
@@ -183,9 +193,9 @@ pub fn render_row(r: &Row) -> String {
         }
         Err(why) => {
             let short = if why.starts_with("not resolved") {
-                why.replace('|', "\\|")
+                cell(why)
             } else {
-                format!("no exact value: {}", why.replace('|', "/"))
+                format!("no exact value: {}", cell(why))
             };
             cells.push(short);
             for _ in &r.models {
@@ -216,11 +226,22 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          F̄ from the ellipse with `conformal:8`'s ā, b̄ and δ̄ at the same F̄ (else at the model's ā, then the \
          family traced to the F̄) and, where that finds \
          nothing near the model's state, looked for on the arm through the circle with that F̄ continued in ρ \
-         (and once more from beyond a fold the trace meets); where none of these finds it, and the value lies in \
-         no band, it is continued in ρ at that F̄ from the state at the first of ρ + 0.1, ρ + 0.2, … that is found \
-         (route `continued_in_rho`); a row says where the arm ended, or down to which ρ the continuation \
-         converged and why it stopped, when the value is not reached. The contour modes are escalated (12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96, \
-         8 quadrature points per mode; after two, the rungs whose boundary error, extrapolated geometrically \
+         (and once more from beyond a fold the trace meets); where none of these finds it, on the arms beside \
+         each gap of `conformal:8`'s screen at fixed ā whose neighbours bracket that F̄, traced through their \
+         folds in ā and on along their returning stretches (route `past_fold`, \"past a fold\" in the row: the \
+         contour of such a state undulates with the band's mode, as the pull-off's does past the mode-4 band); \
+         where that finds none either, and the value lies in no band, it is continued in ρ at that F̄ from the \
+         state at the first of ρ + 0.1, ρ + 0.2, … that is found (route `continued_in_rho`, \"continued in ρ\" \
+         in the row); a row says where the arm ended, or down to which ρ the continuation converged and why it \
+         stopped, when the value is not reached. The contour modes are escalated (",
+    );
+    let modes: Vec<String> = super::default_tries()
+        .iter()
+        .map(|t| t.modes.to_string())
+        .collect();
+    o.push_str(&modes.join(", "));
+    o.push_str(&format!(
+        ", {} quadrature points per mode; after two, the rungs whose boundary error, extrapolated geometrically \
          from the last two, would not converge are skipped) until the boundary error max|∂p̄/∂ν − 1| on the \
          independent fine grid is below 1e-9; only such a state is accepted (given as N and bc; a boundary \
          error above 1e-2 stops the escalation), and each model's error is given relative to it, in per cent: \
@@ -230,7 +251,8 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          checker's claim `sec6.error.exact`) and draws docs/figures/exact_*.svg from them; \
          `solver/tests/accuracy_table.rs` recomputes the rows ρ = 1 and ρ = 0.9 and the reference's ρ = 0.8 \
          pull-off, and `tests/tests/figures_fresh.rs` redraws the figures from the reference.\n",
-    );
+        super::POINTS_PER_MODE
+    ));
     let lowest = rows
         .iter()
         .filter(|r| r.quantity == Quantity::PullOff && r.exact.is_ok())
@@ -357,7 +379,7 @@ pub fn render_doubling(d: &Doubling) -> String {
             d.rho,
             c.truncation.modes,
             c.force_bar,
-            why.replace('|', "/")
+            cell(why)
         ),
     }
 }
