@@ -331,7 +331,7 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
 /// The exact state at `what` in {"delta", "force"} = `value`, or its
 /// load-controlled pull-off (`what` = "pull_off"), as JSON; with `modes`
 /// contour modes (8 quadrature points each) instead of the default
-/// escalation (12 to 64 modes, `thinjkr::exact::default_tries`).
+/// escalation (12 to 96 modes, `thinjkr::exact::default_tries`).
 #[pyfunction]
 #[pyo3(signature = (rho, what, value, modes=None))]
 fn exact(
@@ -342,16 +342,17 @@ fn exact(
     modes: Option<usize>,
 ) -> PyResult<String> {
     use thinjkr::exact::{
-        at_resolved, at_with, default_tries, pull_off_resolved, pull_off_with, Truncation,
+        at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, Truncation,
+        MAX_USER_MODES,
     };
     let tries = match modes {
         None => default_tries(),
-        Some(m) if (1..=64).contains(&m) => vec![Truncation::with_modes(m)],
+        Some(m) if (1..=MAX_USER_MODES).contains(&m) => vec![Truncation::with_modes(m)],
         Some(m) => {
             return Err(raw(Error::OutOfRange {
                 name: "modes",
                 value: m as f64,
-                range: "1 ..= 64".into(),
+                range: format!("1 ..= {MAX_USER_MODES}").into(),
             }))
         }
     };
@@ -375,7 +376,7 @@ fn exact(
                 // band says so, and one no start reaches is continued in rho
                 Ok(json(&match modes {
                     None => at_resolved(rho, control)?,
-                    Some(_) => at_with(rho, control, &tries)?,
+                    Some(_) => at_searched(rho, control, &tries)?,
                 }))
             }
             other => Err(Error::Usage(format!(

@@ -15,12 +15,13 @@ use thinjkr::{Contact, Error, ModelId, Result};
 /// The truncation of the exact solver.
 #[derive(Args, Clone, Debug, Default)]
 pub struct Discretisation {
-    /// Contour modes N (the contour series' length, 1..=64; the answer is given when its boundary error is
+    /// Contour modes N (the contour series' length, 1..=96; the answer is given when its boundary error is
     /// below 1e-5, with that error); default: escalated from 12 to 96 modes until the boundary error is
     /// below 1e-9, and only such an answer is given.
     #[arg(long)]
     pub modes: Option<usize>,
-    /// Quadrature points on the contour (default 8 N).
+    /// Quadrature points on the contour (default 8 N; without --modes, the escalation goes as far as these
+    /// points allow: at least 4 N + 8 for N modes).
     #[arg(long)]
     pub points: Option<usize>,
 }
@@ -29,19 +30,33 @@ impl Discretisation {
     /// The truncations to try, in order.
     fn tries(&self) -> Result<Vec<Truncation>> {
         let modes = match self.modes {
-            Some(m) if !(1..=64).contains(&m) => {
+            Some(m) if !(1..=thinjkr::exact::MAX_USER_MODES).contains(&m) => {
                 return Err(Error::OutOfRange {
                     name: "modes",
                     value: m as f64,
-                    range: "1..=64".into(),
+                    range: format!("1 ..= {}", thinjkr::exact::MAX_USER_MODES).into(),
                 })
             }
             Some(m) => vec![m],
-            None => thinjkr::exact::default_tries()
+            // the escalation's rungs, as far as the points given allow
+            None => thinjkr::exact::ESCALATION
                 .iter()
-                .map(|t| t.modes)
+                .copied()
+                .filter(|&m| self.points.is_none_or(|p| p >= 4 * m + 8))
                 .collect(),
         };
+        if modes.is_empty() {
+            return Err(Error::OutOfRange {
+                name: "points",
+                value: self.points.unwrap_or(0) as f64,
+                range: format!(
+                    "at least {} for the escalation's first rung of {} modes (4 · modes + 8), or give --modes",
+                    4 * thinjkr::exact::ESCALATION[0] + 8,
+                    thinjkr::exact::ESCALATION[0]
+                )
+                .into(),
+            });
+        }
         Ok(modes
             .into_iter()
             .map(|m| Truncation {

@@ -25,7 +25,7 @@ def _with_contour(d, points: int) -> State:
 def solve(rho: float, *, delta=None, force=None, points: int = 256, modes=None) -> State:
     """The exact state at approach ``delta`` (δ̄) or force ``force`` (F̄),
     its contour sampled at ``points`` angles. ``modes``: the contour series'
-    length (1 … 64); by default the modes are escalated from 12 to 96 until
+    length (1 … 96); by default the modes are escalated from 12 to 96 until
     the fine-grid boundary error is below 1e-9 (where none is,
     :class:`Unresolved` is raised with the smallest error reached)."""
     control, value = _control(delta, force, None)

@@ -210,11 +210,19 @@ pub fn next_try(tries: &[Truncation], i: usize, seen: &[(usize, f64)]) -> usize 
         .max(i + 1)
 }
 
+/// The contour modes of the default escalation ([`default_tries`]).
+pub const ESCALATION: [usize; 12] = [12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96];
+
+/// The most contour modes a user may ask for (the command line's
+/// `--modes`, the Python package's `modes`): the last rung of the default
+/// escalation.
+pub const MAX_USER_MODES: usize = ESCALATION[ESCALATION.len() - 1];
+
 /// The default escalation: 12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80
 /// and 96 contour modes (of which [`resolved`] skips those predicted not to
 /// converge), each with [`POINTS_PER_MODE`] quadrature points per mode.
 pub fn default_tries() -> Vec<Truncation> {
-    [12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96]
+    ESCALATION
         .iter()
         .map(|&modes| Truncation::with_modes(modes))
         .collect()
@@ -775,8 +783,9 @@ pub struct Exact {
     with_stability: bool,
 }
 
-/// The longest contour series accepted ([`Truncation::modes`]).
-pub const MAX_MODES: usize = 128;
+/// The longest contour series accepted ([`Truncation::modes`]): twice
+/// [`MAX_USER_MODES`], for the doubling checks of `thinjkr accuracy`.
+pub const MAX_MODES: usize = 2 * MAX_USER_MODES;
 /// The most quadrature points accepted ([`Truncation::points`]): the
 /// boundary integral equation's matrices grow as points², the fine check
 /// uses twice as many. Measured with 64 modes and 2048 points
@@ -799,7 +808,7 @@ impl Exact {
             return Err(Error::OutOfRange {
                 name: "modes",
                 value: truncation.modes as f64,
-                range: "1 ..= 128 (the contour series' length)".into(),
+                range: format!("1 ..= {MAX_MODES} (the contour series' length)").into(),
             });
         }
         if truncation.points > MAX_POINTS {
