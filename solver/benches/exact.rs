@@ -6,8 +6,10 @@
 //! at ρ = 0.8 (from conformal:8's pull-off, tracing, refinement) with 16
 //! modes, the truncation `exact::resolved` picks for it (boundary error
 //! 7e-10; doubling changes F̄ by 1e-14 and s by 4e-11, docs/accuracy.md);
-//! and, as the command line computes them, the states at F̄ = 10 at ρ = 0.8
-//! and 0.5 and the pull-offs at ρ = 0.8 and 0.5 with the truncation
+//! and, as the command line computes them, the states at F̄ = 10 at ρ = 0.8,
+//! 0.6 (past the fold of the mode-10 band's upper arm, where neither
+//! `conformal:8`'s start nor the circle's arms reach it) and 0.5 and the
+//! pull-offs at ρ = 0.8 and 0.5 with the truncation
 //! escalated until the fine-grid boundary error is below 1e-9
 //! (`exact::at_resolved`, `exact::pull_off_resolved`, from `conformal:8`'s
 //! states), each with its stability. The set-up checks that each
@@ -47,8 +49,10 @@ fn benches(c: &mut Criterion) {
     // do: the truncation escalated until the fine-grid boundary error is
     // below 1e-9 (12 modes for F = 10 at rho = 0.8; 12, 16 then 40 at
     // rho = 0.5; 12 then 16 for the pull-off at rho = 0.8, 12, 16 then 48
-    // at rho = 0.5), each state from conformal:8's
-    for rho in [0.8, 0.5] {
+    // at rho = 0.5), each state from conformal:8's; at rho = 0.6 the model's
+    // start and the circle's arms fail first, then the arms beside the
+    // band are traced past their folds
+    for rho in [0.8, 0.6, 0.5] {
         let st = exact::at_resolved(rho, ExactControl::Force(10.0)).unwrap();
         assert!(st.bc_error <= exact::CONVERGED, "{}", st.bc_error);
         g.bench_function(format!("state at F = 10, rho = {rho}, resolved"), |b| {
