@@ -607,17 +607,17 @@ pub fn states_at(
         states: Vec::new(),
         missed: Vec::new(),
     };
-    let answers = answers.into_iter().chain(past.into_iter().flat_map(|p| {
-        let missed = p
-            .missed
-            .into_iter()
-            .map(|(a, why)| (a, Err(Error::NoState(why))));
-        p.states
-            .into_iter()
-            .map(|st| (st.a_bar, Ok(st)))
-            .chain(missed)
-            .collect::<Vec<_>>()
-    }));
+    let answers = answers
+        .into_iter()
+        .map(|(a, found)| (a, found.map_err(|e| e.to_string())))
+        .chain(past.into_iter().flat_map(|p| {
+            let missed = p.missed.into_iter().map(|(a, why)| (a, Err(why)));
+            p.states
+                .into_iter()
+                .map(|st| (st.a_bar, Ok(st)))
+                .chain(missed)
+                .collect::<Vec<_>>()
+        }));
     for (a, found) in answers {
         match found {
             Ok(st) => {
@@ -629,7 +629,7 @@ pub fn states_at(
                     out.states.push(st);
                 }
             }
-            Err(e) => out.missed.push((a, e.to_string())),
+            Err(why) => out.missed.push((a, why)),
         }
     }
     out.states.sort_by(|x, y| x.a_bar.total_cmp(&y.a_bar));

@@ -640,7 +640,9 @@ impl Exact {
     /// fold in ā and on along its returning stretch, where the contour
     /// undulates more and more with the band's mode (as the load-controlled
     /// pull-off, just past the fold of the mode-4 band, does). Every
-    /// crossing of the control is located; the trace ends at a second fold,
+    /// crossing of the control from the step of the fold on is located
+    /// (one before it is on the arm the other routes start on, and is left
+    /// to them); the trace ends at a second fold,
     /// where the departure from an ellipse in the coefficients,
     /// Σ_{j≥1}|b_j|/ā, exceeds [`PAST_FOLD_DEPARTURE`], or after
     /// [`PAST_FOLD_STEPS`] steps of at most `max_step`. The states are of
@@ -680,13 +682,22 @@ impl Exact {
                 second_fold || departure > PAST_FOLD_DEPARTURE * p.a_bar
             },
         )?;
+        // the crossings from the step of the first fold on (one before it
+        // lies on the arm the other routes start on)
+        let fold_step = trace
+            .events
+            .iter()
+            .find(|e| e.kind == EventKind::SizeFold)
+            .map(|e| e.between[0]);
         let mut found = Vec::new();
         for e in &trace.events {
-            if let (EventKind::Crossing, Some(u)) = (e.kind, &e.at) {
-                found.push(self.state(u)?);
+            if let (EventKind::Crossing, Some(u), Some(f)) = (e.kind, &e.at, fold_step) {
+                if e.between[0] >= f {
+                    found.push(self.state(u)?);
+                }
             }
         }
-        let folded = trace.events.iter().any(|e| e.kind == EventKind::SizeFold);
+        let folded = fold_step.is_some();
         Ok((
             found,
             folded
