@@ -350,3 +350,27 @@ fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
     );
     assert!((fine.s / st.s - 1.0).abs() < 1e-9, "{} {}", fine.s, st.s);
 }
+
+/// At ρ = 0.4, F̄ = 6 lies between the forces of the mode-8 band's edges
+/// (3.2744 < ā < 3.3835, F̄ = 5.461 and 7.104 there), and no arm beside the
+/// band reaches it converged, even past its fold (the upper arm crosses it
+/// where the series leaves a boundary error of 1.5e-4 with 96 modes): the
+/// answer is the band in words, naming how far each arm was followed, and
+/// no number.
+#[test]
+fn a_force_no_arm_reaches_converged_is_said_to_lie_in_its_band() {
+    match thinjkr::exact::at_resolved(0.4, ExactControl::Force(6.0)) {
+        Err(Error::NoState(why)) => {
+            for words in [
+                "no near-elliptic exact state at force = 6 for rho = 0.4",
+                "lies in the band 3.2744 < a < 3.3835, mode cos 8θ",
+                "the lower arm, traced with",
+                "the upper arm, traced with",
+                "followed past its fold",
+            ] {
+                assert!(why.contains(words), "'{words}' not in: {why}");
+            }
+        }
+        other => panic!("{other:?}"),
+    }
+}

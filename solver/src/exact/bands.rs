@@ -723,7 +723,7 @@ pub fn past_folds_or_band(
                     .map(|n| format!(", mode cos {n}θ"))
                     .unwrap_or_default();
                 return Err(Error::NoState(format!(
-                    "no near-elliptic exact state at {control} for rho = {}: that {name} lies in the band {:.4} < a < {:.4}{mode} (its edges, where the family folds back, have {name} = {:.4} and {:.4}), and neither arm reaches it past its fold ({})",
+                    "no near-elliptic exact state at {control} for rho = {}: that {name} lies in the band {:.4} < a < {:.4}{mode} (its edges, where the family folds back, have {name} = {:.4} and {:.4}), and no arm beside it, followed past its fold, reaches it converged ({})",
                     crate::error::short(rho),
                     band.lower.a_bar,
                     band.upper.a_bar,
@@ -774,7 +774,10 @@ fn past_folds(
     tries: &[super::Truncation],
 ) -> PastFolds {
     let mut out = PastFolds::default();
-    for (beside, direction, which) in [(left, 1.0, "lower"), (right, -1.0, "upper")] {
+    let margin = 0.05;
+    for (beside, other, direction, which) in
+        [(left, right, 1.0, "lower"), (right, left, -1.0, "upper")]
+    {
         let start = super::resolved(rho, tries, |ex| {
             beside
                 .iter()
@@ -787,10 +790,11 @@ fn past_folds(
         });
         let crossings = start.and_then(|start| {
             let ex = Exact::new(rho, start.truncation)?.deferring_stability();
-            let (found, end) = ex.crossings_past_fold(&start, direction, control, step)?;
-            Ok((start.truncation, found, end))
+            let limit = other[0].a_bar + direction * margin;
+            let (found, how) = ex.crossings_past_fold(&start, direction, limit, control, step)?;
+            Ok((start.truncation, found, how))
         });
-        let (truncation, found, end) = match crossings {
+        let (truncation, found, how) = match crossings {
             Ok(c) => c,
             Err(e) => {
                 out.followed
@@ -798,13 +802,10 @@ fn past_folds(
                 continue;
             }
         };
-        out.followed.push(match end {
-            Some(a) => format!(
-                "the {which} arm followed past its fold to a = {a:.4} with {} modes",
-                truncation.modes
-            ),
-            None => format!("the {which} arm does not fold before it leaves the gap"),
-        });
+        out.followed.push(format!(
+            "the {which} arm, traced with {} modes, {how}",
+            truncation.modes
+        ));
         let from = tries
             .iter()
             .position(|t| t.modes >= truncation.modes)

@@ -642,20 +642,21 @@ impl Exact {
     /// pull-off, just past the fold of the mode-4 band, does). Every
     /// crossing of the control from the step of the fold on is located
     /// (one before it is on the arm the other routes start on, and is left
-    /// to them); the trace ends at a second fold,
-    /// where the departure from an ellipse in the coefficients,
-    /// Σ_{j≥1}|b_j|/ā, exceeds [`PAST_FOLD_DEPARTURE`], or after
-    /// [`PAST_FOLD_STEPS`] steps of at most `max_step`. The states are of
-    /// this truncation: whether the series resolves them is the caller's
-    /// to decide. Also returns how far the trace went past the fold (ā of
-    /// its last point, `None` where it met no fold) for the caller's words.
+    /// to them). The trace ends where ā passes `a_limit` before any fold
+    /// (the arm crosses the gap), at a second fold, where the departure from
+    /// an ellipse in the coefficients, Σ_{j≥1}|b_j|/ā, exceeds
+    /// [`PAST_FOLD_DEPARTURE`], or after [`PAST_FOLD_STEPS`] steps of at most
+    /// `max_step`; how it ended is returned in words with the crossings. The
+    /// states are of this truncation: whether the series resolves them is
+    /// the caller's to decide.
     pub(crate) fn crossings_past_fold(
         &self,
         start: &ExactState,
         direction: f64,
+        a_limit: f64,
         control: ExactControl,
         max_step: f64,
-    ) -> Result<(Vec<ExactState>, Option<f64>)> {
+    ) -> Result<(Vec<ExactState>, String)> {
         let n = self.truncation.modes + 2;
         let watch = Watch {
             size_fold: On::Note,
@@ -668,6 +669,7 @@ impl Exact {
             }),
         };
         let mut past = false;
+        let mut why = "";
         let trace = continuation::trace(
             self,
             self.unknowns(start),
@@ -679,7 +681,16 @@ impl Exact {
                 let second_fold = past && !returning;
                 past |= returning;
                 let departure: f64 = p.u.rows(2, n - 3).iter().map(|b| b.abs()).sum();
-                second_fold || departure > PAST_FOLD_DEPARTURE * p.a_bar
+                why = if !past && (p.a_bar - a_limit) * direction > 0.0 {
+                    "crosses the gap without folding"
+                } else if second_fold {
+                    "folds a second time"
+                } else if departure > PAST_FOLD_DEPARTURE * p.a_bar {
+                    "departs from an ellipse by more than 0.1 a in its coefficients"
+                } else {
+                    ""
+                };
+                !why.is_empty()
             },
         )?;
         // the crossings from the step of the first fold on (one before it
@@ -697,13 +708,15 @@ impl Exact {
                 }
             }
         }
-        let folded = fold_step.is_some();
-        Ok((
-            found,
-            folded
-                .then(|| trace.points.last().map(|p| p.a_bar))
-                .flatten(),
-        ))
+        let end = trace.points.last().map_or(start.a_bar, |p| p.a_bar);
+        let how = match (trace.end, fold_step) {
+            (continuation::End::Budget, _) => {
+                format!("stopped after {PAST_FOLD_STEPS} steps at a = {end:.4}")
+            }
+            (_, None) => format!("{why} (at a = {end:.4})"),
+            (_, Some(_)) => format!("followed past its fold until it {why}, at a = {end:.4}"),
+        };
+        Ok((found, how))
     }
 
     /// The state at `control` started from the richest `conformal:K`'s
