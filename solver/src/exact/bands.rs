@@ -245,6 +245,10 @@ fn beside(
 /// The grid step of the screen in ā.
 const STEP: f64 = 0.01;
 
+/// How far beyond a gap's far side, in ā, an arm traced into the gap may go
+/// before it is said to cross the gap without folding.
+const BEYOND_GAP: f64 = 0.05;
+
 /// The band map at `rho` for ā in [`from`, `to`] (see the module).
 pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
@@ -737,30 +741,14 @@ pub fn past_folds_or_band(
     Err(err)
 }
 
-/// `st` where the contour series resolves it (boundary error at most
-/// [`super::RESOLVED`]), else an [`Error::Unresolved`] (which
-/// [`super::resolved`] escalates).
-fn resolved_only(st: super::ExactState) -> Result<super::ExactState> {
-    if st.bc_error <= super::RESOLVED {
-        Ok(st)
-    } else {
-        Err(Error::Unresolved {
-            what: format!(
-                "max |dp/dnu - 1| = {:.1e} on the fine grid with {} modes",
-                st.bc_error, st.truncation.modes
-            ),
-            residual: st.bc_error,
-        })
-    }
-}
-
 /// The exact states at `control` on the two arms beside the gap between
 /// the model's near-elliptic states `left` and `right` (nearest first),
 /// each traced into the gap through its first fold and on past it
 /// ([`Exact::crossings_past_fold`], steps of at most `step`), from the
-/// exact state near the first of them that the first truncation of
-/// `tries` to converge there (boundary error ≤ [`super::CONVERGED`], or
-/// ≤ [`super::RESOLVED`] for a single truncation) resolves. Each crossing
+/// exact state at the first of them where Newton converges, with the first
+/// truncation of `tries` that converges it (boundary error ≤
+/// [`super::CONVERGED`]; a single truncation: ≤ [`super::RESOLVED`]),
+/// until ā passes [`BEYOND_GAP`] beyond the gap's far side. Each crossing
 /// is solved again by Newton at the control with the truncations of
 /// `tries` from its own on ([`super::resolved`]), and kept when that state
 /// lies where the trace crossed (ā within 0.01, s within 1 %); route
@@ -774,7 +762,6 @@ fn past_folds(
     tries: &[super::Truncation],
 ) -> PastFolds {
     let mut out = PastFolds::default();
-    let margin = 0.05;
     for (beside, other, direction, which) in
         [(left, right, 1.0, "lower"), (right, left, -1.0, "upper")]
     {
@@ -783,14 +770,16 @@ fn past_folds(
                 .iter()
                 .find_map(|m| {
                     let ellipse = Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes);
-                    ex.solve(m.a_bar, &ellipse, m.delta_bar).ok()
+                    ex.solve(m.a_bar, &ellipse, m.delta_bar)
+                        .ok()
+                        .map(|st| (m.a_bar, st))
                 })
                 .ok_or_else(|| Error::NoState("no exact state beside the gap".into()))
-                .and_then(resolved_only)
+                .and_then(|(a, st)| ex.accept_resolved(format_args!("a = {a:.2}"), st))
         });
         let crossings = start.and_then(|start| {
             let ex = Exact::new(rho, start.truncation)?.deferring_stability();
-            let limit = other[0].a_bar + direction * margin;
+            let limit = other[0].a_bar + direction * BEYOND_GAP;
             let (found, how) = ex.crossings_past_fold(&start, direction, limit, control, step)?;
             Ok((start.truncation, found, how))
         });
@@ -815,7 +804,7 @@ fn past_folds(
                 let mut contour = crossing.contour.clone();
                 contour.b.resize(ex.truncation().modes, 0.0);
                 ex.solve_at(control, &contour, crossing.delta_bar)
-                    .and_then(resolved_only)
+                    .and_then(|st| ex.accept_resolved(control, st))
             });
             match again {
                 Ok(mut st)
@@ -862,9 +851,8 @@ fn settle(
     right: &[&ConformalState],
     step: f64,
 ) -> Result<std::result::Result<Band, String>> {
-    let margin = 0.05;
-    let lower = fold_from(rho, left, 1.0, right[0].a_bar + margin, step)?;
-    let upper = fold_from(rho, right, -1.0, left[0].a_bar - margin, step)?;
+    let lower = fold_from(rho, left, 1.0, right[0].a_bar + BEYOND_GAP, step)?;
+    let upper = fold_from(rho, right, -1.0, left[0].a_bar - BEYOND_GAP, step)?;
     Ok(match (lower, upper) {
         (Some(lower), Some(upper)) if lower.a_bar < upper.a_bar => Ok(Band { lower, upper }),
         (Some(lower), Some(upper)) => Err(format!(

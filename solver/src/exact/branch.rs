@@ -808,8 +808,10 @@ impl Exact {
     /// route. An unresolved state is [`Error::Unresolved`], a value not reached is
     /// [`Error::NoState`] saying where the arm ended.
     pub fn at(&self, control: ExactControl) -> Result<ExactState> {
-        self.find(control, None)
-            .and_then(|st| self.accept_resolved(control, st))
+        self.find(control, None).and_then(|st| {
+            let at = format!("{control} ({})", st.route);
+            self.accept_resolved(at, st)
+        })
     }
 
     /// The state [`Exact::at`] finds, resolved or not; first, where given,
@@ -917,12 +919,13 @@ impl Exact {
         Ok(st)
     }
 
-    /// `st`, found at `control`, if it is resolved (boundary error at most
+    /// `st`, found at `at` (a control and how it was found, or the size it
+    /// was solved at), if it is resolved (boundary error at most
     /// [`super::RESOLVED`]); else an [`Error::Unresolved`] that asks for
     /// more modes.
     pub(crate) fn accept_resolved(
         &self,
-        control: ExactControl,
+        at: impl std::fmt::Display,
         st: ExactState,
     ) -> Result<ExactState> {
         if st.bc_error <= super::RESOLVED {
@@ -930,11 +933,10 @@ impl Exact {
         }
         Err(Error::Unresolved {
             what: format!(
-                "exact state at rho = {}, {control}: max |dp/dnu - 1| = {:.1e} with {} modes ({})",
+                "exact state at rho = {}, {at}: max |dp/dnu - 1| = {:.1e} with {} modes",
                 crate::error::rounded(self.rho),
                 st.bc_error,
-                self.truncation.modes,
-                st.route
+                self.truncation.modes
             ),
             residual: st.bc_error,
         })

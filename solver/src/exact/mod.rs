@@ -455,7 +455,8 @@ pub fn at_with(
     resolved(rho, tries, |ex| {
         let st = ex.find(control, coarser.borrow().as_ref())?;
         *coarser.borrow_mut() = Some(st.clone());
-        ex.accept_resolved(control, st)
+        let at = format!("{control} ({})", st.route);
+        ex.accept_resolved(at, st)
     })
 }
 
