@@ -1102,7 +1102,8 @@ pub fn module(md: &ModelDerivation) -> Result<(String, Vec<FormReport>), String>
 
 /// `generated/mod.rs`: the module list and [`ModelId`], the run-time choice
 /// of a model.
-fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
+fn mod_source(all: &[&ModelDerivation], families: &[&str]) -> Result<String, String> {
+    let family_mods: Vec<Ident> = families.iter().map(|f| ident(f)).collect();
     let mods: Vec<Ident> = all.iter().map(|m| ident(m.ansatz().id)).collect();
     let variants: Vec<Ident> = all.iter().map(|m| ident(&camel(m.ansatz().id))).collect();
     let names: Vec<&str> = all.iter().map(|m| m.ansatz().id).collect();
@@ -1115,7 +1116,8 @@ fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
     let err = format!("unknown model (allowed: {list})");
     let file = quote! {
         #(pub mod #mods;)*
-        pub mod conformal;
+        #(pub mod #family_mods;)*
+        pub mod registry;
         /// A generated model, chosen at run time.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
         #[serde(rename_all = "snake_case")]
@@ -1160,7 +1162,9 @@ fn mod_source(all: &[&ModelDerivation]) -> Result<String, String> {
 }
 
 /// The generated modules and their `mod.rs`.
-pub fn outputs(all: &[&ModelDerivation]) -> Result<Vec<Output>, String> {
+/// `families` names the contour families' modules (each written by
+/// `codegen_conformal`), declared beside the models' and the registry.
+pub fn outputs(all: &[&ModelDerivation], families: &[&str]) -> Result<Vec<Output>, String> {
     let mut out = Vec::new();
     let mut reports = Vec::new();
     for md in all {
@@ -1177,7 +1181,7 @@ pub fn outputs(all: &[&ModelDerivation]) -> Result<Vec<Output>, String> {
     });
     out.push(Output {
         path: "solver/src/generated/mod.rs".into(),
-        contents: mod_source(all)?,
+        contents: mod_source(all, families)?,
     });
     Ok(out)
 }

@@ -22,7 +22,7 @@
 //! holds on ω); the boundary slope is a real trigonometric polynomial; and
 //! ∂Π̄/∂δ̄ equals F̄ = ∫ω p̄ dA computed separately (the force identity).
 //!
-//! Owns: [`ConformalAnsatz`] (the data of the family) and its derivation.
+//! Owns: [`ConformalAnsatz`] (the data of one member) and its derivation.
 //! May use: `sym`, symbolica's polynomials.
 
 use crate::sym::{diff, ex, is_zero, subs_all};
@@ -37,32 +37,41 @@ use symbolica::poly::PolyVariable;
 /// A polynomial with rational coefficients in the derivation's variables.
 pub type Poly = MultivariatePolynomial<RationalField, u16>;
 
-/// A contour family given by a polynomial map of the unit disk and the
-/// pressure built on it, as data.
+/// One member of a contour family given by a polynomial map of the unit
+/// disk and the pressure built on it, as data (read from a family's data
+/// file by [`crate::family`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConformalAnsatz {
     /// The family's name; a member is `family:K`.
-    pub family: &'static str,
+    pub family: String,
     /// The number of map coefficients K.
     pub terms: usize,
     /// One line for reports.
-    pub title: &'static str,
+    pub title: String,
     /// The particular solution P(X, Y) of Δp̄ = φ̄ − δ̄, in the symbols `X`,
     /// `Y`, `dbar` and `mu` = 1/ρ (symbolica syntax).
-    pub particular: &'static str,
+    pub particular: String,
     /// The scaled gap φ̄(X, Y) (symbolica syntax, same symbols).
-    pub gap: &'static str,
+    pub gap: String,
+    /// The powers of ζ in the map, at least `terms` of them: member K
+    /// takes the first K.
+    pub family_powers: Vec<u16>,
 }
 
 impl ConformalAnsatz {
-    /// The powers of ζ in the map: the odd powers 1, 3, …, 2K − 1 (the
-    /// map is odd and real, so the domain has both symmetries of the
-    /// problem, about X = 0 and about Y = 0).
+    /// The powers of ζ in the map: the first K of the family's (for
+    /// `conformal`, the odd powers 1, 3, …, 2K − 1: the map is odd and
+    /// real, so the domain has both symmetries of the problem, about X = 0
+    /// and about Y = 0).
     pub fn powers(&self) -> Vec<u16> {
-        (0..self.terms).map(|k| 2 * k as u16 + 1).collect()
+        self.family_powers
+            .iter()
+            .take(self.terms)
+            .copied()
+            .collect()
     }
 
-    /// The member's name, `conformal:K`.
+    /// The member's name, `family:K`.
     pub fn name(&self) -> String {
         format!("{}:{}", self.family, self.terms)
     }
@@ -73,19 +82,8 @@ impl ConformalAnsatz {
     }
 }
 
-/// The family `conformal:K` for K = 1 …: the particular solution of the
-/// issue that introduced it, P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4.
-pub fn conformal(terms: usize) -> ConformalAnsatz {
-    ConformalAnsatz {
-        family: "conformal",
-        terms,
-        title: "image of the unit disk under an odd polynomial map, exact (2) and p = 0 on the contour, energy (Ritz) closure",
-        particular: "X^4/24 + mu*Y^4/24 - dbar*(X^2 + Y^2)/4",
-        gap: "X^2/2 + mu*Y^2/2",
-    }
-}
-
-/// The largest K generated.
+/// The largest K a family may generate: the packed tables hold the
+/// exponents of at most eight map coefficients.
 pub const MAX_TERMS: usize = 8;
 
 /// Everything derived for one member of the family.
@@ -282,8 +280,16 @@ pub fn derive(ansatz: &ConformalAnsatz) -> Result<ConformalDerivation, String> {
         return Err(format!("K = {} is outside 1..=16", ansatz.terms));
     }
     let l = Layout::new(ansatz.terms);
-    let particular = ex(ansatz.particular);
-    let gap = ex(ansatz.gap);
+    if ansatz.family_powers.len() < ansatz.terms {
+        return Err(format!(
+            "K = {} needs {} powers of the map, the family has {}",
+            ansatz.terms,
+            ansatz.terms,
+            ansatz.family_powers.len()
+        ));
+    }
+    let particular = ex(&ansatz.particular);
+    let gap = ex(&ansatz.gap);
     // (2) for the particular solution: ΔP = φ̄ − δ̄.
     let lap = diff(&diff(&particular, "X"), "X") + diff(&diff(&particular, "Y"), "Y");
     if !is_zero(&(lap - &gap + ex("dbar"))) {
@@ -411,6 +417,22 @@ impl ConformalDerivation {
             }
         }
         (self.potential.nterms(), hess)
+    }
+
+    /// The degrees of Π̄: in c (total), in δ̄ and in μ.
+    pub fn degrees(&self) -> (u32, u32, u32) {
+        let (cs, d, mu) = self.layout();
+        let mut out = (0, 0, 0);
+        for t in self.potential.into_iter() {
+            let e = t.exponents;
+            let in_c: u32 = cs.iter().map(|&v| e[v] as u32).sum();
+            out = (
+                out.0.max(in_c),
+                out.1.max(e[d] as u32),
+                out.2.max(e[mu] as u32),
+            );
+        }
+        out
     }
 }
 

@@ -16,8 +16,15 @@ pub struct Output {
     pub contents: String,
 }
 
-/// Derive every model, check the paper's claims, and render every file.
+/// Derive every model and every family of `derive/families/` in this
+/// workspace, check the paper's claims, and render every file.
 pub fn outputs() -> Result<Vec<Output>, String> {
+    outputs_in(&workspace_root())
+}
+
+/// [`outputs`] for the workspace at `root`: its family files are read from
+/// `root/derive/families/` (the built-in ellipse models are this crate's).
+pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
     let paper = Derivation::new(&ansatz::PAPER)?;
     let models = ansatz::ALL
         .iter()
@@ -50,22 +57,35 @@ pub fn outputs() -> Result<Vec<Output>, String> {
         },
     ];
     let all: Vec<&ModelDerivation> = models.iter().collect();
-    out.extend(crate::codegen::outputs(&all)?);
-    let family = crate::codegen_conformal::derive_all()?;
-    let generated = crate::codegen_conformal::outputs(&family)?;
-    out[0]
-        .contents
-        .push_str(&crate::codegen_conformal::derivation_section(&family));
-    if let Some(acc) = out
-        .iter_mut()
-        .find(|o| o.path.as_os_str() == "docs/codegen-accuracy.md")
-    {
-        acc.contents
-            .push_str(&crate::codegen_conformal::accuracy_section(
-                &family, &generated,
-            ));
+    // the family files are read (and their expressions parsed) after the
+    // ellipse models are derived: symbolica orders terms by when their
+    // symbols were first seen, and the generated code must not depend on
+    // which families exist
+    let families = crate::family::read_all(root)?;
+    let modules: Vec<&str> = families.iter().map(|f| f.name.as_str()).collect();
+    out.extend(crate::codegen::outputs(&all, &modules)?);
+    let mut exact_gap = Vec::new();
+    for f in &families {
+        let members = crate::codegen_conformal::derive_family(f)?;
+        let generated = crate::codegen_conformal::outputs(&members)?;
+        out[0]
+            .contents
+            .push_str(&crate::codegen_conformal::derivation_section(f, &members));
+        if let Some(acc) = out
+            .iter_mut()
+            .find(|o| o.path.as_os_str() == "docs/codegen-accuracy.md")
+        {
+            acc.contents
+                .push_str(&crate::codegen_conformal::accuracy_section(
+                    &members, &generated,
+                ));
+        }
+        out.extend(generated);
+        exact_gap.push(crate::family::same_gap(&f.gap, crate::family::EXACT_GAP));
     }
-    out.extend(generated);
+    out.extend(crate::codegen_conformal::registry_outputs(
+        &families, &exact_gap,
+    )?);
     Ok(out)
 }
 
@@ -91,4 +111,47 @@ pub fn write_all(root: &Path, outputs: &[Output]) -> std::io::Result<Vec<PathBuf
         }
     }
     Ok(changed)
+}
+
+/// The generated folder: every file in it is written by [`outputs`].
+pub const GENERATED_DIR: &str = "solver/src/generated";
+
+/// Files under `root`'s [`GENERATED_DIR`] that [`outputs`] no longer writes
+/// (left by a family whose data file was removed or renamed), sorted.
+pub fn stale_files(root: &Path, outputs: &[Output]) -> std::io::Result<Vec<PathBuf>> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
+        for e in std::fs::read_dir(dir)? {
+            let p = e?.path();
+            if p.is_dir() {
+                walk(&p, out)?;
+            } else {
+                out.push(p);
+            }
+        }
+        Ok(())
+    }
+    let mut found = Vec::new();
+    walk(&root.join(GENERATED_DIR), &mut found)?;
+    let mut stale: Vec<PathBuf> = found
+        .into_iter()
+        .filter_map(|p| p.strip_prefix(root).ok().map(Path::to_path_buf))
+        .filter(|rel| !outputs.iter().any(|o| &o.path == rel))
+        .collect();
+    stale.sort();
+    Ok(stale)
+}
+
+/// Remove the [`stale_files`] under `root`, and the folders they leave
+/// empty; returns what was removed.
+pub fn remove_stale(root: &Path, outputs: &[Output]) -> std::io::Result<Vec<PathBuf>> {
+    let stale = stale_files(root, outputs)?;
+    for rel in &stale {
+        let p = root.join(rel);
+        std::fs::remove_file(&p)?;
+        if let Some(dir) = p.parent() {
+            // a folder is removed only once empty
+            let _ = std::fs::remove_dir(dir);
+        }
+    }
+    Ok(stale)
 }

@@ -7,7 +7,7 @@ use thinjkr_derive::model::{Derivation, ModelDerivation};
 use thinjkr_derive::{ansatz, claims};
 
 fn usage() -> ExitCode {
-    eprintln!("usage: thinjkr-derive check [--json] | generate | timings");
+    eprintln!("usage: thinjkr-derive check [--json] | generate [--root DIR] | timings");
     ExitCode::from(2)
 }
 
@@ -70,16 +70,32 @@ fn main() -> ExitCode {
         }
         Some("generate") => {
             let t = std::time::Instant::now();
-            let outputs = match thinjkr_derive::generate::outputs() {
+            // `--root DIR`: the workspace to read families from and write
+            // into (default: this one)
+            let root = match args.iter().position(|a| a == "--root") {
+                Some(i) => match args.get(i + 1) {
+                    Some(dir) => std::path::PathBuf::from(dir),
+                    None => return usage(),
+                },
+                None => thinjkr_derive::generate::workspace_root(),
+            };
+            let outputs = match thinjkr_derive::generate::outputs_in(&root) {
                 Ok(o) => o,
                 Err(e) => {
                     eprintln!("generation failed: {e}");
                     return ExitCode::FAILURE;
                 }
             };
-            let root = thinjkr_derive::generate::workspace_root();
-            match thinjkr_derive::generate::write_all(&root, &outputs) {
-                Ok(changed) => {
+            let written =
+                thinjkr_derive::generate::write_all(&root, &outputs).and_then(|changed| {
+                    thinjkr_derive::generate::remove_stale(&root, &outputs)
+                        .map(|gone| (changed, gone))
+                });
+            match written {
+                Ok((changed, gone)) => {
+                    for p in &gone {
+                        println!("{:>9} {}", "removed", p.display());
+                    }
                     for o in &outputs {
                         let mark = if changed.contains(&o.path) {
                             "updated"

@@ -16,6 +16,12 @@ pub fn ex(s: &str) -> Atom {
     symbolica::parse!(s)
 }
 
+/// Parse an expression written in symbolica's input syntax, or say why it
+/// does not parse (for expressions read from data files).
+pub fn try_ex(s: &str) -> Result<Atom, String> {
+    symbolica::try_parse!(s).map_err(|e| e.to_string())
+}
+
 /// A plain symbol as an atom.
 pub fn var(name: &str) -> Atom {
     Atom::var(symbolica::symbol!(name))

@@ -19,6 +19,7 @@ use rayon::prelude::*;
 use thinjkr::batch::{solve_all, Given, Item};
 use thinjkr::conformal::{self, Conformal, PullOffControl};
 use thinjkr::exact::branch::ExactControl;
+use thinjkr::registry::Choice;
 use thinjkr::{Contact, Error, ModelId};
 
 pyo3::create_exception!(
@@ -36,33 +37,9 @@ fn usage(message: String) -> PyErr {
     raw(Error::Usage(message))
 }
 
-/// A model chosen by name.
-#[derive(Clone, Copy)]
-enum Choice {
-    Approx(ModelId),
-    Conformal(Conformal),
-    Exact,
-}
-
+/// A model chosen by name, from the registry (`thinjkr::registry`).
 fn choice(name: &str) -> PyResult<Choice> {
-    if name == "exact" {
-        return Ok(Choice::Exact);
-    }
-    if let Some(c) = Conformal::parse(name) {
-        return c.map(Choice::Conformal).map_err(usage);
-    }
-    name.parse::<ModelId>().map(Choice::Approx).map_err(|_| {
-        let names: Vec<&str> = ModelId::ALL.iter().map(|m| m.name()).collect();
-        raw(Error::OutOfRange {
-            name: "model",
-            value: f64::NAN,
-            range: format!(
-                "one of {}, conformal:K with K = 1 ..= 8, exact (got '{name}')",
-                names.join(", ")
-            )
-            .into(),
-        })
-    })
+    thinjkr::registry::parse(name).map_err(usage)
 }
 
 fn json<T: serde::Serialize>(v: &T) -> String {
@@ -72,7 +49,7 @@ fn json<T: serde::Serialize>(v: &T) -> String {
 /// Every model the solver has: (name, one-line description).
 #[pyfunction]
 fn models() -> Vec<(String, String)> {
-    thinjkr::report::models()
+    thinjkr::registry::entries()
         .into_iter()
         .map(|m| (m.name, m.description))
         .collect()
@@ -81,7 +58,7 @@ fn models() -> Vec<(String, String)> {
 /// One state at `control` in {"delta", "force", "a"} = `value`, as JSON.
 fn solve_one(model: Choice, rho: f64, control: &str, value: f64) -> thinjkr::Result<String> {
     match model {
-        Choice::Approx(m) => {
+        Choice::Ellipse(m) => {
             let c = Contact::with_model(m, rho)?;
             let st = match control {
                 "delta" => c.at_displacement(value)?,
@@ -96,7 +73,7 @@ fn solve_one(model: Choice, rho: f64, control: &str, value: f64) -> thinjkr::Res
             };
             Ok(json(&st))
         }
-        Choice::Conformal(m) => {
+        Choice::Contour(m) => {
             let ctl = match control {
                 "delta" => conformal::Control::Delta(value),
                 "force" => conformal::Control::Force(value),
@@ -214,10 +191,10 @@ fn solve_many<'py>(
     type Row = Result<[f64; 6], (String, String)>;
     let err = |e: Error| (e.kind().to_string(), e.to_string());
     let rows: Vec<Row> = py.detach(|| match (m, control.as_str()) {
-        (Choice::Approx(id), "delta" | "force") => {
+        (Choice::Ellipse(id), "delta" | "force") => {
             rows_of(&id, &items_of(&rho, &value, &control), err)
         }
-        (Choice::Conformal(m), "delta" | "force") => {
+        (Choice::Contour(m), "delta" | "force") => {
             rows_of(&m, &items_of(&rho, &value, &control), err)
         }
         _ => rho
@@ -290,7 +267,7 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
     };
     py.detach(move || -> thinjkr::Result<String> {
         match m {
-            Choice::Approx(id) => {
+            Choice::Ellipse(id) => {
                 let c = Contact::with_model(id, rho)?;
                 let p = if load {
                     c.pull_off_load()?
@@ -303,7 +280,7 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
                     "basis_words": p.basis.describe(),
                 })))
             }
-            Choice::Conformal(k) => {
+            Choice::Contour(k) => {
                 let ctl = if load {
                     PullOffControl::Load
                 } else {
@@ -425,8 +402,8 @@ fn curve(
     delta_start: f64,
 ) -> PyResult<String> {
     let id = match choice(model)? {
-        Choice::Approx(id) => id,
-        Choice::Conformal(m) => {
+        Choice::Ellipse(id) => id,
+        Choice::Contour(m) => {
             return py
                 .detach(move || -> thinjkr::Result<String> {
                     let cv = m.curve(rho, points, delta_start)?;
@@ -491,7 +468,7 @@ fn _batch_api_seconds(
     control: &str,
     value: PyReadonlyArray1<'_, f64>,
 ) -> PyResult<f64> {
-    let Choice::Approx(id) = choice(model)? else {
+    let Choice::Ellipse(id) = choice(model)? else {
         return Err(usage(
             "the batch API serves the models of the ellipse".into(),
         ));

@@ -13,7 +13,7 @@ use thinjkr::conformal::{Conformal, Control, PullOffControl};
 fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("conformal rho=0.8");
     for k in [1, 2, 4, 6, 8] {
-        let m = Conformal::new(k).unwrap();
+        let m = Conformal::member("conformal", k).unwrap();
         let st = m.solve(0.8, Control::Force(1.0)).unwrap();
         let x =
             DVector::from_iterator(k + 1, st.coefficients.iter().copied().chain([st.delta_bar]));
@@ -32,7 +32,7 @@ fn benches(c: &mut Criterion) {
     }
     g.sample_size(10);
     for k in [4, 8] {
-        let m = Conformal::new(k).unwrap();
+        let m = Conformal::member("conformal", k).unwrap();
         g.bench_function(format!("K={k} pull-off"), |b| {
             b.iter(|| m.pull_off(black_box(0.8), PullOffControl::Load).unwrap())
         });

@@ -98,7 +98,7 @@ pub fn pull_off(
     };
     outln!(
         "  end point: {what} along the branch traced from a = {} (pseudo-arclength in (c, delta))",
-        thinjkr::conformal::TRACE_START_A
+        m.family().trace_start_a
     );
     for Extremum { a_bar, force_bar } in folds {
         outln!("  passed a fold in a at a = {a_bar:.4}, force = {force_bar:.6}");

@@ -236,7 +236,7 @@ impl Contact {
             return Err(Error::Unsupported {
                 name: "rho",
                 value: rho,
-                supported: "[1e-8, 1]: below 1e-8 the aspect ratio s is below 1e-5 and the branch is not followed",
+                supported: "[1e-8, 1]: below 1e-8 the aspect ratio s is below 1e-5 and the branch is not followed".into(),
             });
         }
         let mut c = Contact {

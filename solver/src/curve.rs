@@ -84,7 +84,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         return Err(Error::Unsupported {
             name: "rho",
             value: rho,
-            supported: "(0, 1 - 1e-9] or 1 for a curve: closer to 1 the branch turns within √(1 − rho) of the circle's bifurcation (a_bar ≈ 1.5874) more sharply than the trace resolves; solve, pull-off and zero-force answer there, and the curve at rho = 1 is the circle's",
+            supported: "(0, 1 - 1e-9] or 1 for a curve: closer to 1 the branch turns within √(1 − rho) of the circle's bifurcation (a_bar ≈ 1.5874) more sharply than the trace resolves; solve, pull-off and zero-force answer there, and the curve at rho = 1 is the circle's".into(),
         });
     }
     let start = contact.at_displacement(delta_start)?;

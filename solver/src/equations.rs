@@ -447,7 +447,7 @@ mod tests {
             let m = mismatch(model, &u, 0.8, hold);
             assert!(m < 1e-6, "max, {hold:?}: {m:e}");
         }
-        let c4 = Conformal::new(4).unwrap();
+        let c4 = Conformal::member("conformal", 4).unwrap();
         let st = c4.solve(0.8, Control::Force(1.0)).unwrap();
         let u = DVector::from_vec(st.coefficients.clone()).push(st.delta_bar);
         for hold in [Hold::Delta(1.0), Hold::Force(1.0), Hold::ABar(3.0)] {

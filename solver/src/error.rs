@@ -58,7 +58,7 @@ pub enum Error {
         /// The value given.
         value: f64,
         /// The supported range, in words.
-        supported: &'static str,
+        supported: std::borrow::Cow<'static, str>,
     },
     /// Reading input or writing output failed (a file, a pipe, a disk).
     #[error("input/output: {0}")]

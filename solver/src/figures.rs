@@ -133,7 +133,9 @@ fn conformal_arms() -> Result<Vec<Figure>> {
         GREY,
     )];
     for (k, color) in [(2, GREEN), (4, ORANGE), (8, BLUE)] {
-        let m = crate::conformal::Conformal::new(k)?;
+        let m = crate::conformal::exact_seed()
+            .ok_or_else(|| crate::Error::NoState("no contour family seeds the exact solver".into()))
+            .and_then(|seed| crate::conformal::Conformal::member(seed.family().name, k))?;
         let cv = m.curve(0.8, 800, 20.0)?;
         // contiguous pieces of one arm on one side of its first fold
         let mut label = m.name();
@@ -934,7 +936,8 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         // a member whose pull-off is not reached is left out of the line
         // and named in its label (docs/accuracy.md says why)
         let (mut pts, mut missing) = (Vec::new(), Vec::new());
-        for m in crate::conformal::members() {
+        let seed_family = crate::conformal::exact_seed().map(|m| m.family().name);
+        for m in crate::conformal::members().filter(|m| Some(m.family().name) == seed_family) {
             match m.pull_off(e.rho, crate::conformal::PullOffControl::Load) {
                 Ok((st, _)) => {
                     let err = (st.force_bar / e.force_bar - 1.0).abs().max(1e-12);

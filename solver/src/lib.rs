@@ -32,6 +32,7 @@ pub mod generated;
 pub mod limits;
 pub mod model;
 pub mod newton;
+pub mod registry;
 pub mod report;
 pub mod units;
 

@@ -3,37 +3,19 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
-use thinjkr::conformal::{self as family, Conformal};
+use thinjkr::conformal::{self as family};
 use thinjkr::curve::trace;
 use thinjkr::report::{AnyFold, AnyState, Document, ErrorBody};
 use thinjkr::units::Cylinders;
 use thinjkr::{Contact, ModelId, PullOff, State};
 
 fn parse_model(s: &str) -> Result<ModelChoice, String> {
-    if s == "exact" {
-        Ok(ModelChoice::Exact)
-    } else if let Some(c) = Conformal::parse(s) {
-        c.map(ModelChoice::Conformal)
-    } else {
-        s.parse().map(ModelChoice::Approx).map_err(|_: String| {
-            let names: Vec<&str> = ModelId::ALL.iter().map(|m| m.name()).collect();
-            format!(
-                "unknown model '{}' (allowed: {}, conformal:K with K = 1 ..= 8, exact)",
-                thinjkr::batch::quote_start(s).trim_matches('"'),
-                names.join(", ")
-            )
-        })
-    }
+    thinjkr::registry::parse(s)
 }
 
-/// A model of the ellipse, a member of the conformal family, or the exact
-/// solution of (2)-(3).
-#[derive(Clone, Copy, Debug)]
-enum ModelChoice {
-    Approx(ModelId),
-    Conformal(Conformal),
-    Exact,
-}
+/// A model of the ellipse, a member of a contour family, or the exact
+/// solution of (2)-(3) (`thinjkr::registry`).
+use thinjkr::registry::Choice as ModelChoice;
 
 #[macro_use]
 mod output;
@@ -64,8 +46,7 @@ enum Command {
         /// Radii ratio ρ = R2/R1 in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
-        #[arg(long, default_value = "max", value_parser = parse_model)]
+        #[arg(long, default_value = "max", value_parser = parse_model, help = thinjkr::registry::help(true, ""))]
         model: ModelChoice,
         /// Approach δ̄.
         #[arg(long, allow_hyphen_values = true, group = "control")]
@@ -89,8 +70,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
-        #[arg(long, default_value = "max", value_parser = parse_model)]
+        #[arg(long, default_value = "max", value_parser = parse_model, help = thinjkr::registry::help(true, ""))]
         model: ModelChoice,
         /// Control.
         #[arg(long, value_enum, default_value_t = Control::Load)]
@@ -131,8 +111,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8, a contour family converging to the exact solution), or exact (the free-boundary problem itself); `thinjkr models` lists them.
-        #[arg(long, default_value = "max", value_parser = parse_model)]
+        #[arg(long, default_value = "max", value_parser = parse_model, help = thinjkr::registry::help(true, ""))]
         model: ModelChoice,
         /// Print JSON.
         #[arg(long)]
@@ -146,8 +125,7 @@ enum Command {
         /// Radii ratio ρ in (0, 1].
         #[arg(long, allow_hyphen_values = true)]
         rho: f64,
-        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K (K = 1 ..= 8); exact gives states, not curves (use exact solve).
-        #[arg(long, default_value = "max", value_parser = parse_model)]
+        #[arg(long, default_value = "max", value_parser = parse_model, help = thinjkr::registry::help(false, "; exact gives states, not curves (use exact solve)"))]
         model: ModelChoice,
         /// Number of points, 2 ..= 100000.
         #[arg(long, default_value_t = 100)]
@@ -161,8 +139,7 @@ enum Command {
         after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error. A line that cannot be read or solved gets an empty state and the error (naming the line) in the last column; the other lines are still written. A progress count is shown on stderr when it is a terminal."
     )]
     Batch {
-        /// Model: max (the paper's, default), apexes, energy, apex45, or conformal:K (K = 1 ..= 8; its bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty).
-        #[arg(long, default_value = "max", value_parser = parse_model)]
+        #[arg(long, default_value = "max", value_parser = parse_model, help = thinjkr::registry::help(false, " (a contour family's bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty)"))]
         model: ModelChoice,
     },
     /// The models the solver has, one line each.
@@ -216,8 +193,7 @@ enum Command {
         /// Approach [m].
         #[arg(long, allow_hyphen_values = true, group = "physical_control")]
         delta: Option<f64>,
-        /// Model: max (the paper's, default), apexes, energy, apex45, conformal:K, or exact; `thinjkr models` lists them.
-        #[arg(long, default_value = "max", value_parser = parse_model)]
+        #[arg(long, default_value = "max", value_parser = parse_model, help = thinjkr::registry::help(true, ""))]
         model: ModelChoice,
         /// Print JSON.
         #[arg(long)]
@@ -447,7 +423,7 @@ fn solve_command(
             };
             return exact_cli::state(rho, control, &exact_cli::Discretisation::default(), j);
         }
-        ModelChoice::Conformal(m) => {
+        ModelChoice::Contour(m) => {
             let control = match (delta, force, a) {
                 (Some(d), _, _) => family::Control::Delta(d),
                 (_, Some(f), _) => family::Control::Force(f),
@@ -460,7 +436,7 @@ fn solve_command(
             };
             return conformal_cli::solve(&m, rho, control, j);
         }
-        ModelChoice::Approx(m) => m,
+        ModelChoice::Ellipse(m) => m,
     };
     let c = Contact::with_model(model, rho)?;
     match (delta, force, a) {
@@ -515,14 +491,14 @@ fn pull_off_command(
                 why: "only the load-controlled pull-off of the exact family is located",
             })
         }
-        ModelChoice::Conformal(m) => {
+        ModelChoice::Contour(m) => {
             let control = match control {
                 Control::Load => family::PullOffControl::Load,
                 Control::Displacement => family::PullOffControl::Displacement,
             };
             return conformal_cli::pull_off(&m, rho, control, j);
         }
-        ModelChoice::Approx(m) => m,
+        ModelChoice::Ellipse(m) => m,
     };
     let c = Contact::with_model(model, rho)?;
     let p = match control {
@@ -584,11 +560,11 @@ fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
             .filter_map(|(_, p)| p.as_ref().ok().copied())
             .collect();
         let rows: Vec<thinjkr::Result<Row>> = match &model {
-            ModelChoice::Approx(id) => solve_all(id, &items)
+            ModelChoice::Ellipse(id) => solve_all(id, &items)
                 .iter()
                 .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
                 .collect(),
-            ModelChoice::Conformal(m) => solve_all(m, &items)
+            ModelChoice::Contour(m) => solve_all(m, &items)
                 .iter()
                 .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
                 .collect(),
@@ -734,8 +710,8 @@ fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> thinjkr::Result<
             &exact_cli::Discretisation::default(),
             j,
         ),
-        ModelChoice::Conformal(m) => conformal_cli::zero_force(&m, rho, j),
-        ModelChoice::Approx(model) => emit(
+        ModelChoice::Contour(m) => conformal_cli::zero_force(&m, rho, j),
+        ModelChoice::Ellipse(model) => emit(
             "zero force",
             &Contact::with_model(model, rho)?.zero_force()?,
             j,
@@ -746,6 +722,9 @@ fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> thinjkr::Result<
 /// `thinjkr models`.
 fn models_command(j: bool) -> thinjkr::Result<()> {
     let models = thinjkr::report::models();
+    for p in family::load_problems() {
+        eprintln!("thinjkr: warning: {p}");
+    }
     if j {
         outln!("{}", Document::Models { models }.to_json());
     } else {
@@ -837,7 +816,7 @@ fn physical(
         .map(|d| check_range("delta", d, true, "finite").map(|d| d / sc.approach))
         .transpose()?;
     let state = match model {
-        ModelChoice::Approx(m) => {
+        ModelChoice::Ellipse(m) => {
             let c = Contact::with_model(m, sc.rho)?;
             AnyState::Ellipse(match (force, delta) {
                 (Some(f), _) => c.at_load(f)?,
@@ -845,7 +824,7 @@ fn physical(
                 _ => c.pull_off_load()?.state,
             })
         }
-        ModelChoice::Conformal(m) => AnyState::Conformal(match (force, delta) {
+        ModelChoice::Contour(m) => AnyState::Conformal(match (force, delta) {
             (Some(f), _) => m.solve(sc.rho, family::Control::Force(f))?,
             (_, Some(d)) => m.solve(sc.rho, family::Control::Delta(d))?,
             _ => m.pull_off(sc.rho, family::PullOffControl::Load)?.0,
@@ -990,7 +969,7 @@ fn curve_command(
                 why: "use `thinjkr exact solve` at the loads wanted",
             })
         }
-        ModelChoice::Conformal(m) => {
+        ModelChoice::Contour(m) => {
             let cv = m.curve(rho, points, DELTA_START)?;
             rows = cv
                 .states
@@ -1014,7 +993,7 @@ fn curve_command(
             folds = cv.folds.into_iter().map(AnyFold::from).collect();
             end = Some(cv.end);
         }
-        ModelChoice::Approx(m) => {
+        ModelChoice::Ellipse(m) => {
             let c = Contact::with_model(m, rho)?;
             let cv = trace(&c, points, DELTA_START)?;
             rows = cv

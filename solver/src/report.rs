@@ -170,29 +170,23 @@ pub struct ModelEntry {
     pub name: String,
     /// What it is, in a line.
     pub description: String,
+    /// The contour family it is a member of (from the registry), if any.
+    pub family: Option<String>,
+    /// How many unknowns its equations have (none for `exact`, whose
+    /// contour series is sized per solve).
+    pub unknowns: Option<usize>,
+    /// The smallest ρ its solves accept (the largest is 1).
+    pub rho_min: f64,
+    /// The controls a state can be held at: `delta`, `force`, `a`.
+    pub controls: Vec<String>,
 }
 
 pub use crate::units::Si;
 
-/// Every model the solver has, in the order `thinjkr models` lists them:
-/// the models of the ellipse, the members of `conformal:K`, and `exact`.
+/// Every model the solver has, in the order `thinjkr models` lists them
+/// (`crate::registry::entries`).
 pub fn models() -> Vec<ModelEntry> {
-    let mut out: Vec<ModelEntry> = crate::ModelId::ALL
-        .iter()
-        .map(|m| ModelEntry {
-            name: m.name().to_string(),
-            description: m.model().info().title.to_string(),
-        })
-        .collect();
-    out.extend(crate::conformal::members().map(|c| ModelEntry {
-        name: c.name(),
-        description: crate::conformal::title().to_string(),
-    }));
-    out.push(ModelEntry {
-        name: "exact".into(),
-        description: "the free-boundary problem (2)-(3) itself (boundary integral equation on a contour series)".into(),
-    });
-    out
+    crate::registry::entries()
 }
 
 /// Everything `--json` prints: exactly one of these objects.

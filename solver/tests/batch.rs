@@ -173,7 +173,7 @@ fn conformal_batch_rows_are_its_states() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8(out.stdout).unwrap();
-    let m = thinjkr::conformal::Conformal::new(4).unwrap();
+    let m = thinjkr::conformal::Conformal::member("conformal", 4).unwrap();
     for (row, (rho, control)) in text.lines().skip(1).zip([
         (0.8, thinjkr::conformal::Control::Delta(2.0)),
         (0.6, thinjkr::conformal::Control::Force(1.0)),

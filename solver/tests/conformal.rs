@@ -12,7 +12,7 @@ use thinjkr::Error;
 #[test]
 fn every_member_pulls_off_at_minus_three_halves_pi_on_the_circle() {
     for k in [1, 2, 3, 5, 8] {
-        let (st, _) = Conformal::new(k)
+        let (st, _) = Conformal::member("conformal", k)
             .unwrap()
             .pull_off(1.0, PullOffControl::Load)
             .unwrap();
@@ -35,7 +35,7 @@ fn every_member_pulls_off_at_minus_three_halves_pi_on_the_circle() {
 /// 1e-5 in F̄, zero force and F̄ = 10 to 1e-6 in ā.
 #[test]
 fn conformal_8_agrees_with_the_exact_solution_at_rho_0_8() {
-    let m = Conformal::new(8).unwrap();
+    let m = Conformal::member("conformal", 8).unwrap();
     let (exact_po, _) = exact::pull_off_resolved(0.8).unwrap();
     let (po, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
     let rel = |x: f64, y: f64| ((x - y) / y).abs();
@@ -73,7 +73,10 @@ fn the_family_converges_to_the_exact_zero_force_state() {
     let e = exact::at_resolved(0.8, ExactControl::Force(0.0)).unwrap();
     let mut last = (f64::INFINITY, f64::INFINITY);
     for k in [2, 4, 6, 8] {
-        let st = Conformal::new(k).unwrap().zero_force(0.8).unwrap();
+        let st = Conformal::member("conformal", k)
+            .unwrap()
+            .zero_force(0.8)
+            .unwrap();
         let err = ((st.a_bar - e.a_bar) / e.a_bar).abs();
         assert!(
             err < last.0 / 5.0,
@@ -95,7 +98,7 @@ fn the_family_converges_to_the_exact_zero_force_state() {
 /// the highest conformal:8 carries).
 #[test]
 fn unstable_modes_agree_with_the_exact_solver() {
-    let m = Conformal::new(8).unwrap();
+    let m = Conformal::member("conformal", 8).unwrap();
     let exact_modes = |st: &exact::ExactState| -> Vec<u32> {
         let mut v: Vec<u32> = st
             .stability
@@ -125,7 +128,7 @@ fn unstable_modes_agree_with_the_exact_solver() {
 /// A map that folds over itself is not a contact.
 #[test]
 fn a_map_that_is_not_one_to_one_is_rejected() {
-    let m = Conformal::new(2).unwrap();
+    let m = Conformal::member("conformal", 2).unwrap();
     // w′(ζ) = 1 + 1.5ζ² vanishes at |ζ|² = 2/3 inside the disk
     let err = m.univalence(&[1.0, 0.5]).unwrap_err();
     assert!(
@@ -138,9 +141,15 @@ fn a_map_that_is_not_one_to_one_is_rejected() {
 /// Bad input names the parameter and its range.
 #[test]
 fn bad_input_is_a_typed_error() {
-    assert!(matches!(Conformal::new(0), Err(Error::OutOfRange { .. })));
-    assert!(matches!(Conformal::new(9), Err(Error::OutOfRange { .. })));
-    let m = Conformal::new(3).unwrap();
+    assert!(matches!(
+        Conformal::member("conformal", 0),
+        Err(Error::OutOfRange { .. })
+    ));
+    assert!(matches!(
+        Conformal::member("conformal", 9),
+        Err(Error::OutOfRange { .. })
+    ));
+    let m = Conformal::member("conformal", 3).unwrap();
     for rho in [f64::NAN, 0.0, -1.0, 1.5] {
         assert!(matches!(
             m.solve(rho, Control::Delta(1.0)),
@@ -162,7 +171,7 @@ fn bad_input_is_a_typed_error() {
 #[test]
 fn the_curve_holds_the_pull_off_and_at_rho_one_the_circle() {
     use thinjkr::curve::FoldKind;
-    let m = Conformal::new(8).unwrap();
+    let m = Conformal::member("conformal", 8).unwrap();
     let (po, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
     let cv = m.curve(0.8, 60, 20.0).unwrap();
     assert_eq!(cv.states.len(), 60);
@@ -187,7 +196,10 @@ fn the_curve_holds_the_pull_off_and_at_rho_one_the_circle() {
         assert!(st.a_bar > 0.0 && st.force_bar.is_finite());
     }
 
-    let cv = Conformal::new(4).unwrap().curve(1.0, 40, 20.0).unwrap();
+    let cv = Conformal::member("conformal", 4)
+        .unwrap()
+        .curve(1.0, 40, 20.0)
+        .unwrap();
     assert!(cv.arm.iter().all(|&a| a == 0));
     for st in &cv.states {
         let a = st.a_bar;

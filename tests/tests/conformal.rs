@@ -1,4 +1,5 @@
-//! The generated tables of `conformal:K` against the derivation: Π̄, its
+//! The generated tables of every contour family in the registry against
+//! its derivation from its data file: Π̄, its
 //! gradient (the residuals and F̄) and its Hessian (their Jacobian) as the
 //! solver evaluates them in f64, against 256-bit evaluations of the symbolic
 //! derivatives, at points across the family's domain (ρ from 0.3 to 1,
@@ -8,8 +9,39 @@
 //! K = 1 against the ellipse energy model at s = 1.
 
 use thinjkr::conformal::poly::{evaluate, Decoded};
-use thinjkr::generated::conformal::MEMBERS;
-use thinjkr_derive::conformal::{conformal, derive, ConformalDerivation};
+use thinjkr::conformal::Tables;
+use thinjkr_derive::conformal::{derive, ConformalDerivation};
+use thinjkr_derive::family::{self, Family};
+
+/// Every family's data file, beside its generated tables from the
+/// registry (the freshness test holds the two to each other).
+fn families() -> Vec<(Family, &'static [Tables])> {
+    let files = family::read_all(&thinjkr_derive::generate::workspace_root()).unwrap();
+    let registry = thinjkr::conformal::families();
+    assert_eq!(
+        files.len(),
+        registry.len(),
+        "one registry entry per family file"
+    );
+    files
+        .into_iter()
+        .map(|f| {
+            let r = registry
+                .iter()
+                .find(|r| r.name == f.name)
+                .unwrap_or_else(|| panic!("{} is not in the registry: run generate", f.name));
+            (f, r.members)
+        })
+        .collect()
+}
+
+/// The built-in family `conformal`'s data and tables.
+fn builtin() -> (Family, &'static [Tables]) {
+    families()
+        .into_iter()
+        .find(|(f, _)| f.name == "conformal")
+        .expect("the built-in family")
+}
 
 /// Sample points (c scaled from a shape, δ̄, ρ).
 fn points(k: usize) -> Vec<(Vec<f64>, f64, f64)> {
@@ -38,34 +70,34 @@ fn points(k: usize) -> Vec<(Vec<f64>, f64, f64)> {
 #[test]
 fn generated_tables_match_the_derivation_to_round_off() {
     let mut worst_all = 0.0f64;
-    for k in 1..=8 {
-        let d = derive(&conformal(k)).expect("derives");
-        let table = Decoded::new(
-            &MEMBERS[k - 1].potential[..MEMBERS[k - 1].potential_rows],
-            k,
-        );
-        let mut worst = 0.0f64;
-        for (c, dbar, rho) in points(k) {
-            let mu = 1.0 / rho;
-            let got = evaluate(&table, &c, dbar, mu, 2);
-            let mut check = |got: f64, unknowns: &[usize]| {
-                let p = d.potential_derivative(unknowns);
-                let (want, mag) = d.evaluate_high_precision(&p, &c, dbar, mu, true).unwrap();
-                let err = (got - want).abs() / want.abs().max(1e-3 * mag).max(1e-300);
-                worst = worst.max(err);
-                assert!(err < 1e-12, "K = {k}, {unknowns:?} at c = {c:?}, dbar = {dbar}, rho = {rho}: {got} vs {want} (error {err:.1e})");
-            };
-            check(got.value, &[]);
-            for i in 0..=k {
-                check(got.grad[i], &[i]);
-                for j in i..=k {
-                    check(got.hess[i][j], &[i, j]);
-                    assert_eq!(got.hess[i][j], got.hess[j][i]);
+    for (f, members) in families() {
+        for k in 1..=f.largest() {
+            let d = derive(&f.member(k)).expect("derives");
+            let t = members.iter().find(|t| t.terms == k).expect("generated");
+            let table = Decoded::new(&t.potential[..t.potential_rows], k);
+            let mut worst = 0.0f64;
+            for (c, dbar, rho) in points(k) {
+                let mu = 1.0 / rho;
+                let got = evaluate(&table, &c, dbar, mu, 2);
+                let mut check = |got: f64, unknowns: &[usize]| {
+                    let p = d.potential_derivative(unknowns);
+                    let (want, mag) = d.evaluate_high_precision(&p, &c, dbar, mu, true).unwrap();
+                    let err = (got - want).abs() / want.abs().max(1e-3 * mag).max(1e-300);
+                    worst = worst.max(err);
+                    assert!(err < 1e-12, "K = {k}, {unknowns:?} at c = {c:?}, dbar = {dbar}, rho = {rho}: {got} vs {want} (error {err:.1e})");
+                };
+                check(got.value, &[]);
+                for i in 0..=k {
+                    check(got.grad[i], &[i]);
+                    for j in i..=k {
+                        check(got.hess[i][j], &[i, j]);
+                        assert_eq!(got.hess[i][j], got.hess[j][i]);
+                    }
                 }
             }
+            eprintln!("{}:{k}: worst relative error {worst:.1e}", f.name);
+            worst_all = worst_all.max(worst);
         }
-        eprintln!("conformal:{k}: worst relative error {worst:.1e}");
-        worst_all = worst_all.max(worst);
     }
     assert!(worst_all > 0.0, "the comparison compared something");
 }
@@ -77,18 +109,20 @@ fn generated_tables_match_the_derivation_to_round_off() {
 #[test]
 fn potential_equals_a_quadrature_of_its_definition() {
     use std::f64::consts::PI;
+    // the quadrature's P and φ̄ are the built-in family's, written out
+    let (f, members) = builtin();
+    assert_eq!(f.particular, "X^4/24 + mu*Y^4/24 - dbar*(X^2 + Y^2)/4");
+    assert_eq!(f.gap, "X^2/2 + mu*Y^2/2");
     for k in [1, 2, 3, 5] {
-        let table = Decoded::new(
-            &MEMBERS[k - 1].potential[..MEMBERS[k - 1].potential_rows],
-            k,
-        );
+        let member = members.iter().find(|t| t.terms == k).expect("generated");
+        let table = Decoded::new(&member.potential[..member.potential_rows], k);
         for (c, dbar, rho) in points(k) {
             let mu = 1.0 / rho;
             let w = |r: f64, t: f64| -> ((f64, f64), f64) {
                 // w(ζ) and |w′(ζ)|² at ζ = r e^{it}
                 let (mut x, mut y, mut dx, mut dy) = (0.0, 0.0, 0.0, 0.0);
                 for (j, &cj) in c.iter().enumerate() {
-                    let n = (2 * j + 1) as f64;
+                    let n = member.powers[j] as f64;
                     x += cj * r.powf(n) * (n * t).cos();
                     y += cj * r.powf(n) * (n * t).sin();
                     dx += cj * n * r.powf(n - 1.0) * ((n - 1.0) * t).cos();
@@ -109,7 +143,7 @@ fn potential_equals_a_quadrature_of_its_definition() {
                     particular(x, y)
                 })
                 .collect();
-            let modes = 4 * (2 * k - 1) + 1;
+            let modes = 4 * member.powers[k - 1] as usize + 1;
             let fourier: Vec<(f64, f64)> = (0..=modes)
                 .map(|n| {
                     let (mut a, mut b) = (0.0, 0.0);
@@ -161,7 +195,7 @@ fn potential_equals_a_quadrature_of_its_definition() {
 fn conformal_1_is_the_energy_model_on_the_circle() {
     use thinjkr_derive::sym::{eval_prec, ex, subs_all};
     let e = thinjkr_derive::energy::derive(&thinjkr_derive::ansatz::ENERGY).unwrap();
-    let d: ConformalDerivation = derive(&conformal(1)).unwrap();
+    let d: ConformalDerivation = derive(&builtin().0.member(1)).unwrap();
     for (a, dbar, rho) in [(2.5, 1.25, 0.8), (0.75, -2.0, 0.5), (4.0, 3.0, 1.0)] {
         let ellipse = eval_prec(
             &subs_all(

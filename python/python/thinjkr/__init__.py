@@ -10,7 +10,10 @@ Models (``models()`` lists them): ``max`` (the paper's closure (13) with
 collocation (10), the default), ``apexes``, ``energy`` (Ritz, with
 stability), ``apex45``, the contour family ``conformal:K`` (K = 1 … 8), and
 ``exact`` (the free-boundary problem (2)–(3) itself, also under
-``thinjkr.exact``).
+``thinjkr.exact``). A contour family of one's own (a data file under
+``derive/families/`` and ``generate``, docs/guide.md) joins them without a
+rebuild when the environment variable ``THINJKR_FAMILIES`` names the
+generated folder before the first call.
 
 Every call releases the GIL; array calls run on all cores.
 """
@@ -75,7 +78,9 @@ def _call(f, *args):
 
 
 def models() -> List[Tuple[str, str]]:
-    """Every model the solver has, with a one-line description each."""
+    """Every model the solver has, with a one-line description each: the
+    models of the ellipse, every member of every contour family in the
+    registry (also those loaded from ``THINJKR_FAMILIES``), and ``exact``."""
     return [(n, d) for n, d in _thinjkr.models()]
 
 

@@ -6,7 +6,7 @@
 //! here are dynamic (at most 9 × 9).
 //!
 //! Everything specific to a member comes from its generated tables
-//! (`crate::generated::conformal`): Π̄ with its derivatives through
+//! (`crate::generated::<family>`, listed in `crate::generated::registry`): Π̄ with its derivatives through
 //! [`poly`], the boundary slope, and the map's powers. Solves:
 //! - a state at given δ̄, F̄ or ā: Newton on (∇_c Π̄ = 0, control), started
 //!   from the circle at ρ = 1 (where every member has the circle's state)
@@ -14,7 +14,7 @@
 //!   in ρ first, bracketed by the states at fixed ā, which reach the pieces
 //!   of the family beyond it (`bracketed_by_sizes`);
 //! - pull-off under load or displacement control: pseudo-arclength
-//!   continuation of the branch in (c, δ̄) from ā = [`TRACE_START_A`] towards
+//!   continuation of the branch in (c, δ̄) from ā = [`Family::trace_start_a`] towards
 //!   smaller contacts, to the first extremum of F̄ (load) or δ̄
 //!   (displacement), located by Illinois on the tangent's component;
 //! - zero force: the state at F̄ = 0.
@@ -22,10 +22,11 @@
 //! Every state is checked to be a contact: the map must be one-to-one on
 //! the closed disk ([`Conformal::univalence`]).
 //!
-//! Owns: [`Tables`], [`Conformal`], [`ConformalState`], the family's solves.
-//! May use: `generated::conformal`, `error`, `equations`, `newton`,
-//! nalgebra.
+//! Owns: [`Family`], [`Tables`], [`Conformal`], [`ConformalState`], the
+//! families' solves. May use: `generated::registry` (the families and their
+//! tables), `error`, `equations`, `newton`, nalgebra.
 
+pub mod load;
 pub mod poly;
 mod trace;
 
@@ -36,7 +37,7 @@ use serde::Serialize;
 
 pub use trace::{Curve, CurveFold, Extremum, PullOffControl};
 
-/// The generated tables of one member (`crate::generated::conformal::MEMBERS`).
+/// The generated tables of one member (`crate::generated::<family>::MEMBERS`).
 #[derive(Debug)]
 pub struct Tables {
     /// K.
@@ -59,21 +60,91 @@ pub struct Tables {
     pub second: Option<fn(&[f64], f64, f64) -> poly::Second>,
 }
 
-/// ā at which the pull-off trace starts, as for the exact solution
-/// (`exact::branch`): between the circle's neutral points ā³ = 12 (mode 4,
-/// where the pull-off sits at ρ = 1) and ā³ = 20 (mode 6), so that the trace
-/// follows the near-elliptic arm that carries the pull-off. Each mode's
-/// imperfect bifurcation splits the family for ρ < 1 (docs/exact.md), and
-/// an arm traced from a larger contact folds back before reaching it.
-pub const TRACE_START_A: f64 = 2.6;
+/// A contour family as the registry lists it
+/// (`crate::generated::registry::CONTOUR_FAMILIES`, written by `generate`
+/// from the family's data file `derive/families/<name>.toml`).
+#[derive(Debug)]
+pub struct Family {
+    /// The family's name; members are `name:K`.
+    pub name: &'static str,
+    /// Its kind (`conformal`: a polynomial map of the unit disk).
+    pub kind: &'static str,
+    /// One line.
+    pub title: &'static str,
+    /// The scaled gap φ̄ (symbolica syntax in X, Y, mu = 1/ρ).
+    pub gap: &'static str,
+    /// The particular solution of (2) the pressure is built on.
+    pub particular: &'static str,
+    /// The data file it was generated from.
+    pub source: &'static str,
+    /// The smallest ρ its solves accept.
+    pub rho_min: f64,
+    /// ā at which the pull-off trace starts: between the neutral points of
+    /// the circle's modes 4 and 6 of its gap, so that the trace follows the
+    /// near-elliptic arm that carries the pull-off. Each mode's imperfect
+    /// bifurcation splits the family for ρ < 1 (docs/exact.md), and an arm
+    /// traced from a larger contact folds back before reaching it.
+    pub trace_start_a: f64,
+    /// Whether its gap is the one the exact solver solves (then its
+    /// members are measured against the exact solution).
+    pub on_exact_gap: bool,
+    /// Whether its largest member gives the exact solver its starting
+    /// states.
+    pub seeds_exact: bool,
+    /// Its members, by K.
+    pub members: &'static [Tables],
+}
 
-/// Where the family's solves stop trusting the branch: ρ below this is not
-/// supported (the family was measured down to 0.5).
-pub const RHO_MIN: f64 = 0.3;
+/// The families: the built-in ones, then those loaded at run time.
+struct Registry {
+    families: Vec<&'static Family>,
+    problems: Vec<String>,
+}
 
-/// One member of the family, chosen at run time by K.
+static REGISTRY: std::sync::OnceLock<Registry> = std::sync::OnceLock::new();
+
+fn registry() -> &'static Registry {
+    REGISTRY.get_or_init(|| {
+        let compiled = &crate::generated::registry::CONTOUR_FAMILIES;
+        let mut families: Vec<&'static Family> = compiled.iter().collect();
+        let mut problems = Vec::new();
+        if let Some(dir) = std::env::var_os(load::ENV).filter(|d| !d.is_empty()) {
+            let (loaded, why) = load::load(std::path::Path::new(&dir), compiled);
+            families.extend(loaded);
+            problems = why;
+        }
+        Registry { families, problems }
+    })
+}
+
+/// Every contour family: those in the generated registry this build was
+/// compiled with, in its order, then those loaded at run time from the
+/// folder named by `THINJKR_FAMILIES` ([`load`]).
+pub fn families() -> &'static [&'static Family] {
+    &registry().families
+}
+
+/// Why a family named by `THINJKR_FAMILIES` was left out, one line each
+/// (empty when every family loaded, or the variable is not set).
+pub fn load_problems() -> &'static [String] {
+    &registry().problems
+}
+
+/// The largest member of the family that seeds the exact solver (on the
+/// exact solver's gap), if the registry has one.
+pub fn exact_seed() -> Option<Conformal> {
+    let (i, f) = families()
+        .iter()
+        .enumerate()
+        .find(|(_, f)| f.seeds_exact && f.on_exact_gap)?;
+    let largest = f.members.iter().map(|t| t.terms).max()?;
+    Conformal::in_family(i, largest).ok()
+}
+
+/// One member of a family, chosen at run time by its name `family:K`.
 #[derive(Clone, Copy, Debug)]
 pub struct Conformal {
+    family: &'static Family,
     tables: &'static Tables,
     decoded: &'static Decoded,
 }
@@ -90,8 +161,10 @@ struct Decoded {
     slope_circle_at_zero: poly::Decoded,
 }
 
-static DECODED: [std::sync::OnceLock<Decoded>; poly::MAX_UNKNOWNS - 1] =
-    [const { std::sync::OnceLock::new() }; poly::MAX_UNKNOWNS - 1];
+/// Every member's decoded tables, by family (in registry order) and K.
+type DecodedSlots = Vec<[std::sync::OnceLock<Decoded>; poly::MAX_UNKNOWNS - 1]>;
+
+static DECODED: std::sync::OnceLock<DecodedSlots> = std::sync::OnceLock::new();
 
 /// A state of a `conformal:K` model.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -135,16 +208,14 @@ pub enum Control {
     Size(f64),
 }
 
-/// Every generated member, by K.
+/// Every generated member of every family, by family (in registry order)
+/// and K.
 pub fn members() -> impl Iterator<Item = Conformal> {
-    crate::generated::conformal::MEMBERS
-        .iter()
-        .filter_map(|t| Conformal::new(t.terms).ok())
-}
-
-/// The family in one line.
-pub fn title() -> &'static str {
-    crate::generated::conformal::TITLE
+    families().iter().enumerate().flat_map(|(i, f)| {
+        f.members
+            .iter()
+            .filter_map(move |t| Conformal::in_family(i, t.terms).ok())
+    })
 }
 
 impl std::fmt::Display for Control {
@@ -158,61 +229,101 @@ impl std::fmt::Display for Control {
 }
 
 impl Conformal {
-    /// The member with K map coefficients, if it was generated.
-    pub fn new(terms: usize) -> Result<Conformal> {
-        crate::generated::conformal::MEMBERS
-            .iter()
-            .find(|t| t.terms == terms && (1..poly::MAX_UNKNOWNS).contains(&t.terms))
-            .map(|tables| Conformal {
-                tables,
-                decoded: DECODED[tables.terms - 1].get_or_init(|| {
-                    let potential = poly::Decoded::new(
-                        &tables.potential[..tables.potential_rows],
-                        tables.terms,
-                    );
-                    let slope: Vec<_> = tables
-                        .slope_rows
-                        .iter()
-                        .filter_map(|&(n, len)| {
-                            let (_, rows) = tables.slope.iter().find(|(m, _)| *m == n)?;
-                            Some((n, poly::Decoded::new(&rows[..len], tables.terms)))
-                        })
-                        .collect();
-                    // Σ_n g_n = ∂p̄/∂r at θ = 0: every mode's rows in one
-                    // table
-                    let at_zero = poly::Decoded::sum(
-                        tables.slope_rows.iter().filter_map(|&(n, len)| {
-                            let (_, rows) = tables.slope.iter().find(|(m, _)| *m == n)?;
-                            Some(&rows[..len])
-                        }),
-                        tables.terms,
-                    );
-                    Decoded {
-                        potential_circle: potential.on_circle(),
-                        slope_circle_at_zero: at_zero.on_circle(),
-                        potential,
-                        slope,
-                    }
-                }),
-            })
-            .ok_or(Error::OutOfRange {
-                name: "K of conformal:K",
-                value: terms as f64,
-                range: "1 ..= 8".into(),
-            })
+    /// Member K of the family named `family`, if it was generated.
+    pub fn member(family: &str, terms: usize) -> Result<Conformal> {
+        match families().iter().position(|f| f.name == family) {
+            Some(i) => Conformal::in_family(i, terms),
+            None => Err(Error::Usage(format!(
+                "no contour family {:?} (the registry has: {})",
+                short_text(family),
+                families()
+                    .iter()
+                    .map(|f| f.name)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ))),
+        }
     }
 
-    /// Parse `conformal:K`.
+    /// Member K of the registry's family number `i`.
+    fn in_family(i: usize, terms: usize) -> Result<Conformal> {
+        let family: &'static Family = families()
+            .get(i)
+            .copied()
+            .ok_or_else(|| Error::Usage(format!("no contour family number {i} in the registry")))?;
+        let tables = family
+            .members
+            .iter()
+            .find(|t| t.terms == terms && (1..poly::MAX_UNKNOWNS).contains(&t.terms))
+            .ok_or_else(|| Error::OutOfRange {
+                name: "K",
+                value: terms as f64,
+                range: member_range(family).into(),
+            })?;
+        let slots = DECODED.get_or_init(|| {
+            families()
+                .iter()
+                .map(|_| [const { std::sync::OnceLock::new() }; poly::MAX_UNKNOWNS - 1])
+                .collect()
+        });
+        let decoded = slots[i][tables.terms - 1].get_or_init(|| {
+            let potential =
+                poly::Decoded::new(&tables.potential[..tables.potential_rows], tables.terms);
+            let slope: Vec<_> = tables
+                .slope_rows
+                .iter()
+                .filter_map(|&(n, len)| {
+                    let (_, rows) = tables.slope.iter().find(|(m, _)| *m == n)?;
+                    Some((n, poly::Decoded::new(&rows[..len], tables.terms)))
+                })
+                .collect();
+            // Σ_n g_n = ∂p̄/∂r at θ = 0: every mode's rows in one table
+            let at_zero = poly::Decoded::sum(
+                tables.slope_rows.iter().filter_map(|&(n, len)| {
+                    let (_, rows) = tables.slope.iter().find(|(m, _)| *m == n)?;
+                    Some(&rows[..len])
+                }),
+                tables.terms,
+            );
+            Decoded {
+                potential_circle: potential.on_circle(),
+                slope_circle_at_zero: at_zero.on_circle(),
+                potential,
+                slope,
+            }
+        });
+        Ok(Conformal {
+            family,
+            tables,
+            decoded,
+        })
+    }
+
+    /// Parse `family:K` for any family in the registry; `None` when the
+    /// name is no contour family's.
     pub fn parse(name: &str) -> Option<std::result::Result<Conformal, String>> {
-        let k = name
-            .strip_prefix(crate::generated::conformal::FAMILY)?
-            .strip_prefix(':')?;
+        let (family, k) = name.split_once(':')?;
+        let (i, f) = families()
+            .iter()
+            .enumerate()
+            .find(|(_, f)| f.name == family)?;
         Some(
             k.parse::<usize>()
                 .ok()
-                .and_then(|k| Conformal::new(k).ok())
-                .ok_or_else(|| format!("{name}: K must be a whole number from 1 to 8")),
+                .and_then(|k| Conformal::in_family(i, k).ok())
+                .ok_or_else(|| {
+                    format!(
+                        "{}: K must be a whole number from {}",
+                        short_text(name),
+                        member_range(f).replace("..=", "to")
+                    )
+                }),
         )
+    }
+
+    /// The member's family.
+    pub fn family(&self) -> &'static Family {
+        self.family
     }
 
     /// K.
@@ -220,9 +331,9 @@ impl Conformal {
         self.tables.terms
     }
 
-    /// `conformal:K`.
+    /// `family:K`.
     pub fn name(&self) -> String {
-        format!("{}:{}", crate::generated::conformal::FAMILY, self.terms())
+        format!("{}:{}", self.family.name, self.terms())
     }
 
     /// Π̄ with its gradient and Hessian in x = (c, δ̄) at ρ.
@@ -700,7 +811,7 @@ impl Conformal {
 
     /// The state at `rho` under `control`.
     pub fn solve(&self, rho: f64, control: Control) -> Result<ConformalState> {
-        let rho = check_rho(rho)?;
+        let rho = check_rho(self.family, rho)?;
         match control {
             Control::Delta(d) => check_range("delta", d, true, "finite").map(|_| ())?,
             Control::Force(f) => check_range("force", f, true, "finite").map(|_| ())?,
@@ -832,13 +943,13 @@ impl Conformal {
 
     /// The pull-off at `rho` under `control`: the first extremum of F̄
     /// (load) or δ̄ (displacement) along the branch traced from
-    /// ā = [`TRACE_START_A`] towards smaller contacts.
+    /// ā = [`Family::trace_start_a`] towards smaller contacts.
     pub fn pull_off(
         &self,
         rho: f64,
         control: PullOffControl,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
-        let rho = check_rho(rho)?;
+        let rho = check_rho(self.family, rho)?;
         let direct = self.pull_off_traced(rho, control);
         if direct.is_ok() || rho >= 1.0 {
             return direct;
@@ -855,14 +966,14 @@ impl Conformal {
             })
     }
 
-    /// The pull-off traced from the state at ā = [`TRACE_START_A`]
+    /// The pull-off traced from the state at ā = [`Family::trace_start_a`]
     /// continued in ρ from the circle.
     fn pull_off_traced(
         &self,
         rho: f64,
         control: PullOffControl,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
-        let start = self.solve(rho, Control::Size(TRACE_START_A))?;
+        let start = self.solve(rho, Control::Size(self.family.trace_start_a))?;
         let mut x = DVector::from_vec(start.coefficients.clone());
         x = x.push(start.delta_bar);
         let (found, folds) = trace::to_extremum(self, &x, rho, control)?;
@@ -922,7 +1033,7 @@ impl Conformal {
     /// The curve at `rho` from δ̄ = `delta_start` through the pull-off and
     /// the folds of every mode (the arms of `trace`), `points` states.
     pub fn curve(&self, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
-        let rho = check_rho(rho)?;
+        let rho = check_rho(self.family, rho)?;
         check_range(
             "points",
             points as f64,
@@ -1093,13 +1204,28 @@ fn no_circle(a: f64) -> Error {
     ))
 }
 
-fn check_rho(rho: f64) -> Result<f64> {
+/// At most 40 characters of what a user typed, for messages.
+fn short_text(s: &str) -> String {
+    match s.char_indices().nth(40) {
+        Some((i, _)) => format!("{}…", &s[..i]),
+        None => s.to_string(),
+    }
+}
+
+/// "1 ..= 8": the family's K, from its smallest member to its largest.
+fn member_range(family: &Family) -> String {
+    let ks = family.members.iter().map(|t| t.terms);
+    let (lo, hi) = (ks.clone().min().unwrap_or(0), ks.max().unwrap_or(0));
+    format!("{lo} ..= {hi}")
+}
+
+fn check_rho(family: &Family, rho: f64) -> Result<f64> {
     let rho = check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-    if rho < RHO_MIN {
+    if rho < family.rho_min {
         return Err(Error::Unsupported {
             name: "rho",
             value: rho,
-            supported: "[0.3, 1] for conformal:K",
+            supported: format!("[{}, 1] for {}:K", short(family.rho_min), family.name).into(),
         });
     }
     Ok(rho)
@@ -1123,7 +1249,7 @@ mod tests {
             dbar in -5.0f64..20.0,
             rho in 0.3f64..=1.0,
         ) {
-            let m = Conformal::new(k).unwrap();
+            let m = Conformal::member("conformal", k).unwrap();
             let second = m.tables.second.expect("K ≤ 4 is unrolled");
             let c: Vec<f64> = std::iter::once(c1)
                 .chain(tail[..k - 1].iter().map(|&t| if circle { 0.0 } else { t * c1 }))
@@ -1144,7 +1270,7 @@ mod tests {
     #[test]
     fn the_small_members_are_unrolled() {
         for k in 1..=8 {
-            let m = Conformal::new(k).unwrap();
+            let m = Conformal::member("conformal", k).unwrap();
             assert_eq!(m.tables.second.is_some(), k <= 4, "conformal:{k}");
         }
     }
@@ -1168,7 +1294,7 @@ mod tests {
             (6, Control::Delta(1.5)),
             (8, Control::Size(2.7)),
         ] {
-            let m = Conformal::new(k).unwrap();
+            let m = Conformal::member("conformal", k).unwrap();
             let at = |mu: f64| {
                 let st = m.solve(1.0 / mu, control).unwrap();
                 DVector::from_vec(st.coefficients).push(st.delta_bar)
@@ -1200,7 +1326,7 @@ mod tests {
         };
         let (mut accepted, mut beyond_univalent, mut rejected) = (0, 0, 0);
         for k in 2..=8 {
-            let m = Conformal::new(k).unwrap();
+            let m = Conformal::member("conformal", k).unwrap();
             for _ in 0..400 {
                 let mut c = vec![1.0];
                 for _ in 1..k {
@@ -1229,7 +1355,7 @@ mod tests {
     #[test]
     fn the_pull_off_continued_in_rho_is_the_traced_one() {
         for (k, rho) in [(4, 0.6), (8, 0.6), (8, 0.75)] {
-            let m = Conformal::new(k).unwrap();
+            let m = Conformal::member("conformal", k).unwrap();
             for control in [PullOffControl::Load, PullOffControl::Displacement] {
                 let (a, _) = m.pull_off_traced(rho, control).unwrap();
                 let (b, _) = m.pull_off_continued(rho, control).unwrap();
@@ -1250,7 +1376,7 @@ mod tests {
     #[test]
     fn every_member_pulls_off_down_to_rho_one_half() {
         for k in 1..=8 {
-            let (st, _) = Conformal::new(k)
+            let (st, _) = Conformal::member("conformal", k)
                 .unwrap()
                 .pull_off(0.5, PullOffControl::Load)
                 .unwrap_or_else(|e| panic!("K = {k}: {e}"));

@@ -6,11 +6,11 @@
 //! Owns: the table evaluator. May use: nothing else in the crate.
 
 /// Bits per packed exponent (as generated).
-const BITS: u32 = 4;
+pub(crate) const BITS: u32 = 4;
 /// Bit offset of δ̄'s exponent.
-const DBAR_SHIFT: u32 = 32;
+pub(crate) const DBAR_SHIFT: u32 = 32;
 /// Bit offset of μ's exponent.
-const MU_SHIFT: u32 = 36;
+pub(crate) const MU_SHIFT: u32 = 36;
 /// The most unknowns: K ≤ 8 map coefficients and δ̄.
 pub const MAX_UNKNOWNS: usize = 9;
 

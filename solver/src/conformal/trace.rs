@@ -286,7 +286,7 @@ fn arm(
 /// The curve of one member at ρ: the arm from δ̄ = `delta_start` downwards
 /// and, where the load-controlled pull-off lies on another arm (each
 /// mode's imperfect bifurcation splits the family for ρ < 1), that arm,
-/// traced both ways from its state at ā = [`super::TRACE_START_A`]
+/// traced both ways from its state at ā = [`super::Family::trace_start_a`]
 /// (continued in ρ from the circle); each arm past its folds until its
 /// contour is no longer one-to-one, or back above the contact it started
 /// from. `points` states in all, spaced evenly
@@ -326,10 +326,10 @@ pub fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result
         .points
         .iter()
         .zip(&first.beyond)
-        .any(|(p, &b)| !b && p.a_bar <= super::TRACE_START_A);
+        .any(|(p, &b)| !b && p.a_bar <= m.family().trace_start_a);
     let mut arms = vec![(first.points, first.beyond)];
     if !(has_pull_off && passes_seed) {
-        match m.solve(rho, super::Control::Size(super::TRACE_START_A)) {
+        match m.solve(rho, super::Control::Size(m.family().trace_start_a)) {
             Ok(seed) => {
                 let mut x = DVector::from_vec(seed.coefficients.clone());
                 x = x.push(seed.delta_bar);
@@ -348,14 +348,14 @@ pub fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result
                 folds.extend(lower.folds);
                 ends.push(format!(
                     "the pull-off arm through a = {}: upwards {}; downwards {}",
-                    super::TRACE_START_A,
+                    m.family().trace_start_a,
                     upper.end,
                     lower.end
                 ));
             }
             Err(e) => ends.push(format!(
                 "no pull-off arm through a = {}: {e}",
-                super::TRACE_START_A
+                m.family().trace_start_a
             )),
         }
     }

@@ -174,9 +174,9 @@ fn screen(
         count <= MAX_GRID,
         "at most from + 9.99 (a screen of at most 1000 grid points)",
     )?;
-    let model: Conformal = crate::conformal::members()
-        .last()
-        .ok_or_else(|| Error::NoState("no member of conformal:K generated".into()))?;
+    let model: Conformal = crate::conformal::exact_seed().ok_or_else(|| {
+        Error::NoState("no contour family in the registry seeds the exact solver".into())
+    })?;
     let grid: Vec<f64> = (0..count).map(|j| from + STEP * j as f64).collect();
     let states = grid
         .par_iter()

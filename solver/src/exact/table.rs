@@ -53,12 +53,22 @@ pub struct Row {
     pub exact: Result<ExactState, String>,
     /// Each model's state, or the error's text.
     pub models: Vec<(ModelId, Result<State, String>)>,
-    /// The states of `conformal:K` for K in [`CONFORMAL_KS`], or the errors' text.
-    pub conformal: Vec<(usize, Result<ConformalState, String>)>,
+    /// The states of the compared contour-family members
+    /// ([`compared_members`]), by name, or the errors' text.
+    pub conformal: Vec<(String, Result<ConformalState, String>)>,
 }
 
-/// The members of the conformal family the table compares.
+/// The K of every contour family's members the table compares.
 pub const CONFORMAL_KS: [usize; 4] = [2, 4, 6, 8];
+
+/// The contour-family members the table compares: those with K in
+/// [`CONFORMAL_KS`] of every family on the exact solver's gap, in the
+/// registry's order.
+pub fn compared_members() -> Vec<Conformal> {
+    crate::conformal::members()
+        .filter(|m| m.family().on_exact_gap && CONFORMAL_KS.contains(&m.terms()))
+        .collect()
+}
 
 /// Compute one row.
 pub fn row(rho: f64, quantity: Quantity) -> Row {
@@ -79,15 +89,15 @@ pub fn row(rho: f64, quantity: Quantity) -> Row {
             (m, st.map_err(|e| e.to_string()))
         })
         .collect();
-    let conformal = CONFORMAL_KS
-        .iter()
-        .map(|&k| {
-            let st = Conformal::new(k).and_then(|m| match quantity {
+    let conformal = compared_members()
+        .into_iter()
+        .map(|m| {
+            let st = match quantity {
                 Quantity::PullOff => m.pull_off(rho, PullOffControl::Load).map(|(s, _)| s),
                 Quantity::ZeroForce => m.zero_force(rho),
                 Quantity::Force10 => m.solve(rho, Control::Force(10.0)),
-            });
-            (k, st.map_err(|e| e.to_string()))
+            };
+            (m.name(), st.map_err(|e| e.to_string()))
         })
         .collect();
     Row {
@@ -301,14 +311,15 @@ pub fn render(rows: &[Row], doublings: &[Doubling]) -> String {
             _ => "δ̄",
         };
         o.push_str(&format!("\n### {}\n\n", q.title()));
+        let compared = compared_members();
         o.push_str(&format!(
             "| ρ | {} |\n|{}\n",
-            CONFORMAL_KS
+            compared
                 .iter()
-                .map(|k| format!("`conformal:{k}`: {first} / ā / s"))
+                .map(|m| format!("`{}`: {first} / ā / s", m.name()))
                 .collect::<Vec<_>>()
                 .join(" | "),
-            "---|".repeat(1 + CONFORMAL_KS.len())
+            "---|".repeat(1 + compared.len())
         ));
         for r in rows.iter().filter(|r| r.quantity == q) {
             o.push_str(&render_conformal_row(r));

@@ -13,10 +13,6 @@ pub mod k5;
 pub mod k6;
 pub mod k7;
 pub mod k8;
-/// The family's name.
-pub const FAMILY: &str = "conformal";
-/// The family in one line.
-pub const TITLE: &str = "image of the unit disk under an odd polynomial map, exact (2) and p = 0 on the contour, energy (Ritz) closure";
 /// Every generated member, by K.
 pub static MEMBERS: [crate::conformal::Tables; 8] = [
     crate::conformal::Tables {

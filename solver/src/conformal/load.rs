@@ -1,0 +1,264 @@
+//! Contour families loaded at run time: where the environment variable
+//! [`ENV`] names a folder that `cargo run -p thinjkr-derive -- generate`
+//! wrote (a checkout's `solver/src/generated/`), every family its
+//! `registry.json` lists that this build was not compiled with is read from
+//! its `tables.json` and joins the built-in families, so that a family added
+//! as a data file needs no rebuild of the solver (the command line, the
+//! library and the Python package alike). Its members use the table
+//! evaluator; the built-in families keep their compiled tables.
+//!
+//! A file is checked before it is used: its size is bounded before it is
+//! read, the packing must be the solver's, every member's rows must be a
+//! prefix of the family's tables in the generator's order, with no exponent
+//! of a map coefficient the member does not have, and the map's powers must
+//! be odd and distinct. A family that fails is left out, and the reason is
+//! kept ([`super::load_problems`]) for every front end to show.
+//!
+//! Owns: reading `registry.json` and `tables.json`. May use: `conformal`
+//! (`Family`, `Tables`, `poly`'s packing), serde_json.
+
+use super::poly::{BITS, DBAR_SHIFT, MAX_UNKNOWNS, MU_SHIFT};
+use super::{Family, Tables};
+use serde::Deserialize;
+use std::path::Path;
+
+/// The environment variable naming the folder of generated families.
+pub const ENV: &str = "THINJKR_FAMILIES";
+
+/// The largest `registry.json` read.
+const MAX_REGISTRY_BYTES: u64 = 1 << 20;
+
+/// The largest `tables.json` read (the built-in `conformal`'s is 1.1 MB).
+const MAX_TABLES_BYTES: u64 = 256 << 20;
+
+#[derive(Deserialize)]
+struct Registry {
+    families: Vec<Entry>,
+}
+
+#[derive(Deserialize)]
+struct Entry {
+    name: String,
+    kind: String,
+    title: String,
+    gap: String,
+    particular: String,
+    source: String,
+    rho_min: f64,
+    trace_start_a: f64,
+    on_exact_gap: bool,
+    tables: String,
+}
+
+#[derive(Deserialize)]
+struct Packing {
+    bits: u32,
+    dbar_shift: u32,
+    mu_shift: u32,
+}
+
+#[derive(Deserialize)]
+struct Member {
+    terms: usize,
+    powers: Vec<u16>,
+    potential_rows: usize,
+    slope_rows: Vec<(u16, usize)>,
+}
+
+#[derive(Deserialize)]
+struct TablesFile {
+    packing: Packing,
+    members: Vec<Member>,
+    potential: Vec<(u64, f64)>,
+    slope: Vec<(u16, Vec<(u64, f64)>)>,
+}
+
+fn leak(s: String) -> &'static str {
+    Box::leak(s.into_boxed_str())
+}
+
+fn read_bounded(path: &Path, max: u64) -> Result<String, String> {
+    let at = path.display();
+    let size = std::fs::metadata(path)
+        .map_err(|e| format!("{at}: {e}"))?
+        .len();
+    if size > max {
+        return Err(format!("{at}: {size} bytes, more than the {max} read"));
+    }
+    std::fs::read_to_string(path).map_err(|e| format!("{at}: {e}"))
+}
+
+/// The families in `dir`'s `registry.json` that `compiled` lacks, each
+/// loaded and checked, and the reasons of those left out.
+pub(crate) fn load(dir: &Path, compiled: &[Family]) -> (Vec<&'static Family>, Vec<String>) {
+    let (mut out, mut problems) = (Vec::new(), Vec::new());
+    let path = dir.join("registry.json");
+    let registry: Registry = match read_bounded(&path, MAX_REGISTRY_BYTES)
+        .and_then(|t| serde_json::from_str(&t).map_err(|e| format!("{}: {e}", path.display())))
+    {
+        Ok(r) => r,
+        Err(why) => {
+            problems.push(format!("{ENV}: {why}"));
+            return (out, problems);
+        }
+    };
+    for entry in registry.families {
+        if compiled.iter().any(|f| f.name == entry.name) {
+            // a built-in family: this build's tables serve
+            continue;
+        }
+        let name = entry.name.clone();
+        match family(dir, entry) {
+            Ok(f) if out.iter().any(|g: &&Family| g.name == f.name) => {
+                problems.push(format!("{ENV}: family {name} is listed twice"))
+            }
+            Ok(f) => out.push(f),
+            Err(why) => problems.push(format!("{ENV}: family {name} left out: {why}")),
+        }
+    }
+    (out, problems)
+}
+
+fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
+    let ident = !e.name.is_empty()
+        && e.name.len() <= 32
+        && e.name
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+    if !ident || e.name == "exact" {
+        return Err("its name is not a lower-case identifier".into());
+    }
+    if e.kind != "conformal" {
+        return Err(format!("kind {:?} is not one this solver knows", e.kind));
+    }
+    if !(e.rho_min > 0.0 && e.rho_min <= 1.0)
+        || !(e.trace_start_a > 0.0 && e.trace_start_a <= 100.0)
+    {
+        return Err("rho_min or trace_start_a out of range".into());
+    }
+    if e.tables.contains("..") || Path::new(&e.tables).is_absolute() {
+        return Err(format!("its tables path {:?} leaves the folder", e.tables));
+    }
+    let path = dir.join(&e.tables);
+    let text = read_bounded(&path, MAX_TABLES_BYTES)?;
+    let t: TablesFile =
+        serde_json::from_str(&text).map_err(|err| format!("{}: {err}", path.display()))?;
+    let members = tables(t).map_err(|why| format!("{}: {why}", path.display()))?;
+    Ok(Box::leak(Box::new(Family {
+        name: leak(e.name),
+        kind: leak(e.kind),
+        title: leak(e.title),
+        gap: leak(e.gap),
+        particular: leak(e.particular),
+        source: leak(e.source),
+        rho_min: e.rho_min,
+        trace_start_a: e.trace_start_a,
+        on_exact_gap: e.on_exact_gap,
+        // the built-in family on the exact solver's gap seeds it
+        seeds_exact: false,
+        members,
+    })))
+}
+
+/// The packed row's fields: each must fit, none above μ's.
+fn row_ok(p: u64, terms: usize) -> bool {
+    let c_bits = BITS * terms as u32;
+    let c_used = if c_bits >= 64 {
+        u64::MAX
+    } else {
+        (1u64 << c_bits) - 1
+    };
+    let c_mask = (1u64 << DBAR_SHIFT) - 1;
+    p >> (MU_SHIFT + BITS) == 0 && (p & c_mask) & !c_used == 0
+}
+
+/// The rows in the generator's order: by c-exponents, then whole.
+fn sorted(rows: &[(u64, f64)]) -> bool {
+    let c_mask = (1u64 << DBAR_SHIFT) - 1;
+    rows.windows(2)
+        .all(|w| (w[0].0 & c_mask, w[0].0) <= (w[1].0 & c_mask, w[1].0))
+}
+
+fn tables(t: TablesFile) -> Result<&'static [Tables], String> {
+    if (t.packing.bits, t.packing.dbar_shift, t.packing.mu_shift) != (BITS, DBAR_SHIFT, MU_SHIFT) {
+        return Err("its packing is not this solver's".into());
+    }
+    if t.members.is_empty() || t.members.len() >= MAX_UNKNOWNS {
+        return Err(format!("1 to {} members expected", MAX_UNKNOWNS - 1));
+    }
+    let largest = t.members.iter().map(|m| m.terms).max().unwrap_or(0);
+    if t.potential
+        .iter()
+        .any(|&(p, c)| !row_ok(p, largest) || !c.is_finite())
+        || !sorted(&t.potential)
+    {
+        return Err("a row of the potential is not one the generator writes".into());
+    }
+    for (n, rows) in &t.slope {
+        if rows
+            .iter()
+            .any(|&(p, c)| !row_ok(p, largest) || !c.is_finite())
+            || !sorted(rows)
+        {
+            return Err(format!(
+                "a row of the boundary slope's mode {n} is not one the generator writes"
+            ));
+        }
+    }
+    for m in &t.members {
+        let k = m.terms;
+        let powers_ok = m.powers.len() == k
+            && m.powers.first() == Some(&1)
+            && m.powers.iter().all(|&n| n % 2 == 1 && n <= 31)
+            && (1..k).all(|i| !m.powers[..i].contains(&m.powers[i]));
+        if !(1..MAX_UNKNOWNS).contains(&k) || !powers_ok {
+            return Err(format!(
+                "member {k}: its K or its map's powers are not valid"
+            ));
+        }
+        let prefix_ok = |rows: &[(u64, f64)], n: usize| {
+            n <= rows.len() && rows[..n].iter().all(|&(p, _)| row_ok(p, k))
+        };
+        if !prefix_ok(&t.potential, m.potential_rows) {
+            return Err(format!(
+                "member {k}: its rows of the potential are not a prefix of the family's"
+            ));
+        }
+        for &(n, len) in &m.slope_rows {
+            let rows = t
+                .slope
+                .iter()
+                .find(|(j, _)| *j == n)
+                .map(|(_, r)| r.as_slice());
+            if !rows.is_some_and(|r| prefix_ok(r, len)) {
+                return Err(format!(
+                    "member {k}: its boundary slope's mode {n} is not a prefix of the family's"
+                ));
+            }
+        }
+        if t.members.iter().filter(|o| o.terms == k).count() > 1 {
+            return Err(format!("member {k} is listed twice"));
+        }
+    }
+    let potential: &'static [(u64, f64)] = Box::leak(t.potential.into_boxed_slice());
+    let slope: Vec<(u16, &'static [(u64, f64)])> = t
+        .slope
+        .into_iter()
+        .map(|(n, rows)| (n, &*Box::leak(rows.into_boxed_slice())))
+        .collect();
+    let slope: &'static [(u16, &'static [(u64, f64)])] = Box::leak(slope.into_boxed_slice());
+    let members: Vec<Tables> = t
+        .members
+        .into_iter()
+        .map(|m| Tables {
+            terms: m.terms,
+            powers: Box::leak(m.powers.into_boxed_slice()),
+            potential,
+            potential_rows: m.potential_rows,
+            slope,
+            slope_rows: Box::leak(m.slope_rows.into_boxed_slice()),
+            second: None,
+        })
+        .collect();
+    Ok(Box::leak(members.into_boxed_slice()))
+}

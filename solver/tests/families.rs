@@ -1,0 +1,158 @@
+//! Contour families loaded at run time (`THINJKR_FAMILIES`): a family the
+//! build was not compiled with is read from a generated folder's
+//! `registry.json` and `tables.json` and solves as a built-in one does; a
+//! file the generator would not write is refused with its reason, the
+//! built-in models unharmed, and nothing panics.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn thinjkr(families: &Path, args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(args)
+        .env("THINJKR_FAMILIES", families)
+        .output()
+        .expect("runs");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// A generated folder holding one family `name` whose tables are `tables`.
+fn folder(tag: &str, name: &str, tables: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("thinjkr-families-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join(name)).unwrap();
+    std::fs::write(dir.join(name).join("tables.json"), tables).unwrap();
+    let registry = serde_json::json!({
+        "families": [{
+            "name": name, "kind": "conformal", "title": "a copy of conformal's tables",
+            "gap": "X^2/2 + mu*Y^2/2", "particular": "X^4/24 + mu*Y^4/24 - dbar*(X^2 + Y^2)/4",
+            "source": format!("derive/families/{name}.toml"), "rho_min": 0.3, "trace_start_a": 2.6,
+            "on_exact_gap": true, "seeds_exact": false, "tables": format!("{name}/tables.json"),
+        }]
+    });
+    std::fs::write(dir.join("registry.json"), registry.to_string()).unwrap();
+    dir
+}
+
+fn builtin_tables() -> String {
+    std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/src/generated/conformal/tables.json"
+    ))
+    .unwrap()
+}
+
+fn state(json: &str) -> serde_json::Value {
+    serde_json::from_str::<serde_json::Value>(json).unwrap()["state"].clone()
+}
+
+#[test]
+fn a_family_loaded_at_run_time_solves_as_the_compiled_one() {
+    let dir = folder("copy", "copy", &builtin_tables());
+    let (ok, out, err) = thinjkr(&dir, &["models"]);
+    assert!(ok && err.is_empty(), "{err}");
+    assert!(
+        out.contains("copy:8") && out.contains("conformal:8"),
+        "{out}"
+    );
+    // the table evaluator on the loaded rows against the compiled
+    // member's (for K = 4 its unrolled evaluator, bit for bit the same)
+    for k in [2, 4, 6] {
+        let args = |m: &str| {
+            vec![
+                "solve", "--rho", "0.8", "--force", "10", "--model", m, "--json",
+            ]
+            .into_iter()
+            .map(String::from)
+            .collect::<Vec<_>>()
+        };
+        let run = |m: String| {
+            let a = args(&m);
+            let a: Vec<&str> = a.iter().map(String::as_str).collect();
+            let (ok, out, err) = thinjkr(&dir, &a);
+            assert!(ok, "{m}: {err}");
+            state(&out)
+        };
+        let (a, b) = (run(format!("copy:{k}")), run(format!("conformal:{k}")));
+        assert_eq!(a["model"], format!("copy:{k}"));
+        for key in ["a_bar", "s", "delta_bar", "force_bar"] {
+            assert_eq!(a[key], b[key], "K = {k}, {key}");
+        }
+        assert_eq!(a["coefficients"], b["coefficients"]);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_family_file_the_generator_would_not_write_is_left_out_with_its_reason() {
+    let good = builtin_tables();
+    let cases = [
+        // an exponent of c₃ in a row of a member with two coefficients
+        (
+            "prefix",
+            good.replacen("\"potential_rows\": 38,", "\"potential_rows\": 149,", 1),
+            "prefix",
+        ),
+        (
+            "packing",
+            good.replacen("\"bits\": 4", "\"bits\": 5", 1),
+            "packing",
+        ),
+        (
+            "powers",
+            good.replacen("\"powers\": [1,3]", "\"powers\": [1,2]", 1),
+            "powers",
+        ),
+        ("json", good[..good.len() / 2].to_string(), "tables.json"),
+        (
+            "nan",
+            good.replacen("[2, -1.5707963267948966]", "[2, 1e999]", 1),
+            "tables.json",
+        ),
+    ];
+    for (tag, tables, word) in cases {
+        assert_ne!(tables, good, "{tag}: the case changes the file");
+        let dir = folder(tag, "broken", &tables);
+        let (ok, out, err) = thinjkr(&dir, &["models"]);
+        assert!(ok, "{tag}: the built-in models still list: {err}");
+        assert!(!out.contains("broken:"), "{tag}: {out}");
+        assert!(
+            err.contains("family broken left out") && err.contains(word),
+            "{tag}: {err}"
+        );
+        let (ok, _, err) = thinjkr(
+            &dir,
+            &[
+                "solve", "--rho", "0.8", "--force", "0", "--model", "broken:2",
+            ],
+        );
+        assert!(!ok && err.contains("left out"), "{tag}: {err}");
+        let (ok, _, err) = thinjkr(
+            &dir,
+            &[
+                "solve",
+                "--rho",
+                "0.8",
+                "--force",
+                "0",
+                "--model",
+                "conformal:2",
+            ],
+        );
+        assert!(ok, "{tag}: {err}");
+        assert!(!err.contains("panicked"), "{tag}: {err}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+    // a folder without a registry: said, and the built-in models serve
+    let empty = std::env::temp_dir().join(format!("thinjkr-families-none-{}", std::process::id()));
+    std::fs::create_dir_all(&empty).unwrap();
+    let (ok, out, err) = thinjkr(&empty, &["models"]);
+    assert!(
+        ok && out.contains("conformal:8") && err.contains("registry.json"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&empty).unwrap();
+}
