@@ -511,6 +511,9 @@ fn _scalar_seconds(
 #[pymodule]
 fn _thinjkr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("RawError", m.py().get_type::<RawError>())?;
+    // the bounds of the counts a user gives, for the wrapper's checks
+    m.add("MAX_CURVE_POINTS", thinjkr::curve::MAX_POINTS)?;
+    m.add("MAX_USER_MODES", thinjkr::exact::MAX_USER_MODES)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;
     m.add_function(wrap_pyfunction!(solve, m)?)?;
     m.add_function(wrap_pyfunction!(solve_many, m)?)?;

@@ -32,7 +32,7 @@ mod near_circle;
 pub use near_circle::NEAR_CIRCLE;
 
 use crate::equations::{held, Hold};
-use crate::error::{check_range, Error, Result};
+use crate::error::{check_range, rounded, short, Error, Result};
 use crate::fold::{self, FoldCondition};
 use crate::model::{brent_minimum, ClosureKind, Model, ModelId};
 use crate::newton::{self, NewtonConfig};
@@ -363,7 +363,7 @@ impl Contact {
             Error::NoState(format!(
                 "model {}: no end of the adhesive branch found at rho = {}",
                 self.model_id(),
-                self.rho
+                short(self.rho)
             ))
         })?;
         for _ in 0..200 {
@@ -611,7 +611,7 @@ impl Contact {
         Error::NoState(format!(
             "model {} has no branch at rho = {} (its non-adhesive limit is at s = {})",
             self.model_id(),
-            self.rho,
+            short(self.rho),
             crate::error::rounded(s_inf)
         ))
     }
@@ -620,7 +620,7 @@ impl Contact {
         Error::NoState(format!(
             "model {}: the branch at rho = {} stays stable under displacement control down to s = {:.3e} (the contact shrinks and elongates without a fold in delta_bar)",
             self.model_id(),
-            self.rho,
+            short(self.rho),
             last_s.unwrap_or(f64::NAN)
         ))
     }
@@ -676,8 +676,9 @@ impl Contact {
                     w[1].s,
                     w[0].s,
                 )?;
-                self.state_at_s(s)
-                    .ok_or_else(|| Error::NoState(format!("{what}: off the branch at s = {s}")))?
+                self.state_at_s(s).ok_or_else(|| {
+                    Error::NoState(format!("{what}: off the branch at s = {}", rounded(s)))
+                })?
             } else {
                 self.tail_guess(&w[0], &w[1], control, target)
             };
@@ -749,7 +750,7 @@ impl Contact {
                 },
                 crate::error::short(target),
                 self.model_id(),
-                self.rho,
+                short(self.rho),
                 crate::error::rounded(reach),
                 crate::error::rounded(a_at),
             )));
@@ -828,7 +829,7 @@ impl Contact {
                     Control::Force => "force",
                 },
                 crate::error::short(target),
-                self.rho
+                short(self.rho)
             ),
         })
     }
@@ -907,7 +908,7 @@ impl Contact {
             .ok_or_else(|| {
                 Error::NoState(format!(
                     "{what}: no minimum along the branch at rho = {}",
-                    self.rho
+                    short(self.rho)
                 ))
             })?;
         let f = |s: f64| {
@@ -949,7 +950,7 @@ impl Contact {
         }
             .into_iter()
             .next()
-            .ok_or_else(|| Error::NoState(format!("no contact at delta = {delta} for rho = {} (below the displacement-controlled pull-off)", self.rho)))
+            .ok_or_else(|| Error::NoState(format!("no contact at delta = {} for rho = {} (below the displacement-controlled pull-off)", short(delta), short(self.rho))))
     }
 
     /// The circle's state at approach `delta` (ρ = 1, whatever this
@@ -1041,7 +1042,7 @@ impl Contact {
                         "[{}, ∞): from the pull-off force of model {} at rho = {}",
                         crate::error::rounded(p.state.force_bar),
                         self.model_id(),
-                        self.rho
+                        short(self.rho)
                     )
                     .into(),
                 },
@@ -1070,7 +1071,7 @@ impl Contact {
                 .cold_crossings(Control::Force, force, "load control", true, true)?
                 .into_iter()
                 .next()
-                .ok_or_else(|| Error::NoState(format!("no state at force {force}")));
+                .ok_or_else(|| Error::NoState(format!("no state at force {}", short(force))));
         }
         match self.pull_off_load() {
             Ok(pull) if force < pull.state.force_bar => {
@@ -1088,7 +1089,7 @@ impl Contact {
         self.at_load_all(force)?
             .into_iter()
             .next()
-            .ok_or_else(|| Error::NoState(format!("no state at force {force}")))
+            .ok_or_else(|| Error::NoState(format!("no state at force {}", short(force))))
     }
 
     /// Load control: every state at force `force`, the stable one first.
@@ -1256,7 +1257,7 @@ impl Contact {
             Error::OutOfRange { name: "force", .. } => Error::NoState(format!(
                 "model {} has no zero-force state at rho = {}: its pull-off force is above zero ({}), so the contact cannot be unloaded to F = 0",
                 self.model_id(),
-                self.rho,
+                short(self.rho),
                 self.pull_off_load()
                     .map(|p| crate::error::rounded(p.state.force_bar))
                     .unwrap_or_else(|_| "not located".into())
@@ -1296,7 +1297,11 @@ fn first_window_minimum(v: &[f64]) -> Option<usize> {
 pub(crate) fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Result<f64> {
     let (mut flo, fhi) = (f(lo), f(hi));
     if !(flo.is_finite() && fhi.is_finite()) || flo.signum() == fhi.signum() {
-        return Err(Error::NoState(format!("no sign change on [{lo}, {hi}]")));
+        return Err(Error::NoState(format!(
+            "no sign change on [{}, {}]",
+            rounded(lo),
+            rounded(hi)
+        )));
     }
     for _ in 0..300 {
         let mid = 0.5 * (lo + hi);

@@ -815,7 +815,11 @@ mod tests {
             Vector2::new(0.0, 1.0)
         }
         fn stuck(&self, u: &Vector2<f64>, why: &str) -> Error {
-            Error::NoState(format!("circle at ({}, {}): {why}", u[0], u[1]))
+            Error::NoState(format!(
+                "circle at ({}, {}): {why}",
+                crate::error::rounded(u[0]),
+                crate::error::rounded(u[1])
+            ))
         }
     }
 

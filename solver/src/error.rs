@@ -96,10 +96,16 @@ impl Error {
 /// Shorthand.
 pub type Result<T> = std::result::Result<T, Error>;
 
-/// A number for a message: plain between 1e-4 and 1e7, else short
-/// scientific notation (`1e-300`, not three hundred zeros); both the
-/// shortest forms that read back to the same f64.
+/// A number for a message, one rule everywhere: at most six significant
+/// digits (what a person can act on; `rho = 0.307916`, not
+/// `0.3079159382974495`), plain between 1e-4 and 1e7, else short
+/// scientific notation (`-1e308`, not three hundred digits).
 pub fn short(x: f64) -> String {
+    let x = if x.is_finite() {
+        format!("{x:.5e}").parse::<f64>().unwrap_or(x)
+    } else {
+        x
+    };
     let a = x.abs();
     if x == 0.0 || !x.is_finite() || (1e-4..1e7).contains(&a) {
         format!("{x}")
@@ -108,13 +114,13 @@ pub fn short(x: f64) -> String {
     }
 }
 
-/// A computed number for a message, to six significant digits (what a
-/// person can act on); "undefined" where it is not a number.
+/// A computed number for a message, to six significant digits ([`short`]);
+/// "undefined" where it is not a number.
 pub fn rounded(x: f64) -> String {
     if !x.is_finite() {
         return "undefined".into();
     }
-    short(format!("{x:.5e}").parse::<f64>().unwrap_or(x))
+    short(x)
 }
 
 fn residual_words(r: f64) -> String {

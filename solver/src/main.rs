@@ -21,6 +21,7 @@ use thinjkr::registry::Choice as ModelChoice;
 mod output;
 mod conformal_cli;
 mod exact_cli;
+mod files;
 
 /// Approximate JKR contact of thin incompressible coatings on rigid cylinders
 /// (Argatov, Mishuris & Popov 2016), dimensionless as in Eq. (17) unless
@@ -355,7 +356,16 @@ fn run(cli: Cli) -> thinjkr::Result<u8> {
         Some(Command::Completions { shell }) => completions_command(shell)?,
         Some(Command::Manpage) => out!("{}", manpage()),
         Some(Command::Figures { out }) => {
-            for p in thinjkr::figures::write(&out)? {
+            files::check_folder(&out)?;
+            let drawn = thinjkr::figures::all()?;
+            files::create_folder(&out)?;
+            let mut written = Vec::new();
+            for (name, svg) in drawn {
+                let p = out.join(name);
+                files::write_whole(&p, svg.as_bytes())?;
+                written.push(p);
+            }
+            for p in written {
                 outln!("{}", p.display());
             }
         }
@@ -512,6 +522,7 @@ fn pull_off_command(
 /// `thinjkr batch`: CSV lines on stdin, one row each on stdout, in blocks
 /// solved on all cores; the exit status says whether every line solved.
 fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
+    output::check_input_open()?;
     use std::io::{BufRead, IsTerminal};
     use thinjkr::batch::{csv_row_values, decode_line, parse_line, solve_all, Row, CSV_HEADER};
     if matches!(model, ModelChoice::Exact) {
@@ -577,7 +588,7 @@ fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
                     let r = solved.next().expect("one result per item");
                     match &r {
                         Err(e) => {
-                            eprintln!("thinjkr: line {n}: {e}");
+                            errln!("thinjkr: line {n}: {e}");
                             failed += 1;
                         }
                         Ok(_) => solved_any = true,
@@ -585,7 +596,7 @@ fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
                     csv_row_values(*n, Some(item), &r)
                 }
                 Err(e) => {
-                    eprintln!("thinjkr: {e}");
+                    errln!("thinjkr: {e}");
                     failed += 1;
                     csv_row_values(*n, None, &Err(e.clone()))
                 }
@@ -602,7 +613,7 @@ fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
     if failed == 0 {
         return Ok(0);
     }
-    eprintln!("thinjkr: {failed} line(s) without a state (see the error column)");
+    errln!("thinjkr: {failed} line(s) without a state (see the error column)");
     Ok(if solved_any {
         BATCH_SOME_FAILED
     } else {
@@ -616,21 +627,13 @@ fn accuracy_command(
     reference: Option<std::path::PathBuf>,
     figures: Option<std::path::PathBuf>,
 ) -> thinjkr::Result<()> {
-    // every output path is checked before the minutes of work
+    // every output path is checked before the minutes of work, and none
+    // is created until the work is done (files::check_file)
     for p in [&out, &reference].into_iter().flatten() {
-        std::fs::OpenOptions::new()
-            .append(true)
-            .create(true)
-            .open(p)
-            .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?;
+        files::check_file(p)?;
     }
     if let Some(dir) = &figures {
-        if !dir.is_dir() {
-            return Err(thinjkr::Error::Io(format!(
-                "{} is not a directory to draw the figures into",
-                dir.display()
-            )));
-        }
+        files::check_folder(dir)?;
     }
     let began = std::time::Instant::now();
     use rayon::prelude::*;
@@ -675,23 +678,21 @@ fn accuracy_command(
     let text = render(&rows, &doublings);
     let refdata = reference_of(&doublings);
     if let Some(dir) = figures {
-        for (name, svg) in thinjkr::figures::exact_all(&refdata)? {
-            let p = dir.join(name);
-            std::fs::write(&p, svg)
-                .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?;
+        let drawn = thinjkr::figures::exact_all(&refdata)?;
+        files::create_folder(&dir)?;
+        for (name, svg) in drawn {
+            files::write_whole(&dir.join(name), svg.as_bytes())?;
         }
     }
     if let Some(p) = reference {
         let json = serde_json::to_string_pretty(&refdata).expect("plain data serialises");
-        std::fs::write(&p, json + "\n")
-            .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?;
+        files::write_whole(&p, (json + "\n").as_bytes())?;
     }
     match out {
-        Some(p) => std::fs::write(&p, text)
-            .map_err(|e| thinjkr::Error::Io(format!("cannot write {}: {e}", p.display())))?,
+        Some(p) => files::write_whole(&p, text.as_bytes())?,
         None => out!("{text}"),
     }
-    eprintln!(
+    errln!(
         "thinjkr: accuracy table: {} rows and {} doublings in {:.1} s on {} threads",
         rows.len(),
         doublings.len(),
@@ -723,7 +724,7 @@ fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> thinjkr::Result<
 fn models_command(j: bool) -> thinjkr::Result<()> {
     let models = thinjkr::report::models();
     for p in family::load_problems() {
-        eprintln!("thinjkr: warning: {p}");
+        errln!("thinjkr: warning: {p}");
     }
     if j {
         outln!("{}", Document::Models { models }.to_json());
@@ -748,6 +749,10 @@ fn completions_command(shell: clap_complete::Shell) -> thinjkr::Result<()> {
     Ok(())
 }
 
+/// The largest contact file read: eight numbers and their keys take a few
+/// hundred bytes.
+const CONTACT_FILE_MAX_BYTES: u64 = 64 * 1024;
+
 /// The contact of `physical`: from its TOML file, or every input given
 /// (r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion).
 fn cylinders(
@@ -757,10 +762,22 @@ fn cylinders(
     let [r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion] = inputs;
     Ok(match file {
         Some(p) => {
-            let text = std::fs::read_to_string(&p)
-                .map_err(|e| thinjkr::Error::Io(format!("cannot read {}: {e}", p.display())))?;
+            let text = files::input(&p, CONTACT_FILE_MAX_BYTES)?;
             toml::from_str::<Cylinders>(&text).map_err(|e| {
-                thinjkr::Error::Usage(format!("{} is not a valid contact file: {e}", p.display()))
+                // the parser's words, not the file's line (which may be
+                // megabytes long)
+                let at = e
+                    .span()
+                    .map(|r| {
+                        let line = text[..r.start.min(text.len())].matches('\n').count() + 1;
+                        format!(" (line {line})")
+                    })
+                    .unwrap_or_default();
+                thinjkr::Error::Usage(format!(
+                    "{} is not a valid contact file{at}: {}",
+                    p.display(),
+                    files::quote(e.message(), 160)
+                ))
             })?
         }
         None => {
@@ -806,35 +823,91 @@ fn physical(
     delta: Option<f64>,
     json: bool,
 ) -> thinjkr::Result<()> {
-    use thinjkr::error::check_range;
     use thinjkr::exact::branch::ExactControl;
     let sc = cyl.scales()?;
-    let force = force
-        .map(|f| check_range("force", f, true, "finite").map(|f| f / sc.force))
-        .transpose()?;
-    let delta = delta
-        .map(|d| check_range("delta", d, true, "finite").map(|d| d / sc.approach))
-        .transpose()?;
-    let state = match model {
-        ModelChoice::Ellipse(m) => {
-            let c = Contact::with_model(m, sc.rho)?;
-            AnyState::Ellipse(match (force, delta) {
-                (Some(f), _) => c.at_load(f)?,
-                (_, Some(d)) => c.at_displacement(d)?,
-                _ => c.pull_off_load()?.state,
+    let (force_si, delta_si) = (force, delta);
+    // a value the user typed, scaled: refused in the user's units when it
+    // is not finite or its scaled value is not (1e308 N over a millinewton
+    // scale is no number)
+    let scaled = |name: &'static str, v: f64, scale: f64, unit: &str| {
+        let x = v / scale;
+        if v.is_finite() && x.is_finite() {
+            Ok(x)
+        } else {
+            Err(thinjkr::Error::OutOfRange {
+                name,
+                value: v,
+                range: format!(
+                    "finite, with |{name}| at most {} {unit} for this contact",
+                    thinjkr::error::short(f64::MAX * scale)
+                )
+                .into(),
             })
         }
-        ModelChoice::Contour(m) => AnyState::Conformal(match (force, delta) {
-            (Some(f), _) => m.solve(sc.rho, family::Control::Force(f))?,
-            (_, Some(d)) => m.solve(sc.rho, family::Control::Delta(d))?,
-            _ => m.pull_off(sc.rho, family::PullOffControl::Load)?.0,
-        }),
-        ModelChoice::Exact => AnyState::Exact(Box::new(match (force, delta) {
-            (Some(f), _) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Force(f))?,
-            (_, Some(d)) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Delta(d))?,
-            _ => thinjkr::exact::pull_off_resolved(sc.rho)?.0,
-        })),
     };
+    let force = force
+        .map(|f| scaled("force", f, sc.force, "N"))
+        .transpose()?;
+    let delta = delta
+        .map(|d| scaled("delta", d, sc.approach, "m"))
+        .transpose()?;
+    // a limit the model states in the units (17) is restated in newtons
+    let in_si = |e: thinjkr::Error| -> thinjkr::Error {
+        let (thinjkr::Error::OutOfRange { name: "force", .. }, Some(typed)) = (&e, force_si) else {
+            return e;
+        };
+        let floor = match model {
+            ModelChoice::Ellipse(m) => Contact::with_model(m, sc.rho)
+                .and_then(|c| c.pull_off_load().map(|p| p.state.force_bar)),
+            ModelChoice::Contour(m) => m
+                .pull_off(sc.rho, family::PullOffControl::Load)
+                .map(|(p, _)| p.force_bar),
+            ModelChoice::Exact => {
+                thinjkr::exact::pull_off_resolved(sc.rho).map(|(p, _)| p.force_bar)
+            }
+        };
+        match floor {
+            Ok(f) => thinjkr::Error::OutOfRange {
+                name: "force",
+                value: typed,
+                range: format!(
+                    "[{} N, ∞): from the pull-off force of this contact (model {})",
+                    thinjkr::error::short(f * sc.force),
+                    match model {
+                        ModelChoice::Ellipse(m) => m.name().to_string(),
+                        ModelChoice::Contour(m) => m.name(),
+                        ModelChoice::Exact => "exact".into(),
+                    }
+                )
+                .into(),
+            },
+            Err(_) => e,
+        }
+    };
+    let _ = delta_si;
+    let state = (|| -> thinjkr::Result<AnyState> {
+        Ok(match model {
+            ModelChoice::Ellipse(m) => {
+                let c = Contact::with_model(m, sc.rho)?;
+                AnyState::Ellipse(match (force, delta) {
+                    (Some(f), _) => c.at_load(f)?,
+                    (_, Some(d)) => c.at_displacement(d)?,
+                    _ => c.pull_off_load()?.state,
+                })
+            }
+            ModelChoice::Contour(m) => AnyState::Conformal(match (force, delta) {
+                (Some(f), _) => m.solve(sc.rho, family::Control::Force(f))?,
+                (_, Some(d)) => m.solve(sc.rho, family::Control::Delta(d))?,
+                _ => m.pull_off(sc.rho, family::PullOffControl::Load)?.0,
+            }),
+            ModelChoice::Exact => AnyState::Exact(Box::new(match (force, delta) {
+                (Some(f), _) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Force(f))?,
+                (_, Some(d)) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Delta(d))?,
+                _ => thinjkr::exact::pull_off_resolved(sc.rho)?.0,
+            })),
+        })
+    })()
+    .map_err(in_si)?;
     let (a_bar, b_bar, delta_bar, force_bar) = match &state {
         AnyState::Ellipse(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
         AnyState::Conformal(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
@@ -855,7 +928,7 @@ fn physical(
         ));
     }
     for w in &warnings {
-        eprintln!("thinjkr: warning: {w}");
+        errln!("thinjkr: warning: {w}");
     }
     if json {
         let doc = Document::Physical {
@@ -894,10 +967,109 @@ fn physical(
     Ok(())
 }
 
+/// The most threads a run starts per core, whatever RAYON_NUM_THREADS asks
+/// for: the work is arithmetic, and more threads than cores only cost
+/// memory.
+const MAX_THREADS_PER_CORE: usize = 4;
+
+/// Each worker thread's stack (Rust's default for spawned threads).
+const THREAD_STACK_BYTES: usize = 2 << 20;
+
+/// How many worker threads fit in half of the address space the process
+/// may still map, where a limit is set (`ulimit -v`); `None` without one.
+fn threads_that_fit() -> Option<usize> {
+    #[cfg(target_os = "linux")]
+    {
+        let mut lim = libc::rlimit {
+            rlim_cur: 0,
+            rlim_max: 0,
+        };
+        // SAFETY: getrlimit writes into the struct we own.
+        if unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut lim) } != 0
+            || lim.rlim_cur == libc::RLIM_INFINITY
+        {
+            return None;
+        }
+        // the address space mapped now: the first field of statm, in pages
+        let pages: u64 = std::fs::read_to_string("/proc/self/statm")
+            .ok()
+            .and_then(|t| t.split_whitespace().next()?.parse().ok())
+            .unwrap_or(0);
+        // SAFETY: sysconf only reads a constant of the system.
+        let page = unsafe { libc::sysconf(libc::_SC_PAGESIZE) }.max(4096) as u64;
+        let free = (lim.rlim_cur as u64).saturating_sub(pages * page);
+        // a stack, its guard, the signal stack, and the 64 MiB the C
+        // allocator reserves for a thread's own arena
+        let per_thread = THREAD_STACK_BYTES as u64 + (65 << 20);
+        Some(((free / 2) / per_thread).max(1) as usize)
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        None
+    }
+}
+
+/// The thread pool every parallel step of a run (batch, accuracy, the
+/// exact bands) runs on: as many threads as RAYON_NUM_THREADS asks for (up
+/// to [`MAX_THREADS_PER_CORE`] per core), else one per core. Where the system cannot start
+/// that many (a memory cap), half as many are tried, down to one, with a
+/// warning; rayon's own global pool would instead panic at the first
+/// parallel step.
+fn thread_pool() -> rayon::ThreadPool {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let asked = std::env::var("RAYON_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .filter(|&n| n > 0);
+    let mut n = asked.unwrap_or(cores);
+    let most = MAX_THREADS_PER_CORE * cores;
+    if n > most {
+        errln!("thinjkr: warning: RAYON_NUM_THREADS = {n} is more than {most} threads ({MAX_THREADS_PER_CORE} per core); using {most}");
+        n = most;
+    }
+    // under a cap on the address space, at most the threads whose stacks
+    // fill half of what is left: a thread that starts but cannot map its
+    // signal stack afterwards aborts the run, which no fallback can catch
+    if let Some(fit) = threads_that_fit() {
+        if n > fit {
+            errln!("thinjkr: warning: {n} threads do not fit in the memory limit; using {fit}");
+            n = fit;
+        }
+    }
+    loop {
+        let built = rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .stack_size(THREAD_STACK_BYTES)
+            .build();
+        match built {
+            Ok(pool) => return pool,
+            Err(e) if n > 1 => {
+                errln!(
+                    "thinjkr: warning: could not start {n} threads ({e}); trying {}",
+                    n / 2
+                );
+                n /= 2;
+            }
+            Err(e) => {
+                // not even one thread: the work runs on this one
+                errln!(
+                    "thinjkr: warning: could not start a thread ({e}); running on the main thread"
+                );
+                return rayon::ThreadPoolBuilder::new()
+                    .num_threads(1)
+                    .use_current_thread()
+                    .build()
+                    .expect("a pool of the current thread starts no thread");
+            }
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let json_mode = wants_json(&cli.command);
-    let mut result = output::check_open().and_then(|()| run(cli));
+    let pool = thread_pool();
+    let mut result = output::check_open().and_then(|()| pool.install(|| run(cli)));
     // in --json mode an error is a JSON document on stdout as well (and
     // the same words on stderr), with the nonzero status
     if let Err(e) = &result {
@@ -914,11 +1086,14 @@ fn main() -> ExitCode {
     // error, if any, then takes the place of the first)
     let flushed = output::finish();
     match result.and_then(|status| flushed.map(|()| status)) {
+        // a line for standard error was lost (a full disk): the output is
+        // complete, but the run did not say everything it had to
+        Ok(0) if output::stderr_failed() => ExitCode::FAILURE,
         Ok(status) => ExitCode::from(status),
         // a closed pipe: the reader has what it wanted; end quietly
         Err(_) if output::broken_pipe() => ExitCode::from(output::BROKEN_PIPE_STATUS),
         Err(e) => {
-            eprintln!("thinjkr: error: {e}");
+            errln!("thinjkr: error: {e}");
             ExitCode::FAILURE
         }
     }

@@ -5,7 +5,11 @@
 //! in words with a nonzero status. Standard output that is closed before
 //! the program starts is refused up front.
 //!
-//! Owns: [`line`], [`text`], [`finish`], the `outln!`/`out!` macros. May use:
+//! Standard error gets the same care ([`err_line`], `errln!`): a line that
+//! cannot be written there never panics and never stops the output.
+//!
+//! Owns: [`line`], [`text`], [`finish`], [`err_line`], the `outln!`/`out!`/
+//! `errln!` macros. May use:
 //! `thinjkr::Error`.
 
 use std::io::Write;
@@ -79,33 +83,82 @@ pub fn broken_pipe() -> bool {
     BROKEN_PIPE.load(Ordering::Relaxed)
 }
 
-/// Refuse to start when standard output was closed (`>&-`). The Rust
-/// runtime reopens a closed standard descriptor on /dev/null for reading
-/// and writing before `main`, so every write would vanish without an error;
-/// a shell's `>/dev/null` opens it for writing only, which is left alone.
+/// Whether the standard descriptor `fd` was closed when the program
+/// started. The Rust runtime reopens a closed standard descriptor on
+/// /dev/null for reading and writing before `main`, so every read would see
+/// an empty input and every write would vanish without an error; a shell's
+/// `</dev/null` or `>/dev/null` opens it for one direction only, which is
+/// left alone.
+#[cfg(unix)]
+fn closed_at_start(fd: std::os::fd::RawFd) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    // SAFETY: fcntl with F_GETFL only queries the descriptor's flags.
+    let flags = unsafe { libc::fcntl(fd, libc::F_GETFL) };
+    flags == -1
+        || (flags & libc::O_ACCMODE == libc::O_RDWR && {
+            let null = std::fs::metadata("/dev/null").map(|m| m.rdev()).ok();
+            // SAFETY: fstat writes into the zeroed struct we own.
+            let mut st: libc::stat = unsafe { std::mem::zeroed() };
+            let ok = unsafe { libc::fstat(fd, &mut st) } == 0;
+            ok && null == Some(st.st_rdev as u64)
+        })
+}
+
+/// Refuse to start when standard output was closed (`>&-`): the output
+/// would be lost without an error.
 pub fn check_open() -> thinjkr::Result<()> {
     #[cfg(unix)]
     {
         use std::os::fd::AsRawFd;
-        use std::os::unix::fs::MetadataExt;
-        let fd = std::io::stdout().as_raw_fd();
-        // SAFETY: fcntl with F_GETFL only queries the descriptor's flags.
-        let flags = unsafe { libc::fcntl(fd, libc::F_GETFL) };
-        let closed = flags == -1
-            || (flags & libc::O_ACCMODE == libc::O_RDWR && {
-                let null = std::fs::metadata("/dev/null").map(|m| m.rdev()).ok();
-                // SAFETY: fstat writes into the zeroed struct we own.
-                let mut st: libc::stat = unsafe { std::mem::zeroed() };
-                let ok = unsafe { libc::fstat(fd, &mut st) } == 0;
-                ok && null == Some(st.st_rdev as u64)
-            });
-        if closed {
+        if closed_at_start(std::io::stdout().as_raw_fd()) {
             return Err(thinjkr::Error::Io(
                 "standard output is closed: nothing could be written".into(),
             ));
         }
     }
     Ok(())
+}
+
+/// Refuse to read standard input when it was closed (`<&-`): it would read
+/// as an empty input, and an empty answer would look like a success.
+pub fn check_input_open() -> thinjkr::Result<()> {
+    #[cfg(unix)]
+    {
+        use std::os::fd::AsRawFd;
+        if closed_at_start(std::io::stdin().as_raw_fd()) {
+            return Err(thinjkr::Error::Io(
+                "standard input is closed: there are no lines to read (give them on standard input, e.g. < in.csv)".into(),
+            ));
+        }
+    }
+    Ok(())
+}
+
+static STDERR_FAILED: AtomicBool = AtomicBool::new(false);
+
+/// Write one line to standard error (a warning, a line's error, the final
+/// error). It never panics and never stops the work: what goes to standard
+/// output still matters. A closed pipe there is the reader's choice and
+/// ignored; any other failure (a full disk) is remembered, and the program
+/// then ends with a nonzero status ([`stderr_failed`]).
+pub fn err_line(args: std::fmt::Arguments<'_>) {
+    let mut e = std::io::stderr().lock();
+    if let Err(w) = e.write_fmt(args).and_then(|()| e.write_all(b"\n")) {
+        if w.kind() != std::io::ErrorKind::BrokenPipe {
+            STDERR_FAILED.store(true, Ordering::Relaxed);
+        }
+    }
+}
+
+/// Whether a line for standard error could not be written (not counting a
+/// closed pipe).
+pub fn stderr_failed() -> bool {
+    STDERR_FAILED.load(Ordering::Relaxed)
+}
+
+/// `eprintln!` that cannot panic ([`err_line`]).
+macro_rules! errln {
+    ($($t:tt)*) => { $crate::output::err_line(format_args!($($t)*)) };
 }
 
 /// `println!` that returns an I/O error instead of panicking.

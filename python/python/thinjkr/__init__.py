@@ -84,6 +84,16 @@ def models() -> List[Tuple[str, str]]:
     return [(n, d) for n, d in _thinjkr.models()]
 
 
+def _whole(name: str, value, lo: int, hi: int) -> int:
+    """A count the user gave: a whole number in lo ..= hi (a bool, a
+    fraction or a number out of range is refused, naming the parameter)."""
+    ok = not isinstance(value, bool) and isinstance(value, (int, float, _np.integer, _np.floating))
+    if ok and _np.isfinite(value) and float(value) == int(value) and lo <= int(value) <= hi:
+        return int(value)
+    raise InvalidInput(f"parameter {name} = {value!r} is outside its allowed range: "
+                       f"a whole number {lo} ..= {hi}", kind="out_of_range")
+
+
 def _control(delta, force, a) -> Tuple[str, Any]:
     given = [(k, v) for k, v in (("delta", delta), ("force", force), ("a", a)) if v is not None]
     if len(given) != 1:
@@ -191,7 +201,8 @@ def curve(rho: float, *, model: str = "max", points: int = 200, delta_start: flo
     """The curve of a model of the ellipse or of ``conformal:K`` at ``rho``
     from δ̄ = ``delta_start`` past pull-off and its folds, ``points`` states
     evenly spaced in arclength (the paper's Figs. 6–8)."""
-    d = _json.loads(_call(_thinjkr.curve, model, float(rho), int(points), float(delta_start)))
+    points = _whole("points", points, 2, _thinjkr.MAX_CURVE_POINTS)
+    d = _json.loads(_call(_thinjkr.curve, model, float(rho), points, float(delta_start)))
     states = [_state_from(s) for s in d["states"]]
     folds = [(f["kind"], _state_from(f["state"])) for f in d["folds"]]
     return Curve(states, folds, d.get("arm"), d.get("beyond_size_fold"), d.get("end"))

@@ -10,13 +10,13 @@ import json as _json
 import numpy as _np
 
 from . import _thinjkr
-from . import _call, _control, _state_from, State
+from . import _call, _control, _state_from, _whole, State
 
 
 def _with_contour(d, points: int) -> State:
     st = _state_from(d)
     fields = {"model": "exact", **st.to_dict()}
-    x, y = _call(_thinjkr.exact_contour, _json.dumps(d["contour"]), int(points))
+    x, y = _call(_thinjkr.exact_contour, _json.dumps(d["contour"]), _whole("points", points, 3, _thinjkr.MAX_CURVE_POINTS))
     fields["x"] = _np.asarray(x)
     fields["y"] = _np.asarray(y)
     return State(fields)
@@ -46,4 +46,4 @@ def pull_off(rho: float, *, points: int = 256, modes=None) -> State:
 
 
 def _modes(modes):
-    return None if modes is None else int(modes)
+    return None if modes is None else _whole("modes", modes, 1, _thinjkr.MAX_USER_MODES)

@@ -167,13 +167,16 @@ fn screen(
     from: f64,
     to: f64,
 ) -> Result<(Conformal, Vec<f64>, Vec<Option<ConformalState>>)> {
-    let count = ((to - from) / STEP).round() as usize + 1;
+    // the grid's size is bounded before it is computed (a `to` of 1e300
+    // must not overflow the count, nor wrap to an empty screen)
+    let steps = ((to - from) / STEP).round();
     crate::error::check_range(
         "to",
         to,
-        count <= MAX_GRID,
+        steps.is_finite() && steps >= 0.0 && steps < MAX_GRID as f64,
         "at most from + 9.99 (a screen of at most 1000 grid points)",
     )?;
+    let count = steps as usize + 1;
     let model: Conformal = crate::conformal::exact_seed().ok_or_else(|| {
         Error::NoState("no contour family in the registry seeds the exact solver".into())
     })?;
@@ -948,7 +951,7 @@ fn fold_from(
             what: format!(
                 "the band edge of the exact family traced from a = {:.2} at rho = {} ({})",
                 near.a_bar,
-                rho,
+                crate::error::short(rho),
                 last_error.unwrap_or_else(|| "no truncation resolves the fold".into())
             ),
             residual: f64::NAN,

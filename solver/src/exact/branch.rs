@@ -44,11 +44,12 @@ pub const PAST_FOLD_DEPARTURE: f64 = 0.1;
 /// The most steps of a trace past a fold.
 pub const PAST_FOLD_STEPS: usize = 400;
 
-/// The richest model's (`conformal:8`) load-controlled pull-off at `rho`,
-/// where it has one: the start of the exact pull-off's trace.
+/// The seeding model's (the largest member of the family that seeds the
+/// exact solver, `conformal:8`) load-controlled pull-off at `rho`, where it
+/// has one: the start of the exact pull-off's trace.
 pub fn model_pull_off(rho: f64) -> Option<crate::conformal::ConformalState> {
     use crate::conformal::{Conformal, PullOffControl};
-    let model: Conformal = crate::conformal::members().last()?;
+    let model: Conformal = crate::conformal::exact_seed()?;
     model
         .pull_off(rho, PullOffControl::Load)
         .ok()
@@ -121,6 +122,19 @@ pub enum ExactControl {
     Delta(f64),
     /// The force F̄ (F̄ = 0: the zero-force state).
     Force(f64),
+}
+
+impl ExactControl {
+    /// The control's value, refused unless finite (an [`Error::OutOfRange`]
+    /// naming `delta` or `force`): NaN or ∞ is bad input, not a force no
+    /// state reaches.
+    pub fn check_finite(self) -> Result<Self> {
+        let (name, v) = match self {
+            ExactControl::Delta(v) => ("delta", v),
+            ExactControl::Force(v) => ("force", v),
+        };
+        crate::error::check_range(name, v, true, "finite").map(|_| self)
+    }
 }
 
 impl std::fmt::Display for ExactControl {
@@ -729,8 +743,8 @@ impl Exact {
     /// below 1e-2); the caller decides whether it is resolved.
     fn from_model(&self, control: ExactControl) -> Option<ExactState> {
         use crate::conformal::{Conformal, Control};
-        // the richest member generated
-        let model: Conformal = crate::conformal::members().last()?;
+        // the seeding family's largest member
+        let model: Conformal = crate::conformal::exact_seed()?;
         let guess = model
             .solve(
                 self.rho,

@@ -320,6 +320,7 @@ pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<
 /// continued in ρ at the control from the state at a larger ρ
 /// ([`continued_in_rho`]).
 pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
+    control.check_finite()?;
     match at_searched(rho, control, &default_tries()) {
         // not reached, and not in a band: from the state at a larger ρ
         Err(Error::NoState(why)) if !why.starts_with("no near-elliptic exact state") => {
@@ -344,6 +345,7 @@ pub fn at_searched(
     control: branch::ExactControl,
     tries: &[Truncation],
 ) -> Result<ExactState> {
+    control.check_finite()?;
     at_with(rho, control, tries).or_else(|e| {
         bands::past_folds_or_band(rho, control, branch::circle_a_bar(control), tries, e)
     })

@@ -1,0 +1,51 @@
+"""Bad input from Python gets the command line's typed answer: a NaN or an
+infinite control is InvalidInput (not NoState), a count must be a whole
+number in its range (no silent rounding, no OverflowError), and an unknown
+model is named with the models there are."""
+
+import math
+
+import pytest
+
+import thinjkr
+from thinjkr import InvalidInput
+
+
+@pytest.mark.parametrize("value", [float("nan"), math.inf, -math.inf])
+def test_a_control_that_is_not_finite_is_invalid_input_for_the_exact_solver(value):
+    with pytest.raises(InvalidInput, match="force"):
+        thinjkr.exact.solve(0.8, force=value)
+    with pytest.raises(InvalidInput, match="delta"):
+        thinjkr.exact.solve(0.8, delta=value)
+    with pytest.raises(InvalidInput, match="force"):
+        thinjkr.solve(0.8, force=value, model="exact")
+
+
+@pytest.mark.parametrize("model", ["max", "conformal:4"])
+@pytest.mark.parametrize("value", [float("nan"), math.inf])
+def test_a_control_that_is_not_finite_is_invalid_input_for_every_model(model, value):
+    with pytest.raises(InvalidInput):
+        thinjkr.solve(0.8, force=value, model=model)
+
+
+@pytest.mark.parametrize("points", [2.5, -1, True, 0, 10**6, "7", float("nan")])
+def test_a_count_must_be_a_whole_number_in_its_range(points):
+    with pytest.raises(InvalidInput, match="points"):
+        thinjkr.curve(0.8, points=points)
+
+
+def test_a_whole_float_count_is_accepted():
+    assert len(thinjkr.curve(0.8, points=20.0).states) == 20
+
+
+@pytest.mark.parametrize("modes", [2.5, 0, -3, 97, False])
+def test_the_exact_solvers_modes_are_a_whole_number_in_range(modes):
+    with pytest.raises(InvalidInput, match="modes"):
+        thinjkr.exact.zero_force(0.8, modes=modes)
+
+
+def test_an_unknown_model_names_the_models_there_are():
+    with pytest.raises(InvalidInput) as e:
+        thinjkr.solve(0.8, force=0.0, model="foo")
+    text = str(e.value)
+    assert "foo" in text and "conformal:K" in text and "NaN" not in text
