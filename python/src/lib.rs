@@ -17,10 +17,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 use thinjkr::batch::{solve_all, Given, Item};
-use thinjkr::conformal::{self, Conformal, PullOffControl};
+
 use thinjkr::exact::branch::ExactControl;
-use thinjkr::registry::Choice;
-use thinjkr::{Contact, Error, ModelId};
+use thinjkr::fold::FoldCondition;
+use thinjkr::registry::{Choice, Hold};
+use thinjkr::{Contact, Error};
 
 pyo3::create_exception!(
     _thinjkr,
@@ -55,47 +56,11 @@ fn models() -> Vec<(String, String)> {
         .collect()
 }
 
-/// One state at `control` in {"delta", "force", "a"} = `value`, as JSON.
+/// One state at `control` in {"delta", "force", "a"} = `value`, as JSON
+/// (the model layer, `thinjkr::registry`; at a given ā the state before
+/// the contact-size fold).
 fn solve_one(model: Choice, rho: f64, control: &str, value: f64) -> thinjkr::Result<String> {
-    match model {
-        Choice::Ellipse(m) => {
-            let c = Contact::with_model(m, rho)?;
-            let st = match control {
-                "delta" => c.at_displacement(value)?,
-                "force" => c.at_load(value)?,
-                _ => c
-                    .at_contact_size(value)?
-                    .into_iter()
-                    .next()
-                    .ok_or_else(|| {
-                        Error::NoState(format!("no state with a = {value} at rho = {rho}"))
-                    })?,
-            };
-            Ok(json(&st))
-        }
-        Choice::Contour(m) => {
-            let ctl = match control {
-                "delta" => conformal::Control::Delta(value),
-                "force" => conformal::Control::Force(value),
-                _ => conformal::Control::Size(value),
-            };
-            Ok(json(&m.solve(rho, ctl)?))
-        }
-        Choice::Exact => {
-            let ctl = match control {
-                "delta" => ExactControl::Delta(value),
-                "force" => ExactControl::Force(value),
-                _ => {
-                    return Err(Error::Unavailable {
-                        model: "exact",
-                        what: "a state at given contact size from the Python API".into(),
-                        why: "the exact solver is asked by approach or force",
-                    })
-                }
-            };
-            Ok(json(&thinjkr::exact::at_resolved(rho, ctl)?))
-        }
-    }
+    Ok(json(&model.state(rho, Hold::named(control, value)?)?))
 }
 
 fn check_control(control: &str) -> PyResult<()> {
@@ -266,41 +231,20 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
         }
     };
     py.detach(move || -> thinjkr::Result<String> {
-        match m {
-            Choice::Ellipse(id) => {
-                let c = Contact::with_model(id, rho)?;
-                let p = if load {
-                    c.pull_off_load()?
-                } else {
-                    c.pull_off_displacement()?
-                };
-                Ok(json(&serde_json::json!({
-                    "state": p.state,
-                    "basis": p.basis,
-                    "basis_words": p.basis.describe(),
-                })))
-            }
-            Choice::Contour(k) => {
-                let ctl = if load {
-                    PullOffControl::Load
-                } else {
-                    PullOffControl::Displacement
-                };
-                let (st, _) = k.pull_off(rho, ctl)?;
-                Ok(json(&serde_json::json!({ "state": st })))
-            }
-            Choice::Exact => {
-                if !load {
-                    return Err(Error::Unavailable {
-                        model: "exact",
-                        what: "a displacement-controlled pull-off".into(),
-                        why: "the exact solver locates the load-controlled one",
-                    });
-                }
-                let (st, _) = thinjkr::exact::pull_off_resolved(rho)?;
-                Ok(json(&serde_json::json!({ "state": st })))
-            }
-        }
+        let control = if load {
+            FoldCondition::Load
+        } else {
+            FoldCondition::Displacement
+        };
+        let p = m.pull_off(rho, control)?;
+        Ok(json(&match p.basis {
+            Some(basis) => serde_json::json!({
+                "state": p.state,
+                "basis": basis,
+                "basis_words": basis.describe(),
+            }),
+            None => serde_json::json!({ "state": p.state }),
+        }))
     })
     .map_err(raw)
 }

@@ -1,10 +1,11 @@
-//! The command line for the family `conformal:K`: states at given δ̄, F̄ or
-//! ā, pull-off under either control, zero force, printed for a person or as
-//! JSON.
+//! The command line for the contour families: a state printed for a person
+//! (solved through the model layer, `thinjkr::registry`), and the pull-off
+//! under either control with the folds it passed, for a person or as JSON.
 //!
-//! Owns: the printing of conformal states. May use: `thinjkr::conformal`.
+//! Owns: the printing of contour-family states. May use: `thinjkr::conformal`,
+//! `thinjkr::report`.
 
-use thinjkr::conformal::{Conformal, ConformalState, Control, Extremum, PullOffControl};
+use thinjkr::conformal::{Conformal, ConformalState, Extremum, PullOffControl};
 use thinjkr::report::{AnyState, Document, Passed};
 
 fn modes(st: &ConformalState) -> String {
@@ -41,31 +42,6 @@ pub fn show(label: &str, st: &ConformalState) -> thinjkr::Result<()> {
     );
     let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();
     outln!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
-    Ok(())
-}
-
-fn emit(label: &str, st: &ConformalState, json: bool) -> thinjkr::Result<()> {
-    if json {
-        let doc = Document::State {
-            state: AnyState::Conformal(st.clone()),
-            models: Vec::new(),
-        };
-        outln!("{}", doc.to_json());
-    } else {
-        show(label, st)?;
-    }
-    Ok(())
-}
-
-/// `solve --model conformal:K`.
-pub fn solve(m: &Conformal, rho: f64, control: Control, json: bool) -> thinjkr::Result<()> {
-    emit("state", &m.solve(rho, control)?, json)?;
-    Ok(())
-}
-
-/// `zero-force --model conformal:K`.
-pub fn zero_force(m: &Conformal, rho: f64, json: bool) -> thinjkr::Result<()> {
-    emit("zero force", &m.zero_force(rho)?, json)?;
     Ok(())
 }
 

@@ -45,6 +45,13 @@ pub enum Error {
     /// The model has no state for the given input.
     #[error("no contact state: {0}")]
     NoState(String),
+    /// The exact solver has no near-elliptic state at the control: it lies
+    /// in a band of the family (an interval of ā where the family folds
+    /// back), and no arm beside the band, followed past its fold, reaches
+    /// it converged. A `no_state` for machine readers, told apart so that
+    /// no decision has to read the words.
+    #[error("no contact state: {0}")]
+    InBand(String),
     /// The request itself is incomplete or contradictory (a usage error,
     /// not a property of the contact).
     #[error("usage: {0}")]
@@ -84,11 +91,23 @@ impl Error {
             Error::OutOfRange { .. } => "out_of_range",
             Error::NoConvergence { .. } => "no_convergence",
             Error::Unresolved { .. } => "unresolved",
-            Error::NoState(_) => "no_state",
+            Error::NoState(_) | Error::InBand(_) => "no_state",
             Error::Usage(_) => "usage",
             Error::Unsupported { .. } => "unsupported",
             Error::Io(_) => "io",
             Error::Unavailable { .. } => "unavailable",
+        }
+    }
+}
+
+impl Error {
+    /// What went wrong without the words of its kind (`no contact state: `,
+    /// `not resolved: `), to nest it in another message.
+    pub fn detail(&self) -> String {
+        match self {
+            Error::NoState(why) | Error::InBand(why) => why.clone(),
+            Error::Unresolved { what, .. } => what.clone(),
+            other => other.to_string(),
         }
     }
 }

@@ -341,6 +341,21 @@ fn modes(v: &[UnstableMode], series_modes: usize) -> String {
     format!("unstable modes {}", parts.join(", "))
 }
 
+/// An exact state in words: its size and load to ten digits, then how
+/// well it is resolved.
+pub fn show_state(label: &str, st: &ExactState) -> thinjkr::Result<()> {
+    outln!(
+        "{label}: rho = {}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
+        st.rho,
+        st.a_bar,
+        st.b_bar,
+        st.s,
+        st.delta_bar,
+        st.force_bar
+    );
+    show_quality(st)
+}
+
 fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
     outln!(
         "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
@@ -552,11 +567,7 @@ pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) ->
         outln!("{}", doc.to_json());
         return Ok(());
     }
-    outln!(
-        "exact state: rho = {rho}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
-        st.a_bar, st.b_bar, st.s, st.delta_bar, st.force_bar
-    );
-    show_quality(&st)?;
+    show_state("exact state", &st)?;
     for (m, r) in &model_states {
         match r {
             Ok(p) => outln!(

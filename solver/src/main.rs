@@ -16,6 +16,7 @@ fn parse_model(s: &str) -> Result<ModelChoice, String> {
 /// A model of the ellipse, a member of a contour family, or the exact
 /// solution of (2)-(3) (`thinjkr::registry`).
 use thinjkr::registry::Choice as ModelChoice;
+use thinjkr::registry::Hold;
 
 #[macro_use]
 mod output;
@@ -226,15 +227,6 @@ enum Format {
     Json,
 }
 
-/// One state as the output schema's document.
-fn state_doc(st: &State) -> String {
-    Document::State {
-        state: AnyState::Ellipse(*st),
-        models: Vec::new(),
-    }
-    .to_json()
-}
-
 /// Whether the subcommand prints JSON (then an error is JSON on stdout too).
 fn wants_json(c: &Option<Command>) -> bool {
     match c {
@@ -300,15 +292,6 @@ fn emit_pull_off(p: &PullOff, as_json: bool) -> thinjkr::Result<()> {
     } else {
         show("pull-off", &p.state)?;
         outln!("  end point: {}", basis(p));
-    }
-    Ok(())
-}
-
-fn emit(label: &str, st: &State, as_json: bool) -> thinjkr::Result<()> {
-    if as_json {
-        outln!("{}", state_doc(st));
-    } else {
-        show(label, st)?;
     }
     Ok(())
 }
@@ -417,67 +400,51 @@ fn solve_command(
     a: Option<f64>,
     j: bool,
 ) -> thinjkr::Result<()> {
-    let model = match model {
-        ModelChoice::Exact => {
-            let control = match (delta, force, a) {
-                (Some(d), _, _) => thinjkr::exact::branch::ExactControl::Delta(d),
-                (_, Some(f), _) => thinjkr::exact::branch::ExactControl::Force(f),
-                (_, _, Some(_)) => {
-                    return Err(thinjkr::Error::Unavailable {
-                        model: "exact",
-                        what: "contact-size control (--a)".into(),
-                        why: "the exact family is traced in arclength; give --delta or --force",
-                    })
-                }
-                _ => return Err(thinjkr::Error::Usage("give one of --delta, --force".into())),
-            };
-            return exact_cli::state(rho, control, &exact_cli::Discretisation::default(), j);
-        }
-        ModelChoice::Contour(m) => {
-            let control = match (delta, force, a) {
-                (Some(d), _, _) => family::Control::Delta(d),
-                (_, Some(f), _) => family::Control::Force(f),
-                (_, _, Some(a)) => family::Control::Size(a),
-                _ => {
-                    return Err(thinjkr::Error::Usage(
-                        "give one of --delta, --force, --a".into(),
-                    ))
-                }
-            };
-            return conformal_cli::solve(&m, rho, control, j);
-        }
-        ModelChoice::Ellipse(m) => m,
-    };
-    let c = Contact::with_model(model, rho)?;
-    match (delta, force, a) {
-        (Some(d), _, _) => emit("state", &c.at_displacement(d)?, j)?,
-        (_, Some(f), _) => emit("state", &c.at_load(f)?, j)?,
-        (_, _, Some(a)) => {
-            let states = c.at_contact_size(a)?;
-            if states.is_empty() {
-                return Err(thinjkr::Error::NoState(format!(
-                    "no state with a = {} at rho = {}",
-                    thinjkr::error::short(a),
-                    thinjkr::error::short(rho)
-                )));
-            }
-            if j && states.len() == 1 {
-                outln!("{}", state_doc(&states[0]));
-            } else if j {
-                let doc = Document::States {
-                    states: states.iter().map(|st| AnyState::Ellipse(*st)).collect(),
-                };
-                outln!("{}", doc.to_json());
-            } else {
-                for st in &states {
-                    show("state", st)?;
-                }
-            }
-        }
+    let hold = match (delta, force, a) {
+        (Some(d), _, _) => Hold::Delta(d),
+        (_, Some(f), _) => Hold::Force(f),
+        (_, _, Some(a)) => Hold::Size(a),
         _ => {
             return Err(thinjkr::Error::Usage(
                 "give one of --delta, --force, --a".into(),
             ))
+        }
+    };
+    // the exact state's report also solves the ellipse models at its
+    // control and prints each one's distance from it
+    use thinjkr::exact::branch::ExactControl;
+    let exact = match (model, hold) {
+        (ModelChoice::Exact, Hold::Delta(d)) => Some(ExactControl::Delta(d)),
+        (ModelChoice::Exact, Hold::Force(f)) => Some(ExactControl::Force(f)),
+        _ => None,
+    };
+    if let Some(control) = exact {
+        return exact_cli::state(rho, control, &exact_cli::Discretisation::default(), j);
+    }
+    show_states("state", &model.states(rho, hold)?, j)
+}
+
+/// States of the models of the ellipse and of the contour families, as
+/// text or as one JSON document (`state`, or `states` for several).
+fn show_states(label: &str, states: &[AnyState], j: bool) -> thinjkr::Result<()> {
+    if j {
+        let doc = match states {
+            [one] => Document::State {
+                state: one.clone(),
+                models: Vec::new(),
+            },
+            many => Document::States {
+                states: many.to_vec(),
+            },
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    for st in states {
+        match st {
+            AnyState::Ellipse(st) => show(label, st)?,
+            AnyState::Conformal(st) => conformal_cli::show(label, st)?,
+            AnyState::Exact(st) => exact_cli::show_state(label, st)?,
         }
     }
     Ok(())
@@ -704,20 +671,16 @@ fn accuracy_command(
 
 /// `thinjkr zero-force`.
 fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> thinjkr::Result<()> {
-    match model {
-        ModelChoice::Exact => exact_cli::state(
+    if let ModelChoice::Exact = model {
+        // the exact state's report, with the ellipse models beside it
+        return exact_cli::state(
             rho,
             thinjkr::exact::branch::ExactControl::Force(0.0),
             &exact_cli::Discretisation::default(),
             j,
-        ),
-        ModelChoice::Contour(m) => conformal_cli::zero_force(&m, rho, j),
-        ModelChoice::Ellipse(model) => emit(
-            "zero force",
-            &Contact::with_model(model, rho)?.zero_force()?,
-            j,
-        ),
+        );
     }
+    show_states("zero force", &[model.zero_force(rho)?], j)
 }
 
 /// `thinjkr models`.
@@ -823,9 +786,8 @@ fn physical(
     delta: Option<f64>,
     json: bool,
 ) -> thinjkr::Result<()> {
-    use thinjkr::exact::branch::ExactControl;
     let sc = cyl.scales()?;
-    let (force_si, delta_si) = (force, delta);
+    let force_si = force;
     // a value the user typed, scaled: refused in the user's units when it
     // is not finite or its scaled value is not (1e308 N over a millinewton
     // scale is no number)
@@ -856,63 +818,29 @@ fn physical(
         let (thinjkr::Error::OutOfRange { name: "force", .. }, Some(typed)) = (&e, force_si) else {
             return e;
         };
-        let floor = match model {
-            ModelChoice::Ellipse(m) => Contact::with_model(m, sc.rho)
-                .and_then(|c| c.pull_off_load().map(|p| p.state.force_bar)),
-            ModelChoice::Contour(m) => m
-                .pull_off(sc.rho, family::PullOffControl::Load)
-                .map(|(p, _)| p.force_bar),
-            ModelChoice::Exact => {
-                thinjkr::exact::pull_off_resolved(sc.rho).map(|(p, _)| p.force_bar)
-            }
-        };
-        match floor {
-            Ok(f) => thinjkr::Error::OutOfRange {
+        match model.pull_off(sc.rho, thinjkr::fold::FoldCondition::Load) {
+            Ok(p) => thinjkr::Error::OutOfRange {
                 name: "force",
                 value: typed,
                 range: format!(
                     "[{} N, ∞): from the pull-off force of this contact (model {})",
-                    thinjkr::error::short(f * sc.force),
-                    match model {
-                        ModelChoice::Ellipse(m) => m.name().to_string(),
-                        ModelChoice::Contour(m) => m.name(),
-                        ModelChoice::Exact => "exact".into(),
-                    }
+                    thinjkr::error::short(p.state.size_and_load().3 * sc.force),
+                    model.name()
                 )
                 .into(),
             },
             Err(_) => e,
         }
     };
-    let _ = delta_si;
-    let state = (|| -> thinjkr::Result<AnyState> {
-        Ok(match model {
-            ModelChoice::Ellipse(m) => {
-                let c = Contact::with_model(m, sc.rho)?;
-                AnyState::Ellipse(match (force, delta) {
-                    (Some(f), _) => c.at_load(f)?,
-                    (_, Some(d)) => c.at_displacement(d)?,
-                    _ => c.pull_off_load()?.state,
-                })
-            }
-            ModelChoice::Contour(m) => AnyState::Conformal(match (force, delta) {
-                (Some(f), _) => m.solve(sc.rho, family::Control::Force(f))?,
-                (_, Some(d)) => m.solve(sc.rho, family::Control::Delta(d))?,
-                _ => m.pull_off(sc.rho, family::PullOffControl::Load)?.0,
-            }),
-            ModelChoice::Exact => AnyState::Exact(Box::new(match (force, delta) {
-                (Some(f), _) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Force(f))?,
-                (_, Some(d)) => thinjkr::exact::at_resolved(sc.rho, ExactControl::Delta(d))?,
-                _ => thinjkr::exact::pull_off_resolved(sc.rho)?.0,
-            })),
-        })
-    })()
+    let state = match (force, delta) {
+        (Some(f), _) => model.state(sc.rho, Hold::Force(f)),
+        (_, Some(d)) => model.state(sc.rho, Hold::Delta(d)),
+        _ => model
+            .pull_off(sc.rho, thinjkr::fold::FoldCondition::Load)
+            .map(|p| p.state),
+    }
     .map_err(in_si)?;
-    let (a_bar, b_bar, delta_bar, force_bar) = match &state {
-        AnyState::Ellipse(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
-        AnyState::Conformal(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
-        AnyState::Exact(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
-    };
+    let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
     let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
     let mut warnings = Vec::new();
     if sc.rho < 0.8 {

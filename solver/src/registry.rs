@@ -6,9 +6,17 @@
 //! are built from here, so that a family added as a data file appears in all
 //! of them without an edit.
 //!
-//! Owns: [`Choice`], [`Entry`], [`parse`], [`entries`], [`help`]. May use:
-//! `generated` (the ellipse models), `conformal` (the families), `contact`
-//! (the ellipse models' smallest ρ), `report` (the entry's shape).
+//! Above the model families it is the one model layer: a [`Choice`]
+//! answers the verbs every front end asks, a state at a control ([`Hold`],
+//! one vocabulary for every model), the zero-force state and the pull-off,
+//! over the models of the ellipse, the contour families and the exact
+//! solver alike, so that the Python package and `physical` do not dispatch
+//! over kinds of model themselves.
+//!
+//! Owns: [`Choice`], [`Hold`], [`PullOffAnswer`], [`Entry`], [`parse`],
+//! [`entries`], [`help`]. May use: `generated` (the ellipse models),
+//! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
+//! answers' shapes), `batch` (quoting).
 
 use crate::conformal::{families, Conformal};
 use crate::ModelId;
@@ -137,4 +145,201 @@ pub fn entries() -> Vec<Entry> {
         controls: vec!["delta".into(), "force".into()],
     });
     out
+}
+
+/// What a state is held at, one vocabulary for every model: the approach
+/// δ̄, the force F̄, or the contact size ā.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Hold {
+    /// Given δ̄.
+    Delta(f64),
+    /// Given F̄.
+    Force(f64),
+    /// Given ā.
+    Size(f64),
+}
+
+impl Hold {
+    /// The control named as the command line and Python name it (`delta`,
+    /// `force`, `a`), at `value`.
+    pub fn named(control: &str, value: f64) -> crate::Result<Hold> {
+        match control {
+            "delta" => Ok(Hold::Delta(value)),
+            "force" => Ok(Hold::Force(value)),
+            "a" => Ok(Hold::Size(value)),
+            other => Err(crate::Error::Usage(format!(
+                "the control is delta, force or a (got '{}')",
+                crate::batch::quote_start(other).trim_matches('"')
+            ))),
+        }
+    }
+}
+
+/// A pull-off of any model: the state, the control whose branch it ends,
+/// what ends it there (the models of the ellipse say), and what the trace
+/// passed on the way.
+#[derive(Clone, Debug)]
+pub struct PullOffAnswer {
+    /// The state.
+    pub state: crate::report::AnyState,
+    /// The control whose branch it ends.
+    pub control: crate::fold::FoldCondition,
+    /// What ends the branch there, for the models of the ellipse.
+    pub basis: Option<crate::FoldBasis>,
+    /// The events the trace passed.
+    pub passed: Vec<crate::report::Passed>,
+}
+
+impl Choice {
+    /// The model's name (`max`, `conformal:8`, `exact`).
+    pub fn name(&self) -> String {
+        match self {
+            Choice::Ellipse(m) => m.name().to_string(),
+            Choice::Contour(m) => m.name(),
+            Choice::Exact => EXACT.into(),
+        }
+    }
+
+    /// Every state of the model at `hold`: one, except for a model of the
+    /// ellipse at a given ā, which may have a state on each side of its
+    /// contact-size fold (first the one before it). The exact solver is
+    /// asked by δ̄ or F̄ (with its default escalation and, where no route
+    /// finds the state, the continuation in ρ).
+    pub fn states(&self, rho: f64, hold: Hold) -> crate::Result<Vec<crate::report::AnyState>> {
+        use crate::report::AnyState;
+        Ok(match *self {
+            Choice::Ellipse(m) => {
+                let c = crate::Contact::with_model(m, rho)?;
+                match hold {
+                    Hold::Delta(d) => vec![AnyState::Ellipse(c.at_displacement(d)?)],
+                    Hold::Force(f) => vec![AnyState::Ellipse(c.at_load(f)?)],
+                    Hold::Size(a) => {
+                        let states = c.at_contact_size(a)?;
+                        if states.is_empty() {
+                            return Err(crate::Error::NoState(format!(
+                                "no state with a = {} at rho = {}",
+                                crate::error::short(a),
+                                crate::error::short(rho)
+                            )));
+                        }
+                        states.into_iter().map(AnyState::Ellipse).collect()
+                    }
+                }
+            }
+            Choice::Contour(m) => {
+                use crate::conformal::Control;
+                let control = match hold {
+                    Hold::Delta(d) => Control::Delta(d),
+                    Hold::Force(f) => Control::Force(f),
+                    Hold::Size(a) => Control::Size(a),
+                };
+                vec![AnyState::Conformal(m.solve(rho, control)?)]
+            }
+            Choice::Exact => {
+                use crate::exact::branch::ExactControl;
+                let control = match hold {
+                    Hold::Delta(d) => ExactControl::Delta(d),
+                    Hold::Force(f) => ExactControl::Force(f),
+                    Hold::Size(_) => {
+                        return Err(crate::Error::Unavailable {
+                            model: "exact",
+                            what: "state at a given contact size".into(),
+                            why: "the exact family is traced in arclength; give delta or force",
+                        })
+                    }
+                };
+                vec![AnyState::Exact(Box::new(crate::exact::at_resolved(
+                    rho, control,
+                )?))]
+            }
+        })
+    }
+
+    /// The model's state at `hold` (at a given ā, the one before the
+    /// contact-size fold: [`Choice::states`] has them all).
+    pub fn state(&self, rho: f64, hold: Hold) -> crate::Result<crate::report::AnyState> {
+        let mut states = self.states(rho, hold)?;
+        // states() returns at least one state or an error
+        Ok(states.swap_remove(0))
+    }
+
+    /// The zero-force state (F̄ = 0 on the branch from large loads).
+    pub fn zero_force(&self, rho: f64) -> crate::Result<crate::report::AnyState> {
+        use crate::report::AnyState;
+        match *self {
+            Choice::Ellipse(m) => Ok(AnyState::Ellipse(
+                crate::Contact::with_model(m, rho)?.zero_force()?,
+            )),
+            Choice::Contour(m) => Ok(AnyState::Conformal(m.zero_force(rho)?)),
+            Choice::Exact => self.state(rho, Hold::Force(0.0)),
+        }
+    }
+
+    /// The pull-off: where the branch from large loads ends under load
+    /// control (the first minimum of F̄) or displacement control (the first
+    /// extremum of δ̄; not located for `exact`).
+    pub fn pull_off(
+        &self,
+        rho: f64,
+        control: crate::fold::FoldCondition,
+    ) -> crate::Result<PullOffAnswer> {
+        use crate::fold::FoldCondition;
+        use crate::report::{AnyState, Passed};
+        let load = match control {
+            FoldCondition::Load => true,
+            FoldCondition::Displacement => false,
+            other => {
+                return Err(crate::Error::Usage(format!(
+                    "a pull-off ends load or displacement control, not {other:?}"
+                )))
+            }
+        };
+        Ok(match *self {
+            Choice::Ellipse(m) => {
+                let c = crate::Contact::with_model(m, rho)?;
+                let p = if load {
+                    c.pull_off_load()?
+                } else {
+                    c.pull_off_displacement()?
+                };
+                PullOffAnswer {
+                    state: AnyState::Ellipse(p.state),
+                    control: p.control,
+                    basis: Some(p.basis),
+                    passed: Vec::new(),
+                }
+            }
+            Choice::Contour(m) => {
+                use crate::conformal::PullOffControl;
+                let under = if load {
+                    PullOffControl::Load
+                } else {
+                    PullOffControl::Displacement
+                };
+                let (st, folds) = m.pull_off(rho, under)?;
+                PullOffAnswer {
+                    state: AnyState::Conformal(st),
+                    control,
+                    basis: None,
+                    passed: Passed::from_conformal(&folds),
+                }
+            }
+            Choice::Exact if !load => {
+                return Err(crate::Error::Unavailable {
+                    model: "exact",
+                    what: "a displacement-controlled pull-off".into(),
+                    why: "the exact solver locates the load-controlled one",
+                })
+            }
+            Choice::Exact => {
+                let (st, events) = crate::exact::pull_off_resolved(rho)?;
+                PullOffAnswer {
+                    state: AnyState::Exact(Box::new(st)),
+                    control,
+                    basis: None,
+                    passed: Passed::from_exact(&events),
+                }
+            }
+        })
+    }
 }

@@ -35,6 +35,17 @@ pub enum AnyState {
     Exact(Box<ExactState>),
 }
 
+impl AnyState {
+    /// (ā, b̄, δ̄, F̄) of the state, whatever its model.
+    pub fn size_and_load(&self) -> (f64, f64, f64, f64) {
+        match self {
+            AnyState::Ellipse(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
+            AnyState::Conformal(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
+            AnyState::Exact(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
+        }
+    }
+}
+
 /// A fold of a curve, of any model.
 #[derive(Clone, Debug, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]

@@ -359,8 +359,13 @@ fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
 /// no number.
 #[test]
 fn a_force_no_arm_reaches_converged_is_said_to_lie_in_its_band() {
+    // a typed outcome: the band is told apart from a force no start
+    // reaches by its variant, not by its words (which are the same kind,
+    // `no_state`, for machine readers)
     match thinjkr::exact::at_resolved(0.4, ExactControl::Force(6.0)) {
-        Err(Error::NoState(why)) => {
+        Err(e @ Error::InBand(_)) => {
+            assert_eq!(e.kind(), "no_state");
+            let why = e.detail();
             for words in [
                 "no near-elliptic exact state at force = 6 for rho = 0.4",
                 "lies in the band 3.2744 < a < 3.3835, mode cos 8θ",

@@ -824,13 +824,7 @@ impl Conformal {
             Ok(x) => x,
             Err(first) => self
                 .bracketed_by_sizes(rho, control, a_circle)
-                .map_err(|e| {
-                    Error::NoState(format!(
-                        "{}; {}",
-                        first.to_string().trim_start_matches("no contact state: "),
-                        e.to_string().trim_start_matches("no contact state: ")
-                    ))
-                })?,
+                .map_err(|e| Error::NoState(format!("{}; {}", first.detail(), e.detail())))?,
         };
         self.state(&x, rho)
     }
@@ -960,7 +954,7 @@ impl Conformal {
             .map_err(|e| match direct {
                 Err(first) => Error::NoState(format!(
                     "{first}; continued in rho from above: {}",
-                    e.to_string().trim_start_matches("no contact state: ")
+                    e.detail()
                 )),
                 Ok(_) => e,
             })

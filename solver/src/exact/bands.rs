@@ -729,7 +729,7 @@ pub fn past_folds_or_band(
                     .mode
                     .map(|n| format!(", mode cos {n}θ"))
                     .unwrap_or_default();
-                return Err(Error::NoState(format!(
+                return Err(Error::InBand(format!(
                     "no near-elliptic exact state at {control} for rho = {}: that {name} lies in the band {:.4} < a < {:.4}{mode} (its edges, where the family folds back, have {name} = {:.4} and {:.4}), and no arm beside it, followed past its fold, reaches it converged ({})",
                     crate::error::short(rho),
                     band.lower.a_bar,

@@ -182,7 +182,7 @@ fn not_converged(rho: f64, bc_error: f64, modes: usize, last: Error) -> Error {
             bc_error,
             modes,
             CONVERGED,
-            last.to_string().trim_start_matches("not resolved: ")
+            last.detail()
         ),
         residual: bc_error,
     }
@@ -251,12 +251,7 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
                 )
             })
             .and_then(|(start, _)| pull_off_continued_in_rho(&start, rho))
-            .map_err(|more| {
-                Error::NoState(format!(
-                    "{why}; {}",
-                    more.to_string().trim_start_matches("no contact state: ")
-                ))
-            }),
+            .map_err(|more| Error::NoState(format!("{why}; {}", more.detail()))),
         other => other,
     }
 }
@@ -323,14 +318,9 @@ pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState
     control.check_finite()?;
     match at_searched(rho, control, &default_tries()) {
         // not reached, and not in a band: from the state at a larger ρ
-        Err(Error::NoState(why)) if !why.starts_with("no near-elliptic exact state") => {
-            from_larger_rho(rho, control).map_err(|more| {
-                Error::NoState(format!(
-                    "{why}; {}",
-                    more.to_string().trim_start_matches("no contact state: ")
-                ))
-            })
-        }
+        // (a value in a band, Error::InBand, is answered as it is)
+        Err(Error::NoState(why)) => from_larger_rho(rho, control)
+            .map_err(|more| Error::NoState(format!("{why}; {}", more.detail()))),
         other => other,
     }
 }

@@ -14,7 +14,7 @@
 use super::branch::ExactControl;
 use super::{at_resolved, pull_off_resolved, Exact, ExactState, Truncation};
 use crate::conformal::{Conformal, ConformalState, Control, PullOffControl};
-use crate::{Contact, ModelId, State};
+use crate::{Contact, Error, ModelId, State};
 
 /// The radii ratios of the table.
 pub const RHOS: [f64; 10] = [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1];
@@ -50,7 +50,7 @@ pub struct Row {
     /// The quantity.
     pub quantity: Quantity,
     /// The exact state, or the error's text.
-    pub exact: Result<ExactState, String>,
+    pub exact: Result<ExactState, Error>,
     /// Each model's state, or the error's text.
     pub models: Vec<(ModelId, Result<State, String>)>,
     /// The states of the compared contour-family members
@@ -76,8 +76,7 @@ pub fn row(rho: f64, quantity: Quantity) -> Row {
         Quantity::PullOff => pull_off_resolved(rho).map(|(s, _)| s),
         Quantity::ZeroForce => at_resolved(rho, ExactControl::Force(0.0)),
         Quantity::Force10 => at_resolved(rho, ExactControl::Force(10.0)),
-    }
-    .map_err(|e| e.to_string());
+    };
     let models = ModelId::ALL
         .iter()
         .map(|&m| {
@@ -201,11 +200,12 @@ pub fn render_row(r: &Row) -> String {
                 });
             }
         }
-        Err(why) => {
-            let short = if why.starts_with("not resolved") {
-                cell(why)
+        Err(e) => {
+            let why = e.to_string();
+            let short = if matches!(e, Error::Unresolved { .. }) {
+                cell(&why)
             } else {
-                format!("no exact value: {}", cell(why))
+                format!("no exact value: {}", cell(&why))
             };
             cells.push(short);
             for _ in &r.models {
