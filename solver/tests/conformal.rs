@@ -213,3 +213,49 @@ fn the_curve_holds_the_pull_off_and_at_rho_one_the_circle() {
         .expect("a load fold");
     assert!((load.state.force_bar + 1.5 * std::f64::consts::PI).abs() < 1e-10);
 }
+
+/// Near the circle's pull-off (F̄ = −3π/2 at ā³ = 12) both of the circle's
+/// states at a force lie between two samples of the scan along its
+/// explicit branch; the stable one must still be found (issue 31, item 5:
+/// F̄ = −4.62, −4.63, −4.65, −4.655 had said "no adhesive circular state",
+/// and the exact solver, started from conformal:8, "not reached").
+#[test]
+fn forces_just_above_the_circles_pull_off_have_their_stable_state() {
+    let a_pull_off = 12f64.cbrt();
+    for f in [
+        -4.60, -4.62, -4.63, -4.65, -4.655, -4.66, -4.70, -4.71, -4.712,
+    ] {
+        let circle = Conformal::member("conformal", 1)
+            .unwrap()
+            .solve(1.0, Control::Force(f))
+            .unwrap_or_else(|e| panic!("conformal:1 at F = {f}: {e}"));
+        assert!(
+            circle.a_bar > a_pull_off && (circle.force_bar - f).abs() < 1e-10,
+            "F = {f}: a = {}, force {}",
+            circle.a_bar,
+            circle.force_bar
+        );
+        for k in [4, 8] {
+            let st = Conformal::member("conformal", k)
+                .unwrap()
+                .solve(1.0, Control::Force(f))
+                .unwrap_or_else(|e| panic!("conformal:{k} at F = {f}: {e}"));
+            // every member holds the circle at rho = 1
+            assert!((st.a_bar - circle.a_bar).abs() < 1e-9, "K = {k}, F = {f}");
+        }
+    }
+    for f in [-4.62, -4.65, -4.655] {
+        let ex = thinjkr::exact::at_resolved(1.0, thinjkr::exact::branch::ExactControl::Force(f))
+            .unwrap_or_else(|e| panic!("exact at F = {f}: {e}"));
+        let circle = Conformal::member("conformal", 1)
+            .unwrap()
+            .solve(1.0, Control::Force(f))
+            .unwrap();
+        assert!(
+            (ex.a_bar - circle.a_bar).abs() < 1e-8,
+            "F = {f}: {} vs {}",
+            ex.a_bar,
+            circle.a_bar
+        );
+    }
+}

@@ -708,46 +708,66 @@ impl Conformal {
             Control::Force(f) => f,
             Control::Size(a) => return at(a).map(|(x, _)| (x, None)).ok_or_else(|| no_circle(a)),
         };
+        // the crossing of the circle's explicit branch in [a_lo, a_hi]
+        // (values of opposite signs there) by the Illinois method to
+        // round-off (cheap: the circle's rows), then Newton in every unknown
+        // (which finds it solved)
+        let cross =
+            |(a_hi, f_hi): (f64, f64), (a_lo, f_lo): (f64, f64), mut start: DVector<f64>| {
+                // (a_keep, f_keep) is the retained end, (a_new, f_new) the latest
+                // iterate
+                let (mut a_keep, mut f_keep, mut a_new, mut f_new) = (a_hi, f_hi, a_lo, f_lo);
+                for _ in 0..100 {
+                    if f_new == 0.0 {
+                        break;
+                    }
+                    let am = a_new - f_new * (a_new - a_keep) / (f_new - f_keep);
+                    let Some((vm, value)) = at(am) else { break };
+                    let fm = value - target;
+                    start = vm;
+                    if fm == 0.0 || (am - a_new).abs() <= 4.0 * f64::EPSILON * am {
+                        break;
+                    }
+                    if fm.signum() == f_new.signum() {
+                        f_keep *= 0.5; // Illinois: the retained end's value halved
+                    } else {
+                        (a_keep, f_keep) = (a_new, f_new);
+                    }
+                    (a_new, f_new) = (am, fm);
+                }
+                self.newton_to(&start, 1.0, control, 1e-13)
+                    .map(|it| (it.x, Some(it.jacobian)))
+            };
         // the circle's branch is explicit in ā: scan it from large ā down;
-        // the first crossing is the stable state
-        let mut prev: Option<(f64, f64)> = None;
+        // the first crossing is the stable state. Near the control's
+        // extremum along the branch (the pull-off, F̄ = −3π/2 at ā³ = 12 for
+        // the force) both crossings can fall between two samples: where the
+        // samples pass a minimum without a crossing, the minimum itself is
+        // located (Brent) and, where it lies below the target, the crossing
+        // is bracketed between it and the sample above
+        let value_at = |a: f64| at(a).map(|(_, v)| v - target).unwrap_or(f64::INFINITY);
+        let mut samples: Vec<(f64, f64, DVector<f64>)> = Vec::new();
         let mut a = 16.0;
         while a > 0.2 {
             if let Some((v, value)) = at(a) {
                 let f = value - target;
-                if let Some((a0, f0)) = prev {
+                if let Some((a0, f0, _)) = samples.last() {
                     if f0 * f <= 0.0 {
-                        // the crossing on the circle's explicit branch by
-                        // the Illinois method to round-off (cheap: the
-                        // circle's rows), then Newton in every unknown
-                        // (which finds it solved); (a_keep, f_keep) is the
-                        // retained end, (a_new, f_new) the latest iterate
-                        let (mut a_keep, mut f_keep, mut a_new, mut f_new) = (a0, f0, a, f);
-                        let mut start = v;
-                        for _ in 0..100 {
-                            if f_new == 0.0 {
-                                break;
-                            }
-                            let am = a_new - f_new * (a_new - a_keep) / (f_new - f_keep);
-                            let Some((vm, value)) = at(am) else { break };
-                            let fm = value - target;
-                            start = vm;
-                            if fm == 0.0 || (am - a_new).abs() <= 4.0 * f64::EPSILON * am {
-                                break;
-                            }
-                            if fm.signum() == f_new.signum() {
-                                f_keep *= 0.5; // Illinois: the retained end's value halved
-                            } else {
-                                (a_keep, f_keep) = (a_new, f_new);
-                            }
-                            (a_new, f_new) = (am, fm);
-                        }
-                        return self
-                            .newton_to(&start, 1.0, control, 1e-13)
-                            .map(|it| (it.x, Some(it.jacobian)));
+                        return cross((*a0, *f0), (a, f), v);
                     }
                 }
-                prev = Some((a, f));
+                if let [.., (a2, f2, _), (_, f1, _)] = samples.as_slice() {
+                    if *f1 < *f2 && *f1 < f && *f1 > 0.0 {
+                        let a_min = crate::model::brent_minimum(value_at, a, *a2, 1e-12 * *a2);
+                        let f_min = value_at(a_min);
+                        if f_min <= 0.0 {
+                            if let Some((v_min, _)) = at(a_min) {
+                                return cross((*a2, *f2), (a_min, f_min), v_min);
+                            }
+                        }
+                    }
+                }
+                samples.push((a, f, v));
             }
             a *= 0.9;
         }
@@ -953,7 +973,8 @@ impl Conformal {
         self.pull_off_continued(rho, control)
             .map_err(|e| match direct {
                 Err(first) => Error::NoState(format!(
-                    "{first}; continued in rho from above: {}",
+                    "{}; continued in rho from above: {}",
+                    first.detail(),
                     e.detail()
                 )),
                 Ok(_) => e,
