@@ -3,7 +3,7 @@
 //! under either control with the folds it passed, for a person or as JSON.
 //!
 //! Owns: the printing of contour-family states. May use: `thinjkr::conformal`,
-//! `thinjkr::report`.
+//! `thinjkr::report`, `thinjkr::fold`, `thinjkr::error`, the binary's `output`.
 
 use thinjkr::conformal::{Conformal, ConformalState, Extremum, PullOffControl};
 use thinjkr::report::{AnyState, Document, Passed};

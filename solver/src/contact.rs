@@ -24,7 +24,8 @@
 //!
 //! Owns: [`Contact`], [`State`], [`Stability`], [`PullOff`], [`Search`]
 //! and the walk.
-//! May use: `model`, `newton`, `fold`, `error`.
+//! May use: `model`, `newton`, `fold`, `error`, `equations` (the one model
+//! interface its Newton and continuation run on).
 
 mod cold;
 mod near_circle;

@@ -16,7 +16,8 @@
 //! dimension.
 //!
 //! Owns: [`Equations`], [`Linearised`], [`Branch`], [`Hold`], [`held`]. May use: `model`, `continuation`,
-//! `error`, nalgebra.
+//! `error`, `contact` and `conformal` (the two kinds of model it is
+//! implemented for), nalgebra.
 
 use crate::continuation::{Family, Linear};
 use crate::error::{short, Error, Result};

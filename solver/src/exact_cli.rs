@@ -3,7 +3,9 @@
 //! model's answer printed beside it.
 //!
 //! Owns: [`ExactCommand`], the exact printers. May use: `thinjkr::exact`,
-//! `thinjkr::Contact`.
+//! `thinjkr::Contact`, `thinjkr::model` (the ellipse models beside an exact
+//! state), `thinjkr::report`, `thinjkr::fold`, `thinjkr::error`, the
+//! binary's `output`.
 
 use clap::{Args, Subcommand};
 use thinjkr::exact::branch::ExactControl;

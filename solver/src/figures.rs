@@ -9,7 +9,9 @@
 //! [`crate::exact::table::Reference`]) beside every model's.
 //!
 //! Owns: figure data and rendering. May use: `contact`, `curve`, `limits`,
-//! `exact`, `generated` (the paper's model `max`, whose figures these are).
+//! `exact`, `generated` (the paper's model `max`, whose figures these are),
+//! `model` (every ellipse model beside it), `conformal` (its arms and
+//! convergence), `error`.
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};

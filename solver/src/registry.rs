@@ -16,7 +16,7 @@
 //! Owns: [`Choice`], [`Hold`], [`PullOffAnswer`], [`Entry`], [`parse`],
 //! [`entries`], [`help`]. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
-//! answers' shapes), `batch` (quoting).
+//! answers' shapes), `batch` (quoting), `model`, `error`.
 
 use crate::conformal::{families, Conformal};
 use crate::ModelId;

@@ -10,7 +10,7 @@
 //! schema`, committed as docs/schema.json).
 //!
 //! Owns: [`Document`] and its parts. May use: `contact`, `conformal`,
-//! `exact`, `curve`, `fold`, `units`, `error`.
+//! `exact`, `curve`, `fold`, `units`, `error`, `registry` (the model list).
 
 use crate::conformal::{ConformalState, Extremum};
 use crate::contact::{FoldBasis, State};

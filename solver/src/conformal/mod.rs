@@ -24,7 +24,8 @@
 //!
 //! Owns: [`Family`], [`Tables`], [`Conformal`], [`ConformalState`], the
 //! families' solves. May use: `generated::registry` (the families and their
-//! tables), `error`, `equations`, `newton`, nalgebra.
+//! tables), `error`, `equations`, `newton`, `model` (Brent's minimisation),
+//! `curve` (the bound on a curve's points), nalgebra.
 
 pub mod load;
 pub mod poly;

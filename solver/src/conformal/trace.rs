@@ -15,7 +15,7 @@
 //! [`to_nearby_extremum`], [`Curve`], [`CurveFold`], [`curve`]. May use:
 //! the parent module,
 //! `equations` (the family of the one model interface), `continuation`,
-//! nalgebra.
+//! `curve` (fold kinds, the bound on points), `error`, nalgebra.
 
 use super::Conformal;
 use crate::continuation::{self, End, EventKind, Family, On, Settings, Watch};

@@ -10,6 +10,8 @@
 //! s∞, and where the branch ends between two samples every walk index in
 //! between is read. A sample costs one explicit evaluation (ā, δ̄, F̄ and
 //! the apex slopes that pick the adhesive root), no state and no Newton.
+//!
+//! Owns: the cold scan. May use: its parent `contact`, `model`, `error`.
 //! - A crossing of the controlled quantity between two samples is refined
 //!   by the Illinois method in u = ln(s∞ − s).
 //! - An extremum among three samples is refined by Brent's method in u;

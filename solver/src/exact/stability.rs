@@ -31,7 +31,7 @@
 //! the coating thickness h, so such modes are reported with their
 //! wavelength, for comparison with h, not hidden.
 //!
-//! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, nalgebra.
+//! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, `error`, nalgebra.
 
 use super::{Exact, ExactState};
 use crate::error::{Error, Result};

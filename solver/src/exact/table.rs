@@ -9,7 +9,8 @@
 //! and the reference file the checker reads for `sec6.error.exact`.
 //!
 //! Owns: [`Quantity`], [`Row`], [`row`], [`render`], [`RHOS`],
-//! [`Doubling`], [`doubling`], [`Reference`]. May use: `exact`, `contact`.
+//! [`Doubling`], [`doubling`], [`Reference`]. May use: `exact`, `contact`,
+//! `conformal` (the compared members), `model` (the ellipse models), `error`.
 
 use super::branch::ExactControl;
 use super::{at_resolved, pull_off_resolved, Exact, ExactState, Truncation};
