@@ -5,8 +5,9 @@
 //! Owns: the printing of contour-family states. May use: `thinjkr::conformal`,
 //! `thinjkr::report`, `thinjkr::fold`, `thinjkr::error`, the binary's `output`.
 
-use thinjkr::conformal::{Conformal, ConformalState, Extremum, PullOffControl};
-use thinjkr::report::{AnyState, Document, Passed};
+use thinjkr::conformal::{Conformal, ConformalState};
+use thinjkr::fold::FoldCondition;
+use thinjkr::report::Passed;
 
 fn modes(st: &ConformalState) -> String {
     if st.unstable_modes.is_empty() {
@@ -45,39 +46,31 @@ pub fn show(label: &str, st: &ConformalState) -> thinjkr::Result<()> {
     Ok(())
 }
 
-/// `pull-off --model conformal:K`.
-pub fn pull_off(
+/// `pull-off --model family:K` in words: the state, where its branch was
+/// traced from and what ends it, and the folds in ā it passed.
+pub fn show_pull_off(
     m: &Conformal,
-    rho: f64,
-    control: PullOffControl,
-    json: bool,
+    st: &ConformalState,
+    control: FoldCondition,
+    passed: &[Passed],
 ) -> thinjkr::Result<()> {
-    let (st, folds) = m.pull_off(rho, control)?;
-    if json {
-        let doc = Document::PullOff {
-            state: AnyState::Conformal(st),
-            control: match control {
-                PullOffControl::Load => thinjkr::fold::FoldCondition::Load,
-                _ => thinjkr::fold::FoldCondition::Displacement,
-            },
-            basis: None,
-            passed: Passed::from_conformal(&folds),
-            models: Vec::new(),
-        };
-        outln!("{}", doc.to_json());
-        return Ok(());
-    }
-    show("pull-off", &st)?;
+    show("pull-off", st)?;
     let what = match control {
-        PullOffControl::Load => "the first minimum of the force",
-        PullOffControl::Displacement => "the first extremum of the approach",
+        FoldCondition::Load => "the first minimum of the force",
+        _ => "the first extremum of the approach",
     };
     outln!(
         "  end point: {what} along the branch traced from a = {} (pseudo-arclength in (c, delta))",
         m.family().trace_start_a
     );
-    for Extremum { a_bar, force_bar } in folds {
-        outln!("  passed a fold in a at a = {a_bar:.4}, force = {force_bar:.6}");
+    for p in passed {
+        if let Passed::SizeFold {
+            a_bar,
+            force_bar: Some(force_bar),
+        } = p
+        {
+            outln!("  passed a fold in a at a = {a_bar:.4}, force = {force_bar:.6}");
+        }
     }
     Ok(())
 }

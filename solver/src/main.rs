@@ -7,7 +7,7 @@ use thinjkr::conformal::{self as family};
 use thinjkr::curve::trace;
 use thinjkr::report::{AnyFold, AnyState, Document, ErrorBody};
 use thinjkr::units::Cylinders;
-use thinjkr::{Contact, ModelId, PullOff, State};
+use thinjkr::{Contact, ModelId, State};
 
 fn parse_model(s: &str) -> Result<ModelChoice, String> {
     thinjkr::registry::parse(s)
@@ -275,27 +275,6 @@ fn show(label: &str, st: &State) -> thinjkr::Result<()> {
     Ok(())
 }
 
-fn basis(p: &PullOff) -> &'static str {
-    p.basis.describe()
-}
-
-fn emit_pull_off(p: &PullOff, as_json: bool) -> thinjkr::Result<()> {
-    if as_json {
-        let doc = Document::PullOff {
-            state: AnyState::Ellipse(p.state),
-            control: p.control,
-            basis: Some(p.basis),
-            passed: Vec::new(),
-            models: Vec::new(),
-        };
-        outln!("{}", doc.to_json());
-    } else {
-        show("pull-off", &p.state)?;
-        outln!("  end point: {}", basis(p));
-    }
-    Ok(())
-}
-
 /// `thinjkr batch`: some lines have no state (their rows say why).
 const BATCH_SOME_FAILED: u8 = 3;
 /// `thinjkr batch`: no line has a state.
@@ -457,32 +436,39 @@ fn pull_off_command(
     control: Control,
     j: bool,
 ) -> thinjkr::Result<()> {
-    let model = match model {
-        ModelChoice::Exact if control == Control::Load => {
-            return exact_cli::pull_off(rho, &exact_cli::Discretisation::default(), j)
-        }
-        ModelChoice::Exact => {
-            return Err(thinjkr::Error::Unavailable {
-                model: "exact",
-                what: "pull-off under displacement control".into(),
-                why: "only the load-controlled pull-off of the exact family is located",
-            })
-        }
-        ModelChoice::Contour(m) => {
-            let control = match control {
-                Control::Load => family::PullOffControl::Load,
-                Control::Displacement => family::PullOffControl::Displacement,
-            };
-            return conformal_cli::pull_off(&m, rho, control, j);
-        }
-        ModelChoice::Ellipse(m) => m,
+    let condition = match control {
+        Control::Load => thinjkr::fold::FoldCondition::Load,
+        Control::Displacement => thinjkr::fold::FoldCondition::Displacement,
     };
-    let c = Contact::with_model(model, rho)?;
-    let p = match control {
-        Control::Load => c.pull_off_load()?,
-        Control::Displacement => c.pull_off_displacement()?,
-    };
-    emit_pull_off(&p, j)?;
+    if let (ModelChoice::Exact, Control::Load) = (model, control) {
+        // the exact pull-off's report also solves the ellipse models' and
+        // prints each one's distance from it
+        return exact_cli::pull_off(rho, &exact_cli::Discretisation::default(), j);
+    }
+    let p = model.pull_off(rho, condition)?;
+    if j {
+        let doc = Document::PullOff {
+            state: p.state,
+            control: p.control,
+            basis: p.basis,
+            passed: p.passed,
+            models: Vec::new(),
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    match (&p.state, model) {
+        (AnyState::Ellipse(st), _) => {
+            show("pull-off", st)?;
+            if let Some(b) = p.basis {
+                outln!("  end point: {}", b.describe());
+            }
+        }
+        (AnyState::Conformal(st), ModelChoice::Contour(m)) => {
+            conformal_cli::show_pull_off(&m, st, condition, &p.passed)?
+        }
+        (st, _) => show_states("pull-off", std::slice::from_ref(st), false)?,
+    }
     Ok(())
 }
 

@@ -327,8 +327,8 @@ impl Choice {
             Choice::Exact if !load => {
                 return Err(crate::Error::Unavailable {
                     model: "exact",
-                    what: "a displacement-controlled pull-off".into(),
-                    why: "the exact solver locates the load-controlled one",
+                    what: "pull-off under displacement control".into(),
+                    why: "only the load-controlled pull-off of the exact family is located",
                 })
             }
             Choice::Exact => {
