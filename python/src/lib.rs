@@ -21,7 +21,7 @@ use thinjkr::batch::{solve_all, Given, Item};
 use thinjkr::exact::branch::ExactControl;
 use thinjkr::fold::FoldCondition;
 use thinjkr::registry::{Choice, Hold};
-use thinjkr::{Contact, Error};
+use thinjkr::Error;
 
 pyo3::create_exception!(
     _thinjkr,
@@ -345,33 +345,17 @@ fn curve(
     points: usize,
     delta_start: f64,
 ) -> PyResult<String> {
-    let id = match choice(model)? {
-        Choice::Ellipse(id) => id,
-        Choice::Contour(m) => {
-            return py
-                .detach(move || -> thinjkr::Result<String> {
-                    let cv = m.curve(rho, points, delta_start)?;
-                    Ok(json(&serde_json::json!({
-                        "states": cv.states, "folds": cv.folds, "arm": cv.arm,
-                        "beyond_size_fold": cv.beyond_size_fold, "end": cv.end
-                    })))
-                })
-                .map_err(raw)
-        }
-        _ => {
-            return Err(raw(Error::Unavailable {
-                model: "exact",
-                what: "a curve".into(),
-                why: "the exact solution gives states at given loads (exact)",
-            }))
-        }
-    };
+    let m = choice(model)?;
     py.detach(move || -> thinjkr::Result<String> {
-        let c = Contact::with_model(id, rho)?;
-        let cv = thinjkr::curve::trace(&c, points, delta_start)?;
-        Ok(json(
-            &serde_json::json!({ "states": cv.states, "folds": cv.folds }),
-        ))
+        let cv = m.curve(rho, points, delta_start)?;
+        Ok(json(&match cv.arms {
+            // a contour family's curve also says each state's arm
+            Some(a) => serde_json::json!({
+                "states": cv.states, "folds": cv.folds, "arm": a.arm,
+                "beyond_size_fold": a.beyond_size_fold, "end": a.end
+            }),
+            None => serde_json::json!({ "states": cv.states, "folds": cv.folds }),
+        }))
     })
     .map_err(raw)
 }

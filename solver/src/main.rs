@@ -4,7 +4,6 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
 use thinjkr::conformal::{self as family};
-use thinjkr::curve::trace;
 use thinjkr::report::{AnyFold, AnyState, Document, ErrorBody};
 use thinjkr::units::Cylinders;
 use thinjkr::{Contact, ModelId, State};
@@ -1050,63 +1049,54 @@ fn curve_command(
             flag(r.stable_load)
         )
     };
-    match model {
-        ModelChoice::Exact => {
-            return Err(thinjkr::Error::Unavailable {
+    let cv = model.curve(rho, points, DELTA_START)?;
+    rows = cv
+        .states
+        .iter()
+        .enumerate()
+        .map(|(i, st)| match st {
+            AnyState::Ellipse(st) => row(CurveRow {
+                model: st.model.name(),
+                delta_bar: st.delta_bar,
+                force_bar: st.force_bar,
+                a_bar: st.a_bar,
+                s: st.s,
+                bc_error: st.bc_error,
+                beyond_size_fold: st.beyond_size_fold,
+                stable_displacement: st.stability.stable_displacement,
+                stable_load: st.stability.stable_load,
+            }),
+            AnyState::Conformal(st) => row(CurveRow {
+                model: &st.model,
+                delta_bar: st.delta_bar,
+                force_bar: st.force_bar,
+                a_bar: st.a_bar,
+                s: st.s,
+                bc_error: st.bc_defect,
+                beyond_size_fold: cv
+                    .arms
+                    .as_ref()
+                    .and_then(|a| a.beyond_size_fold.get(i).copied())
+                    .unwrap_or(false),
+                stable_displacement: Some(st.stable_displacement),
+                stable_load: Some(st.stable_load),
+            }),
+            AnyState::Exact(st) => row(CurveRow {
                 model: "exact",
-                what: "curve command".into(),
-                why: "use `thinjkr exact solve` at the loads wanted",
-            })
-        }
-        ModelChoice::Contour(m) => {
-            let cv = m.curve(rho, points, DELTA_START)?;
-            rows = cv
-                .states
-                .iter()
-                .zip(&cv.beyond_size_fold)
-                .map(|(st, &beyond)| {
-                    row(CurveRow {
-                        model: &st.model,
-                        delta_bar: st.delta_bar,
-                        force_bar: st.force_bar,
-                        a_bar: st.a_bar,
-                        s: st.s,
-                        bc_error: st.bc_defect,
-                        beyond_size_fold: beyond,
-                        stable_displacement: Some(st.stable_displacement),
-                        stable_load: Some(st.stable_load),
-                    })
-                })
-                .collect();
-            states = cv.states.into_iter().map(AnyState::Conformal).collect();
-            folds = cv.folds.into_iter().map(AnyFold::from).collect();
-            end = Some(cv.end);
-        }
-        ModelChoice::Ellipse(m) => {
-            let c = Contact::with_model(m, rho)?;
-            let cv = trace(&c, points, DELTA_START)?;
-            rows = cv
-                .states
-                .iter()
-                .map(|st| {
-                    row(CurveRow {
-                        model: st.model.name(),
-                        delta_bar: st.delta_bar,
-                        force_bar: st.force_bar,
-                        a_bar: st.a_bar,
-                        s: st.s,
-                        bc_error: st.bc_error,
-                        beyond_size_fold: st.beyond_size_fold,
-                        stable_displacement: st.stability.stable_displacement,
-                        stable_load: st.stability.stable_load,
-                    })
-                })
-                .collect();
-            states = cv.states.into_iter().map(AnyState::Ellipse).collect();
-            folds = cv.folds.into_iter().map(AnyFold::from).collect();
-            end = None;
-        }
-    }
+                delta_bar: st.delta_bar,
+                force_bar: st.force_bar,
+                a_bar: st.a_bar,
+                s: st.s,
+                bc_error: st.bc_error,
+                beyond_size_fold: false,
+                stable_displacement: None,
+                stable_load: None,
+            }),
+        })
+        .collect();
+    end = cv.arms.map(|a| a.end);
+    states = cv.states;
+    folds = cv.folds;
     match format {
         Format::Json => {
             let doc = Document::Curve { states, folds, end };

@@ -8,15 +8,16 @@
 //!
 //! Above the model families it is the one model layer: a [`Choice`]
 //! answers the verbs every front end asks, a state at a control ([`Hold`],
-//! one vocabulary for every model), the zero-force state and the pull-off,
-//! over the models of the ellipse, the contour families and the exact
-//! solver alike, so that the Python package and `physical` do not dispatch
-//! over kinds of model themselves.
+//! one vocabulary for every model), the zero-force state, the pull-off and
+//! the curve, over the models of the ellipse, the contour families and the
+//! exact solver alike, so that the command line and the Python package do
+//! not dispatch over kinds of model themselves to solve.
 //!
-//! Owns: [`Choice`], [`Hold`], [`PullOffAnswer`], [`Entry`], [`parse`],
-//! [`entries`], [`help`]. May use: `generated` (the ellipse models),
+//! Owns: [`Choice`], [`Hold`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
+//! [`Entry`], [`parse`], [`entries`], [`help`]. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
-//! answers' shapes), `batch` (quoting), `model`, `error`.
+//! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
+//! curves), `model`, `error`.
 
 use crate::conformal::{families, Conformal};
 use crate::ModelId;
@@ -339,6 +340,72 @@ impl Choice {
                     basis: None,
                     passed: Passed::from_exact(&events),
                 }
+            }
+        })
+    }
+}
+
+/// How the arms of a contour family's curve run: each state's arm (0 from
+/// large contacts, 1 the arm that carries the load-controlled pull-off
+/// where that is another), whether it lies beyond its arm's first fold in
+/// ā, and how each arm ends, in words.
+#[derive(Clone, Debug)]
+pub struct Arms {
+    /// The arm of each state.
+    pub arm: Vec<usize>,
+    /// Whether each state lies beyond its arm's first fold in ā.
+    pub beyond_size_fold: Vec<bool>,
+    /// How each arm ends.
+    pub end: String,
+}
+
+/// A curve of any model that has one: its states from δ̄ = `delta_start`
+/// past the pull-off, spaced in arclength, and the folds met on the way.
+#[derive(Clone, Debug)]
+pub struct CurveAnswer {
+    /// The states, in order along each arm.
+    pub states: Vec<crate::report::AnyState>,
+    /// The folds met.
+    pub folds: Vec<crate::report::AnyFold>,
+    /// The arms, for a contour family (an ellipse model's states say
+    /// themselves whether they lie beyond the fold).
+    pub arms: Option<Arms>,
+}
+
+impl Choice {
+    /// The curve of `points` states from δ̄ = `delta_start` past the
+    /// pull-off (the paper's Figs. 6–8); the exact solution gives states at
+    /// given loads instead.
+    pub fn curve(&self, rho: f64, points: usize, delta_start: f64) -> crate::Result<CurveAnswer> {
+        use crate::report::{AnyFold, AnyState};
+        Ok(match *self {
+            Choice::Ellipse(m) => {
+                let c = crate::Contact::with_model(m, rho)?;
+                let cv = crate::curve::trace(&c, points, delta_start)?;
+                CurveAnswer {
+                    states: cv.states.into_iter().map(AnyState::Ellipse).collect(),
+                    folds: cv.folds.into_iter().map(AnyFold::from).collect(),
+                    arms: None,
+                }
+            }
+            Choice::Contour(m) => {
+                let cv = m.curve(rho, points, delta_start)?;
+                CurveAnswer {
+                    states: cv.states.into_iter().map(AnyState::Conformal).collect(),
+                    folds: cv.folds.into_iter().map(AnyFold::from).collect(),
+                    arms: Some(Arms {
+                        arm: cv.arm,
+                        beyond_size_fold: cv.beyond_size_fold,
+                        end: cv.end,
+                    }),
+                }
+            }
+            Choice::Exact => {
+                return Err(crate::Error::Unavailable {
+                    model: "exact",
+                    what: "curve command".into(),
+                    why: "use `thinjkr exact solve` at the loads wanted",
+                })
             }
         })
     }
