@@ -522,17 +522,10 @@ fn batch_command(model: ModelChoice) -> thinjkr::Result<u8> {
             .iter()
             .filter_map(|(_, p)| p.as_ref().ok().copied())
             .collect();
-        let rows: Vec<thinjkr::Result<Row>> = match &model {
-            ModelChoice::Ellipse(id) => solve_all(id, &items)
-                .iter()
-                .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
-                .collect(),
-            ModelChoice::Contour(m) => solve_all(m, &items)
-                .iter()
-                .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
-                .collect(),
-            ModelChoice::Exact => unreachable!("refused above"),
-        };
+        let rows: Vec<thinjkr::Result<Row>> = solve_all(&model, &items)
+            .iter()
+            .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
+            .collect();
         let mut solved = rows.into_iter();
         for (n, parsed) in &block {
             let row = match parsed {

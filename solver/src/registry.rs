@@ -410,3 +410,66 @@ impl Choice {
         })
     }
 }
+
+/// What a batch of states shares at one ρ, for each kind of model.
+#[derive(Debug)]
+pub enum AtRho {
+    /// The contact of a model of the ellipse.
+    Ellipse(crate::Contact),
+    /// ρ, for a contour family (each state from the circle, continued in ρ)
+    /// or the exact solver.
+    Rho(f64),
+}
+
+/// A batch over any model: `batch::solve_all(&choice, items)` solves on
+/// every core through the kind's own batch implementation.
+impl crate::batch::Solves for Choice {
+    type AtRho = AtRho;
+    type State = crate::report::AnyState;
+    fn at_rho(&self, rho: f64) -> crate::Result<AtRho> {
+        match self {
+            Choice::Ellipse(m) => Ok(AtRho::Ellipse(m.at_rho(rho)?)),
+            Choice::Contour(_) | Choice::Exact => Ok(AtRho::Rho(rho)),
+        }
+    }
+    fn solve(&self, at: &AtRho, given: crate::batch::Given) -> crate::Result<Self::State> {
+        use crate::batch::Given;
+        use crate::report::AnyState;
+        match (self, at) {
+            (Choice::Ellipse(m), AtRho::Ellipse(c)) => m.solve(c, given).map(AnyState::Ellipse),
+            (Choice::Contour(m), AtRho::Rho(rho)) => {
+                crate::batch::Solves::solve(m, rho, given).map(AnyState::Conformal)
+            }
+            (Choice::Exact, AtRho::Rho(rho)) => self.state(
+                *rho,
+                match given {
+                    Given::Delta(d) => Hold::Delta(d),
+                    Given::Force(f) => Hold::Force(f),
+                },
+            ),
+            _ => Err(crate::Error::Usage(
+                "a batch's shared state is of another model".into(),
+            )),
+        }
+    }
+}
+
+impl From<&crate::report::AnyState> for crate::batch::Row {
+    fn from(st: &crate::report::AnyState) -> crate::batch::Row {
+        use crate::report::AnyState;
+        match st {
+            AnyState::Ellipse(s) => crate::batch::Row::from(s),
+            AnyState::Conformal(s) => crate::batch::Row::from(s),
+            AnyState::Exact(s) => crate::batch::Row {
+                a_bar: s.a_bar,
+                b_bar: s.b_bar,
+                s: s.s,
+                delta_bar: s.delta_bar,
+                force_bar: s.force_bar,
+                xi: None,
+                p0: None,
+                bc_error: s.bc_error,
+            },
+        }
+    }
+}
