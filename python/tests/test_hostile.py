@@ -1,9 +1,12 @@
 """Bad input from Python gets the command line's typed answer: a NaN or an
 infinite control is InvalidInput (not NoState), a count must be a whole
-number in its range (no silent rounding, no OverflowError), and an unknown
-model is named with the models there are."""
+number in its range (no silent rounding, no OverflowError), a bool, a string
+or a masked array is not a number (no silent rho = 1, no dropped mask), and
+an unknown model is named with the models there are."""
 
 import math
+
+import numpy as np
 
 import pytest
 
@@ -49,3 +52,23 @@ def test_an_unknown_model_names_the_models_there_are():
         thinjkr.solve(0.8, force=0.0, model="foo")
     text = str(e.value)
     assert "foo" in text and "conformal:K" in text and "NaN" not in text
+
+
+@pytest.mark.parametrize("rho", [True, np.bool_(True), np.array([True, False]), "0.8",
+                                 np.ma.masked_array([0.8, 0.9], mask=[False, True])])
+def test_rho_must_be_numbers_not_bools_strings_or_masked_arrays(rho):
+    with pytest.raises(InvalidInput, match="rho"):
+        thinjkr.solve(rho, force=0.0)
+    if np.ndim(rho) == 0:
+        with pytest.raises(InvalidInput, match="rho"):
+            thinjkr.pull_off(rho)
+
+
+def test_a_control_must_be_numbers_too():
+    with pytest.raises(InvalidInput, match="force"):
+        thinjkr.solve(0.8, force=True)
+    with pytest.raises(InvalidInput, match="delta"):
+        thinjkr.exact.solve(0.8, delta=False)
+    # integers and integer arrays are numbers
+    assert thinjkr.solve(1, force=0).rho == 1.0
+    assert thinjkr.solve(np.array([1, 1]), force=0).a_bar.shape == (2,)

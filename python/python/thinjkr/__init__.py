@@ -84,6 +84,24 @@ def models() -> List[Tuple[str, str]]:
     return [(n, d) for n, d in _thinjkr.models()]
 
 
+def _number(name: str, value):
+    """A number or an array of numbers the user gave, as float: a bool (or
+    an array of bools), a masked array, or anything not numeric is refused
+    naming the parameter, not read as 1.0 or with its mask dropped. NaN and
+    infinity pass here; the solver names their range."""
+    if isinstance(value, (bool, _np.bool_)):
+        raise InvalidInput(f"parameter {name} = {value!r} is a bool, not a number",
+                           kind="out_of_range")
+    if _np.ma.isMaskedArray(value):
+        raise InvalidInput(f"parameter {name} is a masked array: fill it (.filled(nan)) or "
+                           "drop the masked points (.compressed()) first", kind="out_of_range")
+    arr = _np.asarray(value)
+    if arr.dtype == bool or arr.dtype.kind not in "iuf":
+        raise InvalidInput(f"parameter {name} must be a number or an array of numbers, "
+                           f"got {type(value).__name__} of {arr.dtype}", kind="out_of_range")
+    return float(arr) if arr.ndim == 0 else arr.astype(float)
+
+
 def _whole(name: str, value, lo: int, hi: int) -> int:
     """A count the user gave: a whole number in lo ..= hi (a bool, a
     fraction or a number out of range is refused, naming the parameter)."""
@@ -115,8 +133,9 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
     NaN in the arrays and has its reason in ``States.error``.
     """
     control, value = _control(delta, force, a)
+    rho, value = _number("rho", rho), _number(control, value)
     if _np.ndim(rho) == 0 and _np.ndim(value) == 0:
-        text = _call(_thinjkr.solve, model, float(rho), control, float(value))
+        text = _call(_thinjkr.solve, model, rho, control, value)
         return _state_from(_json.loads(text))
     r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
     shape = r.shape
@@ -148,7 +167,7 @@ def pull_off(rho: float, *, model: str = "max", control: str = "load") -> State:
     """The pull-off under load control (the minimum of F̄ along the branch,
     the paper's Section 6) or under displacement control (the end of the
     branch in δ̄)."""
-    d = _json.loads(_call(_thinjkr.pull_off, model, float(rho), control))
+    d = _json.loads(_call(_thinjkr.pull_off, model, _number("rho", rho), control))
     st = _state_from(d["state"])
     fields = st.to_dict()
     fields["control"] = control
@@ -202,7 +221,8 @@ def curve(rho: float, *, model: str = "max", points: int = 200, delta_start: flo
     from δ̄ = ``delta_start`` past pull-off and its folds, ``points`` states
     evenly spaced in arclength (the paper's Figs. 6–8)."""
     points = _whole("points", points, 2, _thinjkr.MAX_CURVE_POINTS)
-    d = _json.loads(_call(_thinjkr.curve, model, float(rho), points, float(delta_start)))
+    d = _json.loads(_call(_thinjkr.curve, model, _number("rho", rho), points,
+                          _number("delta_start", delta_start)))
     states = [_state_from(s) for s in d["states"]]
     folds = [(f["kind"], _state_from(f["state"])) for f in d["folds"]]
     return Curve(states, folds, d.get("arm"), d.get("beyond_size_fold"), d.get("end"))

@@ -10,7 +10,7 @@ import json as _json
 import numpy as _np
 
 from . import _thinjkr
-from . import _call, _control, _state_from, _whole, State
+from . import _call, _control, _number, _state_from, _whole, State
 
 
 def _with_contour(d, points: int) -> State:
@@ -29,7 +29,8 @@ def solve(rho: float, *, delta=None, force=None, points: int = 256, modes=None) 
     the fine-grid boundary error is below 1e-9 (where none is,
     :class:`Unresolved` is raised with the smallest error reached)."""
     control, value = _control(delta, force, None)
-    d = _json.loads(_call(_thinjkr.exact, float(rho), control, float(value), _modes(modes)))
+    d = _json.loads(_call(_thinjkr.exact, _number("rho", rho), control, _number(control, value),
+                          _modes(modes)))
     return _with_contour(d, points)
 
 
@@ -41,7 +42,7 @@ def zero_force(rho: float, *, points: int = 256, modes=None) -> State:
 def pull_off(rho: float, *, points: int = 256, modes=None) -> State:
     """The exact load-controlled pull-off (the first minimum of F̄ along the
     family through ā = 2.6)."""
-    d = _json.loads(_call(_thinjkr.exact, float(rho), "pull_off", 0.0, _modes(modes)))
+    d = _json.loads(_call(_thinjkr.exact, _number("rho", rho), "pull_off", 0.0, _modes(modes)))
     return _with_contour(d, points)
 
 
