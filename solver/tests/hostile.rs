@@ -3,21 +3,8 @@
 //! is an I/O error in words with status 1, a standard output closed before
 //! the start is refused instead of losing the output.
 
-use std::process::Command;
-
-fn bash(script: &str) -> (Option<i32>, String, String) {
-    let out = Command::new("bash")
-        .arg("-c")
-        .arg(script)
-        .arg(env!("CARGO_BIN_EXE_thinjkr"))
-        .output()
-        .expect("bash runs");
-    (
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common;
+use common::bash;
 
 const COMMANDS: [&str; 6] = [
     "curve --rho 0.8 --points 100000",

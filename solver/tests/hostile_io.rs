@@ -5,21 +5,8 @@
 //! every number in a message has at most six significant digits, with a
 //! limit in the units the user typed.
 
-use std::process::Command;
-
-fn bash(script: &str) -> (Option<i32>, String, String) {
-    let out = Command::new("bash")
-        .arg("-c")
-        .arg(script)
-        .arg(env!("CARGO_BIN_EXE_thinjkr"))
-        .output()
-        .expect("bash runs");
-    (
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common;
+use common::bash;
 
 fn scratch(tag: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("thinjkr-hostile-io-{tag}-{}", std::process::id()));
