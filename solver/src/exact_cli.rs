@@ -452,20 +452,7 @@ pub fn every_state(
     d: &Discretisation,
     json: bool,
 ) -> Result<()> {
-    let v = match control {
-        ExactControl::Delta(v) | ExactControl::Force(v) => v,
-    };
-    if !v.is_finite() {
-        return Err(Error::OutOfRange {
-            name: if matches!(control, ExactControl::Delta(_)) {
-                "delta"
-            } else {
-                "force"
-            },
-            value: v,
-            range: "finite".into(),
-        });
-    }
+    control.check_finite()?;
     let spin = crate::output::Spinner::start("screening for every exact state");
     let all = thinjkr::exact::bands::states_at(rho, control, from, to, &d.tries()?)?;
     drop(spin);
@@ -527,17 +514,7 @@ pub fn every_state(
 /// The exact state at a control value and every model's.
 pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) -> Result<()> {
     let spin = crate::output::Spinner::start("solving the free-boundary problem (2)-(3)");
-    let (name, v) = match control {
-        ExactControl::Delta(v) => ("delta", v),
-        ExactControl::Force(v) => ("force", v),
-    };
-    if !v.is_finite() {
-        return Err(Error::OutOfRange {
-            name,
-            value: v,
-            range: "finite".into(),
-        });
-    }
+    control.check_finite()?;
     let st = match (d.modes, d.points) {
         // the default escalation, and the continuation in rho from a larger
         // rho where no route finds the state directly

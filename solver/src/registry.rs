@@ -70,7 +70,7 @@ pub fn parse(name: &str) -> Result<Choice, String> {
 pub fn names() -> String {
     let mut out: Vec<String> = ModelId::ALL.iter().map(|m| m.name().to_string()).collect();
     for f in families() {
-        out.push(format!("{}:K with K = {}", f.name, member_range(f)));
+        out.push(format!("{}:K with K = {}", f.name, f.member_range()));
     }
     out.push(EXACT.into());
     out.join(", ")
@@ -94,23 +94,13 @@ pub fn help(with_exact: bool, extra: &str) -> String {
         parts.push(format!(
             "{}:K (K = {}, a contour family{exact})",
             f.name,
-            member_range(f)
+            f.member_range()
         ));
     }
     if with_exact {
         parts.push("or exact (the free-boundary problem itself)".into());
     }
     format!("{}{extra}; `thinjkr models` lists them.", parts.join(", "))
-}
-
-/// "1 ..= 8".
-fn member_range(f: &crate::conformal::Family) -> String {
-    let ks = f.members.iter().map(|t| t.terms);
-    format!(
-        "{} ..= {}",
-        ks.clone().min().unwrap_or(0),
-        ks.max().unwrap_or(0)
-    )
 }
 
 /// Every model, in the order `thinjkr models` lists them: the models of the

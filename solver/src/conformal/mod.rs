@@ -25,7 +25,8 @@
 //! Owns: [`Family`], [`Tables`], [`Conformal`], [`ConformalState`], the
 //! families' solves. May use: `generated::registry` (the families and their
 //! tables), `error`, `equations`, `newton`, `model` (Brent's minimisation),
-//! `curve` (the bound on a curve's points), nalgebra.
+//! `curve` (the bound on a curve's points), `batch` (quoting what was
+//! typed), nalgebra.
 
 pub mod load;
 pub mod poly;
@@ -94,6 +95,15 @@ pub struct Family {
     pub seeds_exact: bool,
     /// Its members, by K.
     pub members: &'static [Tables],
+}
+
+impl Family {
+    /// "1 ..= 8": the family's K, from its smallest member to its largest.
+    pub fn member_range(&self) -> String {
+        let ks = self.members.iter().map(|t| t.terms);
+        let (lo, hi) = (ks.clone().min().unwrap_or(0), ks.max().unwrap_or(0));
+        format!("{lo} ..= {hi}")
+    }
 }
 
 /// The families: the built-in ones, then those loaded at run time.
@@ -235,8 +245,8 @@ impl Conformal {
         match families().iter().position(|f| f.name == family) {
             Some(i) => Conformal::in_family(i, terms),
             None => Err(Error::Usage(format!(
-                "no contour family {:?} (the registry has: {})",
-                short_text(family),
+                "no contour family {} (the registry has: {})",
+                crate::batch::quote_start(family),
                 families()
                     .iter()
                     .map(|f| f.name)
@@ -259,7 +269,7 @@ impl Conformal {
             .ok_or_else(|| Error::OutOfRange {
                 name: "K",
                 value: terms as f64,
-                range: member_range(family).into(),
+                range: family.member_range().into(),
             })?;
         let slots = DECODED.get_or_init(|| {
             families()
@@ -315,8 +325,8 @@ impl Conformal {
                 .ok_or_else(|| {
                     format!(
                         "{}: K must be a whole number from {}",
-                        short_text(name),
-                        member_range(f).replace("..=", "to")
+                        crate::batch::quote_start(name).trim_matches('"'),
+                        f.member_range().replace("..=", "to")
                     )
                 }),
         )
@@ -1218,21 +1228,6 @@ fn no_circle(a: f64) -> Error {
         "no adhesive circular state at a_bar = {}",
         short(a)
     ))
-}
-
-/// At most 40 characters of what a user typed, for messages.
-fn short_text(s: &str) -> String {
-    match s.char_indices().nth(40) {
-        Some((i, _)) => format!("{}…", &s[..i]),
-        None => s.to_string(),
-    }
-}
-
-/// "1 ..= 8": the family's K, from its smallest member to its largest.
-fn member_range(family: &Family) -> String {
-    let ks = family.members.iter().map(|t| t.terms);
-    let (lo, hi) = (ks.clone().min().unwrap_or(0), ks.max().unwrap_or(0));
-    format!("{lo} ..= {hi}")
 }
 
 fn check_rho(family: &Family, rho: f64) -> Result<f64> {
