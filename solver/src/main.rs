@@ -4,7 +4,7 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
 use thinjkr::conformal::{self as family};
-use thinjkr::report::{AnyFold, AnyState, Document, ErrorBody};
+use thinjkr::report::{AnyState, Document, ErrorBody};
 use thinjkr::units::Cylinders;
 use thinjkr::{Contact, ModelId, State};
 
@@ -1005,19 +1005,6 @@ fn main() -> ExitCode {
     }
 }
 
-/// One row of `curve --format csv`.
-struct CurveRow<'a> {
-    model: &'a str,
-    delta_bar: f64,
-    force_bar: f64,
-    a_bar: f64,
-    s: f64,
-    bc_error: f64,
-    beyond_size_fold: bool,
-    stable_displacement: Option<bool>,
-    stable_load: Option<bool>,
-}
-
 /// `thinjkr curve`: the branch from δ̄ = 20 past pull-off, as CSV or JSON.
 fn curve_command(
     model: ModelChoice,
@@ -1026,83 +1013,48 @@ fn curve_command(
     format: Format,
 ) -> thinjkr::Result<()> {
     const DELTA_START: f64 = 20.0;
-    let (states, folds, end, rows): (Vec<AnyState>, Vec<AnyFold>, Option<String>, Vec<String>);
-    let row = |r: CurveRow<'_>| {
-        let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
-        format!(
-            "{},{},{},{},{},{},{},{},{}",
-            r.model,
+    let cv = model.curve(rho, points, DELTA_START)?;
+    if let Format::Json = format {
+        let doc = Document::Curve {
+            states: cv.states,
+            folds: cv.folds,
+            end: cv.arms.map(|a| a.end),
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    outln!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
+    let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
+    for (i, st) in cv.states.iter().enumerate() {
+        // the numbers as a batch row has them (bc_error: (14) for the
+        // ellipse, max |dp/dnu - 1| on the contour otherwise)
+        let r = thinjkr::batch::Row::from(st);
+        let (name, beyond, stable) = match st {
+            AnyState::Ellipse(e) => (
+                e.model.name().to_string(),
+                e.beyond_size_fold,
+                (e.stability.stable_displacement, e.stability.stable_load),
+            ),
+            AnyState::Conformal(c) => (
+                c.model.clone(),
+                cv.arms
+                    .as_ref()
+                    .and_then(|a| a.beyond_size_fold.get(i).copied())
+                    .unwrap_or(false),
+                (Some(c.stable_displacement), Some(c.stable_load)),
+            ),
+            AnyState::Exact(_) => ("exact".into(), false, (None, None)),
+        };
+        outln!(
+            "{name},{},{},{},{},{},{beyond},{},{}",
             r.delta_bar,
             r.force_bar,
             r.a_bar,
             r.s,
             r.bc_error,
-            r.beyond_size_fold,
-            flag(r.stable_displacement),
-            flag(r.stable_load)
-        )
-    };
-    let cv = model.curve(rho, points, DELTA_START)?;
-    rows = cv
-        .states
-        .iter()
-        .enumerate()
-        .map(|(i, st)| match st {
-            AnyState::Ellipse(st) => row(CurveRow {
-                model: st.model.name(),
-                delta_bar: st.delta_bar,
-                force_bar: st.force_bar,
-                a_bar: st.a_bar,
-                s: st.s,
-                bc_error: st.bc_error,
-                beyond_size_fold: st.beyond_size_fold,
-                stable_displacement: st.stability.stable_displacement,
-                stable_load: st.stability.stable_load,
-            }),
-            AnyState::Conformal(st) => row(CurveRow {
-                model: &st.model,
-                delta_bar: st.delta_bar,
-                force_bar: st.force_bar,
-                a_bar: st.a_bar,
-                s: st.s,
-                bc_error: st.bc_defect,
-                beyond_size_fold: cv
-                    .arms
-                    .as_ref()
-                    .and_then(|a| a.beyond_size_fold.get(i).copied())
-                    .unwrap_or(false),
-                stable_displacement: Some(st.stable_displacement),
-                stable_load: Some(st.stable_load),
-            }),
-            AnyState::Exact(st) => row(CurveRow {
-                model: "exact",
-                delta_bar: st.delta_bar,
-                force_bar: st.force_bar,
-                a_bar: st.a_bar,
-                s: st.s,
-                bc_error: st.bc_error,
-                beyond_size_fold: false,
-                stable_displacement: None,
-                stable_load: None,
-            }),
-        })
-        .collect();
-    end = cv.arms.map(|a| a.end);
-    states = cv.states;
-    folds = cv.folds;
-    match format {
-        Format::Json => {
-            let doc = Document::Curve { states, folds, end };
-            outln!("{}", doc.to_json())
-        }
-        Format::Csv => {
-            outln!(
-                "model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load"
-            );
-            for r in rows {
-                outln!("{r}");
-            }
-        }
+            flag(stable.0),
+            flag(stable.1)
+        );
     }
     Ok(())
 }

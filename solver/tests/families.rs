@@ -61,18 +61,13 @@ fn a_family_loaded_at_run_time_solves_as_the_compiled_one() {
     // the table evaluator on the loaded rows against the compiled
     // member's (for K = 4 its unrolled evaluator, bit for bit the same)
     for k in [2, 4, 6] {
-        let args = |m: &str| {
-            vec![
-                "solve", "--rho", "0.8", "--force", "10", "--model", m, "--json",
-            ]
-            .into_iter()
-            .map(String::from)
-            .collect::<Vec<_>>()
-        };
         let run = |m: String| {
-            let a = args(&m);
-            let a: Vec<&str> = a.iter().map(String::as_str).collect();
-            let (ok, out, err) = thinjkr(&dir, &a);
+            let (ok, out, err) = thinjkr(
+                &dir,
+                &[
+                    "solve", "--rho", "0.8", "--force", "10", "--model", &m, "--json",
+                ],
+            );
             assert!(ok, "{m}: {err}");
             state(&out)
         };
