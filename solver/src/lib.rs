@@ -16,6 +16,9 @@
 #![deny(missing_docs)]
 
 pub mod batch;
+#[cfg(feature = "cli")]
+#[doc(hidden)]
+pub mod cli;
 pub mod conformal;
 pub mod contact;
 pub mod continuation;

@@ -8,15 +8,15 @@
 //! input file is read up to a bound, checked before it is read whole.
 //!
 //! Owns: [`input`], [`check_file`], [`check_folder`], [`write_whole`],
-//! [`quote`]. May use: `thinjkr::Error`.
+//! [`quote`]. May use: `crate::Error`.
 
+use crate::Error;
 use std::io::Read;
 use std::path::{Path, PathBuf};
-use thinjkr::Error;
 
 /// At most `max` bytes of the file at `p` as text; a longer one (or a
 /// device without end, such as /dev/zero) is refused after `max + 1` bytes.
-pub fn input(p: &Path, max: u64) -> thinjkr::Result<String> {
+pub fn input(p: &Path, max: u64) -> crate::Result<String> {
     let f = std::fs::File::open(p)
         .map_err(|e| Error::Io(format!("cannot read {}: {e}", p.display())))?;
     let mut bytes = Vec::new();
@@ -54,7 +54,7 @@ fn folder_of(p: &Path) -> PathBuf {
 
 /// That a file can be written at `p` (its folder exists and takes a new
 /// file), checked without touching `p` itself.
-pub fn check_file(p: &Path) -> thinjkr::Result<()> {
+pub fn check_file(p: &Path) -> crate::Result<()> {
     if p.is_dir() {
         return Err(Error::Io(format!(
             "{} is a folder, not a file",
@@ -66,7 +66,7 @@ pub fn check_file(p: &Path) -> thinjkr::Result<()> {
 
 /// That `dir` is an output folder or can be created as one (its parent
 /// exists); created only by [`create_folder`], after every check passed.
-pub fn check_folder(dir: &Path) -> thinjkr::Result<()> {
+pub fn check_folder(dir: &Path) -> crate::Result<()> {
     if dir.is_dir() {
         return writable_folder(dir, dir);
     }
@@ -85,7 +85,7 @@ pub fn check_folder(dir: &Path) -> thinjkr::Result<()> {
 }
 
 /// Create the output folder `dir` if it is missing (its parent exists).
-pub fn create_folder(dir: &Path) -> thinjkr::Result<()> {
+pub fn create_folder(dir: &Path) -> crate::Result<()> {
     if dir.is_dir() {
         return Ok(());
     }
@@ -95,7 +95,7 @@ pub fn create_folder(dir: &Path) -> thinjkr::Result<()> {
 
 /// A probe file created and removed in `dir`: the one sure test that a
 /// new file can be written there.
-fn writable_folder(dir: &Path, for_path: &Path) -> thinjkr::Result<()> {
+fn writable_folder(dir: &Path, for_path: &Path) -> crate::Result<()> {
     if !dir.is_dir() {
         return Err(Error::Io(format!(
             "cannot write {}: the folder {} does not exist",
@@ -115,7 +115,7 @@ fn writable_folder(dir: &Path, for_path: &Path) -> thinjkr::Result<()> {
 
 /// Write `contents` to `p` whole: into a temporary file beside it, then
 /// renamed over it.
-pub fn write_whole(p: &Path, contents: &[u8]) -> thinjkr::Result<()> {
+pub fn write_whole(p: &Path, contents: &[u8]) -> crate::Result<()> {
     let name = p
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())

@@ -10,7 +10,7 @@
 //!
 //! Owns: [`line`], [`text`], [`finish`], [`err_line`], the `outln!`/`out!`/
 //! `errln!` macros. May use:
-//! `thinjkr::Error`.
+//! `crate::Error`.
 
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -20,11 +20,11 @@ static BROKEN_PIPE: AtomicBool = AtomicBool::new(false);
 /// The exit status after a closed pipe (128 + SIGPIPE).
 pub const BROKEN_PIPE_STATUS: u8 = 141;
 
-fn io(e: std::io::Error) -> thinjkr::Error {
+fn io(e: std::io::Error) -> crate::Error {
     if e.kind() == std::io::ErrorKind::BrokenPipe {
         BROKEN_PIPE.store(true, Ordering::Relaxed);
     }
-    thinjkr::Error::Io(format!("cannot write the output: {e}"))
+    crate::Error::Io(format!("cannot write the output: {e}"))
 }
 
 /// Standard output behind one buffer: a write per 8 kB instead of a
@@ -49,7 +49,7 @@ fn with_out<T>(f: impl FnOnce(&mut Out) -> std::io::Result<T>) -> std::io::Resul
 }
 
 /// Write one line.
-pub fn line(args: std::fmt::Arguments<'_>) -> thinjkr::Result<()> {
+pub fn line(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
     with_out(|o| {
         o.buf.write_fmt(args)?;
         o.buf.write_all(b"\n")?;
@@ -62,7 +62,7 @@ pub fn line(args: std::fmt::Arguments<'_>) -> thinjkr::Result<()> {
 }
 
 /// Write text as it is.
-pub fn text(args: std::fmt::Arguments<'_>) -> thinjkr::Result<()> {
+pub fn text(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
     with_out(|o| {
         o.buf.write_fmt(args)?;
         if o.terminal {
@@ -74,7 +74,7 @@ pub fn text(args: std::fmt::Arguments<'_>) -> thinjkr::Result<()> {
 }
 
 /// Flush standard output (a write error may surface only here).
-pub fn finish() -> thinjkr::Result<()> {
+pub fn finish() -> crate::Result<()> {
     with_out(|o| o.buf.flush()).map_err(io)
 }
 
@@ -106,12 +106,12 @@ fn closed_at_start(fd: std::os::fd::RawFd) -> bool {
 
 /// Refuse to start when standard output was closed (`>&-`): the output
 /// would be lost without an error.
-pub fn check_open() -> thinjkr::Result<()> {
+pub fn check_open() -> crate::Result<()> {
     #[cfg(unix)]
     {
         use std::os::fd::AsRawFd;
         if closed_at_start(std::io::stdout().as_raw_fd()) {
-            return Err(thinjkr::Error::Io(
+            return Err(crate::Error::Io(
                 "standard output is closed: nothing could be written".into(),
             ));
         }
@@ -121,12 +121,12 @@ pub fn check_open() -> thinjkr::Result<()> {
 
 /// Refuse to read standard input when it was closed (`<&-`): it would read
 /// as an empty input, and an empty answer would look like a success.
-pub fn check_input_open() -> thinjkr::Result<()> {
+pub fn check_input_open() -> crate::Result<()> {
     #[cfg(unix)]
     {
         use std::os::fd::AsRawFd;
         if closed_at_start(std::io::stdin().as_raw_fd()) {
-            return Err(thinjkr::Error::Io(
+            return Err(crate::Error::Io(
                 "standard input is closed: there are no lines to read (give them on standard input, e.g. < in.csv)".into(),
             ));
         }
@@ -158,17 +158,17 @@ pub fn stderr_failed() -> bool {
 
 /// `eprintln!` that cannot panic ([`err_line`]).
 macro_rules! errln {
-    ($($t:tt)*) => { $crate::output::err_line(format_args!($($t)*)) };
+    ($($t:tt)*) => { $crate::cli::output::err_line(format_args!($($t)*)) };
 }
 
 /// `println!` that returns an I/O error instead of panicking.
 macro_rules! outln {
-    ($($t:tt)*) => { $crate::output::line(format_args!($($t)*))? };
+    ($($t:tt)*) => { $crate::cli::output::line(format_args!($($t)*))? };
 }
 
 /// `print!` that returns an I/O error instead of panicking.
 macro_rules! out {
-    ($($t:tt)*) => { $crate::output::text(format_args!($($t)*))? };
+    ($($t:tt)*) => { $crate::cli::output::text(format_args!($($t)*))? };
 }
 
 /// A spinner on standard error while long work runs, when that is a

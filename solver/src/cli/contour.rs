@@ -1,13 +1,13 @@
 //! The command line for the contour families: a state printed for a person
-//! (solved through the model layer, `thinjkr::registry`), and the pull-off
+//! (solved through the model layer, `crate::registry`), and the pull-off
 //! under either control with the folds it passed, for a person or as JSON.
 //!
-//! Owns: the printing of contour-family states. May use: `thinjkr::conformal`,
-//! `thinjkr::report`, `thinjkr::fold`, `thinjkr::error`, the binary's `output`.
+//! Owns: the printing of contour-family states. May use: `crate::conformal`,
+//! `crate::report`, `crate::fold`, `crate::error`, `crate::cli` (`output`).
 
-use thinjkr::conformal::{Conformal, ConformalState};
-use thinjkr::fold::FoldCondition;
-use thinjkr::report::Passed;
+use crate::conformal::{Conformal, ConformalState};
+use crate::fold::FoldCondition;
+use crate::report::Passed;
 
 fn modes(st: &ConformalState) -> String {
     if st.unstable_modes.is_empty() {
@@ -26,16 +26,16 @@ fn modes(st: &ConformalState) -> String {
 }
 
 /// One state for a person.
-pub fn show(label: &str, st: &ConformalState) -> thinjkr::Result<()> {
+pub fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
     let word = |b: bool| if b { "stable" } else { "unstable" };
     outln!(
         "{label}: model {}, a = {}, b = {}, s = {}, delta = {}, force = {}, max |dp/dnu - 1| on the contour = {:.1e} [displacement control: {}, load control: {}{}]",
         st.model,
-        crate::output::num(st.a_bar),
-        crate::output::num(st.b_bar),
-        crate::output::num(st.s),
-        crate::output::num(st.delta_bar),
-        crate::output::num(st.force_bar),
+        crate::cli::output::num(st.a_bar),
+        crate::cli::output::num(st.b_bar),
+        crate::cli::output::num(st.s),
+        crate::cli::output::num(st.delta_bar),
+        crate::cli::output::num(st.force_bar),
         st.bc_defect,
         word(st.stable_displacement),
         word(st.stable_load),
@@ -53,7 +53,7 @@ pub fn show_pull_off(
     st: &ConformalState,
     control: FoldCondition,
     passed: &[Passed],
-) -> thinjkr::Result<()> {
+) -> crate::Result<()> {
     show("pull-off", st)?;
     let what = match control {
         FoldCondition::Load => "the first minimum of the force",

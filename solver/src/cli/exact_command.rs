@@ -2,17 +2,17 @@
 //! free-boundary problem (2)–(3) at the command line, every approximate
 //! model's answer printed beside it.
 //!
-//! Owns: [`ExactCommand`], the exact printers. May use: `thinjkr::exact`,
-//! `thinjkr::Contact`, `thinjkr::model` (the ellipse models beside an exact
-//! state), `thinjkr::report`, `thinjkr::fold`, `thinjkr::error`, the
-//! binary's `output`.
+//! Owns: [`ExactCommand`], the exact printers. May use: `crate::exact`,
+//! `crate::Contact`, `crate::model` (the ellipse models beside an exact
+//! state), `crate::report`, `crate::fold`, `crate::error`,
+//! `crate::cli` (`output`).
 
+use crate::exact::branch::ExactControl;
+use crate::exact::stability::UnstableMode;
+use crate::exact::{ExactState, Truncation};
+use crate::report::{AnyState, Document, ModelAnswer, Passed};
+use crate::{Contact, Error, ModelId, Result};
 use clap::{Args, Subcommand};
-use thinjkr::exact::branch::ExactControl;
-use thinjkr::exact::stability::UnstableMode;
-use thinjkr::exact::{ExactState, Truncation};
-use thinjkr::report::{AnyState, Document, ModelAnswer, Passed};
-use thinjkr::{Contact, Error, ModelId, Result};
 
 /// The truncation of the exact solver.
 #[derive(Args, Clone, Debug, Default)]
@@ -32,16 +32,16 @@ impl Discretisation {
     /// The truncations to try, in order.
     fn tries(&self) -> Result<Vec<Truncation>> {
         let modes = match self.modes {
-            Some(m) if !(1..=thinjkr::exact::MAX_USER_MODES).contains(&m) => {
+            Some(m) if !(1..=crate::exact::MAX_USER_MODES).contains(&m) => {
                 return Err(Error::OutOfRange {
                     name: "modes",
                     value: m as f64,
-                    range: format!("1 ..= {}", thinjkr::exact::MAX_USER_MODES).into(),
+                    range: format!("1 ..= {}", crate::exact::MAX_USER_MODES).into(),
                 })
             }
             Some(m) => vec![m],
             // the escalation's rungs, as far as the points given allow
-            None => thinjkr::exact::ESCALATION
+            None => crate::exact::ESCALATION
                 .iter()
                 .copied()
                 .filter(|&m| self.points.is_none_or(|p| p >= 4 * m + 8))
@@ -53,8 +53,8 @@ impl Discretisation {
                 value: self.points.unwrap_or(0) as f64,
                 range: format!(
                     "at least {} for the escalation's first rung of {} modes (4 · modes + 8), or give --modes",
-                    4 * thinjkr::exact::ESCALATION[0] + 8,
-                    thinjkr::exact::ESCALATION[0]
+                    4 * crate::exact::ESCALATION[0] + 8,
+                    crate::exact::ESCALATION[0]
                 )
                 .into(),
             });
@@ -63,7 +63,7 @@ impl Discretisation {
             .into_iter()
             .map(|m| Truncation {
                 modes: m,
-                points: self.points.unwrap_or(thinjkr::exact::POINTS_PER_MODE * m),
+                points: self.points.unwrap_or(crate::exact::POINTS_PER_MODE * m),
             })
             .collect())
     }
@@ -191,7 +191,7 @@ pub fn run(c: ExactCommand) -> Result<()> {
                 _ => return Err(Error::Usage("give one of --delta, --force".into())),
             };
             if all {
-                let circle = thinjkr::exact::branch::circle_a_bar(control);
+                let circle = crate::exact::branch::circle_a_bar(control);
                 let to = to.unwrap_or(if circle.is_finite() {
                     (1.2 * circle).max(4.0)
                 } else {
@@ -217,7 +217,7 @@ pub fn run(c: ExactCommand) -> Result<()> {
 
 /// `thinjkr exact bands`.
 pub fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
-    let map = thinjkr::exact::bands::bands(rho, from, to)?;
+    let map = crate::exact::bands::bands(rho, from, to)?;
     if json {
         outln!("{}", Document::Bands { bands: map }.to_json());
         return Ok(());
@@ -289,7 +289,7 @@ pub fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
             "  neutral point n = {} (a = {:.4}), passed by the screen, probed in steps of {}: {}",
             p.n,
             p.a_bar,
-            thinjkr::exact::bands::PROBE_STEP,
+            crate::exact::bands::PROBE_STEP,
             if p.outcome == "band" {
                 "a band (above)"
             } else {
@@ -345,7 +345,7 @@ fn modes(v: &[UnstableMode], series_modes: usize) -> String {
 
 /// An exact state in words: its size and load to ten digits, then how
 /// well it is resolved.
-pub fn show_state(label: &str, st: &ExactState) -> thinjkr::Result<()> {
+pub fn show_state(label: &str, st: &ExactState) -> crate::Result<()> {
     outln!(
         "{label}: rho = {}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
         st.rho,
@@ -358,7 +358,7 @@ pub fn show_state(label: &str, st: &ExactState) -> thinjkr::Result<()> {
     show_quality(st)
 }
 
-fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
+fn show_quality(st: &ExactState) -> crate::Result<()> {
     outln!(
         "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
         st.bc_error,
@@ -381,12 +381,12 @@ fn show_quality(st: &ExactState) -> thinjkr::Result<()> {
 
 /// The exact load-controlled pull-off and every model's.
 pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
-    let spin = crate::output::Spinner::start("locating the exact pull-off");
+    let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
     let (po, events) = match (d.modes, d.points) {
         // the default escalation, and the continuation in rho from a larger
         // rho where no start finds the pull-off
-        (None, None) => thinjkr::exact::pull_off_resolved(rho),
-        _ => thinjkr::exact::pull_off_with(rho, &d.tries()?),
+        (None, None) => crate::exact::pull_off_resolved(rho),
+        _ => crate::exact::pull_off_with(rho, &d.tries()?),
     }?;
     let models: Vec<_> = ModelId::ALL
         .iter()
@@ -401,7 +401,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     if json {
         let doc = Document::PullOff {
             state: AnyState::Exact(Box::new(po)),
-            control: thinjkr::fold::FoldCondition::Load,
+            control: crate::fold::FoldCondition::Load,
             basis: None,
             passed: Passed::from_exact(&events),
             models: models
@@ -453,8 +453,8 @@ pub fn every_state(
     json: bool,
 ) -> Result<()> {
     control.check_finite()?;
-    let spin = crate::output::Spinner::start("screening for every exact state");
-    let all = thinjkr::exact::bands::states_at(rho, control, from, to, &d.tries()?)?;
+    let spin = crate::cli::output::Spinner::start("screening for every exact state");
+    let all = crate::exact::bands::states_at(rho, control, from, to, &d.tries()?)?;
     drop(spin);
     if all.states.is_empty() {
         let missed: Vec<String> = all
@@ -464,9 +464,9 @@ pub fn every_state(
             .collect();
         return Err(Error::NoState(format!(
             "no near-elliptic exact state at {control} for rho = {} with a from {} to {} (conformal:8 screened in steps of 0.01, the arms beside its gaps followed past their folds{})",
-            thinjkr::error::short(rho),
-            thinjkr::error::short(from),
-            thinjkr::error::short(to),
+            crate::error::short(rho),
+            crate::error::short(from),
+            crate::error::short(to),
             if missed.is_empty() {
                 String::new()
             } else {
@@ -490,7 +490,7 @@ pub fn every_state(
         "{n} near-elliptic exact state{} at {control} for rho = {rho} with a from {} to {} (where conformal:8's states at fixed a, {} grid points, cross that value, and past the folds of the arms beside its gaps):",
         if n == 1 { "" } else { "s" },
         all.range[0],
-        thinjkr::error::short(all.range[1]),
+        crate::error::short(all.range[1]),
         all.screen
     );
     for (k, st) in all.states.iter().enumerate() {
@@ -513,13 +513,13 @@ pub fn every_state(
 
 /// The exact state at a control value and every model's.
 pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) -> Result<()> {
-    let spin = crate::output::Spinner::start("solving the free-boundary problem (2)-(3)");
+    let spin = crate::cli::output::Spinner::start("solving the free-boundary problem (2)-(3)");
     control.check_finite()?;
     let st = match (d.modes, d.points) {
         // the default escalation, and the continuation in rho from a larger
         // rho where no route finds the state directly
-        (None, None) => thinjkr::exact::at_resolved(rho, control),
-        _ => thinjkr::exact::at_searched(rho, control, &d.tries()?),
+        (None, None) => crate::exact::at_resolved(rho, control),
+        _ => crate::exact::at_searched(rho, control, &d.tries()?),
     }?;
     let model_states: Vec<_> = ModelId::ALL
         .iter()

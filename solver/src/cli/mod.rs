@@ -1,0 +1,1063 @@
+//! The command line, `thinjkr` (the binary is [`main`] and nothing else):
+//! the verbs and their arguments (clap), each answered through the model
+//! layer (`crate::registry`) and printed for a person, as CSV or as JSON
+//! (`crate::report`); `thinjkr exact …` in [`exact_command`], the contour
+//! families' printers in [`contour`], every write through [`output`], every
+//! file through [`files`]. With no arguments it prints the paper's ρ = 0.8
+//! example.
+//!
+//! Owns: the verbs, their parsing and printing, the thread pool of a run.
+//! May use: `crate::registry`, `crate::report`, `crate::units`,
+//! `crate::contact`, `crate::model`, `crate::conformal`, `crate::exact`,
+//! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
+//! `crate::limits`, `crate::error`, its own modules.
+
+use crate::conformal::{self as family};
+use crate::report::{AnyState, Document, ErrorBody};
+use crate::units::Cylinders;
+use crate::{Contact, ModelId, State};
+use clap::{Parser, Subcommand, ValueEnum};
+use std::process::ExitCode;
+
+fn parse_model(s: &str) -> Result<ModelChoice, String> {
+    crate::registry::parse(s)
+}
+
+/// A model of the ellipse, a member of a contour family, or the exact
+/// solution of (2)-(3) (`crate::registry`).
+use crate::registry::Choice as ModelChoice;
+use crate::registry::Hold;
+
+#[macro_use]
+mod output;
+mod contour;
+mod exact_command;
+mod files;
+
+/// Approximate JKR contact of thin incompressible coatings on rigid cylinders
+/// (Argatov, Mishuris & Popov 2016), dimensionless as in Eq. (17) unless
+/// `physical` is used.
+#[derive(Parser)]
+#[command(
+    version,
+    about,
+    after_help = "Examples:\n  thinjkr solve --rho 0.8 --delta 2\n  thinjkr solve --rho 0.8 --force -2 --json\n  thinjkr pull-off --rho 0.8 --control displacement\n  thinjkr pull-off --rho 0.8 --model energy\n  thinjkr zero-force --rho 0.9\n  thinjkr curve --rho 0.8 --points 50 --format csv\n  thinjkr physical --file contact.toml --force 1e-3"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// One state at given δ̄, F̄ or ā.
+    #[command(
+        after_help = "Examples:\n  thinjkr solve --rho 0.8 --delta 2\n  thinjkr solve --rho 0.8 --a 3 --json"
+    )]
+    Solve {
+        /// Radii ratio ρ = R2/R1 in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
+        model: ModelChoice,
+        /// Approach δ̄.
+        #[arg(long, allow_hyphen_values = true, group = "control")]
+        delta: Option<f64>,
+        /// Force F̄ (the stable state).
+        #[arg(long, allow_hyphen_values = true, group = "control")]
+        force: Option<f64>,
+        /// Major semi-axis ā (all states with this size).
+        #[arg(long, allow_hyphen_values = true, group = "control")]
+        a: Option<f64>,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Pull-off (minimum force under load control; end of the stable branch under displacement control).
+    #[command(
+        name = "pull-off",
+        after_help = "Example:\n  thinjkr pull-off --rho 0.8 --control displacement --json"
+    )]
+    PullOff {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
+        model: ModelChoice,
+        /// Control.
+        #[arg(long, value_enum, default_value_t = Control::Load)]
+        control: Control,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The exact solution of the free-boundary problem (2)-(3), every model beside it.
+    #[command(
+        after_help = "Examples:\n  thinjkr exact pull-off --rho 0.8\n  thinjkr exact solve --rho 0.8 --force 10\n  thinjkr exact zero-force --rho 0.8 --json\n  thinjkr pull-off --rho 0.8 --model exact"
+    )]
+    Exact {
+        #[command(subcommand)]
+        command: exact_command::ExactCommand,
+    },
+    /// The table of docs/accuracy.md: every model against the exact solution for rho from 1 to 0.1 (all cores; minutes).
+    #[command(
+        after_help = "Example:\n  thinjkr accuracy --out docs/accuracy.md --reference derive/data/exact_reference.json --figures docs/figures"
+    )]
+    Accuracy {
+        /// Write the markdown here instead of to standard output.
+        #[arg(long)]
+        out: Option<std::path::PathBuf>,
+        /// Also write the exact pull-offs as JSON here (the checker's reference, derive/data/exact_reference.json).
+        #[arg(long)]
+        reference: Option<std::path::PathBuf>,
+        /// Also draw the exact solution's figures (SVG) into this directory (docs/figures).
+        #[arg(long)]
+        figures: Option<std::path::PathBuf>,
+    },
+    /// The zero-force state (Section 5).
+    #[command(
+        name = "zero-force",
+        after_help = "Example:\n  thinjkr zero-force --rho 0.8 --json"
+    )]
+    ZeroForce {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
+        model: ModelChoice,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The force–displacement curve including its unstable part.
+    #[command(
+        after_help = "Example:\n  thinjkr curve --rho 0.8 --points 100 --format csv > curve.csv"
+    )]
+    Curve {
+        /// Radii ratio ρ in (0, 1].
+        #[arg(long, allow_hyphen_values = true)]
+        rho: f64,
+        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(false, "; exact gives states, not curves (use exact solve)"))]
+        model: ModelChoice,
+        /// Number of points, 2 ..= 100000.
+        #[arg(long, default_value_t = 100)]
+        points: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+    },
+    /// Solve many inputs: a CSV `rho,control,value` (control delta or force) on stdin, one state per line on stdout, in input order, on all cores.
+    #[command(
+        after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error. A line that cannot be read or solved gets an empty state and the error (naming the line) in the last column; the other lines are still written. A progress count is shown on stderr when it is a terminal."
+    )]
+    Batch {
+        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(false, " (a contour family's bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty)"))]
+        model: ModelChoice,
+    },
+    /// The models the solver has, one line each.
+    Models {
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Draw the paper's Figures 2–9 and the crossing-angle figure as SVG.
+    #[command(after_help = "Example:\n  thinjkr figures --out docs/figures")]
+    Figures {
+        /// Output directory.
+        #[arg(long)]
+        out: std::path::PathBuf,
+    },
+    /// Physical inputs (SI units), from flags or a TOML file with the same keys.
+    #[command(
+        after_help = "Example:\n  thinjkr physical --r1 0.01 --r2 0.01 --theta-deg 60 --h1 1e-4 --h2 1e-4 --g1 1e6 --g2 1e6 --work-of-adhesion 0.05 --force 0"
+    )]
+    Physical {
+        /// TOML file with r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion (and no other keys); not together with those flags.
+        #[arg(long, conflicts_with_all = ["r1", "r2", "theta_deg", "h1", "h2", "g1", "g2", "work_of_adhesion"])]
+        file: Option<std::path::PathBuf>,
+        /// Radius of cylinder 1 [m], > 0.
+        #[arg(long, allow_hyphen_values = true)]
+        r1: Option<f64>,
+        /// Radius of cylinder 2 [m], > 0.
+        #[arg(long, allow_hyphen_values = true)]
+        r2: Option<f64>,
+        /// Crossing angle θ between the cylinder axes [degrees], in (0, 90].
+        #[arg(long, allow_hyphen_values = true)]
+        theta_deg: Option<f64>,
+        /// Thickness of coating 1 [m], > 0 (thin: much smaller than the contact).
+        #[arg(long, allow_hyphen_values = true)]
+        h1: Option<f64>,
+        /// Thickness of coating 2 [m], > 0.
+        #[arg(long, allow_hyphen_values = true)]
+        h2: Option<f64>,
+        /// Out-of-plane shear modulus G′₁ of coating 1 [Pa], > 0.
+        #[arg(long, allow_hyphen_values = true)]
+        g1: Option<f64>,
+        /// Out-of-plane shear modulus G′₂ of coating 2 [Pa], > 0.
+        #[arg(long, allow_hyphen_values = true)]
+        g2: Option<f64>,
+        /// Work of adhesion Δγ [J/m²], > 0.
+        #[arg(long, allow_hyphen_values = true)]
+        work_of_adhesion: Option<f64>,
+        /// Force [N] (the stable state); without it and --delta, pull-off under load control.
+        #[arg(long, allow_hyphen_values = true, group = "physical_control")]
+        force: Option<f64>,
+        /// Approach [m].
+        #[arg(long, allow_hyphen_values = true, group = "physical_control")]
+        delta: Option<f64>,
+        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
+        model: ModelChoice,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The JSON Schema of every `--json` output (docs/schema.json).
+    Schema,
+    /// Shell completions for SHELL (bash, zsh, fish, elvish, powershell) on standard output.
+    #[command(
+        after_help = "Example:\n  thinjkr completions bash > ~/.local/share/bash-completion/completions/thinjkr"
+    )]
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// The manual page (roff) on standard output (docs/thinjkr.1).
+    Manpage,
+}
+
+#[derive(Clone, Copy, PartialEq, ValueEnum)]
+enum Control {
+    Load,
+    Displacement,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Format {
+    Csv,
+    Json,
+}
+
+/// Whether the subcommand prints JSON (then an error is JSON on stdout too).
+fn wants_json(c: &Option<Command>) -> bool {
+    match c {
+        Some(Command::Solve { json, .. })
+        | Some(Command::PullOff { json, .. })
+        | Some(Command::ZeroForce { json, .. })
+        | Some(Command::Models { json, .. })
+        | Some(Command::Physical { json, .. }) => *json,
+        Some(Command::Curve { format, .. }) => matches!(format, Format::Json),
+        Some(Command::Exact { command }) => command.json(),
+        _ => false,
+    }
+}
+
+fn stability(st: &State) -> String {
+    let word = |v: Option<bool>| match v {
+        Some(true) => "stable",
+        Some(false) => "unstable",
+        None => "n/a",
+    };
+    match (st.stability.stable_displacement, st.stability.stable_load) {
+        (None, None) => String::new(),
+        (d, l) => format!(
+            " [displacement control: {}, load control: {}]",
+            word(d),
+            word(l)
+        ),
+    }
+}
+
+fn show(label: &str, st: &State) -> crate::Result<()> {
+    outln!(
+        "{label}: model {}, a = {}, s = {}, delta = {}, force = {}, xi = {}, p0 = {}, error (14) = {:.4} %{}{}{}",
+        st.model,
+        output::num(st.a_bar),
+        output::num(st.s),
+        output::num(st.delta_bar),
+        output::num(st.force_bar),
+        output::num(st.xi),
+        output::num(st.p0),
+        100.0 * st.bc_error,
+        if st.outside_stated_range { " [rho < 0.8: outside the paper's stated range]" } else { "" },
+        if st.beyond_size_fold { " [beyond the contact-size fold]" } else { "" },
+        stability(st)
+    );
+    Ok(())
+}
+
+/// `thinjkr batch`: some lines have no state (their rows say why).
+const BATCH_SOME_FAILED: u8 = 3;
+/// `thinjkr batch`: no line has a state.
+const BATCH_NONE_SOLVED: u8 = 4;
+
+/// Run a subcommand; the exit status when it succeeds (0, or a batch's
+/// partial status).
+fn run(cli: Cli) -> crate::Result<u8> {
+    match cli.command {
+        None => example()?,
+        Some(Command::Solve {
+            rho,
+            model,
+            delta,
+            force,
+            a,
+            json,
+        }) => solve_command(rho, model, delta, force, a, json)?,
+        Some(Command::PullOff {
+            rho,
+            model,
+            control,
+            json,
+        }) => pull_off_command(rho, model, control, json)?,
+        Some(Command::Exact { command }) => exact_command::run(command)?,
+        Some(Command::Batch { model }) => return batch_command(model),
+        Some(Command::Accuracy {
+            out,
+            reference,
+            figures,
+        }) => accuracy_command(out, reference, figures)?,
+        Some(Command::ZeroForce { rho, model, json }) => zero_force_command(rho, model, json)?,
+        Some(Command::Curve {
+            rho,
+            model,
+            points,
+            format,
+        }) => curve_command(model, rho, points, format)?,
+        Some(Command::Models { json }) => models_command(json)?,
+        Some(Command::Schema) => outln!("{}", crate::report::schema().trim_end()),
+        Some(Command::Completions { shell }) => completions_command(shell)?,
+        Some(Command::Manpage) => out!("{}", manpage()),
+        Some(Command::Figures { out }) => {
+            files::check_folder(&out)?;
+            let drawn = crate::figures::all()?;
+            files::create_folder(&out)?;
+            let mut written = Vec::new();
+            for (name, svg) in drawn {
+                let p = out.join(name);
+                files::write_whole(&p, svg.as_bytes())?;
+                written.push(p);
+            }
+            for p in written {
+                outln!("{}", p.display());
+            }
+        }
+        Some(Command::Physical {
+            file,
+            r1,
+            r2,
+            theta_deg,
+            h1,
+            h2,
+            g1,
+            g2,
+            work_of_adhesion,
+            force,
+            delta,
+            model,
+            json,
+        }) => {
+            let inputs = [r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion];
+            physical(&cylinders(file, inputs)?, model, force, delta, json)?
+        }
+    }
+    Ok(0)
+}
+
+/// No subcommand: the paper's ρ = 0.8 example.
+fn example() -> crate::Result<()> {
+    let c = Contact::new(0.8)?;
+    outln!("thinjkr: the paper's example, rho = R2/R1 = 0.8 (dimensionless, Eq. (17)); derived forms of (18), (26), (27)");
+    show("pull-off (load control)        ", &c.pull_off_load()?.state)?;
+    show(
+        "pull-off (displacement control)",
+        &c.pull_off_displacement()?.state,
+    )?;
+    show("zero force                     ", &c.zero_force()?)?;
+    let e = Contact::with_model(ModelId::Energy, 0.8)?;
+    outln!("the same contact with the energy (Ritz) closure of the same ellipse (--model energy):");
+    show("pull-off (load control)        ", &e.pull_off_load()?.state)?;
+    show("zero force                     ", &e.zero_force()?)?;
+    Ok(())
+}
+
+/// `thinjkr solve`: one state at given δ̄, F̄ or ā (every state of that ā).
+fn solve_command(
+    rho: f64,
+    model: ModelChoice,
+    delta: Option<f64>,
+    force: Option<f64>,
+    a: Option<f64>,
+    j: bool,
+) -> crate::Result<()> {
+    let hold = match (delta, force, a) {
+        (Some(d), _, _) => Hold::Delta(d),
+        (_, Some(f), _) => Hold::Force(f),
+        (_, _, Some(a)) => Hold::Size(a),
+        _ => {
+            return Err(crate::Error::Usage(
+                "give one of --delta, --force, --a".into(),
+            ))
+        }
+    };
+    // the exact state's report also solves the ellipse models at its
+    // control and prints each one's distance from it
+    use crate::exact::branch::ExactControl;
+    let exact = match (model, hold) {
+        (ModelChoice::Exact, Hold::Delta(d)) => Some(ExactControl::Delta(d)),
+        (ModelChoice::Exact, Hold::Force(f)) => Some(ExactControl::Force(f)),
+        _ => None,
+    };
+    if let Some(control) = exact {
+        return exact_command::state(rho, control, &exact_command::Discretisation::default(), j);
+    }
+    show_states("state", &model.states(rho, hold)?, j)
+}
+
+/// States of the models of the ellipse and of the contour families, as
+/// text or as one JSON document (`state`, or `states` for several).
+fn show_states(label: &str, states: &[AnyState], j: bool) -> crate::Result<()> {
+    if j {
+        let doc = match states {
+            [one] => Document::State {
+                state: one.clone(),
+                models: Vec::new(),
+            },
+            many => Document::States {
+                states: many.to_vec(),
+            },
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    for st in states {
+        match st {
+            AnyState::Ellipse(st) => show(label, st)?,
+            AnyState::Conformal(st) => contour::show(label, st)?,
+            AnyState::Exact(st) => exact_command::show_state(label, st)?,
+        }
+    }
+    Ok(())
+}
+
+/// `thinjkr pull-off`: the end of the branch under load or displacement control.
+fn pull_off_command(rho: f64, model: ModelChoice, control: Control, j: bool) -> crate::Result<()> {
+    let condition = match control {
+        Control::Load => crate::fold::FoldCondition::Load,
+        Control::Displacement => crate::fold::FoldCondition::Displacement,
+    };
+    if let (ModelChoice::Exact, Control::Load) = (model, control) {
+        // the exact pull-off's report also solves the ellipse models' and
+        // prints each one's distance from it
+        return exact_command::pull_off(rho, &exact_command::Discretisation::default(), j);
+    }
+    let p = model.pull_off(rho, condition)?;
+    if j {
+        let doc = Document::PullOff {
+            state: p.state,
+            control: p.control,
+            basis: p.basis,
+            passed: p.passed,
+            models: Vec::new(),
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    match (&p.state, model) {
+        (AnyState::Ellipse(st), _) => {
+            show("pull-off", st)?;
+            if let Some(b) = p.basis {
+                outln!("  end point: {}", b.describe());
+            }
+        }
+        (AnyState::Conformal(st), ModelChoice::Contour(m)) => {
+            contour::show_pull_off(&m, st, condition, &p.passed)?
+        }
+        (st, _) => show_states("pull-off", std::slice::from_ref(st), false)?,
+    }
+    Ok(())
+}
+
+/// `thinjkr batch`: CSV lines on stdin, one row each on stdout, in blocks
+/// solved on all cores; the exit status says whether every line solved.
+fn batch_command(model: ModelChoice) -> crate::Result<u8> {
+    output::check_input_open()?;
+    use crate::batch::{csv_row_values, decode_line, parse_line, solve_all, Row, CSV_HEADER};
+    use std::io::{BufRead, IsTerminal};
+    if matches!(model, ModelChoice::Exact) {
+        return Err(crate::Error::Unavailable {
+            model: "exact",
+            what: "batch".into(),
+            why: "an exact state takes up to seconds: use `thinjkr exact solve` per state",
+        });
+    }
+    let stdin = std::io::stdin();
+    outln!("{CSV_HEADER}");
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} {pos} lines, {elapsed}")
+                .expect("template"),
+        );
+        b
+    });
+    // raw lines: a line that is not UTF-8 is an error row of its own
+    let mut lines = stdin.lock().split(b'\n').enumerate();
+    let (mut failed, mut solved_any) = (0usize, false);
+    loop {
+        // a block of input lines, solved in parallel, written in order
+        let mut block = Vec::with_capacity(4096);
+        for (i, raw) in lines.by_ref() {
+            let raw = raw.map_err(|e| {
+                crate::Error::Io(format!("reading line {} of the input: {e}", i + 1))
+            })?;
+            let parsed = match decode_line(i + 1, &raw) {
+                Ok(line) => parse_line(i + 1, line),
+                Err(e) => Some(Err(e)),
+            };
+            if let Some(parsed) = parsed {
+                block.push((i + 1, parsed));
+                if block.len() == 4096 {
+                    break;
+                }
+            }
+        }
+        if block.is_empty() {
+            break;
+        }
+        let items: Vec<_> = block
+            .iter()
+            .filter_map(|(_, p)| p.as_ref().ok().copied())
+            .collect();
+        let rows: Vec<crate::Result<Row>> = solve_all(&model, &items)
+            .iter()
+            .map(|r| r.as_ref().map(Row::from).map_err(Clone::clone))
+            .collect();
+        let mut solved = rows.into_iter();
+        for (n, parsed) in &block {
+            let row = match parsed {
+                Ok(item) => {
+                    let r = solved.next().expect("one result per item");
+                    match &r {
+                        Err(e) => {
+                            errln!("thinjkr: line {n}: {e}");
+                            failed += 1;
+                        }
+                        Ok(_) => solved_any = true,
+                    }
+                    csv_row_values(*n, Some(item), &r)
+                }
+                Err(e) => {
+                    errln!("thinjkr: {e}");
+                    failed += 1;
+                    csv_row_values(*n, None, &Err(e.clone()))
+                }
+            };
+            outln!("{row}");
+        }
+        if let Some(b) = &bar {
+            b.inc(block.len() as u64);
+        }
+    }
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    if failed == 0 {
+        return Ok(0);
+    }
+    errln!("thinjkr: {failed} line(s) without a state (see the error column)");
+    Ok(if solved_any {
+        BATCH_SOME_FAILED
+    } else {
+        BATCH_NONE_SOLVED
+    })
+}
+
+/// `thinjkr accuracy`: the table of docs/accuracy.md, on all cores.
+fn accuracy_command(
+    out: Option<std::path::PathBuf>,
+    reference: Option<std::path::PathBuf>,
+    figures: Option<std::path::PathBuf>,
+) -> crate::Result<()> {
+    // every output path is checked before the minutes of work, and none
+    // is created until the work is done (files::check_file)
+    for p in [&out, &reference].into_iter().flatten() {
+        files::check_file(p)?;
+    }
+    if let Some(dir) = &figures {
+        files::check_folder(dir)?;
+    }
+    let began = std::time::Instant::now();
+    use crate::exact::table::{doubling, reference as reference_of, render, row, Quantity, RHOS};
+    use rayon::prelude::*;
+    let jobs: Vec<(f64, Quantity)> = RHOS
+        .iter()
+        .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (r, q)))
+        .collect();
+    let bar = indicatif::ProgressBar::new(jobs.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {elapsed}")
+            .expect("template"),
+    );
+    let rows: Vec<_> = jobs
+        .par_iter()
+        .map(|&(r, q)| {
+            let x = row(r, q);
+            bar.inc(1);
+            x
+        })
+        .collect();
+    bar.finish_and_clear();
+    let pull_offs: Vec<_> = rows
+        .iter()
+        .filter(|r| r.quantity == Quantity::PullOff)
+        .filter_map(|r| r.exact.as_ref().ok())
+        .collect();
+    let bar = indicatif::ProgressBar::new(pull_offs.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} doublings, {elapsed}")
+            .expect("template"),
+    );
+    let doublings: Vec<_> = pull_offs
+        .par_iter()
+        .map(|st| {
+            let d = doubling(st);
+            bar.inc(1);
+            d
+        })
+        .collect();
+    bar.finish_and_clear();
+    let text = render(&rows, &doublings);
+    let refdata = reference_of(&doublings);
+    if let Some(dir) = figures {
+        let drawn = crate::figures::exact_all(&refdata)?;
+        files::create_folder(&dir)?;
+        for (name, svg) in drawn {
+            files::write_whole(&dir.join(name), svg.as_bytes())?;
+        }
+    }
+    if let Some(p) = reference {
+        let json = serde_json::to_string_pretty(&refdata).expect("plain data serialises");
+        files::write_whole(&p, (json + "\n").as_bytes())?;
+    }
+    match out {
+        Some(p) => files::write_whole(&p, text.as_bytes())?,
+        None => out!("{text}"),
+    }
+    errln!(
+        "thinjkr: accuracy table: {} rows and {} doublings in {:.1} s on {} threads",
+        rows.len(),
+        doublings.len(),
+        began.elapsed().as_secs_f64(),
+        rayon::current_num_threads()
+    );
+    Ok(())
+}
+
+/// `thinjkr zero-force`.
+fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> crate::Result<()> {
+    if let ModelChoice::Exact = model {
+        // the exact state's report, with the ellipse models beside it
+        return exact_command::state(
+            rho,
+            crate::exact::branch::ExactControl::Force(0.0),
+            &exact_command::Discretisation::default(),
+            j,
+        );
+    }
+    show_states("zero force", &[model.zero_force(rho)?], j)
+}
+
+/// `thinjkr models`.
+fn models_command(j: bool) -> crate::Result<()> {
+    let models = crate::report::models();
+    for p in family::load_problems() {
+        errln!("thinjkr: warning: {p}");
+    }
+    if j {
+        outln!("{}", Document::Models { models }.to_json());
+    } else {
+        for m in models {
+            outln!("{:<13} {}", m.name, m.description);
+        }
+    }
+    Ok(())
+}
+
+/// `thinjkr completions`.
+fn completions_command(shell: clap_complete::Shell) -> crate::Result<()> {
+    let mut buf = Vec::new();
+    clap_complete::generate(
+        shell,
+        &mut <Cli as clap::CommandFactory>::command(),
+        "thinjkr",
+        &mut buf,
+    );
+    out!("{}", String::from_utf8_lossy(&buf));
+    Ok(())
+}
+
+/// The largest contact file read: eight numbers and their keys take a few
+/// hundred bytes.
+const CONTACT_FILE_MAX_BYTES: u64 = 64 * 1024;
+
+/// The contact of `physical`: from its TOML file, or every input given
+/// (r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion).
+fn cylinders(
+    file: Option<std::path::PathBuf>,
+    inputs: [Option<f64>; 8],
+) -> crate::Result<Cylinders> {
+    let [r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion] = inputs;
+    Ok(match file {
+        Some(p) => {
+            let text = files::input(&p, CONTACT_FILE_MAX_BYTES)?;
+            toml::from_str::<Cylinders>(&text).map_err(|e| {
+                // the parser's words, not the file's line (which may be
+                // megabytes long)
+                let at = e
+                    .span()
+                    .map(|r| {
+                        let line = text[..r.start.min(text.len())].matches('\n').count() + 1;
+                        format!(" (line {line})")
+                    })
+                    .unwrap_or_default();
+                crate::Error::Usage(format!(
+                    "{} is not a valid contact file{at}: {}",
+                    p.display(),
+                    files::quote(e.message(), 160)
+                ))
+            })?
+        }
+        None => {
+            let need = |n: &'static str, v: Option<f64>| {
+                v.ok_or_else(|| {
+                    crate::Error::Usage(format!(
+                        "physical needs --{} (or every input in a --file)",
+                        n.replace('_', "-")
+                    ))
+                })
+            };
+            Cylinders {
+                r1: need("r1", r1)?,
+                r2: need("r2", r2)?,
+                theta_deg: need("theta_deg", theta_deg)?,
+                h1: need("h1", h1)?,
+                h2: need("h2", h2)?,
+                g1: need("g1", g1)?,
+                g2: need("g2", g2)?,
+                work_of_adhesion: need("work_of_adhesion", work_of_adhesion)?,
+            }
+        }
+    })
+}
+
+/// The manual page, generated from the command-line definitions.
+fn manpage() -> String {
+    let mut buf = Vec::new();
+    clap_mangen::Man::new(<Cli as clap::CommandFactory>::command())
+        .render(&mut buf)
+        .expect("rendering into memory");
+    String::from_utf8_lossy(&buf).into_owned()
+}
+
+/// `physical`: the state of `model` for the contact `cyl` at force `force`
+/// (N) or approach `delta` (m), or its pull-off under load control; in SI
+/// units beside the dimensionless state, with a warning on stderr where
+/// the input lies outside the model's stated range (it still answers).
+fn physical(
+    cyl: &Cylinders,
+    model: ModelChoice,
+    force: Option<f64>,
+    delta: Option<f64>,
+    json: bool,
+) -> crate::Result<()> {
+    let sc = cyl.scales()?;
+    let force_si = force;
+    // a value the user typed, scaled: refused in the user's units when it
+    // is not finite or its scaled value is not (1e308 N over a millinewton
+    // scale is no number)
+    let scaled = |name: &'static str, v: f64, scale: f64, unit: &str| {
+        let x = v / scale;
+        if v.is_finite() && x.is_finite() {
+            Ok(x)
+        } else {
+            Err(crate::Error::OutOfRange {
+                name,
+                value: v,
+                range: format!(
+                    "finite, with |{name}| at most {} {unit} for this contact",
+                    crate::error::short(f64::MAX * scale)
+                )
+                .into(),
+            })
+        }
+    };
+    let force = force
+        .map(|f| scaled("force", f, sc.force, "N"))
+        .transpose()?;
+    let delta = delta
+        .map(|d| scaled("delta", d, sc.approach, "m"))
+        .transpose()?;
+    // a limit the model states in the units (17) is restated in newtons
+    let in_si = |e: crate::Error| -> crate::Error {
+        let (crate::Error::OutOfRange { name: "force", .. }, Some(typed)) = (&e, force_si) else {
+            return e;
+        };
+        match model.pull_off(sc.rho, crate::fold::FoldCondition::Load) {
+            Ok(p) => crate::Error::OutOfRange {
+                name: "force",
+                value: typed,
+                range: format!(
+                    "[{} N, ∞): from the pull-off force of this contact (model {})",
+                    crate::error::short(p.state.size_and_load().3 * sc.force),
+                    model.name()
+                )
+                .into(),
+            },
+            Err(_) => e,
+        }
+    };
+    let state = match (force, delta) {
+        (Some(f), _) => model.state(sc.rho, Hold::Force(f)),
+        (_, Some(d)) => model.state(sc.rho, Hold::Delta(d)),
+        _ => model
+            .pull_off(sc.rho, crate::fold::FoldCondition::Load)
+            .map(|p| p.state),
+    }
+    .map_err(in_si)?;
+    let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
+    let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
+    let mut warnings = Vec::new();
+    if sc.rho < 0.8 {
+        warnings.push(format!(
+            "rho = R2/R1 = {} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
+            output::num(sc.rho)
+        ));
+    }
+    if si.h_over_a > 0.1 {
+        warnings.push(format!(
+            "h/a = {}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
+            output::num(si.h_over_a)
+        ));
+    }
+    for w in &warnings {
+        errln!("thinjkr: warning: {w}");
+    }
+    if json {
+        let doc = Document::Physical {
+            state,
+            si,
+            scales: sc,
+            warnings,
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    let model_name = match &state {
+        AnyState::Ellipse(st) => st.model.name().to_string(),
+        AnyState::Conformal(st) => st.model.clone(),
+        _ => "exact".into(),
+    };
+    outln!(
+        "physical: model {model_name}, rho = {}, a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, h/a = {:.4}",
+        output::num(sc.rho),
+        si.a,
+        si.b,
+        si.delta,
+        si.force,
+        si.h_over_a
+    );
+    outln!(
+        "  dimensionless (17): a = {}, s = {}, delta = {}, force = {}; scales: L = {:.6e} m, approach {:.6e} m, force {:.6e} N",
+        output::num(a_bar),
+        output::num(b_bar / a_bar),
+        output::num(delta_bar),
+        output::num(force_bar),
+        sc.length,
+        sc.approach,
+        sc.force
+    );
+    Ok(())
+}
+
+/// The most threads a run starts per core, whatever RAYON_NUM_THREADS asks
+/// for: the work is arithmetic, and more threads than cores only cost
+/// memory.
+const MAX_THREADS_PER_CORE: usize = 4;
+
+/// Each worker thread's stack (Rust's default for spawned threads).
+const THREAD_STACK_BYTES: usize = 2 << 20;
+
+/// How many worker threads fit in half of the address space the process
+/// may still map, where a limit is set (`ulimit -v`); `None` without one.
+fn threads_that_fit() -> Option<usize> {
+    #[cfg(target_os = "linux")]
+    {
+        let mut lim = libc::rlimit {
+            rlim_cur: 0,
+            rlim_max: 0,
+        };
+        // SAFETY: getrlimit writes into the struct we own.
+        if unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut lim) } != 0
+            || lim.rlim_cur == libc::RLIM_INFINITY
+        {
+            return None;
+        }
+        // the address space mapped now: the first field of statm, in pages
+        let pages: u64 = std::fs::read_to_string("/proc/self/statm")
+            .ok()
+            .and_then(|t| t.split_whitespace().next()?.parse().ok())
+            .unwrap_or(0);
+        // SAFETY: sysconf only reads a constant of the system.
+        let page = unsafe { libc::sysconf(libc::_SC_PAGESIZE) }.max(4096) as u64;
+        let free = (lim.rlim_cur as u64).saturating_sub(pages * page);
+        // a stack, its guard, the signal stack, and the 64 MiB the C
+        // allocator reserves for a thread's own arena
+        let per_thread = THREAD_STACK_BYTES as u64 + (65 << 20);
+        Some(((free / 2) / per_thread).max(1) as usize)
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        None
+    }
+}
+
+/// The thread pool every parallel step of a run (batch, accuracy, the
+/// exact bands) runs on: as many threads as RAYON_NUM_THREADS asks for (up
+/// to [`MAX_THREADS_PER_CORE`] per core), else one per core. Where the system cannot start
+/// that many (a memory cap), half as many are tried, down to one, with a
+/// warning; rayon's own global pool would instead panic at the first
+/// parallel step.
+fn thread_pool() -> rayon::ThreadPool {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let asked = std::env::var("RAYON_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .filter(|&n| n > 0);
+    let mut n = asked.unwrap_or(cores);
+    let most = MAX_THREADS_PER_CORE * cores;
+    if n > most {
+        errln!("thinjkr: warning: RAYON_NUM_THREADS = {n} is more than {most} threads ({MAX_THREADS_PER_CORE} per core); using {most}");
+        n = most;
+    }
+    // under a cap on the address space, at most the threads whose stacks
+    // fill half of what is left: a thread that starts but cannot map its
+    // signal stack afterwards aborts the run, which no fallback can catch
+    if let Some(fit) = threads_that_fit() {
+        if n > fit {
+            errln!("thinjkr: warning: {n} threads do not fit in the memory limit; using {fit}");
+            n = fit;
+        }
+    }
+    loop {
+        let built = rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .stack_size(THREAD_STACK_BYTES)
+            .build();
+        match built {
+            Ok(pool) => return pool,
+            Err(e) if n > 1 => {
+                errln!(
+                    "thinjkr: warning: could not start {n} threads ({e}); trying {}",
+                    n / 2
+                );
+                n /= 2;
+            }
+            Err(e) => {
+                // not even one thread: the work runs on this one
+                errln!(
+                    "thinjkr: warning: could not start a thread ({e}); running on the main thread"
+                );
+                return rayon::ThreadPoolBuilder::new()
+                    .num_threads(1)
+                    .use_current_thread()
+                    .build()
+                    .expect("a pool of the current thread starts no thread");
+            }
+        }
+    }
+}
+
+/// The program: parse the arguments, run the verb on a pool of threads
+/// that fits the machine, print, and give the exit status.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let json_mode = wants_json(&cli.command);
+    let pool = thread_pool();
+    let mut result = output::check_open().and_then(|()| pool.install(|| run(cli)));
+    // in --json mode an error is a JSON document on stdout as well (and
+    // the same words on stderr), with the nonzero status
+    if let Err(e) = &result {
+        if json_mode && !output::broken_pipe() {
+            let doc = Document::Error {
+                error: ErrorBody::from(e),
+            };
+            if let Err(w) = output::line(format_args!("{}", doc.to_json())) {
+                result = Err(w);
+            }
+        }
+    }
+    // what was written before an error is flushed too (its own write
+    // error, if any, then takes the place of the first)
+    let flushed = output::finish();
+    match result.and_then(|status| flushed.map(|()| status)) {
+        // a line for standard error was lost (a full disk): the output is
+        // complete, but the run did not say everything it had to
+        Ok(0) if output::stderr_failed() => ExitCode::FAILURE,
+        Ok(status) => ExitCode::from(status),
+        // a closed pipe: the reader has what it wanted; end quietly
+        Err(_) if output::broken_pipe() => ExitCode::from(output::BROKEN_PIPE_STATUS),
+        Err(e) => {
+            errln!("thinjkr: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `thinjkr curve`: the branch from δ̄ = 20 past pull-off, as CSV or JSON.
+fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) -> crate::Result<()> {
+    const DELTA_START: f64 = 20.0;
+    let cv = model.curve(rho, points, DELTA_START)?;
+    if let Format::Json = format {
+        let doc = Document::Curve {
+            states: cv.states,
+            folds: cv.folds,
+            end: cv.arms.map(|a| a.end),
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    outln!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
+    let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
+    for (i, st) in cv.states.iter().enumerate() {
+        // the numbers as a batch row has them (bc_error: (14) for the
+        // ellipse, max |dp/dnu - 1| on the contour otherwise)
+        let r = crate::batch::Row::from(st);
+        let (name, beyond, stable) = match st {
+            AnyState::Ellipse(e) => (
+                e.model.name().to_string(),
+                e.beyond_size_fold,
+                (e.stability.stable_displacement, e.stability.stable_load),
+            ),
+            AnyState::Conformal(c) => (
+                c.model.clone(),
+                cv.arms
+                    .as_ref()
+                    .and_then(|a| a.beyond_size_fold.get(i).copied())
+                    .unwrap_or(false),
+                (Some(c.stable_displacement), Some(c.stable_load)),
+            ),
+            AnyState::Exact(_) => ("exact".into(), false, (None, None)),
+        };
+        outln!(
+            "{name},{},{},{},{},{},{beyond},{},{}",
+            r.delta_bar,
+            r.force_bar,
+            r.a_bar,
+            r.s,
+            r.bc_error,
+            flag(stable.0),
+            flag(stable.1)
+        );
+    }
+    Ok(())
+}
