@@ -5,7 +5,7 @@
 //! length run in bounded memory.
 //!
 //! Owns: [`Item`], [`Given`], [`Solves`], [`solve_all`], [`parse_line`],
-//! [`csv_row`], [`CSV_HEADER`]. May use: `contact`, `conformal`, `error`,
+//! [`csv_row_values`], [`CSV_HEADER`]. May use: `contact`, `conformal`, `error`,
 //! `model`.
 
 use crate::contact::{Contact, State};
@@ -107,7 +107,8 @@ pub fn solve_all<S: Solves + ?Sized>(model: &S, items: &[Item]) -> Vec<Result<S:
 }
 
 /// The header of the output CSV.
-pub const CSV_HEADER: &str = "line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error";
+#[cfg(feature = "cli")]
+pub(crate) const CSV_HEADER: &str = "line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error";
 
 /// Parse one input line `rho,control,value` (control `delta` or `force`).
 /// Only the first line may be skipped (`None`), and only when it is the
@@ -162,7 +163,7 @@ pub fn parse_line(number: usize, line: &str) -> Option<Result<Item>> {
 }
 
 /// The first 40 characters of `s`, quoted, with the length of the rest.
-pub fn quote_start(s: &str) -> String {
+pub(crate) fn quote_start(s: &str) -> String {
     let n = s.chars().count();
     if n <= 40 {
         format!("{s:?}")
@@ -187,17 +188,6 @@ pub fn decode_line(number: usize, raw: &[u8]) -> std::result::Result<&str, Error
             e.valid_up_to() + 1
         ))
     })
-}
-
-/// One output row: the input echoed, the state's numbers (the shortest
-/// form that reads back to the same f64, e.g. `1e-300`)
-/// or empty fields and the error, quoted.
-pub fn csv_row(number: usize, item: Option<&Item>, result: &Result<State>) -> String {
-    csv_row_values(
-        number,
-        item,
-        &result.as_ref().map(Row::from).map_err(Clone::clone),
-    )
 }
 
 /// The numbers of one output row: the state's, with ξ and p₀ where the
@@ -253,8 +243,11 @@ impl From<&crate::conformal::ConformalState> for Row {
     }
 }
 
-/// One output row from its numbers (or the error naming the line).
-pub fn csv_row_values(number: usize, item: Option<&Item>, result: &Result<Row>) -> String {
+/// One output row: the input echoed, the state's numbers (the shortest
+/// form that reads back to the same f64, e.g. `1e-300`) or empty fields and
+/// the error, quoted.
+#[cfg(feature = "cli")]
+pub(crate) fn csv_row_values(number: usize, item: Option<&Item>, result: &Result<Row>) -> String {
     let (rho, control, value) = match item {
         Some(it) => match it.given {
             Given::Delta(v) => (format!("{:?}", it.rho), "delta", format!("{v:?}")),

@@ -62,7 +62,7 @@ pub struct Stability {
 /// [`Error::Unsupported`]. (The energy model's numeric s∞ is bracketed on a
 /// grid from s = 1e-4, which reaches ρ = 1e-8: at ρ = 1e-8, δ̄ = 1 its state
 /// has s ≈ 8e-5, beyond the contact-size fold.)
-pub const RHO_MIN: f64 = 1e-8;
+pub(crate) const RHO_MIN: f64 = 1e-8;
 
 /// One state of a model, dimensionless as in (17) (lengths in
 /// L = (2R₁²Δγ/m)^(1/6), pressures in √(2mΔγ) L).
@@ -319,7 +319,7 @@ impl Contact {
     /// ā → ∞ on the branch. From the model's derived relation ρ(s) where it
     /// has one; otherwise the end of the s-range where the model's adhesive
     /// branch exists, located by bisection (once, when the contact is made).
-    pub fn s_infinity(&self) -> Result<f64> {
+    pub(crate) fn s_infinity(&self) -> Result<f64> {
         if self.axisymmetric() {
             return Ok(1.0);
         }
@@ -435,13 +435,13 @@ impl Contact {
     }
 
     /// The state on the branch at aspect ratio `s` (explicit; no Newton).
-    pub fn state_at_s(&self, s: f64) -> Option<State> {
+    pub(crate) fn state_at_s(&self, s: f64) -> Option<State> {
         let (a, d) = self.adhesive_point(s)?;
         Some(self.state_from(a, s, d))
     }
 
     /// The full state at (ā, s, δ̄), which must satisfy the model's residuals.
-    pub fn state_from(&self, a: f64, s: f64, delta: f64) -> State {
+    pub(crate) fn state_from(&self, a: f64, s: f64, delta: f64) -> State {
         self.state_with(a, s, delta, true)
     }
 

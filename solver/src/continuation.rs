@@ -37,7 +37,7 @@ use nalgebra::{DefaultAllocator, Dim, DimMin, OMatrix, OVector, LU};
 
 /// The equations of a family and their Jacobian at one point.
 #[derive(Clone, Debug)]
-pub struct Linear<D: Dim>
+pub(crate) struct Linear<D: Dim>
 where
     DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
@@ -53,7 +53,7 @@ where
 }
 
 /// A family of states: n − 1 equations in the n unknowns u.
-pub trait Family<D: Dim>
+pub(crate) trait Family<D: Dim>
 where
     DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
@@ -102,7 +102,7 @@ where
 
 /// Step control and budgets of a trace.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Settings {
+pub(crate) struct Settings {
     /// The first step.
     pub step: f64,
     /// The smallest step: a step that fails at this size ends the trace
@@ -145,7 +145,7 @@ impl Default for Settings {
 
 /// What the engine does with an event.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum On {
+pub(crate) enum On {
     /// Nothing.
     Ignore,
     /// Record it between the two traced points that bracket it.
@@ -159,9 +159,7 @@ pub enum On {
 
 /// A quantity the engine watches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Quantity {
-    /// ā.
-    ABar,
+pub(crate) enum Quantity {
     /// δ̄.
     Delta,
     /// F̄.
@@ -170,7 +168,7 @@ pub enum Quantity {
 
 /// The events a trace watches for.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Watch {
+pub(crate) struct Watch {
     /// Folds in ā.
     pub size_fold: On,
     /// Folds in δ̄ (extrema of δ̄: pull-off under displacement control).
@@ -197,7 +195,7 @@ impl Default for Watch {
 
 /// One traced point.
 #[derive(Clone, Debug)]
-pub struct Point<D: Dim>
+pub(crate) struct Point<D: Dim>
 where
     DefaultAllocator: Allocator<D>,
 {
@@ -226,9 +224,8 @@ where
     DefaultAllocator: Allocator<D>,
 {
     /// The watched quantity here.
-    pub fn value(&self, q: Quantity) -> f64 {
+    pub(crate) fn value(&self, q: Quantity) -> f64 {
         match q {
-            Quantity::ABar => self.a_bar,
             Quantity::Delta => self.delta_bar,
             Quantity::Force => self.force,
         }
@@ -237,7 +234,7 @@ where
 
 /// What happened.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum EventKind {
+pub(crate) enum EventKind {
     /// ā turns.
     SizeFold,
     /// δ̄ turns.
@@ -253,7 +250,7 @@ pub enum EventKind {
 
 /// An event of a trace.
 #[derive(Clone, Debug)]
-pub struct Event<D: Dim>
+pub(crate) struct Event<D: Dim>
 where
     DefaultAllocator: Allocator<D>,
 {
@@ -267,7 +264,7 @@ where
 
 /// How a trace ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum End {
+pub(crate) enum End {
     /// At an event watched with [`On::Stop`].
     Event(EventKind),
     /// Where the caller's `until` said so.
@@ -278,7 +275,7 @@ pub enum End {
 
 /// A trace: its points, events and end.
 #[derive(Clone, Debug)]
-pub struct Trace<D: Dim>
+pub(crate) struct Trace<D: Dim>
 where
     DefaultAllocator: Allocator<D>,
 {
@@ -295,7 +292,7 @@ where
     DefaultAllocator: Allocator<D>,
 {
     /// The located point of the first event of `kind`.
-    pub fn located(&self, kind: EventKind) -> Option<&OVector<f64, D>> {
+    pub(crate) fn located(&self, kind: EventKind) -> Option<&OVector<f64, D>> {
         self.events
             .iter()
             .find(|e| e.kind == kind)
@@ -304,7 +301,7 @@ where
 }
 
 /// The engine's bounds on the dimension.
-pub trait Size: Dim + DimMin<Self, Output = Self> {}
+pub(crate) trait Size: Dim + DimMin<Self, Output = Self> {}
 impl<D: Dim + DimMin<D, Output = D>> Size for D {}
 
 struct Engine<'a, D: Size, F: Family<D>>
@@ -612,7 +609,7 @@ where
 /// Trace the family from the state `start` with the first tangent oriented
 /// along `towards`, watching `watch`, until an event watched with
 /// [`On::Stop`], `until` (called on each new point) or the budget.
-pub fn trace<D: Size, F: Family<D>>(
+pub(crate) fn trace<D: Size, F: Family<D>>(
     family: &F,
     start: OVector<f64, D>,
     towards: &OVector<f64, D>,

@@ -66,7 +66,7 @@ pub const MAX_POINTS: usize = 100_000;
 /// 1 − ρ below which (but above 0) a curve is refused: its trace lost the
 /// sharp turn of the branch by the circle's bifurcation below about 1e-10
 /// (`apex45`) and 1e-11 (`energy`).
-pub const CURVE_NEAR_CIRCLE: f64 = 1e-9;
+pub(crate) const CURVE_NEAR_CIRCLE: f64 = 1e-9;
 
 /// Trace the curve of `contact` from δ̄ = `delta_start` (on the stable
 /// branch) past pull-off and the folds, and return `points` states spaced

@@ -28,7 +28,7 @@ use nalgebra::{
 };
 
 /// A model's equations at fixed (ρ, δ̄) in its unknowns x.
-pub trait Equations
+pub(crate) trait Equations
 where
     DefaultAllocator: Allocator<Self::Dim> + Allocator<Self::Dim, Self::Dim>,
 {
@@ -97,7 +97,7 @@ where
 }
 
 /// A model's equations and F̄ with their derivatives at one point.
-pub struct Linearised<D: Dim>
+pub(crate) struct Linearised<D: Dim>
 where
     DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
@@ -158,12 +158,12 @@ impl<M: Model + ?Sized> Equations for M {
 }
 
 /// The dimension of u = (x, δ̄).
-pub type WithDelta<E> = DimSum<<E as Equations>::Dim, U1>;
+pub(crate) type WithDelta<E> = DimSum<<E as Equations>::Dim, U1>;
 
 /// A model's solution curve at fixed ρ as a family of the continuation
 /// engine: the equations r(x; ρ, δ̄) = 0 in u = (x, δ̄), each unknown
 /// divided by its `scale` (so that a unit step means a comparable change).
-pub struct Branch<'a, E: Equations + ?Sized>
+pub(crate) struct Branch<'a, E: Equations + ?Sized>
 where
     DefaultAllocator: Allocator<E::Dim> + Allocator<E::Dim, E::Dim> + Allocator<WithDelta<E>>,
 {
@@ -183,7 +183,7 @@ where
     DefaultAllocator: Allocator<E::Dim> + Allocator<E::Dim, E::Dim> + Allocator<WithDelta<E>>,
 {
     /// (x, δ̄) of the scaled u.
-    pub fn split(&self, u: &OVector<f64, WithDelta<E>>) -> (OVector<f64, E::Dim>, f64) {
+    pub(crate) fn split(&self, u: &OVector<f64, WithDelta<E>>) -> (OVector<f64, E::Dim>, f64) {
         let k = self.equations.dim();
         let n = k.value();
         let x = OVector::<f64, E::Dim>::from_fn_generic(k, U1, |i, _| u[i] * self.scale[i]);
@@ -191,7 +191,11 @@ where
     }
 
     /// The scaled u of (x, δ̄).
-    pub fn join(&self, x: &OVector<f64, E::Dim>, delta_bar: f64) -> OVector<f64, WithDelta<E>> {
+    pub(crate) fn join(
+        &self,
+        x: &OVector<f64, E::Dim>,
+        delta_bar: f64,
+    ) -> OVector<f64, WithDelta<E>> {
         let n = x.len();
         let dim = self.scale.shape_generic().0;
         OVector::<f64, WithDelta<E>>::from_fn_generic(dim, U1, |i, _| {
@@ -205,7 +209,7 @@ where
 }
 
 /// Unit scales for u = (x, δ̄).
-pub fn unit_scale<E: Equations + ?Sized>(e: &E) -> OVector<f64, WithDelta<E>>
+pub(crate) fn unit_scale<E: Equations + ?Sized>(e: &E) -> OVector<f64, WithDelta<E>>
 where
     DefaultAllocator: Allocator<E::Dim> + Allocator<E::Dim, E::Dim> + Allocator<WithDelta<E>>,
 {
@@ -330,7 +334,7 @@ where
 
 /// What a state is held at.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Hold {
+pub(crate) enum Hold {
     /// The approach δ̄.
     Delta(f64),
     /// The force F̄.
@@ -345,7 +349,7 @@ pub enum Hold {
 /// [∂r/∂x ∂r/∂δ̄; ∇ control]); and the residuals' scale. Written once for
 /// every model: the state at given δ̄, F̄ or ā solves this.
 #[allow(clippy::type_complexity)]
-pub fn held<E: Equations + ?Sized>(
+pub(crate) fn held<E: Equations + ?Sized>(
     e: &E,
     u: &OVector<f64, WithDelta<E>>,
     rho: f64,

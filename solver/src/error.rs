@@ -152,7 +152,12 @@ fn residual_words(r: f64) -> String {
 
 /// `Ok(value)` when `value` is finite and `ok` (the caller's range test);
 /// otherwise an [`Error::OutOfRange`] naming the parameter and its range.
-pub fn check_range(name: &'static str, value: f64, ok: bool, range: &'static str) -> Result<f64> {
+pub(crate) fn check_range(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    range: &'static str,
+) -> Result<f64> {
     if value.is_finite() && ok {
         Ok(value)
     } else {

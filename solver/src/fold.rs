@@ -75,7 +75,7 @@ fn condition(model: &dyn Model, rho: f64, z: Vector3<f64>, which: FoldCondition)
 /// Locate the fold of `which` near `guess` = (ā, s, δ̄) by Newton's method
 /// on the extended system. Fails with [`Error::NoConvergence`] (saying
 /// where) when it does not converge in 40 iterations.
-pub fn locate(
+pub(crate) fn locate(
     model: &dyn Model,
     rho: f64,
     guess: Vector3<f64>,

@@ -21,9 +21,9 @@ pub mod batch;
 pub mod cli;
 pub mod conformal;
 pub mod contact;
-pub mod continuation;
+pub(crate) mod continuation;
 pub mod curve;
-pub mod equations;
+pub(crate) mod equations;
 pub mod error;
 pub mod exact;
 #[cfg(feature = "figures")]

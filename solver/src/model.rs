@@ -69,7 +69,7 @@ pub struct PressureParameters {
 }
 
 /// Up to two points (ā, δ̄) of the model's solution set at one (s, ρ).
-pub type BranchPoints = [Option<(f64, f64)>; 2];
+pub(crate) type BranchPoints = [Option<(f64, f64)>; 2];
 
 /// One generated model, in the dimensionless variables of (17). The
 /// unknowns are x = (ā, s) at given (ρ, δ̄).
@@ -132,7 +132,7 @@ pub trait Model: Send + Sync + 'static {
 
 /// The real roots of c₀ + c₁t + c₂t² (c₂ may vanish), smallest first, by
 /// the cancellation-free form of the quadratic formula.
-pub fn real_roots(c: &[f64]) -> [Option<f64>; 2] {
+pub(crate) fn real_roots(c: &[f64]) -> [Option<f64>; 2] {
     let (c0, c1, c2) = (
         c[0],
         c.get(1).copied().unwrap_or(0.0),
@@ -168,7 +168,7 @@ pub fn real_roots(c: &[f64]) -> [Option<f64>; 2] {
 /// extremum of ∂p/∂ν narrower than 1/32 in u would need more samples; the
 /// contour values of the ansätze generated so far have at most one
 /// interior extremum).
-pub fn contour_spread(g: impl Fn(f64) -> f64) -> f64 {
+pub(crate) fn contour_spread(g: impl Fn(f64) -> f64) -> f64 {
     let n = 64;
     let v: Vec<f64> = (0..=n).map(|k| g(k as f64 / n as f64)).collect();
     let refine = |k: usize, sign: f64| -> f64 {

@@ -75,7 +75,7 @@ pub fn solve(
 /// `admissible` is false (a solution set with two nearby sheets, such as
 /// the adhesive and compressive-edge roots of a quadratic closure at large
 /// loads, is then kept on the start's sheet).
-pub fn solve_within(
+pub(crate) fn solve_within(
     f: impl Fn(Vector2<f64>) -> (Vector2<f64>, Matrix2<f64>),
     scale: impl Fn(f64) -> f64,
     start: Vector2<f64>,
@@ -117,7 +117,7 @@ pub fn solve_within(
 
 /// A system for [`damped`]: its equations with their Jacobian, the norm
 /// that decides convergence, its domain and what a negligible step is.
-pub struct Problem<F, N, P, S> {
+pub(crate) struct Problem<F, N, P, S> {
     /// The residuals r(x) and ∂r/∂x, side by side.
     pub equations: F,
     /// The scaled residual norm at x.
@@ -132,7 +132,7 @@ pub struct Problem<F, N, P, S> {
 /// Where [`damped`] ended: the last iterate, its scaled residual norm, the
 /// Jacobian there and the iterations used.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Iterate<D: Dim>
+pub(crate) struct Iterate<D: Dim>
 where
     DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
@@ -154,7 +154,7 @@ where
 /// below `stall_residual` with a negligible step or an iteration that no
 /// longer halves it (the round-off floor of its evaluation). `Err` with the
 /// last iterate otherwise.
-pub fn damped<D, F, N, P, S>(
+pub(crate) fn damped<D, F, N, P, S>(
     problem: &Problem<F, N, P, S>,
     start: OVector<f64, D>,
     config: &NewtonConfig,

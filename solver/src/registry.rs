@@ -34,10 +34,10 @@ pub enum Choice {
 }
 
 /// What a model is, for `thinjkr models` and the Python package.
-pub type Entry = crate::report::ModelEntry;
+pub(crate) type Entry = crate::report::ModelEntry;
 
 /// The name of the exact solution.
-pub const EXACT: &str = "exact";
+pub(crate) const EXACT: &str = "exact";
 
 /// What `exact` is, in a line.
 const EXACT_TITLE: &str =

@@ -13,13 +13,12 @@
 //! `exact`, `curve`, `fold`, `units`, `error`, `registry` (the model list).
 
 use crate::conformal::{ConformalState, Extremum};
-use crate::contact::{FoldBasis, State};
+use crate::contact::State;
 use crate::curve::{Fold, FoldKind};
-use crate::error::Error;
 use crate::exact::branch::Event;
 use crate::exact::ExactState;
-use crate::fold::FoldCondition;
-use crate::units::Scales;
+#[cfg(feature = "cli")]
+use crate::{contact::FoldBasis, error::Error, fold::FoldCondition, units::Scales};
 use serde::Serialize;
 
 /// A state of any model: of the ellipse, of the contour family, or exact.
@@ -99,7 +98,7 @@ pub enum Passed {
 impl Passed {
     /// The exact solver's events (its force minimum is the pull-off itself
     /// and is not repeated).
-    pub fn from_exact(events: &[Event]) -> Vec<Passed> {
+    pub(crate) fn from_exact(events: &[Event]) -> Vec<Passed> {
         events
             .iter()
             .filter_map(|e| match e {
@@ -117,7 +116,7 @@ impl Passed {
     }
 
     /// The folds in ā that the trace of `conformal:K` passed.
-    pub fn from_conformal(folds: &[Extremum]) -> Vec<Passed> {
+    pub(crate) fn from_conformal(folds: &[Extremum]) -> Vec<Passed> {
         folds
             .iter()
             .map(|f| Passed::SizeFold {
@@ -129,9 +128,10 @@ impl Passed {
 }
 
 /// An error, in words and by kind ([`Error::kind`]).
+#[cfg(feature = "cli")]
 #[derive(Clone, Debug, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct ErrorBody {
+pub(crate) struct ErrorBody {
     /// `out_of_range`, `no_convergence`, `unresolved`, `no_state`, `usage`,
     /// `unsupported`, `io` or `unavailable`.
     pub kind: String,
@@ -139,6 +139,7 @@ pub struct ErrorBody {
     pub message: String,
 }
 
+#[cfg(feature = "cli")]
 impl From<&Error> for ErrorBody {
     fn from(e: &Error) -> Self {
         ErrorBody {
@@ -149,9 +150,10 @@ impl From<&Error> for ErrorBody {
 }
 
 /// One model's answer beside the exact one: its state, or why it has none.
+#[cfg(feature = "cli")]
 #[derive(Clone, Debug, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct ModelAnswer {
+pub(crate) struct ModelAnswer {
     /// The model's name.
     pub model: String,
     /// Its state at the same control (or its pull-off).
@@ -162,6 +164,7 @@ pub struct ModelAnswer {
     pub error: Option<ErrorBody>,
 }
 
+#[cfg(feature = "cli")]
 impl ModelAnswer {
     /// From a model's result.
     pub fn new(model: &str, r: &crate::Result<State>) -> Self {
@@ -201,10 +204,11 @@ pub fn models() -> Vec<ModelEntry> {
 }
 
 /// Everything `--json` prints: exactly one of these objects.
+#[cfg(feature = "cli")]
 #[derive(Clone, Debug, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(untagged)]
-pub enum Document {
+pub(crate) enum Document {
     /// A pull-off: the state where a controlled branch ends.
     PullOff {
         /// The state.
@@ -276,16 +280,17 @@ pub enum Document {
     },
 }
 
+#[cfg(feature = "cli")]
 impl Document {
     /// The JSON text of the document (one line).
-    pub fn to_json(&self) -> String {
+    pub(crate) fn to_json(&self) -> String {
         serde_json::to_string(self).expect("the output types serialise")
     }
 }
 
 /// The JSON Schema of [`Document`] (pretty, as committed in
 /// docs/schema.json).
-#[cfg(feature = "schema")]
+#[cfg(feature = "cli")]
 pub fn schema() -> String {
     let s = schemars::schema_for!(Document);
     serde_json::to_string_pretty(&s).expect("a schema serialises") + "\n"

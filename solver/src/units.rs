@@ -173,7 +173,7 @@ impl Cylinders {
 
     /// Convert a dimensionless state to SI units; a value that is not a
     /// finite f64 is an error naming it.
-    pub fn to_physical(&self, sc: &Scales, st: State) -> Result<PhysicalState> {
+    pub(crate) fn to_physical(&self, sc: &Scales, st: State) -> Result<PhysicalState> {
         let si = self.si(sc, st.a_bar, st.b_bar, st.delta_bar, st.force_bar)?;
         let p0 = finite_si("p0", st.p0 * sc.pressure)?;
         Ok(PhysicalState {

@@ -26,7 +26,7 @@ fn modes(st: &ConformalState) -> String {
 }
 
 /// One state for a person.
-pub fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
+pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
     let word = |b: bool| if b { "stable" } else { "unstable" };
     outln!(
         "{label}: model {}, a = {}, b = {}, s = {}, delta = {}, force = {}, max |dp/dnu - 1| on the contour = {:.1e} [displacement control: {}, load control: {}{}]",
@@ -48,7 +48,7 @@ pub fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
 
 /// `pull-off --model family:K` in words: the state, where its branch was
 /// traced from and what ends it, and the folds in ā it passed.
-pub fn show_pull_off(
+pub(crate) fn show_pull_off(
     m: &Conformal,
     st: &ConformalState,
     control: FoldCondition,

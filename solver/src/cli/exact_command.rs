@@ -16,7 +16,7 @@ use clap::{Args, Subcommand};
 
 /// The truncation of the exact solver.
 #[derive(Args, Clone, Debug, Default)]
-pub struct Discretisation {
+pub(crate) struct Discretisation {
     /// Contour modes N (the contour series' length, 1..=96; the answer is given when its boundary error is
     /// below 1e-5, with that error); default: escalated from 12 to 96 modes until the boundary error is
     /// below 1e-9, and only such an answer is given.
@@ -71,7 +71,7 @@ impl Discretisation {
 
 /// `thinjkr exact …`.
 #[derive(Subcommand, Clone, Debug)]
-pub enum ExactCommand {
+pub(crate) enum ExactCommand {
     /// The exact load-controlled pull-off, with every model's beside it.
     #[command(
         name = "pull-off",
@@ -158,7 +158,7 @@ pub enum ExactCommand {
 /// Run one `thinjkr exact` subcommand.
 impl ExactCommand {
     /// Whether the subcommand prints JSON.
-    pub fn json(&self) -> bool {
+    pub(crate) fn json(&self) -> bool {
         match self {
             ExactCommand::PullOff { json, .. }
             | ExactCommand::Solve { json, .. }
@@ -168,7 +168,7 @@ impl ExactCommand {
     }
 }
 
-pub fn run(c: ExactCommand) -> Result<()> {
+pub(crate) fn run(c: ExactCommand) -> Result<()> {
     match c {
         ExactCommand::PullOff {
             rho,
@@ -216,7 +216,7 @@ pub fn run(c: ExactCommand) -> Result<()> {
 }
 
 /// `thinjkr exact bands`.
-pub fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
+pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
     let map = crate::exact::bands::bands(rho, from, to)?;
     if json {
         outln!("{}", Document::Bands { bands: map }.to_json());
@@ -345,7 +345,7 @@ fn modes(v: &[UnstableMode], series_modes: usize) -> String {
 
 /// An exact state in words: its size and load to ten digits, then how
 /// well it is resolved.
-pub fn show_state(label: &str, st: &ExactState) -> crate::Result<()> {
+pub(crate) fn show_state(label: &str, st: &ExactState) -> crate::Result<()> {
     outln!(
         "{label}: rho = {}, a = {:.10}, b = {:.10}, s = {:.10}, delta = {:.10}, force = {:.10}",
         st.rho,
@@ -380,7 +380,7 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
 }
 
 /// The exact load-controlled pull-off and every model's.
-pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
+pub(crate) fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
     let (po, events) = match (d.modes, d.points) {
         // the default escalation, and the continuation in rho from a larger
@@ -444,7 +444,7 @@ pub fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
 
 /// `thinjkr exact solve --all`: every near-elliptic exact state at the
 /// control with ā in [from, to].
-pub fn every_state(
+pub(crate) fn every_state(
     rho: f64,
     control: ExactControl,
     from: f64,
@@ -512,7 +512,7 @@ pub fn every_state(
 }
 
 /// The exact state at a control value and every model's.
-pub fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) -> Result<()> {
+pub(crate) fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) -> Result<()> {
     let spin = crate::cli::output::Spinner::start("solving the free-boundary problem (2)-(3)");
     control.check_finite()?;
     let st = match (d.modes, d.points) {

@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 
 /// At most `max` bytes of the file at `p` as text; a longer one (or a
 /// device without end, such as /dev/zero) is refused after `max + 1` bytes.
-pub fn input(p: &Path, max: u64) -> crate::Result<String> {
+pub(crate) fn input(p: &Path, max: u64) -> crate::Result<String> {
     let f = std::fs::File::open(p)
         .map_err(|e| Error::Io(format!("cannot read {}: {e}", p.display())))?;
     let mut bytes = Vec::new();
@@ -34,7 +34,7 @@ pub fn input(p: &Path, max: u64) -> crate::Result<String> {
 
 /// At most `max` characters of `text` on one line, for a message that
 /// quotes what a user wrote (or a parser's words around it).
-pub fn quote(text: &str, max: usize) -> String {
+pub(crate) fn quote(text: &str, max: usize) -> String {
     let one_line: String = text
         .chars()
         .map(|c| if c.is_control() { ' ' } else { c })
@@ -54,7 +54,7 @@ fn folder_of(p: &Path) -> PathBuf {
 
 /// That a file can be written at `p` (its folder exists and takes a new
 /// file), checked without touching `p` itself.
-pub fn check_file(p: &Path) -> crate::Result<()> {
+pub(crate) fn check_file(p: &Path) -> crate::Result<()> {
     if p.is_dir() {
         return Err(Error::Io(format!(
             "{} is a folder, not a file",
@@ -66,7 +66,7 @@ pub fn check_file(p: &Path) -> crate::Result<()> {
 
 /// That `dir` is an output folder or can be created as one (its parent
 /// exists); created only by [`create_folder`], after every check passed.
-pub fn check_folder(dir: &Path) -> crate::Result<()> {
+pub(crate) fn check_folder(dir: &Path) -> crate::Result<()> {
     if dir.is_dir() {
         return writable_folder(dir, dir);
     }
@@ -85,7 +85,7 @@ pub fn check_folder(dir: &Path) -> crate::Result<()> {
 }
 
 /// Create the output folder `dir` if it is missing (its parent exists).
-pub fn create_folder(dir: &Path) -> crate::Result<()> {
+pub(crate) fn create_folder(dir: &Path) -> crate::Result<()> {
     if dir.is_dir() {
         return Ok(());
     }
@@ -115,7 +115,7 @@ fn writable_folder(dir: &Path, for_path: &Path) -> crate::Result<()> {
 
 /// Write `contents` to `p` whole: into a temporary file beside it, then
 /// renamed over it.
-pub fn write_whole(p: &Path, contents: &[u8]) -> crate::Result<()> {
+pub(crate) fn write_whole(p: &Path, contents: &[u8]) -> crate::Result<()> {
     let name = p
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())

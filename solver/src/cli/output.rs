@@ -18,7 +18,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 static BROKEN_PIPE: AtomicBool = AtomicBool::new(false);
 
 /// The exit status after a closed pipe (128 + SIGPIPE).
-pub const BROKEN_PIPE_STATUS: u8 = 141;
+pub(crate) const BROKEN_PIPE_STATUS: u8 = 141;
 
 fn io(e: std::io::Error) -> crate::Error {
     if e.kind() == std::io::ErrorKind::BrokenPipe {
@@ -49,7 +49,7 @@ fn with_out<T>(f: impl FnOnce(&mut Out) -> std::io::Result<T>) -> std::io::Resul
 }
 
 /// Write one line.
-pub fn line(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
+pub(crate) fn line(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
     with_out(|o| {
         o.buf.write_fmt(args)?;
         o.buf.write_all(b"\n")?;
@@ -62,7 +62,7 @@ pub fn line(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
 }
 
 /// Write text as it is.
-pub fn text(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
+pub(crate) fn text(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
     with_out(|o| {
         o.buf.write_fmt(args)?;
         if o.terminal {
@@ -74,12 +74,12 @@ pub fn text(args: std::fmt::Arguments<'_>) -> crate::Result<()> {
 }
 
 /// Flush standard output (a write error may surface only here).
-pub fn finish() -> crate::Result<()> {
+pub(crate) fn finish() -> crate::Result<()> {
     with_out(|o| o.buf.flush()).map_err(io)
 }
 
 /// Whether the last error came from a closed pipe.
-pub fn broken_pipe() -> bool {
+pub(crate) fn broken_pipe() -> bool {
     BROKEN_PIPE.load(Ordering::Relaxed)
 }
 
@@ -106,7 +106,7 @@ fn closed_at_start(fd: std::os::fd::RawFd) -> bool {
 
 /// Refuse to start when standard output was closed (`>&-`): the output
 /// would be lost without an error.
-pub fn check_open() -> crate::Result<()> {
+pub(crate) fn check_open() -> crate::Result<()> {
     #[cfg(unix)]
     {
         use std::os::fd::AsRawFd;
@@ -121,7 +121,7 @@ pub fn check_open() -> crate::Result<()> {
 
 /// Refuse to read standard input when it was closed (`<&-`): it would read
 /// as an empty input, and an empty answer would look like a success.
-pub fn check_input_open() -> crate::Result<()> {
+pub(crate) fn check_input_open() -> crate::Result<()> {
     #[cfg(unix)]
     {
         use std::os::fd::AsRawFd;
@@ -141,7 +141,7 @@ static STDERR_FAILED: AtomicBool = AtomicBool::new(false);
 /// output still matters. A closed pipe there is the reader's choice and
 /// ignored; any other failure (a full disk) is remembered, and the program
 /// then ends with a nonzero status ([`stderr_failed`]).
-pub fn err_line(args: std::fmt::Arguments<'_>) {
+pub(crate) fn err_line(args: std::fmt::Arguments<'_>) {
     let mut e = std::io::stderr().lock();
     if let Err(w) = e.write_fmt(args).and_then(|()| e.write_all(b"\n")) {
         if w.kind() != std::io::ErrorKind::BrokenPipe {
@@ -152,7 +152,7 @@ pub fn err_line(args: std::fmt::Arguments<'_>) {
 
 /// Whether a line for standard error could not be written (not counting a
 /// closed pipe).
-pub fn stderr_failed() -> bool {
+pub(crate) fn stderr_failed() -> bool {
     STDERR_FAILED.load(Ordering::Relaxed)
 }
 
@@ -173,11 +173,11 @@ macro_rules! out {
 
 /// A spinner on standard error while long work runs, when that is a
 /// terminal; cleared when dropped (before the results are printed).
-pub struct Spinner(Option<indicatif::ProgressBar>);
+pub(crate) struct Spinner(Option<indicatif::ProgressBar>);
 
 impl Spinner {
     /// Start one that says `what`.
-    pub fn start(what: &str) -> Spinner {
+    pub(crate) fn start(what: &str) -> Spinner {
         use std::io::IsTerminal;
         Spinner(std::io::stderr().is_terminal().then(|| {
             let b = indicatif::ProgressBar::new_spinner();
@@ -204,7 +204,7 @@ impl Drop for Spinner {
 /// force 1e-15 of a zero-force state reads 0.000000, without a sign), six
 /// significant digits in scientific notation from 1e7 up (no
 /// `100000000000000016384.000000`). `--json` carries every digit.
-pub fn num(x: f64) -> String {
+pub(crate) fn num(x: f64) -> String {
     let a = x.abs();
     let s = if a >= 1e7 {
         format!("{x:.5e}")

@@ -23,7 +23,7 @@ use serde::Deserialize;
 use std::path::Path;
 
 /// The environment variable naming the folder of generated families.
-pub const ENV: &str = "THINJKR_FAMILIES";
+pub(crate) const ENV: &str = "THINJKR_FAMILIES";
 
 /// The largest `registry.json` read.
 const MAX_REGISTRY_BYTES: u64 = 1 << 20;

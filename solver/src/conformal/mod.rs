@@ -99,7 +99,7 @@ pub struct Family {
 
 impl Family {
     /// "1 ..= 8": the family's K, from its smallest member to its largest.
-    pub fn member_range(&self) -> String {
+    pub(crate) fn member_range(&self) -> String {
         let ks = self.members.iter().map(|t| t.terms);
         let (lo, hi) = (ks.clone().min().unwrap_or(0), ks.max().unwrap_or(0));
         format!("{lo} ..= {hi}")
@@ -137,13 +137,13 @@ pub fn families() -> &'static [&'static Family] {
 
 /// Why a family named by `THINJKR_FAMILIES` was left out, one line each
 /// (empty when every family loaded, or the variable is not set).
-pub fn load_problems() -> &'static [String] {
+pub(crate) fn load_problems() -> &'static [String] {
     &registry().problems
 }
 
 /// The largest member of the family that seeds the exact solver (on the
 /// exact solver's gap), if the registry has one.
-pub fn exact_seed() -> Option<Conformal> {
+pub(crate) fn exact_seed() -> Option<Conformal> {
     let (i, f) = families()
         .iter()
         .enumerate()
@@ -368,7 +368,7 @@ impl Conformal {
 
     /// Π̄ with its derivatives up to `order` (0, 1 or 2); at order 2 by the
     /// member's unrolled evaluator where it has one.
-    pub fn potential_to(&self, x: &DVector<f64>, rho: f64, order: u8) -> poly::Second {
+    pub(crate) fn potential_to(&self, x: &DVector<f64>, rho: f64, order: u8) -> poly::Second {
         let k = self.terms();
         if let (2, Some(second)) = (order, self.tables.second) {
             return second(&x.as_slice()[..k], x[k], 1.0 / rho);
@@ -400,7 +400,7 @@ impl Conformal {
     }
 
     /// ā = |w(1)| and b̄ = |w(i)|.
-    pub fn semi_axes(&self, c: &[f64]) -> (f64, f64) {
+    pub(crate) fn semi_axes(&self, c: &[f64]) -> (f64, f64) {
         let (w1, _) = self.map(c, (1.0, 0.0));
         let (wi, _) = self.map(c, (0.0, 1.0));
         (w1.0.hypot(w1.1), wi.0.hypot(wi.1))

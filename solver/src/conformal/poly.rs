@@ -12,7 +12,7 @@ pub(crate) const DBAR_SHIFT: u32 = 32;
 /// Bit offset of μ's exponent.
 pub(crate) const MU_SHIFT: u32 = 36;
 /// The most unknowns: K ≤ 8 map coefficients and δ̄.
-pub const MAX_UNKNOWNS: usize = 9;
+pub(crate) const MAX_UNKNOWNS: usize = 9;
 
 /// Value, gradient and Hessian of a table polynomial in (c, δ̄).
 #[derive(Clone, Debug)]
@@ -103,7 +103,7 @@ impl Decoded {
     /// The rows that are not zero where every coefficient but c₁ vanishes
     /// (the circle): those without c₂ … c_K. They give the value and the
     /// derivatives in c₁ and δ̄ there, not those in c₂ … c_K.
-    pub fn on_circle(&self) -> Decoded {
+    pub(crate) fn on_circle(&self) -> Decoded {
         let mut out = Decoded {
             k: self.k,
             groups: Vec::new(),
@@ -131,7 +131,13 @@ pub fn evaluate(t: &Decoded, c: &[f64], dbar: f64, mu: f64, order: u8) -> Second
 
 /// The derivative in μ of [`evaluate`]'s value, gradient and Hessian (the
 /// rows' μ exponents differentiated exactly).
-pub fn evaluate_mu_derivative(t: &Decoded, c: &[f64], dbar: f64, mu: f64, order: u8) -> Second {
+pub(crate) fn evaluate_mu_derivative(
+    t: &Decoded,
+    c: &[f64],
+    dbar: f64,
+    mu: f64,
+    order: u8,
+) -> Second {
     evaluate_in(t, c, dbar, mu, order, true)
 }
 

@@ -58,7 +58,7 @@ fn branch(m: &Conformal, rho: f64, strict: bool) -> Branch<'_, Conformal> {
 
 /// Trace from `x0` towards smaller ā to the first extremum of F̄ or δ̄.
 /// Returns the extremum's x and the folds in ā passed before it.
-pub fn to_extremum(
+pub(crate) fn to_extremum(
     m: &Conformal,
     x0: &DVector<f64>,
     rho: f64,
@@ -71,7 +71,7 @@ pub fn to_extremum(
 
 /// Trace from `x0` near an extremum of F̄ (load) or δ̄ (displacement) to
 /// it: towards falling F̄ or δ̄, no farther than `reach` in ā.
-pub fn to_nearby_extremum(
+pub(crate) fn to_nearby_extremum(
     m: &Conformal,
     x0: &DVector<f64>,
     rho: f64,

@@ -50,7 +50,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// The most grid points of a screen.
-pub const MAX_GRID: usize = 1000;
+pub(crate) const MAX_GRID: usize = 1000;
 
 /// One edge of a band: the located fold in ā of an arm of the exact
 /// family.
@@ -126,7 +126,7 @@ pub struct CurvePoint {
 
 /// The exact family's F̄(ā) is sampled at every this many grid points of
 /// the screen (0.05 in ā).
-pub const CURVE_EVERY: usize = 5;
+pub(crate) const CURVE_EVERY: usize = 5;
 
 /// The band map at one ρ over a range of ā.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -294,7 +294,7 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
 /// The step (in the family's unknowns) of the traces that probe the
 /// neutral points: at ρ = 0.9 the mode-8 band is 0.003 wide in ā
 /// (3.0435 < ā < 3.0464), and a trace in steps of 0.01 can step across it.
-pub const PROBE_STEP: f64 = 0.002;
+pub(crate) const PROBE_STEP: f64 = 0.002;
 
 /// Probe each neutral point of the circle ā³ = 4(n − 1) that the screen
 /// passed without a gap ([`unscreened_neutral_points`]): the exact family
@@ -666,7 +666,7 @@ pub struct AllStates {
 /// an error that says so in words (the band, its mode, the values at its
 /// edges, and how far its arms were followed past their folds); otherwise
 /// `err` itself.
-pub fn past_folds_or_band(
+pub(crate) fn past_folds_or_band(
     rho: f64,
     control: super::branch::ExactControl,
     a_circle: f64,

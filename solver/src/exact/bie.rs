@@ -21,7 +21,7 @@ use nalgebra::{Complex, DMatrix, DVector};
 /// The equispaced parameter grid θ_i = 2πi/n and its Fourier
 /// differentiation matrix.
 #[derive(Clone, Debug)]
-pub struct Grid {
+pub(crate) struct Grid {
     /// The parameter values.
     pub theta: Vec<f64>,
     pub(crate) d1: DMatrix<f64>,
@@ -81,11 +81,6 @@ impl Grid {
         self.theta.len()
     }
 
-    /// Whether the grid is empty (never: at least 8 points).
-    pub fn is_empty(&self) -> bool {
-        self.theta.is_empty()
-    }
-
     /// Spectral derivative of periodic samples.
     pub fn derivative(&self, f: &DVector<f64>) -> DVector<f64> {
         &self.d1 * f
@@ -94,7 +89,7 @@ impl Grid {
 
 /// The multiplier m_k of θ in the k-th term of the contour series,
 /// e^{i m_k θ}: m_0 = 1 (the coefficient A), m_{j+1} = −(2j + 1) (b_j).
-pub fn multiplier(k: usize) -> f64 {
+pub(crate) fn multiplier(k: usize) -> f64 {
     if k == 0 {
         1.0
     } else {
@@ -103,7 +98,7 @@ pub fn multiplier(k: usize) -> f64 {
 }
 
 /// The contour at the grid: points τ, dτ/dθ and d²τ/dθ², counter-clockwise.
-pub struct ContourSamples {
+pub(crate) struct ContourSamples {
     /// τ(θ_i).
     pub z: Vec<Complex<f64>>,
     /// τ'(θ_i).
@@ -113,7 +108,7 @@ pub struct ContourSamples {
 }
 
 /// The solution of the Dirichlet problem on the contour.
-pub struct Dirichlet {
+pub(crate) struct Dirichlet {
     /// The outward normal derivative ∂q/∂ν at the grid points.
     pub normal_derivative: Vec<f64>,
     /// The density μ.
@@ -122,7 +117,7 @@ pub struct Dirichlet {
 
 /// Solve Δq = 0 inside the contour with q = `g` on it; `None` when the
 /// discrete system is singular (a self-intersecting contour).
-pub fn solve_dirichlet(grid: &Grid, c: &ContourSamples, g: &[f64]) -> Option<Dirichlet> {
+pub(crate) fn solve_dirichlet(grid: &Grid, c: &ContourSamples, g: &[f64]) -> Option<Dirichlet> {
     let n = grid.len();
     let mu = kernel_matrix(c, n)
         .lu()
@@ -140,7 +135,11 @@ pub fn solve_dirichlet(grid: &Grid, c: &ContourSamples, g: &[f64]) -> Option<Dir
 /// n/2 + j} (about n/4 + 1 unknowns, the columns of each orbit summed):
 /// the same μ as [`solve_dirichlet`] (checked in a test) with about 1/64
 /// of the LU work.
-pub fn solve_dirichlet_symmetric(grid: &Grid, c: &ContourSamples, g: &[f64]) -> Option<Dirichlet> {
+pub(crate) fn solve_dirichlet_symmetric(
+    grid: &Grid,
+    c: &ContourSamples,
+    g: &[f64],
+) -> Option<Dirichlet> {
     let n = grid.len();
     let (reps, orbit) = orbits(n);
     let m = reps.len();
@@ -171,7 +170,7 @@ pub fn solve_dirichlet_symmetric(grid: &Grid, c: &ContourSamples, g: &[f64]) -> 
 /// θ → −θ and θ → π − θ: the representative of each orbit (its smallest
 /// index), in increasing order, and each point's orbit as the index of its
 /// representative in that list.
-pub fn orbits(n: usize) -> (Vec<usize>, Vec<usize>) {
+pub(crate) fn orbits(n: usize) -> (Vec<usize>, Vec<usize>) {
     let half = n / 2;
     let rep = |j: usize| {
         [j, (n - j) % n, (half + n - j) % n, (half + j) % n]

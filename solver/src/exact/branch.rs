@@ -25,12 +25,12 @@ use serde::Serialize;
 /// pull-off's trace starts ([`Exact::pull_off_load`]): `conformal:8`
 /// misses the exact pull-off's ā by 1e-5 (ρ = 0.8) to 1e-3 (ρ = 0.5), and
 /// the trace must start above it on the same arm.
-pub const ABOVE_MODEL_PULL_OFF: f64 = 0.03;
+pub(crate) const ABOVE_MODEL_PULL_OFF: f64 = 0.03;
 
 /// How far above the exact pull-off with fewer modes, in ā, the trace of
 /// the next truncation starts: more modes move the pull-off's ā by less
 /// than 1e-6 where the coarser one is nearly resolved.
-pub const ABOVE_COARSER_PULL_OFF: f64 = 0.005;
+pub(crate) const ABOVE_COARSER_PULL_OFF: f64 = 0.005;
 
 /// Where a trace past a fold ([`Exact::crossings_past_fold`]) ends: the
 /// contour's departure from an ellipse in its coefficients, Σ_{j≥1}|b_j|/ā,
@@ -39,15 +39,15 @@ pub const ABOVE_COARSER_PULL_OFF: f64 = 0.005;
 /// mode-10 band's lower arm at ρ = 0.6 the boundary error with 40 modes is
 /// 5e-2 where the contour is 0.1 ā off its ellipse (a crossing found that
 /// far out is not converged by the escalation, and is reported so).
-pub const PAST_FOLD_DEPARTURE: f64 = 0.1;
+pub(crate) const PAST_FOLD_DEPARTURE: f64 = 0.1;
 
 /// The most steps of a trace past a fold.
-pub const PAST_FOLD_STEPS: usize = 400;
+pub(crate) const PAST_FOLD_STEPS: usize = 400;
 
 /// The seeding model's (the largest member of the family that seeds the
 /// exact solver, `conformal:8`) load-controlled pull-off at `rho`, where it
 /// has one: the start of the exact pull-off's trace.
-pub fn model_pull_off(rho: f64) -> Option<crate::conformal::ConformalState> {
+pub(crate) fn model_pull_off(rho: f64) -> Option<crate::conformal::ConformalState> {
     use crate::conformal::{Conformal, PullOffControl};
     let model: Conformal = crate::conformal::exact_seed()?;
     model
@@ -90,7 +90,7 @@ pub enum Event {
 
 impl Event {
     /// The exact state the event holds, if any.
-    pub fn state_mut(&mut self) -> Option<&mut ExactState> {
+    pub(crate) fn state_mut(&mut self) -> Option<&mut ExactState> {
         match self {
             Event::ForceMinimum { state } => Some(state),
             _ => None,
@@ -128,7 +128,7 @@ impl ExactControl {
     /// The control's value, refused unless finite (an [`Error::OutOfRange`]
     /// naming `delta` or `force`): NaN or ∞ is bad input, not a force no
     /// state reaches.
-    pub fn check_finite(self) -> Result<Self> {
+    pub(crate) fn check_finite(self) -> Result<Self> {
         let (name, v) = match self {
             ExactControl::Delta(v) => ("delta", v),
             ExactControl::Force(v) => ("force", v),
@@ -169,7 +169,7 @@ pub struct Branch {
 /// The half-width of the exact circle (ρ = 1) at `control` (22)–(25): for
 /// F̄ the root of π(ā⁶ − 24ā³)/96 = F̄ above the pull-off; NaN below the
 /// circle's pull-off force −3π/2.
-pub fn circle_a_bar(control: ExactControl) -> f64 {
+pub(crate) fn circle_a_bar(control: ExactControl) -> f64 {
     match control {
         ExactControl::Delta(v) => circle_a_bar_at_delta(v),
         ExactControl::Force(v) => {
@@ -396,7 +396,7 @@ impl Exact {
     /// from just above `coarser`, the exact pull-off with fewer contour
     /// modes, where given (its contour padded with zeros): the escalation of
     /// [`super::pull_off_resolved`].
-    pub fn pull_off_load_near(
+    pub(crate) fn pull_off_load_near(
         &self,
         model: Option<&crate::conformal::ConformalState>,
         coarser: Option<&ExactState>,

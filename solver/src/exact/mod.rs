@@ -36,7 +36,7 @@
 //! as a starting guess supplied by the caller.
 
 pub mod bands;
-pub mod bie;
+pub(crate) mod bie;
 pub mod branch;
 pub(crate) mod linear;
 pub mod stability;
@@ -49,13 +49,13 @@ use serde::Serialize;
 
 /// The largest cosine mode of ∂p̄/∂ν − 1 accepted at convergence (the
 /// round-off floor of the boundary integral solution is about 1e-13).
-pub const RESIDUAL_TOLERANCE: f64 = 1e-11;
+pub(crate) const RESIDUAL_TOLERANCE: f64 = 1e-11;
 
 /// The largest max|∂p̄/∂ν − 1| on the independent fine grid for which a
 /// pull-off is reported: above it the truncation does not resolve the
 /// contour, and the answer is an error asking for more modes. (At
 /// ρ = 0.8 a fine-grid error of 8e-6 goes with an error of 4e-9 in F̄.)
-pub const RESOLVED: f64 = 1e-5;
+pub(crate) const RESOLVED: f64 = 1e-5;
 
 /// The fine-grid boundary error at which [`resolved`] stops escalating:
 /// the aspect ratio s of a pull-off changes by about 0.01–0.07 times the
@@ -64,7 +64,7 @@ pub const RESOLVED: f64 = 1e-5;
 pub const CONVERGED: f64 = 1e-9;
 
 /// An answer of the exact solver with its fine-grid boundary error.
-pub trait BoundaryError {
+pub(crate) trait BoundaryError {
     /// max |∂p̄/∂ν − 1| on the fine grid.
     fn bc_error(&self) -> f64;
     /// The exact states the answer holds, whose stability [`resolved`]
@@ -110,7 +110,7 @@ impl BoundaryError for (ExactState, Vec<branch::Event>) {
 /// to converge are skipped. The intermediate answers are solved without
 /// their stability; the accepted answer's is computed once, with its own
 /// truncation.
-pub fn resolved<T: BoundaryError>(
+pub(crate) fn resolved<T: BoundaryError>(
     rho: f64,
     tries: &[Truncation],
     solve: impl Fn(&Exact) -> Result<T>,
@@ -195,7 +195,7 @@ fn not_converged(rho: f64, bc_error: f64, modes: usize, last: Error) -> Error {
 /// the next where fewer than two are seen or the error did not fall. An
 /// extrapolation that is too hopeful costs one more rung, from which it
 /// is made again.
-pub fn next_try(tries: &[Truncation], i: usize, seen: &[(usize, f64)]) -> usize {
+pub(crate) fn next_try(tries: &[Truncation], i: usize, seen: &[(usize, f64)]) -> usize {
     let [.., (n1, e1), (n2, e2)] = seen else {
         return i + 1;
     };
@@ -211,7 +211,7 @@ pub fn next_try(tries: &[Truncation], i: usize, seen: &[(usize, f64)]) -> usize 
 }
 
 /// The contour modes of the default escalation ([`default_tries`]).
-pub const ESCALATION: [usize; 12] = [12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96];
+pub(crate) const ESCALATION: [usize; 12] = [12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96];
 
 /// The most contour modes a user may ask for (the command line's
 /// `--modes`, the Python package's `modes`): the last rung of the default
@@ -438,7 +438,7 @@ pub fn continued_in_rho(
 /// The exact state at `control` with the truncations `tries`
 /// ([`resolved`]), each after the first started from the state the one
 /// before found (resolved or not).
-pub fn at_with(
+pub(crate) fn at_with(
     rho: f64,
     control: branch::ExactControl,
     tries: &[Truncation],
@@ -584,7 +584,7 @@ impl Contour {
 }
 
 /// ∂p̄/∂ν on the contour and F̄ for a given contour, ρ and δ̄.
-pub struct Fields {
+pub(crate) struct Fields {
     /// ∂p̄/∂ν at the grid points.
     pub normal_derivative: Vec<f64>,
     /// F̄ = ∫ p̄ dA.
@@ -593,7 +593,7 @@ pub struct Fields {
 
 /// ∂p̄/∂ν and F̄ for the contour `c` (any contour: the boundary condition
 /// (3)₂ is not imposed here).
-pub fn fields(c: &Contour, rho: f64, delta_bar: f64, grid: &Grid) -> Option<Fields> {
+pub(crate) fn fields(c: &Contour, rho: f64, delta_bar: f64, grid: &Grid) -> Option<Fields> {
     let s = c.samples(grid);
     let n = grid.len();
     // P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4
@@ -778,7 +778,7 @@ pub struct Exact {
 
 /// The longest contour series accepted ([`Truncation::modes`]): twice
 /// [`MAX_USER_MODES`], for the doubling checks of `thinjkr accuracy`.
-pub const MAX_MODES: usize = 2 * MAX_USER_MODES;
+pub(crate) const MAX_MODES: usize = 2 * MAX_USER_MODES;
 /// The most quadrature points accepted ([`Truncation::points`]): the
 /// boundary integral equation's matrices grow as points², the fine check
 /// uses twice as many. Measured with 64 modes and 2048 points
@@ -907,7 +907,8 @@ impl Exact {
     /// ∂p̄/∂ν along the contour of `st` on the fine grid (twice the points
     /// the state was solved on), as (polar angle atan2(Y, X), ∂p̄/∂ν) for the
     /// first quadrant: the boundary condition (3)₂ asks for 1 everywhere.
-    pub fn boundary_profile(&self, st: &ExactState) -> Result<Vec<(f64, f64)>> {
+    #[cfg(feature = "figures")]
+    pub(crate) fn boundary_profile(&self, st: &ExactState) -> Result<Vec<(f64, f64)>> {
         let f = fields(&st.contour, self.rho, st.delta_bar, &self.fine).ok_or_else(|| {
             Error::NoState("exact boundary profile: the fine-grid system is singular".into())
         })?;
@@ -996,7 +997,7 @@ impl Exact {
     /// the same control): the equations with δ̄ or F̄ held instead of ā.
     /// Near a fold of the family in that control the system is singular,
     /// and Newton fails.
-    pub fn solve_at(
+    pub(crate) fn solve_at(
         &self,
         control: branch::ExactControl,
         guess: &Contour,
