@@ -22,7 +22,7 @@
 //! folds by Newton on the fold condition ([`crate::fold`]). At ρ = 1 the
 //! model's axisymmetric solution (22)–(25) is used (s = 1).
 //!
-//! Owns: [`Contact`], [`State`], [`Stability`], [`PullOff`], [`Search`]
+//! Owns: [`Contact`], [`NEAR_CIRCLE`], [`State`], [`Stability`], [`PullOff`], [`Search`]
 //! and the walk.
 //! May use: `model`, `newton`, `fold`, `error`, `equations` (the one model
 //! interface its Newton and continuation run on).
@@ -30,7 +30,9 @@
 mod cold;
 mod near_circle;
 
-pub use near_circle::NEAR_CIRCLE;
+/// 1 − ρ below which states are continued from ρ₀ = 1 − NEAR_CIRCLE
+/// (`near_circle`).
+pub const NEAR_CIRCLE: f64 = 1e-6;
 
 use crate::equations::{held, Hold};
 use crate::error::{check_range, rounded, short, Error, Result};
@@ -273,7 +275,7 @@ impl Contact {
     }
 
     /// The model.
-    pub fn model(&self) -> &'static dyn Model {
+    pub(crate) fn model(&self) -> &'static dyn Model {
         self.model
     }
 

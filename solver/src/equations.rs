@@ -480,4 +480,63 @@ mod tests {
             (x[0] - 3.2).abs() < 1e-15 && (x[1] - 0.9).abs() < 1e-15 && (d - 2.5).abs() < 1e-15
         );
     }
+
+    /// The same few lines of the one engine find the load-controlled
+    /// pull-off of the paper's model (u = (ā, s, δ̄), static) and of
+    /// `conformal:4` (u = (c₁ … c₄, δ̄), dynamic), each where the model's
+    /// own pull-off search puts it.
+    #[test]
+    fn one_engine_finds_the_pull_off_of_a_static_and_a_dynamic_model() {
+        use crate::conformal::PullOffControl;
+        use crate::continuation::{trace, EventKind, On, Settings, Watch};
+        use nalgebra::Vector2;
+        let watch = Watch {
+            force_minimum: On::Stop,
+            ..Watch::default()
+        };
+        let settings = Settings {
+            step: 0.01,
+            max_step: 0.02,
+            ..Settings::default()
+        };
+
+        // the paper's model, from its state at δ̄ = 2
+        let st = Contact::new(0.8).unwrap().at_displacement(2.0).unwrap();
+        let branch = Branch {
+            equations: ModelId::Max.model(),
+            rho: 0.8,
+            scale: Vector3::new(1.0, 1.0, 1.0),
+            strict: true,
+        };
+        let u0 = branch.join(&Vector2::new(st.a_bar, st.s), st.delta_bar);
+        let t = trace(
+            &branch,
+            u0,
+            &Vector3::new(0.0, 0.0, -1.0),
+            settings,
+            watch,
+            |_| false,
+        )
+        .unwrap();
+        let u = t.located(EventKind::ForceMinimum).expect("the pull-off");
+        let (x, delta) = branch.split(u);
+        let pull = Contact::new(0.8).unwrap().pull_off_load().unwrap().state;
+        assert!((x[0] - pull.a_bar).abs() < 1e-7 && (delta - pull.delta_bar).abs() < 1e-7);
+
+        // conformal:4, from its state at ā = 2.6, towards smaller ā
+        let m = Conformal::member("conformal", 4).unwrap();
+        let st = m.solve(0.8, Control::Size(2.6)).unwrap();
+        let branch = Branch {
+            equations: &m,
+            rho: 0.8,
+            scale: unit_scale(&m),
+            strict: true,
+        };
+        let u0 = DVector::from_vec(st.coefficients.clone()).push(st.delta_bar);
+        let towards = DVector::from_fn(5, |i, _| if i < 4 { -1.0 } else { 0.0 });
+        let t = trace(&branch, u0, &towards, settings, watch, |_| false).unwrap();
+        let u = t.located(EventKind::ForceMinimum).expect("the pull-off");
+        let (pull, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
+        assert!((u[4] - pull.delta_bar).abs() < 1e-7);
+    }
 }

@@ -119,7 +119,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 /// digits (what a person can act on; `rho = 0.307916`, not
 /// `0.3079159382974495`), plain between 1e-4 and 1e7, else short
 /// scientific notation (`-1e308`, not three hundred digits).
-pub fn short(x: f64) -> String {
+pub(crate) fn short(x: f64) -> String {
     let x = if x.is_finite() {
         format!("{x:.5e}").parse::<f64>().unwrap_or(x)
     } else {
@@ -135,7 +135,7 @@ pub fn short(x: f64) -> String {
 
 /// A computed number for a message, to six significant digits ([`short`]);
 /// "undefined" where it is not a number.
-pub fn rounded(x: f64) -> String {
+pub(crate) fn rounded(x: f64) -> String {
     if !x.is_finite() {
         return "undefined".into();
     }

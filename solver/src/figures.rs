@@ -975,18 +975,3 @@ pub fn all() -> Result<Vec<(&'static str, String)>> {
         .map(|f| Ok((f.file, render(f)?)))
         .collect()
 }
-
-/// Write every figure into `dir`.
-pub fn write(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| Error::Io(format!("cannot create {}: {e}", dir.display())))?;
-    all()?
-        .into_iter()
-        .map(|(name, svg)| {
-            let p = dir.join(name);
-            std::fs::write(&p, svg)
-                .map_err(|e| Error::Io(format!("cannot write {}: {e}", p.display())))?;
-            Ok(p)
-        })
-        .collect()
-}

@@ -67,7 +67,7 @@ pub fn parse(name: &str) -> Result<Choice, String> {
 
 /// Every model's name in a line: `max, apexes, energy, apex45,
 /// conformal:K with K = 1 ..= 8, exact`.
-pub fn names() -> String {
+pub(crate) fn names() -> String {
     let mut out: Vec<String> = ModelId::ALL.iter().map(|m| m.name().to_string()).collect();
     for f in families() {
         out.push(format!("{}:K with K = {}", f.name, f.member_range()));
@@ -78,7 +78,8 @@ pub fn names() -> String {
 
 /// The help text of `--model`; `exact` is left out where the command has
 /// no exact counterpart (`extra` then says so, or adds a word).
-pub fn help(with_exact: bool, extra: &str) -> String {
+#[cfg(feature = "cli")]
+pub(crate) fn help(with_exact: bool, extra: &str) -> String {
     let ellipse: Vec<&str> = ModelId::ALL.iter().map(|m| m.name()).collect();
     let mut parts = vec![format!(
         "Model: {} (the paper's, default), {}",

@@ -18,7 +18,9 @@ use crate::curve::{Fold, FoldKind};
 use crate::exact::branch::Event;
 use crate::exact::ExactState;
 #[cfg(feature = "cli")]
-use crate::{contact::FoldBasis, error::Error, fold::FoldCondition, units::Scales};
+use crate::units::{Scales, Si};
+#[cfg(feature = "cli")]
+use crate::{contact::FoldBasis, error::Error, fold::FoldCondition};
 use serde::Serialize;
 
 /// A state of any model: of the ellipse, of the contour family, or exact.
@@ -167,7 +169,7 @@ pub(crate) struct ModelAnswer {
 #[cfg(feature = "cli")]
 impl ModelAnswer {
     /// From a model's result.
-    pub fn new(model: &str, r: &crate::Result<State>) -> Self {
+    pub(crate) fn new(model: &str, r: &crate::Result<State>) -> Self {
         ModelAnswer {
             model: model.into(),
             state: r.as_ref().ok().copied(),
@@ -195,11 +197,10 @@ pub struct ModelEntry {
     pub controls: Vec<String>,
 }
 
-pub use crate::units::Si;
-
 /// Every model the solver has, in the order `thinjkr models` lists them
 /// (`crate::registry::entries`).
-pub fn models() -> Vec<ModelEntry> {
+#[cfg(feature = "cli")]
+pub(crate) fn models() -> Vec<ModelEntry> {
     crate::registry::entries()
 }
 
@@ -291,7 +292,7 @@ impl Document {
 /// The JSON Schema of [`Document`] (pretty, as committed in
 /// docs/schema.json).
 #[cfg(feature = "cli")]
-pub fn schema() -> String {
+pub(crate) fn schema() -> String {
     let s = schemars::schema_for!(Document);
     serde_json::to_string_pretty(&s).expect("a schema serialises") + "\n"
 }

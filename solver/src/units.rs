@@ -166,7 +166,7 @@ impl Cylinders {
     }
 
     /// The dimensionless model for this contact.
-    pub fn contact(&self) -> Result<(Contact, Scales)> {
+    pub(crate) fn contact(&self) -> Result<(Contact, Scales)> {
         let sc = self.scales()?;
         Ok((Contact::new(sc.rho)?, sc))
     }
@@ -190,7 +190,7 @@ impl Cylinders {
     /// The semi-axes, approach and force of any model's state (ā, b̄, δ̄, F̄
     /// of (17)) in SI units, and h/a; a value that is not a finite f64 is
     /// an error naming it.
-    pub fn si(
+    pub(crate) fn si(
         &self,
         sc: &Scales,
         a_bar: f64,

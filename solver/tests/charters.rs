@@ -167,3 +167,40 @@ fn every_module_uses_only_what_its_charter_names() {
         broken.join("\n")
     );
 }
+
+/// The public API is what a library user needs (issue 34): at most 200
+/// hand-written public items (the lines `pub fn|struct|enum|const|static|
+/// type|trait|mod|use` of solver/src, generated code aside; an item of a
+/// crate-private module is written `pub(crate)` so that the count is what
+/// is reachable). A new public item is then a decision, not a default.
+#[test]
+fn the_public_api_stays_small() {
+    const MAX_PUBLIC_ITEMS: usize = 200;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&root, &mut files);
+    let kinds = [
+        "fn ", "struct ", "enum ", "const ", "static ", "type ", "trait ", "mod ", "use ",
+    ];
+    let mut public = Vec::new();
+    for f in &files {
+        let text = std::fs::read_to_string(f).unwrap();
+        for (i, line) in text.lines().enumerate() {
+            if let Some(rest) = line.trim_start().strip_prefix("pub ") {
+                if kinds.iter().any(|k| rest.starts_with(k)) {
+                    public.push(format!("{}:{}", f.display(), i + 1));
+                }
+            }
+        }
+    }
+    assert!(
+        public.len() > 100,
+        "only {} public items found: the count does not see the sources",
+        public.len()
+    );
+    assert!(
+        public.len() <= MAX_PUBLIC_ITEMS,
+        "{} public items (at most {MAX_PUBLIC_ITEMS}); make internals pub(crate)",
+        public.len()
+    );
+}

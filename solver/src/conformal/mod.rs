@@ -28,7 +28,7 @@
 //! `curve` (the bound on a curve's points), `batch` (quoting what was
 //! typed), nalgebra.
 
-pub mod load;
+pub(crate) mod load;
 pub mod poly;
 mod trace;
 
@@ -221,7 +221,7 @@ pub enum Control {
 
 /// Every generated member of every family, by family (in registry order)
 /// and K.
-pub fn members() -> impl Iterator<Item = Conformal> {
+pub(crate) fn members() -> impl Iterator<Item = Conformal> {
     families().iter().enumerate().flat_map(|(i, f)| {
         f.members
             .iter()
@@ -333,17 +333,17 @@ impl Conformal {
     }
 
     /// The member's family.
-    pub fn family(&self) -> &'static Family {
+    pub(crate) fn family(&self) -> &'static Family {
         self.family
     }
 
     /// K.
-    pub fn terms(&self) -> usize {
+    pub(crate) fn terms(&self) -> usize {
         self.tables.terms
     }
 
     /// `family:K`.
-    pub fn name(&self) -> String {
+    pub(crate) fn name(&self) -> String {
         format!("{}:{}", self.family.name, self.terms())
     }
 
@@ -464,7 +464,7 @@ impl Conformal {
     /// max |∂p̄/∂ν − 1| over the contour: sampled at 181 angles of a quarter
     /// turn (which the two symmetries make the whole contour), the largest
     /// refined by golden-section search within a sample's spacing.
-    pub fn bc_defect(&self, x: &DVector<f64>, rho: f64) -> f64 {
+    pub(crate) fn bc_defect(&self, x: &DVector<f64>, rho: f64) -> f64 {
         // on θ = (π/2) j/180, j = 0 … 180, then the largest refined by
         // golden-section search within one grid step on either side
         const N: usize = 180;
@@ -1070,7 +1070,7 @@ impl Conformal {
     }
 
     /// The state record at x, with its checks.
-    pub fn state(&self, x: &DVector<f64>, rho: f64) -> Result<ConformalState> {
+    pub(crate) fn state(&self, x: &DVector<f64>, rho: f64) -> Result<ConformalState> {
         let k = self.terms();
         let c = &x.as_slice()[..k];
         self.univalence(c)?;

@@ -93,7 +93,7 @@ impl Decoded {
 impl Decoded {
     /// The sum of several tables' polynomials, decoded (rows grouped by
     /// their c-exponents).
-    pub fn sum<'a>(tables: impl Iterator<Item = &'a [(u64, f64)]>, k: usize) -> Decoded {
+    pub(crate) fn sum<'a>(tables: impl Iterator<Item = &'a [(u64, f64)]>, k: usize) -> Decoded {
         let mut rows: Vec<(u64, f64)> = tables.flatten().copied().collect();
         let c_mask = (1u64 << DBAR_SHIFT) - 1;
         rows.sort_by_key(|&(p, _)| p & c_mask);
@@ -250,7 +250,8 @@ fn evaluate_in(t: &Decoded, c: &[f64], dbar: f64, mu: f64, order: u8, d_mu: bool
 }
 
 /// Evaluate Σ κ δ̄^p μ^q Π c_i^(e_i) (value only).
-pub fn value(rows: &[(u64, f64)], c: &[f64], dbar: f64, mu: f64) -> f64 {
+#[cfg(test)]
+pub(crate) fn value(rows: &[(u64, f64)], c: &[f64], dbar: f64, mu: f64) -> f64 {
     let mut total = 0.0;
     for &(p, kappa) in rows {
         let mut t =

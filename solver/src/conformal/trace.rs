@@ -291,7 +291,7 @@ fn arm(
 /// contour is no longer one-to-one, or back above the contact it started
 /// from. `points` states in all, spaced evenly
 /// in arclength and shared among the arms by length.
-pub fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
+pub(crate) fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
     let start = m.solve(rho, super::Control::Delta(delta_start))?;
     let mut x0 = DVector::from_vec(start.coefficients.clone());
     x0 = x0.push(start.delta_bar);

@@ -24,15 +24,12 @@
 //! stability of the circle ([`Contact::circle_bifurcation`]), the limit of
 //! the ρ < 1 answers (continuous in ρ up to 1).
 //!
-//! Owns: [`NEAR_CIRCLE`] and the near-circular forms of the searches of
+//! Owns: the near-circular forms of the searches of
 //! [`Contact`]. May use: its parent `contact`, `fold`, `error`.
 
-use super::{Contact, Control, FoldCondition, State};
+use super::{Contact, Control, FoldCondition, State, NEAR_CIRCLE};
 use crate::error::{Error, Result};
 use nalgebra::{Vector2, Vector3};
-
-/// 1 − ρ below which states are continued from ρ₀ = 1 − NEAR_CIRCLE.
-pub const NEAR_CIRCLE: f64 = 1e-6;
 
 /// 1 − s above which the anchor's state is not near the circle (1 − s of
 /// a near-circular state there is of order 1e-6).

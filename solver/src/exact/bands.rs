@@ -277,7 +277,10 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
                 let screened = [grid[lo], grid[hi]];
                 match settle(rho, &left, &right, STEP) {
                     Ok(Ok(band)) => map.bands.push(band),
-                    Ok(Err(why)) => map.crossed.push(Crossed { screened, why }),
+                    Ok(Err(why)) => map.crossed.push(Crossed {
+                        screened,
+                        why: why.words("crosses the gap"),
+                    }),
                     Err(e) => map.unsettled.push(Crossed {
                         screened,
                         why: e.to_string(),
@@ -324,7 +327,7 @@ fn probe_neutral_points(
                     map.bands.push(band);
                     "band".to_string()
                 }
-                Ok(Err(why)) => why.replace("crosses the gap", "passes the neutral point"),
+                Ok(Err(why)) => why.words("passes the neutral point"),
                 Err(e) => format!("not settled: {e}"),
             }
         };
@@ -845,6 +848,33 @@ struct PastFolds {
     missed: Vec<(f64, String)>,
 }
 
+/// Why a gap between the model's near-elliptic states holds no band
+/// ([`settle`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum NoBand {
+    /// The arms' folds overlap (the lower arm folds at ā = `lower`, the
+    /// upper at ā = `upper`): near-elliptic states exist at every ā between.
+    Overlap { lower: f64, upper: f64 },
+    /// The exact family traced from ā = `from` passes the gap's far side
+    /// without folding.
+    NoFold { from: f64 },
+}
+
+impl NoBand {
+    /// In words, `passes` saying what the family passed without folding
+    /// ("crosses the gap", "passes the neutral point").
+    fn words(self, passes: &str) -> String {
+        match self {
+            NoBand::Overlap { lower, upper } => format!(
+                "the arms' folds overlap (the lower arm folds at a = {lower:.4}, the upper at a = {upper:.4}): near-elliptic states exist at every a between"
+            ),
+            NoBand::NoFold { from } => {
+                format!("the exact family from a = {from:.2} {passes} without folding")
+            }
+        }
+    }
+}
+
 /// Settle one candidate gap between the model's near-elliptic states
 /// `left` and `right`, tracing in steps of at most `step`: the band, or why
 /// there is none.
@@ -853,23 +883,21 @@ fn settle(
     left: &[&ConformalState],
     right: &[&ConformalState],
     step: f64,
-) -> Result<std::result::Result<Band, String>> {
+) -> Result<std::result::Result<Band, NoBand>> {
     let lower = fold_from(rho, left, 1.0, right[0].a_bar + BEYOND_GAP, step)?;
     let upper = fold_from(rho, right, -1.0, left[0].a_bar - BEYOND_GAP, step)?;
     Ok(match (lower, upper) {
         (Some(lower), Some(upper)) if lower.a_bar < upper.a_bar => Ok(Band { lower, upper }),
-        (Some(lower), Some(upper)) => Err(format!(
-            "the arms' folds overlap (the lower arm folds at a = {:.4}, the upper at a = {:.4}): near-elliptic states exist at every a between",
-            lower.a_bar, upper.a_bar
-        )),
-        (None, _) => Err(format!(
-            "the exact family from a = {:.2} crosses the gap without folding",
-            left[0].a_bar
-        )),
-        (_, None) => Err(format!(
-            "the exact family from a = {:.2} crosses the gap without folding",
-            right[0].a_bar
-        )),
+        (Some(lower), Some(upper)) => Err(NoBand::Overlap {
+            lower: lower.a_bar,
+            upper: upper.a_bar,
+        }),
+        (None, _) => Err(NoBand::NoFold {
+            from: left[0].a_bar,
+        }),
+        (_, None) => Err(NoBand::NoFold {
+            from: right[0].a_bar,
+        }),
     })
 }
 

@@ -34,7 +34,7 @@ impl Grid {
     /// A grid of `n` points with the contour basis e^{iθ}, e^{−(2j+1)iθ},
     /// j < `modes`, tabulated (the contour series is evaluated on the grid
     /// at every residual; the table saves its exponentials).
-    pub fn with_modes(n: usize, modes: usize) -> Grid {
+    pub(crate) fn with_modes(n: usize, modes: usize) -> Grid {
         let mut g = Grid::new(n);
         g.basis = (0..=modes)
             .map(|k| {
@@ -49,7 +49,7 @@ impl Grid {
     }
 
     /// A grid of `n` points (`n` even, ≥ 8), without a basis table.
-    pub fn new(n: usize) -> Grid {
+    pub(crate) fn new(n: usize) -> Grid {
         let n = n.max(8) & !1;
         let h = 2.0 * std::f64::consts::PI / n as f64;
         let theta = (0..n).map(|i| i as f64 * h).collect();
@@ -77,12 +77,12 @@ impl Grid {
     }
 
     /// The number of points.
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         self.theta.len()
     }
 
     /// Spectral derivative of periodic samples.
-    pub fn derivative(&self, f: &DVector<f64>) -> DVector<f64> {
+    pub(crate) fn derivative(&self, f: &DVector<f64>) -> DVector<f64> {
         &self.d1 * f
     }
 }

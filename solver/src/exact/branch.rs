@@ -44,6 +44,52 @@ pub(crate) const PAST_FOLD_DEPARTURE: f64 = 0.1;
 /// The most steps of a trace past a fold.
 pub(crate) const PAST_FOLD_STEPS: usize = 400;
 
+/// Why a trace past a band's fold stopped ([`Exact::crossings_past_fold`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum PastFoldStop {
+    /// ā passed the gap's far side before any fold.
+    CrossesGap,
+    /// The arm folded a second time.
+    SecondFold,
+    /// Its departure from an ellipse exceeded [`PAST_FOLD_DEPARTURE`].
+    Departs,
+    /// [`PAST_FOLD_STEPS`] steps were taken.
+    Budget,
+}
+
+/// How a trace past a band's fold ended: why, whether it had passed its
+/// fold, and at which ā; in words by `Display`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct PastFoldEnd {
+    /// Why it stopped.
+    pub stop: PastFoldStop,
+    /// Whether the arm had folded before.
+    pub folded: bool,
+    /// ā of the last traced point.
+    pub a_bar: f64,
+}
+
+impl std::fmt::Display for PastFoldEnd {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let a = self.a_bar;
+        let why = match self.stop {
+            PastFoldStop::Budget => {
+                return write!(f, "stopped after {PAST_FOLD_STEPS} steps at a = {a:.4}")
+            }
+            PastFoldStop::CrossesGap => "crosses the gap without folding",
+            PastFoldStop::SecondFold => "folds a second time",
+            PastFoldStop::Departs => {
+                "departs from an ellipse by more than 0.1 a in its coefficients"
+            }
+        };
+        if self.folded {
+            write!(f, "followed past its fold until it {why}, at a = {a:.4}")
+        } else {
+            write!(f, "{why} (at a = {a:.4})")
+        }
+    }
+}
+
 /// The seeding model's (the largest member of the family that seeds the
 /// exact solver, `conformal:8`) load-controlled pull-off at `rho`, where it
 /// has one: the start of the exact pull-off's trace.
@@ -99,7 +145,8 @@ impl Event {
 
     /// The event in words, for a person (`None` for the force minimum,
     /// which is reported as the pull-off itself).
-    pub fn describe(&self) -> Option<String> {
+    #[cfg(feature = "cli")]
+    pub(crate) fn describe(&self) -> Option<String> {
         match self {
             Event::SizeFold { a_bar } => {
                 Some(format!("the family turns back in a near a = {a_bar:.6}"))
@@ -660,7 +707,7 @@ impl Exact {
     /// (the arm crosses the gap), at a second fold, where the departure from
     /// an ellipse in the coefficients, Σ_{j≥1}|b_j|/ā, exceeds
     /// [`PAST_FOLD_DEPARTURE`], or after [`PAST_FOLD_STEPS`] steps of at most
-    /// `max_step`; how it ended is returned in words with the crossings. The
+    /// `max_step`; how it ended is returned with the crossings ([`PastFoldEnd`]). The
     /// states are of this truncation: whether the series resolves them is
     /// the caller's to decide.
     pub(crate) fn crossings_past_fold(
@@ -670,7 +717,7 @@ impl Exact {
         a_limit: f64,
         control: ExactControl,
         max_step: f64,
-    ) -> Result<(Vec<ExactState>, String)> {
+    ) -> Result<(Vec<ExactState>, PastFoldEnd)> {
         let n = self.truncation.modes + 2;
         let watch = Watch {
             size_fold: On::Note,
@@ -683,7 +730,7 @@ impl Exact {
             }),
         };
         let mut past = false;
-        let mut why = "";
+        let mut why = None;
         let trace = continuation::trace(
             self,
             self.unknowns(start),
@@ -696,15 +743,15 @@ impl Exact {
                 past |= returning;
                 let departure: f64 = p.u.rows(2, n - 3).iter().map(|b| b.abs()).sum();
                 why = if !past && (p.a_bar - a_limit) * direction > 0.0 {
-                    "crosses the gap without folding"
+                    Some(PastFoldStop::CrossesGap)
                 } else if second_fold {
-                    "folds a second time"
+                    Some(PastFoldStop::SecondFold)
                 } else if departure > PAST_FOLD_DEPARTURE * p.a_bar {
-                    "departs from an ellipse by more than 0.1 a in its coefficients"
+                    Some(PastFoldStop::Departs)
                 } else {
-                    ""
+                    None
                 };
-                !why.is_empty()
+                why.is_some()
             },
         )?;
         // the crossings from the step of the first fold on (one before it
@@ -722,15 +769,16 @@ impl Exact {
                 }
             }
         }
-        let end = trace.points.last().map_or(start.a_bar, |p| p.a_bar);
-        let how = match (trace.end, fold_step) {
-            (continuation::End::Budget, _) => {
-                format!("stopped after {PAST_FOLD_STEPS} steps at a = {end:.4}")
-            }
-            (_, None) => format!("{why} (at a = {end:.4})"),
-            (_, Some(_)) => format!("followed past its fold until it {why}, at a = {end:.4}"),
+        let stop = match (trace.end, why) {
+            (continuation::End::Budget, _) | (_, None) => PastFoldStop::Budget,
+            (_, Some(why)) => why,
         };
-        Ok((found, how))
+        let end = PastFoldEnd {
+            stop,
+            folded: fold_step.is_some(),
+            a_bar: trace.points.last().map_or(start.a_bar, |p| p.a_bar),
+        };
+        Ok((found, end))
     }
 
     /// The state at `control` started from the richest `conformal:K`'s

@@ -517,12 +517,12 @@ impl Contour {
     }
 
     /// The half-width on the X axis, z(0).
-    pub fn a_bar(&self) -> f64 {
+    pub(crate) fn a_bar(&self) -> f64 {
         self.a + self.b.iter().sum::<f64>()
     }
 
     /// The half-width on the Y axis, Im z(π/2).
-    pub fn b_bar(&self) -> f64 {
+    pub(crate) fn b_bar(&self) -> f64 {
         self.at(std::f64::consts::FRAC_PI_2)[0].im
     }
 
@@ -570,7 +570,7 @@ impl Contour {
     /// The largest distance, along rays from the centre and relative to
     /// ā, between this contour and the ellipse with the same half-widths,
     /// over `n` points.
-    pub fn deviation_from_ellipse(&self, n: usize) -> f64 {
+    pub(crate) fn deviation_from_ellipse(&self, n: usize) -> f64 {
         let (a, b) = (self.a_bar(), self.b_bar());
         (0..n)
             .map(|k| {
@@ -785,7 +785,7 @@ pub(crate) const MAX_MODES: usize = 2 * MAX_USER_MODES;
 /// (`thinjkr exact solve --rho 0.9 --force 1`): 0.52 GB and about 2 min;
 /// 4096 points took over 2 GB. The doubling checks of `thinjkr accuracy`
 /// use at most 1536.
-pub const MAX_POINTS: usize = 2048;
+pub(crate) const MAX_POINTS: usize = 2048;
 
 impl Exact {
     /// The exact problem at `rho` ∈ (0, 1].
@@ -883,7 +883,7 @@ impl Exact {
     }
 
     /// The truncation.
-    pub fn truncation(&self) -> Truncation {
+    pub(crate) fn truncation(&self) -> Truncation {
         self.truncation
     }
 

@@ -12,13 +12,16 @@
 //! [`Doubling`], [`doubling`], [`Reference`]. May use: `exact`, `contact`,
 //! `conformal` (the compared members), `model` (the ellipse models), `error`.
 
+// the accuracy table is rendered by the command line (`thinjkr accuracy`)
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
+
 use super::branch::ExactControl;
 use super::{at_resolved, pull_off_resolved, Exact, ExactState, Truncation};
 use crate::conformal::{Conformal, ConformalState, Control, PullOffControl};
 use crate::{Contact, Error, ModelId, State};
 
 /// The radii ratios of the table.
-pub const RHOS: [f64; 10] = [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1];
+pub(crate) const RHOS: [f64; 10] = [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1];
 
 /// What a table compares.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -345,7 +348,7 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
 }
 
 /// A resolved pull-off recomputed with twice the modes and points.
-pub struct Doubling {
+pub(crate) struct Doubling {
     /// ρ.
     pub rho: f64,
     /// The pull-off as in the table.
@@ -356,7 +359,7 @@ pub struct Doubling {
 }
 
 /// The doubling check of a resolved pull-off `coarse` (from [`row`]).
-pub fn doubling(coarse: &ExactState) -> Doubling {
+pub(crate) fn doubling(coarse: &ExactState) -> Doubling {
     let t = coarse.truncation;
     let fine = Exact::new(
         coarse.rho,
@@ -439,7 +442,7 @@ pub struct ReferenceState {
 }
 
 /// The reference file's contents from the table's doubling checks.
-pub fn reference(doublings: &[Doubling]) -> Reference {
+pub(crate) fn reference(doublings: &[Doubling]) -> Reference {
     Reference {
         generated_by: "thinjkr accuracy --out docs/accuracy.md --reference derive/data/exact_reference.json --figures docs/figures".into(),
         pull_off: doublings
