@@ -16,11 +16,10 @@ use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
-use thinjkr::batch::{solve_all, Given, Item};
-
-use thinjkr::exact::branch::ExactControl;
+use thinjkr::batch::{solve_all, Item};
+use thinjkr::control::Hold;
 use thinjkr::fold::FoldCondition;
-use thinjkr::registry::{Choice, Hold};
+use thinjkr::registry::Choice;
 use thinjkr::Error;
 
 pyo3::create_exception!(
@@ -80,9 +79,9 @@ fn items_of(rho: &[f64], value: &[f64], control: &str) -> Vec<Item> {
         .map(|(&rho, &v)| Item {
             rho,
             given: if control == "delta" {
-                Given::Delta(v)
+                Hold::Delta(v)
             } else {
-                Given::Force(v)
+                Hold::Force(v)
             },
         })
         .collect()
@@ -289,9 +288,9 @@ fn exact(
             }
             "delta" | "force" => {
                 let control = if what == "delta" {
-                    ExactControl::Delta(value)
+                    Hold::Delta(value)
                 } else {
-                    ExactControl::Force(value)
+                    Hold::Force(value)
                 };
                 // the default escalation as the command line: a value in a
                 // band says so, and one no start reaches is continued in rho

@@ -8,7 +8,8 @@
 //! (issue 21: reading, parsing, solving and writing every row).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use thinjkr::batch::{solve_all, Given, Item};
+use thinjkr::batch::{solve_all, Item};
+use thinjkr::control::Hold;
 use thinjkr::{Contact, ModelId, Search};
 
 fn benches(c: &mut Criterion) {
@@ -42,7 +43,7 @@ fn benches(c: &mut Criterion) {
             .flat_map(|i| {
                 (0..1000).map(move |k| Item {
                     rho: 0.3 + 0.7 * i as f64 / 999.0,
-                    given: Given::Delta(-0.2 + 10.0 * k as f64 / 999.0),
+                    given: Hold::Delta(-0.2 + 10.0 * k as f64 / 999.0),
                 })
             })
             .collect();

@@ -8,13 +8,15 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use nalgebra::DVector;
-use thinjkr::conformal::{Conformal, Control, PullOffControl};
+use thinjkr::conformal::Conformal;
+use thinjkr::control::Hold;
+use thinjkr::fold::FoldCondition;
 
 fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("conformal rho=0.8");
     for k in [1, 2, 4, 6, 8] {
         let m = Conformal::member("conformal", k).unwrap();
-        let st = m.solve(0.8, Control::Force(1.0)).unwrap();
+        let st = m.solve(0.8, Hold::Force(1.0)).unwrap();
         let x =
             DVector::from_iterator(k + 1, st.coefficients.iter().copied().chain([st.delta_bar]));
         g.bench_function(format!("K={k} residuals and Jacobian"), |b| {
@@ -27,14 +29,14 @@ fn benches(c: &mut Criterion) {
             );
         }
         g.bench_function(format!("K={k} cold state at F=1"), |b| {
-            b.iter(|| m.solve(0.8, Control::Force(black_box(1.0))).unwrap())
+            b.iter(|| m.solve(0.8, Hold::Force(black_box(1.0))).unwrap())
         });
     }
     g.sample_size(10);
     for k in [4, 8] {
         let m = Conformal::member("conformal", k).unwrap();
         g.bench_function(format!("K={k} pull-off"), |b| {
-            b.iter(|| m.pull_off(black_box(0.8), PullOffControl::Load).unwrap())
+            b.iter(|| m.pull_off(black_box(0.8), FoldCondition::Load).unwrap())
         });
     }
     g.finish();

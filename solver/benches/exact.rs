@@ -17,7 +17,8 @@
 //! modes and points, F̄ and s change by less than that.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use thinjkr::exact::{self, branch::ExactControl, Exact, Truncation};
+use thinjkr::control::Hold;
+use thinjkr::exact::{self, Exact, Truncation};
 
 fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("exact");
@@ -53,10 +54,10 @@ fn benches(c: &mut Criterion) {
     // start and the circle's arms fail first, then the arms beside the
     // band are traced past their folds
     for rho in [0.8, 0.6, 0.5] {
-        let st = exact::at_resolved(rho, ExactControl::Force(10.0)).unwrap();
+        let st = exact::at_resolved(rho, Hold::Force(10.0)).unwrap();
         assert!(st.bc_error <= exact::CONVERGED, "{}", st.bc_error);
         g.bench_function(format!("state at F = 10, rho = {rho}, resolved"), |b| {
-            b.iter(|| exact::at_resolved(black_box(rho), ExactControl::Force(10.0)).unwrap())
+            b.iter(|| exact::at_resolved(black_box(rho), Hold::Force(10.0)).unwrap())
         });
     }
     for rho in [0.8, 0.5] {

@@ -4,31 +4,25 @@
 //! writing of `thinjkr batch`, streamed in blocks so that inputs of any
 //! length run in bounded memory.
 //!
-//! Owns: [`Item`], [`Given`], [`Solves`], [`solve_all`], [`parse_line`],
-//! [`csv_row_values`], [`CSV_HEADER`]. May use: `contact`, `conformal`, `error`,
+//! Owns: [`Item`], [`Solves`], [`solve_all`], [`parse_line`],
+//! [`csv_row_values`], [`CSV_HEADER`]. May use: `contact`, `conformal`, `control`, `error`,
 //! `model`.
 
 use crate::contact::{Contact, State};
+use crate::control::Hold;
 use crate::error::{Error, Result};
 use crate::model::ModelId;
 use rayon::prelude::*;
-
-/// What an item holds fixed.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Given {
-    /// The approach δ̄ (displacement control).
-    Delta(f64),
-    /// The force F̄ (load control; the stable state).
-    Force(f64),
-}
 
 /// One input of a batch.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Item {
     /// Radii ratio ρ.
     pub rho: f64,
-    /// The control and its value.
-    pub given: Given,
+    /// The control and its value (a batch file's lines give δ̄ or F̄; at a
+    /// given F̄ the stable state, at a given ā the state before the
+    /// contact-size fold).
+    pub given: Hold,
 }
 
 /// A model a batch runs: the state at a control for a given ρ, with what
@@ -45,7 +39,7 @@ pub trait Solves: Sync {
     /// gets).
     fn at_rho(&self, rho: f64) -> Result<Self::AtRho>;
     /// The state under `given`.
-    fn solve(&self, at: &Self::AtRho, given: Given) -> Result<Self::State>;
+    fn solve(&self, at: &Self::AtRho, given: Hold) -> Result<Self::State>;
 }
 
 impl Solves for ModelId {
@@ -54,10 +48,17 @@ impl Solves for ModelId {
     fn at_rho(&self, rho: f64) -> Result<Contact> {
         Contact::with_model(*self, rho)
     }
-    fn solve(&self, c: &Contact, given: Given) -> Result<State> {
+    fn solve(&self, c: &Contact, given: Hold) -> Result<State> {
         match given {
-            Given::Delta(d) => c.at_displacement(d),
-            Given::Force(f) => c.at_load(f),
+            Hold::Delta(d) => c.at_displacement(d),
+            Hold::Force(f) => c.at_load(f),
+            Hold::Size(a) => c.at_contact_size(a)?.into_iter().next().ok_or_else(|| {
+                Error::NoState(format!(
+                    "no state with a = {} at rho = {}",
+                    crate::error::short(a),
+                    crate::error::short(c.rho())
+                ))
+            }),
         }
     }
 }
@@ -68,16 +69,9 @@ impl Solves for crate::conformal::Conformal {
     fn at_rho(&self, rho: f64) -> Result<f64> {
         Ok(rho)
     }
-    fn solve(&self, rho: &f64, given: Given) -> Result<Self::State> {
-        use crate::conformal::Control;
+    fn solve(&self, rho: &f64, given: Hold) -> Result<Self::State> {
         // each from the circle, continued in ρ
-        self.solve(
-            *rho,
-            match given {
-                Given::Delta(d) => Control::Delta(d),
-                Given::Force(f) => Control::Force(f),
-            },
-        )
+        self.solve(*rho, given)
     }
 }
 
@@ -126,7 +120,7 @@ pub fn parse_line(number: usize, line: &str) -> Option<Result<Item>> {
     {
         return None;
     }
-    let shown = quote_start(t);
+    let shown = crate::error::quote_start(t);
     let bad = |why: String| Some(Err(Error::Usage(format!("line {number}: {why}: {shown}"))));
     if t.is_empty() {
         return bad("empty line, expected rho,control,value".into());
@@ -139,7 +133,7 @@ pub fn parse_line(number: usize, line: &str) -> Option<Result<Item>> {
     }
     let num = |s: &str, name: &str| {
         s.parse::<f64>()
-            .map_err(|_| format!("{name} {} is not a number", quote_start(s)))
+            .map_err(|_| format!("{name} {} is not a number", crate::error::quote_start(s)))
     };
     let rho = match num(f[0], "rho") {
         Ok(v) => v,
@@ -150,27 +144,16 @@ pub fn parse_line(number: usize, line: &str) -> Option<Result<Item>> {
         Err(e) => return bad(e),
     };
     let given = match f[1] {
-        "delta" => Given::Delta(value),
-        "force" => Given::Force(value),
+        "delta" => Hold::Delta(value),
+        "force" => Hold::Force(value),
         other => {
             return bad(format!(
                 "control {} is not delta or force",
-                quote_start(other)
+                crate::error::quote_start(other)
             ))
         }
     };
     Some(Ok(Item { rho, given }))
-}
-
-/// The first 40 characters of `s`, quoted, with the length of the rest.
-pub(crate) fn quote_start(s: &str) -> String {
-    let n = s.chars().count();
-    if n <= 40 {
-        format!("{s:?}")
-    } else {
-        let head: String = s.chars().take(40).collect();
-        format!("{head:?}… ({} more characters)", n - 40)
-    }
 }
 
 /// One raw input line as text: the UTF-8 byte-order mark that spreadsheet
@@ -250,8 +233,9 @@ impl From<&crate::conformal::ConformalState> for Row {
 pub(crate) fn csv_row_values(number: usize, item: Option<&Item>, result: &Result<Row>) -> String {
     let (rho, control, value) = match item {
         Some(it) => match it.given {
-            Given::Delta(v) => (format!("{:?}", it.rho), "delta", format!("{v:?}")),
-            Given::Force(v) => (format!("{:?}", it.rho), "force", format!("{v:?}")),
+            Hold::Delta(v) => (format!("{:?}", it.rho), "delta", format!("{v:?}")),
+            Hold::Force(v) => (format!("{:?}", it.rho), "force", format!("{v:?}")),
+            Hold::Size(v) => (format!("{:?}", it.rho), "a", format!("{v:?}")),
         },
         None => (String::new(), "", String::new()),
     };

@@ -24,7 +24,7 @@
 //!
 //! Owns: [`Contact`], [`NEAR_CIRCLE`], [`State`], [`Stability`], [`PullOff`], [`Search`]
 //! and the walk.
-//! May use: `model`, `newton`, `fold`, `error`, `equations` (the one model
+//! May use: `control`, `model`, `newton`, `fold`, `error`, `equations` (the one model
 //! interface its Newton and continuation run on).
 
 mod cold;
@@ -34,7 +34,8 @@ mod near_circle;
 /// (`near_circle`).
 pub const NEAR_CIRCLE: f64 = 1e-6;
 
-use crate::equations::{held, Hold};
+use crate::control::{Hold, Quantity};
+use crate::equations::held;
 use crate::error::{check_range, rounded, short, Error, Result};
 use crate::fold::{self, FoldCondition};
 use crate::model::{brent_minimum, ClosureKind, Model, ModelId};
@@ -201,24 +202,12 @@ impl std::fmt::Debug for Contact {
     }
 }
 
-/// The quantity a solve holds fixed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Control {
-    /// The approach δ̄.
-    Delta,
-    /// The major semi-axis ā.
-    ABar,
-    /// The force F̄.
-    Force,
-}
-
-impl Control {
-    fn value(self, st: &State) -> f64 {
-        match self {
-            Control::Delta => st.delta_bar,
-            Control::ABar => st.a_bar,
-            Control::Force => st.force_bar,
-        }
+/// The value of a quantity at a state.
+fn value_at(quantity: Quantity, st: &State) -> f64 {
+    match quantity {
+        Quantity::Delta => st.delta_bar,
+        Quantity::ABar => st.a_bar,
+        Quantity::Force => st.force_bar,
     }
 }
 
@@ -653,7 +642,7 @@ impl Contact {
     /// interpolation between two tail states) and solved by Newton on the
     /// residuals with the control equation (so the state has the control
     /// value to round-off, not to the bisection's resolution in s).
-    fn crossings(&self, control: Control, target: f64, what: &str) -> Result<Vec<State>> {
+    fn crossings(&self, control: Quantity, target: f64, what: &str) -> Result<Vec<State>> {
         if self.search == Search::Cold {
             return self.cold_crossings(control, target, what, false, false);
         }
@@ -662,7 +651,7 @@ impl Contact {
         let n_tail = all.len();
         all.reverse();
         all.extend(walk);
-        let key = |st: &State| control.value(st);
+        let key = |st: &State| value_at(control, st);
         let mut out = Vec::new();
         for (k, w) in all.windows(2).enumerate() {
             let (f0, f1) = (key(&w[0]) - target, key(&w[1]) - target);
@@ -706,8 +695,8 @@ impl Contact {
     /// s, ln δ̄ (nearly linear there) are interpolated in ln of the control
     /// where it is positive; the nearer tail state if the interpolated one
     /// is off the adhesive sheet.
-    fn tail_guess(&self, w0: &State, w1: &State, control: Control, target: f64) -> State {
-        let (k0, k1) = (control.value(w0), control.value(w1));
+    fn tail_guess(&self, w0: &State, w1: &State, control: Quantity, target: f64) -> State {
+        let (k0, k1) = (value_at(control, w0), value_at(control, w1));
         let t = if k0 > 0.0 && k1 > 0.0 && target > 0.0 {
             (target / k0).ln() / (k1 / k0).ln()
         } else {
@@ -731,7 +720,7 @@ impl Contact {
     /// says how far the branch was followed.
     fn within_reach(
         &self,
-        control: Control,
+        control: Quantity,
         target: f64,
         what: &str,
         reached: impl Iterator<Item = (f64, f64)>,
@@ -747,9 +736,9 @@ impl Contact {
             return Err(Error::NoState(format!(
                 "{what}: {} = {} is beyond the largest value reached on the branch of model {} at rho = {} ({}, at a_bar = {}): the branch is followed up to a_bar = 1e4, or less where Newton no longer reaches the adhesive root (a model with quadratic residuals, at large loads)",
                 match control {
-                    Control::Delta => "delta",
-                    Control::ABar => "a",
-                    Control::Force => "force",
+                    Quantity::Delta => "delta",
+                    Quantity::ABar => "a",
+                    Quantity::Force => "force",
                 },
                 crate::error::short(target),
                 self.model_id(),
@@ -767,7 +756,7 @@ impl Contact {
     fn solve_controlled(
         &self,
         guess: Vector3<f64>,
-        control: Control,
+        control: Quantity,
         target: f64,
         what: &str,
     ) -> Result<State> {
@@ -776,9 +765,9 @@ impl Contact {
         let adhesive_start = self.edge_slope(z[0], z[1], z[2]) > 0.0;
         let mut last = f64::INFINITY;
         let hold = match control {
-            Control::Delta => Hold::Delta(target),
-            Control::ABar => Hold::ABar(target),
-            Control::Force => Hold::Force(target),
+            Quantity::Delta => Hold::Delta(target),
+            Quantity::ABar => Hold::Size(target),
+            Quantity::Force => Hold::Force(target),
         };
         for _ in 0..60 {
             // the state equations under the control, written once for
@@ -827,9 +816,9 @@ impl Contact {
             context: format!(
                 "{what}: {} = {} at rho = {}",
                 match control {
-                    Control::Delta => "delta",
-                    Control::ABar => "a",
-                    Control::Force => "force",
+                    Quantity::Delta => "delta",
+                    Quantity::ABar => "a",
+                    Quantity::Force => "force",
                 },
                 crate::error::short(target),
                 short(self.rho)
@@ -899,11 +888,11 @@ impl Contact {
     /// round-off of the explicit branch near s∞, where a quadratic
     /// closure's roots meet), refined by Brent's method in s (not
     /// polished: a starting point for Newton).
-    fn branch_minimum(&self, control: Control, what: &str) -> Result<State> {
+    fn branch_minimum(&self, control: Quantity, what: &str) -> Result<State> {
         if self.search == Search::Cold {
             return self.cold_minimum(control, what);
         }
-        let key = |st: &State| control.value(st);
+        let key = |st: &State| value_at(control, st);
         let walk = self.walk()?;
         let v: Vec<f64> = walk.iter().map(&key).collect();
         let k = first_window_minimum(&v)
@@ -948,8 +937,8 @@ impl Contact {
             return self.near_circle_at_displacement(delta, what);
         }
         match self.search {
-            Search::Cold => self.cold_crossings(Control::Delta, delta, what, true, false)?,
-            Search::Walk => self.crossings(Control::Delta, delta, what)?,
+            Search::Cold => self.cold_crossings(Quantity::Delta, delta, what, true, false)?,
+            Search::Walk => self.crossings(Quantity::Delta, delta, what)?,
         }
             .into_iter()
             .next()
@@ -992,14 +981,14 @@ impl Contact {
                     self.near_circle_controlled(
                         Some(&circle),
                         anchor,
-                        Control::ABar,
+                        Quantity::ABar,
                         a,
                         "contact-size control",
                     )
                 })
                 .collect();
         }
-        self.crossings(Control::ABar, a, "contact-size control")
+        self.crossings(Quantity::ABar, a, "contact-size control")
     }
 
     /// The fold of the contact size: the minimum of ā along the branch.
@@ -1013,7 +1002,7 @@ impl Contact {
             let anchor = self.anchor()?.size_fold()?;
             return self.near_circle_sqrt_fold(&anchor, FoldCondition::ContactSize);
         }
-        let guess = self.branch_minimum(Control::ABar, "fold of the contact size")?;
+        let guess = self.branch_minimum(Quantity::ABar, "fold of the contact size")?;
         self.refine_fold(&guess, FoldCondition::ContactSize)
     }
 
@@ -1064,14 +1053,14 @@ impl Contact {
             return self.near_circle_controlled(
                 Some(&circle),
                 &anchor,
-                Control::Force,
+                Quantity::Force,
                 force,
                 "load control",
             );
         }
         if self.search == Search::Cold && !self.axisymmetric() {
             return self
-                .cold_crossings(Control::Force, force, "load control", true, true)?
+                .cold_crossings(Quantity::Force, force, "load control", true, true)?
                 .into_iter()
                 .next()
                 .ok_or_else(|| Error::NoState(format!("no state at force {}", short(force))));
@@ -1122,11 +1111,11 @@ impl Contact {
                 .iter()
                 .zip(&anchor)
                 .map(|(c, a)| {
-                    self.near_circle_controlled(Some(c), a, Control::Force, force, "load control")
+                    self.near_circle_controlled(Some(c), a, Quantity::Force, force, "load control")
                 })
                 .collect();
         }
-        self.crossings(Control::Force, force, "load control")
+        self.crossings(Quantity::Force, force, "load control")
     }
 
     /// Pull-off under load control: the minimum of F̄ along the branch,
@@ -1153,7 +1142,7 @@ impl Contact {
                 basis,
             });
         }
-        let guess = self.branch_minimum(Control::Force, "pull-off under load control")?;
+        let guess = self.branch_minimum(Quantity::Force, "pull-off under load control")?;
         Ok(PullOff {
             state: self.refine_fold(&guess, FoldCondition::Load)?,
             control: FoldCondition::Load,
@@ -1242,11 +1231,11 @@ impl Contact {
             });
         }
         let fold = self.size_fold()?;
-        let state = match self.branch_minimum(Control::Delta, "pull-off under displacement control")
-        {
-            Ok(m) if m.s > fold.s => self.refine_fold(&m, FoldCondition::Displacement)?,
-            _ => fold,
-        };
+        let state =
+            match self.branch_minimum(Quantity::Delta, "pull-off under displacement control") {
+                Ok(m) if m.s > fold.s => self.refine_fold(&m, FoldCondition::Displacement)?,
+                _ => fold,
+            };
         Ok(PullOff {
             state,
             control: FoldCondition::Displacement,

@@ -29,8 +29,9 @@
 //!
 //! Owns: [`Family`], [`Linear`], [`Settings`], [`Watch`], [`On`],
 //! [`Quantity`], [`Point`], [`EventKind`], [`Event`], [`Trace`], [`trace`].
-//! May use: `error`, nalgebra.
+//! May use: `error`, `control`, nalgebra.
 
+use crate::control::Quantity;
 use crate::error::{Error, Result};
 use nalgebra::allocator::Allocator;
 use nalgebra::{DefaultAllocator, Dim, DimMin, OMatrix, OVector, LU};
@@ -157,15 +158,6 @@ pub(crate) enum On {
     Stop,
 }
 
-/// A quantity the engine watches.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Quantity {
-    /// δ̄.
-    Delta,
-    /// F̄.
-    Force,
-}
-
 /// The events a trace watches for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Watch {
@@ -226,6 +218,7 @@ where
     /// The watched quantity here.
     pub(crate) fn value(&self, q: Quantity) -> f64 {
         match q {
+            Quantity::ABar => self.a_bar,
             Quantity::Delta => self.delta_bar,
             Quantity::Force => self.force,
         }

@@ -15,11 +15,12 @@
 //! method is [`crate::newton::damped`], also written once for any
 //! dimension.
 //!
-//! Owns: [`Equations`], [`Linearised`], [`Branch`], [`Hold`], [`held`]. May use: `model`, `continuation`,
+//! Owns: [`Equations`], [`Linearised`], [`Branch`], [`held`]. May use: `control`, `fold`, `model`, `continuation`,
 //! `error`, `contact` and `conformal` (the two kinds of model it is
 //! implemented for), nalgebra.
 
 use crate::continuation::{Family, Linear};
+use crate::control::Hold;
 use crate::error::{short, Error, Result};
 use crate::model::Model;
 use nalgebra::allocator::Allocator;
@@ -332,17 +333,6 @@ where
     }
 }
 
-/// What a state is held at.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Hold {
-    /// The approach δ̄.
-    Delta(f64),
-    /// The force F̄.
-    Force(f64),
-    /// The semi-axis ā.
-    ABar(f64),
-}
-
 /// The state equations at u = (x, δ̄) (unscaled) under a control: the
 /// model's residuals r(x; ρ, δ̄) and the control equation (δ̄, F̄ or ā minus
 /// its target), with their Jacobian in u (the bordered system
@@ -379,7 +369,7 @@ where
             match hold {
                 Hold::Delta(t) => d - t,
                 Hold::Force(t) => l.force - t,
-                Hold::ABar(t) => ga.dot(&x) - t,
+                Hold::Size(t) => ga.dot(&x) - t,
             }
         }
     });
@@ -391,8 +381,8 @@ where
                 Hold::Delta(_) => f64::from(u8::from(!col_x)),
                 Hold::Force(_) if col_x => l.force_x[c],
                 Hold::Force(_) => l.force_delta,
-                Hold::ABar(_) if col_x => ga[c],
-                Hold::ABar(_) => 0.0,
+                Hold::Size(_) if col_x => ga[c],
+                Hold::Size(_) => 0.0,
             },
         }
     });
@@ -406,7 +396,7 @@ mod tests {
     //! (`conformal:4`) member; the branch's scaling round-trips.
 
     use super::*;
-    use crate::conformal::{Conformal, Control};
+    use crate::conformal::Conformal;
     use crate::contact::Contact;
     use crate::model::ModelId;
     use nalgebra::{DVector, Vector3};
@@ -448,14 +438,14 @@ mod tests {
         let st = Contact::new(0.8).unwrap().at_displacement(2.0).unwrap();
         let model = ModelId::Max.model();
         let u = Vector3::new(st.a_bar, st.s, st.delta_bar);
-        for hold in [Hold::Delta(2.0), Hold::Force(8.0), Hold::ABar(3.0)] {
+        for hold in [Hold::Delta(2.0), Hold::Force(8.0), Hold::Size(3.0)] {
             let m = mismatch(model, &u, 0.8, hold);
             assert!(m < 1e-6, "max, {hold:?}: {m:e}");
         }
         let c4 = Conformal::member("conformal", 4).unwrap();
-        let st = c4.solve(0.8, Control::Force(1.0)).unwrap();
+        let st = c4.solve(0.8, Hold::Force(1.0)).unwrap();
         let u = DVector::from_vec(st.coefficients.clone()).push(st.delta_bar);
-        for hold in [Hold::Delta(1.0), Hold::Force(1.0), Hold::ABar(3.0)] {
+        for hold in [Hold::Delta(1.0), Hold::Force(1.0), Hold::Size(3.0)] {
             let m = mismatch(&c4, &u, 0.8, hold);
             assert!(m < 1e-6, "conformal:4, {hold:?}: {m:e}");
         }
@@ -487,8 +477,8 @@ mod tests {
     /// own pull-off search puts it.
     #[test]
     fn one_engine_finds_the_pull_off_of_a_static_and_a_dynamic_model() {
-        use crate::conformal::PullOffControl;
         use crate::continuation::{trace, EventKind, On, Settings, Watch};
+        use crate::fold::FoldCondition;
         use nalgebra::Vector2;
         let watch = Watch {
             force_minimum: On::Stop,
@@ -525,7 +515,7 @@ mod tests {
 
         // conformal:4, from its state at ā = 2.6, towards smaller ā
         let m = Conformal::member("conformal", 4).unwrap();
-        let st = m.solve(0.8, Control::Size(2.6)).unwrap();
+        let st = m.solve(0.8, Hold::Size(2.6)).unwrap();
         let branch = Branch {
             equations: &m,
             rho: 0.8,
@@ -536,7 +526,7 @@ mod tests {
         let towards = DVector::from_fn(5, |i, _| if i < 4 { -1.0 } else { 0.0 });
         let t = trace(&branch, u0, &towards, settings, watch, |_| false).unwrap();
         let u = t.located(EventKind::ForceMinimum).expect("the pull-off");
-        let (pull, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
+        let (pull, _) = m.pull_off(0.8, FoldCondition::Load).unwrap();
         assert!((u[4] - pull.delta_bar).abs() < 1e-7);
     }
 }

@@ -168,3 +168,14 @@ pub(crate) fn check_range(
         })
     }
 }
+
+/// The first 40 characters of `s`, quoted, with the length of the rest.
+pub(crate) fn quote_start(s: &str) -> String {
+    let n = s.chars().count();
+    if n <= 40 {
+        format!("{s:?}")
+    } else {
+        let head: String = s.chars().take(40).collect();
+        format!("{head:?}… ({} more characters)", n - 40)
+    }
+}

@@ -8,7 +8,7 @@
 //! exact pull-offs of the accuracy run (`derive/data/exact_reference.json`,
 //! [`crate::exact::table::Reference`]) beside every model's.
 //!
-//! Owns: figure data and rendering. May use: `contact`, `curve`, `limits`,
+//! Owns: figure data and rendering. May use: `fold`, `contact`, `curve`, `limits`,
 //! `exact`, `generated` (the paper's model `max`, whose figures these are),
 //! `model` (every ellipse model beside it), `conformal` (its arms and
 //! convergence), `error`.
@@ -940,7 +940,7 @@ fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figur
         let (mut pts, mut missing) = (Vec::new(), Vec::new());
         let seed_family = crate::conformal::exact_seed().map(|m| m.family().name);
         for m in crate::conformal::members().filter(|m| Some(m.family().name) == seed_family) {
-            match m.pull_off(e.rho, crate::conformal::PullOffControl::Load) {
+            match m.pull_off(e.rho, crate::fold::FoldCondition::Load) {
                 Ok((st, _)) => {
                     let err = (st.force_bar / e.force_bar - 1.0).abs().max(1e-12);
                     pts.push((m.terms() as f64, err.log10()));

@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 /// Which quantity turns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 #[serde(rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum FoldCondition {
@@ -34,6 +35,7 @@ pub enum FoldCondition {
     /// A turning point in F̄: the end of load control (pull-off).
     Load,
     /// A turning point in ā: the fold of the contact size.
+    #[cfg_attr(feature = "cli", value(skip))]
     ContactSize,
 }
 

@@ -22,6 +22,7 @@ pub mod cli;
 pub mod conformal;
 pub mod contact;
 pub(crate) mod continuation;
+pub mod control;
 pub mod curve;
 pub(crate) mod equations;
 pub mod error;

@@ -7,19 +7,20 @@
 //! of them without an edit.
 //!
 //! Above the model families it is the one model layer: a [`Choice`]
-//! answers the verbs every front end asks, a state at a control ([`Hold`],
-//! one vocabulary for every model), the zero-force state, the pull-off and
+//! answers the verbs every front end asks, a state at a control
+//! (`control::Hold`, one vocabulary for every model), the zero-force state, the pull-off and
 //! the curve, over the models of the ellipse, the contour families and the
 //! exact solver alike, so that the command line and the Python package do
 //! not dispatch over kinds of model themselves to solve.
 //!
-//! Owns: [`Choice`], [`Hold`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
+//! Owns: [`Choice`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
 //! [`Entry`], [`parse`], [`entries`], [`help`]. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
-//! curves), `model`, `error`.
+//! curves), `model`, `control`, `error`.
 
 use crate::conformal::{families, Conformal};
+use crate::control::Hold;
 use crate::ModelId;
 
 /// A model chosen by name.
@@ -54,7 +55,7 @@ pub fn parse(name: &str) -> Result<Choice, String> {
     name.parse().map(Choice::Ellipse).map_err(|_: String| {
         let mut why = format!(
             "unknown model '{}' (allowed: {})",
-            crate::batch::quote_start(name).trim_matches('"'),
+            crate::error::quote_start(name).trim_matches('"'),
             names()
         );
         for p in crate::conformal::load_problems() {
@@ -139,34 +140,6 @@ pub fn entries() -> Vec<Entry> {
     out
 }
 
-/// What a state is held at, one vocabulary for every model: the approach
-/// δ̄, the force F̄, or the contact size ā.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Hold {
-    /// Given δ̄.
-    Delta(f64),
-    /// Given F̄.
-    Force(f64),
-    /// Given ā.
-    Size(f64),
-}
-
-impl Hold {
-    /// The control named as the command line and Python name it (`delta`,
-    /// `force`, `a`), at `value`.
-    pub fn named(control: &str, value: f64) -> crate::Result<Hold> {
-        match control {
-            "delta" => Ok(Hold::Delta(value)),
-            "force" => Ok(Hold::Force(value)),
-            "a" => Ok(Hold::Size(value)),
-            other => Err(crate::Error::Usage(format!(
-                "the control is delta, force or a (got '{}')",
-                crate::batch::quote_start(other).trim_matches('"')
-            ))),
-        }
-    }
-}
-
 /// A pull-off of any model: the state, the control whose branch it ends,
 /// what ends it there (the models of the ellipse say), and what the trace
 /// passed on the way.
@@ -218,30 +191,10 @@ impl Choice {
                     }
                 }
             }
-            Choice::Contour(m) => {
-                use crate::conformal::Control;
-                let control = match hold {
-                    Hold::Delta(d) => Control::Delta(d),
-                    Hold::Force(f) => Control::Force(f),
-                    Hold::Size(a) => Control::Size(a),
-                };
-                vec![AnyState::Conformal(m.solve(rho, control)?)]
-            }
+            Choice::Contour(m) => vec![AnyState::Conformal(m.solve(rho, hold)?)],
             Choice::Exact => {
-                use crate::exact::branch::ExactControl;
-                let control = match hold {
-                    Hold::Delta(d) => ExactControl::Delta(d),
-                    Hold::Force(f) => ExactControl::Force(f),
-                    Hold::Size(_) => {
-                        return Err(crate::Error::Unavailable {
-                            model: "exact",
-                            what: "state at a given contact size".into(),
-                            why: "the exact family is traced in arclength; give delta or force",
-                        })
-                    }
-                };
                 vec![AnyState::Exact(Box::new(crate::exact::at_resolved(
-                    rho, control,
+                    rho, hold,
                 )?))]
             }
         })
@@ -280,10 +233,10 @@ impl Choice {
         let load = match control {
             FoldCondition::Load => true,
             FoldCondition::Displacement => false,
-            other => {
-                return Err(crate::Error::Usage(format!(
-                    "a pull-off ends load or displacement control, not {other:?}"
-                )))
+            FoldCondition::ContactSize => {
+                return Err(crate::Error::Usage(
+                    "a pull-off ends load or displacement control, not the contact size's".into(),
+                ))
             }
         };
         Ok(match *self {
@@ -302,13 +255,7 @@ impl Choice {
                 }
             }
             Choice::Contour(m) => {
-                use crate::conformal::PullOffControl;
-                let under = if load {
-                    PullOffControl::Load
-                } else {
-                    PullOffControl::Displacement
-                };
-                let (st, folds) = m.pull_off(rho, under)?;
+                let (st, folds) = m.pull_off(rho, control)?;
                 PullOffAnswer {
                     state: AnyState::Conformal(st),
                     control,
@@ -423,21 +370,14 @@ impl crate::batch::Solves for Choice {
             Choice::Contour(_) | Choice::Exact => Ok(AtRho::Rho(rho)),
         }
     }
-    fn solve(&self, at: &AtRho, given: crate::batch::Given) -> crate::Result<Self::State> {
-        use crate::batch::Given;
+    fn solve(&self, at: &AtRho, given: Hold) -> crate::Result<Self::State> {
         use crate::report::AnyState;
         match (self, at) {
             (Choice::Ellipse(m), AtRho::Ellipse(c)) => m.solve(c, given).map(AnyState::Ellipse),
             (Choice::Contour(m), AtRho::Rho(rho)) => {
                 crate::batch::Solves::solve(m, rho, given).map(AnyState::Conformal)
             }
-            (Choice::Exact, AtRho::Rho(rho)) => self.state(
-                *rho,
-                match given {
-                    Given::Delta(d) => Hold::Delta(d),
-                    Given::Force(f) => Hold::Force(f),
-                },
-            ),
+            (Choice::Exact, AtRho::Rho(rho)) => self.state(*rho, given),
             _ => Err(crate::Error::Usage(
                 "a batch's shared state is of another model".into(),
             )),

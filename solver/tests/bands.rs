@@ -10,8 +10,9 @@
 //! F̄ = 10 for ρ = 0.6, past the fold of the mode-10 band's arm; none at
 //! ρ = 1; bad input a typed error.
 
+use thinjkr::control::Hold;
 use thinjkr::exact::bands::bands;
-use thinjkr::exact::branch::{Event, ExactControl};
+use thinjkr::exact::branch::Event;
 use thinjkr::exact::{Exact, Truncation};
 use thinjkr::Error;
 
@@ -98,7 +99,7 @@ fn bands_at_rho_0_8_sit_at_the_circle_modes_and_match_the_arms_folds() {
         },
     )
     .unwrap();
-    let traced_fold = |from: ExactControl, direction: f64| {
+    let traced_fold = |from: Hold, direction: f64| {
         let start = ex.at(from).unwrap();
         let br = ex
             .trace_from(&start, direction, 2.5, 3.6, 0.01, 80)
@@ -112,8 +113,8 @@ fn bands_at_rho_0_8_sit_at_the_circle_modes_and_match_the_arms_folds() {
             .unwrap()
     };
     let band = &map.bands[2];
-    let lower = traced_fold(ExactControl::Force(0.0), 1.0);
-    let upper = traced_fold(ExactControl::Force(10.0), -1.0);
+    let lower = traced_fold(Hold::Force(0.0), 1.0);
+    let upper = traced_fold(Hold::Force(10.0), -1.0);
     assert!(
         (band.lower.a_bar - lower).abs() < 0.01 && (band.upper.a_bar - upper).abs() < 0.01,
         "band {} .. {}, traced folds {lower} .. {upper}",
@@ -190,10 +191,10 @@ fn the_band_table_in_the_docs_is_the_committed_maps() {
 /// `exact::at_resolved` finds, and both are resolved.
 #[test]
 fn every_state_at_a_force_is_found() {
-    use thinjkr::exact::branch::ExactControl;
+    use thinjkr::control::Hold;
     let all = thinjkr::exact::bands::states_at(
         0.8,
-        ExactControl::Force(-4.0),
+        Hold::Force(-4.0),
         1.0,
         4.0,
         &thinjkr::exact::default_tries(),
@@ -210,7 +211,7 @@ fn every_state_at_a_force_is_found() {
     let has = |v: &[thinjkr::exact::stability::UnstableMode], n: usize| v.iter().any(|m| m.n == n);
     assert!(has(&small.stability.load, 0) && has(&small.stability.displacement, 4));
     assert!(!has(&large.stability.load, 0) && !has(&large.stability.load, 4));
-    let one = thinjkr::exact::at_resolved(0.8, ExactControl::Force(-4.0)).expect("a state");
+    let one = thinjkr::exact::at_resolved(0.8, Hold::Force(-4.0)).expect("a state");
     assert!(
         (one.a_bar - large.a_bar).abs() < 1e-8,
         "{} {}",
@@ -282,7 +283,7 @@ fn a_band_narrower_than_the_screen_is_found_at_its_neutral_point() {
 #[test]
 fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
     use thinjkr::exact::Route;
-    let control = ExactControl::Force(10.0);
+    let control = Hold::Force(10.0);
     let st = thinjkr::exact::at_resolved(0.6, control).expect("the state past the fold");
     assert_eq!(st.route, Route::PastFold, "{st:?}");
     assert!((st.force_bar - 10.0).abs() < 1e-9, "{}", st.force_bar);
@@ -362,7 +363,7 @@ fn a_force_no_arm_reaches_converged_is_said_to_lie_in_its_band() {
     // a typed outcome: the band is told apart from a force no start
     // reaches by its variant, not by its words (which are the same kind,
     // `no_state`, for machine readers)
-    match thinjkr::exact::at_resolved(0.4, ExactControl::Force(6.0)) {
+    match thinjkr::exact::at_resolved(0.4, Hold::Force(6.0)) {
         Err(e @ Error::InBand(_)) => {
             assert_eq!(e.kind(), "no_state");
             let why = e.detail();

@@ -5,7 +5,8 @@
 
 use std::io::Write;
 use std::process::{Command, Stdio};
-use thinjkr::batch::{solve_all, solve_one, Given, Item};
+use thinjkr::batch::{solve_all, solve_one, Item};
+use thinjkr::control::Hold;
 use thinjkr::ModelId;
 
 fn run(input: &[u8], status: i32) -> (String, String) {
@@ -41,9 +42,9 @@ fn ten_thousand_lines_round_trip_in_order() {
         .map(|k| {
             let rho = 0.3 + 0.7 * ((k * 7919) % 10_000) as f64 / 10_000.0;
             let given = if k % 2 == 0 {
-                Given::Delta(-0.5 + 10.0 * ((k * 104_729) % 10_000) as f64 / 10_000.0)
+                Hold::Delta(-0.5 + 10.0 * ((k * 104_729) % 10_000) as f64 / 10_000.0)
             } else {
-                Given::Force(-1.0 + 20.0 * ((k * 1_299_709) % 10_000) as f64 / 10_000.0)
+                Hold::Force(-1.0 + 20.0 * ((k * 1_299_709) % 10_000) as f64 / 10_000.0)
             };
             Item { rho, given }
         })
@@ -51,8 +52,9 @@ fn ten_thousand_lines_round_trip_in_order() {
     let mut input = String::from("rho,control,value\n");
     for it in &items {
         match it.given {
-            Given::Delta(v) => input.push_str(&format!("{:?},delta,{v:?}\n", it.rho)),
-            Given::Force(v) => input.push_str(&format!("{:?},force,{v:?}\n", it.rho)),
+            Hold::Delta(v) => input.push_str(&format!("{:?},delta,{v:?}\n", it.rho)),
+            Hold::Force(v) => input.push_str(&format!("{:?},force,{v:?}\n", it.rho)),
+            Hold::Size(_) => unreachable!("the items above hold delta or force"),
         }
     }
     let failing = solve_all(&ModelId::Max, &items)
@@ -175,8 +177,8 @@ fn conformal_batch_rows_are_its_states() {
     let text = String::from_utf8(out.stdout).unwrap();
     let m = thinjkr::conformal::Conformal::member("conformal", 4).unwrap();
     for (row, (rho, control)) in text.lines().skip(1).zip([
-        (0.8, thinjkr::conformal::Control::Delta(2.0)),
-        (0.6, thinjkr::conformal::Control::Force(1.0)),
+        (0.8, thinjkr::control::Hold::Delta(2.0)),
+        (0.6, thinjkr::control::Hold::Force(1.0)),
     ]) {
         let st = m.solve(rho, control).unwrap();
         let f: Vec<&str> = row.split(',').collect();

@@ -3,8 +3,10 @@
 //! ρ = 0.8 (the exact solver, a boundary integral method that shares no
 //! code with the family), and the exact solver's per-mode stability.
 
-use thinjkr::conformal::{Conformal, Control, PullOffControl};
-use thinjkr::exact::{self, branch::ExactControl};
+use thinjkr::conformal::Conformal;
+use thinjkr::control::Hold;
+use thinjkr::exact;
+use thinjkr::fold::FoldCondition;
 use thinjkr::Error;
 
 /// At ρ = 1 every member stays on the circle, whose pull-off under load
@@ -14,7 +16,7 @@ fn every_member_pulls_off_at_minus_three_halves_pi_on_the_circle() {
     for k in [1, 2, 3, 5, 8] {
         let (st, _) = Conformal::member("conformal", k)
             .unwrap()
-            .pull_off(1.0, PullOffControl::Load)
+            .pull_off(1.0, FoldCondition::Load)
             .unwrap();
         assert!(
             (st.force_bar + 1.5 * std::f64::consts::PI).abs() < 1e-12,
@@ -37,7 +39,7 @@ fn every_member_pulls_off_at_minus_three_halves_pi_on_the_circle() {
 fn conformal_8_agrees_with_the_exact_solution_at_rho_0_8() {
     let m = Conformal::member("conformal", 8).unwrap();
     let (exact_po, _) = exact::pull_off_resolved(0.8).unwrap();
-    let (po, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
+    let (po, _) = m.pull_off(0.8, FoldCondition::Load).unwrap();
     let rel = |x: f64, y: f64| ((x - y) / y).abs();
     assert!(
         rel(po.force_bar, exact_po.force_bar) < 1e-5,
@@ -46,8 +48,8 @@ fn conformal_8_agrees_with_the_exact_solution_at_rho_0_8() {
         exact_po.force_bar
     );
     for (control, exact_control) in [
-        (Control::Force(0.0), ExactControl::Force(0.0)),
-        (Control::Force(10.0), ExactControl::Force(10.0)),
+        (Hold::Force(0.0), Hold::Force(0.0)),
+        (Hold::Force(10.0), Hold::Force(10.0)),
     ] {
         let e = exact::at_resolved(0.8, exact_control).unwrap();
         let c = m.solve(0.8, control).unwrap();
@@ -70,7 +72,7 @@ fn conformal_8_agrees_with_the_exact_solution_at_rho_0_8() {
 /// every pair of added terms, and so does the defect of (3)₂.
 #[test]
 fn the_family_converges_to_the_exact_zero_force_state() {
-    let e = exact::at_resolved(0.8, ExactControl::Force(0.0)).unwrap();
+    let e = exact::at_resolved(0.8, Hold::Force(0.0)).unwrap();
     let mut last = (f64::INFINITY, f64::INFINITY);
     for k in [2, 4, 6, 8] {
         let st = Conformal::member("conformal", k)
@@ -114,13 +116,13 @@ fn unstable_modes_agree_with_the_exact_solver() {
     for n in [4.0f64, 6.0, 10.0] {
         for side in [0.97, 1.03] {
             let a = (4.0 * (n - 1.0)).cbrt() * side;
-            let c = m.solve(1.0, Control::Size(a)).unwrap();
+            let c = m.solve(1.0, Hold::Size(a)).unwrap();
             let e = ex1.from_circle(a).unwrap();
             assert_eq!(c.unstable_modes, exact_modes(&e), "rho = 1, a = {a}");
             assert_eq!(c.unstable_modes.contains(&(n as u32)), side < 1.0);
         }
     }
-    let e = exact::at_resolved(0.8, ExactControl::Force(0.0)).unwrap();
+    let e = exact::at_resolved(0.8, Hold::Force(0.0)).unwrap();
     let c = m.zero_force(0.8).unwrap();
     assert_eq!(c.unstable_modes, exact_modes(&e), "zero force at rho = 0.8");
 }
@@ -152,12 +154,12 @@ fn bad_input_is_a_typed_error() {
     let m = Conformal::member("conformal", 3).unwrap();
     for rho in [f64::NAN, 0.0, -1.0, 1.5] {
         assert!(matches!(
-            m.solve(rho, Control::Delta(1.0)),
+            m.solve(rho, Hold::Delta(1.0)),
             Err(Error::OutOfRange { name: "rho", .. })
         ));
     }
     assert!(matches!(
-        m.solve(0.1, Control::Delta(1.0)),
+        m.solve(0.1, Hold::Delta(1.0)),
         Err(Error::Unsupported { name: "rho", .. })
     ));
     assert!(Conformal::parse("conformal:x").unwrap().is_err());
@@ -172,7 +174,7 @@ fn bad_input_is_a_typed_error() {
 fn the_curve_holds_the_pull_off_and_at_rho_one_the_circle() {
     use thinjkr::curve::FoldKind;
     let m = Conformal::member("conformal", 8).unwrap();
-    let (po, _) = m.pull_off(0.8, PullOffControl::Load).unwrap();
+    let (po, _) = m.pull_off(0.8, FoldCondition::Load).unwrap();
     let cv = m.curve(0.8, 60, 20.0).unwrap();
     assert_eq!(cv.states.len(), 60);
     assert!(
@@ -227,7 +229,7 @@ fn forces_just_above_the_circles_pull_off_have_their_stable_state() {
     ] {
         let circle = Conformal::member("conformal", 1)
             .unwrap()
-            .solve(1.0, Control::Force(f))
+            .solve(1.0, Hold::Force(f))
             .unwrap_or_else(|e| panic!("conformal:1 at F = {f}: {e}"));
         assert!(
             circle.a_bar > a_pull_off && (circle.force_bar - f).abs() < 1e-10,
@@ -238,18 +240,18 @@ fn forces_just_above_the_circles_pull_off_have_their_stable_state() {
         for k in [4, 8] {
             let st = Conformal::member("conformal", k)
                 .unwrap()
-                .solve(1.0, Control::Force(f))
+                .solve(1.0, Hold::Force(f))
                 .unwrap_or_else(|e| panic!("conformal:{k} at F = {f}: {e}"));
             // every member holds the circle at rho = 1
             assert!((st.a_bar - circle.a_bar).abs() < 1e-9, "K = {k}, F = {f}");
         }
     }
     for f in [-4.62, -4.65, -4.655] {
-        let ex = thinjkr::exact::at_resolved(1.0, thinjkr::exact::branch::ExactControl::Force(f))
+        let ex = thinjkr::exact::at_resolved(1.0, thinjkr::control::Hold::Force(f))
             .unwrap_or_else(|e| panic!("exact at F = {f}: {e}"));
         let circle = Conformal::member("conformal", 1)
             .unwrap()
-            .solve(1.0, Control::Force(f))
+            .solve(1.0, Hold::Force(f))
             .unwrap();
         assert!(
             (ex.a_bar - circle.a_bar).abs() < 1e-8,

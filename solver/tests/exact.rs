@@ -314,8 +314,8 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
 /// mode 12); the directions are matched to distinct modes.
 #[test]
 fn unstable_directions_are_named_by_distinct_modes() {
-    use thinjkr::exact::branch::ExactControl;
-    let st = thinjkr::exact::at_resolved(0.5, ExactControl::Force(10.0)).unwrap();
+    use thinjkr::control::Hold;
+    let st = thinjkr::exact::at_resolved(0.5, Hold::Force(10.0)).unwrap();
     for (control, modes) in [
         ("displacement", &st.stability.displacement),
         ("load", &st.stability.load),
@@ -334,27 +334,27 @@ fn unstable_directions_are_named_by_distinct_modes() {
 /// force below the exact pull-off has no state.
 #[test]
 fn states_at_given_force_and_approach() {
-    use thinjkr::exact::branch::ExactControl;
+    use thinjkr::control::Hold;
     let ex = Exact::new(1.0, trunc(4, 64)).unwrap();
-    let zf = ex.at(ExactControl::Force(0.0)).unwrap();
+    let zf = ex.at(Hold::Force(0.0)).unwrap();
     assert!((zf.a_bar - 24f64.cbrt()).abs() < 1e-10, "{zf:?}");
     assert!(zf.force_bar.abs() < 1e-10, "{zf:?}");
-    let st = ex.at(ExactControl::Delta(3.0)).unwrap();
+    let st = ex.at(Hold::Delta(3.0)).unwrap();
     let a = st.a_bar;
     assert!((st.delta_bar - 3.0).abs() < 1e-12, "{st:?}");
     assert!((a * a / 4.0 - 2.0 / a - 3.0).abs() < 1e-10, "{st:?}");
 
     let ex = Exact::new(0.8, trunc(8, 128)).unwrap();
-    let zf = ex.at(ExactControl::Force(0.0)).unwrap();
+    let zf = ex.at(Hold::Force(0.0)).unwrap();
     assert!(zf.force_bar.abs() < 1e-10 && zf.bc_error < 1e-6, "{zf:?}");
-    let st = ex.at(ExactControl::Delta(5.0)).unwrap();
+    let st = ex.at(Hold::Delta(5.0)).unwrap();
     assert!(
         (st.delta_bar - 5.0).abs() < 1e-10 && st.bc_error < 1e-6,
         "{st:?}"
     );
     assert!(st.stability.load.iter().all(|m| m.n != 0), "{st:?}");
     assert!(matches!(
-        ex.at(ExactControl::Force(-4.3)),
+        ex.at(Hold::Force(-4.3)),
         Err(thinjkr::Error::NoState(_))
     ));
 }
@@ -393,9 +393,10 @@ fn doubling_changes_little(rho: f64, modes: usize) {
 /// resolved at the folds (docs/exact.md, "Which family").
 #[test]
 fn near_elliptical_family_splits_at_the_mode_8_crossing_at_rho_0_8() {
-    use thinjkr::exact::branch::{Event, ExactControl};
+    use thinjkr::control::Hold;
+    use thinjkr::exact::branch::Event;
     let ex = Exact::new(0.8, trunc(12, 192)).unwrap();
-    let fold = |from: ExactControl, direction: f64| {
+    let fold = |from: Hold, direction: f64| {
         let start = ex.at(from).unwrap();
         let br = ex
             .trace_from(&start, direction, 2.5, 3.6, 0.01, 60)
@@ -416,8 +417,8 @@ fn near_elliptical_family_splits_at_the_mode_8_crossing_at_rho_0_8() {
             .unwrap();
         (k, before.state.bc_error)
     };
-    let (lower, bc_lower) = fold(ExactControl::Force(0.0), 1.0);
-    let (upper, bc_upper) = fold(ExactControl::Force(10.0), -1.0);
+    let (lower, bc_lower) = fold(Hold::Force(0.0), 1.0);
+    let (upper, bc_upper) = fold(Hold::Force(10.0), -1.0);
     let neutral = 28f64.cbrt();
     assert!(
         (lower - neutral).abs() < 0.03 && (upper - neutral).abs() < 0.03,
@@ -448,16 +449,16 @@ fn doubling_the_truncation_changes_little_at_rho_0_5() {
 /// F̄ = 10 ā ≈ 3.380, s ≈ 0.767 (to the digits quoted).
 #[test]
 fn states_at_rho_one_half_are_found_from_the_richest_model() {
-    use thinjkr::exact::branch::ExactControl;
+    use thinjkr::control::Hold;
     use thinjkr::exact::{at_resolved, Route, CONVERGED};
-    let zero = at_resolved(0.5, ExactControl::Force(0.0)).unwrap();
+    let zero = at_resolved(0.5, Hold::Force(0.0)).unwrap();
     assert!(zero.bc_error <= CONVERGED, "{}", zero.bc_error);
     assert_eq!(zero.route, Route::FromModel);
     assert!(zero.force_bar.abs() < 1e-9);
     assert!((zero.a_bar - 2.977).abs() < 1e-3, "{}", zero.a_bar);
     assert!((zero.s - 0.752).abs() < 1e-3, "{}", zero.s);
     assert!((zero.delta_bar - 1.573).abs() < 1e-3, "{}", zero.delta_bar);
-    let ten = at_resolved(0.5, ExactControl::Force(10.0)).unwrap();
+    let ten = at_resolved(0.5, Hold::Force(10.0)).unwrap();
     assert!(ten.bc_error <= CONVERGED, "{}", ten.bc_error);
     assert!((ten.force_bar - 10.0).abs() < 1e-8);
     assert!((ten.a_bar - 3.380).abs() < 1e-3, "{}", ten.a_bar);
@@ -520,11 +521,12 @@ fn the_pull_off_lies_just_past_the_fold_of_the_mode_4_band() {
 /// and so do the fine-grid boundary errors' orders (3.3e-7 both).
 #[test]
 fn the_default_points_per_mode_give_the_state_of_twice_as_many() {
-    use thinjkr::exact::{branch::ExactControl, POINTS_PER_MODE};
+    use thinjkr::control::Hold;
+    use thinjkr::exact::POINTS_PER_MODE;
     let at = |points| {
         Exact::new(0.5, trunc(24, points))
             .unwrap()
-            .at(ExactControl::Force(10.0))
+            .at(Hold::Force(10.0))
             .unwrap()
     };
     let (coarse, fine) = (at(POINTS_PER_MODE * 24), at(2 * POINTS_PER_MODE * 24));
@@ -551,8 +553,9 @@ fn the_default_points_per_mode_give_the_state_of_twice_as_many() {
 /// 1e-9, and both are converged below 1e-9.
 #[test]
 fn continuing_in_rho_at_a_force_gives_the_state_found_there_directly() {
-    use thinjkr::exact::{at_resolved, branch::ExactControl, continued_in_rho, Route};
-    let control = ExactControl::Force(10.0);
+    use thinjkr::control::Hold;
+    use thinjkr::exact::{at_resolved, continued_in_rho, Route};
+    let control = Hold::Force(10.0);
     let start = at_resolved(0.4, control).unwrap();
     let continued = continued_in_rho(&start, 0.38, control).unwrap();
     let direct = at_resolved(0.38, control).unwrap();

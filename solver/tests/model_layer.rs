@@ -3,10 +3,10 @@
 //! answers (the same bits), and saying in a typed error what a kind does not
 //! have.
 
-use thinjkr::conformal::{Conformal, Control, PullOffControl};
-use thinjkr::exact::branch::ExactControl;
+use thinjkr::conformal::Conformal;
+use thinjkr::control::Hold;
 use thinjkr::fold::FoldCondition;
-use thinjkr::registry::{parse, Choice, Hold};
+use thinjkr::registry::{parse, Choice};
 use thinjkr::report::AnyState;
 use thinjkr::{Contact, Error, ModelId};
 
@@ -39,18 +39,18 @@ fn each_kind_answers_through_the_layer_as_through_its_own_api() {
     assert_eq!(
         json(&k4.state(rho, Hold::Delta(2.0)).unwrap()),
         json(&AnyState::Conformal(
-            m.solve(rho, Control::Delta(2.0)).unwrap()
+            m.solve(rho, Hold::Delta(2.0)).unwrap()
         ))
     );
     let p = k4.pull_off(rho, FoldCondition::Load).unwrap();
-    let (direct, folds) = m.pull_off(rho, PullOffControl::Load).unwrap();
+    let (direct, folds) = m.pull_off(rho, FoldCondition::Load).unwrap();
     assert_eq!(json(&p.state), json(&AnyState::Conformal(direct)));
     assert_eq!(p.passed.len(), folds.len());
     let exact = parse("exact").unwrap();
     assert_eq!(
         json(&exact.state(rho, Hold::Force(10.0)).unwrap()),
         json(&AnyState::Exact(Box::new(
-            thinjkr::exact::at_resolved(rho, ExactControl::Force(10.0)).unwrap()
+            thinjkr::exact::at_resolved(rho, Hold::Force(10.0)).unwrap()
         )))
     );
     let ellipse_pull_off = max.pull_off(rho, FoldCondition::Displacement).unwrap();

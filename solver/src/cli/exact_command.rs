@@ -2,12 +2,12 @@
 //! free-boundary problem (2)–(3) at the command line, every approximate
 //! model's answer printed beside it.
 //!
-//! Owns: [`ExactCommand`], the exact printers. May use: `crate::exact`,
+//! Owns: [`ExactCommand`], the exact printers. May use: `control`, `crate::exact`,
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
 //! state), `crate::report`, `crate::fold`, `crate::error`,
 //! `crate::cli` (`output`).
 
-use crate::exact::branch::ExactControl;
+use crate::control::Hold;
 use crate::exact::stability::UnstableMode;
 use crate::exact::{ExactState, Truncation};
 use crate::report::{AnyState, Document, ModelAnswer, Passed};
@@ -186,8 +186,8 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             json,
         } => {
             let control = match (delta, force) {
-                (Some(d), _) => ExactControl::Delta(d),
-                (_, Some(f)) => ExactControl::Force(f),
+                (Some(d), _) => Hold::Delta(d),
+                (_, Some(f)) => Hold::Force(f),
                 _ => return Err(Error::Usage("give one of --delta, --force".into())),
             };
             if all {
@@ -205,7 +205,7 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             rho,
             discretisation,
             json,
-        } => state(rho, ExactControl::Force(0.0), &discretisation, json),
+        } => state(rho, Hold::Force(0.0), &discretisation, json),
         ExactCommand::Bands {
             rho,
             from,
@@ -446,7 +446,7 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
 /// control with ā in [from, to].
 pub(crate) fn every_state(
     rho: f64,
-    control: ExactControl,
+    control: Hold,
     from: f64,
     to: f64,
     d: &Discretisation,
@@ -512,7 +512,7 @@ pub(crate) fn every_state(
 }
 
 /// The exact state at a control value and every model's.
-pub(crate) fn state(rho: f64, control: ExactControl, d: &Discretisation, json: bool) -> Result<()> {
+pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> Result<()> {
     let spin = crate::cli::output::Spinner::start("solving the free-boundary problem (2)-(3)");
     control.check_finite()?;
     let st = match (d.modes, d.points) {
@@ -528,8 +528,13 @@ pub(crate) fn state(rho: f64, control: ExactControl, d: &Discretisation, json: b
             (
                 m,
                 c.and_then(|c| match control {
-                    ExactControl::Delta(d) => c.at_displacement(d),
-                    ExactControl::Force(f) => c.at_load(f),
+                    Hold::Delta(d) => c.at_displacement(d),
+                    Hold::Force(f) => c.at_load(f),
+                    Hold::Size(a) => c.at_contact_size(a).and_then(|states| {
+                        states.into_iter().next().ok_or_else(|| {
+                            Error::NoState(format!("no state with a = {}", crate::error::short(a)))
+                        })
+                    }),
                 }),
             )
         })

@@ -7,7 +7,7 @@
 //! example.
 //!
 //! Owns: the verbs, their parsing and printing, the thread pool of a run.
-//! May use: `crate::registry`, `crate::report`, `crate::units`,
+//! May use: `control`, `crate::registry`, `crate::report`, `crate::units`,
 //! `crate::contact`, `crate::model`, `crate::conformal`, `crate::exact`,
 //! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
 //! `crate::limits`, `crate::error`, its own modules.
@@ -23,10 +23,11 @@ fn parse_model(s: &str) -> Result<ModelChoice, String> {
     crate::registry::parse(s)
 }
 
+use crate::control::Hold;
+use crate::fold::FoldCondition;
 /// A model of the ellipse, a member of a contour family, or the exact
 /// solution of (2)-(3) (`crate::registry`).
 use crate::registry::Choice as ModelChoice;
-use crate::registry::Hold;
 
 #[macro_use]
 mod output;
@@ -85,8 +86,8 @@ enum Command {
         #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
         model: ModelChoice,
         /// Control.
-        #[arg(long, value_enum, default_value_t = Control::Load)]
-        control: Control,
+        #[arg(long, value_enum, default_value_t = FoldCondition::Load)]
+        control: FoldCondition,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -223,12 +224,6 @@ enum Command {
     },
     /// The manual page (roff) on standard output (docs/thinjkr.1).
     Manpage,
-}
-
-#[derive(Clone, Copy, PartialEq, ValueEnum)]
-enum Control {
-    Load,
-    Displacement,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -401,10 +396,10 @@ fn solve_command(
     };
     // the exact state's report also solves the ellipse models at its
     // control and prints each one's distance from it
-    use crate::exact::branch::ExactControl;
+    use crate::control::Hold;
     let exact = match (model, hold) {
-        (ModelChoice::Exact, Hold::Delta(d)) => Some(ExactControl::Delta(d)),
-        (ModelChoice::Exact, Hold::Force(f)) => Some(ExactControl::Force(f)),
+        (ModelChoice::Exact, Hold::Delta(d)) => Some(Hold::Delta(d)),
+        (ModelChoice::Exact, Hold::Force(f)) => Some(Hold::Force(f)),
         _ => None,
     };
     if let Some(control) = exact {
@@ -440,12 +435,13 @@ fn show_states(label: &str, states: &[AnyState], j: bool) -> crate::Result<()> {
 }
 
 /// `thinjkr pull-off`: the end of the branch under load or displacement control.
-fn pull_off_command(rho: f64, model: ModelChoice, control: Control, j: bool) -> crate::Result<()> {
-    let condition = match control {
-        Control::Load => crate::fold::FoldCondition::Load,
-        Control::Displacement => crate::fold::FoldCondition::Displacement,
-    };
-    if let (ModelChoice::Exact, Control::Load) = (model, control) {
+fn pull_off_command(
+    rho: f64,
+    model: ModelChoice,
+    condition: FoldCondition,
+    j: bool,
+) -> crate::Result<()> {
+    if let (ModelChoice::Exact, FoldCondition::Load) = (model, condition) {
         // the exact pull-off's report also solves the ellipse models' and
         // prints each one's distance from it
         return exact_command::pull_off(rho, &exact_command::Discretisation::default(), j);
@@ -659,7 +655,7 @@ fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> crate::Result<()
         // the exact state's report, with the ellipse models beside it
         return exact_command::state(
             rho,
-            crate::exact::branch::ExactControl::Force(0.0),
+            crate::control::Hold::Force(0.0),
             &exact_command::Discretisation::default(),
             j,
         );

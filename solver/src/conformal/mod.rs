@@ -23,7 +23,7 @@
 //! the closed disk ([`Conformal::univalence`]).
 //!
 //! Owns: [`Family`], [`Tables`], [`Conformal`], [`ConformalState`], the
-//! families' solves. May use: `generated::registry` (the families and their
+//! families' solves. May use: `control`, `fold`, `generated::registry` (the families and their
 //! tables), `error`, `equations`, `newton`, `model` (Brent's minimisation),
 //! `curve` (the bound on a curve's points), `batch` (quoting what was
 //! typed), nalgebra.
@@ -32,12 +32,14 @@ pub(crate) mod load;
 pub mod poly;
 mod trace;
 
-use crate::equations::{held, Hold};
+use crate::control::Hold;
+use crate::equations::held;
 use crate::error::{check_range, short, Error, Result};
+use crate::fold::FoldCondition;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-pub use trace::{Curve, CurveFold, Extremum, PullOffControl};
+pub use trace::{Curve, CurveFold, Extremum};
 
 /// The generated tables of one member (`crate::generated::<family>::MEMBERS`).
 #[derive(Debug)]
@@ -208,17 +210,6 @@ pub struct ConformalState {
     pub unstable_modes: Vec<u32>,
 }
 
-/// The control of a state.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Control {
-    /// Given δ̄.
-    Delta(f64),
-    /// Given F̄.
-    Force(f64),
-    /// Given ā.
-    Size(f64),
-}
-
 /// Every generated member of every family, by family (in registry order)
 /// and K.
 pub(crate) fn members() -> impl Iterator<Item = Conformal> {
@@ -229,16 +220,6 @@ pub(crate) fn members() -> impl Iterator<Item = Conformal> {
     })
 }
 
-impl std::fmt::Display for Control {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Control::Delta(d) => write!(f, "delta = {}", short(*d)),
-            Control::Force(v) => write!(f, "force = {}", short(*v)),
-            Control::Size(a) => write!(f, "a = {}", short(*a)),
-        }
-    }
-}
-
 impl Conformal {
     /// Member K of the family named `family`, if it was generated.
     pub fn member(family: &str, terms: usize) -> Result<Conformal> {
@@ -246,7 +227,7 @@ impl Conformal {
             Some(i) => Conformal::in_family(i, terms),
             None => Err(Error::Usage(format!(
                 "no contour family {} (the registry has: {})",
-                crate::batch::quote_start(family),
+                crate::error::quote_start(family),
                 families()
                     .iter()
                     .map(|f| f.name)
@@ -325,7 +306,7 @@ impl Conformal {
                 .ok_or_else(|| {
                     format!(
                         "{}: K must be a whole number from {}",
-                        crate::batch::quote_start(name).trim_matches('"'),
+                        crate::error::quote_start(name).trim_matches('"'),
                         f.member_range().replace("..=", "to")
                     )
                 }),
@@ -581,19 +562,14 @@ impl Conformal {
         &self,
         x: &DVector<f64>,
         rho: f64,
-        control: Control,
+        hold: Hold,
     ) -> (DVector<f64>, DMatrix<f64>, f64) {
-        let hold = match control {
-            Control::Delta(d) => Hold::Delta(d),
-            Control::Force(f) => Hold::Force(f),
-            Control::Size(a) => Hold::ABar(a),
-        };
         held(self, x, rho, hold)
     }
 
     /// Damped Newton on (∇_c Π̄ = 0, control) in x = (c, δ̄) at ρ from
     /// `start` ([`crate::newton::damped`], the solver's one Newton).
-    fn newton(&self, start: &DVector<f64>, rho: f64, control: Control) -> Result<DVector<f64>> {
+    fn newton(&self, start: &DVector<f64>, rho: f64, control: Hold) -> Result<DVector<f64>> {
         self.newton_to(start, rho, control, 1e-13).map(|it| it.x)
     }
 
@@ -603,7 +579,7 @@ impl Conformal {
         &self,
         start: &DVector<f64>,
         rho: f64,
-        control: Control,
+        control: Hold,
         tolerance: f64,
     ) -> Result<crate::newton::Iterate<nalgebra::Dyn>> {
         let config = crate::newton::NewtonConfig {
@@ -645,7 +621,7 @@ impl Conformal {
         &self,
         x: &DVector<f64>,
         rho: f64,
-        control: Control,
+        control: Hold,
         j: DMatrix<f64>,
     ) -> Option<DVector<f64>> {
         let k = self.terms();
@@ -658,7 +634,7 @@ impl Conformal {
         );
         let r_mu = DVector::from_fn(k + 1, |i, _| match (i < k, control) {
             (true, _) => d.grad[i],
-            (false, Control::Force(_)) => d.grad[k],
+            (false, Hold::Force(_)) => d.grad[k],
             (false, _) => 0.0,
         });
         j.lu()
@@ -669,7 +645,7 @@ impl Conformal {
     /// The circle's state at ρ = 1 under `control`: c = (ā, 0, …, 0) with
     /// ∂Π̄/∂c₁ = 0 solved for δ̄ (a quadratic: Π̄ is quadratic in δ̄), on the
     /// adhesive root (tensile edge, ∂p̄/∂ν = +1), then Newton on the control.
-    fn circle(&self, control: Control) -> Result<(DVector<f64>, Option<DMatrix<f64>>)> {
+    fn circle(&self, control: Hold) -> Result<(DVector<f64>, Option<DMatrix<f64>>)> {
         let k = self.terms();
         // the circle's state at ā with its control value
         let at = |a: f64| -> Option<(DVector<f64>, f64)> {
@@ -707,17 +683,17 @@ impl Conformal {
             })
             .map(|v| {
                 let value = match control {
-                    Control::Delta(_) => v[k],
-                    Control::Force(_) => p1 + two_p2 * v[k],
-                    Control::Size(_) => v[0],
+                    Hold::Delta(_) => v[k],
+                    Hold::Force(_) => p1 + two_p2 * v[k],
+                    Hold::Size(_) => v[0],
                 };
                 (v, value)
             })
         };
         let target = match control {
-            Control::Delta(d) => d,
-            Control::Force(f) => f,
-            Control::Size(a) => return at(a).map(|(x, _)| (x, None)).ok_or_else(|| no_circle(a)),
+            Hold::Delta(d) => d,
+            Hold::Force(f) => f,
+            Hold::Size(a) => return at(a).map(|(x, _)| (x, None)).ok_or_else(|| no_circle(a)),
         };
         // the crossing of the circle's explicit branch in [a_lo, a_hi]
         // (values of opposite signs there) by the Illinois method to
@@ -803,7 +779,7 @@ impl Conformal {
         x1: DVector<f64>,
         j1: DMatrix<f64>,
         rho: f64,
-        control: Control,
+        control: Hold,
     ) -> Result<DVector<f64>> {
         let (mut x, mut j) = (x1, j1);
         // the state and its tangent one step back, with its μ
@@ -841,12 +817,12 @@ impl Conformal {
     }
 
     /// The state at `rho` under `control`.
-    pub fn solve(&self, rho: f64, control: Control) -> Result<ConformalState> {
+    pub fn solve(&self, rho: f64, control: Hold) -> Result<ConformalState> {
         let rho = check_rho(self.family, rho)?;
         match control {
-            Control::Delta(d) => check_range("delta", d, true, "finite").map(|_| ())?,
-            Control::Force(f) => check_range("force", f, true, "finite").map(|_| ())?,
-            Control::Size(a) => check_range("a", a, a > 0.0, "(0, inf)").map(|_| ())?,
+            Hold::Delta(d) => check_range("delta", d, true, "finite").map(|_| ())?,
+            Hold::Force(f) => check_range("force", f, true, "finite").map(|_| ())?,
+            Hold::Size(a) => check_range("a", a, a > 0.0, "(0, inf)").map(|_| ())?,
         }
         let (x1, j1) = self.circle(control)?;
         let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, control).1);
@@ -870,7 +846,7 @@ impl Conformal {
     fn between_sizes(
         &self,
         rho: f64,
-        control: Control,
+        control: Hold,
         (xa, va): (&DVector<f64>, f64),
         (xb, vb): (&DVector<f64>, f64),
         value: &dyn Fn(&DVector<f64>) -> f64,
@@ -886,7 +862,7 @@ impl Conformal {
             let am = an - newest.1 * (an - ak) / (newest.1 - keep.1);
             let w = (am - ak) / (an - ak);
             let guess = &keep.0 + (&newest.0 - &keep.0) * w;
-            let xm = self.newton(&guess, rho, Control::Size(am)).ok()?;
+            let xm = self.newton(&guess, rho, Hold::Size(am)).ok()?;
             let vm = value(&xm);
             if vm.signum() == newest.1.signum() {
                 keep.1 *= 0.5; // Illinois: the retained end's value halved
@@ -906,11 +882,11 @@ impl Conformal {
     /// bracket of [`Conformal::between_sizes`]. The route where the state at fixed control, continued in ρ,
     /// ends at a fold in ρ first: the states at fixed ā reach the pieces of
     /// the family that lie beyond it.
-    fn bracketed_by_sizes(&self, rho: f64, control: Control, a0: f64) -> Result<DVector<f64>> {
+    fn bracketed_by_sizes(&self, rho: f64, control: Hold, a0: f64) -> Result<DVector<f64>> {
         let k = self.terms();
         let target = match control {
-            Control::Delta(v) | Control::Force(v) => v,
-            Control::Size(_) => {
+            Hold::Delta(v) | Hold::Force(v) => v,
+            Hold::Size(_) => {
                 return Err(Error::NoState(format!(
                     "{}: no other route to a state at given a",
                     self.name()
@@ -920,15 +896,15 @@ impl Conformal {
         // the control's value at x minus the target
         let value = |x: &DVector<f64>| {
             let v = match control {
-                Control::Force(_) => self.potential_to(x, rho, 1).grad[k],
+                Hold::Force(_) => self.potential_to(x, rho, 1).grad[k],
                 _ => x[k],
             };
             v - target
         };
         let near_elliptic = |a: f64| -> Option<(DVector<f64>, f64)> {
-            let (x1, j1) = self.circle(Control::Size(a)).ok()?;
-            let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, Control::Size(a)).1);
-            let x = self.continue_in_rho(x1, j1, rho, Control::Size(a)).ok()?;
+            let (x1, j1) = self.circle(Hold::Size(a)).ok()?;
+            let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, Hold::Size(a)).1);
+            let x = self.continue_in_rho(x1, j1, rho, Hold::Size(a)).ok()?;
             (self.univalence(&x.as_slice()[..k]).is_ok() && self.bc_defect(&x, rho) < 1e-2).then(
                 || {
                     let v = value(&x);
@@ -963,7 +939,7 @@ impl Conformal {
 
     /// The zero-force state at `rho`.
     pub fn zero_force(&self, rho: f64) -> Result<ConformalState> {
-        self.solve(rho, Control::Force(0.0))
+        self.solve(rho, Hold::Force(0.0))
     }
 
     /// The pull-off at `rho` under `control`: the first extremum of F̄
@@ -972,8 +948,13 @@ impl Conformal {
     pub fn pull_off(
         &self,
         rho: f64,
-        control: PullOffControl,
+        control: FoldCondition,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
+        if control == FoldCondition::ContactSize {
+            return Err(Error::Usage(
+                "a pull-off ends load or displacement control, not the contact size's".into(),
+            ));
+        }
         let rho = check_rho(self.family, rho)?;
         let direct = self.pull_off_traced(rho, control);
         if direct.is_ok() || rho >= 1.0 {
@@ -997,9 +978,9 @@ impl Conformal {
     fn pull_off_traced(
         &self,
         rho: f64,
-        control: PullOffControl,
+        control: FoldCondition,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
-        let start = self.solve(rho, Control::Size(self.family.trace_start_a))?;
+        let start = self.solve(rho, Hold::Size(self.family.trace_start_a))?;
         let mut x = DVector::from_vec(start.coefficients.clone());
         x = x.push(start.delta_bar);
         let (found, folds) = trace::to_extremum(self, &x, rho, control)?;
@@ -1015,7 +996,7 @@ impl Conformal {
     fn pull_off_continued(
         &self,
         rho: f64,
-        control: PullOffControl,
+        control: FoldCondition,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
         let k = self.terms();
         let (rho_now, mut x, mut folds) = (1..)
@@ -1039,8 +1020,8 @@ impl Conformal {
             // at its δ̄ where ā is no parameter there (a fold in ā)
             let a_bar: f64 = x.rows(0, k).sum();
             let found = self
-                .newton(&x, next, Control::Size(a_bar))
-                .or_else(|_| self.newton(&x, next, Control::Delta(x[k])))
+                .newton(&x, next, Hold::Size(a_bar))
+                .or_else(|_| self.newton(&x, next, Hold::Delta(x[k])))
                 .and_then(|y| trace::to_nearby_extremum(self, &y, next, control, 0.3))
                 .ok()
                 .filter(|(y, _)| (y - &x).amax() < 0.2 * (1.0 + x.amax()));
@@ -1301,9 +1282,9 @@ mod tests {
     fn the_tangent_in_rho_is_the_derivative_of_the_states() {
         let h = 1e-4;
         for (k, control) in [
-            (4, Control::Force(1.0)),
-            (6, Control::Delta(1.5)),
-            (8, Control::Size(2.7)),
+            (4, Hold::Force(1.0)),
+            (6, Hold::Delta(1.5)),
+            (8, Hold::Size(2.7)),
         ] {
             let m = Conformal::member("conformal", k).unwrap();
             let at = |mu: f64| {
@@ -1367,7 +1348,7 @@ mod tests {
     fn the_pull_off_continued_in_rho_is_the_traced_one() {
         for (k, rho) in [(4, 0.6), (8, 0.6), (8, 0.75)] {
             let m = Conformal::member("conformal", k).unwrap();
-            for control in [PullOffControl::Load, PullOffControl::Displacement] {
+            for control in [FoldCondition::Load, FoldCondition::Displacement] {
                 let (a, _) = m.pull_off_traced(rho, control).unwrap();
                 let (b, _) = m.pull_off_continued(rho, control).unwrap();
                 assert!(
@@ -1389,7 +1370,7 @@ mod tests {
         for k in 1..=8 {
             let (st, _) = Conformal::member("conformal", k)
                 .unwrap()
-                .pull_off(0.5, PullOffControl::Load)
+                .pull_off(0.5, FoldCondition::Load)
                 .unwrap_or_else(|e| panic!("K = {k}: {e}"));
             assert!(st.force_bar < 0.0 && st.a_bar > 1.0, "K = {k}: {st:?}");
         }

@@ -11,8 +11,8 @@
 //! golden-section search on F̄) or of δ̄ (displacement control: Illinois on
 //! dδ̄/dσ). Folds in ā passed on the way are reported.
 //!
-//! Owns: [`PullOffControl`], [`Extremum`], [`to_extremum`],
-//! [`to_nearby_extremum`], [`Curve`], [`CurveFold`], [`curve`]. May use:
+//! Owns: [`Extremum`], [`to_extremum`],
+//! [`to_nearby_extremum`], [`Curve`], [`CurveFold`], [`curve`]. May use: `fold`,
 //! the parent module,
 //! `equations` (the family of the one model interface), `continuation`,
 //! `curve` (fold kinds, the bound on points), `error`, nalgebra.
@@ -21,17 +21,9 @@ use super::Conformal;
 use crate::continuation::{self, End, EventKind, Family, On, Settings, Watch};
 use crate::equations::{unit_scale, Branch};
 use crate::error::{short, Error, Result};
+use crate::fold::FoldCondition;
 use nalgebra::{DVector, Dyn};
 use serde::Serialize;
-
-/// Which extremum ends the trace.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PullOffControl {
-    /// The minimum of F̄ (pull-off under load control).
-    Load,
-    /// The extremum of δ̄ (pull-off under displacement control).
-    Displacement,
-}
 
 /// A fold in ā passed by the trace, before the pull-off.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -62,7 +54,7 @@ pub(crate) fn to_extremum(
     m: &Conformal,
     x0: &DVector<f64>,
     rho: f64,
-    control: PullOffControl,
+    control: FoldCondition,
 ) -> Result<(DVector<f64>, Vec<Extremum>)> {
     // towards smaller ā = Σ c_k
     let towards = -branch(m, rho, true).a_bar_gradient();
@@ -75,16 +67,17 @@ pub(crate) fn to_nearby_extremum(
     m: &Conformal,
     x0: &DVector<f64>,
     rho: f64,
-    control: PullOffControl,
+    control: FoldCondition,
     reach: f64,
 ) -> Result<(DVector<f64>, Vec<Extremum>)> {
     let family = branch(m, rho, true);
     let towards = match control {
-        PullOffControl::Load => -family
+        FoldCondition::Load => -family
             .linearise(x0)
             .map(|l| l.force_grad)
             .ok_or_else(|| stuck(m, x0, rho, "the equations are not defined at the start"))?,
-        PullOffControl::Displacement => -family.delta_bar_gradient(),
+        FoldCondition::Displacement => -family.delta_bar_gradient(),
+        FoldCondition::ContactSize => -family.a_bar_gradient(),
     };
     extremum_along(m, x0, rho, control, &towards, reach)
 }
@@ -93,7 +86,7 @@ fn extremum_along(
     m: &Conformal,
     x0: &DVector<f64>,
     rho: f64,
-    control: PullOffControl,
+    control: FoldCondition,
     towards: &DVector<f64>,
     reach: f64,
 ) -> Result<(DVector<f64>, Vec<Extremum>)> {
@@ -111,12 +104,13 @@ fn extremum_along(
         step_tolerance: 1e-12,
         max_steps: 20_000,
     };
-    let (force_minimum, displacement_fold) = match control {
-        PullOffControl::Load => (On::Stop, On::Ignore),
-        PullOffControl::Displacement => (On::Ignore, On::Stop),
+    let (force_minimum, displacement_fold, size_fold) = match control {
+        FoldCondition::Load => (On::Stop, On::Ignore, On::Note),
+        FoldCondition::Displacement => (On::Ignore, On::Stop, On::Note),
+        FoldCondition::ContactSize => (On::Ignore, On::Ignore, On::Stop),
     };
     let watch = Watch {
-        size_fold: On::Note,
+        size_fold,
         displacement_fold,
         force_minimum,
         bifurcation: On::Ignore,
@@ -138,8 +132,9 @@ fn extremum_along(
         })
         .collect();
     let wanted = match control {
-        PullOffControl::Load => EventKind::ForceMinimum,
-        PullOffControl::Displacement => EventKind::DisplacementFold,
+        FoldCondition::Load => EventKind::ForceMinimum,
+        FoldCondition::Displacement => EventKind::DisplacementFold,
+        FoldCondition::ContactSize => EventKind::SizeFold,
     };
     match (trace.end, trace.located(wanted)) {
         (End::Event(_), Some(x)) => Ok((x.clone(), folds)),
@@ -292,7 +287,7 @@ fn arm(
 /// from. `points` states in all, spaced evenly
 /// in arclength and shared among the arms by length.
 pub(crate) fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
-    let start = m.solve(rho, super::Control::Delta(delta_start))?;
+    let start = m.solve(rho, super::Hold::Delta(delta_start))?;
     let mut x0 = DVector::from_vec(start.coefficients.clone());
     x0 = x0.push(start.delta_bar);
     let n = x0.len();
@@ -329,7 +324,7 @@ pub(crate) fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) ->
         .any(|(p, &b)| !b && p.a_bar <= m.family().trace_start_a);
     let mut arms = vec![(first.points, first.beyond)];
     if !(has_pull_off && passes_seed) {
-        match m.solve(rho, super::Control::Size(m.family().trace_start_a)) {
+        match m.solve(rho, super::Hold::Size(m.family().trace_start_a)) {
             Ok(seed) => {
                 let mut x = DVector::from_vec(seed.coefficients.clone());
                 x = x.push(seed.delta_bar);

@@ -11,7 +11,7 @@
 //! between is read. A sample costs one explicit evaluation (ā, δ̄, F̄ and
 //! the apex slopes that pick the adhesive root), no state and no Newton.
 //!
-//! Owns: the cold scan. May use: its parent `contact`, `model`, `error`.
+//! Owns: the cold scan. May use: `control`, its parent `contact`, `model`, `error`.
 //! - A crossing of the controlled quantity between two samples is refined
 //!   by the Illinois method in u = ln(s∞ − s).
 //! - An extremum among three samples is refined by Brent's method in u;
@@ -31,7 +31,8 @@
 //! Owns: [`Scan`] and the cold forms of the searches of [`Contact`]. May
 //! use: its parent `contact`, `fold`, `error`.
 
-use super::{Contact, Control, State, WalkSample, WALK_POINTS};
+use super::{value_at, Contact, State, WalkSample, WALK_POINTS};
+use crate::control::Quantity;
 use crate::error::{Error, Result};
 use crate::model::brent_minimum;
 use nalgebra::Vector3;
@@ -60,11 +61,11 @@ fn signed_log(v: f64) -> f64 {
 }
 
 impl Point {
-    fn key(&self, control: Control) -> f64 {
+    fn key(&self, control: Quantity) -> f64 {
         match control {
-            Control::Delta => self.delta,
-            Control::ABar => self.a,
-            Control::Force => self.force,
+            Quantity::Delta => self.delta,
+            Quantity::ABar => self.a,
+            Quantity::Force => self.force,
         }
     }
 
@@ -191,7 +192,7 @@ impl<'c> Scan<'c> {
 
     /// Whether sample `i` is a local minimum of `sign`·key (below its
     /// predecessor, not above its successor).
-    fn is_extremum(&mut self, i: usize, control: Control, sign: f64) -> bool {
+    fn is_extremum(&mut self, i: usize, control: Quantity, sign: f64) -> bool {
         if i == 0 {
             return false;
         }
@@ -208,7 +209,7 @@ impl<'c> Scan<'c> {
 
     /// The extremum of `sign`·key bracketed by samples i − 1 and i + 1,
     /// refined by Brent's method in u = ln(s∞ − s) to 1e-10 in u.
-    fn refine_extremum(&mut self, i: usize, control: Control, sign: f64) -> Option<Point> {
+    fn refine_extremum(&mut self, i: usize, control: Quantity, sign: f64) -> Option<Point> {
         let (lo, hi) = (self.get(i + 1)?.s, self.get(i - 1)?.s);
         let (c, s_inf) = (self.contact, self.s_inf);
         let u = |s: f64| (s_inf - s).max(f64::MIN_POSITIVE).ln();
@@ -235,14 +236,14 @@ impl<'c> Scan<'c> {
             return s < fold;
         }
         for j in 1..=i {
-            if self.is_extremum(j, Control::ABar, 1.0) {
+            if self.is_extremum(j, Quantity::ABar, 1.0) {
                 if self.points[j - 1].s < s {
                     return false;
                 }
                 // where Brent's point is off the branch, the sample at the
                 // minimum stands for the fold
                 let fold = self
-                    .refine_extremum(j, Control::ABar, 1.0)
+                    .refine_extremum(j, Quantity::ABar, 1.0)
                     .map_or(self.points[j].s, |p| p.s);
                 self.size_fold = Some(fold);
                 return s < fold;
@@ -274,7 +275,7 @@ impl Contact {
     fn refine_crossing(
         &self,
         s_inf: f64,
-        control: Control,
+        control: Quantity,
         target: f64,
         lo: Point,
         hi: Point,
@@ -330,7 +331,7 @@ impl Contact {
         &self,
         scan: &mut Scan,
         i: usize,
-        (control, target, what): (Control, f64, &str),
+        (control, target, what): (Quantity, f64, &str),
         lo: Point,
         hi: Point,
     ) -> Result<State> {
@@ -346,7 +347,7 @@ impl Contact {
     /// controlled quantity, and a target below it is out of range.
     pub(super) fn cold_crossings(
         &self,
-        control: Control,
+        control: Quantity,
         target: f64,
         what: &str,
         first_only: bool,
@@ -385,7 +386,10 @@ impl Contact {
             all.reverse();
             all.extend(seq.iter().copied());
             for (k, w) in all.windows(2).enumerate() {
-                let (f0, f1) = (control.value(&w[0]) - target, control.value(&w[1]) - target);
+                let (f0, f1) = (
+                    value_at(control, &w[0]) - target,
+                    value_at(control, &w[1]) - target,
+                );
                 if f0.signum() == f1.signum() || !f0.is_finite() || !f1.is_finite() {
                     continue;
                 }
@@ -403,7 +407,10 @@ impl Contact {
                     return Ok(out);
                 }
             }
-            tail_reach = all.iter().map(|st| (control.value(st), st.a_bar)).collect();
+            tail_reach = all
+                .iter()
+                .map(|st| (value_at(control, st), st.a_bar))
+                .collect();
         }
         let io = (control, target, what);
         let mut minimum_seen = false;
@@ -460,7 +467,7 @@ impl Contact {
     /// The first minimum of `control` along the branch from s∞, refined by
     /// Brent's method in ln(s∞ − s): a start for the fold Newton, flagged if it lies
     /// beyond the fold of ā.
-    pub(super) fn cold_minimum(&self, control: Control, what: &str) -> Result<State> {
+    pub(super) fn cold_minimum(&self, control: Quantity, what: &str) -> Result<State> {
         let mut scan = Scan::new(self)?;
         let mut i = 1;
         while scan.get(i + 1).is_some() {
@@ -472,7 +479,7 @@ impl Contact {
                     ))
                 })?;
                 let mut st = self.state_with(p.a, p.s, p.delta, false);
-                st.beyond_size_fold = control != Control::ABar && scan.beyond_size_fold(p.s, i);
+                st.beyond_size_fold = control != Quantity::ABar && scan.beyond_size_fold(p.s, i);
                 return Ok(st);
             }
             i += 1;

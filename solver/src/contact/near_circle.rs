@@ -25,9 +25,10 @@
 //! the ρ < 1 answers (continuous in ρ up to 1).
 //!
 //! Owns: the near-circular forms of the searches of
-//! [`Contact`]. May use: its parent `contact`, `fold`, `error`.
+//! [`Contact`]. May use: `control`, its parent `contact`, `fold`, `error`.
 
-use super::{Contact, Control, FoldCondition, State, NEAR_CIRCLE};
+use super::{Contact, FoldCondition, State, NEAR_CIRCLE};
+use crate::control::Quantity;
 use crate::error::{Error, Result};
 use nalgebra::{Vector2, Vector3};
 
@@ -85,7 +86,7 @@ impl Contact {
         &self,
         circle: Option<&State>,
         anchor: &State,
-        control: Control,
+        control: Quantity,
         target: f64,
         what: &str,
     ) -> Result<State> {
@@ -154,14 +155,14 @@ impl Contact {
             Ok(anchor) => self.near_circle_controlled(
                 stable_circle.then_some(&circle),
                 &anchor,
-                Control::Delta,
+                Quantity::Delta,
                 delta,
                 what,
             ),
             // between the circle's bifurcation and the anchor's fold: from
             // the circle's state itself
             Err(_) if stable_circle => {
-                self.solve_controlled(z(&circle), Control::Delta, delta, what)
+                self.solve_controlled(z(&circle), Quantity::Delta, delta, what)
             }
             Err(e) => Err(self.from_anchor(e)),
         }

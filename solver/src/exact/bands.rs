@@ -40,11 +40,12 @@
 //! ([`past_folds_or_band`], [`states_at`]).
 //!
 //! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
-//! [`states_at`], [`past_folds_or_band`]. May use: `exact`
+//! [`states_at`], [`past_folds_or_band`]. May use: `control`, `exact`
 //! (its family and traces), `conformal` (the screen), `error`, rayon.
 
 use super::{Contour, Exact};
-use crate::conformal::{Conformal, ConformalState, Control};
+use crate::conformal::{Conformal, ConformalState};
+use crate::control::Hold;
 use crate::error::{Error, Result};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -185,7 +186,7 @@ fn screen(
         .par_iter()
         .map(|&a| {
             model
-                .solve(rho, Control::Size(a))
+                .solve(rho, Hold::Size(a))
                 .ok()
                 .filter(|st| st.bc_defect < 1e-2)
         })
@@ -552,20 +553,16 @@ pub fn markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
 /// reported in `missed` (ā and why).
 pub fn states_at(
     rho: f64,
-    control: super::branch::ExactControl,
+    control: crate::control::Hold,
     from: f64,
     to: f64,
     tries: &[super::Truncation],
 ) -> Result<AllStates> {
-    use super::branch::ExactControl;
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
     crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
     let (_, grid, states) = screen(rho, from, to)?;
-    let value = |m: &ConformalState| match control {
-        ExactControl::Force(f) => m.force_bar - f,
-        ExactControl::Delta(d) => m.delta_bar - d,
-    };
+    let value = |m: &ConformalState| control.excess(m.a_bar, m.delta_bar, m.force_bar);
     let brackets: Vec<(&ConformalState, &ConformalState)> = states
         .windows(2)
         .filter_map(|w| match (&w[0], &w[1]) {
@@ -671,20 +668,21 @@ pub struct AllStates {
 /// `err` itself.
 pub(crate) fn past_folds_or_band(
     rho: f64,
-    control: super::branch::ExactControl,
+    control: crate::control::Hold,
     a_circle: f64,
     tries: &[super::Truncation],
     err: Error,
 ) -> Result<super::ExactState> {
-    use super::branch::ExactControl;
+    use crate::control::Hold;
     if !(matches!(err, Error::NoState(_)) && rho > 0.0 && rho < 1.0 && a_circle > 1.0) {
         return Err(err);
     }
     type Of<T> = fn(&T) -> f64;
     let (target, of_state, of_edge, name): (f64, Of<ConformalState>, Of<BandEdge>, &str) =
         match control {
-            ExactControl::Force(f) => (f, |s| s.force_bar, |e| e.force_bar, "force"),
-            ExactControl::Delta(d) => (d, |s| s.delta_bar, |e| e.delta_bar, "delta"),
+            Hold::Force(f) => (f, |s| s.force_bar, |e| e.force_bar, "force"),
+            Hold::Delta(d) => (d, |s| s.delta_bar, |e| e.delta_bar, "delta"),
+            Hold::Size(a) => (a, |s| s.a_bar, |e| e.a_bar, "a"),
         };
     let range = [0.85 * a_circle, 1.15 * a_circle];
     let Ok((_, grid, states)) = screen(rho, range[0], range[1]) else {
@@ -761,7 +759,7 @@ pub(crate) fn past_folds_or_band(
 /// [`super::Route::PastFold`].
 fn past_folds(
     rho: f64,
-    control: super::branch::ExactControl,
+    control: crate::control::Hold,
     left: &[&ConformalState],
     right: &[&ConformalState],
     step: f64,

@@ -12,11 +12,13 @@
 //! falls fast (the chord method).
 //!
 //! Owns: [`Branch`], [`BranchPoint`], [`Event`], the family's
-//! [`Family`] implementation. May use: `exact`, `continuation`, `error`,
+//! [`Family`] implementation. May use: `control`, `fold`, `exact`, `continuation`, `error`,
 //! `conformal` (the richest member's state as a start).
 
 use super::{Exact, ExactState, Route};
-use crate::continuation::{self, EventKind, Family, Linear, On, Quantity, Settings, Watch};
+use crate::continuation::{self, EventKind, Family, Linear, On, Settings, Watch};
+use crate::control::Hold;
+use crate::control::Quantity;
 use crate::error::{Error, Result};
 use nalgebra::{DMatrix, DVector, Dyn};
 use serde::Serialize;
@@ -94,10 +96,11 @@ impl std::fmt::Display for PastFoldEnd {
 /// exact solver, `conformal:8`) load-controlled pull-off at `rho`, where it
 /// has one: the start of the exact pull-off's trace.
 pub(crate) fn model_pull_off(rho: f64) -> Option<crate::conformal::ConformalState> {
-    use crate::conformal::{Conformal, PullOffControl};
+    use crate::conformal::Conformal;
+    use crate::fold::FoldCondition;
     let model: Conformal = crate::conformal::exact_seed()?;
     model
-        .pull_off(rho, PullOffControl::Load)
+        .pull_off(rho, FoldCondition::Load)
         .ok()
         .map(|(po, _)| po)
 }
@@ -162,37 +165,6 @@ impl Event {
     }
 }
 
-/// What an exact state is asked for by.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub enum ExactControl {
-    /// The approach δ̄.
-    Delta(f64),
-    /// The force F̄ (F̄ = 0: the zero-force state).
-    Force(f64),
-}
-
-impl ExactControl {
-    /// The control's value, refused unless finite (an [`Error::OutOfRange`]
-    /// naming `delta` or `force`): NaN or ∞ is bad input, not a force no
-    /// state reaches.
-    pub(crate) fn check_finite(self) -> Result<Self> {
-        let (name, v) = match self {
-            ExactControl::Delta(v) => ("delta", v),
-            ExactControl::Force(v) => ("force", v),
-        };
-        crate::error::check_range(name, v, true, "finite").map(|_| self)
-    }
-}
-
-impl std::fmt::Display for ExactControl {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            ExactControl::Delta(d) => write!(f, "delta = {}", crate::error::short(*d)),
-            ExactControl::Force(v) => write!(f, "force = {}", crate::error::short(*v)),
-        }
-    }
-}
-
 /// One traced point.
 #[derive(Clone, Debug, Serialize)]
 pub struct BranchPoint {
@@ -216,10 +188,11 @@ pub struct Branch {
 /// The half-width of the exact circle (ρ = 1) at `control` (22)–(25): for
 /// F̄ the root of π(ā⁶ − 24ā³)/96 = F̄ above the pull-off; NaN below the
 /// circle's pull-off force −3π/2.
-pub(crate) fn circle_a_bar(control: ExactControl) -> f64 {
+pub(crate) fn circle_a_bar(control: Hold) -> f64 {
     match control {
-        ExactControl::Delta(v) => circle_a_bar_at_delta(v),
-        ExactControl::Force(v) => {
+        Hold::Delta(v) => circle_a_bar_at_delta(v),
+        Hold::Size(a) => a,
+        Hold::Force(v) => {
             let disc = 144.0 + 96.0 * v / std::f64::consts::PI;
             if disc.is_nan() || disc < 0.0 {
                 f64::NAN
@@ -563,15 +536,12 @@ impl Exact {
         max_step: f64,
         max_points: usize,
         stop_at_force_minimum: bool,
-        control: Option<ExactControl>,
+        control: Option<Hold>,
     ) -> Result<(Branch, Option<ExactState>)> {
         let n = self.truncation.modes + 2;
         let towards = a_bar_gradient(n) * direction;
         let settings = trace_settings(max_step, max_points.saturating_sub(1));
-        let crossing = control.map(|c| match c {
-            ExactControl::Delta(v) => (Quantity::Delta, v, On::Stop),
-            ExactControl::Force(v) => (Quantity::Force, v, On::Stop),
-        });
+        let crossing = control.map(|c| (Quantity::of(c), c.value(), On::Stop));
         let watch = Watch {
             // located (a minimum of F̄ just past a fold is then looked for
             // from the fold, where the arclength plane cuts the family once)
@@ -715,7 +685,7 @@ impl Exact {
         start: &ExactState,
         direction: f64,
         a_limit: f64,
-        control: ExactControl,
+        control: Hold,
         max_step: f64,
     ) -> Result<(Vec<ExactState>, PastFoldEnd)> {
         let n = self.truncation.modes + 2;
@@ -724,10 +694,7 @@ impl Exact {
             displacement_fold: On::Ignore,
             force_minimum: On::Ignore,
             bifurcation: On::Ignore,
-            crossing: Some(match control {
-                ExactControl::Delta(v) => (Quantity::Delta, v, On::Locate),
-                ExactControl::Force(v) => (Quantity::Force, v, On::Locate),
-            }),
+            crossing: Some((Quantity::of(control), control.value(), On::Locate)),
         };
         let mut past = false;
         let mut why = None;
@@ -789,19 +756,11 @@ impl Exact {
     /// start does not converge, or the answer is not near the model's
     /// (within 2 % in ā, 5 % in s) and near-elliptical (boundary error
     /// below 1e-2); the caller decides whether it is resolved.
-    fn from_model(&self, control: ExactControl) -> Option<ExactState> {
-        use crate::conformal::{Conformal, Control};
+    fn from_model(&self, control: Hold) -> Option<ExactState> {
+        use crate::conformal::Conformal;
         // the seeding family's largest member
         let model: Conformal = crate::conformal::exact_seed()?;
-        let guess = model
-            .solve(
-                self.rho,
-                match control {
-                    ExactControl::Delta(v) => Control::Delta(v),
-                    ExactControl::Force(v) => Control::Force(v),
-                },
-            )
-            .ok()?;
+        let guess = model.solve(self.rho, control).ok()?;
         let nm = self.truncation.modes;
         let ellipse = super::Contour::ellipse(guess.a_bar, guess.b_bar, nm);
         // Newton at the control itself from the model's ellipse: the state
@@ -826,10 +785,7 @@ impl Exact {
         if (start.s / guess.s - 1.0).abs() > 0.05 {
             return None;
         }
-        let here = match control {
-            ExactControl::Delta(v) => start.delta_bar - v,
-            ExactControl::Force(v) => start.force_bar - v,
-        };
+        let here = control.excess(start.a_bar, start.delta_bar, start.force_bar);
         let direction = if here < 0.0 { 1.0 } else { -1.0 };
         let (_, found) = self
             .trace_general(
@@ -869,7 +825,7 @@ impl Exact {
     /// load-controlled pull-off; no approximate model is used on this
     /// route. An unresolved state is [`Error::Unresolved`], a value not reached is
     /// [`Error::NoState`] saying where the arm ended.
-    pub fn at(&self, control: ExactControl) -> Result<ExactState> {
+    pub fn at(&self, control: Hold) -> Result<ExactState> {
         self.find(control, None).and_then(|st| {
             let at = format!("{control} ({})", st.route);
             self.accept_resolved(at, st)
@@ -880,11 +836,7 @@ impl Exact {
     /// by Newton at the control from `coarser`, the state at the same
     /// control with fewer modes (its contour padded with zeros; accepted
     /// near it, with its route): the escalation of [`super::at_with`].
-    pub(crate) fn find(
-        &self,
-        control: ExactControl,
-        coarser: Option<&ExactState>,
-    ) -> Result<ExactState> {
+    pub(crate) fn find(&self, control: Hold, coarser: Option<&ExactState>) -> Result<ExactState> {
         if let Some(c) = coarser {
             if let Ok(mut st) = self.solve_at(control, &c.contour, c.delta_bar) {
                 if st.bc_error <= 1e-2
@@ -897,7 +849,7 @@ impl Exact {
             }
         }
         let a_circle = circle_a_bar(control);
-        if let (ExactControl::Force(v), true) = (control, a_circle.is_nan()) {
+        if let (Hold::Force(v), true) = (control, a_circle.is_nan()) {
             return Err(Error::NoState(format!(
                 "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, -3 pi/2, and so below that of every rho",
                 crate::error::rounded(self.rho)
@@ -925,10 +877,7 @@ impl Exact {
         let mut ends = Vec::new();
         let st = loop {
             let start = self.from_circle(a_start)?;
-            let here = match control {
-                ExactControl::Delta(v) => start.delta_bar - v,
-                ExactControl::Force(v) => start.force_bar - v,
-            };
+            let here = control.excess(start.a_bar, start.delta_bar, start.force_bar);
             // on the near-elliptical arms above the pull-off δ̄ and F̄ grow with ā
             let direction = if here < 0.0 { 1.0 } else { -1.0 };
             let (branch, found) = self.trace_general(

@@ -31,7 +31,7 @@
 //! F̄ = ∫ p̄ dA by Green's identity with w = (X² + Y²)/4:
 //! F̄ = −∮ w ∂p̄/∂ν ds + ∮ W dY, ∂W/∂X = w·(X²/2 + Y²/(2ρ) − δ̄).
 //!
-//! Owns: [`ExactState`], [`Exact`], [`Truncation`]. May use: `error`,
+//! Owns: [`ExactState`], [`Exact`], [`Truncation`]. May use: `control`, `error`,
 //! nalgebra; no model of the ellipse (it is the reference for them), except
 //! as a starting guess supplied by the caller.
 
@@ -42,6 +42,7 @@ pub(crate) mod linear;
 pub mod stability;
 pub mod table;
 
+use crate::control::Hold;
 use crate::error::{Error, Result};
 use bie::{solve_dirichlet, solve_dirichlet_symmetric, ContourSamples, Grid};
 use nalgebra::{Complex, DMatrix, DVector};
@@ -314,8 +315,8 @@ pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<
 /// found, and the control lies in no band of the near-elliptic family,
 /// continued in ρ at the control from the state at a larger ρ
 /// ([`continued_in_rho`]).
-pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
-    control.check_finite()?;
+pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
+    by_delta_or_force(control)?;
     match at_searched(rho, control, &default_tries()) {
         // not reached, and not in a band: from the state at a larger ρ
         // (a value in a band, Error::InBand, is answered as it is)
@@ -330,21 +331,31 @@ pub fn at_resolved(rho: f64, control: branch::ExactControl) -> Result<ExactState
 /// a band of the family traced past their folds; where there is none
 /// there either, and the control lies in a band, the error says so
 /// ([`bands::past_folds_or_band`]).
-pub fn at_searched(
-    rho: f64,
-    control: branch::ExactControl,
-    tries: &[Truncation],
-) -> Result<ExactState> {
-    control.check_finite()?;
+pub fn at_searched(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
+    by_delta_or_force(control)?;
     at_with(rho, control, tries).or_else(|e| {
         bands::past_folds_or_band(rho, control, branch::circle_a_bar(control), tries, e)
     })
 }
 
+/// The routes to an exact state are asked by δ̄ or F̄, finite: a given ā
+/// is refused (an [`Error::Unavailable`]; the family is traced in
+/// arclength, and [`Exact::solve`] is the state at a given ā from a guess).
+fn by_delta_or_force(control: Hold) -> Result<Hold> {
+    match control {
+        Hold::Size(_) => Err(Error::Unavailable {
+            model: "exact",
+            what: "state at a given contact size".into(),
+            why: "the exact family is traced in arclength; give delta or force",
+        }),
+        _ => control.check_finite(),
+    }
+}
+
 /// The state at `control` at `rho` from the first larger ρ where
 /// [`at_with`] finds it ([`first_above`]), continued in ρ
 /// ([`continued_in_rho`]).
-fn from_larger_rho(rho: f64, control: branch::ExactControl) -> Result<ExactState> {
+fn from_larger_rho(rho: f64, control: Hold) -> Result<ExactState> {
     let start = first_above(rho, |r| at_with(r, control, &default_tries())).ok_or_else(|| {
         Error::NoState(format!(
             "no state at {control} found at any rho above it in steps of 0.1 to continue from"
@@ -370,11 +381,8 @@ fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
 /// [`CONVERGED`]. The answer only where it converges; else an error that
 /// says down to which ρ the family was followed converged, and how it
 /// stopped.
-pub fn continued_in_rho(
-    start: &ExactState,
-    rho: f64,
-    control: branch::ExactControl,
-) -> Result<ExactState> {
+pub fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactState> {
+    by_delta_or_force(control)?;
     let tries = default_tries();
     let mut k = tries
         .iter()
@@ -438,11 +446,7 @@ pub fn continued_in_rho(
 /// The exact state at `control` with the truncations `tries`
 /// ([`resolved`]), each after the first started from the state the one
 /// before found (resolved or not).
-pub(crate) fn at_with(
-    rho: f64,
-    control: branch::ExactControl,
-    tries: &[Truncation],
-) -> Result<ExactState> {
+pub(crate) fn at_with(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
     let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
     resolved(rho, tries, |ex| {
         let st = ex.find(control, coarser.borrow().as_ref())?;
@@ -746,23 +750,6 @@ impl std::fmt::Display for Route {
     }
 }
 
-/// What Newton holds besides the boundary condition: the size ā, or the
-/// control (δ̄ or F̄).
-#[derive(Clone, Copy, Debug)]
-enum Held {
-    Size(f64),
-    Control(branch::ExactControl),
-}
-
-impl std::fmt::Display for Held {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Held::Size(a) => write!(f, "a_bar = {}", crate::error::rounded(*a)),
-            Held::Control(c) => write!(f, "{c}"),
-        }
-    }
-}
-
 /// The exact problem at one ρ and truncation.
 pub struct Exact {
     rho: f64,
@@ -848,7 +835,7 @@ impl Exact {
     /// (the family's equations, ā free), and F̄.
     pub(crate) fn modes(&self, u: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
         let n_modes = self.truncation.modes;
-        let (r, force) = self.equations(u, Held::Size(0.0))?;
+        let (r, force) = self.equations(u, Hold::Size(0.0))?;
         Some((r.rows(1, n_modes + 1).into_owned(), force))
     }
 
@@ -967,7 +954,7 @@ impl Exact {
     /// The equations at u = (A, b₀..b_{N−1}, δ̄): the held quantity minus
     /// its value (z(0) − ā, δ̄ − δ̄₀ or F̄ − F̄₀) and the cosine modes
     /// k = 0..N of ∂p̄/∂ν − 1; and F̄.
-    fn equations(&self, u: &DVector<f64>, held: Held) -> Option<(DVector<f64>, f64)> {
+    fn equations(&self, u: &DVector<f64>, held: Hold) -> Option<(DVector<f64>, f64)> {
         let n_modes = self.truncation.modes;
         let c = Contour {
             a: u[0],
@@ -976,9 +963,9 @@ impl Exact {
         let f = fields(&c, self.rho, u[n_modes + 1], &self.grid)?;
         let mut r = DVector::zeros(n_modes + 2);
         r[0] = match held {
-            Held::Size(a_bar) => c.a_bar() - a_bar,
-            Held::Control(branch::ExactControl::Delta(d)) => u[n_modes + 1] - d,
-            Held::Control(branch::ExactControl::Force(v)) => f.force - v,
+            Hold::Size(a_bar) => c.a_bar() - a_bar,
+            Hold::Delta(d) => u[n_modes + 1] - d,
+            Hold::Force(v) => f.force - v,
         };
         r.rows_mut(1, n_modes + 1)
             .copy_from(&self.cos_modes_of(&f.normal_derivative));
@@ -989,7 +976,7 @@ impl Exact {
     /// method from the contour `guess` and approach `delta_guess` (an
     /// approximate model's state, or a neighbour on the family).
     pub fn solve(&self, a_bar: f64, guess: &Contour, delta_guess: f64) -> Result<ExactState> {
-        self.state(&self.newton(Held::Size(a_bar), guess, delta_guess)?)
+        self.state(&self.newton(Hold::Size(a_bar), guess, delta_guess)?)
     }
 
     /// The exact state at `control` by Newton's method from the contour
@@ -999,16 +986,16 @@ impl Exact {
     /// and Newton fails.
     pub(crate) fn solve_at(
         &self,
-        control: branch::ExactControl,
+        control: Hold,
         guess: &Contour,
         delta_guess: f64,
     ) -> Result<ExactState> {
-        self.state(&self.newton(Held::Control(control), guess, delta_guess)?)
+        self.state(&self.newton(control, guess, delta_guess)?)
     }
 
     /// The unknowns u = (A, b₀..b_{N−1}, δ̄) of the state [`Exact::solve`]
     /// returns, without the state's fine-grid check and stability.
-    fn newton(&self, held: Held, guess: &Contour, delta_guess: f64) -> Result<DVector<f64>> {
+    fn newton(&self, held: Hold, guess: &Contour, delta_guess: f64) -> Result<DVector<f64>> {
         let nm = self.truncation.modes;
         let mut u = DVector::zeros(nm + 2);
         u[0] = guess.a;
@@ -1045,11 +1032,9 @@ impl Exact {
                 .ok_or_else(|| fail(u, r.amax(), it, "singular system in the Jacobian"))?;
             let mut jac = DMatrix::zeros(nm + 2, nm + 2);
             match held {
-                Held::Size(_) => jac.view_mut((0, 0), (1, nm + 1)).fill(1.0),
-                Held::Control(branch::ExactControl::Delta(_)) => jac[(0, nm + 1)] = 1.0,
-                Held::Control(branch::ExactControl::Force(_)) => {
-                    jac.row_mut(0).copy_from(&lin.d_force.transpose())
-                }
+                Hold::Size(_) => jac.view_mut((0, 0), (1, nm + 1)).fill(1.0),
+                Hold::Delta(_) => jac[(0, nm + 1)] = 1.0,
+                Hold::Force(_) => jac.row_mut(0).copy_from(&lin.d_force.transpose()),
             }
             jac.view_mut((1, 0), (nm + 1, nm + 2))
                 .copy_from(&self.mode_jacobian(&lin));
@@ -1147,7 +1132,7 @@ impl Exact {
         let circle = Exact::new(1.0, self.truncation)?;
         // the intermediate states need no fine-grid check or stability
         let mut u = circle.newton(
-            Held::Size(a_bar),
+            Hold::Size(a_bar),
             &Contour::ellipse(a_bar, a_bar, nm),
             a_bar * a_bar / 4.0 - 2.0 / a_bar,
         )?;
@@ -1160,7 +1145,7 @@ impl Exact {
         while rho > self.rho {
             let next = (rho - step).max(self.rho);
             let ex = Exact::new(next, self.truncation)?;
-            match ex.newton(Held::Size(a_bar), &contour(&u), u[nm + 1]) {
+            match ex.newton(Hold::Size(a_bar), &contour(&u), u[nm + 1]) {
                 Ok(n) => {
                     u = n;
                     rho = next;

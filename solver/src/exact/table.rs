@@ -9,15 +9,16 @@
 //! and the reference file the checker reads for `sec6.error.exact`.
 //!
 //! Owns: [`Quantity`], [`Row`], [`row`], [`render`], [`RHOS`],
-//! [`Doubling`], [`doubling`], [`Reference`]. May use: `exact`, `contact`,
+//! [`Doubling`], [`doubling`], [`Reference`]. May use: `fold`, `control`, `exact`, `contact`,
 //! `conformal` (the compared members), `model` (the ellipse models), `error`.
 
 // the accuracy table is rendered by the command line (`thinjkr accuracy`)
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
-use super::branch::ExactControl;
 use super::{at_resolved, pull_off_resolved, Exact, ExactState, Truncation};
-use crate::conformal::{Conformal, ConformalState, Control, PullOffControl};
+use crate::conformal::{Conformal, ConformalState};
+use crate::control::Hold;
+use crate::fold::FoldCondition;
 use crate::{Contact, Error, ModelId, State};
 
 /// The radii ratios of the table.
@@ -79,8 +80,8 @@ pub(crate) fn compared_members() -> Vec<Conformal> {
 pub fn row(rho: f64, quantity: Quantity) -> Row {
     let exact = match quantity {
         Quantity::PullOff => pull_off_resolved(rho).map(|(s, _)| s),
-        Quantity::ZeroForce => at_resolved(rho, ExactControl::Force(0.0)),
-        Quantity::Force10 => at_resolved(rho, ExactControl::Force(10.0)),
+        Quantity::ZeroForce => at_resolved(rho, Hold::Force(0.0)),
+        Quantity::Force10 => at_resolved(rho, Hold::Force(10.0)),
     };
     let models = ModelId::ALL
         .iter()
@@ -97,9 +98,9 @@ pub fn row(rho: f64, quantity: Quantity) -> Row {
         .into_iter()
         .map(|m| {
             let st = match quantity {
-                Quantity::PullOff => m.pull_off(rho, PullOffControl::Load).map(|(s, _)| s),
+                Quantity::PullOff => m.pull_off(rho, FoldCondition::Load).map(|(s, _)| s),
                 Quantity::ZeroForce => m.zero_force(rho),
-                Quantity::Force10 => m.solve(rho, Control::Force(10.0)),
+                Quantity::Force10 => m.solve(rho, Hold::Force(10.0)),
             };
             (m.name(), st.map_err(|e| e.to_string()))
         })
