@@ -37,7 +37,7 @@ impl Hold {
     }
 
     /// The value held.
-    pub fn value(self) -> f64 {
+    pub(crate) fn value(self) -> f64 {
         match self {
             Hold::Delta(v) | Hold::Force(v) | Hold::Size(v) => v,
         }

@@ -5,13 +5,19 @@
 //! [`solve`] and [`solve_within`] are its form for the ellipse models'
 //! two residuals in x = (ā, s) (for the paper's model, (19)–(20)) on the
 //! domain ā > 0, 0 < s ≤ 1; `conformal:K` uses it in x = (c, δ̄).
+//! [`chord`] is Newton's method with the Jacobian kept while it serves,
+//! for a system whose Jacobian costs far more than its residuals (the
+//! exact solver's).
 //!
-//! Owns: [`NewtonConfig`], [`Problem`], [`Iterate`], [`damped`], [`solve`],
+//! Owns: [`NewtonConfig`], [`Problem`], [`Iterate`], [`damped`], [`chord`]
+//! ([`ChordSystem`], [`ChordConfig`], [`ChordStop`]), [`solve`],
 //! [`solve_within`]. May use: `error`, nalgebra.
 
 use crate::error::{Error, Result};
 use nalgebra::allocator::Allocator;
-use nalgebra::{DefaultAllocator, Dim, DimMin, Matrix2, OMatrix, OVector, Vector2};
+use nalgebra::{
+    DVector, DefaultAllocator, Dim, DimMin, Dyn, Matrix2, OMatrix, OVector, Vector2, LU,
+};
 
 /// Controls of Newton's method.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -218,4 +224,159 @@ where
         return Ok(done(x, j, rn, config.max_iterations));
     }
     Err(done(x, j, rn, config.max_iterations))
+}
+
+/// A system for [`chord`]: its residuals alone (cheap) and its factorised
+/// Jacobian (dear), each `None` where the system is not defined at u.
+pub(crate) trait ChordSystem {
+    /// r(u).
+    fn residuals(&self, u: &DVector<f64>) -> Option<DVector<f64>>;
+    /// The LU factors of ∂r/∂u at u.
+    fn jacobian(&self, u: &DVector<f64>) -> Option<LU<f64, Dyn, Dyn>>;
+}
+
+/// The bounds of [`chord`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct ChordConfig {
+    /// The residuals' round-off floor (max norm): below it the iterate is
+    /// taken as it is (further steps only move along a near-singular
+    /// direction, as at a bifurcation point).
+    pub floor: f64,
+    /// Converged when the steps stall with the max norm below this.
+    pub tolerance: f64,
+    /// Iteration limit.
+    pub max_iterations: usize,
+}
+
+/// Why [`chord`] stopped without converging.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ChordFailure {
+    /// The residuals are not defined at the start.
+    NoResiduals,
+    /// The Jacobian is not defined (singular) at an iterate.
+    NoJacobian,
+    /// The Newton step is not finite.
+    SingularStep,
+    /// No damping of a fresh step reduced the residual.
+    LineSearch,
+    /// The steps stalled above the tolerance.
+    Stalled,
+    /// The iteration limit (this many iterations).
+    Iterations(usize),
+}
+
+impl std::fmt::Display for ChordFailure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ChordFailure::NoResiduals => f.write_str("singular boundary integral equation"),
+            ChordFailure::NoJacobian => f.write_str("singular system in the Jacobian"),
+            ChordFailure::SingularStep => f.write_str("singular Newton matrix"),
+            ChordFailure::LineSearch => f.write_str("line search failed"),
+            ChordFailure::Stalled => f.write_str("Newton stalled above the residual tolerance"),
+            ChordFailure::Iterations(n) => write!(f, "no convergence in {n} Newton iterations"),
+        }
+    }
+}
+
+/// Where [`chord`] stopped without converging: the last iterate, its
+/// residual (max norm; NaN where none), the iterations used and why.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct ChordStop {
+    /// The last iterate.
+    pub u: DVector<f64>,
+    /// Its residual.
+    pub residual: f64,
+    /// Iterations used.
+    pub iterations: usize,
+    /// Why it stopped.
+    pub why: ChordFailure,
+}
+
+/// Newton's method with the Jacobian kept while it serves (the chord
+/// method), for a system whose Jacobian costs far more than its residuals
+/// (the exact solver's boundary integral equations): the Jacobian is
+/// refreshed after a step that reduced the residual (max norm) less than
+/// fourfold or needed damping, and before a damped step is taken with an
+/// old one; a fresh step is halved (down to 1e-4) until the residual
+/// falls. Converged at the round-off floor, or when the steps stall
+/// (below 1e-13 relative, or below 1e-9 and no longer halving) with the
+/// residual below the tolerance.
+pub(crate) fn chord(
+    system: &impl ChordSystem,
+    start: DVector<f64>,
+    config: &ChordConfig,
+) -> std::result::Result<DVector<f64>, ChordStop> {
+    let mut u = start;
+    let stop = |u: &DVector<f64>, residual: f64, iterations: usize, why: ChordFailure| ChordStop {
+        u: u.clone(),
+        residual,
+        iterations,
+        why,
+    };
+    let Some(mut r) = system.residuals(&u) else {
+        return Err(stop(&u, f64::NAN, 0, ChordFailure::NoResiduals));
+    };
+    let mut lu = None;
+    let mut last_step = f64::INFINITY;
+    for it in 0..config.max_iterations {
+        if r.amax() <= config.floor {
+            return Ok(u);
+        }
+        let fresh = lu.is_none();
+        let step = {
+            let factors = match &lu {
+                Some(f) => f,
+                None => match system.jacobian(&u) {
+                    Some(f) => lu.insert(f),
+                    None => return Err(stop(&u, r.amax(), it, ChordFailure::NoJacobian)),
+                },
+            };
+            match factors
+                .solve(&(-&r))
+                .filter(|v| v.iter().all(|x| x.is_finite()))
+            {
+                Some(step) => step,
+                None => return Err(stop(&u, r.amax(), it, ChordFailure::SingularStep)),
+            }
+        };
+        // damp until the residual decreases
+        let mut lambda = 1.0;
+        let r0 = r.amax();
+        let accepted = loop {
+            let un = &u + &step * lambda;
+            match system.residuals(&un) {
+                Some(rn) if rn.amax() < r0 || r0 < config.floor => break Some((un, rn)),
+                _ if !fresh => break None,
+                _ if lambda > 1e-4 => lambda *= 0.5,
+                _ => return Err(stop(&u, r0, it, ChordFailure::LineSearch)),
+            }
+        };
+        let Some((un, rn)) = accepted else {
+            // an old Jacobian that does not give descent: refresh it
+            lu = None;
+            continue;
+        };
+        if lambda < 1.0 || rn.amax() > 0.25 * r0 {
+            lu = None;
+        }
+        u = un;
+        r = rn;
+        let size = step.amax() * lambda;
+        if size < 1e-13 * (1.0 + u.amax()) || (size < 1e-9 && size > 0.5 * last_step) {
+            // converged only if the residual holds to the tolerance, not
+            // merely because the steps stalled
+            let res = r.amax();
+            if res < config.tolerance {
+                return Ok(u);
+            }
+            return Err(stop(&u, res, it, ChordFailure::Stalled));
+        }
+        last_step = size;
+    }
+    Err(stop(
+        &u,
+        r.amax(),
+        config.max_iterations,
+        ChordFailure::Iterations(config.max_iterations),
+    ))
 }

@@ -31,7 +31,7 @@
 //! F̄ = ∫ p̄ dA by Green's identity with w = (X² + Y²)/4:
 //! F̄ = −∮ w ∂p̄/∂ν ds + ∮ W dY, ∂W/∂X = w·(X²/2 + Y²/(2ρ) − δ̄).
 //!
-//! Owns: [`ExactState`], [`Exact`], [`Truncation`]. May use: `control`, `error`,
+//! Owns: [`ExactState`], [`Exact`], [`Truncation`]. May use: `control`, `error`, `newton` (the shared chord iteration),
 //! nalgebra; no model of the ellipse (it is the reference for them), except
 //! as a starting guess supplied by the caller.
 
@@ -994,7 +994,9 @@ impl Exact {
     }
 
     /// The unknowns u = (A, b₀..b_{N−1}, δ̄) of the state [`Exact::solve`]
-    /// returns, without the state's fine-grid check and stability.
+    /// returns, without the state's fine-grid check and stability: the
+    /// shared chord iteration ([`crate::newton::chord`]) on the equations
+    /// at `held`.
     fn newton(&self, held: Hold, guess: &Contour, delta_guess: f64) -> Result<DVector<f64>> {
         let nm = self.truncation.modes;
         let mut u = DVector::zeros(nm + 2);
@@ -1003,111 +1005,30 @@ impl Exact {
             u[j + 1] = guess.b.get(j).copied().unwrap_or(0.0);
         }
         u[nm + 1] = delta_guess;
-        let fail = |u: &DVector<f64>, res: f64, it: usize, why: &str| {
+        let config = crate::newton::ChordConfig {
+            floor: 1e-13,
+            tolerance: RESIDUAL_TOLERANCE,
+            max_iterations: 60,
+        };
+        crate::newton::chord(&Held { exact: self, held }, u, &config).map_err(|stop| {
             // where it stopped: the contour of the last iterate
             let c = Contour {
-                a: u[0],
-                b: u.rows(1, nm).iter().copied().collect(),
+                a: stop.u[0],
+                b: stop.u.rows(1, nm).iter().copied().collect(),
             };
             Error::NoConvergence {
-                iterations: it,
+                iterations: stop.iterations,
                 a_bar: c.a_bar(),
                 s: c.b_bar() / c.a_bar(),
-                residual: res,
+                residual: stop.residual,
                 context: format!(
-                    "exact solution at rho = {}, {held} (delta_bar = {}): {why}",
+                    "exact solution at rho = {}, {held} (delta_bar = {}): {}",
                     crate::error::rounded(self.rho),
-                    crate::error::rounded(u[nm + 1])
+                    crate::error::rounded(stop.u[nm + 1]),
+                    stop.why
                 ),
             }
-        };
-        // Newton's method with the Jacobian kept while it serves (the chord
-        // method): it is refreshed after a step that reduced the residual
-        // less than fourfold or needed damping, and before a damped step is
-        // taken with an old one. The Jacobian is the derivative of the
-        // discrete equations ([`Exact::linear`]).
-        let jacobian = |u: &DVector<f64>, r: &DVector<f64>, it: usize| {
-            let lin = self
-                .linear(u)
-                .ok_or_else(|| fail(u, r.amax(), it, "singular system in the Jacobian"))?;
-            let mut jac = DMatrix::zeros(nm + 2, nm + 2);
-            match held {
-                Hold::Size(_) => jac.view_mut((0, 0), (1, nm + 1)).fill(1.0),
-                Hold::Delta(_) => jac[(0, nm + 1)] = 1.0,
-                Hold::Force(_) => jac.row_mut(0).copy_from(&lin.d_force.transpose()),
-            }
-            jac.view_mut((1, 0), (nm + 1, nm + 2))
-                .copy_from(&self.mode_jacobian(&lin));
-            Ok::<_, Error>(jac.lu())
-        };
-        let (mut r, _) = self
-            .equations(&u, held)
-            .ok_or_else(|| fail(&u, f64::NAN, 0, "singular boundary integral equation"))?;
-        let mut lu = None;
-        let mut last_step = f64::INFINITY;
-        for it in 0..60 {
-            if r.amax() <= 1e-13 {
-                // at the round-off floor of the boundary integral solution:
-                // further steps only move along a near-singular direction
-                // (at a bifurcation point such as the circle's pull-off)
-                return Ok(u);
-            }
-            let fresh = lu.is_none();
-            let step = {
-                let factors = match &lu {
-                    Some(f) => f,
-                    None => lu.insert(jacobian(&u, &r, it)?),
-                };
-                factors
-                    .solve(&(-&r))
-                    .filter(|v| v.iter().all(|x| x.is_finite()))
-                    .ok_or_else(|| fail(&u, r.amax(), it, "singular Newton matrix"))?
-            };
-            // damp until the residual decreases (the contour must stay simple)
-            let mut lambda = 1.0;
-            let r0 = r.amax();
-            let accepted = loop {
-                let un = &u + &step * lambda;
-                match self.equations(&un, held) {
-                    Some((rn, _)) if rn.amax() < r0 || r0 < 1e-13 => break Some((un, rn)),
-                    _ if !fresh => break None,
-                    _ if lambda > 1e-4 => lambda *= 0.5,
-                    _ => return Err(fail(&u, r0, it, "line search failed")),
-                }
-            };
-            let Some((un, rn)) = accepted else {
-                // an old Jacobian that does not give descent: refresh it
-                lu = None;
-                continue;
-            };
-            if lambda < 1.0 || rn.amax() > 0.25 * r0 {
-                lu = None;
-            }
-            u = un;
-            r = rn;
-            let size = step.amax() * lambda;
-            if size < 1e-13 * (1.0 + u.amax()) || (size < 1e-9 && size > 0.5 * last_step) {
-                // converged only if the boundary condition holds to its
-                // round-off floor, not merely because the steps stalled
-                let res = r.amax();
-                if res < RESIDUAL_TOLERANCE {
-                    return Ok(u);
-                }
-                return Err(fail(
-                    &u,
-                    res,
-                    it,
-                    "Newton stalled above the residual tolerance",
-                ));
-            }
-            last_step = size;
-        }
-        Err(fail(
-            &u,
-            r.amax(),
-            60,
-            "no convergence in 60 Newton iterations",
-        ))
+        })
     }
 
     /// The exact state at half-width `a_bar` from `near`, a converged state
@@ -1207,5 +1128,36 @@ impl Exact {
             st.stability = self.stability(&st)?;
         }
         Ok(st)
+    }
+}
+/// The exact equations at a hold as a system of the shared chord
+/// iteration ([`crate::newton::chord`]): the residuals of
+/// [`Exact::equations`], the Jacobian of the discrete equations
+/// ([`Exact::linear`]) with the hold's row.
+struct Held<'a> {
+    exact: &'a Exact,
+    held: Hold,
+}
+
+impl crate::newton::ChordSystem for Held<'_> {
+    fn residuals(&self, u: &DVector<f64>) -> Option<DVector<f64>> {
+        self.exact.equations(u, self.held).map(|(r, _)| r)
+    }
+
+    fn jacobian(
+        &self,
+        u: &DVector<f64>,
+    ) -> Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>> {
+        let nm = self.exact.truncation.modes;
+        let lin = self.exact.linear(u)?;
+        let mut jac = DMatrix::zeros(nm + 2, nm + 2);
+        match self.held {
+            Hold::Size(_) => jac.view_mut((0, 0), (1, nm + 1)).fill(1.0),
+            Hold::Delta(_) => jac[(0, nm + 1)] = 1.0,
+            Hold::Force(_) => jac.row_mut(0).copy_from(&lin.d_force.transpose()),
+        }
+        jac.view_mut((1, 0), (nm + 1, nm + 2))
+            .copy_from(&self.exact.mode_jacobian(&lin));
+        Some(jac.lu())
     }
 }
