@@ -1,0 +1,414 @@
+//! The resolution policy of the exact solver: which truncations are tried
+//! and when one resolves a state (the escalation of contour modes, the
+//! fine-grid boundary error a state must reach), and the routes to a state
+//! or a pull-off (from the seeding model's state, along the family, past
+//! the folds of a band, continued in ρ from a larger ρ). The problem itself
+//! (the contour, the fields, the equations, one truncation's Newton) is the
+//! parent's.
+//!
+//! Owns: [`CONVERGED`], [`RESOLVED`], [`default_tries`], [`resolved`],
+//! [`pull_off_resolved`], [`at_resolved`], [`at_searched`],
+//! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`.
+
+use super::{bands, branch, Exact, ExactState, Route, Truncation};
+use crate::control::Hold;
+use crate::error::{Error, Result};
+
+/// The largest max|∂p̄/∂ν − 1| on the independent fine grid for which a
+/// pull-off is reported: above it the truncation does not resolve the
+/// contour, and the answer is an error asking for more modes. (At
+/// ρ = 0.8 a fine-grid error of 8e-6 goes with an error of 4e-9 in F̄.)
+pub(crate) const RESOLVED: f64 = 1e-5;
+
+/// The fine-grid boundary error at which [`resolved`] stops escalating:
+/// the aspect ratio s of a pull-off changes by about 0.01–0.07 times the
+/// boundary error when the truncation is doubled (docs/accuracy.md), so
+/// 1e-9 keeps that change near or below 1e-10.
+pub const CONVERGED: f64 = 1e-9;
+
+/// An answer of the exact solver with its fine-grid boundary error.
+pub(crate) trait BoundaryError {
+    /// max |∂p̄/∂ν − 1| on the fine grid.
+    fn bc_error(&self) -> f64;
+    /// The exact states the answer holds, whose stability [`resolved`]
+    /// computes once it has chosen the answer.
+    fn states_mut(&mut self) -> Vec<&mut ExactState>;
+}
+
+impl BoundaryError for ExactState {
+    fn bc_error(&self) -> f64 {
+        self.bc_error
+    }
+    fn states_mut(&mut self) -> Vec<&mut ExactState> {
+        vec![self]
+    }
+}
+
+impl BoundaryError for (ExactState, Vec<branch::Event>) {
+    fn bc_error(&self) -> f64 {
+        self.0.bc_error
+    }
+    fn states_mut(&mut self) -> Vec<&mut ExactState> {
+        let mut all = vec![&mut self.0];
+        all.extend(self.1.iter_mut().filter_map(|e| e.state_mut()));
+        all
+    }
+}
+
+/// `solve` at `rho` with the truncations of `tries` in turn until one
+/// converges the answer: its boundary error (max |∂p̄/∂ν − 1| on the
+/// independent fine grid) at most [`CONVERGED`]. Only such an answer is
+/// accepted from an escalation; where none converges the answer is an
+/// [`Error::Unresolved`] naming the smallest boundary error reached and
+/// with how many modes. A single truncation (a user's choice of modes)
+/// gives its answer when it is resolved (≤ [`RESOLVED`]), with its
+/// boundary error for the reader to judge. More modes help only a contour
+/// that is nearly resolved: a boundary error above 1e-2 means the trace
+/// left the near-elliptical family, and stops the escalation (as does any
+/// other error).
+///
+/// Once two truncations have been tried, the boundary error is
+/// extrapolated geometrically in the number of modes from the last two
+/// (it falls spectrally, [`next_try`]), and the truncations predicted not
+/// to converge are skipped. The intermediate answers are solved without
+/// their stability; the accepted answer's is computed once, with its own
+/// truncation.
+pub(crate) fn resolved<T: BoundaryError>(
+    rho: f64,
+    tries: &[Truncation],
+    solve: impl Fn(&Exact) -> Result<T>,
+) -> Result<T> {
+    let mut best: Option<(T, Exact)> = None;
+    let mut last = None;
+    let mut seen: Vec<(usize, f64)> = Vec::new();
+    let with_stability = |(mut v, ex): (T, Exact)| {
+        for st in v.states_mut() {
+            st.stability = ex.stability(st)?;
+        }
+        Ok(v)
+    };
+    // where no truncation converges: a single truncation's resolved
+    // answer, else an error that says how far the escalation got
+    let or_best = |best: Option<(T, Exact)>, e: Error| match best {
+        Some(b) if tries.len() == 1 => with_stability(b),
+        Some((v, ex)) => Err(not_converged(rho, v.bc_error(), ex.truncation.modes, e)),
+        None => Err(e),
+    };
+    let mut i = 0;
+    while i < tries.len() {
+        let t = tries[i];
+        // (the stability is computed with the same problem: it does not
+        // depend on the deferral, which only [`Exact::state`] reads)
+        let ex = Exact::new(rho, t)?.deferring_stability();
+        match solve(&ex) {
+            Ok(v) if v.bc_error() <= CONVERGED => return with_stability((v, ex)),
+            Ok(v) => {
+                seen.push((t.modes, v.bc_error()));
+                if best
+                    .as_ref()
+                    .is_none_or(|(b, _)| v.bc_error() < b.bc_error())
+                {
+                    best = Some((v, ex));
+                }
+            }
+            Err(e @ Error::Unresolved { residual, .. }) if residual > 1e-2 => {
+                return or_best(best, e)
+            }
+            Err(e @ Error::Unresolved { residual, .. }) => {
+                seen.push((t.modes, residual));
+                last = Some(e);
+            }
+            Err(e) => return or_best(best, e),
+        }
+        i = next_try(tries, i, &seen);
+    }
+    let tried = Error::Unresolved {
+        what: format!(
+            "the most modes tried: {}",
+            tries.last().map_or(0, |t| t.modes)
+        ),
+        residual: f64::NAN,
+    };
+    match best {
+        Some(_) => or_best(best, tried),
+        None => Err(last.unwrap_or(tried)),
+    }
+}
+
+/// The error of an escalation that did not converge: the smallest boundary
+/// error reached, with how many modes, and the last error met.
+fn not_converged(rho: f64, bc_error: f64, modes: usize, last: Error) -> Error {
+    Error::Unresolved {
+        what: format!(
+            "exact answer at rho = {}: max |dp/dnu - 1| on the fine grid fell to {:.1e} with {} modes, not to the {:.0e} required ({})",
+            crate::error::short(rho),
+            bc_error,
+            modes,
+            CONVERGED,
+            last.detail()
+        ),
+        residual: bc_error,
+    }
+}
+
+/// The index in `tries` of the truncation to try after the `i`-th, given
+/// the modes and boundary errors `seen` so far: the first whose boundary
+/// error, extrapolated from the last two seen as e₂·r^(N₂ − N) (r from
+/// e₁ = e₂·r^(N₂ − N₁)), is below [`CONVERGED`]/4, or the last; simply
+/// the next where fewer than two are seen or the error did not fall. An
+/// extrapolation that is too hopeful costs one more rung, from which it
+/// is made again.
+pub(crate) fn next_try(tries: &[Truncation], i: usize, seen: &[(usize, f64)]) -> usize {
+    let [.., (n1, e1), (n2, e2)] = seen else {
+        return i + 1;
+    };
+    if !(e2 < e1 && n2 > n1 && *e2 > 0.0) {
+        return i + 1;
+    }
+    let log_rate = (e1 / e2).ln() / (n2 - n1) as f64;
+    let predicted = |t: &Truncation| e2 * (-log_rate * (t.modes as f64 - *n2 as f64)).exp();
+    (i + 1..tries.len())
+        .find(|&k| predicted(&tries[k]) <= CONVERGED / 4.0)
+        .unwrap_or(tries.len().saturating_sub(1))
+        .max(i + 1)
+}
+
+/// The contour modes of the default escalation ([`default_tries`]).
+pub(crate) const ESCALATION: [usize; 12] = [12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96];
+
+/// The most contour modes a user may ask for (the command line's
+/// `--modes`, the Python package's `modes`): the last rung of the default
+/// escalation.
+pub const MAX_USER_MODES: usize = ESCALATION[ESCALATION.len() - 1];
+
+/// The default escalation: 12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80
+/// and 96 contour modes (of which [`resolved`] skips those predicted not to
+/// converge), each with [`POINTS_PER_MODE`] quadrature points per mode.
+pub fn default_tries() -> Vec<Truncation> {
+    ESCALATION
+        .iter()
+        .map(|&modes| Truncation::with_modes(modes))
+        .collect()
+}
+
+/// Quadrature points per contour mode in the default truncations. The
+/// contour's highest harmonic with N modes is e^{−(2N−1)iθ}, so 8N points
+/// sample it four times per period. Measured against 16 points per mode
+/// (the former default) for the pull-off, zero force and F̄ = 10 at
+
+/// The load-controlled pull-off at `rho` with the default escalation of
+/// truncations ([`resolved`], [`default_tries`]); where no start finds it,
+/// continued in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
+/// that is found ([`pull_off_continued_in_rho`]).
+pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
+    match pull_off_with(rho, &default_tries()) {
+        Err(Error::NoState(why)) => first_above(rho, |r| pull_off_with(r, &default_tries()))
+            .ok_or_else(|| {
+                Error::NoState(
+                    "no pull-off found at any rho above it in steps of 0.1 to continue from".into(),
+                )
+            })
+            .and_then(|(start, _)| pull_off_continued_in_rho(&start, rho))
+            .map_err(|more| Error::NoState(format!("{why}; {}", more.detail()))),
+        other => other,
+    }
+}
+
+/// The pull-off at `rho`, continued in ρ from `start`, the converged
+/// pull-off at a larger ρ: at each step (at most 0.01 in ρ, halved where it
+/// fails, down to 0.0025) the family is traced from just above the pull-off
+/// before ([`Exact::pull_off_load_near`]) with the truncations escalated
+/// ([`resolved`]). The answer only where it converges; else an error that
+/// says down to which ρ the pull-off was followed, and how it stopped.
+pub fn pull_off_continued_in_rho(
+    start: &ExactState,
+    rho: f64,
+) -> Result<(ExactState, Vec<branch::Event>)> {
+    let mut at = (start.clone(), Vec::new());
+    let mut step: f64 = 0.01;
+    while at.0.rho > rho {
+        let next = (at.0.rho - step).max(rho);
+        let before = &at.0;
+        match resolved(next, &default_tries(), |ex| {
+            ex.pull_off_load_near(None, Some(before))
+        }) {
+            Ok(found) => {
+                at = found;
+                step = (step * 1.5).min(0.01);
+            }
+            Err(_) if step > 0.0025 => step *= 0.5,
+            Err(e) => {
+                return Err(Error::NoState(format!(
+                    "the pull-off continued in rho from rho = {} converges (boundary error below {:.0e}) down to rho = {} only (its contour {:.1e} a off the ellipse there); at rho = {}: {}",
+                    crate::error::short(start.rho),
+                    CONVERGED,
+                    crate::error::rounded(at.0.rho),
+                    at.0.deviation_from_ellipse,
+                    crate::error::rounded(next),
+                    e.to_string().chars().take(200).collect::<String>()
+                )))
+            }
+        }
+    }
+    at.0.route = Route::ContinuedInRho;
+    Ok(at)
+}
+
+/// [`pull_off_resolved`] with the truncations `tries`.
+pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<branch::Event>)> {
+    // the model's pull-off once; each truncation after the first starts
+    // just above the pull-off the one before found (resolved or not)
+    let model = branch::model_pull_off(rho);
+    let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
+    resolved(rho, tries, |ex| {
+        let found = ex.pull_off_found(model.as_ref(), coarser.borrow().as_ref())?;
+        *coarser.borrow_mut() = Some(found.0.clone());
+        ex.accept_resolved_pull_off(found)
+    })
+}
+
+/// The exact state at `control` with the default escalation of
+/// truncations ([`at_searched`] with [`default_tries`]); where none is
+/// found, and the control lies in no band of the near-elliptic family,
+/// continued in ρ at the control from the state at a larger ρ
+/// ([`continued_in_rho`]).
+pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
+    by_delta_or_force(control)?;
+    match at_searched(rho, control, &default_tries()) {
+        // not reached, and not in a band: from the state at a larger ρ
+        // (a value in a band, Error::InBand, is answered as it is)
+        Err(Error::NoState(why)) => from_larger_rho(rho, control)
+            .map_err(|more| Error::NoState(format!("{why}; {}", more.detail()))),
+        other => other,
+    }
+}
+
+/// The exact state at `control` with the truncations `tries`: by every
+/// route of [`at_with`], and where these find nothing, on the arms beside
+/// a band of the family traced past their folds; where there is none
+/// there either, and the control lies in a band, the error says so
+/// ([`bands::past_folds_or_band`]).
+pub fn at_searched(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
+    by_delta_or_force(control)?;
+    at_with(rho, control, tries).or_else(|e| {
+        bands::past_folds_or_band(rho, control, branch::circle_a_bar(control), tries, e)
+    })
+}
+
+/// The routes to an exact state are asked by δ̄ or F̄, finite: a given ā
+/// is refused (an [`Error::Unavailable`]; the family is traced in
+/// arclength, and [`Exact::solve`] is the state at a given ā from a guess).
+fn by_delta_or_force(control: Hold) -> Result<Hold> {
+    match control {
+        Hold::Size(_) => Err(Error::Unavailable {
+            model: "exact",
+            what: "state at a given contact size".into(),
+            why: "the exact family is traced in arclength; give delta or force",
+        }),
+        _ => control.check_finite(),
+    }
+}
+
+/// The state at `control` at `rho` from the first larger ρ where
+/// [`at_with`] finds it ([`first_above`]), continued in ρ
+/// ([`continued_in_rho`]).
+fn from_larger_rho(rho: f64, control: Hold) -> Result<ExactState> {
+    let start = first_above(rho, |r| at_with(r, control, &default_tries())).ok_or_else(|| {
+        Error::NoState(format!(
+            "no state at {control} found at any rho above it in steps of 0.1 to continue from"
+        ))
+    })?;
+    continued_in_rho(&start, rho, control)
+}
+
+/// The first answer of `solve` at ρ + 0.1, ρ + 0.2, … (below 1): the start
+/// of a continuation in ρ down to `rho`.
+fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
+    (1..)
+        .map(|k| ((rho + 0.1 * k as f64) * 1e6).round() / 1e6)
+        .take_while(|&above| above < 1.0)
+        .find_map(|above| solve(above).ok())
+}
+
+/// The state at `control` at `rho`, continued in ρ at that control from
+/// `start`, a converged state at a larger ρ: Newton with the control held
+/// at each step from the state before (steps of at most 0.01 in ρ, halved
+/// where a step fails, down to 1e-3), the contour modes escalated along
+/// [`default_tries`] wherever a state's boundary error exceeds
+/// [`CONVERGED`]. The answer only where it converges; else an error that
+/// says down to which ρ the family was followed converged, and how it
+/// stopped.
+pub fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactState> {
+    by_delta_or_force(control)?;
+    let tries = default_tries();
+    let mut k = tries
+        .iter()
+        .position(|t| t.modes >= start.truncation.modes)
+        .unwrap_or(tries.len() - 1);
+    let mut st = start.clone();
+    let mut step: f64 = 0.01;
+    let stop = |st: &ExactState, why: String| {
+        Error::NoState(format!(
+            "continued in rho at {control} from its state at rho = {} ({} modes), the family converges (boundary error below {:.0e}) down to rho = {} only: {why}",
+            crate::error::short(start.rho),
+            start.truncation.modes,
+            CONVERGED,
+            crate::error::rounded(st.rho)
+        ))
+    };
+    while st.rho > rho {
+        let next = (st.rho - step).max(rho);
+        let ex = Exact::new(next, tries[k])?.deferring_stability();
+        match ex.solve_at(control, &st.contour, st.delta_bar) {
+            Ok(n) if n.bc_error <= CONVERGED => {
+                st = n;
+                step = (step * 1.5).min(0.01);
+            }
+            Ok(n) if n.bc_error <= 1e-2 && k + 1 < tries.len() => k += 1,
+            _ if step > 1e-3 => step *= 0.5,
+            Ok(n) => {
+                let how = if n.bc_error <= 1e-2 {
+                    "the most tried"
+                } else {
+                    "a contour Newton reaches but the series does not resolve"
+                };
+                return Err(stop(
+                    &st,
+                    format!(
+                        "at rho = {} the boundary error is {:.1e} with {} modes ({how}), and the contour is {:.1e} a off the ellipse",
+                        crate::error::rounded(next),
+                        n.bc_error,
+                        n.truncation.modes,
+                        n.deviation_from_ellipse
+                    ),
+                ))
+            }
+            Err(e) => {
+                return Err(stop(
+                    &st,
+                    format!(
+                        "Newton fails below it with steps in rho down to 1e-3 (the contour is {:.1e} a off the ellipse there; {})",
+                        st.deviation_from_ellipse,
+                        e.to_string().chars().take(120).collect::<String>()
+                    ),
+                ))
+            }
+        }
+    }
+    st.stability = Exact::new(rho, st.truncation)?.stability(&st)?;
+    st.route = Route::ContinuedInRho;
+    Ok(st)
+}
+
+/// The exact state at `control` with the truncations `tries`
+/// ([`resolved`]), each after the first started from the state the one
+/// before found (resolved or not).
+pub(crate) fn at_with(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
+    let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
+    resolved(rho, tries, |ex| {
+        let st = ex.find(control, coarser.borrow().as_ref())?;
+        *coarser.borrow_mut() = Some(st.clone());
+        let at = format!("{control} ({})", st.route);
+        ex.accept_resolved(at, st)
+    })
+}
