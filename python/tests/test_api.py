@@ -189,3 +189,52 @@ def test_physical_units():
                           work_of_adhesion=0.05, force=0.0)
     assert st.a > 0 and st.force == pytest.approx(0.0, abs=1e-12)
     assert abs(st.state.force_bar) < 1e-9 and st.state.model == "max"
+
+
+def test_states_index_iterate_and_export():
+    """States indexes like its arrays, iterates over its points, and gives
+    JSON-ready dicts and a long-format DataFrame: each path holds the same
+    numbers as the arrays and as scalar calls."""
+    rho = np.array([[0.8], [0.5]])
+    S = thinjkr.solve(rho, delta=np.array([-10.0, 1.0, 2.0]))  # δ̄ = −10: no state
+    assert S.shape == (2, 3) and len(S) == 6
+    assert not S.ok[:, 0].any() and S.ok[:, 1:].all()
+    solved = S[S.ok]
+    assert isinstance(solved, thinjkr.States) and solved.shape == (4,)
+    assert np.array_equal(solved.a_bar, S.a_bar[S.ok])
+    one = S[1, 2]
+    assert isinstance(one, thinjkr.State)
+    ref = thinjkr.solve(0.5, delta=2.0)
+    assert close(one.a_bar, ref.a_bar) and close(one.s, ref.s) and one.error == ""
+    assert S[0, 1:].shape == (2,)
+    points = list(S)
+    assert len(points) == 6
+    assert [p.rho for p in points] == [0.8, 0.8, 0.8, 0.5, 0.5, 0.5]
+    assert points[0].error_kind != "" and math.isnan(points[0].a_bar)
+    assert close(points[4].a_bar, S.a_bar[1, 1])
+    # JSON-ready: the dicts survive json.dumps and read back to the same numbers
+    d = json.loads(json.dumps(S.to_dict()))
+    assert d["model"] == "max" and d["a_bar"][1][2] == S.a_bar[1, 2]
+    assert json.loads(json.dumps(one.to_dict()))["a_bar"] == one.a_bar
+    html = S._repr_html_()
+    assert "<table>" in html and "4" in html
+    pd = pytest.importorskip("pandas")
+    df = S.to_pandas()
+    assert isinstance(df, pd.DataFrame) and len(df) == 6
+    assert list(df["i0"]) == [0, 0, 0, 1, 1, 1] and list(df["i1"]) == [0, 1, 2, 0, 1, 2]
+    assert df["a_bar"].iloc[5] == S.a_bar[1, 2]
+    assert df["error"].iloc[0] != "" and df["error"].iloc[5] == ""
+
+
+def test_states_and_curves_with_arrays_give_json_ready_dicts():
+    """A state holding arrays (the exact solver's contour) and a curve give
+    dicts json.dumps takes, with the same numbers."""
+    ex = thinjkr.exact.solve(0.8, force=0.0, points=16)
+    assert isinstance(ex.x, np.ndarray)
+    d = json.loads(json.dumps(ex.to_dict()))
+    assert d["x"] == ex.x.tolist() and d["force_bar"] == ex.force_bar
+    cv = thinjkr.curve(0.8, points=20)
+    d = json.loads(json.dumps(cv.to_dict()))
+    assert d["a_bar"] == cv.a_bar.tolist() and len(d["states"]) == len(cv) == 20
+    assert [f["kind"] for f in d["folds"]] == [k for k, _ in cv.folds]
+    assert "Curve" in cv._repr_html_()

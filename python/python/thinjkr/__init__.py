@@ -212,6 +212,23 @@ class Curve:
     def __len__(self) -> int:
         return len(self.states)
 
+    def to_dict(self) -> Dict[str, Any]:
+        """The curve as a plain, JSON-ready dict: its arrays as lists, its
+        states and folds as dicts, and how its arms ended."""
+        arrays = ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "beyond_size_fold", "arm")
+        return {
+            **{k: getattr(self, k).tolist() for k in arrays},
+            "states": [st.to_dict() for st in self.states],
+            "folds": [{"kind": kind, "state": st.to_dict()} for kind, st in self.folds],
+            "end": self.end,
+        }
+
+    def _repr_html_(self) -> str:
+        from html import escape
+
+        folds = ", ".join(f"{kind} at F̄ = {st.force_bar:.6g}" for kind, st in self.folds) or "none"
+        return f"<b>Curve</b>: {len(self.states)} states; folds: {escape(folds)}"
+
     def __repr__(self) -> str:
         return f"Curve({len(self.states)} states, folds: {[k for k, _ in self.folds]})"
 

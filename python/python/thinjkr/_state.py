@@ -1,13 +1,49 @@
-"""States: one (:class:`State`) or many (:class:`States`, numpy arrays)."""
+"""States: one (:class:`State`) or many (:class:`States`, numpy arrays).
+
+Both give JSON-ready dicts (``to_dict``: plain lists, floats, bools and
+strings, so ``json.dumps(x.to_dict())`` works), an HTML table for
+notebooks, and :class:`States` indexes like the arrays it holds
+(``S[S.ok]``, ``S[2:5]``, ``S[i, j]``), iterates over its points in order
+(one :class:`State` each) and gives a long-format pandas DataFrame
+(``to_pandas``; pandas is an optional extra)."""
 
 from __future__ import annotations
 
-from typing import Any, Dict, Iterator
+from typing import Any, Dict, Iterator, Union
 
 import numpy as _np
 
 # the order a person reads a state in
 _FIRST = ("model", "rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar")
+
+
+def _plain(v: Any) -> Any:
+    """v with numpy arrays and scalars as plain Python values (JSON-ready)."""
+    if isinstance(v, State):
+        return v.to_dict()
+    if isinstance(v, _np.ndarray):
+        return v.tolist()
+    if isinstance(v, _np.generic):
+        return v.item()
+    if isinstance(v, dict):
+        return {k: _plain(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    return v
+
+
+def _html(rows) -> str:
+    """An HTML table of (name, value) rows."""
+    from html import escape
+
+    body = "".join(f"<tr><th style='text-align:left'>{escape(str(k))}</th><td>{escape(str(v))}</td></tr>" for k, v in rows)
+    return f"<table>{body}</table>"
+
+
+def _shown(v: Any) -> str:
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    return repr(v)
 
 
 def _same(a, b) -> bool:
@@ -43,8 +79,13 @@ class State:
         return list(self._fields) + ["to_dict"]
 
     def to_dict(self) -> Dict[str, Any]:
-        """The fields as a plain dict (nested states as dicts)."""
-        return {k: (v.to_dict() if isinstance(v, State) else v) for k, v in self._fields.items()}
+        """The fields as a plain, JSON-ready dict (nested states as dicts,
+        arrays as lists)."""
+        return {k: _plain(v) for k, v in self._fields.items()}
+
+    def _repr_html_(self) -> str:
+        shown = [(k, _shown(v)) for k, v in self._fields.items() if not isinstance(v, (list, dict, State, _np.ndarray))]
+        return f"<b>{type(self).__name__}</b>" + _html(shown)
 
     def keys(self) -> Iterator[str]:
         return iter(self._fields)
@@ -81,6 +122,10 @@ class State:
         return f"{type(self).__name__}({', '.join(parts)})"
 
 
+# the arrays of a States, in the order its dict and DataFrame give them
+_ARRAYS = ("rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "error", "error_kind")
+
+
 class States:
     """Many states of one model: numpy arrays of the broadcast shape of the
     inputs (``rho``, ``a_bar``, ``b_bar``, ``s``, ``delta_bar``,
@@ -106,11 +151,55 @@ class States:
         return self.error_kind == ""
 
     def __len__(self) -> int:
+        """The number of points (``size`` of the arrays)."""
         return self.rho.size
 
+    def _arrays(self) -> Dict[str, _np.ndarray]:
+        return {k: getattr(self, k) for k in _ARRAYS}
+
+    def __getitem__(self, key) -> "Union[State, States]":
+        """The points at ``key``, as numpy indexes the arrays (a boolean
+        mask such as ``S.ok``, a slice, an index per axis): a
+        :class:`States` of the selected points, or one :class:`State`
+        where ``key`` selects a single point."""
+        picked = {k: _np.asarray(v)[key] for k, v in self._arrays().items()}
+        if picked["rho"].ndim == 0:
+            return State({"model": self.model, **{k: _plain(v) for k, v in picked.items()}})
+        rest = {k: v for k, v in picked.items() if k not in ("rho", "error", "error_kind")}
+        return States(self.model, picked["rho"], rest, picked["error"], picked["error_kind"])
+
+    def __iter__(self) -> Iterator[State]:
+        """One :class:`State` per point, in the arrays' (C) order."""
+        flat = {k: _np.asarray(v).ravel() for k, v in self._arrays().items()}
+        for i in range(self.rho.size):
+            yield State({"model": self.model, **{k: _plain(v[i]) for k, v in flat.items()}})
+
     def to_dict(self) -> Dict[str, Any]:
-        keys = ("rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "error", "error_kind")
-        return {"model": self.model, **{k: getattr(self, k) for k in keys}}
+        """The arrays as plain, JSON-ready (nested) lists, with the model."""
+        return {"model": self.model, **{k: v.tolist() for k, v in self._arrays().items()}}
+
+    def to_pandas(self):
+        """A pandas DataFrame in long format: one row per point (in the
+        arrays' order), a column per quantity, and for inputs of more than
+        one dimension the point's index along each axis (``i0``, ``i1``, …).
+        pandas is an optional dependency (``pip install thinjkr[pandas]``)."""
+        try:
+            import pandas as pd
+        except ImportError as e:
+            raise ImportError("States.to_pandas needs pandas: pip install pandas (or thinjkr[pandas])") from e
+        columns: Dict[str, Any] = {}
+        if self.rho.ndim > 1:
+            for axis, idx in enumerate(_np.indices(self.rho.shape).reshape(self.rho.ndim, -1)):
+                columns[f"i{axis}"] = idx
+        columns["model"] = [self.model] * self.rho.size
+        for k, v in self._arrays().items():
+            columns[k] = _np.asarray(v).ravel()
+        return pd.DataFrame(columns)
+
+    def _repr_html_(self) -> str:
+        failed = int((~self.ok).sum())
+        rows = [("model", self.model), ("shape", self.shape), ("solved", self.rho.size - failed), ("without a state", failed)]
+        return "<b>States</b>" + _html(rows)
 
     def __repr__(self) -> str:
         failed = int((~self.ok).sum())
