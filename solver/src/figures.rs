@@ -6,9 +6,9 @@
 //!
 //! The figures of the exact solution ([`exact_all`]) are drawn from the
 //! exact pull-offs of the accuracy run (`derive/data/exact_reference.json`,
-//! [`crate::exact::table::Reference`]) beside every model's.
+//! [`crate::accuracy::Reference`]) beside every model's.
 //!
-//! Owns: figure data and rendering. May use: `fold`, `contact`, `curve`, `limits`,
+//! Owns: figure data and rendering. May use: `accuracy`, `fold`, `contact`, `curve`, `limits`,
 //! `exact`, `generated` (the paper's model `max`, whose figures these are),
 //! `model` (every ellipse model beside it), `conformal` (its arms and
 //! convergence), `error`.
@@ -617,7 +617,7 @@ fn render(fig: &Figure) -> Result<String> {
 /// exact pull-off's ā from `reference`.
 pub fn exact_bands(
     bands: &[crate::exact::bands::BandMap],
-    reference: &crate::exact::table::Reference,
+    reference: &crate::accuracy::Reference,
 ) -> Result<(&'static str, String)> {
     // one colour per mode n = 2, 4, …, 16
     let colors = [
@@ -793,16 +793,14 @@ impl Figure {
 /// paper's ellipse at ρ = 0.8, 0.5 and the lowest resolved ρ, and
 /// |∂p̄/∂ν − 1| along the contour at ρ = 0.8 and 0.5 for the paper's model and
 /// the exact solution.
-pub fn exact_all(
-    reference: &crate::exact::table::Reference,
-) -> Result<Vec<(&'static str, String)>> {
+pub fn exact_all(reference: &crate::accuracy::Reference) -> Result<Vec<(&'static str, String)>> {
     exact_figures(reference)?
         .iter()
         .map(|f| Ok((f.file, render(f)?)))
         .collect()
 }
 
-fn exact_figures(reference: &crate::exact::table::Reference) -> Result<Vec<Figure>> {
+fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> {
     use crate::exact::{Exact, ExactState, Truncation};
     let po = &reference.pull_off;
     let entry = |rho: f64| {

@@ -15,6 +15,7 @@
 
 #![deny(missing_docs)]
 
+pub mod accuracy;
 pub mod batch;
 #[cfg(feature = "cli")]
 #[doc(hidden)]

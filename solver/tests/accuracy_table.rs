@@ -2,7 +2,7 @@
 //! tables (pull-off, zero force, F̄ = 10), recomputed here, are the lines
 //! the file holds (the full table takes minutes: `thinjkr accuracy`).
 
-use thinjkr::exact::table::{render_conformal_row, render_row, row, Quantity};
+use thinjkr::accuracy::{render_conformal_row, render_row, row, Quantity};
 
 #[test]
 fn accuracy_table_rows_are_fresh() {
@@ -34,7 +34,7 @@ fn exact_reference_for_the_checker_is_fresh() {
         "/../derive/data/exact_reference.json"
     ))
     .expect("derive/data/exact_reference.json exists");
-    let r: thinjkr::exact::table::Reference = serde_json::from_str(&text).expect("parses");
+    let r: thinjkr::accuracy::Reference = serde_json::from_str(&text).expect("parses");
     let e = r
         .pull_off
         .iter()

@@ -161,7 +161,7 @@ fn the_band_table_in_the_docs_is_the_committed_maps() {
             .expect("the committed band maps exist"),
     )
     .expect("band map lines");
-    let reference: thinjkr::exact::table::Reference = serde_json::from_str(
+    let reference: thinjkr::accuracy::Reference = serde_json::from_str(
         &std::fs::read_to_string(root.join("derive/data/exact_reference.json"))
             .expect("the exact reference exists"),
     )
@@ -171,7 +171,7 @@ fn the_band_table_in_the_docs_is_the_committed_maps() {
         .iter()
         .map(|e| (e.rho, e.a_bar))
         .collect();
-    let table = thinjkr::exact::bands::markdown(&maps, &pull_offs);
+    let table = thinjkr::accuracy::band_markdown(&maps, &pull_offs);
     let doc = std::fs::read_to_string(root.join("docs/exact.md")).expect("docs/exact.md exists");
     assert!(
         table.lines().filter(|l| !l.is_empty()).count() > 30,

@@ -37,7 +37,7 @@ fn exact_figures_are_fresh() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let text = std::fs::read_to_string(root.join("derive/data/exact_reference.json"))
         .expect("the exact reference exists");
-    let reference: thinjkr::exact::table::Reference =
+    let reference: thinjkr::accuracy::Reference =
         serde_json::from_str(&text).expect("the exact reference parses");
     let mut figs = thinjkr::figures::exact_all(&reference).expect("exact figures draw");
     assert_eq!(figs.len(), 4);

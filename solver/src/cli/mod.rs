@@ -7,7 +7,7 @@
 //! example.
 //!
 //! Owns: the verbs, their parsing and printing, the thread pool of a run.
-//! May use: `control`, `crate::registry`, `crate::report`, `crate::units`,
+//! May use: `accuracy`, `control`, `crate::registry`, `crate::report`, `crate::units`,
 //! `crate::contact`, `crate::model`, `crate::conformal`, `crate::exact`,
 //! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
 //! `crate::limits`, `crate::error`, its own modules.
@@ -583,7 +583,7 @@ fn accuracy_command(
         files::check_folder(dir)?;
     }
     let began = std::time::Instant::now();
-    use crate::exact::table::{doubling, reference as reference_of, render, row, Quantity, RHOS};
+    use crate::accuracy::{doubling, reference as reference_of, render, row, Quantity, RHOS};
     use rayon::prelude::*;
     let jobs: Vec<(f64, Quantity)> = RHOS
         .iter()

@@ -44,17 +44,18 @@ pub mod branch;
 pub(crate) mod linear;
 mod resolve;
 pub mod stability;
-pub mod table;
 
 use crate::control::Hold;
 use crate::error::{Error, Result};
 use bie::{solve_dirichlet, solve_dirichlet_symmetric, ContourSamples, Grid};
 use nalgebra::{Complex, DMatrix, DVector};
+#[cfg(feature = "cli")]
+pub(crate) use resolve::ESCALATION;
 pub use resolve::{
     at_resolved, at_searched, continued_in_rho, default_tries, pull_off_continued_in_rho,
     pull_off_resolved, pull_off_with, CONVERGED, MAX_USER_MODES,
 };
-pub(crate) use resolve::{next_try, resolved, ESCALATION, RESOLVED};
+pub(crate) use resolve::{next_try, resolved, RESOLVED};
 use serde::Serialize;
 
 /// The largest cosine mode of ∂p̄/∂ν − 1 accepted at convergence (the

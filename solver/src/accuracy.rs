@@ -1,23 +1,26 @@
-//! The approximate models against the exact solution: the tables of
+//! The approximate models against the exact solution, a room above the
+//! model families (it uses every kind and belongs to none): the tables of
 //! `docs/accuracy.md` (load-controlled pull-off, zero force, F̄ = 10), one
 //! row per ρ, each model's relative errors beside the exact values. An
 //! exact value that is not resolved or not reached is said in words in
 //! its row, never given as a number.
 //!
-//! It also owns the convergence table under doubling (each resolved
+//! It also renders the band maps of docs/exact.md ([`band_markdown`]), and
+//! owns the convergence table under doubling (each resolved
 //! pull-off recomputed with twice the contour modes and quadrature points)
 //! and the reference file the checker reads for `sec6.error.exact`.
 //!
 //! Owns: [`Quantity`], [`Row`], [`row`], [`render`], [`RHOS`],
-//! [`Doubling`], [`doubling`], [`Reference`]. May use: `fold`, `control`, `exact`, `contact`,
+//! [`Doubling`], [`doubling`], [`Reference`], [`band_markdown`]. May use: `fold`, `control`, `exact`, `contact`,
 //! `conformal` (the compared members), `model` (the ellipse models), `error`.
 
 // the accuracy table is rendered by the command line (`thinjkr accuracy`)
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
-use super::{at_resolved, pull_off_resolved, Exact, ExactState, Truncation};
 use crate::conformal::{Conformal, ConformalState};
 use crate::control::Hold;
+use crate::exact::bands::{Band, BandEdge, BandMap, PROBE_STEP};
+use crate::exact::{at_resolved, pull_off_resolved, Exact, ExactState, Truncation};
 use crate::fold::FoldCondition;
 use crate::{Contact, Error, ModelId, State};
 
@@ -182,8 +185,8 @@ pub fn render_row(r: &Row) -> String {
                 _ => format!("δ̄ = {:.6}", e.delta_bar),
             };
             let route = match e.route {
-                super::Route::PastFold => ", past a fold",
-                super::Route::ContinuedInRho => ", continued in ρ",
+                crate::exact::Route::PastFold => ", past a fold",
+                crate::exact::Route::ContinuedInRho => ", continued in ρ",
                 _ => "",
             };
             cells.push(format!(
@@ -252,7 +255,7 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          in the row); a row says where the arm ended, or down to which ρ the continuation converged and why it \
          stopped, when the value is not reached. The contour modes are escalated (",
     );
-    let modes: Vec<String> = super::default_tries()
+    let modes: Vec<String> = crate::exact::default_tries()
         .iter()
         .map(|t| t.modes.to_string())
         .collect();
@@ -268,7 +271,7 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          checker's claim `sec6.error.exact`) and draws docs/figures/exact_*.svg from them; \
          `solver/tests/accuracy_table.rs` recomputes the rows ρ = 1 and ρ = 0.9 and the reference's ρ = 0.8 \
          pull-off, and `tests/tests/figures_fresh.rs` redraws the figures from the reference.\n",
-        super::POINTS_PER_MODE
+        crate::exact::POINTS_PER_MODE
     ));
     let lowest = rows
         .iter()
@@ -429,7 +432,7 @@ pub struct ReferenceState {
     /// δ̄ at pull-off.
     pub delta_bar: f64,
     /// The contour at pull-off.
-    pub contour: super::Contour,
+    pub contour: crate::exact::Contour,
     /// max |∂p̄/∂ν − 1| on the fine grid.
     pub bc_error: f64,
     /// Contour modes used.
@@ -467,4 +470,107 @@ pub(crate) fn reference(doublings: &[Doubling]) -> Reference {
             })
             .collect(),
     }
+}
+
+/// The band maps as docs/exact.md prints them: a table of the bands (ā
+/// interval with the mode at each edge, F̄, δ̄, truncation and boundary
+/// error at the edges), then per ρ the model's gaps the exact family
+/// crosses or could not settle, the open ends of the screen, and where the
+/// exact pull-off (`pull_offs`: (ρ, ā)) lies against the band nearest it.
+pub fn band_markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
+    let mode = |e: &BandEdge| e.mode.map_or("?".to_string(), |n| format!("cos {n}θ"));
+    let mut o = String::from(
+        "| ρ | band in ā (mode at lower / upper edge) | F̄ at the edges | δ̄ at the edges | N, bc at the edges |\n|---|---|---|---|---|\n",
+    );
+    for m in maps {
+        for b in &m.bands {
+            let (l, u) = (&b.lower, &b.upper);
+            o.push_str(&format!(
+                "| {} | {:.4} < ā < {:.4} ({} / {}) | {:.4}, {:.4} | {:.4}, {:.4} | {}, {:.0e}; {}, {:.0e} |\n",
+                m.rho,
+                l.a_bar,
+                u.a_bar,
+                mode(l),
+                mode(u),
+                l.force_bar,
+                u.force_bar,
+                l.delta_bar,
+                u.delta_bar,
+                l.modes,
+                l.bc_error,
+                u.modes,
+                u.bc_error
+            ));
+        }
+    }
+    o.push('\n');
+    for m in maps {
+        let rho = m.rho;
+        for c in &m.crossed {
+            o.push_str(&format!(
+                "- ρ = {rho}: `{}` has no near-elliptic state between ā = {:.2} and {:.2}, but {}.\n",
+                m.screen, c.screened[0], c.screened[1], c.why
+            ));
+        }
+        for c in &m.unsettled {
+            o.push_str(&format!(
+                "- ρ = {rho}: `{}` has no near-elliptic state between ā = {:.2} and {:.2}, not settled: {}.\n",
+                m.screen, c.screened[0], c.screened[1], c.why
+            ));
+        }
+        for e in &m.open_ends {
+            o.push_str(&format!(
+                "- ρ = {rho}: `{}` has no near-elliptic state from ā = {:.2} to {:.2}, at the end of the range screened (not settled).\n",
+                m.screen, e[0], e[1]
+            ));
+        }
+        if !m.probed.is_empty() {
+            let each: Vec<String> = m
+                .probed
+                .iter()
+                .map(|p| match p.outcome.as_str() {
+                    "band" => format!("n = {} (ā = {:.3}): a band", p.n, p.a_bar),
+                    why => format!("n = {} (ā = {:.3}): none, {why}", p.n, p.a_bar),
+                })
+                .collect();
+            o.push_str(&format!(
+                "- ρ = {rho}: the circle's neutral points the screen passed without a gap, probed in steps of {PROBE_STEP}: {}.\n",
+                each.join("; ")
+            ));
+        }
+        let po = pull_offs.iter().find(|(r, _)| *r == rho).map(|&(_, a)| a);
+        let nearest = po.and_then(|a| {
+            m.bands
+                .iter()
+                .min_by(|x, y| {
+                    let d = |b: &Band| (b.lower.a_bar - a).abs().min((b.upper.a_bar - a).abs());
+                    d(x).total_cmp(&d(y))
+                })
+                .map(|b| (a, b))
+        });
+        if let Some((a, b)) = nearest {
+            let place = if a > b.upper.a_bar {
+                format!(
+                    "{:.1e} above the upper edge {:.6}",
+                    a - b.upper.a_bar,
+                    b.upper.a_bar
+                )
+            } else if a < b.lower.a_bar {
+                format!(
+                    "{:.1e} below the lower edge {:.6}",
+                    b.lower.a_bar - a,
+                    b.lower.a_bar
+                )
+            } else {
+                format!(
+                    "inside it ({:.6} < ā < {:.6})",
+                    b.lower.a_bar, b.upper.a_bar
+                )
+            };
+            o.push_str(&format!(
+                "- ρ = {rho}: the exact pull-off's ā, {a:.6}, is {place} of the band nearest it.\n"
+            ));
+        }
+    }
+    o
 }
