@@ -238,3 +238,22 @@ def test_states_and_curves_with_arrays_give_json_ready_dicts():
     assert d["a_bar"] == cv.a_bar.tolist() and len(d["states"]) == len(cv) == 20
     assert [f["kind"] for f in d["folds"]] == [k for k, _ in cv.folds]
     assert "Curve" in cv._repr_html_()
+
+
+@pytest.mark.parametrize("model", ["max", "conformal:2"])
+def test_pull_off_and_zero_force_take_arrays(model):
+    """pull_off and zero_force broadcast over an array of rho like solve:
+    a States of its shape whose points equal the scalar calls, NaN with the
+    reason where a point has none; a model that does not exist raises."""
+    rho = np.array([[0.9, 0.8], [0.5, 2.0]])  # rho = 2 is out of range
+    for call in (thinjkr.pull_off, thinjkr.zero_force):
+        many = call(rho, model=model)
+        assert isinstance(many, thinjkr.States) and many.shape == (2, 2)
+        assert many.ok.tolist() == [[True, True], [True, False]]
+        assert "rho" in many.error[1, 1] and math.isnan(many.force_bar[1, 1])
+        for i in np.ndindex(2, 2):
+            if many.ok[i]:
+                one = call(float(rho[i]), model=model)
+                assert close(many.force_bar[i], one.force_bar) and close(many.s[i], one.s)
+    with pytest.raises(thinjkr.InvalidInput):
+        thinjkr.pull_off(np.array([0.8, 0.9]), model="nosuch")

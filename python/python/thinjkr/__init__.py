@@ -157,17 +157,48 @@ def zero_force(rho, *, model: str = "max") -> State:
     return solve(rho, force=0.0, model=model)
 
 
+def _many(rho: _np.ndarray, model: str, one) -> States:
+    """``one(ρ)`` at every point of ``rho`` as a :class:`States`: a point's
+    error is NaN with its reason; an error in the call itself (a model or
+    control that does not exist) is raised."""
+    keys = ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error")
+    arrays = {k: _np.full(rho.shape, _np.nan) for k in keys}
+    kinds = _np.full(rho.shape, "", dtype=object)
+    msgs = _np.full(rho.shape, "", dtype=object)
+    for i in _np.ndindex(rho.shape):
+        try:
+            st = one(float(rho[i]))
+        except ThinJkrError as e:
+            if e.kind == "usage":
+                raise
+            kinds[i], msgs[i] = e.kind, str(e)
+            continue
+        fields = st.to_dict()
+        fields.setdefault("bc_error", fields.get("bc_defect", _np.nan))
+        for k in keys:
+            arrays[k][i] = fields[k]
+    return States(model=model, rho=rho.copy(), arrays=arrays, error=msgs, error_kind=kinds)
+
+
 class PullOff(State):
     """A pull-off: a :class:`State` with ``control`` ("load" or
     "displacement") and, for the models of the ellipse, ``basis`` (what
     ends the branch there) and ``basis_words``."""
 
 
-def pull_off(rho: float, *, model: str = "max", control: str = "load") -> State:
+def pull_off(rho, *, model: str = "max", control: str = "load"):
     """The pull-off under load control (the minimum of F̄ along the branch,
     the paper's Section 6) or under displacement control (the end of the
-    branch in δ̄)."""
-    d = _json.loads(_call(_thinjkr.pull_off, model, _number("rho", rho), control))
+    branch in δ̄).
+
+    A scalar ``rho`` gives a :class:`PullOff`. An array gives a
+    :class:`States` of that shape (point by point, so that Ctrl-C stops it
+    between points); a point without a pull-off is NaN with its reason in
+    ``States.error``, as in :func:`solve`."""
+    rho = _number("rho", rho)
+    if _np.ndim(rho) > 0:
+        return _many(rho, model, lambda r: pull_off(r, model=model, control=control))
+    d = _json.loads(_call(_thinjkr.pull_off, model, rho, control))
     st = _state_from(d["state"])
     fields = st.to_dict()
     fields["control"] = control
