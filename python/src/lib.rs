@@ -2,7 +2,8 @@
 //! (without its command line) behind a few functions that the pure-Python
 //! package `thinjkr` wraps into its API. Every solve releases the GIL
 //! (`Python::detach`), so Python threads run side by side and a batch
-//! runs on all cores (rayon).
+//! runs on all cores (rayon, on `thinjkr::pool`'s pool: never its global one,
+//! which panics on a RAYON_NUM_THREADS it cannot start).
 //!
 //! Results cross as JSON text of the solver's own serde types (the same
 //! serialisation as the command line's `--json`), or, for batches and
@@ -21,6 +22,34 @@ use thinjkr::control::Hold;
 use thinjkr::fold::FoldCondition;
 use thinjkr::registry::Choice;
 use thinjkr::Error;
+
+/// The extension's thread pool (`thinjkr::pool`: RAYON_NUM_THREADS capped
+/// and fitted to the system, never a panic), built at the first call that
+/// needs it; what building it had to say (a cap applied, a memory limit)
+/// is a Python RuntimeWarning of that call.
+static POOL: std::sync::OnceLock<rayon::ThreadPool> = std::sync::OnceLock::new();
+
+fn pool(py: Python<'_>) -> PyResult<&'static rayon::ThreadPool> {
+    let mut said = Vec::new();
+    let pool = POOL.get_or_init(|| thinjkr::pool::thread_pool(|w| said.push(w)));
+    for w in said {
+        let text = std::ffi::CString::new(format!("thinjkr: {w}"))
+            .map_err(|e| PyException::new_err(e.to_string()))?;
+        PyErr::warn(
+            py,
+            &py.get_type::<pyo3::exceptions::PyRuntimeWarning>(),
+            &text,
+            1,
+        )?;
+    }
+    Ok(pool)
+}
+
+/// `f` without the GIL, on the extension's pool.
+fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> T + Send) -> PyResult<T> {
+    let pool = pool(py)?;
+    Ok(py.detach(|| pool.install(f)))
+}
 
 pyo3::create_exception!(
     _thinjkr,
@@ -123,8 +152,7 @@ fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> Py
     let m = choice(model)?;
     check_control(control)?;
     let control = control.to_string();
-    py.detach(move || solve_one(m, rho, &control, value))
-        .map_err(raw)
+    detached(py, move || solve_one(m, rho, &control, value))?.map_err(raw)
 }
 
 /// Many states on all cores: arrays (a_bar, b_bar, s, delta_bar,
@@ -154,7 +182,7 @@ fn solve_many<'py>(
     // (a_bar, b_bar, s, delta_bar, force_bar, bc_error) or the error
     type Row = Result<[f64; 6], (String, String)>;
     let err = |e: Error| (e.kind().to_string(), e.to_string());
-    let rows: Vec<Row> = py.detach(|| match (m, control.as_str()) {
+    let rows: Vec<Row> = detached(py, || match (m, control.as_str()) {
         // the ellipse models' batch without the layer's wrapping: the array
         // call is held to the Rust batch's speed (python/benchmarks)
         (Choice::Ellipse(id), "delta" | "force") => {
@@ -187,7 +215,7 @@ fn solve_many<'py>(
                 ])
             })
             .collect(),
-    });
+    })?;
     let n = rows.len();
     let names = ["a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"];
     let mut cols = vec![Vec::with_capacity(n); names.len()];
@@ -229,7 +257,7 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
             )))
         }
     };
-    py.detach(move || -> thinjkr::Result<String> {
+    detached(py, move || -> thinjkr::Result<String> {
         let control = if load {
             FoldCondition::Load
         } else {
@@ -244,7 +272,7 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
             }),
             None => serde_json::json!({ "state": p.state }),
         }))
-    })
+    })?
     .map_err(raw)
 }
 
@@ -277,7 +305,7 @@ fn exact(
         }
     };
     let what = what.to_string();
-    py.detach(move || -> thinjkr::Result<String> {
+    detached(py, move || -> thinjkr::Result<String> {
         match what.as_str() {
             "pull_off" => {
                 let (st, _) = match modes {
@@ -303,7 +331,7 @@ fn exact(
                 "what must be delta, force or pull_off (got '{other}')"
             ))),
         }
-    })
+    })?
     .map_err(raw)
 }
 
@@ -345,7 +373,7 @@ fn curve(
     delta_start: f64,
 ) -> PyResult<String> {
     let m = choice(model)?;
-    py.detach(move || -> thinjkr::Result<String> {
+    detached(py, move || -> thinjkr::Result<String> {
         let cv = m.curve(rho, points, delta_start)?;
         Ok(json(&match cv.arms {
             // a contour family's curve also says each state's arm
@@ -355,7 +383,7 @@ fn curve(
             }),
             None => serde_json::json!({ "states": cv.states, "folds": cv.folds }),
         }))
-    })
+    })?
     .map_err(raw)
 }
 
@@ -372,7 +400,7 @@ fn physical(
 ) -> PyResult<String> {
     let cyl: thinjkr::units::Cylinders =
         serde_json::from_str(cylinders_json).map_err(|e| usage(format!("{e}")))?;
-    py.detach(move || -> thinjkr::Result<String> {
+    detached(py, move || -> thinjkr::Result<String> {
         let st = match (delta, force) {
             (Some(d), None) => cyl.at_displacement(d)?,
             (None, Some(f)) => cyl.at_load(f)?,
@@ -380,7 +408,7 @@ fn physical(
             _ => return Err(Error::Usage("give delta or force, not both".into())),
         };
         Ok(json(&st))
-    })
+    })?
     .map_err(raw)
 }
 
@@ -401,13 +429,13 @@ fn _batch_api_seconds(
         ));
     };
     let items = items_of(rho.as_slice()?, value.as_slice()?, control);
-    Ok(py.detach(move || {
+    Ok(detached(py, move || {
         let t = std::time::Instant::now();
         let out = solve_all(&id, &items);
         let secs = t.elapsed().as_secs_f64();
         drop(std::hint::black_box(out));
         secs
-    }))
+    })?)
 }
 
 /// For the benchmark: seconds per call of one solve in Rust (the work of
@@ -425,13 +453,13 @@ fn _scalar_seconds(
     check_control(control)?;
     let control = control.to_string();
     let repeat = repeat.clamp(1, 1_000_000);
-    py.detach(move || {
+    detached(py, move || {
         let t = std::time::Instant::now();
         for _ in 0..repeat {
             std::hint::black_box(solve_one(m, rho, &control, value)).map_err(raw)?;
         }
         Ok(t.elapsed().as_secs_f64() / repeat as f64)
-    })
+    })?
 }
 
 /// The extension module.

@@ -4,6 +4,7 @@ number in its range (no silent rounding, no OverflowError), a bool, a string
 or a masked array is not a number (no silent rho = 1, no dropped mask), and
 an unknown model is named with the models there are."""
 
+import json
 import math
 
 import numpy as np
@@ -72,3 +73,30 @@ def test_a_control_must_be_numbers_too():
     # integers and integer arrays are numbers
     assert thinjkr.solve(1, force=0).rho == 1.0
     assert thinjkr.solve(np.array([1, 1]), force=0).a_bar.shape == (2,)
+
+
+def test_a_rayon_num_threads_beyond_the_cap_is_capped_with_a_warning():
+    """The array calls run on the solver's own pool: RAYON_NUM_THREADS far
+    above what the machine should start is capped (4 per core) with a
+    RuntimeWarning, where rayon's global pool would panic, and the answers
+    are those of a normal run."""
+    import os
+    import subprocess
+    import sys
+
+    code = (
+        "import json, warnings, numpy as np, thinjkr\n"
+        "with warnings.catch_warnings(record=True) as w:\n"
+        "    warnings.simplefilter('always')\n"
+        "    S = thinjkr.solve(np.array([0.8, 0.9]), delta=2.0)\n"
+        "print(json.dumps({'a': S.a_bar.tolist(), 'warnings': [str(x.message) for x in w],\n"
+        "                  'kinds': [x.category.__name__ for x in w]}))\n"
+    )
+    env = {**os.environ, "RAYON_NUM_THREADS": "1000000"}
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    got = json.loads(out.stdout)
+    assert any("RAYON_NUM_THREADS = 1000000 is more than" in m for m in got["warnings"]), got
+    assert "RuntimeWarning" in got["kinds"]
+    normal = thinjkr.solve(np.array([0.8, 0.9]), delta=2.0)
+    assert got["a"] == normal.a_bar.tolist()
