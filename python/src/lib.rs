@@ -155,40 +155,28 @@ fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> Py
     detached(py, move || solve_one(m, rho, &control, value))?.map_err(raw)
 }
 
-/// Many states on all cores: arrays (a_bar, b_bar, s, delta_bar,
-/// force_bar, bc_error) with NaN where a point has no state, and for each
-/// point its error (kind, message) or None.
-#[pyfunction]
-#[allow(clippy::type_complexity)]
-fn solve_many<'py>(
-    py: Python<'py>,
-    model: &str,
-    rho: PyReadonlyArray1<'py, f64>,
+/// (a_bar, b_bar, s, delta_bar, force_bar, bc_error) or the error (kind,
+/// message), one point each.
+type Row = Result<[f64; 6], (String, String)>;
+
+/// Points per chunk of an array call of an ellipse model ([`solve_many`]).
+const ELLIPSE_CHUNK: usize = 16_384;
+
+/// One chunk of [`solve_many`]'s points, in parallel.
+fn chunk_rows(
+    m: Choice,
+    rho: &[f64],
     control: &str,
-    value: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>)> {
-    let m = choice(model)?;
-    check_control(control)?;
-    let rho = rho.as_slice()?.to_vec();
-    let value = value.as_slice()?.to_vec();
-    if rho.len() != value.len() {
-        return Err(usage(format!(
-            "rho and the control have {} and {} points after broadcasting",
-            rho.len(),
-            value.len()
-        )));
-    }
-    let control = control.to_string();
-    // (a_bar, b_bar, s, delta_bar, force_bar, bc_error) or the error
-    type Row = Result<[f64; 6], (String, String)>;
-    let err = |e: Error| (e.kind().to_string(), e.to_string());
-    let rows: Vec<Row> = detached(py, || match (m, control.as_str()) {
+    value: &[f64],
+    err: impl Fn(Error) -> (String, String) + Sync + Send + Copy,
+) -> Vec<Row> {
+    match (m, control) {
         // the ellipse models' batch without the layer's wrapping: the array
         // call is held to the Rust batch's speed (python/benchmarks)
         (Choice::Ellipse(id), "delta" | "force") => {
-            rows_of(&id, &items_of(&rho, &value, &control), err)
+            rows_of(&id, &items_of(rho, value, control), err)
         }
-        (_, "delta" | "force") => rows_of(&m, &items_of(&rho, &value, &control), err),
+        (_, "delta" | "force") => rows_of(&m, &items_of(rho, value, control), err),
         _ => rho
             .par_iter()
             .zip(value.par_iter())
@@ -215,7 +203,50 @@ fn solve_many<'py>(
                 ])
             })
             .collect(),
-    })?;
+    }
+}
+
+/// Many states on all cores: arrays (a_bar, b_bar, s, delta_bar,
+/// force_bar, bc_error) with NaN where a point has no state, and for each
+/// point its error (kind, message) or None.
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn solve_many<'py>(
+    py: Python<'py>,
+    model: &str,
+    rho: PyReadonlyArray1<'py, f64>,
+    control: &str,
+    value: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>)> {
+    let m = choice(model)?;
+    check_control(control)?;
+    let rho = rho.as_slice()?.to_vec();
+    let value = value.as_slice()?.to_vec();
+    if rho.len() != value.len() {
+        return Err(usage(format!(
+            "rho and the control have {} and {} points after broadcasting",
+            rho.len(),
+            value.len()
+        )));
+    }
+    let control = control.to_string();
+    let err = |e: Error| (e.kind().to_string(), e.to_string());
+    // in chunks: between them the call takes the GIL back and checks for
+    // signals, so that Ctrl-C raises KeyboardInterrupt within a chunk's
+    // time (no partial result); a chunk of the ellipse models is about
+    // 0.3 s of the energy model on one core, of the others a few points a
+    // thread
+    let chunk = match m {
+        Choice::Ellipse(_) => ELLIPSE_CHUNK,
+        _ => 2 * pool(py)?.current_num_threads(),
+    };
+    let mut rows: Vec<Row> = Vec::with_capacity(rho.len());
+    for (rho, value) in rho.chunks(chunk).zip(value.chunks(chunk)) {
+        py.check_signals()?;
+        rows.extend(detached(py, || chunk_rows(m, rho, &control, value, err))?);
+    }
+    py.check_signals()?;
+
     let n = rows.len();
     let names = ["a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"];
     let mut cols = vec![Vec::with_capacity(n); names.len()];

@@ -100,3 +100,43 @@ def test_a_rayon_num_threads_beyond_the_cap_is_capped_with_a_warning():
     assert "RuntimeWarning" in got["kinds"]
     normal = thinjkr.solve(np.array([0.8, 0.9]), delta=2.0)
     assert got["a"] == normal.a_bar.tolist()
+
+
+def test_ctrl_c_interrupts_a_long_array_call_and_the_next_call_works():
+    """Ctrl-C (SIGINT) one second into an array call that would run for a
+    minute (10 million energy-model states) raises KeyboardInterrupt
+    between chunks, long before the call would end (the child is given 30
+    s in all); no partial result is returned, and the next call answers."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    code = (
+        "import numpy as np, thinjkr\n"
+        "n = 10_000_000\n"
+        "rho, delta = np.full(n, 0.8), np.linspace(0.5, 6.0, n)\n"
+        "thinjkr.solve(0.8, delta=2.0)\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        "    S = thinjkr.solve(rho, delta=delta, model='energy')\n"
+        "    print('finished', flush=True)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True)\n"
+        "print('next', repr(thinjkr.solve(0.8, delta=2.0).a_bar), flush=True)\n"
+    )
+    child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline().strip() == "started"
+        time.sleep(1.0)
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=30)
+    finally:
+        if child.poll() is None:
+            child.kill()
+            child.communicate()
+    assert child.returncode == 0, err
+    lines = out.split("\n")
+    assert lines[0] == "interrupted", out
+    assert lines[1] == "next " + repr(thinjkr.solve(0.8, delta=2.0).a_bar), out
