@@ -2,8 +2,8 @@
 //! (without its command line) behind a few functions that the pure-Python
 //! package `thinjkr` wraps into its API. Every solve releases the GIL
 //! (`Python::detach`), so Python threads run side by side and a batch
-//! runs on all cores (rayon, on `thinjkr::pool`'s pool: never its global one,
-//! which panics on a RAYON_NUM_THREADS it cannot start).
+//! runs on all cores (rayon, on `thinjkr::batch::thread_pool`: never its global
+//! pool, which panics on a RAYON_NUM_THREADS it cannot start).
 //!
 //! Results cross as JSON text of the solver's own serde types (the same
 //! serialisation as the command line's `--json`), or, for batches and
@@ -23,7 +23,7 @@ use thinjkr::fold::FoldCondition;
 use thinjkr::registry::Choice;
 use thinjkr::Error;
 
-/// The extension's thread pool (`thinjkr::pool`: RAYON_NUM_THREADS capped
+/// The extension's thread pool (`thinjkr::batch::thread_pool`: RAYON_NUM_THREADS capped
 /// and fitted to the system, never a panic), built at the first call that
 /// needs it; what building it had to say (a cap applied, a memory limit)
 /// is a Python RuntimeWarning of that call.
@@ -31,7 +31,7 @@ static POOL: std::sync::OnceLock<rayon::ThreadPool> = std::sync::OnceLock::new()
 
 fn pool(py: Python<'_>) -> PyResult<&'static rayon::ThreadPool> {
     let mut said = Vec::new();
-    let pool = POOL.get_or_init(|| thinjkr::pool::thread_pool(|w| said.push(w)));
+    let pool = POOL.get_or_init(|| thinjkr::batch::thread_pool(|w| said.push(w)));
     for w in said {
         let text = std::ffi::CString::new(format!("thinjkr: {w}"))
             .map_err(|e| PyException::new_err(e.to_string()))?;
@@ -418,27 +418,49 @@ fn curve(
     .map_err(raw)
 }
 
-/// A contact in SI units (JSON of `thinjkr::units::Cylinders`) at the
-/// approach `delta` (m) or the force `force` (N), or its pull-off when
-/// both are None: JSON of the physical state.
+/// A contact in SI units (JSON of `thinjkr::units::Cylinders`) answered
+/// by `model` through the model layer (`Choice::physical`, as the command
+/// line's `physical`) at the approach `delta` (m) or the force `force`
+/// (N), or its pull-off when both are None: JSON of the SI values (a, b,
+/// delta, force, h_over_a; p0 for a model of the ellipse), the state and
+/// the warnings.
 #[pyfunction]
-#[pyo3(signature = (cylinders_json, delta=None, force=None))]
+#[pyo3(signature = (cylinders_json, delta=None, force=None, model="max"))]
 fn physical(
     py: Python<'_>,
     cylinders_json: &str,
     delta: Option<f64>,
     force: Option<f64>,
+    model: &str,
 ) -> PyResult<String> {
+    let m = choice(model)?;
     let cyl: thinjkr::units::Cylinders =
         serde_json::from_str(cylinders_json).map_err(|e| usage(format!("{e}")))?;
+    if delta.is_some() && force.is_some() {
+        return Err(raw(Error::Usage("give delta or force, not both".into())));
+    }
     detached(py, move || -> thinjkr::Result<String> {
-        let st = match (delta, force) {
-            (Some(d), None) => cyl.at_displacement(d)?,
-            (None, Some(f)) => cyl.at_load(f)?,
-            (None, None) => cyl.pull_off()?,
-            _ => return Err(Error::Usage("give delta or force, not both".into())),
-        };
-        Ok(json(&st))
+        let answer = m.physical(&cyl, force, delta)?;
+        let si = answer.si;
+        let mut out = serde_json::json!({
+            "a": si.a,
+            "b": si.b,
+            "delta": si.delta,
+            "force": si.force,
+            "h_over_a": si.h_over_a,
+            "state": answer.state,
+            "warnings": answer.warnings,
+        });
+        if let thinjkr::report::AnyState::Ellipse(st) = &answer.state {
+            let p0 = st.p0 * answer.scales.pressure;
+            if !p0.is_finite() {
+                return Err(Error::Usage(
+                    "the result p0 in SI units is not a finite number for these inputs (their magnitudes are at the ends of f64)".into(),
+                ));
+            }
+            out["p0"] = serde_json::json!(p0);
+        }
+        Ok(out.to_string())
     })?
     .map_err(raw)
 }

@@ -185,8 +185,10 @@ def test_a_conformal_curve_has_the_pull_off_on_its_second_arm():
 
 
 def test_physical_units():
-    st = thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6,
-                          work_of_adhesion=0.05, force=0.0)
+    # rho = 1/3 and h/a = 0.19: both warnings of the command line
+    with pytest.warns(thinjkr.ThinJkrWarning):
+        st = thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6,
+                              work_of_adhesion=0.05, force=0.0)
     assert st.a > 0 and st.force == pytest.approx(0.0, abs=1e-12)
     assert abs(st.state.force_bar) < 1e-9 and st.state.model == "max"
 
@@ -257,3 +259,32 @@ def test_pull_off_and_zero_force_take_arrays(model):
                 assert close(many.force_bar[i], one.force_bar) and close(many.s[i], one.s)
     with pytest.raises(thinjkr.InvalidInput):
         thinjkr.pull_off(np.array([0.8, 0.9]), model="nosuch")
+
+
+def test_physical_takes_a_model_and_warns_as_the_command_line(cli):
+    """physical() answers through the model layer with any model, as the
+    command line's physical --model does (the same numbers), and issues the
+    command line's warnings as ThinJkrWarning, which can be made errors."""
+    import warnings
+
+    # theta = 60 degrees: rho = 1/3, below the paper's range, within conformal:K's
+    contact = dict(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6, work_of_adhesion=0.05)
+    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "60", "--h1", "1e-4", "--h2", "1e-4",
+            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    for model in ["max", "energy", "conformal:8"]:
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always")
+            st = thinjkr.physical(**contact, model=model)
+        d = run_json(cli, *args, "--model", model)
+        assert close(st.force, d["si"]["force"]) and close(st.a, d["si"]["a"]), model
+        assert [str(x.message) for x in w if x.category is thinjkr.ThinJkrWarning] == d["warnings"]
+        assert any("below the paper's stated range" in m for m in d["warnings"])
+    # at 30 degrees (rho = 0.072) the two closures differ by tens of per cent
+    steep = {**contact, "theta_deg": 30}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
+        assert not close(thinjkr.physical(**steep).force, thinjkr.physical(**steep, model="energy").force, rel=0.1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", thinjkr.ThinJkrWarning)
+        with pytest.raises(thinjkr.ThinJkrWarning):
+            thinjkr.physical(**contact)

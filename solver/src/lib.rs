@@ -37,7 +37,6 @@ pub mod generated;
 pub mod limits;
 pub mod model;
 pub mod newton;
-pub mod pool;
 pub mod registry;
 pub mod report;
 pub mod units;

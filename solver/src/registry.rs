@@ -13,11 +13,11 @@
 //! exact solver alike, so that the command line and the Python package do
 //! not dispatch over kinds of model themselves to solve.
 //!
-//! Owns: [`Choice`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
+//! Owns: [`Choice`], [`PhysicalAnswer`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
 //! [`Entry`], [`parse`], [`entries`], [`help`]. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
-//! curves), `model`, `control`, `error`.
+//! curves), `model`, `control`, `units` (`physical`), `error`.
 
 use crate::conformal::{families, Conformal};
 use crate::control::Hold;
@@ -138,6 +138,113 @@ pub fn entries() -> Vec<Entry> {
         controls: vec!["delta".into(), "force".into()],
     });
     out
+}
+
+/// A contact in SI units answered by a model (`physical`): the state, its
+/// semi-axes, approach and force in SI units, the scales of (17), and what
+/// every front end warns of (the input outside the paper's stated range,
+/// coatings not thin against the contact); the state is answered still.
+#[derive(Clone, Debug)]
+pub struct PhysicalAnswer {
+    /// The dimensionless state.
+    pub state: crate::report::AnyState,
+    /// Its values in SI units.
+    pub si: crate::units::Si,
+    /// The scales of (17) for this contact.
+    pub scales: crate::units::Scales,
+    /// The warnings, in words.
+    pub warnings: Vec<String>,
+}
+
+impl Choice {
+    /// The model's state for the contact `cyl` at force `force` (N) or
+    /// approach `delta` (m), or its pull-off under load control; a value the
+    /// user typed is refused in the user's units (a force the model never
+    /// reaches: from the pull-off force in newtons).
+    pub fn physical(
+        &self,
+        cyl: &crate::units::Cylinders,
+        force: Option<f64>,
+        delta: Option<f64>,
+    ) -> crate::Result<PhysicalAnswer> {
+        let model = *self;
+        let sc = cyl.scales()?;
+        let force_si = force;
+        // a value the user typed, scaled: refused in the user's units when it
+        // is not finite or its scaled value is not (1e308 N over a millinewton
+        // scale is no number)
+        let scaled = |name: &'static str, v: f64, scale: f64, unit: &str| {
+            let x = v / scale;
+            if v.is_finite() && x.is_finite() {
+                Ok(x)
+            } else {
+                Err(crate::Error::OutOfRange {
+                    name,
+                    value: v,
+                    range: format!(
+                        "finite, with |{name}| at most {} {unit} for this contact",
+                        crate::error::short(f64::MAX * scale)
+                    )
+                    .into(),
+                })
+            }
+        };
+        let force = force
+            .map(|f| scaled("force", f, sc.force, "N"))
+            .transpose()?;
+        let delta = delta
+            .map(|d| scaled("delta", d, sc.approach, "m"))
+            .transpose()?;
+        // a limit the model states in the units (17) is restated in newtons
+        let in_si = |e: crate::Error| -> crate::Error {
+            let (crate::Error::OutOfRange { name: "force", .. }, Some(typed)) = (&e, force_si)
+            else {
+                return e;
+            };
+            match model.pull_off(sc.rho, crate::fold::FoldCondition::Load) {
+                Ok(p) => crate::Error::OutOfRange {
+                    name: "force",
+                    value: typed,
+                    range: format!(
+                        "[{} N, ∞): from the pull-off force of this contact (model {})",
+                        crate::error::short(p.state.size_and_load().3 * sc.force),
+                        model.name()
+                    )
+                    .into(),
+                },
+                Err(_) => e,
+            }
+        };
+        let state = match (force, delta) {
+            (Some(f), _) => model.state(sc.rho, Hold::Force(f)),
+            (_, Some(d)) => model.state(sc.rho, Hold::Delta(d)),
+            _ => model
+                .pull_off(sc.rho, crate::fold::FoldCondition::Load)
+                .map(|p| p.state),
+        }
+        .map_err(in_si)?;
+        let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
+        let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
+        let mut warnings = Vec::new();
+        if sc.rho < 0.8 {
+            warnings.push(format!(
+                "rho = R2/R1 = {} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
+                format!("{:.6}", sc.rho)
+            ));
+        }
+        if si.h_over_a > 0.1 {
+            warnings.push(format!(
+                "h/a = {}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
+                format!("{:.6}", si.h_over_a)
+            ));
+        }
+        Ok(PhysicalAnswer {
+            state,
+            si,
+            scales: sc,
+            warnings,
+        })
+    }
 }
 
 /// A pull-off of any model: the state, the control whose branch it ends,

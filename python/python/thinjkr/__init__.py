@@ -21,6 +21,7 @@ Every call releases the GIL; array calls run on all cores.
 from __future__ import annotations
 
 import json as _json
+import warnings as _warnings
 from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as _np
@@ -34,6 +35,7 @@ from ._errors import (
     Unavailable,
     Unresolved,
     _raise,
+    ThinJkrWarning,
 )
 from ._state import State, States
 
@@ -41,6 +43,7 @@ __all__ = [
     "State",
     "States",
     "ThinJkrError",
+    "ThinJkrWarning",
     "InvalidInput",
     "NoConvergence",
     "NoState",
@@ -291,14 +294,19 @@ def physical(
     work_of_adhesion: float,
     delta: Optional[float] = None,
     force: Optional[float] = None,
+    model: str = "max",
 ) -> State:
-    """A contact in SI units (the command line's ``physical``): cylinder
+    """A contact in SI units (the command line's ``physical``, any model as
+    with ``--model``): cylinder
     radii r1, r2 (m), crossing angle theta_deg (degrees), coating
     thicknesses h1, h2 (m), out-of-plane shear moduli g1, g2 (Pa), work of
     adhesion (J/m²); at approach ``delta`` (m), at ``force`` (N), or the
     pull-off when neither is given. The answer carries the SI values
     (``a``, ``b``, ``delta``, ``force``, ``p0``, ``h_over_a``) and the
-    dimensionless state under ``state``."""
+    dimensionless state under ``state``, and ``warnings``: each one is
+    also issued as a :class:`ThinJkrWarning` (an input outside the paper's
+    stated range, coatings not thin against the contact), the same words
+    as the command line's warnings."""
     cyl = dict(r1=r1, r2=r2, theta_deg=theta_deg, h1=h1, h2=h2, g1=g1, g2=g2,
                work_of_adhesion=work_of_adhesion)
     for k, v in cyl.items():
@@ -309,9 +317,11 @@ def physical(
                                kind="out_of_range")
     d = _json.loads(_call(_thinjkr.physical, _json.dumps(cyl),
                           None if delta is None else float(delta),
-                          None if force is None else float(force)))
+                          None if force is None else float(force), model))
     inner = _state_from(d.pop("state"))
     d["state"] = inner
+    for w in d["warnings"]:
+        _warnings.warn(w, ThinJkrWarning, stacklevel=2)
     return State(d)
 
 

@@ -45,6 +45,13 @@ class IOFailure(ThinJkrError, OSError):
     """Reading or writing failed."""
 
 
+class ThinJkrWarning(UserWarning):
+    """A result the solver answers but doubts (an input outside the model's
+    stated range, coatings not thin against the contact): the same words
+    as the command line's warnings. Silence it or turn it into an error as
+    any warning (``warnings.simplefilter("error", thinjkr.ThinJkrWarning)``)."""
+
+
 _KINDS = {
     "out_of_range": InvalidInput,
     "unsupported": InvalidInput,

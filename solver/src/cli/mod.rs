@@ -7,7 +7,7 @@
 //! example.
 //!
 //! Owns: the verbs, their parsing and printing, the thread pool of a run.
-//! May use: `pool`, `accuracy`, `control`, `crate::registry`, `crate::report`, `crate::units`,
+//! May use: `accuracy`, `control`, `crate::registry`, `crate::report`, `crate::units`,
 //! `crate::contact`, `crate::model`, `crate::conformal`, `crate::exact`,
 //! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
 //! `crate::limits`, `crate::error`, its own modules.
@@ -23,11 +23,11 @@ fn parse_model(s: &str) -> Result<ModelChoice, String> {
     crate::registry::parse(s)
 }
 
-use crate::control::Hold;
 use crate::fold::FoldCondition;
 /// A model of the ellipse, a member of a contour family, or the exact
 /// solution of (2)-(3) (`crate::registry`).
 use crate::registry::Choice as ModelChoice;
+use crate::registry::PhysicalAnswer;
 
 #[macro_use]
 mod output;
@@ -766,75 +766,13 @@ fn physical(
     delta: Option<f64>,
     json: bool,
 ) -> crate::Result<()> {
-    let sc = cyl.scales()?;
-    let force_si = force;
-    // a value the user typed, scaled: refused in the user's units when it
-    // is not finite or its scaled value is not (1e308 N over a millinewton
-    // scale is no number)
-    let scaled = |name: &'static str, v: f64, scale: f64, unit: &str| {
-        let x = v / scale;
-        if v.is_finite() && x.is_finite() {
-            Ok(x)
-        } else {
-            Err(crate::Error::OutOfRange {
-                name,
-                value: v,
-                range: format!(
-                    "finite, with |{name}| at most {} {unit} for this contact",
-                    crate::error::short(f64::MAX * scale)
-                )
-                .into(),
-            })
-        }
-    };
-    let force = force
-        .map(|f| scaled("force", f, sc.force, "N"))
-        .transpose()?;
-    let delta = delta
-        .map(|d| scaled("delta", d, sc.approach, "m"))
-        .transpose()?;
-    // a limit the model states in the units (17) is restated in newtons
-    let in_si = |e: crate::Error| -> crate::Error {
-        let (crate::Error::OutOfRange { name: "force", .. }, Some(typed)) = (&e, force_si) else {
-            return e;
-        };
-        match model.pull_off(sc.rho, crate::fold::FoldCondition::Load) {
-            Ok(p) => crate::Error::OutOfRange {
-                name: "force",
-                value: typed,
-                range: format!(
-                    "[{} N, ∞): from the pull-off force of this contact (model {})",
-                    crate::error::short(p.state.size_and_load().3 * sc.force),
-                    model.name()
-                )
-                .into(),
-            },
-            Err(_) => e,
-        }
-    };
-    let state = match (force, delta) {
-        (Some(f), _) => model.state(sc.rho, Hold::Force(f)),
-        (_, Some(d)) => model.state(sc.rho, Hold::Delta(d)),
-        _ => model
-            .pull_off(sc.rho, crate::fold::FoldCondition::Load)
-            .map(|p| p.state),
-    }
-    .map_err(in_si)?;
+    let PhysicalAnswer {
+        state,
+        si,
+        scales: sc,
+        warnings,
+    } = model.physical(cyl, force, delta)?;
     let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
-    let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
-    let mut warnings = Vec::new();
-    if sc.rho < 0.8 {
-        warnings.push(format!(
-            "rho = R2/R1 = {} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
-            output::num(sc.rho)
-        ));
-    }
-    if si.h_over_a > 0.1 {
-        warnings.push(format!(
-            "h/a = {}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
-            output::num(si.h_over_a)
-        ));
-    }
     for w in &warnings {
         errln!("thinjkr: warning: {w}");
     }
@@ -875,10 +813,10 @@ fn physical(
     Ok(())
 }
 
-/// The run's thread pool ([`crate::pool::thread_pool`]), its warnings
+/// The run's thread pool ([`crate::batch::thread_pool`]), its warnings
 /// on standard error.
 fn thread_pool() -> rayon::ThreadPool {
-    crate::pool::thread_pool(|w| errln!("thinjkr: warning: {w}"))
+    crate::batch::thread_pool(|w| errln!("thinjkr: warning: {w}"))
 }
 
 /// The program: parse the arguments, run the verb on a pool of threads
