@@ -177,7 +177,9 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
             kinds[i], msgs[i] = e.kind, str(e)
             continue
         fields = st.to_dict()
-        fields.setdefault("bc_error", fields.get("bc_defect", _np.nan))
+        # every state carries its boundary error (bc_defect for conformal:K)
+        if "bc_error" not in fields:
+            fields["bc_error"] = fields["bc_defect"]
         for k in keys:
             arrays[k][i] = fields[k]
     return States(model=model, rho=rho.copy(), arrays=arrays, error=msgs, error_kind=kinds)

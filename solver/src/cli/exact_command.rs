@@ -2,7 +2,7 @@
 //! free-boundary problem (2)–(3) at the command line, every approximate
 //! model's answer printed beside it.
 //!
-//! Owns: [`ExactCommand`], the exact printers. May use: `control`, `crate::exact`,
+//! Owns: [`ExactCommand`], the exact printers. May use: `batch` (an ellipse model at a control), `control`, `crate::exact`,
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
 //! state), `crate::report`, `crate::fold`, `crate::error`,
 //! `crate::cli` (`output`).
@@ -527,15 +527,9 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
             let c = Contact::with_model(m, rho);
             (
                 m,
-                c.and_then(|c| match control {
-                    Hold::Delta(d) => c.at_displacement(d),
-                    Hold::Force(f) => c.at_load(f),
-                    Hold::Size(a) => c.at_contact_size(a).and_then(|states| {
-                        states.into_iter().next().ok_or_else(|| {
-                            Error::NoState(format!("no state with a = {}", crate::error::short(a)))
-                        })
-                    }),
-                }),
+                // the ellipse model's state at the control, as a batch
+                // solves it
+                c.and_then(|c| crate::batch::Solves::solve(&m, &c, control)),
             )
         })
         .collect();
