@@ -546,21 +546,22 @@ pub fn registry_outputs(families: &[Family], exact_gap: &[bool]) -> Result<Vec<O
         .iter()
         .zip(exact_gap)
         .map(|(f, &on_exact_gap)| {
-            serde_json::json!({
+            Ok(serde_json::json!({
                 "name": f.name,
                 "kind": f.kind,
                 "title": f.title,
                 "gap": f.gap,
                 "particular": f.particular,
+                "particular_terms": conformal::particular_terms(&f.particular)?,
                 "source": f.source.display().to_string().replace('\\', "/"),
                 "rho_min": f.rho_min,
                 "trace_start_a": f.trace_start_a,
                 "on_exact_gap": on_exact_gap,
-                "seeds_exact": f.seeds_exact && on_exact_gap,
+                "seeds_exact": f.seeds_exact,
                 "tables": format!("{}/tables.json", f.name),
-            })
+            }))
         })
-        .collect();
+        .collect::<Result<_, String>>()?;
     let json = serde_json::to_string_pretty(&serde_json::json!({
         "generated": "by `cargo run -p thinjkr-derive -- generate` from derive/families/*.toml; do not edit",
         "families": entries,
@@ -586,8 +587,16 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
             let module = format_ident!("{}", f.name);
             let rho_min = Literal::f64_unsuffixed(f.rho_min);
             let trace = Literal::f64_unsuffixed(f.trace_start_a);
-            let seeds = f.seeds_exact && on_exact_gap;
-            quote! {
+            let seeds = f.seeds_exact;
+            let terms = conformal::particular_terms(&f.particular)?;
+            let terms = terms.iter().map(|[x, y, mu, dbar, num, den]| {
+                let [x, y, mu, dbar] = [x, y, mu, dbar].map(|v| Literal::u8_unsuffixed(*v as u8));
+                let (num, den) = (Literal::i64_unsuffixed(*num), Literal::i64_unsuffixed(*den));
+                quote! {
+                    crate::exact::gap::Term { x: #x, y: #y, mu: #mu, dbar: #dbar, num: #num, den: #den }
+                }
+            });
+            Ok(quote! {
                 crate::conformal::Family {
                     name: #name,
                     kind: #kind,
@@ -600,10 +609,11 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
                     on_exact_gap: #on_exact_gap,
                     seeds_exact: #seeds,
                     members: &super::#module::MEMBERS,
+                    particular_terms: &[#(#terms),*],
                 }
-            }
+            })
         })
-        .collect();
+        .collect::<Result<_, String>>()?;
     let n = Literal::usize_unsuffixed(families.len());
     let file = quote! {
         /// Every contour family, in the order of their data files' names.

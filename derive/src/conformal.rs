@@ -137,6 +137,42 @@ impl Layout {
     }
 }
 
+/// The monomials of a particular solution P(X, Y; μ, δ̄) as the exact
+/// solver reads them (`thinjkr::exact::gap::Term`): `[x, y, mu, dbar, num,
+/// den]` for c·X^x·Y^y·μ^mu·δ̄^dbar with c = num/den, in the polynomial's
+/// order. Refused: powers that are odd in X or Y or above 24, δ̄ above the
+/// first power, and a coefficient that does not fit 64-bit integers.
+pub fn particular_terms(particular: &str) -> Result<Vec<[i64; 6]>, String> {
+    let vars: Vec<PolyVariable> = ["X", "Y", "mu", "dbar"]
+        .iter()
+        .map(|n| PolyVariable::Symbol(symbolica::symbol!(*n)))
+        .collect();
+    let p: Poly = ex(particular)
+        .expand()
+        .to_polynomial(&Q, Some(Arc::new(vars)));
+    let mut out = Vec::new();
+    for (e, c) in terms_of(&p) {
+        if e[0] % 2 == 1 || e[1] % 2 == 1 || e[0] > 24 || e[1] > 24 || e[3] > 1 || e[2] > 24 {
+            return Err(format!(
+                "the particular solution's term X^{} Y^{} mu^{} dbar^{} is not even in X and Y with degree at most 24 and linear in dbar",
+                e[0], e[1], e[2], e[3]
+            ));
+        }
+        let text = c.to_string();
+        let (num, den) = text.split_once('/').unwrap_or((text.as_str(), "1"));
+        let (num, den) = match (num.trim().parse::<i64>(), den.trim().parse::<i64>()) {
+            (Ok(n), Ok(d)) if d > 0 => (n, d),
+            _ => {
+                return Err(format!(
+                    "the coefficient {text} does not fit 64-bit integers"
+                ))
+            }
+        };
+        out.push([e[0] as i64, e[1] as i64, e[2] as i64, e[3] as i64, num, den]);
+    }
+    Ok(out)
+}
+
 /// Build a polynomial from (exponents, coefficient) pairs, like terms added.
 fn from_terms(like: &Poly, terms: impl IntoIterator<Item = (Vec<u16>, Rational)>) -> Poly {
     let mut out = like.zero();

@@ -17,10 +17,13 @@
 // the accuracy table is rendered by the command line (`thinjkr accuracy`)
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
-use crate::conformal::{Conformal, ConformalState};
+use crate::conformal::{Conformal, ConformalState, Family};
 use crate::control::Hold;
 use crate::exact::bands::{Band, BandEdge, BandMap, PROBE_STEP};
-use crate::exact::{at_resolved, pull_off_resolved, Exact, ExactState, Truncation};
+use crate::exact::{
+    at_resolved, at_resolved_on, pull_off_resolved, pull_off_resolved_on, Exact, ExactState, Gap,
+    Truncation,
+};
 use crate::fold::FoldCondition;
 use crate::{Contact, Error, ModelId, State};
 
@@ -65,6 +68,10 @@ pub struct Row {
     /// The states of the compared contour-family members
     /// ([`compared_members`]), by name, or the errors' text.
     pub conformal: Vec<(String, Result<ConformalState, String>)>,
+    /// The family on a gap of its own whose row this is (its members
+    /// against the exact solution of that gap, [`row_on`]); `None` for
+    /// the cylinders' gap.
+    pub family: Option<&'static Family>,
 }
 
 /// The K of every contour family's members the table compares.
@@ -76,6 +83,63 @@ pub(crate) const CONFORMAL_KS: [usize; 4] = [2, 4, 6, 8];
 pub(crate) fn compared_members() -> Vec<Conformal> {
     crate::conformal::members()
         .filter(|m| m.family().on_exact_gap && CONFORMAL_KS.contains(&m.terms()))
+        .collect()
+}
+
+/// The families on a gap of their own (not the cylinders'), each measured
+/// against the exact solution of its gap ([`row_on`]).
+pub(crate) fn own_gap_families() -> Vec<&'static Family> {
+    crate::conformal::families()
+        .iter()
+        .copied()
+        .filter(|f| f.exact_gap() != Gap::CYLINDERS)
+        .collect()
+}
+
+/// The members of `family` a table compares: K in [`CONFORMAL_KS`] and
+/// its largest.
+fn compared_in(family: &Family) -> Vec<Conformal> {
+    let largest = family.members.iter().map(|t| t.terms).max().unwrap_or(0);
+    crate::conformal::members()
+        .filter(|m| std::ptr::eq(m.family(), family))
+        .filter(|m| CONFORMAL_KS.contains(&m.terms()) || m.terms() == largest)
+        .collect()
+}
+
+/// One row of `family` (on a gap of its own): the exact state of its gap
+/// at `rho` and its compared members' states.
+pub(crate) fn row_on(family: &'static Family, rho: f64, quantity: Quantity) -> Row {
+    let gap = family.exact_gap();
+    let exact = match quantity {
+        Quantity::PullOff => pull_off_resolved_on(gap, rho).map(|(s, _)| s),
+        Quantity::ZeroForce => at_resolved_on(gap, rho, Hold::Force(0.0)),
+        Quantity::Force10 => at_resolved_on(gap, rho, Hold::Force(10.0)),
+    };
+    Row {
+        rho,
+        quantity,
+        exact,
+        models: Vec::new(),
+        conformal: member_states(&compared_in(family), rho, quantity),
+        family: Some(family),
+    }
+}
+
+fn member_states(
+    members: &[Conformal],
+    rho: f64,
+    quantity: Quantity,
+) -> Vec<(String, Result<ConformalState, String>)> {
+    members
+        .iter()
+        .map(|m| {
+            let st = match quantity {
+                Quantity::PullOff => m.pull_off(rho, FoldCondition::Load).map(|(s, _)| s),
+                Quantity::ZeroForce => m.zero_force(rho),
+                Quantity::Force10 => m.solve(rho, Hold::Force(10.0)),
+            };
+            (m.name(), st.map_err(|e| e.to_string()))
+        })
         .collect()
 }
 
@@ -97,23 +161,13 @@ pub fn row(rho: f64, quantity: Quantity) -> Row {
             (m, st.map_err(|e| e.to_string()))
         })
         .collect();
-    let conformal = compared_members()
-        .into_iter()
-        .map(|m| {
-            let st = match quantity {
-                Quantity::PullOff => m.pull_off(rho, FoldCondition::Load).map(|(s, _)| s),
-                Quantity::ZeroForce => m.zero_force(rho),
-                Quantity::Force10 => m.solve(rho, Hold::Force(10.0)),
-            };
-            (m.name(), st.map_err(|e| e.to_string()))
-        })
-        .collect();
     Row {
         rho,
         quantity,
         exact,
         models,
-        conformal,
+        conformal: member_states(&compared_members(), rho, quantity),
+        family: None,
     }
 }
 
@@ -298,7 +352,10 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
                 .join(" | "),
             "---|".repeat(2 + names.len())
         ));
-        for r in rows.iter().filter(|r| r.quantity == q) {
+        for r in rows
+            .iter()
+            .filter(|r| r.quantity == q && r.family.is_none())
+        {
             o.push_str(&render_row(r));
             o.push('\n');
         }
@@ -331,10 +388,16 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
                 .join(" | "),
             "---|".repeat(1 + compared.len())
         ));
-        for r in rows.iter().filter(|r| r.quantity == q) {
+        for r in rows
+            .iter()
+            .filter(|r| r.quantity == q && r.family.is_none())
+        {
             o.push_str(&render_conformal_row(r));
             o.push('\n');
         }
+    }
+    for f in own_gap_families() {
+        o.push_str(&render_own_gap(f, rows));
     }
     o.push_str(
         "\n## Convergence under doubling\n\n\
@@ -347,6 +410,60 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
     for d in doublings {
         o.push_str(&render_doubling(d));
         o.push('\n');
+    }
+    o
+}
+
+/// The section of a family on a gap of its own: its compared members
+/// against the exact solution of that gap, one table per quantity, with
+/// the circle's closed form at ρ = 1 where the gap is radial there.
+#[cfg(feature = "cli")]
+fn render_own_gap(f: &'static Family, rows: &[Row]) -> String {
+    let mut o = format!(
+        "\n## The family `{}:K` against the exact solution of its own gap\n\n\
+         `{}:K` ({}, from `{}`) solves the gap φ̄ = `{}` (μ = 1/ρ), not the cylinders' (1); its members are \
+         measured against the exact solution of (2)–(3) with that gap: the same exact solver, given the \
+         gap as data (the particular solution P = `{}`), with the family's largest member as its start. \
+         Relative errors (not per cent) of the first quantity / ā / s.\n",
+        f.name, f.name, f.title, f.source, f.gap, f.particular
+    );
+    if let Ok(circle) = f.exact_gap().at(1.0) {
+        if circle.is_radial() {
+            let (a, force) = crate::exact::branch::circle_pull_off(&circle);
+            o.push_str(&format!(
+                "\nAt ρ = 1 the gap depends on X² + Y² alone, and the exact states are circles: δ̄ = ⟨φ̄⟩ − 2/ā \
+                 (⟨·⟩ the mean over the disk) and F̄ = −πā³/2 + ∫ w(φ̄ − δ̄) dA (exact.md, \"The gap as data\"), \
+                 whose minimum, the load-controlled pull-off, is F̄ = {force:.6} at ā = {a:.6}.\n"
+            ));
+        }
+    }
+    for q in Quantity::ALL {
+        let first = match q {
+            Quantity::PullOff => "F̄",
+            _ => "δ̄",
+        };
+        let mine: Vec<&Row> = rows
+            .iter()
+            .filter(|r| r.quantity == q && r.family.is_some_and(|g| std::ptr::eq(g, f)))
+            .collect();
+        let Some(r0) = mine.first() else { continue };
+        o.push_str(&format!("\n### {} (`{}:K`)\n\n", q.title(), f.name));
+        o.push_str(&format!(
+            "| ρ | exact | {} |\n|{}\n",
+            r0.conformal
+                .iter()
+                .map(|(name, _)| format!("`{name}`: {first} / ā / s"))
+                .collect::<Vec<_>>()
+                .join(" | "),
+            "---|".repeat(2 + r0.conformal.len())
+        ));
+        for r in mine {
+            let exact = render_row(r);
+            let members = render_conformal_row(r);
+            // ρ | exact | and the members' cells after their ρ
+            let tail = members.split_once(" | ").map_or("|", |(_, t)| t);
+            o.push_str(&format!("{} | {tail}\n", exact.trim_end_matches(" |")));
+        }
     }
     o
 }

@@ -135,7 +135,7 @@ fn conformal_arms() -> Result<Vec<Figure>> {
         GREY,
     )];
     for (k, color) in [(2, GREEN), (4, ORANGE), (8, BLUE)] {
-        let m = crate::conformal::exact_seed()
+        let m = crate::conformal::exact_seed(crate::exact::Gap::CYLINDERS)
             .ok_or_else(|| crate::Error::NoState("no contour family seeds the exact solver".into()))
             .and_then(|seed| crate::conformal::Conformal::member(seed.family().name, k))?;
         let cv = m.curve(0.8, 800, 20.0)?;
@@ -900,6 +900,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
             truncation: ex.truncation(),
             stability: Default::default(),
             route: Default::default(),
+            gap: crate::exact::Gap::CYLINDERS,
         };
         let exact: Vec<(f64, f64)> = ex
             .boundary_profile(&st)?
@@ -936,7 +937,8 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         // a member whose pull-off is not reached is left out of the line
         // and named in its label (docs/accuracy.md says why)
         let (mut pts, mut missing) = (Vec::new(), Vec::new());
-        let seed_family = crate::conformal::exact_seed().map(|m| m.family().name);
+        let seed_family =
+            crate::conformal::exact_seed(crate::exact::Gap::CYLINDERS).map(|m| m.family().name);
         for m in crate::conformal::members().filter(|m| Some(m.family().name) == seed_family) {
             match m.pull_off(e.rho, crate::fold::FoldCondition::Load) {
                 Ok((st, _)) => {

@@ -39,7 +39,8 @@ pub fn axisymmetric_critical(model: ModelId) -> Result<(f64, f64, f64)> {
 
 /// The non-adhesive aspect ratio s∞(ρ): for the paper's model the root of
 /// the derived relation ρ = s²(3s² + 1)/(s² + 3), i.e. (29).
-pub fn non_adhesive_s(model: ModelId, rho: f64) -> Result<f64> {
+#[cfg_attr(not(feature = "figures"), allow(dead_code))]
+pub(crate) fn non_adhesive_s(model: ModelId, rho: f64) -> Result<f64> {
     Contact::with_model(model, rho)?.s_infinity()
 }
 

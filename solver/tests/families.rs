@@ -31,6 +31,7 @@ fn folder(tag: &str, name: &str, tables: &str) -> PathBuf {
             "gap": "X^2/2 + mu*Y^2/2", "particular": "X^4/24 + mu*Y^4/24 - dbar*(X^2 + Y^2)/4",
             "source": format!("derive/families/{name}.toml"), "rho_min": 0.3, "trace_start_a": 2.6,
             "on_exact_gap": true, "seeds_exact": false, "tables": format!("{name}/tables.json"),
+            "particular_terms": [[0, 2, 0, 1, -1, 4], [0, 4, 1, 0, 1, 24], [2, 0, 0, 1, -1, 4], [4, 0, 0, 0, 1, 24]],
         }]
     });
     std::fs::write(dir.join("registry.json"), registry.to_string()).unwrap();
@@ -150,4 +151,41 @@ fn a_family_file_the_generator_would_not_write_is_left_out_with_its_reason() {
         "{err}"
     );
     std::fs::remove_dir_all(&empty).unwrap();
+}
+
+/// A family whose particular solution, as the registry gives it for the
+/// exact solver, does not solve ΔP = φ̄ − δ̄ in its δ̄ part (or is missing)
+/// is left out with the reason, before any of it is used.
+#[test]
+fn a_family_with_a_wrong_gap_is_left_out_with_its_reason() {
+    let dir = folder("gap", "badgap", &builtin_tables());
+    let path = dir.join("registry.json");
+    let registry = std::fs::read_to_string(&path).unwrap();
+    for (tag, terms, word) in [
+        (
+            "wrong",
+            "[[0, 2, 0, 1, -1, 4], [0, 4, 1, 0, 1, 24], [2, 0, 0, 1, -1, 2], [4, 0, 0, 0, 1, 24]]",
+            "ΔP1 = −1",
+        ),
+        (
+            "odd",
+            "[[1, 2, 0, 1, -1, 4], [0, 4, 1, 0, 1, 24], [2, 0, 0, 1, -1, 4], [4, 0, 0, 0, 1, 24]]",
+            "not even",
+        ),
+        ("none", "[]", "no terms"),
+    ] {
+        let good =
+            "[[0, 2, 0, 1, -1, 4], [0, 4, 1, 0, 1, 24], [2, 0, 0, 1, -1, 4], [4, 0, 0, 0, 1, 24]]";
+        let bad = registry.replacen(&good.replace(' ', ""), &terms.replace(' ', ""), 1);
+        assert_ne!(bad, registry, "{tag}: the case changes the file");
+        std::fs::write(&path, bad).unwrap();
+        let (ok, out, err) = thinjkr(&dir, &["models"]);
+        assert!(ok, "{tag}: the built-in models still list: {err}");
+        assert!(!out.contains("badgap:"), "{tag}: {out}");
+        assert!(
+            err.contains("family badgap left out") && err.contains(word),
+            "{tag}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -191,7 +191,10 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
                 _ => return Err(Error::Usage("give one of --delta, --force".into())),
             };
             if all {
-                let circle = crate::exact::branch::circle_a_bar(control);
+                let circle = crate::exact::branch::circle_a_bar(
+                    &crate::exact::Gap::CYLINDERS.at(1.0)?,
+                    control,
+                );
                 let to = to.unwrap_or(if circle.is_finite() {
                     (1.2 * circle).max(4.0)
                 } else {

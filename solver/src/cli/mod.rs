@@ -583,12 +583,21 @@ fn accuracy_command(
         files::check_folder(dir)?;
     }
     let began = std::time::Instant::now();
-    use crate::accuracy::{doubling, reference as reference_of, render, row, Quantity, RHOS};
+    use crate::accuracy::{
+        doubling, own_gap_families, reference as reference_of, render, row, row_on, Quantity, RHOS,
+    };
     use rayon::prelude::*;
-    let jobs: Vec<(f64, Quantity)> = RHOS
+    // the cylinders' rows, then those of every family on a gap of its own
+    // (at the ρ of the table it accepts)
+    let mut jobs: Vec<(Option<&'static crate::conformal::Family>, f64, Quantity)> = RHOS
         .iter()
-        .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (r, q)))
+        .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (None, r, q)))
         .collect();
+    for f in own_gap_families() {
+        for &r in RHOS.iter().filter(|&&r| r >= f.rho_min) {
+            jobs.extend(Quantity::ALL.iter().map(|&q| (Some(f), r, q)));
+        }
+    }
     let bar = indicatif::ProgressBar::new(jobs.len() as u64);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {elapsed}")
@@ -596,8 +605,11 @@ fn accuracy_command(
     );
     let rows: Vec<_> = jobs
         .par_iter()
-        .map(|&(r, q)| {
-            let x = row(r, q);
+        .map(|&(f, r, q)| {
+            let x = match f {
+                None => row(r, q),
+                Some(f) => row_on(f, r, q),
+            };
             bar.inc(1);
             x
         })
@@ -605,7 +617,7 @@ fn accuracy_command(
     bar.finish_and_clear();
     let pull_offs: Vec<_> = rows
         .iter()
-        .filter(|r| r.quantity == Quantity::PullOff)
+        .filter(|r| r.quantity == Quantity::PullOff && r.family.is_none())
         .filter_map(|r| r.exact.as_ref().ok())
         .collect();
     let bar = indicatif::ProgressBar::new(pull_offs.len() as u64);

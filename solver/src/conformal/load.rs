@@ -15,10 +15,12 @@
 //! kept ([`super::load_problems`]) for every front end to show.
 //!
 //! Owns: reading `registry.json` and `tables.json`. May use: `conformal`
-//! (`Family`, `Tables`, `poly`'s packing), serde_json.
+//! (`Family`, `Tables`, `poly`'s packing), `exact` (the gap's terms, checked
+//! as the exact solver checks them), serde_json.
 
 use super::poly::{BITS, DBAR_SHIFT, MAX_UNKNOWNS, MU_SHIFT};
 use super::{Family, Tables};
+use crate::exact::gap::Term;
 use serde::Deserialize;
 use std::path::Path;
 
@@ -47,6 +49,9 @@ struct Entry {
     rho_min: f64,
     trace_start_a: f64,
     on_exact_gap: bool,
+    #[serde(default)]
+    seeds_exact: bool,
+    particular_terms: Vec<[i64; 6]>,
     tables: String,
 }
 
@@ -112,7 +117,17 @@ pub(crate) fn load(dir: &Path, compiled: &[Family]) -> (Vec<&'static Family>, Ve
             Ok(f) if out.iter().any(|g: &&Family| g.name == f.name) => {
                 problems.push(format!("{ENV}: family {name} is listed twice"))
             }
-            Ok(f) => out.push(f),
+            Ok(f) => {
+                let seeded = |g: &Family| g.seeds_exact && g.exact_gap() == f.exact_gap();
+                if f.seeds_exact && (compiled.iter().any(seeded) || out.iter().any(|g| seeded(g))) {
+                    // the family already there seeds the exact solver of this gap
+                    let mut g = Family { ..*f };
+                    g.seeds_exact = false;
+                    out.push(Box::leak(Box::new(g)));
+                } else {
+                    out.push(f)
+                }
+            }
             Err(why) => problems.push(format!("{ENV}: family {name} left out: {why}")),
         }
     }
@@ -139,6 +154,7 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     if e.tables.contains("..") || Path::new(&e.tables).is_absolute() {
         return Err(format!("its tables path {:?} leaves the folder", e.tables));
     }
+    let particular_terms = gap_terms(&e.particular_terms)?;
     let path = dir.join(&e.tables);
     let text = read_bounded(&path, MAX_TABLES_BYTES)?;
     let t: TablesFile =
@@ -154,10 +170,48 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
         rho_min: e.rho_min,
         trace_start_a: e.trace_start_a,
         on_exact_gap: e.on_exact_gap,
-        // the built-in family on the exact solver's gap seeds it
-        seeds_exact: false,
+        // whether it seeds the exact solver of its gap: decided by the
+        // caller against the families already there
+        seeds_exact: e.seeds_exact,
         members,
+        particular_terms,
     })))
+}
+
+/// The particular solution's monomials, checked as the exact solver
+/// checks a gap ([`crate::exact::Gap`]: even powers, linear in δ̄, ΔP₁ = −1).
+fn gap_terms(raw: &[[i64; 6]]) -> Result<&'static [Term], String> {
+    if raw.is_empty() || raw.len() > 1000 {
+        return Err("its particular solution has no terms, or more than 1000".into());
+    }
+    let mut terms = Vec::with_capacity(raw.len());
+    for &[x, y, mu, dbar, num, den] in raw {
+        let small = |v: i64| u8::try_from(v).ok().filter(|v| *v <= 24);
+        match (small(x), small(y), small(mu), small(dbar)) {
+            (Some(x), Some(y), Some(mu), Some(dbar)) if den > 0 => terms.push(Term {
+                x,
+                y,
+                mu,
+                dbar,
+                num,
+                den,
+            }),
+            _ => {
+                return Err(format!(
+                    "its particular solution's term {:?} is out of range",
+                    [x, y, mu, dbar, num, den]
+                ))
+            }
+        }
+    }
+    let terms: &'static [Term] = Box::leak(terms.into_boxed_slice());
+    crate::exact::Gap {
+        name: "loaded",
+        particular: terms,
+    }
+    .at(1.0)
+    .map_err(|e| e.to_string())?;
+    Ok(terms)
 }
 
 /// The packed row's fields: each must fit, none above μ's.

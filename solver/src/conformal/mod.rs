@@ -26,7 +26,7 @@
 //! families' solves. May use: `control`, `fold`, `generated::registry` (the families and their
 //! tables), `error`, `equations`, `newton`, `model` (Brent's minimisation),
 //! `curve` (the bound on a curve's points), `batch` (quoting what was
-//! typed), nalgebra.
+//! typed), `exact` (a family's gap as the exact solver reads it), nalgebra.
 
 pub(crate) mod load;
 pub mod poly;
@@ -97,9 +97,20 @@ pub struct Family {
     pub seeds_exact: bool,
     /// Its members, by K.
     pub members: &'static [Tables],
+    /// The particular solution's monomials, as the exact solver reads the
+    /// gap ([`crate::exact::Gap`]).
+    pub particular_terms: &'static [crate::exact::gap::Term],
 }
 
 impl Family {
+    /// The gap its members solve, as data for the exact solver.
+    pub(crate) fn exact_gap(&self) -> crate::exact::Gap {
+        crate::exact::Gap {
+            name: self.name,
+            particular: self.particular_terms,
+        }
+    }
+
     /// "1 ..= 8": the family's K, from its smallest member to its largest.
     pub(crate) fn member_range(&self) -> String {
         let ks = self.members.iter().map(|t| t.terms);
@@ -143,13 +154,13 @@ pub(crate) fn load_problems() -> &'static [String] {
     &registry().problems
 }
 
-/// The largest member of the family that seeds the exact solver (on the
-/// exact solver's gap), if the registry has one.
-pub(crate) fn exact_seed() -> Option<Conformal> {
+/// The largest member of the family that seeds the exact solver of `gap`,
+/// if the registry has one.
+pub(crate) fn exact_seed(gap: crate::exact::Gap) -> Option<Conformal> {
     let (i, f) = families()
         .iter()
         .enumerate()
-        .find(|(_, f)| f.seeds_exact && f.on_exact_gap)?;
+        .find(|(_, f)| f.seeds_exact && f.exact_gap() == gap)?;
     let largest = f.members.iter().map(|t| t.terms).max()?;
     Conformal::in_family(i, largest).ok()
 }

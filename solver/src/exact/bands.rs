@@ -164,6 +164,7 @@ pub struct BandMap {
 /// and the model.
 #[allow(clippy::type_complexity)]
 fn screen(
+    gap: super::Gap,
     rho: f64,
     from: f64,
     to: f64,
@@ -178,8 +179,11 @@ fn screen(
         "at most from + 9.99 (a screen of at most 1000 grid points)",
     )?;
     let count = steps as usize + 1;
-    let model: Conformal = crate::conformal::exact_seed().ok_or_else(|| {
-        Error::NoState("no contour family in the registry seeds the exact solver".into())
+    let model: Conformal = crate::conformal::exact_seed(gap).ok_or_else(|| {
+        Error::NoState(format!(
+            "no contour family in the registry seeds the exact solver of the gap {}",
+            gap.name
+        ))
     })?;
     let grid: Vec<f64> = (0..count).map(|j| from + STEP * j as f64).collect();
     let states = grid
@@ -255,10 +259,11 @@ const BEYOND_GAP: f64 = 0.05;
 
 /// The band map at `rho` for ā in [`from`, `to`] (see the module).
 pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
+    let gap = super::Gap::CYLINDERS;
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
     crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
-    let (model, grid, states) = screen(rho, from, to)?;
+    let (model, grid, states) = screen(gap, rho, from, to)?;
     let mut map = BandMap {
         rho,
         range: [from, to],
@@ -269,14 +274,14 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
         unsettled: Vec::new(),
         open_ends: Vec::new(),
         probed: Vec::new(),
-        curve: curve(rho, &grid, &states),
+        curve: curve(gap, rho, &grid, &states),
     };
-    for gap in gaps(&states) {
-        match gap {
+    for hole in gaps(&states) {
+        match hole {
             Gap::Inside(lo, hi) => {
                 let (left, right) = beside(&states, lo, hi);
                 let screened = [grid[lo], grid[hi]];
-                match settle(rho, &left, &right, STEP) {
+                match settle(gap, rho, &left, &right, STEP) {
                     Ok(Ok(band)) => map.bands.push(band),
                     Ok(Err(why)) => map.crossed.push(Crossed {
                         screened,
@@ -291,7 +296,7 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
             Gap::AtEnd(first, last) => map.open_ends.push([grid[first], grid[last]]),
         }
     }
-    probe_neutral_points(&mut map, &grid, &states)?;
+    probe_neutral_points(gap, &mut map, &grid, &states)?;
     Ok(map)
 }
 
@@ -306,6 +311,7 @@ pub(crate) const PROBE_STEP: f64 = 0.002;
 /// above, in steps of [`PROBE_STEP`], as a gap is settled; two folds that
 /// leave an interval between them are a band.
 fn probe_neutral_points(
+    gap: super::Gap,
     map: &mut BandMap,
     grid: &[f64],
     states: &[Option<ConformalState>],
@@ -319,11 +325,13 @@ fn probe_neutral_points(
         .chain(map.open_ends.iter().copied())
         .collect();
     let mut probes = Vec::new();
-    for (n, a_n, left, right) in unscreened_neutral_points(map.range, grid, states, &found) {
+    for (n, a_n, left, right) in
+        unscreened_neutral_points(&gap.at(1.0)?, map.range, grid, states, &found)
+    {
         let outcome = if left.is_empty() || right.is_empty() {
             "the model has no near-elliptic state beside it".to_string()
         } else {
-            match settle(map.rho, &left, &right, PROBE_STEP) {
+            match settle(gap, map.rho, &left, &right, PROBE_STEP) {
                 Ok(Ok(band)) => {
                     map.bands.push(band);
                     "band".to_string()
@@ -351,6 +359,7 @@ fn probe_neutral_points(
 /// first, consecutive).
 #[allow(clippy::type_complexity)]
 fn unscreened_neutral_points<'a>(
+    circle: &super::gap::GapAt,
     range: [f64; 2],
     grid: &[f64],
     states: &'a [Option<ConformalState>],
@@ -359,7 +368,7 @@ fn unscreened_neutral_points<'a>(
     let [from, to] = range;
     (2..=200)
         .step_by(2)
-        .map(|n| (n, (4.0 * (n as f64 - 1.0)).cbrt()))
+        .map(|n| (n, circle.neutral_point(n)))
         .take_while(|&(_, a_n)| a_n <= to - 0.1)
         .filter(|&(_, a_n)| {
             a_n >= from + 0.1 && !found.iter().any(|w| a_n > w[0] - 0.1 && a_n < w[1] + 0.1)
@@ -390,13 +399,18 @@ fn unscreened_neutral_points<'a>(
 /// from the model's ellipse there (truncations escalated as for every
 /// exact state, [`super::resolved`]), kept when resolved and near the
 /// model's state (s within 5 %).
-fn curve(rho: f64, grid: &[f64], states: &[Option<ConformalState>]) -> Vec<CurvePoint> {
+fn curve(
+    gap: super::Gap,
+    rho: f64,
+    grid: &[f64],
+    states: &[Option<ConformalState>],
+) -> Vec<CurvePoint> {
     grid.par_iter()
         .zip(states)
         .enumerate()
         .map(|(j, (&a_bar, st))| {
             let exact = st.as_ref().filter(|_| j % CURVE_EVERY == 0).and_then(|m| {
-                super::resolved(rho, &super::default_tries(), |ex| {
+                super::resolved(gap, rho, &super::default_tries(), |ex| {
                     ex.solve(
                         m.a_bar,
                         &Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes),
@@ -455,10 +469,11 @@ pub fn states_at(
     to: f64,
     tries: &[super::Truncation],
 ) -> Result<AllStates> {
+    let gap = super::Gap::CYLINDERS;
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
     crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
-    let (_, grid, states) = screen(rho, from, to)?;
+    let (_, grid, states) = screen(gap, rho, from, to)?;
     let value = |m: &ConformalState| control.excess(m.a_bar, m.delta_bar, m.force_bar);
     let brackets: Vec<(&ConformalState, &ConformalState)> = states
         .windows(2)
@@ -473,7 +488,7 @@ pub fn states_at(
         .par_iter()
         .map(|&(l, r)| {
             let start = if value(l).abs() <= value(r).abs() { l } else { r };
-            let found = super::resolved(rho, tries, |ex| {
+            let found = super::resolved(gap, rho, tries, |ex| {
                 ex.solve_at(
                     control,
                     &Contour::ellipse(start.a_bar, start.b_bar, ex.truncation().modes),
@@ -503,7 +518,7 @@ pub fn states_at(
         })
         .collect::<Vec<_>>()
         .par_iter()
-        .map(|(left, right)| past_folds(rho, control, left, right, STEP, tries))
+        .map(|(left, right)| past_folds(gap, rho, control, left, right, STEP, tries))
         .collect();
     let mut out = AllStates {
         range: [from, to],
@@ -564,6 +579,7 @@ pub struct AllStates {
 /// edges, and how far its arms were followed past their folds); otherwise
 /// `err` itself.
 pub(crate) fn past_folds_or_band(
+    gap: super::Gap,
     rho: f64,
     control: crate::control::Hold,
     a_circle: f64,
@@ -582,19 +598,21 @@ pub(crate) fn past_folds_or_band(
             Hold::Size(a) => (a, |s| s.a_bar, |e| e.a_bar, "a"),
         };
     let range = [0.85 * a_circle, 1.15 * a_circle];
-    let Ok((_, grid, states)) = screen(rho, range[0], range[1]) else {
+    let Ok((_, grid, states)) = screen(gap, rho, range[0], range[1]) else {
         return Err(err);
     };
     // the screen's gaps, then the neutral points it passed (narrow bands)
     let mut brackets = Vec::new();
     let mut found = Vec::new();
-    for gap in gaps(&states) {
-        let Gap::Inside(lo, hi) = gap else { continue };
+    for hole in gaps(&states) {
+        let Gap::Inside(lo, hi) = hole else { continue };
         found.push([grid[lo], grid[hi]]);
         let (left, right) = beside(&states, lo, hi);
         brackets.push((left, right, STEP));
     }
-    for (_, _, left, right) in unscreened_neutral_points(range, &grid, &states, &found) {
+    for (_, _, left, right) in
+        unscreened_neutral_points(&gap.at(1.0)?, range, &grid, &states, &found)
+    {
         if !left.is_empty() && !right.is_empty() {
             brackets.push((left, right, PROBE_STEP));
         }
@@ -606,7 +624,7 @@ pub(crate) fn past_folds_or_band(
     let mut past = Vec::new();
     let mut followed = Vec::new();
     for (left, right, step) in &brackets {
-        let found = past_folds(rho, control, left, right, *step, tries);
+        let found = past_folds(gap, rho, control, left, right, *step, tries);
         past.extend(found.states);
         followed.extend(found.followed);
         followed.extend(found.missed.into_iter().map(|(_, why)| why));
@@ -619,7 +637,7 @@ pub(crate) fn past_folds_or_band(
     }
     // none: a band whose edges bracket the value is the reason
     for (left, right, step) in brackets {
-        if let Ok(Ok(band)) = settle(rho, &left, &right, step) {
+        if let Ok(Ok(band)) = settle(gap, rho, &left, &right, step) {
             let (v0, v1) = (of_edge(&band.lower), of_edge(&band.upper));
             if (v0 - target) * (v1 - target) <= 0.0 {
                 let mode = band
@@ -655,6 +673,7 @@ pub(crate) fn past_folds_or_band(
 /// lies where the trace crossed (ā within 0.01, s within 1 %); route
 /// [`super::Route::PastFold`].
 fn past_folds(
+    gap: super::Gap,
     rho: f64,
     control: crate::control::Hold,
     left: &[&ConformalState],
@@ -666,7 +685,7 @@ fn past_folds(
     for (beside, other, direction, which) in
         [(left, right, 1.0, "lower"), (right, left, -1.0, "upper")]
     {
-        let start = super::resolved(rho, tries, |ex| {
+        let start = super::resolved(gap, rho, tries, |ex| {
             beside
                 .iter()
                 .find_map(|m| {
@@ -679,7 +698,7 @@ fn past_folds(
                 .and_then(|(a, st)| ex.accept_resolved(format_args!("a = {a:.2}"), st))
         });
         let crossings = start.and_then(|start| {
-            let ex = Exact::new(rho, start.truncation)?.deferring_stability();
+            let ex = Exact::on(gap, rho, start.truncation)?.deferring_stability();
             let limit = other[0].a_bar + direction * BEYOND_GAP;
             let (found, how) = ex.crossings_past_fold(&start, direction, limit, control, step)?;
             Ok((start.truncation, found, how))
@@ -701,7 +720,7 @@ fn past_folds(
             .position(|t| t.modes >= truncation.modes)
             .unwrap_or(tries.len() - 1);
         for crossing in found {
-            let again = super::resolved(rho, &tries[from..], |ex| {
+            let again = super::resolved(gap, rho, &tries[from..], |ex| {
                 let mut contour = crossing.contour.clone();
                 contour.b.resize(ex.truncation().modes, 0.0);
                 ex.solve_at(control, &contour, crossing.delta_bar)
@@ -774,13 +793,14 @@ impl NoBand {
 /// `left` and `right`, tracing in steps of at most `step`: the band, or why
 /// there is none.
 fn settle(
+    gap: super::Gap,
     rho: f64,
     left: &[&ConformalState],
     right: &[&ConformalState],
     step: f64,
 ) -> Result<std::result::Result<Band, NoBand>> {
-    let lower = fold_from(rho, left, 1.0, right[0].a_bar + BEYOND_GAP, step)?;
-    let upper = fold_from(rho, right, -1.0, left[0].a_bar - BEYOND_GAP, step)?;
+    let lower = fold_from(gap, rho, left, 1.0, right[0].a_bar + BEYOND_GAP, step)?;
+    let upper = fold_from(gap, rho, right, -1.0, left[0].a_bar - BEYOND_GAP, step)?;
     Ok(match (lower, upper) {
         (Some(lower), Some(upper)) if lower.a_bar < upper.a_bar => Ok(Band { lower, upper }),
         (Some(lower), Some(upper)) => Err(NoBand::Overlap {
@@ -806,6 +826,7 @@ fn settle(
 /// which the band table prints with its boundary error, else an
 /// [`Error::Unresolved`]).
 fn fold_from(
+    gap: super::Gap,
     rho: f64,
     beside: &[&ConformalState],
     direction: f64,
@@ -822,7 +843,7 @@ fn fold_from(
         let i = next;
         let t = tries[i];
         next = i + 1;
-        let ex = Exact::new(rho, t)?;
+        let ex = Exact::on(gap, rho, t)?;
         // the first of the model's states beside the gap whose exact
         // neighbour this truncation resolves
         let start = beside.iter().find_map(|m| {

@@ -15,7 +15,8 @@
 //! [`Family`] implementation. May use: `control`, `fold`, `exact`, `continuation`, `error`,
 //! `conformal` (the richest member's state as a start).
 
-use super::{Exact, ExactState, Route};
+use super::gap::GapAt;
+use super::{Exact, ExactState, Gap, Route};
 use crate::continuation::{self, EventKind, Family, Linear, On, Settings, Watch};
 use crate::control::Hold;
 use crate::control::Quantity;
@@ -93,12 +94,13 @@ impl std::fmt::Display for PastFoldEnd {
 }
 
 /// The seeding model's (the largest member of the family that seeds the
-/// exact solver, `conformal:8`) load-controlled pull-off at `rho`, where it
-/// has one: the start of the exact pull-off's trace.
-pub(crate) fn model_pull_off(rho: f64) -> Option<crate::conformal::ConformalState> {
+/// exact solver of `gap`, `conformal:8` for the cylinders') load-controlled
+/// pull-off at `rho`, where it has one: the start of the exact pull-off's
+/// trace.
+pub(crate) fn model_pull_off(gap: Gap, rho: f64) -> Option<crate::conformal::ConformalState> {
     use crate::conformal::Conformal;
     use crate::fold::FoldCondition;
-    let model: Conformal = crate::conformal::exact_seed()?;
+    let model: Conformal = crate::conformal::exact_seed(gap)?;
     model
         .pull_off(rho, FoldCondition::Load)
         .ok()
@@ -185,38 +187,60 @@ pub struct Branch {
     pub events: Vec<Event>,
 }
 
-/// The half-width of the exact circle (ρ = 1) at `control` (22)–(25): for
-/// F̄ the root of π(ā⁶ − 24ā³)/96 = F̄ above the pull-off; NaN below the
-/// circle's pull-off force −3π/2.
-pub(crate) fn circle_a_bar(control: Hold) -> f64 {
+/// The half-width of the exact circle (ρ = 1) of the gap `circle` (at
+/// ρ = 1) at `control` ((22)–(25) for the cylinders): for F̄ the root of
+/// F̄(ā) = F̄ above the circle's pull-off ([`circle_pull_off`]); NaN below
+/// that pull-off's force.
+pub(crate) fn circle_a_bar(circle: &GapAt, control: Hold) -> f64 {
     match control {
-        Hold::Delta(v) => circle_a_bar_at_delta(v),
+        Hold::Delta(v) => increasing_root(|a| circle.circle_delta(a), v, 1e-12),
         Hold::Size(a) => a,
         Hold::Force(v) => {
-            let disc = 144.0 + 96.0 * v / std::f64::consts::PI;
-            if disc.is_nan() || disc < 0.0 {
+            let (a_po, f_po) = circle_pull_off(circle);
+            if v.is_nan() || v < f_po {
                 f64::NAN
             } else {
-                (12.0 + disc.sqrt()).cbrt()
+                increasing_root(|a| circle.circle_force(a), v, a_po)
             }
         }
     }
 }
 
-/// The half-width of the exact circle (ρ = 1) with approach δ̄:
-/// the root of ā²/4 − 2/ā = δ̄ (increasing in ā), by bisection.
-fn circle_a_bar_at_delta(delta_bar: f64) -> f64 {
-    if !delta_bar.is_finite() {
+/// The circle's load-controlled pull-off (ā, F̄) at ρ = 1: the minimum
+/// of F̄(ā) (golden section; for the cylinders ā³ = 12, F̄ = −3π/2).
+pub(crate) fn circle_pull_off(circle: &GapAt) -> (f64, f64) {
+    let f = |a: f64| circle.circle_force(a);
+    // bracket: F̄ falls from ā → 0, then rises
+    let mut hi = 1.0;
+    while hi < 1e6 && f(2.0 * hi) < f(hi) {
+        hi *= 2.0;
+    }
+    let (mut lo, mut hi) = (hi / 2.0_f64.powi(2), 2.0 * hi);
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    for _ in 0..200 {
+        let (c, d) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if f(c) < f(d) {
+            hi = d;
+        } else {
+            lo = c;
+        }
+    }
+    let a = 0.5 * (lo + hi);
+    (a, f(a))
+}
+
+/// The root above `lo` of g(ā) = v, g increasing there, by bisection.
+fn increasing_root(g: impl Fn(f64) -> f64, v: f64, lo: f64) -> f64 {
+    if !v.is_finite() {
         return f64::NAN;
     }
-    let f = |a: f64| a * a / 4.0 - 2.0 / a - delta_bar;
-    let (mut lo, mut hi) = (1e-12, 1.0);
-    while f(hi) < 0.0 {
+    let (mut lo, mut hi) = (lo, lo.max(1e-12) * 2.0 + 1.0);
+    while g(hi) < v && hi < 1e12 {
         hi *= 2.0;
     }
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
-        if f(mid) < 0.0 {
+        if g(mid) < v {
             lo = mid;
         } else {
             hi = mid;
@@ -408,7 +432,7 @@ impl Exact {
     /// state at ā = 2.6 continued in ρ from the circle (2.6 lies between
     /// the circle's neutral points ā³ = 12 and ā³ = 20).
     pub fn pull_off_load(&self) -> Result<(ExactState, Vec<Event>)> {
-        self.pull_off_load_near(model_pull_off(self.rho).as_ref(), None)
+        self.pull_off_load_near(model_pull_off(self.gap(), self.rho).as_ref(), None)
     }
 
     /// [`Exact::pull_off_load`] with the richest model's pull-off given
@@ -439,7 +463,7 @@ impl Exact {
             Some(found) => found,
             None => match model.and_then(|m| self.above_model_pull_off(m)) {
                 Some(st) => (st, Route::AboveModelPullOff),
-                None => (self.from_circle(2.6)?, Route::FromCircle),
+                None => (self.from_circle(self.trace_start())?, Route::FromCircle),
             },
         };
         let branch = self.trace_until(&start, 0.5, 0.05, 200, true)?;
@@ -491,11 +515,22 @@ impl Exact {
         let a = po.a_bar + ABOVE_MODEL_PULL_OFF;
         let scale = a / po.a_bar;
         let ellipse = super::Contour::ellipse(a, po.b_bar * scale, self.truncation.modes);
-        // δ̄ ≈ ā²/4 − 2/ā (the circle's) shifted by the model's offset
-        let circle = |a: f64| a * a / 4.0 - 2.0 / a;
-        let delta = po.delta_bar + circle(a) - circle(po.a_bar);
+        // δ̄ ≈ the circle's (ā²/4 − 2/ā for the cylinders) shifted by the
+        // model's offset
+        let delta = po.delta_bar + self.circle_delta(a) - self.circle_delta(po.a_bar);
         let st = self.solve(a, &ellipse, delta).ok()?;
         (st.bc_error <= 1e-2 && (st.s / po.s - 1.0).abs() <= 0.05).then_some(st)
+    }
+
+    /// ā at which the pull-off's trace from the circle starts: the seeding
+    /// family's `trace_start_a` (2.6 for the cylinders), else halfway
+    /// between the circle's neutral points of modes 4 and 6, where the
+    /// near-elliptic arm that carries the pull-off lies.
+    pub(crate) fn trace_start(&self) -> f64 {
+        if let Some(m) = crate::conformal::exact_seed(self.gap_source) {
+            return m.family().trace_start_a;
+        }
+        0.5 * (self.circle.neutral_point(4) + self.circle.neutral_point(6))
     }
 
     fn trace_until(
@@ -759,7 +794,7 @@ impl Exact {
     fn from_model(&self, control: Hold) -> Option<ExactState> {
         use crate::conformal::Conformal;
         // the seeding family's largest member
-        let model: Conformal = crate::conformal::exact_seed()?;
+        let model: Conformal = crate::conformal::exact_seed(self.gap())?;
         let guess = model.solve(self.rho, control).ok()?;
         let nm = self.truncation.modes;
         let ellipse = super::Contour::ellipse(guess.a_bar, guess.b_bar, nm);
@@ -848,11 +883,12 @@ impl Exact {
                 }
             }
         }
-        let a_circle = circle_a_bar(control);
+        let a_circle = circle_a_bar(self.circle(), control);
         if let (Hold::Force(v), true) = (control, a_circle.is_nan()) {
             return Err(Error::NoState(format!(
-                "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, -3 pi/2, and so below that of every rho",
-                crate::error::rounded(self.rho)
+                "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, {}, and so below that of every rho",
+                crate::error::rounded(self.rho),
+                crate::error::rounded(circle_pull_off(self.circle()).1)
             )));
         }
         if !(a_circle.is_finite() && a_circle > 0.0) {

@@ -48,7 +48,6 @@ impl Exact {
         let nm = self.truncation.modes;
         let nc = nm + 1;
         let nu = nm + 2;
-        let rho = self.rho;
         let grid = &self.grid;
         let n = grid.len();
         let nf = n as f64;
@@ -88,23 +87,17 @@ impl Exact {
             }
             a[(r, r)] += 1.0 - row;
         }
-        // P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4 and its gradient P_X + i P_Y
+        // the gap's particular solution P and its gradient P_X + i P_Y
+        let gap = &self.gap;
         let grad_p: Vec<C> =
             s.z.iter()
                 .map(|z| {
-                    C::new(
-                        z.re.powi(3) / 6.0 - delta * z.re / 2.0,
-                        z.im.powi(3) / (6.0 * rho) - delta * z.im / 2.0,
-                    )
+                    let (px, py) = gap.grad(z.re, z.im, delta);
+                    C::new(px, py)
                 })
                 .collect();
-        let g = DVector::from_iterator(
-            m,
-            reps.iter().map(|&i| {
-                let (x, y) = (s.z[i].re, s.z[i].im);
-                -(x.powi(4) / 24.0 + y.powi(4) / (24.0 * rho) - delta * (x * x + y * y) / 4.0)
-            }),
-        );
+        let g =
+            DVector::from_iterator(m, reps.iter().map(|&i| -gap.p(s.z[i].re, s.z[i].im, delta)));
         let lu = a.lu();
         let mu_red = lu.solve(&g)?;
         if mu_red.iter().any(|v| !v.is_finite()) {
@@ -148,7 +141,7 @@ impl Exact {
             for l in 0..nc {
                 rhs[(r, l)] = -(grad_p[i].conj() * e[(i, l)]).re;
             }
-            rhs[(r, nc)] = s.z[i].norm_sqr() / 4.0;
+            rhs[(r, nc)] = -gap.p_delta(s.z[i].re, s.z[i].im);
         }
         // minus Σ_j Im(δw_ij)(μ_j − μ_i)/n
         let mu_c: Vec<C> = mu.iter().map(|&v| C::new(v, 0.0)).collect();
@@ -171,6 +164,11 @@ impl Exact {
         let w_sum: Vec<C> = (0..m).map(|r| w.row(r).iter().sum()).collect();
         let u = moving_kernel_sums(&reps, &inv, &w, &e, &mult, &psi);
         let mut d_dn_rep = DMatrix::<f64>::zeros(m, nu);
+        // P's second derivatives at the representatives
+        let hess: Vec<_> = reps
+            .iter()
+            .map(|&i| gap.hessian(s.z[i].re, s.z[i].im, delta))
+            .collect();
         for (r, &i) in reps.iter().enumerate() {
             let dz = s.dz[i];
             let (x, y) = (s.z[i].re, s.z[i].im);
@@ -190,12 +188,14 @@ impl Exact {
                 let d_nu =
                     -i_unit * (dz2 / speed[i] - dz * ((dz.conj() * dz2).re / speed[i].powi(3)));
                 let d_grad_p = if l < nc {
+                    let h = &hess[r];
                     C::new(
-                        (x * x / 2.0 - delta / 2.0) * dz1.re,
-                        (y * y / (2.0 * rho) - delta / 2.0) * dz1.im,
+                        h.p_xx * dz1.re + h.p_xy * dz1.im,
+                        h.p_xy * dz1.re + h.p_yy * dz1.im,
                     )
                 } else {
-                    C::new(-x / 2.0, -y / 2.0)
+                    let (gx, gy) = gap.grad_delta(x, y);
+                    C::new(gx, gy)
                 };
                 d_dn_rep[(r, l)] = (d_f_prime * nu_i + f_prime[r] * d_nu).re
                     + (d_grad_p.conj() * nu_i + grad_p[i].conj() * d_nu).re;
@@ -211,15 +211,9 @@ impl Exact {
             let (z, dz) = (s.z[i], s.dz[i]);
             let (x, y) = (z.re, z.im);
             let ww = (x * x + y * y) / 4.0;
-            let c2 = y * y / (8.0 * rho) + y * y / 8.0 - delta / 4.0;
-            let c0 = y * y * (y * y / (2.0 * rho) - delta) / 4.0;
-            let big_w = x.powi(5) / 40.0 + c2 * x.powi(3) / 3.0 + c0 * x;
+            // W = ∫ w(φ̄ − δ̄) dX, ∂W/∂X, ∂W/∂Y, ∂W/∂δ̄
+            let [big_w, w_x, w_y, w_delta] = gap.force_potential(x, y, delta);
             force += (-ww * dn[i] * speed[i] + big_w * dz.im) * h;
-            // ∂W/∂X, ∂W/∂Y, ∂W/∂δ̄
-            let w_x = x.powi(4) / 8.0 + c2 * x * x + c0;
-            let w_y = x.powi(3) / 3.0 * (y / (4.0 * rho) + y / 4.0)
-                + x * (y.powi(3) / rho - delta * y) / 2.0;
-            let w_delta = -x.powi(3) / 12.0 - x * y * y / 4.0;
             for l in 0..nu {
                 let (dz1, dz2) = (dz_of(i, l), ddz_of(i, l));
                 let d_ww = (x * dz1.re + y * dz1.im) / 2.0;
@@ -312,7 +306,7 @@ mod tests {
                 a: u[0],
                 b: u.rows(1, 6).iter().copied().collect(),
             };
-            fields(&c, 0.7, u[7], &ex.grid).unwrap()
+            fields(&c, &ex.gap, u[7], &ex.grid).unwrap()
         };
         let f0 = at(&u);
         assert!((f0.force - lin.force).abs() < 1e-12 * f0.force.abs().max(1.0));

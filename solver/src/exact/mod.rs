@@ -41,6 +41,7 @@
 pub mod bands;
 pub(crate) mod bie;
 pub mod branch;
+pub(crate) mod gap;
 pub(crate) mod linear;
 mod resolve;
 pub mod stability;
@@ -48,6 +49,9 @@ pub mod stability;
 use crate::control::Hold;
 use crate::error::{Error, Result};
 use bie::{solve_dirichlet, solve_dirichlet_symmetric, ContourSamples, Grid};
+pub(crate) use gap::Gap;
+use gap::GapAt;
+pub use gap::Term;
 use nalgebra::{Complex, DMatrix, DVector};
 #[cfg(feature = "cli")]
 pub(crate) use resolve::ESCALATION;
@@ -55,7 +59,7 @@ pub use resolve::{
     at_resolved, at_searched, continued_in_rho, default_tries, pull_off_continued_in_rho,
     pull_off_resolved, pull_off_with, CONVERGED, MAX_USER_MODES,
 };
-pub(crate) use resolve::{next_try, resolved, RESOLVED};
+pub(crate) use resolve::{at_resolved_on, next_try, pull_off_resolved_on, resolved, RESOLVED};
 use serde::Serialize;
 
 /// The largest cosine mode of ∂p̄/∂ν − 1 accepted at convergence (the
@@ -209,15 +213,10 @@ pub(crate) struct Fields {
 
 /// ∂p̄/∂ν and F̄ for the contour `c` (any contour: the boundary condition
 /// (3)₂ is not imposed here).
-pub(crate) fn fields(c: &Contour, rho: f64, delta_bar: f64, grid: &Grid) -> Option<Fields> {
+pub(crate) fn fields(c: &Contour, gap: &GapAt, delta_bar: f64, grid: &Grid) -> Option<Fields> {
     let s = c.samples(grid);
     let n = grid.len();
-    // P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4
-    let p_part = |z: Complex<f64>| {
-        let (x, y) = (z.re, z.im);
-        x.powi(4) / 24.0 + y.powi(4) / (24.0 * rho) - delta_bar * (x * x + y * y) / 4.0
-    };
-    let g: Vec<f64> = s.z.iter().map(|&z| -p_part(z)).collect();
+    let g: Vec<f64> = s.z.iter().map(|&z| -gap.p(z.re, z.im, delta_bar)).collect();
     let d = solve_dirichlet_symmetric(grid, &s, &g)?;
     let h = 2.0 * std::f64::consts::PI / n as f64;
     let mut force = 0.0;
@@ -227,19 +226,12 @@ pub(crate) fn fields(c: &Contour, rho: f64, delta_bar: f64, grid: &Grid) -> Opti
         let (x, y) = (z.re, z.im);
         let speed = dz.norm();
         let (nx, ny) = (dz.im / speed, -dz.re / speed);
-        let grad_p = (
-            x.powi(3) / 6.0 - delta_bar * x / 2.0,
-            y.powi(3) / (6.0 * rho) - delta_bar * y / 2.0,
-        );
+        let grad_p = gap.grad(x, y, delta_bar);
         let dp = d.normal_derivative[i] + grad_p.0 * nx + grad_p.1 * ny;
         dn.push(dp);
-        // F̄ = −∮ w ∂p̄/∂ν ds + ∮ W dY, w = (X² + Y²)/4,
-        // W = ∫ w f dX with f = X²/2 + Y²/(2ρ) − δ̄:
-        // w f = X⁴/8 + X²(Y²/(8ρ) + Y²/8 − δ̄/4) + Y²(Y²/(2ρ) − δ̄)/4
+        // F̄ = −∮ w ∂p̄/∂ν ds + ∮ W dY, w = (X² + Y²)/4, W = ∫ w(φ̄ − δ̄) dX
         let w = (x * x + y * y) / 4.0;
-        let c2 = y * y / (8.0 * rho) + y * y / 8.0 - delta_bar / 4.0;
-        let c0 = y * y * (y * y / (2.0 * rho) - delta_bar) / 4.0;
-        let big_w = x.powi(5) / 40.0 + c2 * x.powi(3) / 3.0 + c0 * x;
+        let big_w = gap.force_potential(x, y, delta_bar)[0];
         force += (-w * dp * speed + big_w * dz.im) * h;
     }
     Some(Fields {
@@ -250,7 +242,7 @@ pub(crate) fn fields(c: &Contour, rho: f64, delta_bar: f64, grid: &Grid) -> Opti
 
 /// The pressure p̄ of a solved contour, evaluated anywhere inside it.
 pub struct Field {
-    rho: f64,
+    gap: GapAt,
     delta_bar: f64,
     samples: ContourSamples,
     /// F at the contour points (its real part is −P there).
@@ -277,9 +269,7 @@ impl Field {
             den += w;
         }
         let q = (num / den).re;
-        let p_part = x.powi(4) / 24.0 + y.powi(4) / (24.0 * self.rho)
-            - self.delta_bar * (x * x + y * y) / 4.0;
-        q + p_part
+        q + self.gap.p(x, y, self.delta_bar)
     }
 }
 
@@ -313,6 +303,11 @@ pub struct ExactState {
     pub stability: stability::ExactStability,
     /// How the state was found (its start).
     pub route: Route,
+    /// The gap of the problem it solves (the cylinders' (1), or a
+    /// family's, [`Gap`]).
+    #[serde(skip)]
+    #[cfg_attr(feature = "schema", schemars(skip))]
+    pub(crate) gap: Gap,
 }
 
 /// How an exact state was found: the start of its Newton iterations.
@@ -365,6 +360,10 @@ impl std::fmt::Display for Route {
 /// The exact problem at one ρ and truncation.
 pub struct Exact {
     rho: f64,
+    /// The gap (data), and its polynomials at ρ and at ρ = 1 (the circle's).
+    gap_source: Gap,
+    gap: GapAt,
+    circle: GapAt,
     truncation: Truncation,
     grid: Grid,
     fine: Grid,
@@ -387,8 +386,13 @@ pub(crate) const MAX_MODES: usize = 2 * MAX_USER_MODES;
 pub(crate) const MAX_POINTS: usize = 2048;
 
 impl Exact {
-    /// The exact problem at `rho` ∈ (0, 1].
+    /// The exact problem at `rho` ∈ (0, 1] on the cylinders' gap (1).
     pub fn new(rho: f64, truncation: Truncation) -> Result<Exact> {
+        Exact::on(Gap::CYLINDERS, rho, truncation)
+    }
+
+    /// The exact problem at `rho` ∈ (0, 1] on `gap`.
+    pub(crate) fn on(gap: Gap, rho: f64, truncation: Truncation) -> Result<Exact> {
         if !(rho > 0.0 && rho <= 1.0) {
             return Err(Error::OutOfRange {
                 name: "rho",
@@ -428,12 +432,31 @@ impl Exact {
             .collect();
         Ok(Exact {
             rho,
+            gap_source: gap,
+            gap: gap.at(rho)?,
+            circle: gap.at(1.0)?,
             truncation,
             grid,
             fine: Grid::with_modes(2 * truncation.points, truncation.modes),
             cos_modes,
             with_stability: true,
         })
+    }
+
+    /// The gap it solves.
+    pub(crate) fn gap(&self) -> Gap {
+        self.gap_source
+    }
+
+    /// The approach of the exact circle of radius ā at ρ = 1 on this gap
+    /// (ā²/4 − 2/ā for the cylinders): the starting guesses' offset.
+    pub(crate) fn circle_delta(&self, a_bar: f64) -> f64 {
+        self.circle.circle_delta(a_bar)
+    }
+
+    /// The circle's polynomials (the gap at ρ = 1).
+    pub(crate) fn circle(&self) -> &GapAt {
+        &self.circle
     }
 
     /// The same problem with the states' stability left empty (computed
@@ -508,7 +531,7 @@ impl Exact {
     /// first quadrant: the boundary condition (3)₂ asks for 1 everywhere.
     #[cfg(feature = "figures")]
     pub(crate) fn boundary_profile(&self, st: &ExactState) -> Result<Vec<(f64, f64)>> {
-        let f = fields(&st.contour, self.rho, st.delta_bar, &self.fine).ok_or_else(|| {
+        let f = fields(&st.contour, &self.gap, st.delta_bar, &self.fine).ok_or_else(|| {
             Error::NoState("exact boundary profile: the fine-grid system is singular".into())
         })?;
         let quarter = std::f64::consts::FRAC_PI_2;
@@ -531,11 +554,11 @@ impl Exact {
     /// shares neither).
     pub fn field(&self, st: &ExactState) -> Result<Field> {
         let samples = st.contour.samples(&self.fine);
-        let p_part = |z: Complex<f64>| {
-            let (x, y) = (z.re, z.im);
-            x.powi(4) / 24.0 + y.powi(4) / (24.0 * self.rho) - st.delta_bar * (x * x + y * y) / 4.0
-        };
-        let g: Vec<f64> = samples.z.iter().map(|&z| -p_part(z)).collect();
+        let g: Vec<f64> = samples
+            .z
+            .iter()
+            .map(|&z| -self.gap.p(z.re, z.im, st.delta_bar))
+            .collect();
         let d = solve_dirichlet(&self.fine, &samples, &g).ok_or_else(|| {
             Error::NoState("exact field: singular boundary integral equation".into())
         })?;
@@ -556,7 +579,7 @@ impl Exact {
             })
             .collect();
         Ok(Field {
-            rho: self.rho,
+            gap: self.gap.clone(),
             delta_bar: st.delta_bar,
             samples,
             boundary,
@@ -572,7 +595,7 @@ impl Exact {
             a: u[0],
             b: u.rows(1, n_modes).iter().copied().collect(),
         };
-        let f = fields(&c, self.rho, u[n_modes + 1], &self.grid)?;
+        let f = fields(&c, &self.gap, u[n_modes + 1], &self.grid)?;
         let mut r = DVector::zeros(n_modes + 2);
         r[0] = match held {
             Hold::Size(a_bar) => c.a_bar() - a_bar,
@@ -651,9 +674,9 @@ impl Exact {
             a: near.contour.a * scale,
             b: near.contour.b.iter().map(|b| b * scale).collect(),
         };
-        // δ̄ ≈ ā²/4 − 2/ā (the circle's) shifted by the neighbour's offset
-        let circle = |a: f64| a * a / 4.0 - 2.0 / a;
-        let delta = near.delta_bar + circle(a_bar) - circle(near.a_bar);
+        // δ̄ ≈ the circle's (ā²/4 − 2/ā for the cylinders) shifted by the
+        // neighbour's offset
+        let delta = near.delta_bar + self.circle_delta(a_bar) - self.circle_delta(near.a_bar);
         self.solve(a_bar, &guess, delta)
     }
 
@@ -662,12 +685,19 @@ impl Exact {
     /// approximate model is used.
     pub fn from_circle(&self, a_bar: f64) -> Result<ExactState> {
         let nm = self.truncation.modes;
-        let circle = Exact::new(1.0, self.truncation)?;
+        if !self.circle.is_radial() {
+            return Err(Error::Unavailable {
+                model: "exact",
+                what: format!("route from the circle on the gap {}", self.gap_source.name),
+                why: "the gap at rho = 1 is not a function of X^2 + Y^2, so no circle solves it",
+            });
+        }
+        let circle = Exact::on(self.gap_source, 1.0, self.truncation)?;
         // the intermediate states need no fine-grid check or stability
         let mut u = circle.newton(
             Hold::Size(a_bar),
             &Contour::ellipse(a_bar, a_bar, nm),
-            a_bar * a_bar / 4.0 - 2.0 / a_bar,
+            self.circle_delta(a_bar),
         )?;
         let contour = |u: &DVector<f64>| Contour {
             a: u[0],
@@ -677,7 +707,7 @@ impl Exact {
         let mut step: f64 = 0.05;
         while rho > self.rho {
             let next = (rho - step).max(self.rho);
-            let ex = Exact::new(next, self.truncation)?;
+            let ex = Exact::on(self.gap_source, next, self.truncation)?;
             match ex.newton(Hold::Size(a_bar), &contour(&u), u[nm + 1]) {
                 Ok(n) => {
                     u = n;
@@ -710,7 +740,7 @@ impl Exact {
             b: u.rows(1, nm).iter().copied().collect(),
         };
         let delta_bar = u[nm + 1];
-        let fine = fields(&contour, self.rho, delta_bar, &self.fine).ok_or_else(|| {
+        let fine = fields(&contour, &self.gap, delta_bar, &self.fine).ok_or_else(|| {
             Error::NoState("exact state: the fine-grid check system is singular".into())
         })?;
         let bc_error = fine
@@ -735,6 +765,7 @@ impl Exact {
                 load: Vec::new(),
             },
             route: Route::FromCircle,
+            gap: self.gap_source,
         };
         if self.with_stability {
             st.stability = self.stability(&st)?;

@@ -10,7 +10,7 @@
 //! [`pull_off_resolved`], [`at_resolved`], [`at_searched`],
 //! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`.
 
-use super::{bands, branch, Exact, ExactState, Route, Truncation};
+use super::{bands, branch, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
 use crate::error::{Error, Result};
 
@@ -74,6 +74,7 @@ impl BoundaryError for (ExactState, Vec<branch::Event>) {
 /// their stability; the accepted answer's is computed once, with its own
 /// truncation.
 pub(crate) fn resolved<T: BoundaryError>(
+    gap: Gap,
     rho: f64,
     tries: &[Truncation],
     solve: impl Fn(&Exact) -> Result<T>,
@@ -99,7 +100,7 @@ pub(crate) fn resolved<T: BoundaryError>(
         let t = tries[i];
         // (the stability is computed with the same problem: it does not
         // depend on the deferral, which only [`Exact::state`] reads)
-        let ex = Exact::new(rho, t)?.deferring_stability();
+        let ex = Exact::on(gap, rho, t)?.deferring_stability();
         match solve(&ex) {
             Ok(v) if v.bc_error() <= CONVERGED => return with_stability((v, ex)),
             Ok(v) => {
@@ -191,18 +192,18 @@ pub fn default_tries() -> Vec<Truncation> {
         .collect()
 }
 
-/// Quadrature points per contour mode in the default truncations. The
-/// contour's highest harmonic with N modes is e^{−(2N−1)iθ}, so 8N points
-/// sample it four times per period. Measured against 16 points per mode
-/// (the former default) for the pull-off, zero force and F̄ = 10 at
-
 /// The load-controlled pull-off at `rho` with the default escalation of
 /// truncations ([`resolved`], [`default_tries`]); where no start finds it,
 /// continued in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
 /// that is found ([`pull_off_continued_in_rho`]).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
-    match pull_off_with(rho, &default_tries()) {
-        Err(Error::NoState(why)) => first_above(rho, |r| pull_off_with(r, &default_tries()))
+    pull_off_resolved_on(Gap::CYLINDERS, rho)
+}
+
+/// [`pull_off_resolved`] on `gap`.
+pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
+    match pull_off_on(gap, rho, &default_tries()) {
+        Err(Error::NoState(why)) => first_above(rho, |r| pull_off_on(gap, r, &default_tries()))
             .ok_or_else(|| {
                 Error::NoState(
                     "no pull-off found at any rho above it in steps of 0.1 to continue from".into(),
@@ -229,7 +230,7 @@ pub fn pull_off_continued_in_rho(
     while at.0.rho > rho {
         let next = (at.0.rho - step).max(rho);
         let before = &at.0;
-        match resolved(next, &default_tries(), |ex| {
+        match resolved(start.gap, next, &default_tries(), |ex| {
             ex.pull_off_load_near(None, Some(before))
         }) {
             Ok(found) => {
@@ -256,11 +257,20 @@ pub fn pull_off_continued_in_rho(
 
 /// [`pull_off_resolved`] with the truncations `tries`.
 pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<branch::Event>)> {
+    pull_off_on(Gap::CYLINDERS, rho, tries)
+}
+
+/// [`pull_off_with`] on `gap`.
+pub(crate) fn pull_off_on(
+    gap: Gap,
+    rho: f64,
+    tries: &[Truncation],
+) -> Result<(ExactState, Vec<branch::Event>)> {
     // the model's pull-off once; each truncation after the first starts
     // just above the pull-off the one before found (resolved or not)
-    let model = branch::model_pull_off(rho);
+    let model = branch::model_pull_off(gap, rho);
     let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
-    resolved(rho, tries, |ex| {
+    resolved(gap, rho, tries, |ex| {
         let found = ex.pull_off_found(model.as_ref(), coarser.borrow().as_ref())?;
         *coarser.borrow_mut() = Some(found.0.clone());
         ex.accept_resolved_pull_off(found)
@@ -273,11 +283,16 @@ pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<
 /// continued in ρ at the control from the state at a larger ρ
 /// ([`continued_in_rho`]).
 pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
+    at_resolved_on(Gap::CYLINDERS, rho, control)
+}
+
+/// [`at_resolved`] on `gap`.
+pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
     by_delta_or_force(control)?;
-    match at_searched(rho, control, &default_tries()) {
+    match searched_on(gap, rho, control, &default_tries()) {
         // not reached, and not in a band: from the state at a larger ρ
         // (a value in a band, Error::InBand, is answered as it is)
-        Err(Error::NoState(why)) => from_larger_rho(rho, control)
+        Err(Error::NoState(why)) => from_larger_rho(gap, rho, control)
             .map_err(|more| Error::NoState(format!("{why}; {}", more.detail()))),
         other => other,
     }
@@ -289,9 +304,20 @@ pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
 /// there either, and the control lies in a band, the error says so
 /// ([`bands::past_folds_or_band`]).
 pub fn at_searched(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
+    searched_on(Gap::CYLINDERS, rho, control, tries)
+}
+
+/// [`at_searched`] on `gap`.
+pub(crate) fn searched_on(
+    gap: Gap,
+    rho: f64,
+    control: Hold,
+    tries: &[Truncation],
+) -> Result<ExactState> {
     by_delta_or_force(control)?;
-    at_with(rho, control, tries).or_else(|e| {
-        bands::past_folds_or_band(rho, control, branch::circle_a_bar(control), tries, e)
+    at_with(gap, rho, control, tries).or_else(|e| {
+        let circle_a = branch::circle_a_bar(&gap.at(1.0)?, control);
+        bands::past_folds_or_band(gap, rho, control, circle_a, tries, e)
     })
 }
 
@@ -312,12 +338,13 @@ fn by_delta_or_force(control: Hold) -> Result<Hold> {
 /// The state at `control` at `rho` from the first larger ρ where
 /// [`at_with`] finds it ([`first_above`]), continued in ρ
 /// ([`continued_in_rho`]).
-fn from_larger_rho(rho: f64, control: Hold) -> Result<ExactState> {
-    let start = first_above(rho, |r| at_with(r, control, &default_tries())).ok_or_else(|| {
-        Error::NoState(format!(
-            "no state at {control} found at any rho above it in steps of 0.1 to continue from"
-        ))
-    })?;
+fn from_larger_rho(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
+    let start =
+        first_above(rho, |r| at_with(gap, r, control, &default_tries())).ok_or_else(|| {
+            Error::NoState(format!(
+                "no state at {control} found at any rho above it in steps of 0.1 to continue from"
+            ))
+        })?;
     continued_in_rho(&start, rho, control)
 }
 
@@ -358,7 +385,7 @@ pub fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<E
     };
     while st.rho > rho {
         let next = (st.rho - step).max(rho);
-        let ex = Exact::new(next, tries[k])?.deferring_stability();
+        let ex = Exact::on(start.gap, next, tries[k])?.deferring_stability();
         match ex.solve_at(control, &st.contour, st.delta_bar) {
             Ok(n) if n.bc_error <= CONVERGED => {
                 st = n;
@@ -395,7 +422,7 @@ pub fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<E
             }
         }
     }
-    st.stability = Exact::new(rho, st.truncation)?.stability(&st)?;
+    st.stability = Exact::on(start.gap, rho, st.truncation)?.stability(&st)?;
     st.route = Route::ContinuedInRho;
     Ok(st)
 }
@@ -403,9 +430,14 @@ pub fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<E
 /// The exact state at `control` with the truncations `tries`
 /// ([`resolved`]), each after the first started from the state the one
 /// before found (resolved or not).
-pub(crate) fn at_with(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
+pub(crate) fn at_with(
+    gap: Gap,
+    rho: f64,
+    control: Hold,
+    tries: &[Truncation],
+) -> Result<ExactState> {
     let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
-    resolved(rho, tries, |ex| {
+    resolved(gap, rho, tries, |ex| {
         let st = ex.find(control, coarser.borrow().as_ref())?;
         *coarser.borrow_mut() = Some(st.clone());
         let at = format!("{control} ({})", st.route);

@@ -61,17 +61,6 @@ pub struct ExactStability {
     pub load: Vec<UnstableMode>,
 }
 
-impl ExactStability {
-    /// Stable under displacement control.
-    pub fn displacement_stable(&self) -> bool {
-        self.displacement.is_empty()
-    }
-    /// Stable under load control.
-    pub fn load_stable(&self) -> bool {
-        self.load.is_empty()
-    }
-}
-
 impl Exact {
     /// The linear stability of `st` (a state of this problem's truncation).
     pub fn stability(&self, st: &ExactState) -> Result<ExactStability> {
