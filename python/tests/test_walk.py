@@ -1,20 +1,27 @@
 """The guide's walk "Adding a family of your own", for real.
 
-A copy of the repository gets one new data file, derive/families/sparse.toml
-(a contour family on the quadratic gap whose map skips ζ⁵: powers 1, 3, 7);
-`thinjkr-derive generate --root COPY` derives, checks and generates it; the
+A copy of the repository gets two new data files and nothing else:
+derive/families/sparse.toml (a contour family on the quadratic gap whose map
+skips ζ⁵: powers 1, 3, 7) and derive/families/quartic.toml (a family on
+another gap, φ̄ = (X² + μY²)²/8, which seeds the exact solver of that gap);
+`thinjkr-derive generate --root COPY` derives, checks and generates both; the
 test lists every path that changed and fails on any hand-written Rust or
 Python among them or any built-in file changed; then the already built
 command line and Python package, pointed at the copy's generated folder by
-THINJKR_FAMILIES (no rebuild), list the family, solve with it, and
-`thinjkr accuracy` has its column. sparse:2 has the map of conformal:2 and
-so the same Π̄: their states must agree to round-off, through two separate
-derivations and the run-time tables against the compiled ones.
+THINJKR_FAMILIES (no rebuild), list the families, solve with them, and
+`thinjkr accuracy` has sparse's column beside conformal:K and a table of
+quartic:K against the exact solution of the quartic gap. sparse:2 has the
+map of conformal:2 and so the same Π̄: their states must agree to round-off,
+through two separate derivations and the run-time tables against the
+compiled ones. The quartic gap's exact solution at ρ = 1 must be the
+axisymmetric closed form (docs/exact.md, "The gap as data"):
+δ̄ = ā⁴/24 − 2/ā, F̄ = π(ā⁸ − 96ā³)/384.
 
 Runs one symbolica process (the generator) and nothing else at the same time.
 """
 
 import json
+import math
 import os
 import pathlib
 import shutil
@@ -35,6 +42,21 @@ powers = [1, 3, 7]
 rho_min = 0.5
 trace_start_a = 2.6
 """
+
+
+QUARTIC = """\
+kind = "conformal"
+name = "quartic"
+title = "odd polynomial maps of the disk on the quartic gap (X^2 + mu Y^2)^2/8"
+gap = "(X^2 + mu*Y^2)^2/8"
+particular = "(3 - mu)*X^6/720 + mu*X^4*Y^2/48 + mu^2*Y^6/240 - dbar*(X^2 + Y^2)/4"
+powers = [1, 3, 5]
+rho_min = 0.5
+trace_start_a = 2.2
+seeds_exact = true
+"""
+
+NEW_FILES = {"derive/families/sparse.toml": SPARSE, "derive/families/quartic.toml": QUARTIC}
 
 
 def derive_bin():
@@ -75,7 +97,8 @@ def walked(tmp_path_factory):
             dst.parent.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(src, dst)
     before = snapshot(copy)
-    (copy / "derive/families/sparse.toml").write_text(SPARSE)
+    for rel, text in NEW_FILES.items():
+        (copy / rel).write_text(text)
     env = dict(os.environ, SYMBOLICA_HIDE_BANNER="1")
     run = subprocess.run([derive_bin(), "generate", "--root", str(copy)], env=env,
                          capture_output=True, text=True, timeout=900)
@@ -90,7 +113,7 @@ def test_only_the_data_file_is_hand_written_and_every_built_in_file_is_unchanged
     print("changed by the walk:", *changed, sep="\n  ")
     hand_written = []
     for p in changed:
-        if p == "derive/families/sparse.toml":
+        if p in NEW_FILES:
             continue
         text = (copy / p).read_text(errors="replace") if (copy / p).exists() else ""
         generated = "@generated" in text.splitlines()[0] if text else False
@@ -104,6 +127,7 @@ def test_only_the_data_file_is_hand_written_and_every_built_in_file_is_unchanged
     for p in ("derive/families/sparse.toml", "solver/src/generated/registry.json",
               "solver/src/generated/registry.rs", "solver/src/generated/mod.rs",
               "solver/src/generated/sparse/tables.json", "solver/src/generated/sparse/k3.rs",
+              "derive/families/quartic.toml", "solver/src/generated/quartic/tables.json",
               "docs/derivation.md", "docs/codegen-accuracy.md"):
         assert p in changed, p
     # no built-in family's or model's generated file changed
@@ -114,6 +138,7 @@ def test_only_the_data_file_is_hand_written_and_every_built_in_file_is_unchanged
     # the docs gained the family's sections and kept the built-in ones
     derivation = (copy / "docs/derivation.md").read_text()
     assert "## The family `sparse:K`" in derivation
+    assert "## The family `quartic:K`" in derivation
     assert "## The family `conformal:K`" in derivation
 
 
@@ -144,6 +169,11 @@ def test_the_command_line_lists_and_solves_with_the_family_without_a_rebuild(wal
     b = state("conformal:2", "--force", "0")
     for key in ("a_bar", "s", "delta_bar"):
         assert abs(a[key] - b[key]) <= 1e-10 * abs(b[key]), (key, a[key], b[key])
+    # quartic:3 solves its own gap; at ρ = 1 its circle is the closed form
+    q = cli_json(cli, env, "solve", "--rho", "1", "--a", "2", "--model", "quartic:1")["state"]
+    assert abs(q["delta_bar"] - (2 ** 4 / 24 - 2 / 2)) < 1e-12, q
+    assert abs(q["force_bar"] - math.pi * (2 ** 8 - 96 * 2 ** 3) / 384) < 1e-12, q
+    assert models["quartic:3"]["unknowns"] == 4
     # sparse:3 adds ζ⁷: a state of its own, near conformal:3's
     c = state("sparse:3", "--force", "0")
     d = state("conformal:3", "--force", "0")
@@ -163,27 +193,68 @@ def test_python_lists_and_solves_with_the_family_without_a_rebuild(walked, cli):
         "import json, thinjkr\n"
         "names = [m[0] for m in thinjkr.models()]\n"
         "st = thinjkr.solve(0.8, force=0.0, model='sparse:3')\n"
-        "print(json.dumps({'names': names, 'a_bar': float(st.a_bar), 's': float(st.s)}))\n"
+        "q = thinjkr.solve(0.8, force=0.0, model='quartic:3')\n"
+        "print(json.dumps({'names': names, 'a_bar': float(st.a_bar), 's': float(st.s),\n"
+        "                  'q_a_bar': float(q.a_bar)}))\n"
     )
     run = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
                          timeout=300)
     assert run.returncode == 0, run.stderr
     got = json.loads(run.stdout)
-    assert {"sparse:1", "sparse:2", "sparse:3"} <= set(got["names"])
+    assert {"sparse:1", "sparse:2", "sparse:3", "quartic:3"} <= set(got["names"])
     c = cli_json(cli, env, "solve", "--rho", "0.8", "--force", "0", "--model", "sparse:3")["state"]
     assert abs(got["a_bar"] - c["a_bar"]) <= 1e-12 * c["a_bar"]
     assert abs(got["s"] - c["s"]) <= 1e-12
+    q = cli_json(cli, env, "solve", "--rho", "0.8", "--force", "0", "--model", "quartic:3")["state"]
+    assert abs(got["q_a_bar"] - q["a_bar"]) <= 1e-12 * q["a_bar"]
 
 
-def test_accuracy_has_the_familys_column(walked, cli, tmp_path):
+@pytest.fixture(scope="module")
+def accuracy(walked, cli, tmp_path_factory):
+    """`thinjkr accuracy` with the walked families, once for the tests below."""
     copy, _ = walked
     env = dict(os.environ, THINJKR_FAMILIES=str(copy / "solver/src/generated"))
-    out = tmp_path / "accuracy.md"
+    out = tmp_path_factory.mktemp("accuracy") / "accuracy.md"
     run = subprocess.run([cli, "accuracy", "--out", str(out)], env=env, capture_output=True,
                          text=True, timeout=900)
     assert run.returncode == 0, run.stderr
-    text = out.read_text()
+    return out.read_text()
+
+
+def test_accuracy_has_the_familys_column(accuracy):
+    text = accuracy
     assert "`sparse:2`" in text and "`conformal:8`" in text
     # one cell per compared member in every row of the family's table
     header = next(line for line in text.splitlines() if "`sparse:2`" in line)
     assert header.count("|") == 2 + 4 + 1, header
+
+
+def circle_quartic(force):
+    """The quartic gap's exact circle at ρ = 1 (docs/exact.md): ā from F̄
+    above the pull-off (ā⁵ = 36) by bisection; (δ̄, ā)."""
+    f = lambda x: math.pi * (x ** 8 - 96 * x ** 3) / 384
+    lo, hi = 36 ** 0.2, 10.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(mid) < force else (lo, mid)
+    a = 0.5 * (lo + hi)
+    return a ** 4 / 24 - 2 / a, a
+
+
+def test_accuracy_measures_the_quartic_family_against_the_exact_solution_of_its_gap(accuracy):
+    text = accuracy
+    assert "## The family `quartic:K` against the exact solution of its own gap" in text
+    section = text.split("## The family `quartic:K`", 1)[1].split("\n## ", 1)[0]
+    rows = [line for line in section.splitlines() if line.startswith("| 1 |")]
+    assert len(rows) == 3, rows
+    # the exact states at ρ = 1: pull-off (ā⁵ = 36), zero force, F̄ = 10
+    a_po = 36 ** 0.2
+    f_po = math.pi * (a_po ** 8 - 96 * a_po ** 3) / 384
+    assert f"F̄ = {f_po:.6f}, ā = {a_po:.6f}, s = 1.000000" in rows[0], rows[0]
+    for row, force in zip(rows[1:], (0.0, 10.0)):
+        delta, a = circle_quartic(force=force)
+        assert f"δ̄ = {delta:.6f}, ā = {a:.6f}, s = 1.000000" in row, (force, row)
+    # below ρ = 1 the exact pull-off is resolved and the members measured
+    po = [line for line in section.split("### Zero force")[0].splitlines()
+          if line.startswith("| 0.8 |")]
+    assert len(po) == 1 and "F̄ = -" in po[0] and "no exact value" not in po[0], po
