@@ -15,7 +15,10 @@
 //! uses (ā from the axisymmetric (25)₁, s from (30)): the same algorithm as
 //! fsolve there, without the bracketing that makes a cold solve safe.
 //!
-//! usage: peer_sweep generated|static|handwritten|cold|cold-newton OUT_FILE [repeats]
+//! With `layer`: the warm sweep through the model layer, each state a
+//! checked state continued from the one before (`Choice::state_near`).
+//!
+//! usage: peer_sweep generated|static|handwritten|layer|cold|cold-newton OUT_FILE [repeats]
 
 #[path = "../benches/peer/handwritten.rs"]
 mod handwritten;
@@ -51,6 +54,25 @@ fn sweep(
         .expect("converges");
         x = (sol.a_bar, sol.s);
         out.push((delta, sol.a_bar, sol.s));
+    }
+}
+
+/// The sweep through the model layer (`thinjkr::registry`): the same δ̄,
+/// each state continued from the one before by `Choice::state_near`, which
+/// returns a checked state (force, stability, boundary error) as every
+/// front end gets it.
+fn layer_sweep(out: &mut Vec<(f64, f64, f64)>) {
+    use thinjkr::control::Hold;
+    out.clear();
+    let m = thinjkr::registry::parse("max").expect("a model");
+    let mut near = m.state(RHO, Hold::Delta(6.0)).expect("a state");
+    for k in 0..N {
+        let delta = 6.0 - 5.5 * k as f64 / (N - 1) as f64;
+        near = m
+            .state_near(RHO, Hold::Delta(delta), &near)
+            .expect("converges");
+        let (a, b, _, _) = near.size_and_load();
+        out.push((delta, a, b / a));
     }
 }
 
@@ -172,6 +194,9 @@ fn main() {
             // the static model type (`thinjkr::generated::max::Max`)
             "static" => sweep(|v, d| Max.residuals_and_jacobian(v, RHO, d), x0, &mut out),
             "handwritten" => sweep(handwritten_nalgebra, x0, &mut out),
+            // through the model layer: each state a checked `State`
+            // continued from the one before (`Choice::state_near`)
+            "layer" => layer_sweep(&mut out),
             other => panic!("unknown variant {other}"),
         }
         times.push(t.elapsed().as_secs_f64());

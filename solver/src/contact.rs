@@ -223,6 +223,19 @@ impl Contact {
 
     /// Any generated model at radii ratio `rho` ∈ (0, 1].
     pub fn with_model(model: ModelId, rho: f64) -> Result<Self> {
+        let mut c = Contact::unprepared(model, rho)?;
+        if !c.axisymmetric() {
+            // found once per contact (numerically, where the model has no
+            // derived relation: tens of microseconds)
+            c.s_inf = c.s_infinity().ok();
+        }
+        Ok(c)
+    }
+
+    /// [`Contact::with_model`] without finding s∞ ahead (found when a
+    /// search needs it): for a state continued from a neighbour
+    /// ([`Contact::at_near`]), which searches nothing.
+    pub(crate) fn unprepared(model: ModelId, rho: f64) -> Result<Self> {
         check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
         if rho < RHO_MIN {
             return Err(Error::Unsupported {
@@ -231,19 +244,13 @@ impl Contact {
                 supported: "[1e-8, 1]: below 1e-8 the aspect ratio s is below 1e-5 and the branch is not followed".into(),
             });
         }
-        let mut c = Contact {
+        Ok(Contact {
             rho,
             model: model.model(),
             newton: NewtonConfig::default(),
             search: Search::Cold,
             s_inf: None,
-        };
-        if !c.axisymmetric() {
-            // found once per contact (numerically, where the model has no
-            // derived relation: tens of microseconds)
-            c.s_inf = c.s_infinity().ok();
-        }
-        Ok(c)
+        })
     }
 
     /// Replace the search for starting points ([`Search::Cold`] by default).
@@ -962,6 +969,46 @@ impl Contact {
         st.delta_bar = delta;
         st.rho = 1.0;
         Ok(st)
+    }
+
+    /// The state at `hold` on the branch through `near` (a state of this
+    /// contact's model nearby, as in a sweep): Newton from it, with the
+    /// checks of every state (adhesive edge, s ≤ 1).
+    pub(crate) fn at_near(&self, hold: Hold, near: &State) -> Result<State> {
+        let hold = hold.check_finite()?;
+        if near.model != self.model_id() {
+            return Err(Error::Usage(format!(
+                "the state to start from is of model {}, not {}",
+                near.model.name(),
+                self.model_id().name()
+            )));
+        }
+        if let Hold::Delta(d) = hold {
+            // at a given δ̄ Newton on the model's own equations in (ā, s);
+            // a step to the compressive-edge root is refused at the end,
+            // not steered at every iterate (a sweep's neighbour is close)
+            let m = self.model;
+            let what = "continued from a nearby state";
+            let sol = crate::newton::solve(
+                |x| m.residuals_and_jacobian(x, self.rho, d),
+                |a| m.residual_scale(a, d),
+                Vector2::new(near.a_bar, near.s),
+                &self.newton,
+                what,
+            )?;
+            return self.adhesive_or_error(self.state_from(sol.a_bar, sol.s, d), what);
+        }
+        let (quantity, target) = match hold {
+            Hold::Delta(d) => (Quantity::Delta, d),
+            Hold::Force(f) => (Quantity::Force, f),
+            Hold::Size(a) => (Quantity::ABar, a),
+        };
+        self.solve_controlled(
+            Vector3::new(near.a_bar, near.s, near.delta_bar),
+            quantity,
+            target,
+            "continued from a nearby state",
+        )
     }
 
     /// Contact-size control: every state with major semi-axis `a` (none, one

@@ -315,6 +315,44 @@ impl Choice {
         Ok(states.swap_remove(0))
     }
 
+    /// The state at `hold` on the branch through `near`, a state of this
+    /// model nearby (a sweep's previous point): Newton from it, each state
+    /// checked as every state is. Unlike [`Choice::state`] it does not
+    /// choose the branch (the one from large loads): it stays on the one
+    /// `near` is on, and fails (typed) where Newton does not converge from
+    /// there. `near` of another model is a usage error.
+    pub fn state_near(
+        &self,
+        rho: f64,
+        hold: Hold,
+        near: &crate::report::AnyState,
+    ) -> crate::Result<crate::report::AnyState> {
+        use crate::report::AnyState;
+        let other = || {
+            crate::Error::Usage(format!(
+                "the state to start from is of another model than {}",
+                self.name()
+            ))
+        };
+        match (*self, near) {
+            (Choice::Ellipse(m), AnyState::Ellipse(st)) => Ok(AnyState::Ellipse(
+                crate::Contact::unprepared(m, rho)?.at_near(hold, st)?,
+            )),
+            (Choice::Contour(m), AnyState::Conformal(st)) => {
+                Ok(AnyState::Conformal(m.solve_near(rho, hold, st)?))
+            }
+            (Choice::Exact, AnyState::Exact(st)) => {
+                let hold = hold.check_finite()?;
+                let ex = crate::exact::Exact::new(rho, st.truncation)?;
+                let mut found = ex.solve_at(hold, &st.contour, st.delta_bar)?;
+                found.route = crate::exact::Route::FromNeighbour;
+                let found = ex.accept_resolved(format!("{hold} (from a nearby state)"), found)?;
+                Ok(AnyState::Exact(Box::new(found)))
+            }
+            _ => Err(other()),
+        }
+    }
+
     /// The zero-force state (F̄ = 0 on the branch from large loads).
     pub fn zero_force(&self, rho: f64) -> crate::Result<crate::report::AnyState> {
         use crate::report::AnyState;

@@ -91,3 +91,49 @@ fn what_a_kind_does_not_have_is_a_typed_error() {
     let why = parse("nonesuch:2").unwrap_err();
     assert!(why.contains("conformal:K with K = 1 ..= 8"), "{why}");
 }
+
+/// A sweep through the layer: each state continued from the one before
+/// (`Choice::state_near`) is the state a cold solve gives, for a model of
+/// the ellipse and a contour-family member (to 1e-9 in ā and s, the two
+/// Newton tolerances), and the exact solver's state from a neighbour at
+/// another force is the one its own route finds there (to 1e-8: each is
+/// converged to its residual tolerance with its own truncation). A start
+/// of another model is a usage error, not a wrong state.
+#[test]
+fn a_state_continued_from_its_neighbour_is_the_cold_state() {
+    let rho = 0.8;
+    for name in ["max", "conformal:3"] {
+        let m = parse(name).unwrap();
+        let mut near = m.state(rho, Hold::Delta(6.0)).unwrap();
+        for k in 1..=20 {
+            let d = 6.0 - 0.25 * k as f64;
+            let warm = m.state_near(rho, Hold::Delta(d), &near).unwrap();
+            let cold = m.state(rho, Hold::Delta(d)).unwrap();
+            let (wa, wb, wd, _) = warm.size_and_load();
+            let (ca, cb, cd, _) = cold.size_and_load();
+            assert!(
+                (wa - ca).abs() < 1e-9 * ca,
+                "{name} at delta = {d}: a {wa} vs {ca}"
+            );
+            assert!((wb / wa - cb / ca).abs() < 1e-9, "{name} at delta = {d}: s");
+            assert_eq!(wd, cd);
+            near = warm;
+        }
+        let other = parse(if name == "max" { "energy" } else { "max" }).unwrap();
+        assert!(matches!(
+            other.state_near(rho, Hold::Delta(2.0), &near),
+            Err(Error::Usage(_))
+        ));
+    }
+    let exact = parse("exact").unwrap();
+    let at_1 = exact.state(0.9, Hold::Force(1.0)).unwrap();
+    let warm = exact.state_near(0.9, Hold::Force(1.5), &at_1).unwrap();
+    let cold = exact.state(0.9, Hold::Force(1.5)).unwrap();
+    let (wa, _, wd, wf) = warm.size_and_load();
+    let (ca, _, cd, _) = cold.size_and_load();
+    assert!((wf - 1.5).abs() < 1e-9);
+    assert!(
+        (wa - ca).abs() < 1e-8 * ca && (wd - cd).abs() < 1e-8,
+        "{wa} {ca} {wd} {cd}"
+    );
+}

@@ -7,8 +7,12 @@ each continued from the previous solution:
   (a) thinjkr's generated code and Newton (release example `peer_sweep generated`);
   (b) hand-written Rust (19)-(20) with a hand-derived Jacobian (`peer_sweep handwritten`,
       code in solver/benches/peer/handwritten.rs);
-  (c) sympy-lambdified residual and Jacobian solved by scipy.optimize.fsolve.
-Checks that all three reach the same solutions (|da|, |ds| <= 1e-9).
+  (c) sympy-lambdified residual and Jacobian solved by scipy.optimize.fsolve;
+  (g) through the model layer (`peer_sweep layer`): each state a checked state
+      (F̄, stability, boundary error, pressure) continued from the one before
+      by `thinjkr::registry::Choice::state_near`, as every front end gets it.
+Checks that all four reach the same solutions (|da|, |ds| <= 1e-9). (a), (b)
+and (g) alternate, three rounds, each a median of repeated sweeps.
 
 Then a cold-solve sweep (issue 12): 10 000 cold solves at pseudo-random
 (rho, delta_bar), rho in [0.7, 1), delta_bar in [0.5, 6] (the inputs written
@@ -24,9 +28,9 @@ Counts the solves where fsolve and (f) reach thinjkr's state (|da|, |ds| <=
 1e-9) and fails if fewer than 99 % do.
 
 Prints, as its last line, ratio_vs_scipy=X ratio_vs_handwritten=Y
-cold_ratio_vs_scipy=Z same_start_ratio_vs_scipy=W with X = t(c)/t(a),
-Y = t(a)/t(b), Z = t(e)/t(d), W = t(e)/t(f). Times are medians over repeated
-sweeps.
+layer_ratio_vs_handwritten=V cold_ratio_vs_scipy=Z same_start_ratio_vs_scipy=W
+with X = t(c)/t(a), Y = t(a)/t(b), V = t(g)/t(b), Z = t(e)/t(d),
+W = t(e)/t(f). Times are medians over repeated sweeps.
 
 Needs Python 3 with sympy, numpy and scipy (pip install sympy numpy scipy);
 installs nothing itself. Run from anywhere:  python3 solver/benches/peer/compare.py
@@ -112,16 +116,21 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         pa, pb = os.path.join(tmp, "a.txt"), os.path.join(tmp, "b.txt")
         subprocess.run(["cargo", "build", "-q", "--release", "-p", "thinjkr", "--example", "peer_sweep"], cwd=ROOT, check=True)
-        ta, a0, s0 = run_rust("generated", pa)
-        tb, _, _ = run_rust("handwritten", pb)
-        sol_a, sol_b = load(pa), load(pb)
+        pg = os.path.join(tmp, "g.txt")
+        rounds = {"generated": [], "handwritten": [], "layer": []}
+        for _ in range(3):
+            for variant, path in (("generated", pa), ("handwritten", pb), ("layer", pg)):
+                t, a0, s0 = run_rust(variant, path)
+                rounds[variant].append(t)
+        ta, tb, tg = (statistics.median(rounds[v]) for v in ("generated", "handwritten", "layer"))
+        sol_a, sol_b, sol_g = load(pa), load(pb), load(pg)
         times_c = []
         for _ in range(REPEATS_PY):
             t = time.perf_counter()
             sol_c = scipy_sweep((a0, s0))
             times_c.append(time.perf_counter() - t)
         tc = statistics.median(times_c)
-    for name, other in (("hand-written Rust", sol_b), ("sympy+scipy", sol_c)):
+    for name, other in (("hand-written Rust", sol_b), ("sympy+scipy", sol_c), ("the model layer", sol_g)):
         da = np.max(np.abs(sol_a[:, 1] - other[:, 1]))
         ds = np.max(np.abs(sol_a[:, 2] - other[:, 2]))
         print(f"agreement with {name}: max |da| = {da:.2e}, max |ds| = {ds:.2e}")
@@ -131,6 +140,7 @@ def main():
     print(f"(a) thinjkr generated + Newton: {ta * 1e3:.3f} ms per sweep (median of {REPEATS_RUST})")
     print(f"(b) hand-written Rust:          {tb * 1e3:.3f} ms per sweep (median of {REPEATS_RUST})")
     print(f"(c) sympy lambdify + fsolve:    {tc * 1e3:.1f} ms per sweep (median of {REPEATS_PY})")
+    print(f"(g) the model layer, checked:   {tg * 1e3:.3f} ms per sweep (median of 3 rounds of {REPEATS_RUST})")
     # cold solves
     def cold_rust(variant):
         with tempfile.TemporaryDirectory() as tmp:
@@ -161,7 +171,7 @@ def main():
     print(f"(d) thinjkr cold solves:        {td / n * 1e6:.2f} us per solve (median of {REPEATS_RUST} sweeps of {n})")
     print(f"(e) fsolve from closed forms:   {te / n * 1e6:.1f} us per solve (median of {REPEATS_PY} sweeps of {n})")
     print(f"(f) Newton from the same start: {tf / n * 1e6:.3f} us per solve (median of {REPEATS_RUST} sweeps of {n})")
-    print(f"ratio_vs_scipy={tc / ta:.1f} ratio_vs_handwritten={ta / tb:.3f} cold_ratio_vs_scipy={te / td:.1f} same_start_ratio_vs_scipy={te / tf:.1f}")
+    print(f"ratio_vs_scipy={tc / ta:.1f} ratio_vs_handwritten={ta / tb:.3f} layer_ratio_vs_handwritten={tg / tb:.3f} cold_ratio_vs_scipy={te / td:.1f} same_start_ratio_vs_scipy={te / tf:.1f}")
 
 
 if __name__ == "__main__":

@@ -847,6 +847,32 @@ impl Conformal {
         self.state(&x, rho)
     }
 
+    /// The state at `rho` under `control` on the branch through `near` (a
+    /// state of this member nearby): Newton from its coefficients and δ̄,
+    /// with the checks of every state (a one-to-one map).
+    pub(crate) fn solve_near(
+        &self,
+        rho: f64,
+        control: Hold,
+        near: &ConformalState,
+    ) -> Result<ConformalState> {
+        let rho = check_rho(self.family, rho)?;
+        let control = control.check_finite()?;
+        if near.coefficients.len() != self.terms() {
+            return Err(Error::Usage(format!(
+                "the state to start from is of {}, not {}",
+                near.model,
+                self.name()
+            )));
+        }
+        let start = DVector::from_iterator(
+            self.terms() + 1,
+            near.coefficients.iter().copied().chain([near.delta_bar]),
+        );
+        let x = self.newton(&start, rho, control)?;
+        self.state(&x, rho)
+    }
+
     /// The state at `control` between two states at fixed ā whose control
     /// values minus the target (`value`), `va` and `vb`, have opposite
     /// signs: the

@@ -338,6 +338,9 @@ pub enum Route {
     /// fold in ā and on along its returning stretch to the control
     /// ([`bands::past_folds_or_band`]), where the other routes find nothing.
     PastFold,
+    /// Newton at the control from a nearby exact state the caller gave
+    /// (a sweep's previous point, `registry::Choice::state_near`).
+    FromNeighbour,
 }
 
 impl std::fmt::Display for Route {
@@ -353,6 +356,7 @@ impl std::fmt::Display for Route {
             Route::PastFold => {
                 "traced from beside a band through the fold of its arm, on the returning stretch"
             }
+            Route::FromNeighbour => "Newton at the control from a nearby state given by the caller",
         })
     }
 }
