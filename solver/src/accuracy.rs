@@ -306,7 +306,8 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          contour of such a state undulates with the band's mode, as the pull-off's does past the mode-4 band); \
          where that finds none either, and the value lies in no band, it is continued in ρ at that F̄ from the \
          state at the first of ρ + 0.1, ρ + 0.2, … that is found (route `continued_in_rho`, \"continued in ρ\" \
-         in the row); a row says where the arm ended, or down to which ρ the continuation converged and why it \
+         in the row); where that fails too, the states the screen of `thinjkr exact solve --all` finds at that \
+         value (ā from 1 to the larger of 4 and 1.2 times the circle's ā), the one nearest an ellipse; a row says where the arm ended, or down to which ρ the continuation converged and why it \
          stopped, when the value is not reached. The contour modes are escalated (",
     );
     let modes: Vec<String> = crate::exact::default_tries()

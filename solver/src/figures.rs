@@ -135,9 +135,9 @@ fn conformal_arms() -> Result<Vec<Figure>> {
         GREY,
     )];
     for (k, color) in [(2, GREEN), (4, ORANGE), (8, BLUE)] {
-        let m = crate::conformal::exact_seed(crate::exact::Gap::CYLINDERS)
+        let m = crate::conformal::seeding_family(&crate::exact::Gap::CYLINDERS)
             .ok_or_else(|| crate::Error::NoState("no contour family seeds the exact solver".into()))
-            .and_then(|seed| crate::conformal::Conformal::member(seed.family().name, k))?;
+            .and_then(|f| crate::conformal::Conformal::member(f.name, k))?;
         let cv = m.curve(0.8, 800, 20.0)?;
         // contiguous pieces of one arm on one side of its first fold
         let mut label = m.name();
@@ -938,7 +938,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         // and named in its label (docs/accuracy.md says why)
         let (mut pts, mut missing) = (Vec::new(), Vec::new());
         let seed_family =
-            crate::conformal::exact_seed(crate::exact::Gap::CYLINDERS).map(|m| m.family().name);
+            crate::conformal::seeding_family(&crate::exact::Gap::CYLINDERS).map(|f| f.name);
         for m in crate::conformal::members().filter(|m| Some(m.family().name) == seed_family) {
             match m.pull_off(e.rho, crate::fold::FoldCondition::Load) {
                 Ok((st, _)) => {

@@ -261,3 +261,63 @@ fn forces_just_above_the_circles_pull_off_have_their_stable_state() {
         );
     }
 }
+
+/// Issue 31, items 2, 3 and 7: a member's state far from an exact one is
+/// answered with the reason it is doubtful, not in silence. conformal:8 at
+/// ρ = 0.515, F̄ = 10 (ā 3.4 % off the exact 3.37182, defect 0.21), at
+/// ρ = 0.3, δ̄ = 20 (defect 2.4), the state at that state's force, and the
+/// curve at ρ = 0.5 whose pull-off arm, traced upwards, has b > a: each
+/// carries its warnings (the defect above 0.1; b > a), and the JSON
+/// carries them too. A state near an exact one (ρ = 0.8, F̄ = 0, defect
+/// 1e-10) carries none.
+#[test]
+fn a_doubtful_member_state_says_so() {
+    let m = Conformal::member("conformal", 8).unwrap();
+    let st = m.solve(0.515, Hold::Force(10.0)).unwrap();
+    assert!(st.bc_defect > 0.1, "{}", st.bc_defect);
+    assert!(
+        st.warnings
+            .iter()
+            .any(|w| w.contains("misses the boundary condition (3)2")),
+        "{:?}",
+        st.warnings
+    );
+    let deep = m.solve(0.3, Hold::Delta(20.0)).unwrap();
+    assert!(
+        deep.warnings.iter().any(|w| w.contains("by up to 2.4")),
+        "{:?}",
+        deep.warnings
+    );
+    let back = m.solve(0.3, Hold::Force(deep.force_bar)).unwrap();
+    assert!(back.bc_defect <= 0.1 || !back.warnings.is_empty());
+    let json = serde_json::to_value(&st).unwrap();
+    assert_eq!(
+        json["warnings"].as_array().map(|w| w.len()),
+        Some(st.warnings.len())
+    );
+    let curve = m.curve(0.5, 500, 20.0).unwrap();
+    let wide: Vec<_> = curve.states.iter().filter(|s| s.s > 1.0).collect();
+    assert!(
+        !wide.is_empty(),
+        "the curve at rho = 0.5 has a state with b > a"
+    );
+    for s in wide {
+        assert!(
+            s.warnings.iter().any(|w| w.starts_with("b > a")),
+            "{:?}",
+            s.warnings
+        );
+    }
+    for s in &curve.states {
+        assert_eq!(
+            s.bc_defect > 0.1,
+            s.warnings.iter().any(|w| w.contains("(3)2"))
+        );
+    }
+    let good = m.solve(0.8, Hold::Force(0.0)).unwrap();
+    assert!(good.warnings.is_empty(), "{:?}", good.warnings);
+    assert!(serde_json::to_value(&good)
+        .unwrap()
+        .get("warnings")
+        .is_none());
+}

@@ -73,6 +73,14 @@ def _state_from(d: Dict[str, Any]) -> State:
     return State(fields)
 
 
+def _warn(d: Dict[str, Any], stacklevel: int = 3) -> None:
+    """Each of a state's warnings (a doubtful state: for a contour-family
+    member, (3)₂ missed by more than 0.1 on its contour, or b > a) as a
+    :class:`ThinJkrWarning`, as the command line prints them."""
+    for w in d.get("warnings") or ():
+        _warnings.warn(w, ThinJkrWarning, stacklevel=stacklevel)
+
+
 def _call(f, *args):
     try:
         return f(*args)
@@ -138,8 +146,9 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
     control, value = _control(delta, force, a)
     rho, value = _number("rho", rho), _number(control, value)
     if _np.ndim(rho) == 0 and _np.ndim(value) == 0:
-        text = _call(_thinjkr.solve, model, rho, control, value)
-        return _state_from(_json.loads(text))
+        d = _json.loads(_call(_thinjkr.solve, model, rho, control, value))
+        _warn(d)
+        return _state_from(d)
     r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
     shape = r.shape
     cols, errors = _call(
@@ -168,9 +177,13 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
     arrays = {k: _np.full(rho.shape, _np.nan) for k in keys}
     kinds = _np.full(rho.shape, "", dtype=object)
     msgs = _np.full(rho.shape, "", dtype=object)
+    doubtful = 0
     for i in _np.ndindex(rho.shape):
         try:
-            st = one(float(rho[i]))
+            with _warnings.catch_warnings(record=True) as caught:
+                _warnings.simplefilter("always", ThinJkrWarning)
+                st = one(float(rho[i]))
+            doubtful += any(issubclass(w.category, ThinJkrWarning) for w in caught)
         except ThinJkrError as e:
             if e.kind == "usage":
                 raise
@@ -182,6 +195,13 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
             fields["bc_error"] = fields["bc_defect"]
         for k in keys:
             arrays[k][i] = fields[k]
+    if doubtful:
+        _warnings.warn(
+            f"{doubtful} of {rho.size} states carry warnings (doubtful states: each point's "
+            "State, e.g. from a scalar call, says why)",
+            ThinJkrWarning,
+            stacklevel=3,
+        )
     return States(model=model, rho=rho.copy(), arrays=arrays, error=msgs, error_kind=kinds)
 
 
@@ -204,6 +224,7 @@ def pull_off(rho, *, model: str = "max", control: str = "load"):
     if _np.ndim(rho) > 0:
         return _many(rho, model, lambda r: pull_off(r, model=model, control=control))
     d = _json.loads(_call(_thinjkr.pull_off, model, rho, control))
+    _warn(d["state"])
     st = _state_from(d["state"])
     fields = st.to_dict()
     fields["control"] = control

@@ -43,6 +43,9 @@ pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
     );
     let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();
     outln!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
+    for w in &st.warnings {
+        outln!("  warning: {w}");
+    }
     Ok(())
 }
 

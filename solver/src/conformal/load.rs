@@ -118,7 +118,7 @@ pub(crate) fn load(dir: &Path, compiled: &[Family]) -> (Vec<&'static Family>, Ve
                 problems.push(format!("{ENV}: family {name} is listed twice"))
             }
             Ok(f) => {
-                let seeded = |g: &Family| g.seeds_exact && g.exact_gap() == f.exact_gap();
+                let seeded = |g: &Family| g.seeds_exact && g.unseeded_gap() == f.unseeded_gap();
                 if f.seeds_exact && (compiled.iter().any(seeded) || out.iter().any(|g| seeded(g))) {
                     // the family already there seeds the exact solver of this gap
                     let mut g = Family { ..*f };
@@ -208,6 +208,7 @@ fn gap_terms(raw: &[[i64; 6]]) -> Result<&'static [Term], String> {
     crate::exact::Gap {
         name: "loaded",
         particular: terms,
+        seed: None,
     }
     .at(1.0)
     .map_err(|e| e.to_string())?;

@@ -29,6 +29,8 @@
 //! typed), `exact` (a family's gap as the exact solver reads it), nalgebra.
 
 pub(crate) mod load;
+mod seed;
+pub(crate) use seed::seeding_family;
 pub mod poly;
 mod trace;
 
@@ -103,14 +105,6 @@ pub struct Family {
 }
 
 impl Family {
-    /// The gap its members solve, as data for the exact solver.
-    pub(crate) fn exact_gap(&self) -> crate::exact::Gap {
-        crate::exact::Gap {
-            name: self.name,
-            particular: self.particular_terms,
-        }
-    }
-
     /// "1 ..= 8": the family's K, from its smallest member to its largest.
     pub(crate) fn member_range(&self) -> String {
         let ks = self.members.iter().map(|t| t.terms);
@@ -152,17 +146,6 @@ pub fn families() -> &'static [&'static Family] {
 /// (empty when every family loaded, or the variable is not set).
 pub(crate) fn load_problems() -> &'static [String] {
     &registry().problems
-}
-
-/// The largest member of the family that seeds the exact solver of `gap`,
-/// if the registry has one.
-pub(crate) fn exact_seed(gap: crate::exact::Gap) -> Option<Conformal> {
-    let (i, f) = families()
-        .iter()
-        .enumerate()
-        .find(|(_, f)| f.seeds_exact && f.exact_gap() == gap)?;
-    let largest = f.members.iter().map(|t| t.terms).max()?;
-    Conformal::in_family(i, largest).ok()
 }
 
 /// One member of a family, chosen at run time by its name `family:K`.
@@ -219,6 +202,37 @@ pub struct ConformalState {
     /// Contour modes n (cos nθ) that are unstable under displacement
     /// control: the dominant mode of each negative eigenvector.
     pub unstable_modes: Vec<u32>,
+    /// Why the state is doubtful, in words (empty when it is not): its
+    /// closure misses (3)₂ by more than 0.1 somewhere on
+    /// the contour, or its contour is wider across than along (b̄ > ā at
+    /// ρ < 1). Every front end shows them.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
+}
+
+/// The boundary defect max |∂p̄/∂ν − 1| above which a member's state is
+/// reported as doubtful: (3)₂ missed by more than 10 % somewhere. Measured
+/// against the exact states of docs/accuracy.md, `conformal:8`'s relative
+/// errors are about 0.1–0.3 times its defect (ρ = 0.4 pull-off: defect
+/// 3.1e-2, errors up to 8e-3; ρ = 0.515, F̄ = 10: defect 0.21, ā 3.4 %
+/// off), so a defect above 0.1 means errors of per cent.
+pub(crate) const DOUBTFUL_DEFECT: f64 = 0.1;
+
+/// The warnings of a member's state ([`ConformalState::warnings`]).
+fn doubts(rho: f64, a_bar: f64, b_bar: f64, bc_defect: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    if bc_defect > DOUBTFUL_DEFECT {
+        out.push(format!(
+            "the state misses the boundary condition (3)2 by up to {bc_defect:.2} on its contour (max |dp/dnu - 1| above {DOUBTFUL_DEFECT}): it is not near an exact state, and its numbers may be off by per cent (compare `thinjkr exact solve`)"
+        ));
+    }
+    if rho < 1.0 && b_bar > a_bar * (1.0 + 1e-9) {
+        out.push(format!(
+            "b > a (s = {}): the contour is wider across than along, not the near-elliptic state the family approximates",
+            crate::error::rounded(b_bar / a_bar)
+        ));
+    }
+    out
 }
 
 /// Every generated member of every family, by family (in registry order)
@@ -1100,6 +1114,7 @@ impl Conformal {
         let (stable_d, modes) = self.modes(&hcc);
         let stable_l = positive_definite(&h);
         let force = e.grad[k];
+        let bc_defect = self.bc_defect(x, rho);
         let out = ConformalState {
             model: self.name(),
             rho,
@@ -1109,10 +1124,11 @@ impl Conformal {
             delta_bar: x[k],
             force_bar: force,
             coefficients: c.to_vec(),
-            bc_defect: self.bc_defect(x, rho),
+            bc_defect,
             stable_displacement: stable_d,
             stable_load: stable_l,
             unstable_modes: modes,
+            warnings: doubts(rho, a, b, bc_defect),
         };
         if ![a, b, x[k], force, out.bc_defect]
             .iter()

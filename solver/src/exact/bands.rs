@@ -41,10 +41,11 @@
 //!
 //! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
 //! [`states_at`], [`past_folds_or_band`]. May use: `control`, `exact`
-//! (its family and traces), `conformal` (the screen), `error`, rayon.
+//! (its family and traces; the screen by the gap's seed, `exact::seed`),
+//! `error`, rayon.
 
+use super::seed::Guess;
 use super::{Contour, Exact};
-use crate::conformal::{Conformal, ConformalState};
 use crate::control::Hold;
 use crate::error::{Error, Result};
 use rayon::prelude::*;
@@ -168,7 +169,7 @@ fn screen(
     rho: f64,
     from: f64,
     to: f64,
-) -> Result<(Conformal, Vec<f64>, Vec<Option<ConformalState>>)> {
+) -> Result<(&'static dyn super::seed::Seed, Vec<f64>, Vec<Option<Guess>>)> {
     // the grid's size is bounded before it is computed (a `to` of 1e300
     // must not overflow the count, nor wrap to an empty screen)
     let steps = ((to - from) / STEP).round();
@@ -179,21 +180,32 @@ fn screen(
         "at most from + 9.99 (a screen of at most 1000 grid points)",
     )?;
     let count = steps as usize + 1;
-    let model: Conformal = crate::conformal::exact_seed(gap).ok_or_else(|| {
+    let model = gap.seed.ok_or_else(|| {
         Error::NoState(format!(
             "no contour family in the registry seeds the exact solver of the gap {}",
             gap.name
         ))
     })?;
     let grid: Vec<f64> = (0..count).map(|j| from + STEP * j as f64).collect();
-    let states = grid
+    let answers: Vec<Result<Guess>> = grid
         .par_iter()
-        .map(|&a| {
-            model
-                .solve(rho, Hold::Size(a))
-                .ok()
-                .filter(|st| st.bc_defect < 1e-2)
-        })
+        .map(|&a| model.state(rho, Hold::Size(a)))
+        .collect();
+    // a seed that answers nowhere (ρ below its range) says why
+    if let Some(Err(why)) = answers
+        .iter()
+        .find(|a| a.is_err())
+        .filter(|_| answers.iter().all(|a| a.is_err()))
+    {
+        return Err(Error::NoState(format!(
+            "the screen of {} has no state in it: {}",
+            model.name(),
+            why.detail()
+        )));
+    }
+    let states = answers
+        .into_iter()
+        .map(|a| a.ok().filter(|st| st.bc_defect < 1e-2))
         .collect();
     Ok((model, grid, states))
 }
@@ -207,7 +219,7 @@ enum Gap {
 }
 
 /// The runs of grid points without a near-elliptic state.
-fn gaps(states: &[Option<ConformalState>]) -> Vec<Gap> {
+fn gaps(states: &[Option<Guess>]) -> Vec<Gap> {
     let (count, mut out, mut j) = (states.len(), Vec::new(), 0);
     while j < count {
         if states[j].is_some() {
@@ -230,11 +242,7 @@ fn gaps(states: &[Option<ConformalState>]) -> Vec<Gap> {
 /// nearest first, up to five grid points away on either side (an exact
 /// start that fails next to the gap may succeed a little further out).
 #[allow(clippy::type_complexity)]
-fn beside(
-    states: &[Option<ConformalState>],
-    lo: usize,
-    hi: usize,
-) -> (Vec<&ConformalState>, Vec<&ConformalState>) {
+fn beside(states: &[Option<Guess>], lo: usize, hi: usize) -> (Vec<&Guess>, Vec<&Guess>) {
     (
         states[..=lo]
             .iter()
@@ -259,7 +267,7 @@ const BEYOND_GAP: f64 = 0.05;
 
 /// The band map at `rho` for ā in [`from`, `to`] (see the module).
 pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
-    let gap = super::Gap::CYLINDERS;
+    let gap = super::Gap::cylinders();
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
     crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
@@ -314,7 +322,7 @@ fn probe_neutral_points(
     gap: super::Gap,
     map: &mut BandMap,
     grid: &[f64],
-    states: &[Option<ConformalState>],
+    states: &[Option<Guess>],
 ) -> Result<()> {
     let found: Vec<[f64; 2]> = map
         .bands
@@ -362,9 +370,9 @@ fn unscreened_neutral_points<'a>(
     circle: &super::gap::GapAt,
     range: [f64; 2],
     grid: &[f64],
-    states: &'a [Option<ConformalState>],
+    states: &'a [Option<Guess>],
     found: &[[f64; 2]],
-) -> Vec<(usize, f64, Vec<&'a ConformalState>, Vec<&'a ConformalState>)> {
+) -> Vec<(usize, f64, Vec<&'a Guess>, Vec<&'a Guess>)> {
     let [from, to] = range;
     (2..=200)
         .step_by(2)
@@ -399,12 +407,7 @@ fn unscreened_neutral_points<'a>(
 /// from the model's ellipse there (truncations escalated as for every
 /// exact state, [`super::resolved`]), kept when resolved and near the
 /// model's state (s within 5 %).
-fn curve(
-    gap: super::Gap,
-    rho: f64,
-    grid: &[f64],
-    states: &[Option<ConformalState>],
-) -> Vec<CurvePoint> {
+fn curve(gap: super::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>]) -> Vec<CurvePoint> {
     grid.par_iter()
         .zip(states)
         .enumerate()
@@ -469,13 +472,24 @@ pub fn states_at(
     to: f64,
     tries: &[super::Truncation],
 ) -> Result<AllStates> {
-    let gap = super::Gap::CYLINDERS;
+    states_at_on(super::Gap::cylinders(), rho, control, from, to, tries)
+}
+
+/// [`states_at`] on `gap`.
+pub(crate) fn states_at_on(
+    gap: super::Gap,
+    rho: f64,
+    control: crate::control::Hold,
+    from: f64,
+    to: f64,
+    tries: &[super::Truncation],
+) -> Result<AllStates> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
     crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
     let (_, grid, states) = screen(gap, rho, from, to)?;
-    let value = |m: &ConformalState| control.excess(m.a_bar, m.delta_bar, m.force_bar);
-    let brackets: Vec<(&ConformalState, &ConformalState)> = states
+    let value = |m: &Guess| control.excess(m.a_bar, m.delta_bar, m.force_bar);
+    let brackets: Vec<(&Guess, &Guess)> = states
         .windows(2)
         .filter_map(|w| match (&w[0], &w[1]) {
             (Some(l), Some(r)) if value(l) * value(r) <= 0.0 && value(l) != value(r) => {
@@ -591,12 +605,11 @@ pub(crate) fn past_folds_or_band(
         return Err(err);
     }
     type Of<T> = fn(&T) -> f64;
-    let (target, of_state, of_edge, name): (f64, Of<ConformalState>, Of<BandEdge>, &str) =
-        match control {
-            Hold::Force(f) => (f, |s| s.force_bar, |e| e.force_bar, "force"),
-            Hold::Delta(d) => (d, |s| s.delta_bar, |e| e.delta_bar, "delta"),
-            Hold::Size(a) => (a, |s| s.a_bar, |e| e.a_bar, "a"),
-        };
+    let (target, of_state, of_edge, name): (f64, Of<Guess>, Of<BandEdge>, &str) = match control {
+        Hold::Force(f) => (f, |s| s.force_bar, |e| e.force_bar, "force"),
+        Hold::Delta(d) => (d, |s| s.delta_bar, |e| e.delta_bar, "delta"),
+        Hold::Size(a) => (a, |s| s.a_bar, |e| e.a_bar, "a"),
+    };
     let range = [0.85 * a_circle, 1.15 * a_circle];
     let Ok((_, grid, states)) = screen(gap, rho, range[0], range[1]) else {
         return Err(err);
@@ -676,8 +689,8 @@ fn past_folds(
     gap: super::Gap,
     rho: f64,
     control: crate::control::Hold,
-    left: &[&ConformalState],
-    right: &[&ConformalState],
+    left: &[&Guess],
+    right: &[&Guess],
     step: f64,
     tries: &[super::Truncation],
 ) -> PastFolds {
@@ -795,8 +808,8 @@ impl NoBand {
 fn settle(
     gap: super::Gap,
     rho: f64,
-    left: &[&ConformalState],
-    right: &[&ConformalState],
+    left: &[&Guess],
+    right: &[&Guess],
     step: f64,
 ) -> Result<std::result::Result<Band, NoBand>> {
     let lower = fold_from(gap, rho, left, 1.0, right[0].a_bar + BEYOND_GAP, step)?;
@@ -828,7 +841,7 @@ fn settle(
 fn fold_from(
     gap: super::Gap,
     rho: f64,
-    beside: &[&ConformalState],
+    beside: &[&Guess],
     direction: f64,
     limit: f64,
     step: f64,

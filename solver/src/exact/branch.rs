@@ -13,9 +13,10 @@
 //!
 //! Owns: [`Branch`], [`BranchPoint`], [`Event`], the family's
 //! [`Family`] implementation. May use: `control`, `fold`, `exact`, `continuation`, `error`,
-//! `conformal` (the richest member's state as a start).
+//! `exact::seed` (the gap's seed, the richest member's state, as a start).
 
 use super::gap::GapAt;
+use super::seed::Guess;
 use super::{Exact, ExactState, Gap, Route};
 use crate::continuation::{self, EventKind, Family, Linear, On, Settings, Watch};
 use crate::control::Hold;
@@ -97,14 +98,8 @@ impl std::fmt::Display for PastFoldEnd {
 /// exact solver of `gap`, `conformal:8` for the cylinders') load-controlled
 /// pull-off at `rho`, where it has one: the start of the exact pull-off's
 /// trace.
-pub(crate) fn model_pull_off(gap: Gap, rho: f64) -> Option<crate::conformal::ConformalState> {
-    use crate::conformal::Conformal;
-    use crate::fold::FoldCondition;
-    let model: Conformal = crate::conformal::exact_seed(gap)?;
-    model
-        .pull_off(rho, FoldCondition::Load)
-        .ok()
-        .map(|(po, _)| po)
+pub(crate) fn model_pull_off(gap: Gap, rho: f64) -> Option<Guess> {
+    gap.seed?.pull_off(rho)
 }
 
 /// What happens between two traced points.
@@ -442,7 +437,7 @@ impl Exact {
     /// [`super::pull_off_resolved`].
     pub(crate) fn pull_off_load_near(
         &self,
-        model: Option<&crate::conformal::ConformalState>,
+        model: Option<&Guess>,
         coarser: Option<&ExactState>,
     ) -> Result<(ExactState, Vec<Event>)> {
         self.pull_off_found(model, coarser)
@@ -452,7 +447,7 @@ impl Exact {
     /// The pull-off [`Exact::pull_off_load_near`] finds, resolved or not.
     pub(crate) fn pull_off_found(
         &self,
-        model: Option<&crate::conformal::ConformalState>,
+        model: Option<&Guess>,
         coarser: Option<&ExactState>,
     ) -> Result<(ExactState, Vec<Event>)> {
         let from_coarser = coarser.and_then(|c| {
@@ -511,7 +506,7 @@ impl Exact {
     /// from the ellipse through the model's ā and b̄ scaled to that size.
     /// `None` where the model has no pull-off or the start does not
     /// converge there; the trace then starts from the circle's route.
-    fn above_model_pull_off(&self, po: &crate::conformal::ConformalState) -> Option<ExactState> {
+    fn above_model_pull_off(&self, po: &Guess) -> Option<ExactState> {
         let a = po.a_bar + ABOVE_MODEL_PULL_OFF;
         let scale = a / po.a_bar;
         let ellipse = super::Contour::ellipse(a, po.b_bar * scale, self.truncation.modes);
@@ -527,8 +522,8 @@ impl Exact {
     /// between the circle's neutral points of modes 4 and 6, where the
     /// near-elliptic arm that carries the pull-off lies.
     pub(crate) fn trace_start(&self) -> f64 {
-        if let Some(m) = crate::conformal::exact_seed(self.gap_source) {
-            return m.family().trace_start_a;
+        if let Some(m) = self.gap().seed {
+            return m.trace_start();
         }
         0.5 * (self.circle.neutral_point(4) + self.circle.neutral_point(6))
     }
@@ -792,10 +787,8 @@ impl Exact {
     /// (within 2 % in ā, 5 % in s) and near-elliptical (boundary error
     /// below 1e-2); the caller decides whether it is resolved.
     fn from_model(&self, control: Hold) -> Option<ExactState> {
-        use crate::conformal::Conformal;
-        // the seeding family's largest member
-        let model: Conformal = crate::conformal::exact_seed(self.gap())?;
-        let guess = model.solve(self.rho, control).ok()?;
+        // the seeding model (the seeding family's largest member)
+        let guess = self.gap().seed?.state(self.rho, control).ok()?;
         let nm = self.truncation.modes;
         let ellipse = super::Contour::ellipse(guess.a_bar, guess.b_bar, nm);
         // Newton at the control itself from the model's ellipse: the state

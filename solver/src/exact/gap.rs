@@ -45,7 +45,9 @@ pub struct Term {
 }
 
 /// A gap, given by a particular solution of ΔP = φ̄ − δ̄ (2) and the name
-/// of the family file it comes from.
+/// of the family file it comes from, with the model that gives the exact
+/// solver its starting guesses, handed in by the layer above
+/// ([`super::seed`]).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Gap {
     /// Where it comes from: `cylinders` for the paper's (1), else the
@@ -53,10 +55,13 @@ pub(crate) struct Gap {
     pub name: &'static str,
     /// P's monomials.
     pub particular: &'static [Term],
+    /// The model that seeds the exact solver of this gap, if any.
+    pub seed: Option<&'static dyn super::seed::Seed>,
 }
 
 impl PartialEq for Gap {
-    /// The same particular solution, term for term in any order.
+    /// The same particular solution, term for term in any order (whatever
+    /// the seed).
     fn eq(&self, other: &Gap) -> bool {
         let sorted = |g: &Gap| {
             let mut t: Vec<Term> = g.particular.to_vec();
@@ -82,8 +87,11 @@ impl Gap {
     /// The gap (1) of two crossed cylinders in the units (17),
     /// φ̄ = X²/2 + μY²/2, with P = X⁴/24 + μY⁴/24 − δ̄(X² + Y²)/4: the
     /// problem of the paper.
+    /// (Unseeded: `Gap::cylinders()`, given by the layer that knows the
+    /// registry, adds the seed.)
     pub(crate) const CYLINDERS: Gap = Gap {
         name: "cylinders",
+        seed: None,
         particular: &[
             term(4, 0, 0, 0, 1, 24),
             term(0, 4, 1, 0, 1, 24),
@@ -473,6 +481,7 @@ mod tests {
         let quartic = Gap {
             name: "quartic",
             particular: &QUARTIC,
+            seed: None,
         };
         assert!(quartic != Gap::CYLINDERS);
         let at = quartic.at(0.6).unwrap();
@@ -526,6 +535,7 @@ mod tests {
         let e = Gap {
             name: "wrong",
             particular: &WRONG,
+            seed: None,
         }
         .at(1.0)
         .unwrap_err();
@@ -533,20 +543,23 @@ mod tests {
         static ODD: [Term; 1] = [term(3, 0, 0, 0, 1, 6)];
         assert!(Gap {
             name: "odd",
-            particular: &ODD
+            particular: &ODD,
+            seed: None,
         }
         .at(1.0)
         .is_err());
         static NO_DBAR: [Term; 1] = [term(4, 0, 0, 0, 1, 24)];
         assert!(Gap {
             name: "no_dbar",
-            particular: &NO_DBAR
+            particular: &NO_DBAR,
+            seed: None,
         }
         .at(1.0)
         .is_err());
         assert!(Gap {
             name: "empty",
-            particular: &[]
+            particular: &[],
+            seed: None,
         }
         .at(1.0)
         .is_err());

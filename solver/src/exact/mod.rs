@@ -35,8 +35,9 @@
 //! routes to a state and the continuation in ρ) is `resolve`.
 //!
 //! Owns: [`ExactState`], [`Exact`], [`Truncation`], [`Contour`]. May use: `control`, `error`, `newton` (the shared chord iteration),
-//! nalgebra; no model of the ellipse (it is the reference for them), except
-//! as a starting guess supplied by the caller.
+//! nalgebra; no model (it is the reference for them): starting guesses come
+//! with the gap from the layer above ([`seed`]), which also defines
+//! `Gap::cylinders()`, the cylinders' gap with its seed.
 
 pub mod bands;
 pub(crate) mod bie;
@@ -44,6 +45,7 @@ pub mod branch;
 pub(crate) mod gap;
 pub(crate) mod linear;
 mod resolve;
+pub(crate) mod seed;
 pub mod stability;
 
 use crate::control::Hold;
@@ -390,9 +392,10 @@ pub(crate) const MAX_MODES: usize = 2 * MAX_USER_MODES;
 pub(crate) const MAX_POINTS: usize = 2048;
 
 impl Exact {
-    /// The exact problem at `rho` ∈ (0, 1] on the cylinders' gap (1).
+    /// The exact problem at `rho` ∈ (0, 1] on the cylinders' gap (1),
+    /// seeded by the registry's family on it (`Gap::cylinders`).
     pub fn new(rho: f64, truncation: Truncation) -> Result<Exact> {
-        Exact::on(Gap::CYLINDERS, rho, truncation)
+        Exact::on(Gap::cylinders(), rho, truncation)
     }
 
     /// The exact problem at `rho` ∈ (0, 1] on `gap`.

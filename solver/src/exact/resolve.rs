@@ -197,7 +197,7 @@ pub fn default_tries() -> Vec<Truncation> {
 /// continued in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
 /// that is found ([`pull_off_continued_in_rho`]).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
-    pull_off_resolved_on(Gap::CYLINDERS, rho)
+    pull_off_resolved_on(Gap::cylinders(), rho)
 }
 
 /// [`pull_off_resolved`] on `gap`.
@@ -257,7 +257,7 @@ pub fn pull_off_continued_in_rho(
 
 /// [`pull_off_resolved`] with the truncations `tries`.
 pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<branch::Event>)> {
-    pull_off_on(Gap::CYLINDERS, rho, tries)
+    pull_off_on(Gap::cylinders(), rho, tries)
 }
 
 /// [`pull_off_with`] on `gap`.
@@ -283,7 +283,7 @@ pub(crate) fn pull_off_on(
 /// continued in ρ at the control from the state at a larger ρ
 /// ([`continued_in_rho`]).
 pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
-    at_resolved_on(Gap::CYLINDERS, rho, control)
+    at_resolved_on(Gap::cylinders(), rho, control)
 }
 
 /// [`at_resolved`] on `gap`.
@@ -292,10 +292,43 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
     match searched_on(gap, rho, control, &default_tries()) {
         // not reached, and not in a band: from the state at a larger ρ
         // (a value in a band, Error::InBand, is answered as it is)
-        Err(Error::NoState(why)) => from_larger_rho(gap, rho, control)
-            .map_err(|more| Error::NoState(format!("{why}; {}", more.detail()))),
+        Err(Error::NoState(why)) => from_larger_rho(gap, rho, control).or_else(|more| {
+            screened(gap, rho, control).map_err(|last| {
+                Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail()))
+            })
+        }),
         other => other,
     }
+}
+
+/// The last route to a state at `control`: every near-elliptic state the
+/// seed's screen finds at that value ([`bands::states_at_on`], the search
+/// of `thinjkr exact solve --all`, ā from 1 to the larger of 4 and 1.2
+/// times the circle's ā), where no route before it finds one. Of several,
+/// the one nearest an ellipse among those where the seed's states cross
+/// the control (else past a fold).
+fn screened(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
+    let a_circle = branch::circle_a_bar(&gap.at(1.0)?, control);
+    let to = if a_circle.is_finite() {
+        (1.2 * a_circle).max(4.0)
+    } else {
+        4.0
+    };
+    let all = bands::states_at_on(gap, rho, control, 1.0, to.min(10.9), &default_tries())?;
+    all.states
+        .into_iter()
+        .min_by(|x, y| {
+            let past = |s: &ExactState| s.route == Route::PastFold;
+            (past(x), x.deviation_from_ellipse).partial_cmp(&(past(y), y.deviation_from_ellipse))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })
+        .ok_or_else(|| {
+            Error::NoState(format!(
+                "the screen of {} for a from 1 to {} finds no near-elliptic state at {control} either",
+                gap.seed.map_or("no seed".into(), |s| s.name()),
+                crate::error::rounded(to.min(10.9))
+            ))
+        })
 }
 
 /// The exact state at `control` with the truncations `tries`: by every
@@ -304,7 +337,7 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
 /// there either, and the control lies in a band, the error says so
 /// ([`bands::past_folds_or_band`]).
 pub fn at_searched(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
-    searched_on(Gap::CYLINDERS, rho, control, tries)
+    searched_on(Gap::cylinders(), rho, control, tries)
 }
 
 /// [`at_searched`] on `gap`.

@@ -1,0 +1,116 @@
+//! The contour families as the exact solver's seeds: the largest member of
+//! the family that seeds the exact solver of its gap (`seeds_exact` in its
+//! data file; `conformal:8` for the cylinders) gives the solver its
+//! starting guesses through the solver's own [`Seed`] interface, handed in
+//! with the gap ([`Family::exact_gap`], `Gap::cylinders`), so that the
+//! exact solver names no model.
+//!
+//! Owns: the `Seed` implementation of a member, `Gap::cylinders`, the
+//! seeds' lookup. May use: `conformal`, `exact` (its `Seed`, `Guess` and
+//! `Gap`), `control`, `fold`, `error`.
+
+use super::{families, Conformal, ConformalState, Family};
+use crate::control::Hold;
+use crate::exact::seed::{Guess, Seed};
+use crate::exact::Gap;
+use crate::fold::FoldCondition;
+use std::sync::OnceLock;
+
+fn guess(st: &ConformalState) -> Guess {
+    Guess {
+        a_bar: st.a_bar,
+        b_bar: st.b_bar,
+        s: st.s,
+        delta_bar: st.delta_bar,
+        force_bar: st.force_bar,
+        bc_defect: st.bc_defect,
+    }
+}
+
+impl Seed for Conformal {
+    fn name(&self) -> String {
+        Conformal::name(self)
+    }
+    fn trace_start(&self) -> f64 {
+        self.family().trace_start_a
+    }
+    fn state(&self, rho: f64, hold: Hold) -> crate::Result<Guess> {
+        self.solve(rho, hold).map(|st| guess(&st))
+    }
+    fn pull_off(&self, rho: f64) -> Option<Guess> {
+        Conformal::pull_off(self, rho, FoldCondition::Load)
+            .ok()
+            .map(|(st, _)| guess(&st))
+    }
+}
+
+/// Each family's seed (its largest member, where it seeds the exact solver
+/// of its gap), in the registry's order, made once.
+fn seeds() -> &'static [Option<&'static dyn Seed>] {
+    static SEEDS: OnceLock<Vec<Option<&'static dyn Seed>>> = OnceLock::new();
+    SEEDS.get_or_init(|| {
+        families()
+            .iter()
+            .enumerate()
+            .map(|(i, f)| {
+                let largest = f.members.iter().map(|t| t.terms).max()?;
+                let m = Conformal::in_family(i, largest)
+                    .ok()
+                    .filter(|_| f.seeds_exact)?;
+                Some(&*Box::leak(Box::new(m)) as &'static dyn Seed)
+            })
+            .collect()
+    })
+}
+
+/// The seed of the exact solver of `gap`: the largest member of the family
+/// on that gap that seeds it, if the registry has one.
+pub(crate) fn seed_of(gap: &Gap) -> Option<&'static dyn Seed> {
+    families()
+        .iter()
+        .zip(seeds())
+        .find(|(f, s)| s.is_some() && f.unseeded_gap() == *gap)
+        .and_then(|(_, s)| *s)
+}
+
+/// The family whose largest member seeds the exact solver of `gap`.
+pub(crate) fn seeding_family(gap: &Gap) -> Option<&'static Family> {
+    families()
+        .iter()
+        .zip(seeds())
+        .find(|(f, s)| s.is_some() && f.unseeded_gap() == *gap)
+        .map(|(f, _)| *f)
+}
+
+impl Gap {
+    /// The cylinders' gap (1) with its seed from the registry (the family
+    /// on it that seeds the exact solver, `conformal:8`).
+    pub(crate) fn cylinders() -> Gap {
+        Gap {
+            seed: seed_of(&Gap::CYLINDERS),
+            ..Gap::CYLINDERS
+        }
+    }
+}
+
+impl Family {
+    /// The gap its members solve, without looking up its seed (usable while
+    /// the registry is being read).
+    pub(crate) fn unseeded_gap(&self) -> Gap {
+        Gap {
+            name: self.name,
+            particular: self.particular_terms,
+            seed: None,
+        }
+    }
+
+    /// The gap its members solve, as data for the exact solver, with the
+    /// seed of that gap's exact solver.
+    pub(crate) fn exact_gap(&self) -> Gap {
+        let g = self.unseeded_gap();
+        Gap {
+            seed: seed_of(&g),
+            ..g
+        }
+    }
+}
