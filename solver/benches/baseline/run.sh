@@ -16,6 +16,9 @@ if [ ! -f "$base/solver/Cargo.toml" ]; then
     rm -rf "$base"
     mkdir -p "$base"
     git -C "$root" archive "$base_commit" | tar -x -C "$base"
+    # one lockfile cannot hold two path packages of one name and version:
+    # the baseline's version is told apart
+    sed -i 's/^version.workspace = true$/version = "0.0.0-baseline"/' "$base/solver/Cargo.toml"
 fi
 mkdir -p "$bench/benches" "$bench/src"
 cat > "$bench/Cargo.toml" <<EOF
