@@ -117,12 +117,13 @@ fn items_of(rho: &[f64], value: &[f64], control: &str) -> Vec<Item> {
 }
 
 /// Every item solved by the one batch of the solver (`batch::solve_all`),
-/// as (a_bar, b_bar, s, delta_bar, force_bar, bc_error) or the error.
+/// as (a_bar, b_bar, s, delta_bar, force_bar, bc_error) with the state's
+/// warning ('' for none) or the error.
 fn rows_of<S>(
     model: &S,
     items: &[Item],
     err: impl Fn(Error) -> (String, String),
-) -> Vec<Result<[f64; 6], (String, String)>>
+) -> Vec<Row>
 where
     S: thinjkr::batch::Solves,
     for<'a> thinjkr::batch::Row: From<&'a S::State>,
@@ -132,14 +133,17 @@ where
         .map(|r| {
             r.map(|st| {
                 let row = thinjkr::batch::Row::from(&st);
-                [
-                    row.a_bar,
-                    row.b_bar,
-                    row.s,
-                    row.delta_bar,
-                    row.force_bar,
-                    row.bc_error,
-                ]
+                (
+                    [
+                        row.a_bar,
+                        row.b_bar,
+                        row.s,
+                        row.delta_bar,
+                        row.force_bar,
+                        row.bc_error,
+                    ],
+                    row.warning,
+                )
             })
             .map_err(&err)
         })
@@ -155,9 +159,10 @@ fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> Py
     detached(py, move || solve_one(m, rho, &control, value))?.map_err(raw)
 }
 
-/// (a_bar, b_bar, s, delta_bar, force_bar, bc_error) or the error (kind,
-/// message), one point each.
-type Row = Result<[f64; 6], (String, String)>;
+/// (a_bar, b_bar, s, delta_bar, force_bar, bc_error) with the state's
+/// warnings joined by "; " ('' for none), or the error (kind, message),
+/// one point each.
+type Row = Result<([f64; 6], String), (String, String)>;
 
 /// Points per chunk of an array call of an ellipse model ([`solve_many`]).
 const ELLIPSE_CHUNK: usize = 16_384;
@@ -193,22 +198,36 @@ fn chunk_rows(
                             ("usage".to_string(), format!("the state has no {}", keys[0]))
                         })
                 };
-                Ok([
-                    g(&["a_bar"])?,
-                    g(&["b_bar"])?,
-                    g(&["s"])?,
-                    g(&["delta_bar"])?,
-                    g(&["force_bar"])?,
-                    g(&["bc_error", "bc_defect"])?,
-                ])
+                let warning = j
+                    .get("warnings")
+                    .and_then(|w| w.as_array())
+                    .map(|w| {
+                        w.iter()
+                            .filter_map(|x| x.as_str())
+                            .collect::<Vec<_>>()
+                            .join("; ")
+                    })
+                    .unwrap_or_default();
+                Ok((
+                    [
+                        g(&["a_bar"])?,
+                        g(&["b_bar"])?,
+                        g(&["s"])?,
+                        g(&["delta_bar"])?,
+                        g(&["force_bar"])?,
+                        g(&["bc_error", "bc_defect"])?,
+                    ],
+                    warning,
+                ))
             })
             .collect(),
     }
 }
 
 /// Many states on all cores: arrays (a_bar, b_bar, s, delta_bar,
-/// force_bar, bc_error) with NaN where a point has no state, and for each
-/// point its error (kind, message) or None.
+/// force_bar, bc_error) with NaN where a point has no state, for each
+/// point its error (kind, message) or None, and its warning ('' for none: a
+/// doubtful state's reason, as the command line prints it).
 #[pyfunction]
 #[allow(clippy::type_complexity)]
 fn solve_many<'py>(
@@ -217,7 +236,7 @@ fn solve_many<'py>(
     rho: PyReadonlyArray1<'py, f64>,
     control: &str,
     value: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>)> {
+) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>, Vec<String>)> {
     let m = choice(model)?;
     check_control(control)?;
     let rho = rho.as_slice()?.to_vec();
@@ -251,19 +270,22 @@ fn solve_many<'py>(
     let names = ["a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"];
     let mut cols = vec![Vec::with_capacity(n); names.len()];
     let mut errors = Vec::with_capacity(n);
+    let mut warnings = Vec::with_capacity(n);
     for r in rows {
         match r {
-            Ok(v) => {
+            Ok((v, w)) => {
                 for (c, x) in cols.iter_mut().zip(v) {
                     c.push(x);
                 }
                 errors.push(None);
+                warnings.push(w);
             }
             Err(e) => {
                 for c in cols.iter_mut() {
                     c.push(f64::NAN);
                 }
                 errors.push(Some(e));
+                warnings.push(String::new());
             }
         }
     }
@@ -271,7 +293,7 @@ fn solve_many<'py>(
     for (name, c) in names.iter().zip(cols) {
         d.set_item(name, c.into_pyarray(py))?;
     }
-    Ok((d, errors))
+    Ok((d, errors, warnings))
 }
 
 /// The pull-off under `control` ("load" or "displacement"), as JSON: the

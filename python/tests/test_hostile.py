@@ -159,7 +159,23 @@ def test_a_doubtful_state_is_answered_with_a_warning_not_in_silence():
     # conformal:8's displacement-controlled pull-off misses (3)2 by about 0.2
     # (issue 31, item 1): doubtful at both points, answered with one warning
     with pytest.warns(thinjkr.ThinJkrWarning, match=r"2 of 2 states carry warnings"):
-        thinjkr.pull_off([0.9, 0.5], model="conformal:8", control="displacement")
+        po = thinjkr.pull_off([0.9, 0.5], model="conformal:8", control="displacement")
+    assert po.doubtful.all() and all("(3)2" in w for w in po.warning)
+    # an array of solve: the doubtful point is marked and says why, the rest not
+    with pytest.warns(thinjkr.ThinJkrWarning, match=r"1 of 2 states carry warnings"):
+        many = thinjkr.solve([0.515, 0.8], force=[10.0, 0.0], model="conformal:8")
+    assert list(many.doubtful) == [True, False]
+    assert "by up to 0.21" in many.warning[0] and many.warning[1] == ""
+    assert many[0].warning == many.warning[0]
+    assert "warning" in many.to_pandas().columns if _has_pandas() else True
     with warnings.catch_warnings():
         warnings.simplefilter("error", thinjkr.ThinJkrWarning)
         thinjkr.pull_off([0.8, 0.5], model="conformal:8")
+
+
+def _has_pandas():
+    try:
+        import pandas  # noqa: F401
+        return True
+    except ImportError:
+        return False

@@ -103,7 +103,8 @@ pub fn solve_all<S: Solves + ?Sized>(model: &S, items: &[Item]) -> Vec<Result<S:
 
 /// The header of the output CSV.
 #[cfg(feature = "cli")]
-pub(crate) const CSV_HEADER: &str = "line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error";
+pub(crate) const CSV_HEADER: &str =
+    "line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error,warning";
 
 /// Parse one input line `rho,control,value` (control `delta` or `force`).
 /// Only the first line may be skipped (`None`), and only when it is the
@@ -177,7 +178,7 @@ pub fn decode_line(number: usize, raw: &[u8]) -> std::result::Result<&str, Error
 /// The numbers of one output row: the state's, with ξ and p₀ where the
 /// model has them (the models of the ellipse), and its boundary error:
 /// (14) for the ellipse, max |∂p̄/∂ν − 1| on the contour for `conformal:K`.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Row {
     /// ā.
     pub a_bar: f64,
@@ -195,6 +196,9 @@ pub struct Row {
     pub p0: Option<f64>,
     /// The boundary error.
     pub bc_error: f64,
+    /// Why the state is doubtful, in words joined by "; " (empty when it
+    /// is not: a contour member's [`crate::conformal::ConformalState::warnings`]).
+    pub warning: String,
 }
 
 impl From<&State> for Row {
@@ -208,6 +212,7 @@ impl From<&State> for Row {
             xi: Some(s.xi),
             p0: Some(s.p0),
             bc_error: s.bc_error,
+            warning: String::new(),
         }
     }
 }
@@ -223,7 +228,19 @@ impl From<&crate::conformal::ConformalState> for Row {
             xi: None,
             p0: None,
             bc_error: s.bc_defect,
+            warning: s.warnings.join("; "),
         }
+    }
+}
+
+/// A CSV field: empty, or the text in double quotes (its own double quotes
+/// made single).
+#[cfg(feature = "cli")]
+pub(crate) fn quoted(text: &str) -> String {
+    if text.is_empty() {
+        String::new()
+    } else {
+        format!("\"{}\"", text.replace('"', "'"))
     }
 }
 
@@ -243,7 +260,7 @@ pub(crate) fn csv_row_values(number: usize, item: Option<&Item>, result: &Result
     let opt = |v: Option<f64>| v.map(|x| format!("{x:?}")).unwrap_or_default();
     match result {
         Ok(s) => format!(
-            "{number},{rho},{control},{value},{:?},{:?},{:?},{:?},{:?},{},{},{:?},",
+            "{number},{rho},{control},{value},{:?},{:?},{:?},{:?},{:?},{},{},{:?},,{}",
             s.a_bar,
             s.b_bar,
             s.s,
@@ -251,11 +268,12 @@ pub(crate) fn csv_row_values(number: usize, item: Option<&Item>, result: &Result
             s.force_bar,
             opt(s.xi),
             opt(s.p0),
-            s.bc_error
+            s.bc_error,
+            quoted(&s.warning)
         ),
         Err(e) => format!(
-            "{number},{rho},{control},{value},,,,,,,,,\"{}\"",
-            e.to_string().replace('"', "'")
+            "{number},{rho},{control},{value},,,,,,,,,{},",
+            quoted(&e.to_string())
         ),
     }
 }

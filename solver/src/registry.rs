@@ -545,6 +545,7 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
                 xi: None,
                 p0: None,
                 bc_error: s.bc_error,
+                warning: String::new(),
             },
         }
     }

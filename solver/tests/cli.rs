@@ -191,7 +191,9 @@ fn csv_has_a_header() {
     let mut lines = out.lines();
     assert_eq!(
         lines.next(),
-        Some("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load")
+        Some(
+            "model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load,warning"
+        )
     );
     assert_eq!(lines.count(), 10);
 }

@@ -81,6 +81,17 @@ def _warn(d: Dict[str, Any], stacklevel: int = 3) -> None:
         _warnings.warn(w, ThinJkrWarning, stacklevel=stacklevel)
 
 
+def _warn_count(doubtful: int, size: int) -> None:
+    """One :class:`ThinJkrWarning` for an array call with doubtful points."""
+    if doubtful:
+        _warnings.warn(
+            f"{doubtful} of {size} states carry warnings (doubtful states: States.warning says "
+            "why, States.doubtful marks them)",
+            ThinJkrWarning,
+            stacklevel=4,
+        )
+
+
 def _call(f, *args):
     try:
         return f(*args)
@@ -151,7 +162,7 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
         return _state_from(d)
     r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
     shape = r.shape
-    cols, errors = _call(
+    cols, errors, warns = _call(
         _thinjkr.solve_many,
         model,
         _np.ascontiguousarray(r.ravel()),
@@ -159,6 +170,8 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
         _np.ascontiguousarray(v.ravel()),
     )
     arrays = {k: _np.asarray(x).reshape(shape) for k, x in cols.items()}
+    arrays["warning"] = _np.array(warns, dtype=object).reshape(shape)
+    _warn_count(int((arrays["warning"] != "").sum()), r.size)
     kinds = _np.array([e[0] if e else "" for e in errors], dtype=object).reshape(shape)
     msgs = _np.array([e[1] if e else "" for e in errors], dtype=object).reshape(shape)
     return States(model=model, rho=r.copy(), arrays=arrays, error=msgs, error_kind=kinds)
@@ -177,13 +190,13 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
     arrays = {k: _np.full(rho.shape, _np.nan) for k in keys}
     kinds = _np.full(rho.shape, "", dtype=object)
     msgs = _np.full(rho.shape, "", dtype=object)
-    doubtful = 0
+    warning = _np.full(rho.shape, "", dtype=object)
     for i in _np.ndindex(rho.shape):
         try:
-            with _warnings.catch_warnings(record=True) as caught:
-                _warnings.simplefilter("always", ThinJkrWarning)
+            with _warnings.catch_warnings():
+                _warnings.simplefilter("ignore", ThinJkrWarning)
                 st = one(float(rho[i]))
-            doubtful += any(issubclass(w.category, ThinJkrWarning) for w in caught)
+            warning[i] = "; ".join(st.to_dict().get("warnings") or ())
         except ThinJkrError as e:
             if e.kind == "usage":
                 raise
@@ -195,13 +208,8 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
             fields["bc_error"] = fields["bc_defect"]
         for k in keys:
             arrays[k][i] = fields[k]
-    if doubtful:
-        _warnings.warn(
-            f"{doubtful} of {rho.size} states carry warnings (doubtful states: each point's "
-            "State, e.g. from a scalar call, says why)",
-            ThinJkrWarning,
-            stacklevel=3,
-        )
+    arrays["warning"] = warning
+    _warn_count(int((warning != "").sum()), rho.size)
     return States(model=model, rho=rho.copy(), arrays=arrays, error=msgs, error_kind=kinds)
 
 

@@ -123,7 +123,8 @@ class State:
 
 
 # the arrays of a States, in the order its dict and DataFrame give them
-_ARRAYS = ("rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "error", "error_kind")
+_ARRAYS = ("rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "error", "error_kind",
+           "warning")
 
 
 class States:
@@ -131,15 +132,25 @@ class States:
     inputs (``rho``, ``a_bar``, ``b_bar``, ``s``, ``delta_bar``,
     ``force_bar``, ``bc_error``), NaN where a point has no state;
     ``error`` holds each point's reason ('' where it solved) and
-    ``error_kind`` the solver's kind of failure."""
+    ``error_kind`` the solver's kind of failure; ``warning`` says why a
+    point's state is doubtful ('' where it is not: a contour member's
+    closure missing (3)₂ by more than 0.1, or b > a), and ``doubtful``
+    marks those points."""
 
     def __init__(self, model: str, rho, arrays: Dict[str, _np.ndarray], error, error_kind):
         self.model = model
         self.rho = rho
         for k, v in arrays.items():
             setattr(self, k, v)
+        if "warning" not in arrays:
+            self.warning = _np.full(_np.shape(rho), "", dtype=object)
         self.error = error
         self.error_kind = error_kind
+
+    @property
+    def doubtful(self) -> _np.ndarray:
+        """Where a state was found but carries a warning (``warning``)."""
+        return self.ok & (self.warning != "")
 
     @property
     def shape(self):
@@ -198,9 +209,12 @@ class States:
 
     def _repr_html_(self) -> str:
         failed = int((~self.ok).sum())
-        rows = [("model", self.model), ("shape", self.shape), ("solved", self.rho.size - failed), ("without a state", failed)]
+        rows = [("model", self.model), ("shape", self.shape), ("solved", self.rho.size - failed), ("without a state", failed),
+                ("doubtful (see warning)", int(self.doubtful.sum()))]
         return "<b>States</b>" + _html(rows)
 
     def __repr__(self) -> str:
         failed = int((~self.ok).sum())
-        return f"States(model={self.model!r}, shape={self.shape}, {self.rho.size - failed} solved, {failed} without a state)"
+        doubtful = int(self.doubtful.sum())
+        more = f", {doubtful} doubtful" if doubtful else ""
+        return f"States(model={self.model!r}, shape={self.shape}, {self.rho.size - failed} solved, {failed} without a state{more})"

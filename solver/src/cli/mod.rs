@@ -149,7 +149,7 @@ enum Command {
     },
     /// Solve many inputs: a CSV `rho,control,value` (control delta or force) on stdin, one state per line on stdout, in input order, on all cores.
     #[command(
-        after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error. A line that cannot be read or solved gets an empty state and the error (naming the line) in the last column; the other lines are still written. A progress count is shown on stderr when it is a terminal."
+        after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error,warning. A line that cannot be read or solved gets an empty state and the error (naming the line) in the column error; the other lines are still written. A doubtful state (a contour member's closure missing (3)2 by more than 0.1, or b > a) has why in the column warning. A progress count is shown on stderr when it is a terminal."
     )]
     Batch {
         #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(false, " (a contour family's bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty)"))]
@@ -880,7 +880,9 @@ fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) ->
         outln!("{}", doc.to_json());
         return Ok(());
     }
-    outln!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load");
+    outln!(
+        "model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load,warning"
+    );
     let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
     for (i, st) in cv.states.iter().enumerate() {
         // the numbers as a batch row has them (bc_error: (14) for the
@@ -903,14 +905,15 @@ fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) ->
             AnyState::Exact(_) => ("exact".into(), false, (None, None)),
         };
         outln!(
-            "{name},{},{},{},{},{},{beyond},{},{}",
+            "{name},{},{},{},{},{},{beyond},{},{},{}",
             r.delta_bar,
             r.force_bar,
             r.a_bar,
             r.s,
             r.bc_error,
             flag(stable.0),
-            flag(stable.1)
+            flag(stable.1),
+            crate::batch::quoted(&r.warning)
         );
     }
     Ok(())

@@ -30,6 +30,7 @@
 
 pub(crate) mod load;
 mod seed;
+#[cfg(feature = "figures")]
 pub(crate) use seed::seeding_family;
 pub mod poly;
 mod trace;

@@ -74,6 +74,7 @@ pub(crate) fn seed_of(gap: &Gap) -> Option<&'static dyn Seed> {
 }
 
 /// The family whose largest member seeds the exact solver of `gap`.
+#[cfg(feature = "figures")]
 pub(crate) fn seeding_family(gap: &Gap) -> Option<&'static Family> {
     families()
         .iter()
