@@ -226,8 +226,9 @@ fn chunk_rows(
 
 /// Many states on all cores: arrays (a_bar, b_bar, s, delta_bar,
 /// force_bar, bc_error) with NaN where a point has no state, for each
-/// point its error (kind, message) or None, and its warning ('' for none: a
-/// doubtful state's reason, as the command line prints it).
+/// point its error (kind, message) or None, and the warnings (index, why)
+/// of the points whose state is doubtful (as the command line prints them;
+/// only those, so that a million sound states cost no strings).
 #[pyfunction]
 #[allow(clippy::type_complexity)]
 fn solve_many<'py>(
@@ -236,7 +237,7 @@ fn solve_many<'py>(
     rho: PyReadonlyArray1<'py, f64>,
     control: &str,
     value: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>, Vec<String>)> {
+) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>, Vec<(usize, String)>)> {
     let m = choice(model)?;
     check_control(control)?;
     let rho = rho.as_slice()?.to_vec();
@@ -270,22 +271,23 @@ fn solve_many<'py>(
     let names = ["a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"];
     let mut cols = vec![Vec::with_capacity(n); names.len()];
     let mut errors = Vec::with_capacity(n);
-    let mut warnings = Vec::with_capacity(n);
-    for r in rows {
+    let mut warnings = Vec::new();
+    for (i, r) in rows.into_iter().enumerate() {
         match r {
             Ok((v, w)) => {
                 for (c, x) in cols.iter_mut().zip(v) {
                     c.push(x);
                 }
                 errors.push(None);
-                warnings.push(w);
+                if !w.is_empty() {
+                    warnings.push((i, w));
+                }
             }
             Err(e) => {
                 for c in cols.iter_mut() {
                     c.push(f64::NAN);
                 }
                 errors.push(Some(e));
-                warnings.push(String::new());
             }
         }
     }

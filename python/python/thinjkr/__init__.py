@@ -170,8 +170,11 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
         _np.ascontiguousarray(v.ravel()),
     )
     arrays = {k: _np.asarray(x).reshape(shape) for k, x in cols.items()}
-    arrays["warning"] = _np.array(warns, dtype=object).reshape(shape)
-    _warn_count(int((arrays["warning"] != "").sum()), r.size)
+    warning = _np.full(r.size, "", dtype=object)
+    for i, w in warns:
+        warning[i] = w
+    arrays["warning"] = warning.reshape(shape)
+    _warn_count(len(warns), r.size)
     kinds = _np.array([e[0] if e else "" for e in errors], dtype=object).reshape(shape)
     msgs = _np.array([e[1] if e else "" for e in errors], dtype=object).reshape(shape)
     return States(model=model, rho=r.copy(), arrays=arrays, error=msgs, error_kind=kinds)
