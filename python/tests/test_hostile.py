@@ -179,3 +179,18 @@ def _has_pandas():
         return True
     except ImportError:
         return False
+
+
+def test_an_exact_answer_has_the_same_shape_whichever_way_it_is_asked():
+    """Issue 33, item 8: pull_off(rho, model="exact") names its model and
+    carries its contour, and thinjkr.exact.pull_off is a PullOff (control
+    "load") like it, with the same numbers."""
+    a = thinjkr.pull_off(0.9, model="exact")
+    b = thinjkr.exact.pull_off(0.9)
+    assert isinstance(a, thinjkr.PullOff) and isinstance(b, thinjkr.PullOff)
+    assert a.model == b.model == "exact"
+    assert a.control == b.control == "load"
+    assert a.force_bar == b.force_bar and a.a_bar == b.a_bar
+    assert len(a.x) == len(a.y) == 256 and np.allclose(a.x, b.x)
+    st = thinjkr.solve(0.9, force=0.0, model="exact")
+    assert st.model == "exact" and len(st.x) == 256

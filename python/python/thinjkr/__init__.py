@@ -60,8 +60,16 @@ __all__ = [
 
 __version__ = "0.1.0"
 
-def _state_from(d: Dict[str, Any]) -> State:
+def _state_from(d: Dict[str, Any], model: Optional[str] = None) -> State:
+    """A :class:`State` from its JSON: with the model's name where the JSON
+    has none (an exact state), and where it has a contour series (an exact
+    state), the contour sampled as ``x``, ``y`` at 256 angles."""
     fields = dict(d)
+    if model is not None:
+        fields.setdefault("model", model)
+    if isinstance(d.get("contour"), dict):
+        x, y = _call(_thinjkr.exact_contour, _json.dumps(d["contour"]), 256)
+        fields["x"], fields["y"] = _np.asarray(x), _np.asarray(y)
     stab = fields.pop("stability", None)
     if isinstance(stab, dict) and "displacement" in stab and "load" in stab:
         if isinstance(stab["displacement"], list):  # an exact state: unstable modes
@@ -159,7 +167,7 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
     if _np.ndim(rho) == 0 and _np.ndim(value) == 0:
         d = _json.loads(_call(_thinjkr.solve, model, rho, control, value))
         _warn(d)
-        return _state_from(d)
+        return _state_from(d, model)
     r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
     shape = r.shape
     cols, errors, warns = _call(
@@ -236,7 +244,7 @@ def pull_off(rho, *, model: str = "max", control: str = "load"):
         return _many(rho, model, lambda r: pull_off(r, model=model, control=control))
     d = _json.loads(_call(_thinjkr.pull_off, model, rho, control))
     _warn(d["state"])
-    st = _state_from(d["state"])
+    st = _state_from(d["state"], model)
     fields = st.to_dict()
     fields["control"] = control
     for k in ("basis", "basis_words"):

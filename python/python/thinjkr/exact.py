@@ -10,7 +10,7 @@ import json as _json
 import numpy as _np
 
 from . import _thinjkr
-from . import _call, _control, _number, _state_from, _whole, State
+from . import _call, _control, _number, _state_from, _whole, PullOff, State
 
 
 def _with_contour(d, points: int) -> State:
@@ -39,11 +39,12 @@ def zero_force(rho: float, *, points: int = 256, modes=None) -> State:
     return solve(rho, force=0.0, points=points, modes=modes)
 
 
-def pull_off(rho: float, *, points: int = 256, modes=None) -> State:
+def pull_off(rho: float, *, points: int = 256, modes=None) -> PullOff:
     """The exact load-controlled pull-off (the first minimum of F̄ along the
-    family through ā = 2.6)."""
+    family through ā = 2.6), a :class:`PullOff` with ``control`` "load", as
+    ``thinjkr.pull_off(rho, model="exact")`` gives it."""
     d = _json.loads(_call(_thinjkr.exact, _number("rho", rho), "pull_off", 0.0, _modes(modes)))
-    return _with_contour(d, points)
+    return PullOff({**_with_contour(d, points).to_dict(), "control": "load"})
 
 
 def _modes(modes):
