@@ -42,6 +42,9 @@ from ._state import State, States
 __all__ = [
     "State",
     "States",
+    "PullOff",
+    "Physical",
+    "Curve",
     "ThinJkrError",
     "ThinJkrWarning",
     "InvalidInput",
@@ -360,11 +363,17 @@ def physical(
     d = _json.loads(_call(_thinjkr.physical, _json.dumps(cyl),
                           None if delta is None else float(delta),
                           None if force is None else float(force), model))
-    inner = _state_from(d.pop("state"))
+    inner = _state_from(d.pop("state"), model)
     d["state"] = inner
     for w in d["warnings"]:
         _warnings.warn(w, ThinJkrWarning, stacklevel=2)
-    return State(d)
+    return Physical(d)
+
+
+class Physical(State):
+    """A contact in SI units (:func:`physical`): ``a``, ``b`` (m),
+    ``delta`` (m), ``force`` (N), ``p0`` (Pa), ``h_over_a``, the
+    dimensionless ``state`` and the ``warnings`` in words."""
 
 
 from . import exact  # noqa: E402  (uses the helpers above)
