@@ -194,3 +194,16 @@ def test_an_exact_answer_has_the_same_shape_whichever_way_it_is_asked():
     assert len(a.x) == len(a.y) == 256 and np.allclose(a.x, b.x)
     st = thinjkr.solve(0.9, force=0.0, model="exact")
     assert st.model == "exact" and len(st.x) == 256
+
+
+def test_the_exact_pull_off_at_rho_0_3_answers_with_its_default_escalation():
+    """Issue 33, item 3: exact.pull_off(0.3) raised NoState after 5.5 s (the
+    escalation stopped at 16 modes, too few to follow a contour 11 % off the
+    ellipse) while modes=48 answered; by default it now escalates to the
+    truncation that converges (80 modes, boundary error below 1e-9) and
+    answers the value modes=48 gives (-2.42586, found independently)."""
+    po = thinjkr.exact.pull_off(0.3)
+    assert abs(po.force_bar - (-2.42586)) < 1e-5, po.force_bar
+    assert po.bc_error <= 1e-9
+    forty_eight = thinjkr.exact.pull_off(0.3, modes=48)
+    assert abs(po.force_bar - forty_eight.force_bar) < 1e-8

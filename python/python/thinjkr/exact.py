@@ -41,8 +41,11 @@ def zero_force(rho: float, *, points: int = 256, modes=None) -> State:
 
 def pull_off(rho: float, *, points: int = 256, modes=None) -> PullOff:
     """The exact load-controlled pull-off (the first minimum of F̄ along the
-    family through ā = 2.6), a :class:`PullOff` with ``control`` "load", as
-    ``thinjkr.pull_off(rho, model="exact")`` gives it."""
+    family, traced from just above the richest contour model's pull-off), a
+    :class:`PullOff` with ``control`` "load", as
+    ``thinjkr.pull_off(rho, model="exact")`` gives it. ``modes`` as in
+    :func:`solve`: by default escalated from 12 to 96 until the fine-grid
+    boundary error is below 1e-9 (at ρ = 0.3: 80 modes)."""
     d = _json.loads(_call(_thinjkr.exact, _number("rho", rho), "pull_off", 0.0, _modes(modes)))
     return PullOff({**_with_contour(d, points).to_dict(), "control": "load"})
 
