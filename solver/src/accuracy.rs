@@ -412,7 +412,108 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
         o.push_str(&render_doubling(d));
         o.push('\n');
     }
-    o
+    tidy(&o)
+}
+
+/// The longest table cell kept whole; a longer one (a reason why there is
+/// no value) is cut at a word and its full words go to the closing section
+/// "Reasons in full", numbered once per distinct text.
+#[cfg(feature = "cli")]
+const MAX_CELL: usize = 120;
+
+/// The longest line of prose: paragraphs are broken at spaces.
+#[cfg(feature = "cli")]
+const PROSE_WIDTH: usize = 100;
+
+/// The document with every table cell at most [`MAX_CELL`] characters (the
+/// full reasons numbered in a last section) and its prose broken into lines
+/// of at most [`PROSE_WIDTH`], so that no line is longer than a table row
+/// of short cells.
+#[cfg(feature = "cli")]
+fn tidy(doc: &str) -> String {
+    let mut notes: Vec<String> = Vec::new();
+    let mut out = String::new();
+    for line in doc.lines() {
+        if line.starts_with("| ") {
+            let cells: Vec<String> = line
+                .trim_start_matches("| ")
+                .trim_end_matches(" |")
+                .split(" | ")
+                .map(|c| {
+                    if c.chars().count() <= MAX_CELL {
+                        return c.to_string();
+                    }
+                    let n = match notes.iter().position(|t| t == c) {
+                        Some(i) => i + 1,
+                        None => {
+                            notes.push(c.to_string());
+                            notes.len()
+                        }
+                    };
+                    let suffix = format!(" … [{n}](#reasons-in-full)");
+                    let keep = MAX_CELL - suffix.chars().count();
+                    let mut cut: String = c.chars().take(keep).collect();
+                    if let Some(i) = cut.rfind(' ') {
+                        cut.truncate(i);
+                    }
+                    // an escaped bar must not lose its backslash's partner
+                    cut = cut.trim_end_matches('\\').to_string();
+                    cut + &suffix
+                })
+                .collect();
+            out.push_str(&format!("| {} |\n", cells.join(" | ")));
+        } else {
+            out.push_str(&wrap(line, PROSE_WIDTH));
+            out.push('\n');
+        }
+    }
+    if !notes.is_empty() {
+        out.push_str(
+            "\n## Reasons in full\n\nThe cells above that end in a number say why in full here.\n",
+        );
+        for (i, t) in notes.iter().enumerate() {
+            out.push('\n');
+            out.push_str(&wrap(
+                &format!("{}. {}", i + 1, t.replace("\\|", "|")),
+                PROSE_WIDTH,
+            ));
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// `line` broken at spaces into lines of at most `width` characters (a word
+/// longer than that stays whole); headings, tables and blank lines as they
+/// are.
+#[cfg(feature = "cli")]
+fn wrap(line: &str, width: usize) -> String {
+    if line.chars().count() <= width || line.starts_with('#') || line.starts_with('|') {
+        return line.to_string();
+    }
+    let mut out = String::new();
+    let mut current = String::new();
+    // a word Markdown would read as the start of a block stays on the line
+    let opens_a_block = |w: &str| {
+        matches!(w, "-" | "+" | "*" | ">" | "=")
+            || w.starts_with('#')
+            || w.starts_with('|')
+            || (w.ends_with('.') && w[..w.len() - 1].chars().all(|c| c.is_ascii_digit()))
+    };
+    for word in line.split(' ') {
+        let next = current.chars().count() + word.chars().count() + 1;
+        if !current.is_empty() && next > width && !opens_a_block(word) {
+            out.push_str(&current);
+            out.push('\n');
+            current.clear();
+        }
+        if !current.is_empty() {
+            current.push(' ');
+        }
+        current.push_str(word);
+    }
+    out.push_str(&current);
+    out
 }
 
 /// The section of a family on a gap of its own: its compared members
