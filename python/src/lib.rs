@@ -133,8 +133,8 @@ where
         .map(|r| {
             r.map(|st| {
                 let row = thinjkr::batch::Row::from(&st);
-                (
-                    [
+                Point {
+                    values: [
                         row.a_bar,
                         row.b_bar,
                         row.s,
@@ -142,8 +142,10 @@ where
                         row.force_bar,
                         row.bc_error,
                     ],
-                    row.warning,
-                )
+                    warning: row.warning,
+                    departure: row.departure.unwrap_or(f64::NAN),
+                    route: row.route.unwrap_or_default(),
+                }
             })
             .map_err(&err)
         })
@@ -159,10 +161,18 @@ fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> Py
     detached(py, move || solve_one(m, rho, &control, value))?.map_err(raw)
 }
 
-/// (a_bar, b_bar, s, delta_bar, force_bar, bc_error) with the state's
-/// warnings joined by "; " ('' for none), or the error (kind, message),
-/// one point each.
-type Row = Result<([f64; 6], String), (String, String)>;
+/// One point's state: (a_bar, b_bar, s, delta_bar, force_bar, bc_error),
+/// its warnings joined by "; " ('' for none), and for an exact state its
+/// departure from the ellipse and route (NaN and '' otherwise).
+struct Point {
+    values: [f64; 6],
+    warning: String,
+    departure: f64,
+    route: String,
+}
+
+/// A point's state or its error (kind, message).
+type Row = Result<Point, (String, String)>;
 
 /// Points per chunk of an array call of an ellipse model ([`solve_many`]).
 const ELLIPSE_CHUNK: usize = 16_384;
@@ -208,8 +218,8 @@ fn chunk_rows(
                             .join("; ")
                     })
                     .unwrap_or_default();
-                Ok((
-                    [
+                Ok(Point {
+                    values: [
                         g(&["a_bar"])?,
                         g(&["b_bar"])?,
                         g(&["s"])?,
@@ -218,7 +228,16 @@ fn chunk_rows(
                         g(&["bc_error", "bc_defect"])?,
                     ],
                     warning,
-                ))
+                    departure: j
+                        .get("deviation_from_ellipse")
+                        .and_then(|x| x.as_f64())
+                        .unwrap_or(f64::NAN),
+                    route: j
+                        .get("route")
+                        .and_then(|x| x.as_str())
+                        .unwrap_or_default()
+                        .to_string(),
+                })
             })
             .collect(),
     }
@@ -237,7 +256,12 @@ fn solve_many<'py>(
     rho: PyReadonlyArray1<'py, f64>,
     control: &str,
     value: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Bound<'py, PyDict>, Vec<Option<(String, String)>>, Vec<(usize, String)>)> {
+) -> PyResult<(
+    Bound<'py, PyDict>,
+    Vec<Option<(String, String)>>,
+    Vec<(usize, String)>,
+    Vec<(usize, String)>,
+)> {
     let m = choice(model)?;
     check_control(control)?;
     let rho = rho.as_slice()?.to_vec();
@@ -268,19 +292,31 @@ fn solve_many<'py>(
     py.check_signals()?;
 
     let n = rows.len();
-    let names = ["a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error"];
+    let names = [
+        "a_bar",
+        "b_bar",
+        "s",
+        "delta_bar",
+        "force_bar",
+        "bc_error",
+        "departure",
+    ];
     let mut cols = vec![Vec::with_capacity(n); names.len()];
     let mut errors = Vec::with_capacity(n);
     let mut warnings = Vec::new();
+    let mut routes = Vec::new();
     for (i, r) in rows.into_iter().enumerate() {
         match r {
-            Ok((v, w)) => {
-                for (c, x) in cols.iter_mut().zip(v) {
+            Ok(p) => {
+                for (c, x) in cols.iter_mut().zip(p.values.into_iter().chain([p.departure])) {
                     c.push(x);
                 }
                 errors.push(None);
-                if !w.is_empty() {
-                    warnings.push((i, w));
+                if !p.warning.is_empty() {
+                    warnings.push((i, p.warning));
+                }
+                if !p.route.is_empty() {
+                    routes.push((i, p.route));
                 }
             }
             Err(e) => {
@@ -295,7 +331,7 @@ fn solve_many<'py>(
     for (name, c) in names.iter().zip(cols) {
         d.set_item(name, c.into_pyarray(py))?;
     }
-    Ok((d, errors, warnings))
+    Ok((d, errors, warnings, routes))
 }
 
 /// The pull-off under `control` ("load" or "displacement"), as JSON: the

@@ -207,3 +207,19 @@ def test_the_exact_pull_off_at_rho_0_3_answers_with_its_default_escalation():
     assert po.bc_error <= 1e-9
     forty_eight = thinjkr.exact.pull_off(0.3, modes=48)
     assert abs(po.force_bar - forty_eight.force_bar) < 1e-8
+
+
+def test_an_exact_sweep_says_per_point_how_each_state_was_found():
+    """Issue 33, item 2: in the Fig. 7 sweep of the exact solver the state at
+    F = -2.4 lies past the fold of the mode-6 band (3.7 % off the ellipse,
+    route past_fold) between near-elliptic ones; the arrays say so per
+    point (route, departure), as the scalar result does. Models of the
+    ellipse have no route ('') and no departure (NaN)."""
+    S = thinjkr.solve(0.8, force=[-2.4, 0.0], model="exact")
+    one = thinjkr.solve(0.8, force=-2.4, model="exact")
+    assert list(S.route) == [one.route, thinjkr.solve(0.8, force=0.0, model="exact").route]
+    assert S.route[0] == "past_fold", S.route
+    assert S.departure[0] == one.deviation_from_ellipse and S.departure[0] > 3 * S.departure[1]
+    M = thinjkr.solve(0.8, force=[-2.4, 0.0])
+    assert list(M.route) == ["", ""] and np.isnan(M.departure).all()
+    assert "route" in S.to_pandas().columns if _has_pandas() else True

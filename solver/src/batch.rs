@@ -199,6 +199,12 @@ pub struct Row {
     /// Why the state is doubtful, in words joined by "; " (empty when it
     /// is not: a contour member's [`crate::conformal::ConformalState::warnings`]).
     pub warning: String,
+    /// The exact solver's: how far the contour is from the ellipse with
+    /// the same half-widths (relative to ā), and the route that found the
+    /// state (its JSON name, e.g. `past_fold`).
+    pub departure: Option<f64>,
+    /// See [`Row::departure`].
+    pub route: Option<String>,
 }
 
 impl From<&State> for Row {
@@ -213,6 +219,8 @@ impl From<&State> for Row {
             p0: Some(s.p0),
             bc_error: s.bc_error,
             warning: String::new(),
+            departure: None,
+            route: None,
         }
     }
 }
@@ -229,6 +237,8 @@ impl From<&crate::conformal::ConformalState> for Row {
             p0: None,
             bc_error: s.bc_defect,
             warning: s.warnings.join("; "),
+            departure: None,
+            route: None,
         }
     }
 }

@@ -546,6 +546,10 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
                 p0: None,
                 bc_error: s.bc_error,
                 warning: String::new(),
+                departure: Some(s.deviation_from_ellipse),
+                route: serde_json::to_value(s.route)
+                    .ok()
+                    .and_then(|v| v.as_str().map(String::from)),
             },
         }
     }

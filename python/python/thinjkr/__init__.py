@@ -173,7 +173,7 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
         return _state_from(d, model)
     r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
     shape = r.shape
-    cols, errors, warns = _call(
+    cols, errors, warns, routes = _call(
         _thinjkr.solve_many,
         model,
         _np.ascontiguousarray(r.ravel()),
@@ -185,6 +185,10 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
     for i, w in warns:
         warning[i] = w
     arrays["warning"] = warning.reshape(shape)
+    route = _np.full(r.size, "", dtype=object)
+    for i, w in routes:
+        route[i] = w
+    arrays["route"] = route.reshape(shape)
     _warn_count(len(warns), r.size)
     kinds = _np.array([e[0] if e else "" for e in errors], dtype=object).reshape(shape)
     msgs = _np.array([e[1] if e else "" for e in errors], dtype=object).reshape(shape)
@@ -200,17 +204,19 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
     """``one(ρ)`` at every point of ``rho`` as a :class:`States`: a point's
     error is NaN with its reason; an error in the call itself (a model or
     control that does not exist) is raised."""
-    keys = ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error")
+    keys = ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "departure")
     arrays = {k: _np.full(rho.shape, _np.nan) for k in keys}
     kinds = _np.full(rho.shape, "", dtype=object)
     msgs = _np.full(rho.shape, "", dtype=object)
     warning = _np.full(rho.shape, "", dtype=object)
+    route = _np.full(rho.shape, "", dtype=object)
     for i in _np.ndindex(rho.shape):
         try:
             with _warnings.catch_warnings():
                 _warnings.simplefilter("ignore", ThinJkrWarning)
                 st = one(float(rho[i]))
             warning[i] = "; ".join(st.to_dict().get("warnings") or ())
+            route[i] = st.to_dict().get("route") or ""
         except ThinJkrError as e:
             if e.kind == "usage":
                 raise
@@ -220,9 +226,11 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
         # every state carries its boundary error (bc_defect for conformal:K)
         if "bc_error" not in fields:
             fields["bc_error"] = fields["bc_defect"]
+        fields.setdefault("departure", fields.get("deviation_from_ellipse", _np.nan))
         for k in keys:
             arrays[k][i] = fields[k]
     arrays["warning"] = warning
+    arrays["route"] = route
     _warn_count(int((warning != "").sum()), rho.size)
     return States(model=model, rho=rho.copy(), arrays=arrays, error=msgs, error_kind=kinds)
 

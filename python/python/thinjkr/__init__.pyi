@@ -50,6 +50,8 @@ class States:
     error: np.ndarray
     error_kind: np.ndarray
     warning: np.ndarray
+    departure: np.ndarray
+    route: np.ndarray
     @property
     def shape(self) -> Tuple[int, ...]: ...
     @property

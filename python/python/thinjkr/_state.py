@@ -124,7 +124,7 @@ class State:
 
 # the arrays of a States, in the order its dict and DataFrame give them
 _ARRAYS = ("rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "error", "error_kind",
-           "warning")
+           "warning", "departure", "route")
 
 
 class States:
@@ -135,15 +135,21 @@ class States:
     ``error_kind`` the solver's kind of failure; ``warning`` says why a
     point's state is doubtful ('' where it is not: a contour member's
     closure missing (3)₂ by more than 0.1, or b > a), and ``doubtful``
-    marks those points."""
+    marks those points; for the exact solver ``departure`` is each contour's
+    largest distance from the ellipse with its half-widths (relative to ā;
+    NaN for the other models) and ``route`` how the state was found (e.g.
+    ``past_fold``, '' for the other models)."""
 
     def __init__(self, model: str, rho, arrays: Dict[str, _np.ndarray], error, error_kind):
         self.model = model
         self.rho = rho
         for k, v in arrays.items():
             setattr(self, k, v)
-        if "warning" not in arrays:
-            self.warning = _np.full(_np.shape(rho), "", dtype=object)
+        for k in ("warning", "route"):
+            if k not in arrays:
+                setattr(self, k, _np.full(_np.shape(rho), "", dtype=object))
+        if "departure" not in arrays:
+            self.departure = _np.full(_np.shape(rho), _np.nan)
         self.error = error
         self.error_kind = error_kind
 
