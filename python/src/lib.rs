@@ -46,9 +46,49 @@ fn pool(py: Python<'_>) -> PyResult<&'static rayon::ThreadPool> {
 }
 
 /// `f` without the GIL, on the extension's pool.
+/// While it runs, the calling thread checks for signals every 20 ms: on
+/// Ctrl-C it raises the computation's stop flag
+/// (`thinjkr::newton::stoppable`), waits the moments the computation takes
+/// to unwind, discards what it returns and raises KeyboardInterrupt (issue
+/// 33, item 6), so one slow exact solve is interrupted within its
+/// current Newton iteration, not when it ends.
 fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> T + Send) -> PyResult<T> {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::mpsc::RecvTimeoutError;
     let pool = pool(py)?;
-    Ok(py.detach(|| pool.install(f)))
+    let stop = std::sync::Arc::new(AtomicBool::new(false));
+    let (tx, rx) = std::sync::mpsc::channel();
+    pool.in_place_scope(|scope| {
+        let flag = stop.clone();
+        scope.spawn(move |_| {
+            let _ = tx.send(thinjkr::newton::stoppable(&flag, f));
+        });
+        let mut rx = rx;
+        loop {
+            let (got, back) = py.detach(move || {
+                let got = rx.recv_timeout(std::time::Duration::from_millis(20));
+                (got, rx)
+            });
+            rx = back;
+            match got {
+                Ok(answer) => return Ok(answer),
+                Err(RecvTimeoutError::Timeout) => {
+                    if let Err(interrupt) = py.check_signals() {
+                        stop.store(true, Ordering::Relaxed);
+                        // the computation unwinds; its answer is discarded
+                        py.detach(move || drop(rx.recv()));
+                        return Err(interrupt);
+                    }
+                }
+                // the computation panicked: the scope raises it as it ends
+                Err(RecvTimeoutError::Disconnected) => {
+                    return Err(PyException::new_err(
+                        "the solver's computation ended without an answer",
+                    ))
+                }
+            }
+        }
+    })
 }
 
 pyo3::create_exception!(

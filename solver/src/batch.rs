@@ -197,7 +197,9 @@ pub struct Row {
     /// The boundary error.
     pub bc_error: f64,
     /// Why the state is doubtful, in words joined by "; " (empty when it
-    /// is not: a contour member's [`crate::conformal::ConformalState::warnings`]).
+    /// is not): a model of the ellipse's flags (ρ below the paper's range,
+    /// beyond the contact-size fold), a contour member's
+    /// [`crate::conformal::ConformalState::warnings`].
     pub warning: String,
     /// The exact solver's: how far the contour is from the ellipse with
     /// the same half-widths (relative to ā), and the route that found the
@@ -218,7 +220,7 @@ impl From<&State> for Row {
             xi: Some(s.xi),
             p0: Some(s.p0),
             bc_error: s.bc_error,
-            warning: String::new(),
+            warning: s.warning_words().join("; "),
             departure: None,
             route: None,
         }

@@ -32,7 +32,7 @@ mod near_circle;
 
 /// 1 − ρ below which states are continued from ρ₀ = 1 − NEAR_CIRCLE
 /// (`near_circle`).
-pub const NEAR_CIRCLE: f64 = 1e-6;
+pub(crate) const NEAR_CIRCLE: f64 = 1e-6;
 
 use crate::control::{Hold, Quantity};
 use crate::equations::held;
@@ -107,6 +107,26 @@ pub struct State {
     /// sit beside the others).
     #[serde(flatten)]
     pub stability: Stability,
+}
+
+/// The words of a state beyond the contact-size fold.
+pub(crate) const BEYOND_SIZE_FOLD: &str = "beyond the contact-size fold";
+
+impl State {
+    /// Why the state is doubtful, in the words every front end shows (the
+    /// command line's brackets, a batch row's `warning`, Python's
+    /// ThinJkrWarning): ρ below the paper's stated range, and a state
+    /// beyond the contact-size fold.
+    pub(crate) fn warning_words(&self) -> Vec<&'static str> {
+        let mut out = Vec::new();
+        if self.outside_stated_range {
+            out.push("rho < 0.8: outside the paper's stated range");
+        }
+        if self.beyond_size_fold {
+            out.push(BEYOND_SIZE_FOLD);
+        }
+        out
+    }
 }
 
 /// What ends a controlled branch.
@@ -842,7 +862,7 @@ impl Contact {
         }
         Err(Error::NoState(format!(
             "{what}: Newton reached the compressive-edge (non-adhesive) root at a_bar = {:.6e}, s = {:.6e}, delta_bar = {:.6e} (rho = {}), not the adhesive state; at such loads the two roots of model {} are nearly equal",
-            st.a_bar, st.s, st.delta_bar, self.rho, self.model_id()
+            st.a_bar, st.s, st.delta_bar, short(self.rho), self.model_id()
         )))
     }
 

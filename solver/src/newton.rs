@@ -9,15 +9,71 @@
 //! for a system whose Jacobian costs far more than its residuals (the
 //! exact solver's).
 //!
+//! A caller may ask a long computation to stop (the Python package's
+//! Ctrl-C): run it [`stoppable`] with a flag, and once the flag is raised
+//! every iteration of [`damped`] and [`chord`] on that computation's
+//! threads fails at once, so the computation unwinds through its
+//! fallbacks in moments; the caller discards what it returns.
+//!
 //! Owns: [`NewtonConfig`], [`Problem`], [`Iterate`], [`damped`], [`chord`]
 //! ([`ChordSystem`], [`ChordConfig`], [`ChordStop`]), [`solve`],
-//! [`solve_within`]. May use: `error`, nalgebra.
+//! [`solve_within`], the stop flag ([`stoppable`]). May use: `error`,
+//! nalgebra.
 
 use crate::error::{Error, Result};
 use nalgebra::allocator::Allocator;
 use nalgebra::{
     DVector, DefaultAllocator, Dim, DimMin, Dyn, Matrix2, OMatrix, OVector, Vector2, LU,
 };
+
+thread_local! {
+    /// The stop flag of the computation running on this thread.
+    static STOP: std::cell::RefCell<Option<std::sync::Arc<std::sync::atomic::AtomicBool>>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// Run `f` so that raising `stop` (from another thread) makes every
+/// Newton iteration inside it fail at once: `f` then returns soon, with an
+/// error the caller discards. Work `f` hands to other threads carries the
+/// flag with it ([`carried`]).
+pub fn stoppable<T>(
+    stop: &std::sync::Arc<std::sync::atomic::AtomicBool>,
+    f: impl FnOnce() -> T,
+) -> T {
+    carried(Some(stop.clone()), f)
+}
+
+/// The stop flag of the computation on this thread, to hand to work on
+/// other threads ([`carried`]).
+pub(crate) fn stop_flag() -> Option<std::sync::Arc<std::sync::atomic::AtomicBool>> {
+    STOP.with(|s| s.borrow().clone())
+}
+
+/// Run `f` under the stop flag `stop` (from [`stop_flag`]), restoring the
+/// thread's own flag afterwards.
+pub(crate) fn carried<T>(
+    stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
+    f: impl FnOnce() -> T,
+) -> T {
+    struct Restore(Option<std::sync::Arc<std::sync::atomic::AtomicBool>>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            let old = self.0.take();
+            STOP.with(|s| *s.borrow_mut() = old);
+        }
+    }
+    let _restore = Restore(STOP.with(|s| s.replace(stop)));
+    f()
+}
+
+/// Whether the computation on this thread has been asked to stop.
+pub(crate) fn stop_requested() -> bool {
+    STOP.with(|s| {
+        s.borrow()
+            .as_ref()
+            .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
+    })
+}
 
 /// Controls of Newton's method.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -189,6 +245,9 @@ where
         if rn.is_finite() && rn < config.tolerance {
             return Ok(done(x, j, rn, it));
         }
+        if stop_requested() {
+            break;
+        }
         let step = j.clone().lu().solve(&(-&r));
         let Some(step) = step.filter(|d| d.iter().all(|v| v.is_finite())) else {
             break;
@@ -263,6 +322,8 @@ pub(crate) enum ChordFailure {
     Stalled,
     /// The iteration limit (this many iterations).
     Iterations(usize),
+    /// The caller asked the computation to stop ([`stoppable`]).
+    Stopped,
 }
 
 impl std::fmt::Display for ChordFailure {
@@ -274,6 +335,7 @@ impl std::fmt::Display for ChordFailure {
             ChordFailure::LineSearch => f.write_str("line search failed"),
             ChordFailure::Stalled => f.write_str("Newton stalled above the residual tolerance"),
             ChordFailure::Iterations(n) => write!(f, "no convergence in {n} Newton iterations"),
+            ChordFailure::Stopped => f.write_str("stopped at the caller's request"),
         }
     }
 }
@@ -321,6 +383,9 @@ pub(crate) fn chord(
     for it in 0..config.max_iterations {
         if r.amax() <= config.floor {
             return Ok(u);
+        }
+        if stop_requested() {
+            return Err(stop(&u, r.amax(), it, ChordFailure::Stopped));
         }
         let fresh = lu.is_none();
         let step = {

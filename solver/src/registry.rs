@@ -225,12 +225,25 @@ impl Choice {
         .map_err(in_si)?;
         let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
         let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
+        // the model's own doubts about its state (an ellipse model below
+        // the paper's range or beyond its size fold, a contour member
+        // missing (3)2), the range said with this contact's ρ; the exact
+        // solution has no stated range
         let mut warnings = Vec::new();
-        if sc.rho < 0.8 {
-            warnings.push(format!(
-                "rho = R2/R1 = {} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
-                format!("{:.6}", sc.rho)
-            ));
+        match &state {
+            crate::report::AnyState::Ellipse(st) => {
+                if st.outside_stated_range {
+                    warnings.push(format!(
+                        "rho = R2/R1 = {} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
+                        format!("{:.6}", sc.rho)
+                    ));
+                }
+                if st.beyond_size_fold {
+                    warnings.push(crate::contact::BEYOND_SIZE_FOLD.to_string());
+                }
+            }
+            crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
+            crate::report::AnyState::Exact(_) => {}
         }
         if si.h_over_a > 0.1 {
             warnings.push(format!(

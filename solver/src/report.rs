@@ -28,12 +28,36 @@ use serde::Serialize;
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(untagged)]
 pub enum AnyState {
-    /// A model of the ellipse (`max`, `apexes`, `energy`, `apex45`).
+    /// A model of the ellipse (`max`, `apexes`, `energy`, `apex45`); in
+    /// JSON with its `warnings` in words beside its flags.
+    #[serde(serialize_with = "ellipse_with_warnings")]
+    #[cfg_attr(feature = "schema", schemars(with = "EllipseJson"))]
     Ellipse(State),
     /// A member of `conformal:K`.
     Conformal(ConformalState),
     /// The exact solution of (2)–(3).
     Exact(Box<ExactState>),
+}
+
+/// A state of a model of the ellipse as JSON: its fields and, where it is
+/// doubtful, why, in the words every front end shows.
+#[derive(Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+struct EllipseJson {
+    #[serde(flatten)]
+    state: State,
+    /// Why the state is doubtful (ρ below the paper's stated range, beyond
+    /// the contact-size fold); absent when it is not.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    warnings: Vec<&'static str>,
+}
+
+fn ellipse_with_warnings<S: serde::Serializer>(st: &State, s: S) -> Result<S::Ok, S::Error> {
+    EllipseJson {
+        state: *st,
+        warnings: st.warning_words(),
+    }
+    .serialize(s)
 }
 
 impl AnyState {

@@ -290,7 +290,11 @@ fn a_doubtful_member_state_says_so() {
     );
     // the state at that force, another one (the round trip fails), is doubtful too
     let back = m.solve(0.3, Hold::Force(deep.force_bar)).unwrap();
-    assert!(back.bc_defect > 0.1 && !back.warnings.is_empty(), "{}", back.bc_defect);
+    assert!(
+        back.bc_defect > 0.1 && !back.warnings.is_empty(),
+        "{}",
+        back.bc_defect
+    );
     let json = serde_json::to_value(&st).unwrap();
     assert_eq!(
         json["warnings"].as_array().map(|w| w.len()),

@@ -197,6 +197,12 @@ fn numbers_in_messages_have_at_most_six_significant_digits() {
         "exact bands --rho 0.8 --to 1e300".to_string(),
         "exact bands --rho 0.8 --from 2 --to 1e18".to_string(),
         "pull-off --rho 1e-300".to_string(),
+        // issue 32 item 4: a rho of many digits in the refusals of every
+        // model and the exact solver
+        "pull-off --rho 0.1234567891234 --model apexes".to_string(),
+        "solve --rho 0.1234567891234 --force 0 --model conformal:8".to_string(),
+        "exact pull-off --rho 0.1234567891234".to_string(),
+        "exact solve --rho 0.1234567891234 --force 0".to_string(),
         format!("physical --file {c} --force -1.0"),
         format!("physical --file {c} --force 1e308"),
         format!("physical --file {c} --delta -1e308"),

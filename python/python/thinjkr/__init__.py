@@ -200,10 +200,11 @@ def zero_force(rho, *, model: str = "max") -> State:
     return solve(rho, force=0.0, model=model)
 
 
-def _many(rho: _np.ndarray, model: str, one) -> States:
-    """``one(ρ)`` at every point of ``rho`` as a :class:`States`: a point's
-    error is NaN with its reason; an error in the call itself (a model or
-    control that does not exist) is raised."""
+def _many(rho: _np.ndarray, model: str, one, value: Optional[_np.ndarray] = None) -> States:
+    """``one(ρ)`` (or ``one(ρ, v)`` with ``value`` of the same shape) at
+    every point of ``rho`` as a :class:`States`: a point's error is NaN with
+    its reason; an error in the call itself (a model or control that does
+    not exist) is raised."""
     keys = ("a_bar", "b_bar", "s", "delta_bar", "force_bar", "bc_error", "departure")
     arrays = {k: _np.full(rho.shape, _np.nan) for k in keys}
     kinds = _np.full(rho.shape, "", dtype=object)
@@ -214,7 +215,7 @@ def _many(rho: _np.ndarray, model: str, one) -> States:
         try:
             with _warnings.catch_warnings():
                 _warnings.simplefilter("ignore", ThinJkrWarning)
-                st = one(float(rho[i]))
+                st = one(float(rho[i])) if value is None else one(float(rho[i]), float(value[i]))
             warning[i] = "; ".join(st.to_dict().get("warnings") or ())
             route[i] = st.to_dict().get("route") or ""
         except ThinJkrError as e:
@@ -320,15 +321,39 @@ class Curve:
         return f"Curve({len(self.states)} states, folds: {[k for k, _ in self.folds]})"
 
 
-def curve(rho: float, *, model: str = "max", points: int = 200, delta_start: float = 20.0) -> Curve:
+def curve(rho, *, model: str = "max", points: int = 200, delta_start: float = 20.0):
     """The curve of a model of the ellipse or of ``conformal:K`` at ``rho``
     from δ̄ = ``delta_start`` past pull-off and its folds, ``points`` states
-    evenly spaced in arclength (the paper's Figs. 6–8)."""
+    evenly spaced in arclength (the paper's Figs. 6–8).
+
+    A scalar ``rho`` gives a :class:`Curve`; an array (or list) of ρ gives
+    a list of curves, one per ρ in the array's order (flattened), since
+    curves differ in length. A ρ without a curve raises, as for a scalar."""
     points = _whole("points", points, 2, _thinjkr.MAX_CURVE_POINTS)
-    d = _json.loads(_call(_thinjkr.curve, model, _number("rho", rho), points,
-                          _number("delta_start", delta_start)))
+    rho = _number("rho", rho)
+    delta_start = _number("delta_start", delta_start)
+    if _np.ndim(delta_start) > 0:
+        raise InvalidInput("parameter delta_start must be one number (the curves of an array of rho "
+                           "share their start)", kind="usage")
+    if _np.ndim(rho) > 0:
+        return [_curve(float(r), model, points, delta_start) for r in _np.asarray(rho).ravel()]
+    return _curve(rho, model, points, delta_start)
+
+
+def _curve(rho: float, model: str, points: int, delta_start: float) -> Curve:
+    d = _json.loads(_call(_thinjkr.curve, model, rho, points, delta_start))
     states = [_state_from(s) for s in d["states"]]
     folds = [(f["kind"], _state_from(f["state"])) for f in d["folds"]]
+    # one warning for the call: how many states carry warnings and the
+    # first one's words (each state's `warnings` say the rest); the stretch
+    # past the contact-size fold is part of the curve asked for
+    # (Curve.beyond_size_fold marks it), not a doubt
+    doubtful = [s["warnings"] for s in d["states"]
+                if s.get("warnings") and not s.get("beyond_size_fold")]
+    if doubtful:
+        _warnings.warn(f"{len(doubtful)} of {len(states)} states along the curve carry warnings "
+                       f"(each state's `warnings` say why), the first: {doubtful[0][0]}",
+                       ThinJkrWarning, stacklevel=3)
     return Curve(states, folds, d.get("arm"), d.get("beyond_size_fold"), d.get("end"))
 
 

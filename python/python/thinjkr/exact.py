@@ -10,7 +10,7 @@ import json as _json
 import numpy as _np
 
 from . import _thinjkr
-from . import _call, _control, _number, _state_from, _whole, PullOff, State
+from . import _call, _control, _many, _number, _state_from, _whole, PullOff, State
 
 
 def _with_contour(d, points: int) -> State:
@@ -22,31 +22,46 @@ def _with_contour(d, points: int) -> State:
     return State(fields)
 
 
-def solve(rho: float, *, delta=None, force=None, points: int = 256, modes=None) -> State:
+def solve(rho, *, delta=None, force=None, points: int = 256, modes=None):
     """The exact state at approach ``delta`` (δ̄) or force ``force`` (F̄),
     its contour sampled at ``points`` angles. ``modes``: the contour series'
     length (1 … 96); by default the modes are escalated from 12 to 96 until
     the fine-grid boundary error is below 1e-9 (where none is,
-    :class:`Unresolved` is raised with the smallest error reached)."""
+    :class:`Unresolved` is raised with the smallest error reached).
+
+    Scalars give a :class:`State`; when ``rho`` or the control is an array
+    (broadcast together) the answer is a :class:`States` of that shape,
+    point by point (Ctrl-C stops it), a point without a state NaN with its
+    reason in ``States.error``."""
     control, value = _control(delta, force, None)
-    d = _json.loads(_call(_thinjkr.exact, _number("rho", rho), control, _number(control, value),
-                          _modes(modes)))
+    rho, value = _number("rho", rho), _number(control, value)
+    modes = _modes(modes)
+    if _np.ndim(rho) > 0 or _np.ndim(value) > 0:
+        r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
+        return _many(r, "exact", lambda a, b: solve(a, points=points, modes=modes, **{control: b}), v)
+    d = _json.loads(_call(_thinjkr.exact, rho, control, value, modes))
     return _with_contour(d, points)
 
 
-def zero_force(rho: float, *, points: int = 256, modes=None) -> State:
-    """The exact zero-force state."""
+def zero_force(rho, *, points: int = 256, modes=None):
+    """The exact zero-force state (an array of ``rho`` gives a
+    :class:`States`, as in :func:`solve`)."""
     return solve(rho, force=0.0, points=points, modes=modes)
 
 
-def pull_off(rho: float, *, points: int = 256, modes=None) -> PullOff:
+def pull_off(rho, *, points: int = 256, modes=None):
     """The exact load-controlled pull-off (the first minimum of F̄ along the
     family, traced from just above the richest contour model's pull-off), a
     :class:`PullOff` with ``control`` "load", as
     ``thinjkr.pull_off(rho, model="exact")`` gives it. ``modes`` as in
     :func:`solve`: by default escalated from 12 to 96 until the fine-grid
-    boundary error is below 1e-9 (at ρ = 0.3: 80 modes)."""
-    d = _json.loads(_call(_thinjkr.exact, _number("rho", rho), "pull_off", 0.0, _modes(modes)))
+    boundary error is below 1e-9 (at ρ = 0.3: 80 modes). An array of
+    ``rho`` gives a :class:`States`, as in :func:`solve`."""
+    rho = _number("rho", rho)
+    modes = _modes(modes)
+    if _np.ndim(rho) > 0:
+        return _many(_np.asarray(rho, dtype=float), "exact", lambda r: pull_off(r, points=points, modes=modes))
+    d = _json.loads(_call(_thinjkr.exact, rho, "pull_off", 0.0, modes))
     return PullOff({**_with_contour(d, points).to_dict(), "control": "load"})
 
 

@@ -149,7 +149,7 @@ enum Command {
     },
     /// Solve many inputs: a CSV `rho,control,value` (control delta or force) on stdin, one state per line on stdout, in input order, on all cores.
     #[command(
-        after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error,warning. A line that cannot be read or solved gets an empty state and the error (naming the line) in the column error; the other lines are still written. A doubtful state (a contour member's closure missing (3)2 by more than 0.1, or b > a) has why in the column warning. A progress count is shown on stderr when it is a terminal."
+        after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error,warning. A line that cannot be read or solved gets an empty state and the error (naming the line) in the column error; the other lines are still written. A doubtful state (a contour member's closure missing (3)2 by more than 0.1, or b > a; a model of the ellipse below the paper's range rho >= 0.8 or beyond its contact-size fold) has why in the column warning. A progress count is shown on stderr when it is a terminal."
     )]
     Batch {
         #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(false, " (a contour family's bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty)"))]
@@ -264,7 +264,7 @@ fn stability(st: &State) -> String {
 
 fn show(label: &str, st: &State) -> crate::Result<()> {
     outln!(
-        "{label}: model {}, a = {}, s = {}, delta = {}, force = {}, xi = {}, p0 = {}, error (14) = {:.4} %{}{}{}",
+        "{label}: model {}, a = {}, s = {}, delta = {}, force = {}, xi = {}, p0 = {}, error (14) = {:.4} %{}{}",
         st.model,
         output::num(st.a_bar),
         output::num(st.s),
@@ -273,8 +273,10 @@ fn show(label: &str, st: &State) -> crate::Result<()> {
         output::num(st.xi),
         output::num(st.p0),
         100.0 * st.bc_error,
-        if st.outside_stated_range { " [rho < 0.8: outside the paper's stated range]" } else { "" },
-        if st.beyond_size_fold { " [beyond the contact-size fold]" } else { "" },
+        st.warning_words()
+            .iter()
+            .map(|w| format!(" [{w}]"))
+            .collect::<String>(),
         stability(st)
     );
     Ok(())

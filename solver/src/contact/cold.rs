@@ -489,7 +489,7 @@ impl Contact {
         }
         Err(Error::NoState(format!(
             "{what}: no minimum along the branch at rho = {}",
-            self.rho
+            crate::error::short(self.rho)
         )))
     }
 

@@ -42,7 +42,8 @@
 //! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
 //! [`states_at`], [`past_folds_or_band`]. May use: `control`, `exact`
 //! (its family and traces; the screen by the gap's seed, `exact::seed`),
-//! `error`, rayon.
+//! `error`, `newton` (the caller's stop flag, carried to rayon's threads),
+//! rayon.
 
 use super::seed::Guess;
 use super::{Contour, Exact};
@@ -187,9 +188,10 @@ fn screen(
         ))
     })?;
     let grid: Vec<f64> = (0..count).map(|j| from + STEP * j as f64).collect();
+    let stop = crate::newton::stop_flag();
     let answers: Vec<Result<Guess>> = grid
         .par_iter()
-        .map(|&a| model.state(rho, Hold::Size(a)))
+        .map(|&a| crate::newton::carried(stop.clone(), || model.state(rho, Hold::Size(a))))
         .collect();
     // a seed that answers nowhere (ρ below its range) says why
     if let Some(Err(why)) = answers
@@ -408,27 +410,30 @@ fn unscreened_neutral_points<'a>(
 /// exact state, [`super::resolved`]), kept when resolved and near the
 /// model's state (s within 5 %).
 fn curve(gap: super::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>]) -> Vec<CurvePoint> {
+    let stop = crate::newton::stop_flag();
     grid.par_iter()
         .zip(states)
         .enumerate()
         .map(|(j, (&a_bar, st))| {
-            let exact = st.as_ref().filter(|_| j % CURVE_EVERY == 0).and_then(|m| {
-                super::resolved(gap, rho, &super::default_tries(), |ex| {
-                    ex.solve(
-                        m.a_bar,
-                        &Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes),
-                        m.delta_bar,
-                    )
-                })
-                .ok()
-                .filter(|e| e.bc_error <= super::RESOLVED && (e.s / m.s - 1.0).abs() <= 0.05)
-                .map(|e| e.force_bar)
-            });
-            CurvePoint {
-                a_bar,
-                model: st.as_ref().map(|m| m.force_bar),
-                exact,
-            }
+            crate::newton::carried(stop.clone(), || {
+                let exact = st.as_ref().filter(|_| j % CURVE_EVERY == 0).and_then(|m| {
+                    super::resolved(gap, rho, &super::default_tries(), |ex| {
+                        ex.solve(
+                            m.a_bar,
+                            &Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes),
+                            m.delta_bar,
+                        )
+                    })
+                    .ok()
+                    .filter(|e| e.bc_error <= super::RESOLVED && (e.s / m.s - 1.0).abs() <= 0.05)
+                    .map(|e| e.force_bar)
+                });
+                CurvePoint {
+                    a_bar,
+                    model: st.as_ref().map(|m| m.force_bar),
+                    exact,
+                }
+            })
         })
         .collect()
 }
@@ -498,9 +503,10 @@ pub(crate) fn states_at_on(
             _ => None,
         })
         .collect();
+    let stop = crate::newton::stop_flag();
     let answers: Vec<(f64, Result<super::ExactState>)> = brackets
         .par_iter()
-        .map(|&(l, r)| {
+        .map(|&(l, r)| crate::newton::carried(stop.clone(), || {
             let start = if value(l).abs() <= value(r).abs() { l } else { r };
             let found = super::resolved(gap, rho, tries, |ex| {
                 ex.solve_at(
@@ -521,7 +527,7 @@ pub(crate) fn states_at_on(
                 }
             });
             (0.5 * (l.a_bar + r.a_bar), found)
-        })
+        }))
         .collect();
     // the arms beside each gap of the screen, traced past their folds
     let past: Vec<PastFolds> = gaps(&states)
@@ -532,7 +538,11 @@ pub(crate) fn states_at_on(
         })
         .collect::<Vec<_>>()
         .par_iter()
-        .map(|(left, right)| past_folds(gap, rho, control, left, right, STEP, tries))
+        .map(|(left, right)| {
+            crate::newton::carried(stop.clone(), || {
+                past_folds(gap, rho, control, left, right, STEP, tries)
+            })
+        })
         .collect();
     let mut out = AllStates {
         range: [from, to],

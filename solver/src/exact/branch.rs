@@ -474,7 +474,7 @@ impl Exact {
             None => Err(Error::NoState(format!(
                 "exact pull-off at rho = {}: no minimum of the force along the traced family (down to a_bar = {})",
                 crate::error::rounded(self.rho),
-                branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN)
+                crate::error::rounded(branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN))
             ))),
         }
     }
