@@ -75,6 +75,16 @@ pub(crate) fn stop_requested() -> bool {
     })
 }
 
+/// `Err` once the computation on this thread has been asked to stop: for
+/// the loops above Newton's (escalations, continuations), so that they end
+/// at their next step rather than try every fallback.
+pub(crate) fn check_stop() -> Result<()> {
+    if stop_requested() {
+        return Err(Error::NoState("stopped at the caller's request".into()));
+    }
+    Ok(())
+}
+
 /// Controls of Newton's method.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NewtonConfig {

@@ -863,6 +863,7 @@ fn fold_from(
     let mut seen: Vec<(usize, f64)> = Vec::new();
     let mut next = 0;
     while next < tries.len() {
+        crate::newton::check_stop()?;
         let i = next;
         let t = tries[i];
         next = i + 1;

@@ -713,6 +713,7 @@ impl Exact {
         let mut rho = 1.0;
         let mut step: f64 = 0.05;
         while rho > self.rho {
+            crate::newton::check_stop()?;
             let next = (rho - step).max(self.rho);
             let ex = Exact::on(self.gap_source, next, self.truncation)?;
             match ex.newton(Hold::Size(a_bar), &contour(&u), u[nm + 1]) {

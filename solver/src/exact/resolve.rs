@@ -8,7 +8,8 @@
 //!
 //! Owns: [`CONVERGED`], [`RESOLVED`], [`default_tries`], [`resolved`],
 //! [`pull_off_resolved`], [`at_resolved`], [`at_searched`],
-//! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`.
+//! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`, `newton` (the
+//! caller's stop flag).
 
 use super::{bands, branch, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
@@ -99,6 +100,7 @@ pub(crate) fn resolved<T: BoundaryError>(
     };
     let mut i = 0;
     while i < tries.len() {
+        crate::newton::check_stop()?;
         let t = tries[i];
         // (the stability is computed with the same problem: it does not
         // depend on the deferral, which only [`Exact::state`] reads)
@@ -251,6 +253,7 @@ pub fn pull_off_continued_in_rho(
     let mut at = (start.clone(), Vec::new());
     let mut step: f64 = 0.01;
     while at.0.rho > rho {
+        crate::newton::check_stop()?;
         let next = (at.0.rho - step).max(rho);
         let before = &at.0;
         match resolved(start.gap, next, &default_tries(), |ex| {
@@ -440,6 +443,7 @@ pub fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<E
         ))
     };
     while st.rho > rho {
+        crate::newton::check_stop()?;
         let next = (st.rho - step).max(rho);
         let ex = Exact::on(start.gap, next, tries[k])?.deferring_stability();
         match ex.solve_at(control, &st.contour, st.delta_bar) {
