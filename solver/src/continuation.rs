@@ -29,7 +29,7 @@
 //!
 //! Owns: [`Family`], [`Linear`], [`Settings`], [`Watch`], [`On`],
 //! [`Quantity`], [`Point`], [`EventKind`], [`Event`], [`Trace`], [`trace`].
-//! May use: `error`, `control`, nalgebra.
+//! May use: `error`, `control`, `newton` (the caller's stop flag), nalgebra.
 
 use crate::control::Quantity;
 use crate::error::{Error, Result};
@@ -639,6 +639,7 @@ where
         Ok((h * 0.5).max(settings.min_step))
     };
     while accepted < settings.max_steps {
+        crate::newton::check_stop()?;
         let p = points.last().expect("one point");
         let Some((u, iterations, l)) = engine.correct(&p.u, &p.t, h, None) else {
             h = shorter(h, p, "the corrector fails at every step size")?;

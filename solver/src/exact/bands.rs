@@ -191,7 +191,12 @@ fn screen(
     let stop = crate::newton::stop_flag();
     let answers: Vec<Result<Guess>> = grid
         .par_iter()
-        .map(|&a| crate::newton::carried(stop.clone(), || model.state(rho, Hold::Size(a))))
+        .map(|&a| {
+            crate::newton::carried(stop.clone(), || {
+                crate::newton::check_stop()?;
+                model.state(rho, Hold::Size(a))
+            })
+        })
         .collect();
     // a seed that answers nowhere (ρ below its range) says why
     if let Some(Err(why)) = answers
