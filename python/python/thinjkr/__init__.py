@@ -122,6 +122,8 @@ def _number(name: str, value):
     an array of bools), a masked array, or anything not numeric is refused
     naming the parameter, not read as 1.0 or with its mask dropped. NaN and
     infinity pass here; the solver names their range."""
+    if type(value) is float or type(value) is int:  # the common case, at once (a bool is neither)
+        return float(value)
     if isinstance(value, (bool, _np.bool_)):
         raise InvalidInput(f"parameter {name} = {value!r} is a bool, not a number",
                            kind="out_of_range")
