@@ -631,59 +631,12 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
     })
 }
 
-/// Markdown prose broken into lines of at most `width` characters at
-/// spaces (a paragraph reads the same); table rows, display math and
-/// headings are left as they are.
-fn wrap_prose(text: &str, width: usize) -> String {
-    let mut out = String::new();
-    for line in text.split_inclusive('\n') {
-        let body = line.trim_end_matches('\n');
-        let keep = body.chars().count() <= width
-            || body.starts_with('|')
-            || body.starts_with("$$")
-            || body.starts_with('#');
-        if keep {
-            out.push_str(line);
-            continue;
-        }
-        // a line must not start with what Markdown reads as a block: a
-        // list marker, a heading, a quote, a table row, a rule
-        let starts_block = |w: &str| {
-            matches!(w, "-" | "+" | "*" | "#" | ">" | "|" | "=")
-                || w.starts_with('#')
-                || w.starts_with('|')
-                || w.strip_suffix(['.', ')'])
-                    .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
-        };
-        let mut current = String::new();
-        for word in body.split(' ') {
-            if !current.is_empty()
-                && current.chars().count() + 1 + word.chars().count() > width
-                && !starts_block(word)
-            {
-                out.push_str(&current);
-                out.push('\n');
-                current.clear();
-            }
-            if !current.is_empty() {
-                current.push(' ');
-            }
-            current.push_str(word);
-        }
-        out.push_str(&current);
-        if line.ends_with('\n') {
-            out.push('\n');
-        }
-    }
-    out
-}
-
 /// The section of `docs/derivation.md` on the family: its data, the steps
 /// and checks of [`conformal::derive`], Π̄ for K = 1 and K = 2 in full, and
 /// for every K what was derived (sizes of Π̄, its Hessian, the boundary
 /// slope and the generated module).
 pub fn derivation_section(family: &Family, all: &[ConformalDerivation]) -> String {
-    wrap_prose(&derivation_prose(family, all), 110)
+    crate::markdown::wrap_prose(&derivation_prose(family, all), crate::markdown::WIDTH)
 }
 
 fn derivation_prose(family: &Family, all: &[ConformalDerivation]) -> String {
@@ -793,7 +746,7 @@ fn derivation_prose(family: &Family, all: &[ConformalDerivation]) -> String {
 /// The section of `docs/codegen-accuracy.md` on the family's tables: their
 /// size, and how their accuracy is measured.
 pub fn accuracy_section(all: &[ConformalDerivation], outputs: &[Output]) -> String {
-    wrap_prose(&accuracy_prose(all, outputs), 110)
+    crate::markdown::wrap_prose(&accuracy_prose(all, outputs), crate::markdown::WIDTH)
 }
 
 fn accuracy_prose(all: &[ConformalDerivation], outputs: &[Output]) -> String {

@@ -86,6 +86,12 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
     out.extend(crate::codegen_conformal::registry_outputs(
         &families, &exact_gap,
     )?);
+    // no line of a document longer than 400 characters (issue 32)
+    for o in out.iter_mut() {
+        if o.path.extension().is_some_and(|e| e == "md") {
+            o.contents = crate::markdown::tidy(&o.contents);
+        }
+    }
     Ok(out)
 }
 

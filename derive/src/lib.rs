@@ -27,6 +27,7 @@ pub mod force;
 pub mod generate;
 pub mod ir;
 pub mod limits;
+pub mod markdown;
 pub mod model;
 pub mod nondimensional;
 pub mod numeric;

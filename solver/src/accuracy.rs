@@ -422,7 +422,6 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
 const MAX_CELL: usize = 120;
 
 /// The longest line of prose: paragraphs are broken at spaces.
-#[cfg(feature = "cli")]
 const PROSE_WIDTH: usize = 100;
 
 /// The document with every table cell at most [`MAX_CELL`] characters (the
@@ -486,7 +485,6 @@ fn tidy(doc: &str) -> String {
 /// `line` broken at spaces into lines of at most `width` characters (a word
 /// longer than that stays whole); headings, tables and blank lines as they
 /// are.
-#[cfg(feature = "cli")]
 fn wrap(line: &str, width: usize) -> String {
     if line.chars().count() <= width || line.starts_with('#') || line.starts_with('|') {
         return line.to_string();
@@ -791,5 +789,6 @@ pub fn band_markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
             ));
         }
     }
-    o
+    // the notes as prose of at most PROSE_WIDTH characters a line
+    o.lines().map(|l| wrap(l, PROSE_WIDTH) + "\n").collect()
 }

@@ -23,16 +23,14 @@ fn guide_examples_print_what_the_guide_shows() {
     let lines: Vec<&str> = guide.lines().collect();
     let mut checked = 0;
     for (k, line) in lines.iter().enumerate() {
-        let run = if let Some(cmd) = line.strip_prefix("$ thinjkr ") {
-            let args: Vec<&str> = cmd.split_whitespace().collect();
-            Some((cmd.to_string(), thinjkr(&args)))
-        } else if let Some(pipeline) = line.strip_prefix("$ ").filter(|l| l.contains("| thinjkr "))
-        {
-            // a shell pipeline into thinjkr (the batch example)
-            let script = pipeline.replace(
-                "| thinjkr ",
-                &format!("| {} ", env!("CARGO_BIN_EXE_thinjkr")),
-            );
+        let run = if let Some(pipeline) = line.strip_prefix("$ ").filter(|l| l.contains(" | ")) {
+            // a shell pipeline into thinjkr (the batch example) or out of it
+            // (a JSON line shown a field a line)
+            let bin = env!("CARGO_BIN_EXE_thinjkr");
+            let mut script = pipeline.replace("| thinjkr ", &format!("| {bin} "));
+            if let Some(rest) = script.strip_prefix("thinjkr ") {
+                script = format!("{bin} {rest}");
+            }
             let o = std::process::Command::new("bash")
                 .arg("-c")
                 .arg(&script)
@@ -46,6 +44,9 @@ fn guide_examples_print_what_the_guide_shows() {
                     String::from_utf8_lossy(&o.stderr).into_owned(),
                 ),
             ))
+        } else if let Some(cmd) = line.strip_prefix("$ thinjkr ") {
+            let args: Vec<&str> = cmd.split_whitespace().collect();
+            Some((cmd.to_string(), thinjkr(&args)))
         } else {
             None
         };
