@@ -1083,8 +1083,13 @@ impl Contact {
         // fold where the stable branch ends; below it, the range error
         // states the bound
         self.at_load_inside(force).or_else(|e| {
-            let Ok(p) = self.pull_off_load() else {
+            let Ok(p) = self.force_minimum() else {
                 return Err(e);
+            };
+            let from = if p.state.force_bar < 0.0 {
+                "the pull-off force"
+            } else {
+                "the (compressive) minimum of the force along the branch"
             };
             if (force - p.state.force_bar).abs() <= 1e-9 * (1.0 + p.state.force_bar.abs()) {
                 return Ok(p.state);
@@ -1098,7 +1103,7 @@ impl Contact {
                     name: "force",
                     value,
                     range: format!(
-                        "[{}, ∞): from the pull-off force of model {} at rho = {}",
+                        "[{}, ∞): from {from} of model {} at rho = {}",
                         crate::error::rounded(p.state.force_bar),
                         self.model_id(),
                         short(self.rho)
@@ -1188,6 +1193,26 @@ impl Contact {
     /// Pull-off under load control: the minimum of F̄ along the branch,
     /// located by Newton on the fold condition.
     pub fn pull_off_load(&self) -> Result<PullOff> {
+        let po = self.force_minimum()?;
+        // a pull-off is where a tensile load detaches the contact: a
+        // minimum of F̄ at a compressive force is no pull-off (issue 31,
+        // item 6: apex45 far below the paper's range)
+        if po.state.force_bar >= 0.0 {
+            return Err(Error::NoState(format!(
+                "model {} has no load-controlled pull-off at rho = {}: the minimum of the force along its branch is compressive (F = {} at a_bar = {}, s = {}), so the contact carries no tensile load",
+                self.model_id(),
+                short(self.rho),
+                rounded(po.state.force_bar),
+                rounded(po.state.a_bar),
+                rounded(po.state.s)
+            )));
+        }
+        Ok(po)
+    }
+
+    /// The first minimum of F̄ along the branch from large loads, whatever
+    /// its sign (the load-controlled pull-off where it is tensile).
+    fn force_minimum(&self) -> Result<PullOff> {
         let basis = if self.has_energy() {
             FoldBasis::EnergyInstability
         } else {
@@ -1202,7 +1227,7 @@ impl Contact {
         }
         if self.near_circle() {
             let circle = self.circle()?.axisymmetric_pull_off()?;
-            let anchor = self.anchor()?.pull_off_load()?.state;
+            let anchor = self.anchor()?.force_minimum()?.state;
             return Ok(PullOff {
                 state: self.near_circle_fold(&circle, &anchor, FoldCondition::Load)?,
                 control: FoldCondition::Load,
@@ -1210,8 +1235,9 @@ impl Contact {
             });
         }
         let guess = self.branch_minimum(Quantity::Force, "pull-off under load control")?;
+        let state = self.refine_fold(&guess, FoldCondition::Load)?;
         Ok(PullOff {
-            state: self.refine_fold(&guess, FoldCondition::Load)?,
+            state,
             control: FoldCondition::Load,
             basis,
         })
@@ -1314,10 +1340,10 @@ impl Contact {
     pub fn zero_force(&self) -> Result<State> {
         self.at_load(0.0).map_err(|e| match e {
             Error::OutOfRange { name: "force", .. } => Error::NoState(format!(
-                "model {} has no zero-force state at rho = {}: its pull-off force is above zero ({}), so the contact cannot be unloaded to F = 0",
+                "model {} has no zero-force state at rho = {}: the minimum of the force along its branch is above zero ({}), so the contact cannot be unloaded to F = 0",
                 self.model_id(),
                 short(self.rho),
-                self.pull_off_load()
+                self.force_minimum()
                     .map(|p| crate::error::rounded(p.state.force_bar))
                     .unwrap_or_else(|_| "not located".into())
             )),

@@ -5,6 +5,7 @@
 
 mod common;
 use common::bash;
+use thinjkr::Error;
 
 const COMMANDS: [&str; 6] = [
     "curve --rho 0.8 --points 100000",
@@ -211,4 +212,46 @@ fn model_and_missing_input_errors_name_what_is_accepted() {
     let (code, _, err) = bash("\"$0\" physical --h1 1e300");
     assert_eq!(code, Some(1));
     assert!(err.contains("--r1") && !err.contains("NaN"), "{err}");
+}
+
+/// Issue 31, item 6 (the sign): a load-controlled pull-off force is
+/// tensile or there is none. apex45 far below the paper's range has the
+/// minimum of its force along the branch at a compressive force at
+/// ρ = 0.19 and 0.20 (F̄ = +0.283 and +0.135, where `pull-off` answered
+/// those as pull-offs): no pull-off, a typed error that says so with the
+/// minimum; the same minimum bounds the forces it answers, and at
+/// ρ = 0.21 the minimum is tensile again, a pull-off.
+#[test]
+fn a_compressive_force_minimum_is_no_pull_off() {
+    use thinjkr::{Contact, ModelId};
+    for rho in [0.19, 0.2] {
+        let c = Contact::with_model(ModelId::Apex45, rho).unwrap();
+        match c.pull_off_load() {
+            Err(Error::NoState(why)) => assert!(
+                why.contains("no load-controlled pull-off") && why.contains("compressive"),
+                "{why}"
+            ),
+            other => panic!("rho {rho}: {other:?}"),
+        }
+        assert!(matches!(
+            c.at_load(-1.0),
+            Err(Error::OutOfRange { name: "force", .. })
+        ));
+        assert!(matches!(c.zero_force(), Err(Error::NoState(_))));
+    }
+    let po = Contact::with_model(ModelId::Apex45, 0.21)
+        .unwrap()
+        .pull_off_load()
+        .unwrap();
+    assert!(po.state.force_bar < 0.0, "{po:?}");
+    // every model's pull-off is tensile wherever it answers (the sweep of
+    // the models of the ellipse, 120 values of rho from 0.005 to 1)
+    for id in ModelId::ALL {
+        for k in 0..120 {
+            let rho = (0.005f64.ln() * (1.0 - k as f64 / 119.0)).exp();
+            if let Ok(p) = Contact::with_model(id, rho).unwrap().pull_off_load() {
+                assert!(p.state.force_bar < 0.0, "{id} rho {rho}: {p:?}");
+            }
+        }
+    }
 }
