@@ -337,13 +337,13 @@ def test_the_ellipse_models_flags_are_warnings_as_on_the_command_line(cli):
     line = subprocess.run([cli, "solve", "--rho", "0.5", "--force", "0"], capture_output=True, text=True).stdout
     assert "[rho < 0.8: outside the paper's stated range]" in line
     assert run_json(cli, "solve", "--rho", "0.5", "--force", "0")["state"]["warnings"] == st.warnings
-    # beyond the contact-size fold: apex45's pull-off at rho = 0.21 (issue 31
-    # item 6 reports its ordering; here it is not answered in silence)
+    # beyond the contact-size fold: the paper's model at rho = 0.3 and a
+    # negative approach (the state on its branch there lies past the fold)
     with warnings.catch_warnings(record=True) as w:
         warnings.simplefilter("always")
-        po = thinjkr.pull_off(0.21, model="apex45")
+        st = thinjkr.solve(0.3, delta=-0.5)
     words = [str(x.message) for x in w if x.category is thinjkr.ThinJkrWarning]
-    assert po.beyond_size_fold and "beyond the contact-size fold" in words
+    assert st.beyond_size_fold and "beyond the contact-size fold" in words
     with warnings.catch_warnings():
         warnings.simplefilter("error", thinjkr.ThinJkrWarning)
         thinjkr.solve(0.9, force=0.0)  # within the range: nothing

@@ -1082,14 +1082,25 @@ impl Contact {
         // Newton on the load is singular) the state is the pull-off's, the
         // fold where the stable branch ends; below it, the range error
         // states the bound
-        self.at_load_inside(force).or_else(|e| {
-            let Ok(p) = self.force_minimum() else {
+        let inside = match self.at_load_inside(force) {
+            // the branch under load control ends at the fold of the contact
+            // size where that comes first (`load_end`): a state beyond it
+            // is not on it
+            Ok(st) if st.beyond_size_fold && !self.has_energy() => Err(Error::OutOfRange {
+                name: "force",
+                value: force,
+                range: "above the force at the end of the branch".into(),
+            }),
+            other => other,
+        };
+        inside.or_else(|e| {
+            let Ok(p) = self.load_end() else {
                 return Err(e);
             };
             let from = if p.state.force_bar < 0.0 {
                 "the pull-off force"
             } else {
-                "the (compressive) minimum of the force along the branch"
+                "the (compressive) force at the end of the branch"
             };
             if (force - p.state.force_bar).abs() <= 1e-9 * (1.0 + p.state.force_bar.abs()) {
                 return Ok(p.state);
@@ -1137,7 +1148,7 @@ impl Contact {
                 .next()
                 .ok_or_else(|| Error::NoState(format!("no state at force {}", short(force))));
         }
-        match self.pull_off_load() {
+        match self.load_end() {
             Ok(pull) if force < pull.state.force_bar => {
                 return Err(Error::OutOfRange {
                     name: "force",
@@ -1193,13 +1204,13 @@ impl Contact {
     /// Pull-off under load control: the minimum of F̄ along the branch,
     /// located by Newton on the fold condition.
     pub fn pull_off_load(&self) -> Result<PullOff> {
-        let po = self.force_minimum()?;
+        let po = self.load_end()?;
         // a pull-off is where a tensile load detaches the contact: a
         // minimum of F̄ at a compressive force is no pull-off (issue 31,
         // item 6: apex45 far below the paper's range)
         if po.state.force_bar >= 0.0 {
             return Err(Error::NoState(format!(
-                "model {} has no load-controlled pull-off at rho = {}: the minimum of the force along its branch is compressive (F = {} at a_bar = {}, s = {}), so the contact carries no tensile load",
+                "model {} has no load-controlled pull-off at rho = {}: its branch ends under load control at a compressive force (F = {} at a_bar = {}, s = {}), so the contact carries no tensile load",
                 self.model_id(),
                 short(self.rho),
                 rounded(po.state.force_bar),
@@ -1210,8 +1221,22 @@ impl Contact {
         Ok(po)
     }
 
-    /// The first minimum of F̄ along the branch from large loads, whatever
-    /// its sign (the load-controlled pull-off where it is tensile).
+    /// Where the branch from large loads ends under load control, whatever
+    /// the sign of its force (the load-controlled pull-off where it is
+    /// tensile): the first minimum of F̄, or, for a model without an
+    /// energy, the fold of the contact size where that comes first, as its
+    /// displacement-controlled end (past the size fold the branch is far
+    /// from the physical one; issue 31, item 6: max at ρ ≤ 0.03 had its
+    /// minimum of F̄ there, after the displacement-controlled end).
+    fn load_end(&self) -> Result<PullOff> {
+        let mut end = self.force_minimum()?;
+        if !self.has_energy() && end.state.beyond_size_fold {
+            end.state = self.size_fold()?;
+        }
+        Ok(end)
+    }
+
+    /// The first minimum of F̄ along the branch from large loads.
     fn force_minimum(&self) -> Result<PullOff> {
         let basis = if self.has_energy() {
             FoldBasis::EnergyInstability
@@ -1340,10 +1365,10 @@ impl Contact {
     pub fn zero_force(&self) -> Result<State> {
         self.at_load(0.0).map_err(|e| match e {
             Error::OutOfRange { name: "force", .. } => Error::NoState(format!(
-                "model {} has no zero-force state at rho = {}: the minimum of the force along its branch is above zero ({}), so the contact cannot be unloaded to F = 0",
+                "model {} has no zero-force state at rho = {}: the force at the end of its branch under load control is above zero ({}), so the contact cannot be unloaded to F = 0",
                 self.model_id(),
                 short(self.rho),
-                self.force_minimum()
+                self.load_end()
                     .map(|p| crate::error::rounded(p.state.force_bar))
                     .unwrap_or_else(|_| "not located".into())
             )),

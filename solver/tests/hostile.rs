@@ -148,7 +148,11 @@ fn the_pull_off_force_itself_solves() {
 }
 
 /// A curve reaches the pull-off of its model, at small ρ too (where the
-/// whole branch is elongated): its load fold is the pull-off state.
+/// whole branch is elongated): the pull-off state is the curve's first
+/// fold in F̄ or in the contact size along it (s falls along the curve),
+/// whichever comes first (issue 31, item 6: at ρ = 0.001 and 0.003 the
+/// size fold comes first, and the minimum of F̄ past it is not the
+/// pull-off).
 #[test]
 fn curves_reach_the_pull_off_at_small_rho() {
     use thinjkr::curve::{trace, FoldKind};
@@ -160,8 +164,9 @@ fn curves_reach_the_pull_off_at_small_rho() {
         let fold = curve
             .folds
             .iter()
-            .find(|f| f.kind == FoldKind::Load)
-            .unwrap_or_else(|| panic!("rho = {rho}: no load fold"));
+            .filter(|f| matches!(f.kind, FoldKind::Load | FoldKind::ContactSize))
+            .max_by(|x, y| x.state.s.total_cmp(&y.state.s))
+            .unwrap_or_else(|| panic!("rho = {rho}: no load or size fold"));
         assert!(
             (fold.state.force_bar / po.state.force_bar - 1.0).abs() < 1e-9,
             "rho = {rho}: {} vs {}",
@@ -214,15 +219,21 @@ fn model_and_missing_input_errors_name_what_is_accepted() {
     assert!(err.contains("--r1") && !err.contains("NaN"), "{err}");
 }
 
-/// Issue 31, item 6 (the sign): a load-controlled pull-off force is
-/// tensile or there is none. apex45 far below the paper's range has the
-/// minimum of its force along the branch at a compressive force at
-/// ρ = 0.19 and 0.20 (F̄ = +0.283 and +0.135, where `pull-off` answered
-/// those as pull-offs): no pull-off, a typed error that says so with the
-/// minimum; the same minimum bounds the forces it answers, and at
-/// ρ = 0.21 the minimum is tensile again, a pull-off.
+/// Issue 31, item 6 (the sign and the order): a load-controlled pull-off
+/// force is tensile or there is none, and along the branch from large
+/// loads it comes no later than the displacement-controlled end. apex45 far
+/// below the paper's range ends its branch under load control at a
+/// compressive force at ρ = 0.19 and 0.20 (F̄ = +0.283 and +0.135, where
+/// `pull-off` answered those as pull-offs): no pull-off, a typed error
+/// that says so with that force, which also bounds the forces it answers;
+/// at ρ = 0.23 it is tensile again, a pull-off. A model without an energy
+/// ends its branch under load control at the first minimum of F̄ or the
+/// fold of the contact size, whichever comes first, as under displacement
+/// control: `max` at ρ = 0.01 had its minimum of F̄ past the size fold
+/// (−0.1411, `beyond_size_fold`), after the displacement-controlled end
+/// (−0.1225); its load-controlled pull-off is now that fold.
 #[test]
-fn a_compressive_force_minimum_is_no_pull_off() {
+fn a_pull_off_is_tensile_and_comes_no_later_than_the_displacement_end() {
     use thinjkr::{Contact, ModelId};
     for rho in [0.19, 0.2] {
         let c = Contact::with_model(ModelId::Apex45, rho).unwrap();
@@ -239,19 +250,39 @@ fn a_compressive_force_minimum_is_no_pull_off() {
         ));
         assert!(matches!(c.zero_force(), Err(Error::NoState(_))));
     }
-    let po = Contact::with_model(ModelId::Apex45, 0.21)
+    let po = Contact::with_model(ModelId::Apex45, 0.23)
         .unwrap()
         .pull_off_load()
         .unwrap();
     assert!(po.state.force_bar < 0.0, "{po:?}");
-    // every model's pull-off is tensile wherever it answers (the sweep of
-    // the models of the ellipse, 120 values of rho from 0.005 to 1)
+    let max = Contact::with_model(ModelId::Max, 0.01).unwrap();
+    let (load, end) = (
+        max.pull_off_load().unwrap().state,
+        max.pull_off_displacement().unwrap().state,
+    );
+    assert!(!load.beyond_size_fold, "{load:?}");
+    assert!((load.force_bar - end.force_bar).abs() < 1e-9 && (load.s - end.s).abs() < 1e-9);
+    assert!((load.force_bar + 0.1225).abs() < 5e-4, "{load:?}");
+    // every model's pull-off is tensile and not beyond the size fold
+    // wherever it answers, and comes no later along the branch (s falls
+    // along it) than the displacement-controlled end (the sweep of the
+    // models of the ellipse, 120 values of rho from 0.005 to 1)
+    let mut both = 0;
     for id in ModelId::ALL {
         for k in 0..120 {
             let rho = (0.005f64.ln() * (1.0 - k as f64 / 119.0)).exp();
-            if let Ok(p) = Contact::with_model(id, rho).unwrap().pull_off_load() {
-                assert!(p.state.force_bar < 0.0, "{id} rho {rho}: {p:?}");
+            let c = Contact::with_model(id, rho).unwrap();
+            let Ok(p) = c.pull_off_load() else { continue };
+            assert!(p.state.force_bar < 0.0, "{id} rho {rho}: {p:?}");
+            assert!(!p.state.beyond_size_fold, "{id} rho {rho}: {p:?}");
+            if let Ok(d) = c.pull_off_displacement() {
+                both += 1;
+                assert!(
+                    p.state.s >= d.state.s - 1e-9,
+                    "{id} rho {rho}: load {p:?}, displacement {d:?}"
+                );
             }
         }
     }
+    assert!(both >= 150, "a sweep with both ends at {both} points only");
 }
