@@ -252,6 +252,7 @@ fn refine(contact: &Contact, kind: FoldKind, near: &State) -> Result<Fold> {
         which,
     )?;
     let mut state = contact.state_from(z[0], z[1], z[2]);
-    state.beyond_size_fold = near.beyond_size_fold;
+    // the size fold itself is where the branch turns, not beyond it
+    state.beyond_size_fold = near.beyond_size_fold && kind != FoldKind::ContactSize;
     Ok(Fold { kind, state })
 }
