@@ -855,11 +855,64 @@ impl Conformal {
         let a_circle = x1[0];
         let x = match self.continue_in_rho(x1, j1, rho, control) {
             Ok(x) => x,
-            Err(first) => self
-                .bracketed_by_sizes(rho, control, a_circle)
-                .map_err(|e| Error::NoState(format!("{}; {}", first.detail(), e.detail())))?,
+            Err(first) => match self.bracketed_by_sizes(rho, control, a_circle) {
+                Ok(x) => x,
+                Err(second) if matches!(control, Hold::Force(_)) => {
+                    self.on_the_pull_off_arm(rho, control).map_err(|third| {
+                        Error::NoState(format!(
+                            "{}; {}; {}",
+                            first.detail(),
+                            second.detail(),
+                            third.detail()
+                        ))
+                    })?
+                }
+                Err(second) => {
+                    return Err(Error::NoState(format!(
+                        "{}; {}",
+                        first.detail(),
+                        second.detail()
+                    )))
+                }
+            },
         };
         self.state(&x, rho)
+    }
+
+    /// The state at force `control` on the arm that carries the pull-off:
+    /// traced, as the pull-off is ([`Conformal::pull_off`]), from the state
+    /// at ā = [`Family::trace_start_a`] towards smaller ā, to where F̄
+    /// crosses the force before its first minimum, else towards larger ā
+    /// (issue 31, item 6: at
+    /// ρ = 0.3 conformal:8's states at F̄ in [−2.35, −1.5] lie on that arm,
+    /// past folds the routes from the circle and by sizes do not cross).
+    fn on_the_pull_off_arm(&self, rho: f64, control: Hold) -> Result<DVector<f64>> {
+        let Hold::Force(force) = control else {
+            return Err(Error::Usage(format!(
+                "{}: only a force is looked for on the pull-off's arm",
+                self.name()
+            )));
+        };
+        let start = self.solve(rho, Hold::Size(self.family.trace_start_a))?;
+        let mut x = DVector::from_vec(start.coefficients.clone());
+        x = x.push(start.delta_bar);
+        // towards the pull-off first (the forces between it and the start),
+        // then away from it
+        let crossing = match trace::to_force_on_the_pull_off_arm(self, &x, rho, force, true)? {
+            Some(c) => Some(c),
+            None => trace::to_force_on_the_pull_off_arm(self, &x, rho, force, false)?,
+        };
+        let crossing = crossing.ok_or_else(|| {
+            Error::NoState(format!(
+                "{}: the arm that carries the pull-off, traced both ways from a = {} at rho = {}, does not cross force = {}",
+                self.name(),
+                self.family.trace_start_a,
+                short(rho),
+                short(force)
+            ))
+        })?;
+        // the located crossing, polished at the force
+        self.newton(&crossing, rho, control)
     }
 
     /// The state at `rho` under `control` on the branch through `near` (a

@@ -11,8 +11,9 @@
 //! golden-section search on F̄) or of δ̄ (displacement control: Illinois on
 //! dδ̄/dσ). Folds in ā passed on the way are reported.
 //!
-//! Owns: [`Extremum`], [`to_extremum`],
-//! [`to_nearby_extremum`], [`Curve`], [`CurveFold`], [`curve`]. May use: `fold`,
+//! Owns: [`Extremum`], [`to_extremum`], [`to_nearby_extremum`],
+//! [`to_force_on_the_pull_off_arm`], [`Curve`], [`CurveFold`], [`curve`].
+//! May use: `fold`, `control` (the quantity a crossing watches),
 //! the parent module,
 //! `equations` (the family of the one model interface), `continuation`,
 //! `curve` (fold kinds, the bound on points), `error`, nalgebra.
@@ -148,6 +149,46 @@ fn extremum_along(
             ))
         }
     }
+}
+
+/// Trace from `x0` along the arm its pull-off trace follows
+/// ([`to_extremum`] under load control) to where F̄ crosses `force`:
+/// towards smaller ā (`smaller`) up to the arm's first minimum of F̄ (the
+/// pull-off), or towards larger ā up to twice the start's ā. The crossing,
+/// located, or `None` where the trace ends before it crosses.
+pub(crate) fn to_force_on_the_pull_off_arm(
+    m: &Conformal,
+    x0: &DVector<f64>,
+    rho: f64,
+    force: f64,
+    smaller: bool,
+) -> Result<Option<DVector<f64>>> {
+    let family = branch(m, rho, true);
+    let sign = if smaller { -1.0 } else { 1.0 };
+    let towards = family.a_bar_gradient() * sign;
+    let a0: f64 = x0.rows(0, x0.len() - 1).sum();
+    let settings = Settings {
+        step: 0.02,
+        min_step: 1e-10,
+        max_step: 0.1,
+        grow: 1.3,
+        fast_iterations: 3,
+        turn: 0.995,
+        corrector_iterations: 12,
+        step_tolerance: 1e-12,
+        max_steps: 20_000,
+    };
+    let watch = Watch {
+        size_fold: On::Note,
+        displacement_fold: On::Ignore,
+        force_minimum: if smaller { On::Stop } else { On::Ignore },
+        bifurcation: On::Ignore,
+        crossing: Some((crate::control::Quantity::Force, force, On::Stop)),
+    };
+    let trace = continuation::trace(&family, x0.clone(), &towards, settings, watch, |p| {
+        p.a_bar < 0.3 || p.a_bar > 2.0 * a0
+    })?;
+    Ok(trace.located(EventKind::Crossing).cloned())
 }
 
 fn stuck(m: &Conformal, x: &DVector<f64>, rho: f64, why: &str) -> Error {
