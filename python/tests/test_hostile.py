@@ -103,17 +103,34 @@ def test_a_rayon_num_threads_beyond_the_cap_is_capped_with_a_warning():
     assert got["a"] == normal.a_bar.tolist()
 
 
-def test_ctrl_c_interrupts_a_long_array_call_and_the_next_call_works():
-    """Ctrl-C (SIGINT) one second into an array call that would run for a
-    minute (10 million energy-model states) raises KeyboardInterrupt
-    between chunks, long before the call would end (the child is given 30
-    s in all); no partial result is returned, and the next call answers."""
-    import os
+def _interrupted_one_second_in(code: str, timeout: float):
+    """Run `code` in a child Python that prints 'started' before its long
+    call, send it SIGINT one second later, and return its output lines once
+    it has exited (status 0) within `timeout` seconds of the signal."""
     import signal
     import subprocess
     import sys
     import time
 
+    child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline().strip() == "started"
+        time.sleep(1.0)
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=timeout)
+    finally:
+        if child.poll() is None:
+            child.kill()
+            child.communicate()
+    assert child.returncode == 0, err
+    return out.split("\n")
+
+
+def test_ctrl_c_interrupts_a_long_array_call_and_the_next_call_works():
+    """Ctrl-C (SIGINT) one second into an array call that would run for a
+    minute (10 million energy-model states) raises KeyboardInterrupt
+    between chunks, long before the call would end (the child is given 30
+    s in all); no partial result is returned, and the next call answers."""
     code = (
         "import numpy as np, thinjkr\n"
         "n = 10_000_000\n"
@@ -127,20 +144,9 @@ def test_ctrl_c_interrupts_a_long_array_call_and_the_next_call_works():
         "    print('interrupted', flush=True)\n"
         "print('next', repr(thinjkr.solve(0.8, delta=2.0).a_bar), flush=True)\n"
     )
-    child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        assert child.stdout.readline().strip() == "started"
-        time.sleep(1.0)
-        child.send_signal(signal.SIGINT)
-        out, err = child.communicate(timeout=30)
-    finally:
-        if child.poll() is None:
-            child.kill()
-            child.communicate()
-    assert child.returncode == 0, err
-    lines = out.split("\n")
-    assert lines[0] == "interrupted", out
-    assert lines[1] == "next " + repr(thinjkr.solve(0.8, delta=2.0).a_bar), out
+    lines = _interrupted_one_second_in(code, timeout=30)
+    assert lines[0] == "interrupted", lines
+    assert lines[1] == "next " + repr(thinjkr.solve(0.8, delta=2.0).a_bar), lines
 
 
 def test_ctrl_c_interrupts_one_slow_exact_solve_and_the_next_call_works():
@@ -151,11 +157,6 @@ def test_ctrl_c_interrupts_one_slow_exact_solve_and_the_next_call_works():
     KeyboardInterrupt inside that solve's Newton iterations: the child
     answers within 8 s of the signal, less than half the call's own time;
     no partial result is returned, and the next call answers."""
-    import signal
-    import subprocess
-    import sys
-    import time
-
     code = (
         "import thinjkr\n"
         "thinjkr.solve(0.8, delta=2.0)\n"
@@ -169,20 +170,9 @@ def test_ctrl_c_interrupts_one_slow_exact_solve_and_the_next_call_works():
         "    print('ended', e.kind, flush=True)\n"
         "print('next', repr(thinjkr.exact.solve(0.8, force=0.0).a_bar), flush=True)\n"
     )
-    child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        assert child.stdout.readline().strip() == "started"
-        time.sleep(1.0)
-        child.send_signal(signal.SIGINT)
-        out, err = child.communicate(timeout=8)
-    finally:
-        if child.poll() is None:
-            child.kill()
-            child.communicate()
-    assert child.returncode == 0, err
-    lines = out.split("\n")
-    assert lines[0] == "interrupted", out
-    assert lines[1] == "next " + repr(thinjkr.exact.solve(0.8, force=0.0).a_bar), out
+    lines = _interrupted_one_second_in(code, timeout=8)
+    assert lines[0] == "interrupted", lines
+    assert lines[1] == "next " + repr(thinjkr.exact.solve(0.8, force=0.0).a_bar), lines
 
 
 def test_a_doubtful_state_is_answered_with_a_warning_not_in_silence():

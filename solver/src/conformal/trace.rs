@@ -83,6 +83,20 @@ pub(crate) fn to_nearby_extremum(
     extremum_along(m, x0, rho, control, &towards, reach)
 }
 
+/// The step control of a trace along an arm to an event (an extremum, a
+/// crossing): steps from 0.02 up to 0.1 in the family's scaled unknowns.
+const ARM: Settings = Settings {
+    step: 0.02,
+    min_step: 1e-10,
+    max_step: 0.1,
+    grow: 1.3,
+    fast_iterations: 3,
+    turn: 0.995,
+    corrector_iterations: 12,
+    step_tolerance: 1e-12,
+    max_steps: 20_000,
+};
+
 fn extremum_along(
     m: &Conformal,
     x0: &DVector<f64>,
@@ -94,17 +108,6 @@ fn extremum_along(
     let n = x0.len();
     let family = branch(m, rho, true);
     let a0: f64 = x0.rows(0, n - 1).sum();
-    let settings = Settings {
-        step: 0.02,
-        min_step: 1e-10,
-        max_step: 0.1,
-        grow: 1.3,
-        fast_iterations: 3,
-        turn: 0.995,
-        corrector_iterations: 12,
-        step_tolerance: 1e-12,
-        max_steps: 20_000,
-    };
     let (force_minimum, displacement_fold, size_fold) = match control {
         FoldCondition::Load => (On::Stop, On::Ignore, On::Note),
         FoldCondition::Displacement => (On::Ignore, On::Stop, On::Note),
@@ -117,7 +120,7 @@ fn extremum_along(
         bifurcation: On::Ignore,
         crossing: None,
     };
-    let trace = continuation::trace(&family, x0.clone(), towards, settings, watch, |p| {
+    let trace = continuation::trace(&family, x0.clone(), towards, ARM, watch, |p| {
         p.a_bar < 0.3 || (p.a_bar - a0).abs() > reach
     })?;
     let folds = trace
@@ -155,7 +158,8 @@ fn extremum_along(
 /// ([`to_extremum`] under load control) to where F̄ crosses `force`:
 /// towards smaller ā (`smaller`) up to the arm's first minimum of F̄ (the
 /// pull-off), or towards larger ā up to twice the start's ā. The crossing,
-/// located, or `None` where the trace ends before it crosses.
+/// located, or `None` where the trace ends there before it crosses; an
+/// error where the step budget ends it.
 pub(crate) fn to_force_on_the_pull_off_arm(
     m: &Conformal,
     x0: &DVector<f64>,
@@ -167,17 +171,6 @@ pub(crate) fn to_force_on_the_pull_off_arm(
     let sign = if smaller { -1.0 } else { 1.0 };
     let towards = family.a_bar_gradient() * sign;
     let a0: f64 = x0.rows(0, x0.len() - 1).sum();
-    let settings = Settings {
-        step: 0.02,
-        min_step: 1e-10,
-        max_step: 0.1,
-        grow: 1.3,
-        fast_iterations: 3,
-        turn: 0.995,
-        corrector_iterations: 12,
-        step_tolerance: 1e-12,
-        max_steps: 20_000,
-    };
     let watch = Watch {
         size_fold: On::Note,
         displacement_fold: On::Ignore,
@@ -185,9 +178,18 @@ pub(crate) fn to_force_on_the_pull_off_arm(
         bifurcation: On::Ignore,
         crossing: Some((crate::control::Quantity::Force, force, On::Stop)),
     };
-    let trace = continuation::trace(&family, x0.clone(), &towards, settings, watch, |p| {
+    let trace = continuation::trace(&family, x0.clone(), &towards, ARM, watch, |p| {
         p.a_bar < 0.3 || p.a_bar > 2.0 * a0
     })?;
+    if trace.end == End::Budget {
+        let last = &trace.points.last().expect("one point").u;
+        return Err(stuck(
+            m,
+            last,
+            rho,
+            "the step budget ran out before the force was crossed",
+        ));
+    }
     Ok(trace.located(EventKind::Crossing).cloned())
 }
 
