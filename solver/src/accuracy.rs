@@ -587,6 +587,11 @@ pub(crate) fn doubling(coarse: &ExactState) -> Doubling {
         Truncation {
             modes: 2 * t.modes,
             points: 2 * t.points,
+            arclength: if t.arclength == 0 {
+                0
+            } else {
+                (2 * t.arclength + 1).min(2 * t.modes)
+            },
         },
     )
     .and_then(|ex| ex.solve(coarse.a_bar, &coarse.contour, coarse.delta_bar))

@@ -885,6 +885,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
             Truncation {
                 modes: e.modes,
                 points: e.points,
+                arclength: 0,
             },
         )?;
         let st = ExactState {

@@ -96,6 +96,7 @@ fn bands_at_rho_0_8_sit_at_the_circle_modes_and_match_the_arms_folds() {
         Truncation {
             modes: 16,
             points: 256,
+            arclength: 0,
         },
     )
     .unwrap();
@@ -339,6 +340,7 @@ fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
         Truncation {
             modes: 2 * modes,
             points: 2 * st.truncation.points,
+            arclength: 0,
         },
     )
     .unwrap()

@@ -8,7 +8,11 @@ use thinjkr::exact::branch::Event;
 use thinjkr::exact::{Contour, Exact, Truncation};
 
 fn trunc(modes: usize, points: usize) -> Truncation {
-    Truncation { modes, points }
+    Truncation {
+        modes,
+        points,
+        arclength: 0,
+    }
 }
 
 /// ρ = 1: from a perturbed, non-circular start the solver finds the circle

@@ -64,6 +64,7 @@ impl Discretisation {
             .map(|m| Truncation {
                 modes: m,
                 points: self.points.unwrap_or(crate::exact::POINTS_PER_MODE * m),
+                arclength: 0,
             })
             .collect())
     }

@@ -26,19 +26,32 @@ pub(crate) struct Grid {
     pub theta: Vec<f64>,
     pub(crate) d1: DMatrix<f64>,
     /// The contour basis at the points: `basis[k][i]` = e^{i m_k θ_i} with
-    /// m_0 = 1 and m_{j+1} = −(2j + 1) (see [`Grid::with_modes`]).
+    /// the multipliers m_k of [`Grid::multipliers`].
     pub basis: Vec<Vec<Complex<f64>>>,
+    /// The multipliers m_k of the basis: m_0 = 1 (A), m_{j+1} = −(2j + 1)
+    /// (b_j, j < N), then m_{N+1+j} = 2j + 3 (c_j, the arclength
+    /// representation's positive modes, j < P).
+    pub multipliers: Vec<f64>,
+    /// N, the number of negative modes b_j in the basis.
+    pub negative: usize,
 }
 
 impl Grid {
-    /// A grid of `n` points with the contour basis e^{iθ}, e^{−(2j+1)iθ},
-    /// j < `modes`, tabulated (the contour series is evaluated on the grid
-    /// at every residual; the table saves its exponentials).
-    pub(crate) fn with_modes(n: usize, modes: usize) -> Grid {
+    /// A grid of `n` points with the contour basis tabulated: e^{iθ},
+    /// `negative` modes e^{−(2j+1)iθ} (b_j) and `positive` modes e^{(2j+3)iθ}
+    /// (c_j), [`Grid::multipliers`] (the contour series is evaluated on the
+    /// grid at every residual; the table saves its exponentials).
+    pub(crate) fn with_basis(n: usize, negative: usize, positive: usize) -> Grid {
         let mut g = Grid::new(n);
-        g.basis = (0..=modes)
-            .map(|k| {
-                let m = multiplier(k);
+        g.multipliers = (0..=negative)
+            .map(multiplier)
+            .chain((0..positive).map(|j| 2.0 * j as f64 + 3.0))
+            .collect();
+        g.negative = negative;
+        g.basis = g
+            .multipliers
+            .iter()
+            .map(|&m| {
                 g.theta
                     .iter()
                     .map(|&t| Complex::new(0.0, m * t).exp())
@@ -46,6 +59,11 @@ impl Grid {
             })
             .collect();
         g
+    }
+
+    /// P, the number of positive modes c_j in the basis.
+    pub(crate) fn positive(&self) -> usize {
+        self.multipliers.len().saturating_sub(self.negative + 1)
     }
 
     /// A grid of `n` points (`n` even, ≥ 8), without a basis table.
@@ -73,6 +91,8 @@ impl Grid {
             theta,
             d1,
             basis: Vec::new(),
+            multipliers: Vec::new(),
+            negative: 0,
         }
     }
 

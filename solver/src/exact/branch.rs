@@ -252,7 +252,7 @@ fn linearise(
     u: &DVector<f64>,
 ) -> Option<(DVector<f64>, f64, DMatrix<f64>, DVector<f64>)> {
     let lin = ex.linear(u)?;
-    let (r, j) = (ex.cos_modes_of(&lin.dn), ex.mode_jacobian(&lin));
+    let (r, j) = (ex.family_residuals(&lin.dn, u), ex.mode_jacobian(&lin, u));
     Some((r, lin.force, j, lin.d_force))
 }
 
@@ -261,7 +261,7 @@ fn linearise(
 /// singular vector of its smallest singular value; b_j perturbs the radius
 /// by cos (2j + 2)θ. 0 when A or δ̄ dominates; `None` when the SVD gives
 /// no singular vectors.
-fn null_mode(bordered: &DMatrix<f64>) -> Option<usize> {
+fn null_mode(bordered: &DMatrix<f64>, mult: &[f64]) -> Option<usize> {
     let n = bordered.nrows();
     let svd = bordered.clone().svd(false, true);
     let v_t = svd.v_t.as_ref()?;
@@ -272,8 +272,14 @@ fn null_mode(bordered: &DMatrix<f64>) -> Option<usize> {
     Some(if i == 0 || i == n - 1 {
         0
     } else {
-        2 * (i - 1) + 2
+        radial_mode(mult[i])
     })
+}
+
+/// The radial mode of the coefficient of e^{imθ}: it perturbs the radius of
+/// the circle by cos (m − 1)θ (b_j: 2j + 2; c_j: 2j + 2 too).
+fn radial_mode(m: f64) -> usize {
+    (m - 1.0).abs().round() as usize
 }
 
 /// The contour mode of the null direction of the state equations at fixed
@@ -281,13 +287,13 @@ fn null_mode(bordered: &DMatrix<f64>) -> Option<usize> {
 /// singular vector of the smallest singular value (A and δ̄ move with
 /// it, but the shape change is in the b_j); b_j perturbs the radius by
 /// cos (2j + 2)θ. `None` when the SVD gives no singular vectors.
-fn contour_mode(held: &DMatrix<f64>) -> Option<usize> {
+fn contour_mode(held: &DMatrix<f64>, mult: &[f64]) -> Option<usize> {
     let n = held.nrows();
     let svd = held.clone().svd(false, true);
     let v_t = svd.v_t.as_ref()?;
     let k = svd.singular_values.imin();
     let i = (1..n - 1).max_by(|&a, &b| v_t[(k, a)].abs().total_cmp(&v_t[(k, b)].abs()))?;
-    Some(2 * (i - 1) + 2)
+    Some(radial_mode(mult[i]))
 }
 
 /// The exact family's step control: arclength steps in u between 1e-4 and
@@ -347,11 +353,11 @@ impl Family<Dyn> for Exact {
     }
 
     fn a_bar_gradient(&self) -> DVector<f64> {
-        a_bar_gradient(self.truncation.modes + 2)
+        a_bar_gradient(self.unknown_count())
     }
 
     fn delta_bar_gradient(&self) -> DVector<f64> {
-        let n = self.truncation.modes + 2;
+        let n = self.unknown_count();
         let mut g = DVector::zeros(n);
         g[n - 1] = 1.0;
         g
@@ -362,15 +368,11 @@ impl Family<Dyn> for Exact {
     }
 
     fn bifurcation_mode(&self, bordered: &DMatrix<f64>) -> Option<usize> {
-        null_mode(bordered)
+        null_mode(bordered, &self.grid.multipliers)
     }
 
     fn stuck(&self, u: &DVector<f64>, why: &str) -> Error {
-        let nm = self.truncation.modes;
-        let contour = super::Contour {
-            a: u[0],
-            b: u.rows(1, nm).iter().copied().collect(),
-        };
+        let contour = self.contour_of(u);
         let (a_bar, b_bar) = (contour.a_bar(), contour.b_bar());
         Error::NoConvergence {
             iterations: 25,
@@ -479,6 +481,55 @@ impl Exact {
         }
     }
 
+    /// The minimum of F̄ nearest in ā to `a_bar` on the arm through `start`:
+    /// the family traced from `start` both ways (steps of at most 0.02, 40
+    /// points, ā within 0.3–3 times `start`'s), each to its first force
+    /// minimum.
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) fn force_minimum_nearest(
+        &self,
+        start: &ExactState,
+        a_bar: f64,
+    ) -> Result<ExactState> {
+        let mut best: Option<ExactState> = None;
+        let mut last = None;
+        for direction in [1.0, -1.0] {
+            match self.trace_general(
+                start,
+                direction,
+                0.3 * start.a_bar,
+                3.0 * start.a_bar,
+                0.02,
+                40,
+                true,
+                None,
+            ) {
+                Ok((b, _)) => {
+                    for e in b.events {
+                        if let Event::ForceMinimum { state } = e {
+                            let nearer = best.as_ref().is_none_or(|x| {
+                                (x.a_bar - a_bar).abs() > (state.a_bar - a_bar).abs()
+                            });
+                            if nearer {
+                                best = Some(*state);
+                            }
+                        }
+                    }
+                }
+                Err(e) => last = Some(e),
+            }
+        }
+        best.ok_or_else(|| {
+            last.unwrap_or_else(|| {
+                Error::NoState(format!(
+                    "no minimum of the force on the arm traced both ways from a_bar = {} at rho = {}",
+                    crate::error::rounded(start.a_bar),
+                    crate::error::rounded(self.rho)
+                ))
+            })
+        })
+    }
+
     /// The pull-off `found` if it is resolved (boundary error at most
     /// [`super::RESOLVED`]); else an [`Error::Unresolved`] that asks for
     /// more modes.
@@ -568,7 +619,7 @@ impl Exact {
         stop_at_force_minimum: bool,
         control: Option<Hold>,
     ) -> Result<(Branch, Option<ExactState>)> {
-        let n = self.truncation.modes + 2;
+        let n = self.unknown_count();
         let towards = a_bar_gradient(n) * direction;
         let settings = trace_settings(max_step, max_points.saturating_sub(1));
         let crossing = control.map(|c| (Quantity::of(c), c.value(), On::Stop));
@@ -656,7 +707,7 @@ impl Exact {
         a_limit: f64,
         max_step: f64,
     ) -> Result<Option<(ExactState, Option<usize>)>> {
-        let n = self.truncation.modes + 2;
+        let n = self.unknown_count();
         let settings = trace_settings(max_step, 2000);
         let watch = Watch {
             size_fold: On::Stop,
@@ -693,7 +744,10 @@ impl Exact {
         let mut held = DMatrix::zeros(n, n);
         held.rows_mut(0, n - 1).copy_from(&j);
         held.set_row(n - 1, &a_bar_gradient(n).transpose());
-        Ok(Some((self.state(u)?, contour_mode(&held))))
+        Ok(Some((
+            self.state(u)?,
+            contour_mode(&held, &self.grid.multipliers),
+        )))
     }
 
     /// The states at `control` on the arm through `start`, traced with ā
@@ -718,7 +772,7 @@ impl Exact {
         control: Hold,
         max_step: f64,
     ) -> Result<(Vec<ExactState>, PastFoldEnd)> {
-        let n = self.truncation.modes + 2;
+        let n = self.unknown_count();
         let watch = Watch {
             size_fold: On::Note,
             displacement_fold: On::Ignore,

@@ -23,8 +23,8 @@
 //! Owns: [`Linear`], [`Exact::linear`]. May use: `exact`, `exact::bie`,
 //! nalgebra.
 
-use super::bie::{multiplier, orbits};
-use super::{Contour, Exact};
+use super::bie::orbits;
+use super::Exact;
 use nalgebra::{Complex, DMatrix, DVector};
 
 /// ∂p̄/∂ν at the grid points and F̄, with their derivatives in u.
@@ -45,22 +45,18 @@ impl Exact {
     /// The linearisation at u = (A, b₀..b_{N−1}, δ̄); `None` where the
     /// discrete system is singular (a self-intersecting contour).
     pub(crate) fn linear(&self, u: &DVector<f64>) -> Option<Linear> {
-        let nm = self.truncation.modes;
-        let nc = nm + 1;
-        let nu = nm + 2;
+        let nc = self.truncation.coefficients();
+        let nu = nc + 1;
         let grid = &self.grid;
         let n = grid.len();
         let nf = n as f64;
         let i_unit = C::new(0.0, 1.0);
-        let contour = Contour {
-            a: u[0],
-            b: u.rows(1, nm).iter().copied().collect(),
-        };
-        let delta = u[nm + 1];
+        let contour = self.contour_of(u);
+        let delta = u[nc];
         let s = contour.samples(grid);
         let (reps, orbit) = orbits(n);
         let m = reps.len();
-        let mult: Vec<f64> = (0..nc).map(multiplier).collect();
+        let mult: Vec<f64> = grid.multipliers.clone();
         // the contour basis, n × (N + 1)
         let e = DMatrix::<C>::from_fn(n, nc, |j, l| grid.basis[l][j]);
 
@@ -291,29 +287,37 @@ mod tests {
     /// `fields` to 1e-12.
     #[test]
     fn the_linearisation_is_the_derivative_of_the_fields() {
-        let ex = Exact::new(
-            0.7,
-            Truncation {
-                modes: 6,
-                points: 64,
-            },
-        )
-        .unwrap();
-        let u = DVector::from_vec(vec![2.1, 0.35, -0.04, 0.02, 0.01, -0.006, 0.003, 1.3]);
-        let lin = ex.linear(&u).unwrap();
-        let at = |u: &DVector<f64>| {
-            let c = Contour {
-                a: u[0],
-                b: u.rows(1, 6).iter().copied().collect(),
-            };
-            fields(&c, &ex.gap, u[7], &ex.grid).unwrap()
+        let conformal = Truncation {
+            modes: 6,
+            points: 64,
+            arclength: 0,
         };
+        let u = vec![2.1, 0.35, -0.04, 0.02, 0.01, -0.006, 0.003, 1.3];
+        holds_against_central_differences(conformal, u);
+        // the arclength representation: c_j of e^{3iθ}, e^{5iθ} too
+        let arclength = Truncation {
+            arclength: 2,
+            ..conformal
+        };
+        let u = vec![
+            2.1, 0.35, -0.04, 0.02, 0.01, -0.006, 0.003, 0.05, -0.012, 1.3,
+        ];
+        holds_against_central_differences(arclength, u);
+    }
+
+    fn holds_against_central_differences(t: Truncation, u: Vec<f64>) {
+        let ex = Exact::new(0.7, t).unwrap();
+        let nu = u.len();
+        let u = DVector::from_vec(u);
+        let lin = ex.linear(&u).unwrap();
+        let at =
+            |u: &DVector<f64>| fields(&ex.contour_of(u), &ex.gap, u[nu - 1], &ex.grid).unwrap();
         let f0 = at(&u);
         assert!((f0.force - lin.force).abs() < 1e-12 * f0.force.abs().max(1.0));
         for (a, b) in f0.normal_derivative.iter().zip(&lin.dn) {
             assert!((a - b).abs() < 1e-12, "{a} vs {b}");
         }
-        for l in 0..8 {
+        for l in 0..nu {
             let h = 1e-6 * (1.0 + u[l].abs());
             let (mut up, mut um) = (u.clone(), u.clone());
             up[l] += h;

@@ -82,6 +82,17 @@ pub struct Truncation {
     pub modes: usize,
     /// Quadrature points on the contour.
     pub points: usize,
+    /// The arclength representation's positive modes c_j (0: the
+    /// conformal-map form, z = A e^{iθ} + Σ b_j e^{−(2j+1)iθ}). With P > 0
+    /// the contour also has c_j e^{(2j+3)iθ}, j < P, and its parameter is
+    /// made proportional to arclength in the modes cos 2kθ, k = 1..P, of
+    /// |z′(θ)|² (`Contour::in_arclength`).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub arclength: usize,
+}
+
+fn is_zero(v: &usize) -> bool {
+    *v == 0
 }
 
 impl Truncation {
@@ -90,7 +101,24 @@ impl Truncation {
         Truncation {
             modes,
             points: POINTS_PER_MODE * modes,
+            arclength: 0,
         }
+    }
+
+    /// The arclength representation with `modes` modes of each sign
+    /// (b_j, j < `modes`, and c_j, j < `modes` − 1: the multipliers
+    /// ±1, ±3, …, ±(2·modes − 1)) and [`POINTS_PER_MODE`] points a mode.
+    pub(crate) fn in_arclength(modes: usize) -> Truncation {
+        Truncation {
+            modes,
+            points: POINTS_PER_MODE * modes,
+            arclength: modes.saturating_sub(1),
+        }
+    }
+
+    /// The number of contour coefficients, A, b_j and c_j.
+    pub(crate) fn coefficients(&self) -> usize {
+        1 + self.modes + self.arclength
     }
 }
 
@@ -100,7 +128,7 @@ impl Default for Truncation {
     }
 }
 
-/// The contour z(θ) = A e^{iθ} + Σ b_j e^{−(2j+1)iθ}.
+/// The contour z(θ) = A e^{iθ} + Σ b_j e^{−(2j+1)iθ} + Σ c_j e^{(2j+3)iθ}.
 #[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Contour {
@@ -108,6 +136,10 @@ pub struct Contour {
     pub a: f64,
     /// The coefficients b_j of e^{−(2j+1)iθ}.
     pub b: Vec<f64>,
+    /// The coefficients c_j of e^{(2j+3)iθ} (the arclength
+    /// representation; empty in the conformal-map form).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub c: Vec<f64>,
 }
 
 impl Contour {
@@ -118,6 +150,75 @@ impl Contour {
         Contour {
             a: 0.5 * (a + b),
             b: c,
+            c: Vec::new(),
+        }
+    }
+
+    /// The same curve with θ proportional to arclength, as a series of
+    /// `modes` modes of each sign (b_j, j < `modes`; c_j, j < `modes` − 1):
+    /// the curve is sampled at 32 points a mode, its arclength found by the
+    /// spectral integral of |z′|, θ(t) inverted by Newton at equally spaced
+    /// t and the series fitted to z(θ(t)) by the discrete Fourier
+    /// projection (the point θ = 0 stays on the X axis).
+    pub(crate) fn in_arclength(&self, modes: usize) -> Contour {
+        use std::f64::consts::PI;
+        let modes = modes.max(1);
+        let n = 32 * modes.max(self.b.len() + self.c.len() + 1);
+        // arclength s(θ) = ∫₀^θ |z′|: the mean speed and the Fourier series of
+        // |z′| − mean integrated term by term (|z′| is even, of period π)
+        let speed: Vec<f64> = (0..n)
+            .map(|i| self.at(2.0 * PI * i as f64 / n as f64)[1].norm())
+            .collect();
+        let mean = speed.iter().sum::<f64>() / n as f64;
+        let harmonics = n / 4;
+        let cos_k: Vec<f64> = (1..harmonics)
+            .map(|k| {
+                2.0 / n as f64
+                    * speed
+                        .iter()
+                        .enumerate()
+                        .map(|(i, v)| v * (2.0 * k as f64 * 2.0 * PI * i as f64 / n as f64).cos())
+                        .sum::<f64>()
+            })
+            .collect();
+        let arc = |theta: f64| {
+            mean * theta
+                + cos_k
+                    .iter()
+                    .enumerate()
+                    .map(|(k, a)| a * (2.0 * (k + 1) as f64 * theta).sin() / (2.0 * (k + 1) as f64))
+                    .sum::<f64>()
+        };
+        let speed_at = |theta: f64| self.at(theta)[1].norm();
+        // z at equal arclength: t = 2π s/length, θ(t) by Newton from θ = t
+        let m = n;
+        let points: Vec<Complex<f64>> = (0..m)
+            .map(|i| {
+                let t = 2.0 * PI * i as f64 / m as f64;
+                let mut theta = t;
+                for _ in 0..50 {
+                    let step = (arc(theta) - mean * t) / speed_at(theta);
+                    theta -= step;
+                    if step.abs() < 1e-15 {
+                        break;
+                    }
+                }
+                self.at(theta)[0]
+            })
+            .collect();
+        let coef = |mult: f64| {
+            points
+                .iter()
+                .enumerate()
+                .map(|(i, z)| z * Complex::new(0.0, -mult * 2.0 * PI * i as f64 / m as f64).exp())
+                .sum::<Complex<f64>>()
+                .re
+                / m as f64
+        };
+        Contour {
+            a: coef(1.0),
+            b: (0..modes).map(|j| coef(bie::multiplier(j + 1))).collect(),
+            c: (0..modes - 1).map(|j| coef(2.0 * j as f64 + 3.0)).collect(),
         }
     }
 
@@ -135,12 +236,19 @@ impl Contour {
             dz += i * k * b * ek;
             ddz += -k * k * b * ek;
         }
+        for (j, &c) in self.c.iter().enumerate() {
+            let k = 2.0 * j as f64 + 3.0;
+            let ek = Complex::new(0.0, k * theta).exp();
+            z += c * ek;
+            dz += i * k * c * ek;
+            ddz += -k * k * c * ek;
+        }
         [z, dz, ddz]
     }
 
     /// The half-width on the X axis, z(0).
     pub(crate) fn a_bar(&self) -> f64 {
-        self.a + self.b.iter().sum::<f64>()
+        self.a + self.b.iter().sum::<f64>() + self.c.iter().sum::<f64>()
     }
 
     /// The half-width on the Y axis, Im z(π/2).
@@ -154,18 +262,30 @@ impl Contour {
             dz: Vec::with_capacity(grid.len()),
             ddz: Vec::with_capacity(grid.len()),
         };
-        if grid.basis.len() > self.b.len() {
+        let tabulated = if self.c.is_empty() {
+            grid.basis.len() > self.b.len()
+        } else {
+            grid.negative == self.b.len() && grid.positive() == self.c.len()
+        };
+        if tabulated {
             // the same sums as `at`, from the tabulated exponentials, mode
             // by mode: z = Σ c_m e_m, dz = i Σ m c_m e_m, ddz = −Σ m² c_m e_m
             let n = grid.len();
             let zero = Complex::new(0.0, 0.0);
             let (mut s0, mut s1, mut s2) = (vec![zero; n], vec![zero; n], vec![zero; n]);
-            let terms = std::iter::once((1.0, self.a)).chain(
-                self.b
-                    .iter()
-                    .enumerate()
-                    .map(|(j, &b)| (bie::multiplier(j + 1), b)),
-            );
+            let terms = std::iter::once((1.0, self.a))
+                .chain(
+                    self.b
+                        .iter()
+                        .enumerate()
+                        .map(|(j, &b)| (bie::multiplier(j + 1), b)),
+                )
+                .chain(
+                    self.c
+                        .iter()
+                        .enumerate()
+                        .map(|(j, &c)| (2.0 * j as f64 + 3.0, c)),
+                );
             for (row, (m, coef)) in grid.basis.iter().zip(terms) {
                 for i in 0..n {
                     let t = row[i] * coef;
@@ -428,7 +548,14 @@ impl Exact {
                 range: "at least 4 · modes + 8 (and modes ≥ 1)".into(),
             });
         }
-        let grid = Grid::with_modes(truncation.points, truncation.modes);
+        if truncation.arclength > truncation.modes {
+            return Err(Error::OutOfRange {
+                name: "truncation.arclength",
+                value: truncation.arclength as f64,
+                range: "0 ..= modes (the positive modes of the arclength representation)".into(),
+            });
+        }
+        let grid = Grid::with_basis(truncation.points, truncation.modes, truncation.arclength);
         let cos_modes = (0..=truncation.modes)
             .map(|k| {
                 grid.theta
@@ -444,7 +571,11 @@ impl Exact {
             circle: gap.at(1.0)?,
             truncation,
             grid,
-            fine: Grid::with_modes(2 * truncation.points, truncation.modes),
+            fine: Grid::with_basis(
+                2 * truncation.points,
+                truncation.modes,
+                truncation.arclength,
+            ),
             cos_modes,
             with_stability: true,
         })
@@ -476,9 +607,70 @@ impl Exact {
     /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 at u = (A, b₀..b_{N−1}, δ̄)
     /// (the family's equations, ā free), and F̄.
     pub(crate) fn modes(&self, u: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
-        let n_modes = self.truncation.modes;
         let (r, force) = self.equations(u, Hold::Size(0.0))?;
-        Some((r.rows(1, n_modes + 1).into_owned(), force))
+        Some((r.rows(1, r.len() - 1).into_owned(), force))
+    }
+
+    /// The number of unknowns: the contour's coefficients and δ̄.
+    pub(crate) fn unknown_count(&self) -> usize {
+        self.truncation.coefficients() + 1
+    }
+
+    /// The contour of the unknowns u = (A, b₀..b_{N−1}, c₀..c_{P−1}, δ̄).
+    pub(crate) fn contour_of(&self, u: &DVector<f64>) -> Contour {
+        let nm = self.truncation.modes;
+        let np = self.truncation.arclength;
+        Contour {
+            a: u[0],
+            b: u.rows(1, nm).iter().copied().collect(),
+            c: u.rows(1 + nm, np).iter().copied().collect(),
+        }
+    }
+
+    /// The arclength representation's rows: the modes cos 2kθ, k = 1..P,
+    /// of |z′(θ)|² (mean over the grid), zero when θ is proportional to
+    /// arclength; empty for the conformal-map form.
+    fn gauge_rows(&self, dz: &[Complex<f64>]) -> Vec<f64> {
+        let n = self.grid.len() as f64;
+        (1..=self.truncation.arclength)
+            .map(|k| {
+                self.cos_modes[k]
+                    .iter()
+                    .zip(dz)
+                    .map(|(c, d)| c * d.norm_sqr())
+                    .sum::<f64>()
+                    / n
+            })
+            .collect()
+    }
+
+    /// ∂/∂(coefficients) of [`Exact::gauge_rows`]: P × (unknowns), δ̄'s
+    /// column zero (∂|z′|²/∂c_l = 2 Re(z̄′ i m_l e_l)).
+    fn gauge_jacobian(&self, u: &DVector<f64>) -> DMatrix<f64> {
+        let np = self.truncation.arclength;
+        let nu = self.unknown_count();
+        let mut jac = DMatrix::zeros(np, nu);
+        if np == 0 {
+            return jac;
+        }
+        let s = self.contour_of(u).samples(&self.grid);
+        let n = self.grid.len() as f64;
+        let i_unit = Complex::new(0.0, 1.0);
+        for l in 0..nu - 1 {
+            let m = self.grid.multipliers[l];
+            let d: Vec<f64> = (0..self.grid.len())
+                .map(|i| 2.0 * (s.dz[i].conj() * i_unit * m * self.grid.basis[l][i]).re)
+                .collect();
+            for k in 1..=np {
+                jac[(k - 1, l)] = self.cos_modes[k]
+                    .iter()
+                    .zip(&d)
+                    .map(|(c, v)| c * v)
+                    .sum::<f64>()
+                    / n;
+            }
+        }
+        jac
     }
 
     /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 from ∂p̄/∂ν at the grid
@@ -497,18 +689,38 @@ impl Exact {
         )
     }
 
+    /// The family's equations (ā free) from ∂p̄/∂ν at the grid points `dn`
+    /// of the unknowns u: the cosine modes of [`Exact::cos_modes_of`], then
+    /// the arclength representation's rows ([`Exact::gauge_rows`]).
+    pub(crate) fn family_residuals(&self, dn: &[f64], u: &DVector<f64>) -> DVector<f64> {
+        let bc = self.cos_modes_of(dn);
+        if self.truncation.arclength == 0 {
+            return bc;
+        }
+        let gauge = self.gauge_rows(&self.contour_of(u).samples(&self.grid).dz);
+        DVector::from_iterator(bc.len() + gauge.len(), bc.iter().copied().chain(gauge))
+    }
+
     /// ∂/∂u of the cosine modes k = 0..N of ∂p̄/∂ν − 1 (as [`Exact::modes`]
     /// computes them) from the linearisation: (N + 1) × (N + 2).
-    pub(crate) fn mode_jacobian(&self, lin: &linear::Linear) -> DMatrix<f64> {
+    pub(crate) fn mode_jacobian(&self, lin: &linear::Linear, u: &DVector<f64>) -> DMatrix<f64> {
         let n = self.grid.len() as f64;
         let nu = lin.d_dn.ncols();
-        DMatrix::from_fn(self.cos_modes.len(), nu, |k, l| {
+        let bc = DMatrix::from_fn(self.cos_modes.len(), nu, |k, l| {
             let mut m = 0.0;
             for (i, c) in self.cos_modes[k].iter().enumerate() {
                 m += lin.d_dn[(i, l)] * c;
             }
             m / n
-        })
+        });
+        if self.truncation.arclength == 0 {
+            return bc;
+        }
+        let gauge = self.gauge_jacobian(u);
+        let mut out = DMatrix::zeros(bc.nrows() + gauge.nrows(), nu);
+        out.rows_mut(0, bc.nrows()).copy_from(&bc);
+        out.rows_mut(bc.nrows(), gauge.nrows()).copy_from(&gauge);
+        out
     }
 
     /// The truncation.
@@ -523,13 +735,23 @@ impl Exact {
 
     /// The unknowns u = (A, b₀..b_{N−1}, δ̄) of a state.
     pub(crate) fn unknowns(&self, st: &ExactState) -> DVector<f64> {
+        self.unknowns_of(&st.contour, st.delta_bar)
+    }
+
+    /// The unknowns u = (A, b₀..b_{N−1}, c₀..c_{P−1}, δ̄) of a contour and
+    /// approach (coefficients beyond the truncation dropped, missing ones 0).
+    pub(crate) fn unknowns_of(&self, contour: &Contour, delta_bar: f64) -> DVector<f64> {
         let nm = self.truncation.modes;
-        let mut u = DVector::zeros(nm + 2);
-        u[0] = st.contour.a;
+        let np = self.truncation.arclength;
+        let mut u = DVector::zeros(self.unknown_count());
+        u[0] = contour.a;
         for j in 0..nm {
-            u[j + 1] = st.contour.b.get(j).copied().unwrap_or(0.0);
+            u[j + 1] = contour.b.get(j).copied().unwrap_or(0.0);
         }
-        u[nm + 1] = st.delta_bar;
+        for j in 0..np {
+            u[j + 1 + nm] = contour.c.get(j).copied().unwrap_or(0.0);
+        }
+        u[nm + np + 1] = delta_bar;
         u
     }
 
@@ -598,19 +820,23 @@ impl Exact {
     /// k = 0..N of ∂p̄/∂ν − 1; and F̄.
     fn equations(&self, u: &DVector<f64>, held: Hold) -> Option<(DVector<f64>, f64)> {
         let n_modes = self.truncation.modes;
-        let c = Contour {
-            a: u[0],
-            b: u.rows(1, n_modes).iter().copied().collect(),
-        };
-        let f = fields(&c, &self.gap, u[n_modes + 1], &self.grid)?;
-        let mut r = DVector::zeros(n_modes + 2);
+        let id = self.unknown_count() - 1;
+        let c = self.contour_of(u);
+        let f = fields(&c, &self.gap, u[id], &self.grid)?;
+        let mut r = DVector::zeros(self.unknown_count());
         r[0] = match held {
             Hold::Size(a_bar) => c.a_bar() - a_bar,
-            Hold::Delta(d) => u[n_modes + 1] - d,
+            Hold::Delta(d) => u[id] - d,
             Hold::Force(v) => f.force - v,
         };
         r.rows_mut(1, n_modes + 1)
             .copy_from(&self.cos_modes_of(&f.normal_derivative));
+        if self.truncation.arclength > 0 {
+            let dz = c.samples(&self.grid).dz;
+            for (k, g) in self.gauge_rows(&dz).into_iter().enumerate() {
+                r[n_modes + 2 + k] = g;
+            }
+        }
         Some((r, f.force))
     }
 
@@ -640,13 +866,19 @@ impl Exact {
     /// shared chord iteration ([`crate::newton::chord`]) on the equations
     /// at `held`.
     fn newton(&self, held: Hold, guess: &Contour, delta_guess: f64) -> Result<DVector<f64>> {
-        let nm = self.truncation.modes;
-        let mut u = DVector::zeros(nm + 2);
-        u[0] = guess.a;
-        for j in 0..nm {
-            u[j + 1] = guess.b.get(j).copied().unwrap_or(0.0);
-        }
-        u[nm + 1] = delta_guess;
+        let u = match (self.truncation.arclength, guess.c.is_empty()) {
+            // a contour of the conformal-map form, re-parametrised
+            (p, true) if p > 0 => {
+                self.unknowns_of(&guess.in_arclength(self.truncation.modes), delta_guess)
+            }
+            (0, false) => {
+                return Err(Error::Usage(
+                    "a contour in the arclength representation cannot start the conformal-map form (its conformal map is not computed)".into(),
+                ))
+            }
+            _ => self.unknowns_of(guess, delta_guess),
+        };
+        let id = self.unknown_count() - 1;
         let config = crate::newton::ChordConfig {
             floor: 1e-13,
             tolerance: RESIDUAL_TOLERANCE,
@@ -654,10 +886,7 @@ impl Exact {
         };
         crate::newton::chord(&Held { exact: self, held }, u, &config).map_err(|stop| {
             // where it stopped: the contour of the last iterate
-            let c = Contour {
-                a: stop.u[0],
-                b: stop.u.rows(1, nm).iter().copied().collect(),
-            };
+            let c = self.contour_of(&stop.u);
             Error::NoConvergence {
                 iterations: stop.iterations,
                 a_bar: c.a_bar(),
@@ -666,7 +895,7 @@ impl Exact {
                 context: format!(
                     "exact solution at rho = {}, {held} (delta_bar = {}): {}",
                     crate::error::rounded(self.rho),
-                    crate::error::rounded(stop.u[nm + 1]),
+                    crate::error::rounded(stop.u[id]),
                     stop.why
                 ),
             }
@@ -680,6 +909,7 @@ impl Exact {
         let guess = Contour {
             a: near.contour.a * scale,
             b: near.contour.b.iter().map(|b| b * scale).collect(),
+            c: near.contour.c.iter().map(|c| c * scale).collect(),
         };
         // δ̄ ≈ the circle's (ā²/4 − 2/ā for the cylinders) shifted by the
         // neighbour's offset
@@ -706,17 +936,15 @@ impl Exact {
             &Contour::ellipse(a_bar, a_bar, nm),
             self.circle_delta(a_bar),
         )?;
-        let contour = |u: &DVector<f64>| Contour {
-            a: u[0],
-            b: u.rows(1, nm).iter().copied().collect(),
-        };
+        let id = self.unknown_count() - 1;
+        let contour = |u: &DVector<f64>| circle.contour_of(u);
         let mut rho = 1.0;
         let mut step: f64 = 0.05;
         while rho > self.rho {
             crate::newton::check_stop()?;
             let next = (rho - step).max(self.rho);
             let ex = Exact::on(self.gap_source, next, self.truncation)?;
-            match ex.newton(Hold::Size(a_bar), &contour(&u), u[nm + 1]) {
+            match ex.newton(Hold::Size(a_bar), &contour(&u), u[id]) {
                 Ok(n) => {
                     u = n;
                     rho = next;
@@ -742,12 +970,8 @@ impl Exact {
     }
 
     pub(crate) fn state(&self, u: &DVector<f64>) -> Result<ExactState> {
-        let nm = self.truncation.modes;
-        let contour = Contour {
-            a: u[0],
-            b: u.rows(1, nm).iter().copied().collect(),
-        };
-        let delta_bar = u[nm + 1];
+        let contour = self.contour_of(u);
+        let delta_bar = u[self.unknown_count() - 1];
         let fine = fields(&contour, &self.gap, delta_bar, &self.fine).ok_or_else(|| {
             Error::NoState("exact state: the fine-grid check system is singular".into())
         })?;
@@ -799,16 +1023,16 @@ impl crate::newton::ChordSystem for Held<'_> {
         &self,
         u: &DVector<f64>,
     ) -> Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>> {
-        let nm = self.exact.truncation.modes;
+        let nu = self.exact.unknown_count();
         let lin = self.exact.linear(u)?;
-        let mut jac = DMatrix::zeros(nm + 2, nm + 2);
+        let mut jac = DMatrix::zeros(nu, nu);
         match self.held {
-            Hold::Size(_) => jac.view_mut((0, 0), (1, nm + 1)).fill(1.0),
-            Hold::Delta(_) => jac[(0, nm + 1)] = 1.0,
+            Hold::Size(_) => jac.view_mut((0, 0), (1, nu - 1)).fill(1.0),
+            Hold::Delta(_) => jac[(0, nu - 1)] = 1.0,
             Hold::Force(_) => jac.row_mut(0).copy_from(&lin.d_force.transpose()),
         }
-        jac.view_mut((1, 0), (nm + 1, nm + 2))
-            .copy_from(&self.exact.mode_jacobian(&lin));
+        jac.view_mut((1, 0), (nu - 1, nu))
+            .copy_from(&self.exact.mode_jacobian(&lin, u));
         Some(jac.lu())
     }
 }

@@ -64,8 +64,8 @@ pub struct ExactStability {
 impl Exact {
     /// The linear stability of `st` (a state of this problem's truncation).
     pub fn stability(&self, st: &ExactState) -> Result<ExactStability> {
-        let nm = self.truncation.modes;
-        let m = nm + 1;
+        let m = self.truncation.coefficients();
+        let mult = &self.grid.multipliers;
         let err = || Error::NoState("exact stability: singular boundary integral equation".into());
         let u = self.unknowns(st);
         let lin = self.linear(&u).ok_or_else(err)?;
@@ -86,8 +86,8 @@ impl Exact {
                 let a = 2.0 * dn * vk;
                 let b = (dn * dn - 1.0) * h;
                 for l in 0..m {
-                    hess[(k, l)] += a * lin.d_dn[(i, l)]
-                        + b * super::bie::multiplier(l) * (ek * basis[l][i].conj()).re;
+                    hess[(k, l)] +=
+                        a * lin.d_dn[(i, l)] + b * mult[l] * (ek * basis[l][i].conj()).re;
                 }
             }
         }
@@ -98,8 +98,43 @@ impl Exact {
             hess[(k, m)] = 2.0 * lin.d_force[k];
         }
         let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
+        // the arclength representation: the Hessian on the directions that
+        // keep θ proportional to arclength (the null space Z of the gauge
+        // rows' Jacobian; a reparametrisation does not move the contour)
+        let restriction = if self.truncation.arclength == 0 {
+            None
+        } else {
+            // the eigenvectors of GᵀG (m × m) with its m − P smallest
+            // eigenvalues (zero where the P gauge rows are independent)
+            let g = self.gauge_jacobian(&u).columns(0, m).into_owned();
+            let gg = SymmetricEigen::new(g.transpose() * &g);
+            let mut order: Vec<usize> = (0..m).collect();
+            order.sort_by(|&a, &b| gg.eigenvalues[a].total_cmp(&gg.eigenvalues[b]));
+            let keep = m - g.nrows();
+            Some(DMatrix::from_fn(m, keep, |r, c| {
+                gg.eigenvectors[(r, order[c])]
+            }))
+        };
         let unstable = |a: DMatrix<f64>, with_delta: bool| -> Vec<UnstableMode> {
-            let eig = SymmetricEigen::new(sym(a));
+            // in the reduced coordinates [Z 0; 0 1], and back
+            let lift = restriction.as_ref().map(|z| {
+                let k = z.ncols();
+                let extra = a.nrows() - m;
+                let mut t = DMatrix::zeros(m + extra, k + extra);
+                t.view_mut((0, 0), (m, k)).copy_from(z);
+                for e in 0..extra {
+                    t[(m + e, k + e)] = 1.0;
+                }
+                t
+            });
+            let a = match &lift {
+                Some(t) => t.transpose() * a * t,
+                None => a,
+            };
+            let mut eig = SymmetricEigen::new(sym(a));
+            if let Some(t) = &lift {
+                eig.eigenvectors = t * &eig.eigenvectors;
+            }
             let scale = eig.eigenvalues.amax().max(1e-300);
             let negative: Vec<usize> = (0..eig.eigenvalues.len())
                 .filter(|&i| eig.eigenvalues[i] < -1e-9 * scale)
@@ -109,7 +144,8 @@ impl Exact {
                 if k == 0 || (with_delta && k == m) {
                     0
                 } else {
-                    2 * (k - 1) + 2
+                    // e^{i m θ} perturbs the radius of the circle by cos (m − 1)θ
+                    (mult[k] - 1.0).abs().round() as usize
                 }
             };
             // each direction a mode of its own: (direction, component)
