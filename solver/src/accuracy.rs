@@ -243,8 +243,13 @@ pub fn render_row(r: &Row) -> String {
                 crate::exact::Route::ContinuedInRho => ", continued in ρ",
                 _ => "",
             };
+            let form = if e.truncation.arclength > 0 {
+                " in arclength"
+            } else {
+                ""
+            };
             cells.push(format!(
-                "{main}, ā = {:.6}, s = {:.6} (N = {}, bc {}{route})",
+                "{main}, ā = {:.6}, s = {:.6} (N = {}{form}, bc {}{route})",
                 e.a_bar,
                 e.s,
                 e.truncation.modes,
@@ -296,7 +301,10 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          `conformal:8`'s pull-off ā + 0.03 (the model misses the exact ā by 1e-5 to 1e-3), or, where that start \
          is not found, from the state at ā = 2.6 continued in ρ from the circle; each truncation after the \
          first starts just above the pull-off of the one before; where neither start finds it, the pull-off is \
-         continued in ρ (steps of at most 0.01) from the pull-off at the first of ρ + 0.1, ρ + 0.2, … found. A state at given F̄ is solved by Newton at that \
+         continued in ρ (steps of at most 0.01) from the pull-off at the first of ρ + 0.1, ρ + 0.2, … found, \
+         and where that stops (below ρ ≈ 0.3) followed in ρ in the arclength representation \
+         (\"N = … in arclength\": the contour's series with modes of both signs and θ proportional to \
+         arclength; exact.md, \"The arclength representation\"). A state at given F̄ is solved by Newton at that \
          F̄ from the ellipse with `conformal:8`'s ā, b̄ and δ̄ at the same F̄ (else at the model's ā, then the \
          family traced to the F̄) and, where that finds \
          nothing near the model's state, looked for on the arm through the circle with that F̄ continued in ρ \
@@ -335,7 +343,7 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
         .fold(f64::INFINITY, f64::min);
     o.push_str(&format!(
         "\nThe exact pull-off on this family is resolved down to ρ = {lowest}; below, it is not resolved \
-         by the contour series at 96 modes or the continuation from the circle fails (the rows say which).\n"
+         by the contour series at 96 modes or the continuations in ρ stop (the rows say which).\n"
     ));
     let names: Vec<String> = ModelId::ALL.iter().map(|m| format!("`{m}`")).collect();
     for q in Quantity::ALL {

@@ -616,3 +616,65 @@ fn a_state_every_other_route_misses_is_found_by_the_screen() {
     assert!(st.bc_error <= 1e-9, "{}", st.bc_error);
     assert_eq!(st.route, thinjkr::exact::Route::FromScreen);
 }
+
+/// Below ρ = 0.3 the conformal form's continuation stops and the pull-off
+/// is followed in the arclength representation: at ρ = 0.2 it is resolved
+/// (boundary error below 1e-9 on the fine grid) and holds by the second
+/// route of `force_and_equation_hold_by_a_second_route` (the full boundary
+/// integral system on twice the points): F̄ as ∫p̄ dA along rays to 1e-8,
+/// Δp̄ = X²/2 + Y²/(2ρ) − δ̄ inside, and p̄ = 0 with ∂p̄/∂ν = 1 at the
+/// contour (one-sided differences along the normal, to 1e-4).
+#[test]
+fn the_pull_off_at_rho_0_2_is_resolved_in_the_arclength_representation() {
+    let rho = 0.2;
+    let (st, _) = thinjkr::exact::pull_off_resolved(rho).unwrap();
+    assert!(st.truncation.arclength > 0, "{:?}", st.truncation);
+    assert!(st.bc_error <= 1e-9, "bc {:e}", st.bc_error);
+    assert!(st.force_bar < 0.0);
+    let ex = Exact::new(rho, st.truncation).unwrap();
+    let field = ex.field(&st).unwrap();
+    let (nodes, weights) = gauss_legendre(24);
+    let m = 512;
+    let mut force = 0.0;
+    for k in 0..m {
+        let theta = 2.0 * PI * k as f64 / m as f64;
+        let [z, dz, _] = st.contour.at(theta);
+        let jac = z.re * dz.im - z.im * dz.re;
+        // rays from the centre cover the contact once (star-shaped)
+        assert!(jac > 0.0, "not star-shaped at theta = {theta}");
+        for (x, w) in nodes.iter().zip(&weights) {
+            let r = 0.5 * (x + 1.0);
+            force += 0.5 * w * field.pressure(r * z.re, r * z.im) * r * jac * (2.0 * PI / m as f64);
+        }
+    }
+    assert!(
+        (force - st.force_bar).abs() < 1e-8 * st.force_bar.abs(),
+        "quadrature {force} vs Green {}",
+        st.force_bar
+    );
+    let h = 1e-3;
+    for (x, y) in [(0.0, 0.0), (1.0, 0.5), (1.8, 0.2), (0.3, 1.0)] {
+        let lap = (field.pressure(x + h, y)
+            + field.pressure(x - h, y)
+            + field.pressure(x, y + h)
+            + field.pressure(x, y - h)
+            - 4.0 * field.pressure(x, y))
+            / (h * h);
+        let f = x * x / 2.0 + y * y / (2.0 * rho) - st.delta_bar;
+        assert!((lap - f).abs() < 1e-5, "at ({x}, {y}): {lap} vs {f}");
+    }
+    let h = 1e-3;
+    for k in 0..16 {
+        let [z, dz, _] = st.contour.at(2.0 * PI * (k as f64 + 0.3) / 16.0);
+        // inward unit normal i z′/|z′| (counter-clockwise contour)
+        let inward = nalgebra::Complex::new(-dz.im, dz.re) / dz.norm();
+        let at = |t: f64| {
+            let w = z + inward * t;
+            field.pressure(w.re, w.im)
+        };
+        assert!(at(1e-9).abs() < 1e-6, "p at the contour: {}", at(1e-9));
+        // d/d(inward) = −∂/∂ν = −1, one-sided second order
+        let d_inward = (4.0 * at(h) - at(2.0 * h)) / (2.0 * h);
+        assert!((d_inward + 1.0).abs() < 1e-4, "dp/dnu = {}", -d_inward);
+    }
+}

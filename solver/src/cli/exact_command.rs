@@ -364,11 +364,16 @@ pub(crate) fn show_state(label: &str, st: &ExactState) -> crate::Result<()> {
 
 fn show_quality(st: &ExactState) -> crate::Result<()> {
     outln!(
-        "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes, {} points",
+        "  max |dp/dnu - 1| = {:.1e} on {} points; contour off the ellipse by {:.3e} a; {} modes{}, {} points",
         st.bc_error,
         2 * st.truncation.points,
         st.deviation_from_ellipse,
         st.truncation.modes,
+        if st.truncation.arclength > 0 {
+            " of each sign (the arclength representation)"
+        } else {
+            ""
+        },
         st.truncation.points
     );
     outln!("  found: {}", st.route);

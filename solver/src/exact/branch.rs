@@ -482,10 +482,9 @@ impl Exact {
     }
 
     /// The minimum of F̄ nearest in ā to `a_bar` on the arm through `start`:
-    /// the family traced from `start` both ways (steps of at most 0.02, 40
-    /// points, ā within 0.3–3 times `start`'s), each to its first force
-    /// minimum.
-    #[cfg_attr(not(test), allow(dead_code))]
+    /// the family traced from `start` (steps of at most 0.02, 40 points, ā
+    /// within 0.3–3 times `start`'s) towards `a_bar` to its first force
+    /// minimum, and the other way only where that finds none.
     pub(crate) fn force_minimum_nearest(
         &self,
         start: &ExactState,
@@ -493,7 +492,11 @@ impl Exact {
     ) -> Result<ExactState> {
         let mut best: Option<ExactState> = None;
         let mut last = None;
-        for direction in [1.0, -1.0] {
+        let towards = if a_bar < start.a_bar { -1.0 } else { 1.0 };
+        for direction in [towards, -towards] {
+            if best.is_some() {
+                break;
+            }
             match self.trace_general(
                 start,
                 direction,

@@ -228,14 +228,29 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
 /// [`pull_off_resolved`] on `gap`.
 pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     match pull_off_on(gap, rho, &default_tries()) {
-        Err(Error::NoState(why)) => first_above(rho, |r| pull_off_on(gap, r, &default_tries()))
-            .ok_or_else(|| {
-                Error::NoState(
-                    "no pull-off found at any rho above it in steps of 0.1 to continue from".into(),
-                )
+        // not found, or not resolved by the conformal form's escalation:
+        // continued in ρ from the pull-off at a larger ρ, in the conformal
+        // form, then in the arclength representation
+        Err(e @ (Error::NoState(_) | Error::Unresolved { .. })) => {
+            let why = e.detail();
+            let Some((start, _)) = first_above(rho, |r| pull_off_on(gap, r, &default_tries()))
+            else {
+                return Err(Error::NoState(format!(
+                    "{why}; no pull-off found at any rho above it in steps of 0.1 to continue from"
+                )));
+            };
+            pull_off_continued_in_rho(&start, rho).or_else(|conformal| {
+                pull_off_followed_in_arclength(&start, rho)
+                    .map(|st| (st, Vec::new()))
+                    .map_err(|arclength| {
+                        Error::NoState(format!(
+                            "{why}; {}; {}",
+                            conformal.detail(),
+                            arclength.detail()
+                        ))
+                    })
             })
-            .and_then(|(start, _)| pull_off_continued_in_rho(&start, rho))
-            .map_err(|more| Error::NoState(format!("{why}; {}", more.detail()))),
+        }
         other => other,
     }
 }
@@ -537,10 +552,8 @@ pub(crate) const ARCLENGTH_ESCALATION: [usize; 3] = [48, 64, 96];
 /// ways from that state to the force minimum nearest the previous one; the
 /// modes escalated along [`ARCLENGTH_ESCALATION`] where the boundary error
 /// exceeds [`CONVERGED`]. Each step's state is held to [`RESOLVED`].
-///
-/// Not yet a route of [`pull_off_resolved`] (issue 32 (a)): its tests hold
-/// it to the resolved reference where both reach.
-#[cfg_attr(not(test), allow(dead_code))]
+/// The last route of [`pull_off_resolved`], where the conformal form's
+/// continuation stops (near ρ = 0.3).
 pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Result<ExactState> {
     let mut at = start.clone();
     let mut step: f64 = 0.01;
@@ -550,13 +563,16 @@ pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Re
         let next = (at.rho - step).max(rho);
         let t = Truncation::in_arclength(ARCLENGTH_ESCALATION[k]);
         let ex = Exact::on(start.gap, next, t)?.deferring_stability();
-        let found = ex
-            .solve_at(Hold::Delta(at.delta_bar), &at.contour, at.delta_bar)
-            .and_then(|s0| ex.force_minimum_nearest(&s0, at.a_bar));
+        // Newton at the previous pull-off's δ̄, else at its ā
+        let from = |hold: Hold| {
+            ex.solve_at(hold, &at.contour, at.delta_bar)
+                .and_then(|s0| ex.force_minimum_nearest(&s0, at.a_bar))
+        };
+        let found = from(Hold::Delta(at.delta_bar)).or_else(|_| from(Hold::Size(at.a_bar)));
         match found {
             Ok(po) if po.bc_error <= CONVERGED => {
                 at = po;
-                step = (step * 1.5).min(0.01);
+                step = (step * 1.5).min(0.02);
             }
             Ok(_) if k + 1 < ARCLENGTH_ESCALATION.len() => k += 1,
             _ if step > 0.00125 => step *= 0.5,
