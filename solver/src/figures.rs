@@ -789,7 +789,7 @@ impl Figure {
 }
 
 /// The exact solution's figures from `reference`: the pull-off F̄ against
-/// ρ (exact and every model), the exact contours at pull-off beside the
+/// ρ and against the crossing angle θ (exact and every model), the exact contours at pull-off beside the
 /// paper's ellipse at ρ = 0.8, 0.5 and the lowest resolved ρ, and
 /// |∂p̄/∂ν − 1| along the contour at ρ = 0.8 and 0.5 for the paper's model and
 /// the exact solution.
@@ -847,6 +847,47 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         y_label: "F̄ at pull-off",
         series,
         shade: vec![(0.8, 1.0)],
+        shade_label: "paper's range ρ ≥ 0.8",
+        equal: false,
+    });
+    // 1b. the same against the crossing angle θ of two equal cylinders
+    // (ρ = tan²(θ/2)), from θ = 16° (ρ = 0.02) to 90°
+    let theta_of = |rho: f64| 2.0 * rho.sqrt().atan().to_degrees();
+    let mut series = vec![solid(
+        "exact (2)–(3)",
+        po.iter().map(|e| (theta_of(e.rho), e.force_bar)).collect(),
+        BLACK,
+    )];
+    for (m, &c) in ModelId::ALL.iter().zip(&colors) {
+        let mut gaps = 0;
+        let pts: Vec<(f64, f64)> = grid(16.0, 90.0, 75)
+            .filter_map(|th| {
+                let rho = (th.to_radians() / 2.0).tan().powi(2).min(1.0);
+                let p = Contact::with_model(*m, rho)
+                    .and_then(|c| c.pull_off_load())
+                    .map(|p| (th, p.state.force_bar))
+                    .ok();
+                gaps += usize::from(p.is_none());
+                p
+            })
+            .collect();
+        let label = if gaps == 0 {
+            format!("model {m}")
+        } else {
+            format!("model {m} (no pull-off at {gaps} of 75 θ)")
+        };
+        series.push(solid(&label, pts, c));
+    }
+    out.push(Figure {
+        file: "exact_crossing_angle.svg",
+        title: format!(
+            "Equal cylinders crossed at θ: pull-off, exact (resolved for θ ≥ {:.0}°) and the models",
+            theta_of(lowest)
+        ),
+        x_label: "crossing angle θ [degrees] (ρ = tan²(θ/2))",
+        y_label: "F̄ at pull-off",
+        series,
+        shade: vec![(theta_of(0.8), 90.0)],
         shade_label: "paper's range ρ ≥ 0.8",
         equal: false,
     });

@@ -40,7 +40,7 @@ fn exact_figures_are_fresh() {
     let reference: thinjkr::accuracy::Reference =
         serde_json::from_str(&text).expect("the exact reference parses");
     let mut figs = thinjkr::figures::exact_all(&reference).expect("exact figures draw");
-    assert_eq!(figs.len(), 4);
+    assert_eq!(figs.len(), 5);
     // the band map, from the committed band maps (whose ρ = 0.8 line
     // solver/tests/bands.rs recomputes)
     let bands = thinjkr::exact::bands::from_json_lines(
