@@ -18,7 +18,10 @@
 //!
 //! Method: the contour is the curve z(θ) = A e^{iθ} + Σ_{j<N} b_j e^{−(2j+1)iθ}
 //! (the form of the exterior conformal map of a doubly symmetric domain;
-//! the ellipse with semi-axes a, b is A = (a+b)/2, b₀ = (a−b)/2). p̄ = q + P
+//! the ellipse with semi-axes a, b is A = (a+b)/2, b₀ = (a−b)/2); or, in the
+//! arclength representation ([`Truncation::arclength`] > 0), with modes
+//! c_j e^{(2j+3)iθ} too and θ made proportional to arclength by as many
+//! more equations (docs/exact.md, "The arclength representation"). p̄ = q + P
 //! with the particular solution P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4 and q
 //! harmonic with q = −P on the contour ([`bie`]: second-kind boundary
 //! integral equation, trapezoid rule on n points). The condition

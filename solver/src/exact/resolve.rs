@@ -545,15 +545,17 @@ pub(crate) const ARCLENGTH_ESCALATION: [usize; 3] = [48, 64, 96];
 
 /// The load-controlled pull-off (the first minimum of F̄ on the arm that
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
-/// larger ρ, in the arclength representation ([`Truncation::in_arclength`]):
-/// at each step (0.01 in ρ, halved where it fails, down to 0.00125) Newton
-/// at the previous pull-off's δ̄ (regular there, where fixed F̄ is singular
-/// and fixed ā is near the contact-size fold), then the family traced both
-/// ways from that state to the force minimum nearest the previous one; the
-/// modes escalated along [`ARCLENGTH_ESCALATION`] where the boundary error
-/// exceeds [`CONVERGED`]. Each step's state is held to [`RESOLVED`].
-/// The last route of [`pull_off_resolved`], where the conformal form's
-/// continuation stops (near ρ = 0.3).
+/// larger ρ, in the arclength representation ([`Truncation::in_arclength`]).
+/// Each step in ρ (0.01 first, grown by 1.5 up to 0.02, halved where it
+/// fails down to 0.00125): Newton at the previous pull-off's δ̄ (regular
+/// there, where fixed F̄ is singular), else at its ā; then the arm traced
+/// from that state towards the previous pull-off's ā to its first force
+/// minimum, the other way only where that finds none
+/// ([`Exact::force_minimum_nearest`]). A step is taken when its pull-off's
+/// boundary error is at most [`CONVERGED`]; else the modes are escalated
+/// along [`ARCLENGTH_ESCALATION`], then the step is halved. The last route
+/// of [`pull_off_resolved`], where the conformal form's continuation stops
+/// (near ρ = 0.3).
 pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Result<ExactState> {
     let mut at = start.clone();
     let mut step: f64 = 0.01;
