@@ -800,6 +800,29 @@ pub fn exact_all(reference: &crate::accuracy::Reference) -> Result<Vec<(&'static
         .collect()
 }
 
+/// Model `m`'s load-controlled pull-off F̄ at the points (x, ρ) of `xs`, as
+/// a series against x. A model without a pull-off at some ρ (apexes and
+/// apex45 below about 0.2) is drawn where it has one, and its label says at
+/// how many of the points (`x_name`) it has none.
+fn model_pull_offs(m: ModelId, xs: &[(f64, f64)], x_name: &str, color: RGBColor) -> Series {
+    let pts: Vec<(f64, f64)> = xs
+        .iter()
+        .filter_map(|&(x, rho)| {
+            Contact::with_model(m, rho)
+                .and_then(|c| c.pull_off_load())
+                .map(|p| (x, p.state.force_bar))
+                .ok()
+        })
+        .collect();
+    let gaps = xs.len() - pts.len();
+    let label = if gaps == 0 {
+        format!("model {m}")
+    } else {
+        format!("model {m} (no pull-off at {gaps} of {} {x_name})", xs.len())
+    };
+    solid(&label, pts, color)
+}
+
 fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> {
     use crate::exact::{Exact, ExactState, Truncation};
     let po = &reference.pull_off;
@@ -820,25 +843,8 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         BLACK,
     )];
     for (m, &c) in ModelId::ALL.iter().zip(&colors) {
-        // a model without a load-controlled pull-off at some ρ (apexes and
-        // apex45 below about 0.2) is drawn where it has one, and says so
-        let mut gaps = 0;
-        let pts: Vec<(f64, f64)> = grid(lowest, 1.0, 31)
-            .filter_map(|rho| {
-                let p = Contact::with_model(*m, rho)
-                    .and_then(|c| c.pull_off_load())
-                    .map(|p| (rho, p.state.force_bar))
-                    .ok();
-                gaps += usize::from(p.is_none());
-                p
-            })
-            .collect();
-        let label = if gaps == 0 {
-            format!("model {m}")
-        } else {
-            format!("model {m} (no pull-off at {gaps} of 31 ρ)")
-        };
-        series.push(solid(&label, pts, c));
+        let xs: Vec<(f64, f64)> = grid(lowest, 1.0, 31).map(|rho| (rho, rho)).collect();
+        series.push(model_pull_offs(*m, &xs, "ρ", c));
     }
     out.push(Figure {
         file: "exact_pull_off.svg",
@@ -859,24 +865,10 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         BLACK,
     )];
     for (m, &c) in ModelId::ALL.iter().zip(&colors) {
-        let mut gaps = 0;
-        let pts: Vec<(f64, f64)> = grid(16.0, 90.0, 75)
-            .filter_map(|th| {
-                let rho = (th.to_radians() / 2.0).tan().powi(2).min(1.0);
-                let p = Contact::with_model(*m, rho)
-                    .and_then(|c| c.pull_off_load())
-                    .map(|p| (th, p.state.force_bar))
-                    .ok();
-                gaps += usize::from(p.is_none());
-                p
-            })
+        let xs: Vec<(f64, f64)> = grid(16.0, 90.0, 75)
+            .map(|th| (th, (th.to_radians() / 2.0).tan().powi(2).min(1.0)))
             .collect();
-        let label = if gaps == 0 {
-            format!("model {m}")
-        } else {
-            format!("model {m} (no pull-off at {gaps} of 75 θ)")
-        };
-        series.push(solid(&label, pts, c));
+        series.push(model_pull_offs(*m, &xs, "θ", c));
     }
     out.push(Figure {
         file: "exact_crossing_angle.svg",

@@ -163,40 +163,67 @@ fn force_and_equation_hold_by_a_second_route() {
     let ex = Exact::new(0.8, trunc(10, 160)).unwrap();
     let st = ex.from_circle(2.5).unwrap();
     let field = ex.field(&st).unwrap();
-    // 24-point Gauss–Legendre on [0, 1] (Golub–Welsch would do; the nodes
-    // are found here by Newton on P_24)
-    let (nodes, weights) = gauss_legendre(24);
-    let m = 256;
-    let mut force = 0.0;
-    for k in 0..m {
-        let theta = 2.0 * PI * k as f64 / m as f64;
-        let [z, dz, _] = st.contour.at(theta);
-        let jac = z.re * dz.im - z.im * dz.re;
-        for (x, w) in nodes.iter().zip(&weights) {
-            let r = 0.5 * (x + 1.0);
-            force += 0.5 * w * field.pressure(r * z.re, r * z.im) * r * jac * (2.0 * PI / m as f64);
-        }
-    }
+    let force = force_along_rays(&st, &field, 256);
     assert!(
         (force - st.force_bar).abs() < 1e-9 * st.force_bar.abs(),
         "quadrature {force} vs Green {}",
         st.force_bar
     );
+    laplacian_is_the_gap(
+        &field,
+        0.8,
+        st.delta_bar,
+        &[(0.0, 0.0), (1.0, 0.5), (1.8, 0.2), (0.3, 1.6)],
+    );
+    for k in 0..16 {
+        let [z, _, _] = st.contour.at(2.0 * PI * (k as f64 + 0.3) / 16.0);
+        let p = field.pressure(0.999999 * z.re, 0.999999 * z.im);
+        assert!(p.abs() < 1e-5, "p at the contour: {p}");
+    }
+}
+
+/// F̄ = ∫p̄ dA by quadrature of the pressure field along rays r·z(θ) from
+/// the centre: 24-point Gauss–Legendre in r, the trapezoid rule on `m`
+/// angles; the rays must cover the contact once (star-shaped, asserted).
+fn force_along_rays(
+    st: &thinjkr::exact::ExactState,
+    field: &thinjkr::exact::Field,
+    m: usize,
+) -> f64 {
+    // (Golub–Welsch would do; the nodes are found by Newton on P_24)
+    let (nodes, weights) = gauss_legendre(24);
+    let mut force = 0.0;
+    for k in 0..m {
+        let theta = 2.0 * PI * k as f64 / m as f64;
+        let [z, dz, _] = st.contour.at(theta);
+        let jac = z.re * dz.im - z.im * dz.re;
+        assert!(jac > 0.0, "not star-shaped at theta = {theta}");
+        for (x, w) in nodes.iter().zip(&weights) {
+            let r = 0.5 * (x + 1.0);
+            force += 0.5 * w * field.pressure(r * z.re, r * z.im) * r * jac * (2.0 * PI / m as f64);
+        }
+    }
+    force
+}
+
+/// Δp̄ by the five-point difference (step 1e-3) at `points` against
+/// X²/2 + Y²/(2ρ) − δ̄, to 1e-5.
+fn laplacian_is_the_gap(
+    field: &thinjkr::exact::Field,
+    rho: f64,
+    delta_bar: f64,
+    points: &[(f64, f64)],
+) {
     let h = 1e-3;
-    for (x, y) in [(0.0, 0.0), (1.0, 0.5), (1.8, 0.2), (0.3, 1.6)] {
+    for &(x, y) in points {
         let lap = (field.pressure(x + h, y)
             + field.pressure(x - h, y)
             + field.pressure(x, y + h)
             + field.pressure(x, y - h)
             - 4.0 * field.pressure(x, y))
             / (h * h);
-        let f = x * x / 2.0 + y * y / (2.0 * 0.8) - st.delta_bar;
+        let f = x * x / 2.0 + y * y / (2.0 * rho) - delta_bar;
         assert!((lap - f).abs() < 1e-5, "at ({x}, {y}): {lap} vs {f}");
-    }
-    for k in 0..16 {
-        let [z, _, _] = st.contour.at(2.0 * PI * (k as f64 + 0.3) / 16.0);
-        let p = field.pressure(0.999999 * z.re, 0.999999 * z.im);
-        assert!(p.abs() < 1e-5, "p at the contour: {p}");
     }
 }
 
@@ -633,36 +660,18 @@ fn the_pull_off_at_rho_0_2_is_resolved_in_the_arclength_representation() {
     assert!(st.force_bar < 0.0);
     let ex = Exact::new(rho, st.truncation).unwrap();
     let field = ex.field(&st).unwrap();
-    let (nodes, weights) = gauss_legendre(24);
-    let m = 512;
-    let mut force = 0.0;
-    for k in 0..m {
-        let theta = 2.0 * PI * k as f64 / m as f64;
-        let [z, dz, _] = st.contour.at(theta);
-        let jac = z.re * dz.im - z.im * dz.re;
-        // rays from the centre cover the contact once (star-shaped)
-        assert!(jac > 0.0, "not star-shaped at theta = {theta}");
-        for (x, w) in nodes.iter().zip(&weights) {
-            let r = 0.5 * (x + 1.0);
-            force += 0.5 * w * field.pressure(r * z.re, r * z.im) * r * jac * (2.0 * PI / m as f64);
-        }
-    }
+    let force = force_along_rays(&st, &field, 512);
     assert!(
         (force - st.force_bar).abs() < 1e-8 * st.force_bar.abs(),
         "quadrature {force} vs Green {}",
         st.force_bar
     );
-    let h = 1e-3;
-    for (x, y) in [(0.0, 0.0), (1.0, 0.5), (1.8, 0.2), (0.3, 1.0)] {
-        let lap = (field.pressure(x + h, y)
-            + field.pressure(x - h, y)
-            + field.pressure(x, y + h)
-            + field.pressure(x, y - h)
-            - 4.0 * field.pressure(x, y))
-            / (h * h);
-        let f = x * x / 2.0 + y * y / (2.0 * rho) - st.delta_bar;
-        assert!((lap - f).abs() < 1e-5, "at ({x}, {y}): {lap} vs {f}");
-    }
+    laplacian_is_the_gap(
+        &field,
+        rho,
+        st.delta_bar,
+        &[(0.0, 0.0), (1.0, 0.5), (1.8, 0.2), (0.3, 1.0)],
+    );
     let h = 1e-3;
     for k in 0..16 {
         let [z, dz, _] = st.contour.at(2.0 * PI * (k as f64 + 0.3) / 16.0);

@@ -525,7 +525,7 @@ impl Exact {
         best.ok_or_else(|| {
             last.unwrap_or_else(|| {
                 Error::NoState(format!(
-                    "no minimum of the force on the arm traced both ways from a_bar = {} at rho = {}",
+                    "no minimum of the force on the arm traced both ways from a_bar = {} at rho = {} (40 steps of at most 0.02 each way, a_bar within 0.3 to 3 times the start)",
                     crate::error::rounded(start.a_bar),
                     crate::error::rounded(self.rho)
                 ))
