@@ -410,16 +410,27 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
 /// The exact state at `what` in {"delta", "force"} = `value`, or its
 /// load-controlled pull-off (`what` = "pull_off"), as JSON; with `modes`
 /// contour modes (8 quadrature points each) instead of the default
-/// escalation (12 to 96 modes, `thinjkr::exact::default_tries`).
+/// escalation (12 to 96 modes, `thinjkr::exact::default_tries`); its
+/// stability judged with the short-wave cutoff of `thinness` h/L (default
+/// `thinjkr::cutoff::Cutoff::DEFAULT_THINNESS`).
 #[pyfunction]
-#[pyo3(signature = (rho, what, value, modes=None))]
+#[pyo3(signature = (rho, what, value, modes=None, thinness=None))]
 fn exact(
     py: Python<'_>,
     rho: f64,
     what: &str,
     value: f64,
     modes: Option<usize>,
+    thinness: Option<f64>,
 ) -> PyResult<String> {
+    let cutoff = match thinness {
+        None => thinjkr::cutoff::Cutoff::default(),
+        Some(t) => thinjkr::cutoff::Cutoff::for_thinness(t).map_err(raw)?,
+    };
+    let judged = move |mut st: thinjkr::exact::ExactState| {
+        st.stability = st.stability.under(cutoff);
+        json(&st)
+    };
     use thinjkr::exact::{
         at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, Truncation,
         MAX_USER_MODES,
@@ -443,7 +454,7 @@ fn exact(
                     None => pull_off_resolved(rho)?,
                     Some(_) => pull_off_with(rho, &tries)?,
                 };
-                Ok(json(&st))
+                Ok(judged(st))
             }
             "delta" | "force" => {
                 let control = if what == "delta" {
@@ -453,7 +464,7 @@ fn exact(
                 };
                 // the default escalation as the command line: a value in a
                 // band says so, and one no start reaches is continued in rho
-                Ok(json(&match modes {
+                Ok(judged(match modes {
                     None => at_resolved(rho, control)?,
                     Some(_) => at_searched(rho, control, &tries)?,
                 }))

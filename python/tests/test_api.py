@@ -68,6 +68,26 @@ def test_exact_equals_the_command_line(cli):
     assert close(st.x.max(), st.a_bar, 1e-9) and close(st.y.max(), st.b_bar, 1e-6)
 
 
+def test_exact_stability_counts_the_modes_above_the_cutoff(cli):
+    """The circle at F = 10 (a = 3.2141) is unstable to every even n >= 10
+    its series holds; n = 10 is 2 pi a / 10 = 2.019 long. With h/L = 0.1
+    (the default; cutoff 2 pi h/L = 0.628) the state is unstable above the
+    cutoff, with h/L = 0.5 (cutoff 3.142) stable, as the command line says."""
+    thin = thinjkr.exact.solve(1.0, force=10.0, modes=12)
+    assert (thin.stable_displacement, thin.stable_load) == (False, False)
+    assert min(m["n"] for m in thin.unstable_modes_load if m["resolved"]) == 10
+    assert close(thin.cutoff["wavelength"], 2 * np.pi * 0.1, 1e-12)
+    thick = thinjkr.exact.solve(1.0, force=10.0, modes=12, thinness=0.5)
+    assert (thick.stable_displacement, thick.stable_load) == (True, True)
+    assert not any(m["resolved"] for m in thick.unstable_modes_load)
+    d = run_json(cli, "exact", "solve", "--rho", "1", "--force", "10", "--modes", "12",
+                 "--thinness", "0.5")["state"]["stability"]
+    assert (d["stable_displacement"], d["stable_load"]) == (True, True)
+    with pytest.raises(thinjkr.InvalidInput) as info:
+        thinjkr.exact.solve(1.0, force=10.0, thinness=-1.0)
+    assert "thinness" in str(info.value)
+
+
 def test_models_lists_every_model(cli):
     names = [n for n, _ in thinjkr.models()]
     assert names[:4] == ELLIPSE and "conformal:8" in names and names[-1] == "exact"

@@ -56,7 +56,7 @@ impl Quantity {
 }
 
 /// One row: the exact state (or why there is none) and each model's.
-pub struct Row {
+pub(crate) struct Row {
     /// ρ.
     pub rho: f64,
     /// The quantity.
@@ -144,7 +144,7 @@ fn member_states(
 }
 
 /// Compute one row.
-pub fn row(rho: f64, quantity: Quantity) -> Row {
+pub(crate) fn row(rho: f64, quantity: Quantity) -> Row {
     let exact = match quantity {
         Quantity::PullOff => pull_off_resolved(rho).map(|(s, _)| s),
         Quantity::ZeroForce => at_resolved(rho, Hold::Force(0.0)),
@@ -189,7 +189,7 @@ fn cell(words: &str) -> String {
 }
 
 /// The markdown line of a row's conformal members.
-pub fn render_conformal_row(r: &Row) -> String {
+pub(crate) fn render_conformal_row(r: &Row) -> String {
     let mut cells = vec![format!("{}", r.rho)];
     for (_, st) in &r.conformal {
         cells.push(match (&r.exact, st) {
@@ -230,7 +230,7 @@ fn bc(v: f64) -> String {
 }
 
 /// The markdown line of a row.
-pub fn render_row(r: &Row) -> String {
+pub(crate) fn render_row(r: &Row) -> String {
     let mut cells = vec![format!("{}", r.rho)];
     match &r.exact {
         Ok(e) => {
@@ -804,4 +804,31 @@ pub fn band_markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
     }
     // the notes as prose of at most PROSE_WIDTH characters a line
     o.lines().map(|l| wrap(l, PROSE_WIDTH) + "\n").collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `docs/accuracy.md` is fresh: the rows ρ = 1 and ρ = 0.9 of its three
+    /// tables (pull-off, zero force, F̄ = 10), recomputed here, are the lines
+    /// the file holds (the full table takes minutes: `thinjkr accuracy`).
+    #[test]
+    fn accuracy_table_rows_are_fresh() {
+        let doc =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/accuracy.md"))
+                .expect("docs/accuracy.md exists");
+        let lines: Vec<&str> = doc.lines().collect();
+        for rho in [1.0, 0.9] {
+            for q in Quantity::ALL {
+                let r = row(rho, q);
+                for line in [render_row(&r), render_conformal_row(&r)] {
+                    assert!(
+                        lines.contains(&line.as_str()),
+                        "docs/accuracy.md is stale (run `thinjkr accuracy --out docs/accuracy.md`): no line\n{line}"
+                    );
+                }
+            }
+        }
+    }
 }

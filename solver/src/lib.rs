@@ -25,6 +25,7 @@ pub mod contact;
 pub(crate) mod continuation;
 pub mod control;
 pub mod curve;
+pub mod cutoff;
 pub(crate) mod equations;
 pub mod error;
 pub mod exact;

@@ -17,7 +17,8 @@
 //! [`Entry`], [`parse`], [`entries`], [`help`]. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
-//! curves), `model`, `control`, `units` (`physical`), `error`.
+//! curves), `model`, `control`, `units` (`physical`), `cutoff` (a contour state's
+//! stability judged with the coatings' thinness), `error`.
 
 use crate::conformal::{families, Conformal};
 use crate::control::Hold;
@@ -223,6 +224,19 @@ impl Choice {
                 .map(|p| p.state),
         }
         .map_err(in_si)?;
+        // a contour state's stability judged with these coatings' thinness
+        // (the thicker one's h over L)
+        let cutoff = crate::cutoff::Cutoff::for_thinness(cyl.h1.max(cyl.h2) / sc.length)?;
+        let state = match state {
+            crate::report::AnyState::Exact(mut st) => {
+                st.stability = std::mem::take(&mut st.stability).under(cutoff);
+                crate::report::AnyState::Exact(st)
+            }
+            crate::report::AnyState::Conformal(st) => {
+                crate::report::AnyState::Conformal(st.under(cutoff))
+            }
+            other => other,
+        };
         let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
         let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
         // the model's own doubts about its state (an ellipse model below

@@ -338,6 +338,70 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
     }
 }
 
+/// The short-wave cutoff (docs/exact.md, "The short-wave cutoff"). The
+/// unstable modes are the model's, not the truncation's: the circle at
+/// ā = 3 (ā³/4 + 1 = 7.75) is unstable to every even n ≥ 8 its series
+/// holds, with 6 and with 12 contour modes alike. A verdict counts only
+/// the modes at least 2π h/L long (n = 8 is 2π·3/8 = 2.356 long): h/L =
+/// 0.35 (cutoff 2.199) resolves n = 8 alone, and the state is unstable;
+/// h/L = 0.4 (cutoff 2.513) resolves none, and the state is stable, since
+/// the series reaches the cutoff. With 3 modes (n ≤ 6, the shortest 3.142
+/// long) no unstable mode is represented: the verdict is not settled
+/// below that length (h/L = 0.4) and stable above it (h/L = 0.6).
+#[test]
+fn the_short_wave_cutoff_counts_the_modes_the_model_resolves() {
+    use thinjkr::cutoff::Cutoff;
+    let a = 3.0;
+    let judged = |modes: usize, thinness: f64| {
+        let ex = Exact::new(1.0, trunc(modes, 16 * modes)).unwrap();
+        let st = ex
+            .solve(a, &Contour::ellipse(a, a, modes), a * a / 4.0 - 2.0 / a)
+            .unwrap();
+        let stab = ex.stability(&st).unwrap();
+        assert!(
+            (stab.shortest_wavelength.unwrap() - PI * a / modes as f64).abs() < 1e-12,
+            "{stab:?}"
+        );
+        stab.under(Cutoff::for_thinness(thinness).unwrap())
+    };
+    let resolved = |v: &[thinjkr::exact::stability::UnstableMode]| -> Vec<usize> {
+        v.iter().filter(|m| m.resolved).map(|m| m.n).collect()
+    };
+    for modes in [6, 12] {
+        let every: Vec<usize> = (8..=2 * modes).step_by(2).collect();
+        let mid = judged(modes, 0.35);
+        for v in [&mid.displacement, &mid.load] {
+            assert_eq!(v.iter().map(|m| m.n).collect::<Vec<_>>(), every);
+            assert_eq!(resolved(v), vec![8], "{modes} modes: {v:?}");
+        }
+        assert_eq!(
+            (mid.stable_displacement, mid.stable_load),
+            (Some(false), Some(false))
+        );
+        let thick = judged(modes, 0.4);
+        assert!(resolved(&thick.load).is_empty() && resolved(&thick.displacement).is_empty());
+        assert_eq!(
+            (thick.stable_displacement, thick.stable_load),
+            (Some(true), Some(true))
+        );
+        // a resolved unstable mode settles it, however short the cutoff
+        let thin = judged(modes, 0.01);
+        assert_eq!(resolved(&thin.load), every);
+        assert_eq!(thin.stable_load, Some(false));
+    }
+    let short = judged(3, 0.4);
+    assert!(
+        short.load.is_empty() && short.displacement.is_empty(),
+        "{short:?}"
+    );
+    assert_eq!((short.stable_displacement, short.stable_load), (None, None));
+    let long = judged(3, 0.6);
+    assert_eq!(
+        (long.stable_displacement, long.stable_load),
+        (Some(true), Some(true))
+    );
+}
+
 /// Each unstable direction is named by a mode of its own. At ρ = 0.5 and
 /// F̄ = 10 (40 modes) the eigenvectors of the many short unstable modes of
 /// the elongated contour mix neighbouring modes, and naming each by its

@@ -78,6 +78,11 @@ def _state_from(d: Dict[str, Any], model: Optional[str] = None) -> State:
         if isinstance(stab["displacement"], list):  # an exact state: unstable modes
             fields["unstable_modes_displacement"] = stab["displacement"]
             fields["unstable_modes_load"] = stab["load"]
+            # the verdicts above the short-wave cutoff (None: not settled)
+            fields["stable_displacement"] = stab.get("stable_displacement")
+            fields["stable_load"] = stab.get("stable_load")
+            fields["cutoff"] = stab.get("cutoff")
+            fields["shortest_wavelength"] = stab.get("shortest_wavelength")
         else:
             fields["stable_displacement"] = stab["displacement"]
             fields["stable_load"] = stab["load"]

@@ -57,9 +57,14 @@ class State:
     ``b_bar``, ``s``, ``delta_bar``, ``force_bar``, ``rho``, ``model`` and
     whatever else the model's state has (``xi``, ``p0``, ``bc_error``,
     ``stable_displacement``, ``stable_load`` for the models of the
-    ellipse; ``coefficients``, ``bc_defect``, ``unstable_modes`` for
-    ``conformal:K``; ``contour``, ``bc_error``, ``truncation``, ``route``
-    for ``exact``). Equal when every field is equal; picklable."""
+    ellipse; ``coefficients``, ``bc_defect``, ``unstable_modes``,
+    ``unstable_modes_load``, ``perimeter`` for ``conformal:K``;
+    ``contour``, ``bc_error``, ``truncation``, ``route``,
+    ``unstable_modes_displacement``, ``unstable_modes_load``,
+    ``shortest_wavelength`` for ``exact``; for both, ``stable_displacement``
+    and ``stable_load`` count only the contour modes above the short-wave
+    cutoff ``cutoff``, 2π h/L, and an exact verdict is None where it is not
+    settled). Equal when every field is equal; picklable."""
 
     __slots__ = ("_fields",)
 

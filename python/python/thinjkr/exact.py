@@ -10,7 +10,7 @@ import json as _json
 import numpy as _np
 
 from . import _thinjkr
-from . import _call, _control, _many, _number, _state_from, _whole, PullOff, State
+from . import _call, _control, _many, _number, _state_from, _whole, InvalidInput, PullOff, State
 
 
 def _with_contour(d, points: int) -> State:
@@ -22,12 +22,17 @@ def _with_contour(d, points: int) -> State:
     return State(fields)
 
 
-def solve(rho, *, delta=None, force=None, points: int = 256, modes=None):
+def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinness=None):
     """The exact state at approach ``delta`` (δ̄) or force ``force`` (F̄),
     its contour sampled at ``points`` angles. ``modes``: the contour series'
     length (1 … 96); by default the modes are escalated from 12 to 96 until
     the fine-grid boundary error is below 1e-9 (where none is,
     :class:`Unresolved` is raised with the smallest error reached).
+    ``thinness``: the coatings' h/L, which sets the short-wave cutoff 2π h/L
+    below which unstable contour modes are not resolved by (2) (default
+    0.1): ``stable_displacement`` and ``stable_load`` count only the longer
+    modes (None: not settled, the series stops short of the cutoff), and
+    each unstable mode says whether it is ``resolved``.
 
     Scalars give a :class:`State`; when ``rho`` or the control is an array
     (broadcast together) the answer is a :class:`States` of that shape,
@@ -38,31 +43,43 @@ def solve(rho, *, delta=None, force=None, points: int = 256, modes=None):
     modes = _modes(modes)
     if _np.ndim(rho) > 0 or _np.ndim(value) > 0:
         r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
-        return _many(r, "exact", lambda a, b: solve(a, points=points, modes=modes, **{control: b}), v)
-    d = _json.loads(_call(_thinjkr.exact, rho, control, value, modes))
+        return _many(r, "exact", lambda a, b: solve(a, points=points, modes=modes, thinness=thinness, **{control: b}), v)
+    d = _json.loads(_call(_thinjkr.exact, rho, control, value, modes, _thinness(thinness)))
     return _with_contour(d, points)
 
 
-def zero_force(rho, *, points: int = 256, modes=None):
+def zero_force(rho, *, points: int = 256, modes=None, thinness=None):
     """The exact zero-force state (an array of ``rho`` gives a
     :class:`States`, as in :func:`solve`)."""
-    return solve(rho, force=0.0, points=points, modes=modes)
+    return solve(rho, force=0.0, points=points, modes=modes, thinness=thinness)
 
 
-def pull_off(rho, *, points: int = 256, modes=None):
+def pull_off(rho, *, points: int = 256, modes=None, thinness=None):
     """The exact load-controlled pull-off (the first minimum of F̄ along the
     family, traced from just above the richest contour model's pull-off), a
     :class:`PullOff` with ``control`` "load", as
     ``thinjkr.pull_off(rho, model="exact")`` gives it. ``modes`` as in
     :func:`solve`: by default escalated from 12 to 96 until the fine-grid
-    boundary error is below 1e-9 (at ρ = 0.3: 80 modes). An array of
-    ``rho`` gives a :class:`States`, as in :func:`solve`."""
+    boundary error is below 1e-9 (at ρ = 0.3: 80 modes); ``thinness`` as
+    in :func:`solve`. An array of ``rho`` gives a :class:`States`, as in
+    :func:`solve`."""
     rho = _number("rho", rho)
     modes = _modes(modes)
     if _np.ndim(rho) > 0:
-        return _many(_np.asarray(rho, dtype=float), "exact", lambda r: pull_off(r, points=points, modes=modes))
-    d = _json.loads(_call(_thinjkr.exact, rho, "pull_off", 0.0, modes))
+        return _many(_np.asarray(rho, dtype=float), "exact", lambda r: pull_off(r, points=points, modes=modes, thinness=thinness))
+    d = _json.loads(_call(_thinjkr.exact, rho, "pull_off", 0.0, modes, _thinness(thinness)))
     return PullOff({**_with_contour(d, points).to_dict(), "control": "load"})
+
+
+def _thinness(thinness):
+    """h/L: one number (the solver names its range)."""
+    if thinness is None:
+        return None
+    t = _number("thinness", thinness)
+    if _np.ndim(t) > 0:
+        raise InvalidInput("parameter thinness must be one number (h/L of the coatings), not an array",
+                           kind="out_of_range")
+    return t
 
 
 def _modes(modes):

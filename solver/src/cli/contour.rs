@@ -2,34 +2,51 @@
 //! (solved through the model layer, `crate::registry`), and the pull-off
 //! under either control with the folds it passed, for a person or as JSON.
 //!
-//! Owns: the printing of contour-family states. May use: `crate::conformal`,
+//! Owns: the printing of contour-family states. May use: `crate::conformal`, `crate::cutoff`,
 //! `crate::report`, `crate::fold`, `crate::error`, `crate::cli` (`output`).
 
 use crate::conformal::{Conformal, ConformalState};
 use crate::fold::FoldCondition;
 use crate::report::Passed;
 
+/// The unstable contour modes under each control, those shorter than the
+/// short-wave cutoff marked as not resolved.
 fn modes(st: &ConformalState) -> String {
-    if st.unstable_modes.is_empty() {
-        String::new()
-    } else {
-        let m: Vec<String> = st
-            .unstable_modes
-            .iter()
-            .map(|n| format!("cos {n}θ"))
-            .collect();
-        format!(
+    let list = |v: &[u32]| -> String {
+        v.iter()
+            .map(|&n| {
+                if n == 0 {
+                    "the size".to_string()
+                } else if st.cutoff.resolves(st.perimeter / n as f64) {
+                    format!("cos {n}θ")
+                } else {
+                    format!("cos {n}θ (shorter than the cutoff)")
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut out = String::new();
+    if !st.unstable_modes.is_empty() {
+        out.push_str(&format!(
             "; unstable contour modes under displacement control: {}",
-            m.join(", ")
-        )
+            list(&st.unstable_modes)
+        ));
     }
+    if !st.unstable_modes_load.is_empty() {
+        out.push_str(&format!(
+            "; under load control: {}",
+            list(&st.unstable_modes_load)
+        ));
+    }
+    out
 }
 
 /// One state for a person.
 pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
     let word = |b: bool| if b { "stable" } else { "unstable" };
     outln!(
-        "{label}: model {}, a = {}, b = {}, s = {}, delta = {}, force = {}, max |dp/dnu - 1| on the contour = {:.1e} [displacement control: {}, load control: {}{}]",
+        "{label}: model {}, a = {}, b = {}, s = {}, delta = {}, force = {}, max |dp/dnu - 1| on the contour = {:.1e} [above the short-wave cutoff {:.3} (2π h/L, h/L = {}): displacement control: {}, load control: {}{}]",
         st.model,
         crate::cli::output::num(st.a_bar),
         crate::cli::output::num(st.b_bar),
@@ -37,6 +54,8 @@ pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
         crate::cli::output::num(st.delta_bar),
         crate::cli::output::num(st.force_bar),
         st.bc_defect,
+        st.cutoff.wavelength,
+        crate::error::short(st.cutoff.thinness),
         word(st.stable_displacement),
         word(st.stable_load),
         modes(st)

@@ -4,7 +4,7 @@
 //!
 //! Owns: [`ExactCommand`], the exact printers. May use: `batch` (an ellipse model at a control), `control`, `crate::exact`,
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
-//! state), `crate::report`, `crate::fold`, `crate::error`,
+//! state), `crate::report`, `crate::fold`, `crate::error`, `crate::cutoff`,
 //! `crate::cli` (`output`).
 
 use crate::control::Hold;
@@ -14,9 +14,15 @@ use crate::report::{AnyState, Document, ModelAnswer, Passed};
 use crate::{Contact, Error, ModelId, Result};
 use clap::{Args, Subcommand};
 
-/// The truncation of the exact solver.
+/// The truncation of the exact solver, and the cutoff its stability is
+/// judged by.
 #[derive(Args, Clone, Debug, Default)]
 pub(crate) struct Discretisation {
+    /// The coatings' thinness h/L (h the thicker coating, L the length unit of (17)): contour modes shorter
+    /// than 2π h/L are not resolved by the thin-layer equation (2), and the stability verdicts count only the
+    /// longer ones (default 0.1; see docs/exact.md, "The short-wave cutoff").
+    #[arg(long)]
+    pub thinness: Option<f64>,
     /// Contour modes N (the contour series' length, 1..=96; the answer is given when its boundary error is
     /// below 1e-5, with that error); default: escalated from 12 to 96 modes until the boundary error is
     /// below 1e-9, and only such an answer is given.
@@ -29,6 +35,20 @@ pub(crate) struct Discretisation {
 }
 
 impl Discretisation {
+    /// The short-wave cutoff of `--thinness`, else the default's.
+    fn cutoff(&self) -> Result<crate::cutoff::Cutoff> {
+        match self.thinness {
+            Some(t) => crate::cutoff::Cutoff::for_thinness(t),
+            None => Ok(crate::cutoff::Cutoff::default()),
+        }
+    }
+
+    /// An exact state's stability judged under this cutoff.
+    fn judged(&self, mut st: ExactState) -> Result<ExactState> {
+        st.stability = st.stability.under(self.cutoff()?);
+        Ok(st)
+    }
+
     /// The truncations to try, in order.
     fn tries(&self) -> Result<Vec<Truncation>> {
         let modes = match self.modes {
@@ -385,7 +405,71 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
         "  load control: {}",
         modes(&st.stability.load, st.truncation.modes)
     );
+    outln!("  {}", cutoff_words(&st.stability));
     Ok(())
+}
+
+/// The stability verdicts above the short-wave cutoff, and which unstable
+/// modes lie below it, in words.
+pub(crate) fn cutoff_words(stab: &crate::exact::stability::ExactStability) -> String {
+    let c = stab.cutoff;
+    let verdict = |v: &[UnstableMode], stable: Option<bool>| -> String {
+        let list = |resolved: bool| -> Vec<usize> {
+            v.iter()
+                .filter(|m| m.resolved == resolved)
+                .map(|m| m.n)
+                .collect()
+        };
+        let (above, below) = (list(true), list(false));
+        let mut w = match stable {
+            Some(true) => "stable".to_string(),
+            Some(false) => format!("unstable (n = {})", mode_list(&above)),
+            None => match stab.shortest_wavelength {
+                Some(w) => format!(
+                    "not settled (no mode the series holds is unstable above the cutoff, but its shortest, wavelength {w:.3}, is longer than the cutoff: more --modes settle it)"
+                ),
+                None => "not computed".to_string(),
+            },
+        };
+        if !below.is_empty() {
+            w.push_str(&format!(
+                "; n = {} shorter, not resolved by (2)",
+                mode_list(&below)
+            ));
+        }
+        w
+    };
+    format!(
+        "above the short-wave cutoff (wavelength {:.3} = 2π h/L, h/L = {}{}): under displacement control {}; under load control {}",
+        c.wavelength,
+        crate::error::short(c.thinness),
+        if c.thinness == crate::cutoff::Cutoff::DEFAULT_THINNESS {
+            ", the default"
+        } else {
+            ""
+        },
+        verdict(&stab.displacement, stab.stable_displacement),
+        verdict(&stab.load, stab.stable_load)
+    )
+}
+
+/// Mode numbers, runs of three or more consecutive even ones as a range.
+fn mode_list(ns: &[usize]) -> String {
+    let mut parts = Vec::new();
+    let mut i = 0;
+    while i < ns.len() {
+        let mut j = i;
+        while j + 1 < ns.len() && ns[j + 1] == ns[j] + 2 && ns[j] > 0 {
+            j += 1;
+        }
+        if j >= i + 2 {
+            parts.push(format!("{}, {}, …, {}", ns[i], ns[i + 1], ns[j]));
+        } else {
+            parts.extend(ns[i..=j].iter().map(|n| n.to_string()));
+        }
+        i = j + 1;
+    }
+    parts.join(", ")
 }
 
 /// The exact load-controlled pull-off and every model's.
@@ -397,6 +481,7 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
         (None, None) => crate::exact::pull_off_resolved(rho),
         _ => crate::exact::pull_off_with(rho, &d.tries()?),
     }?;
+    let po = d.judged(po)?;
     let models: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {
@@ -462,8 +547,12 @@ pub(crate) fn every_state(
     json: bool,
 ) -> Result<()> {
     control.check_finite()?;
+    let cutoff = d.cutoff()?;
     let spin = crate::cli::output::Spinner::start("screening for every exact state");
-    let all = crate::exact::bands::states_at(rho, control, from, to, &d.tries()?)?;
+    let mut all = crate::exact::bands::states_at(rho, control, from, to, &d.tries()?)?;
+    for st in &mut all.states {
+        st.stability = std::mem::take(&mut st.stability).under(cutoff);
+    }
     drop(spin);
     if all.states.is_empty() {
         let missed: Vec<String> = all
@@ -530,6 +619,7 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
         (None, None) => crate::exact::at_resolved(rho, control),
         _ => crate::exact::at_searched(rho, control, &d.tries()?),
     }?;
+    let st = d.judged(st)?;
     let model_states: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {

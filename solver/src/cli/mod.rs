@@ -824,6 +824,17 @@ fn physical(
         sc.approach,
         sc.force
     );
+    match &state {
+        AnyState::Exact(st) => outln!("  {}", exact_command::cutoff_words(&st.stability)),
+        AnyState::Conformal(st) => outln!(
+            "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",
+            if st.stable_displacement { "stable" } else { "unstable" },
+            st.cutoff.wavelength,
+            crate::error::short(st.cutoff.thinness),
+            if st.stable_load { "stable" } else { "unstable" }
+        ),
+        AnyState::Ellipse(_) => {}
+    }
     Ok(())
 }
 
@@ -904,7 +915,11 @@ fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) ->
                     .unwrap_or(false),
                 (Some(c.stable_displacement), Some(c.stable_load)),
             ),
-            AnyState::Exact(_) => ("exact".into(), false, (None, None)),
+            AnyState::Exact(e) => (
+                "exact".into(),
+                false,
+                (e.stability.stable_displacement, e.stability.stable_load),
+            ),
         };
         outln!(
             "{name},{},{},{},{},{},{beyond},{},{},{}",

@@ -26,7 +26,8 @@
 //! families' solves. May use: `control`, `fold`, `generated::registry` (the families and their
 //! tables), `error`, `equations`, `newton`, `model` (Brent's minimisation),
 //! `curve` (the bound on a curve's points), `batch` (quoting what was
-//! typed), `exact` (a family's gap as the exact solver reads it), nalgebra.
+//! typed), `exact` (a family's gap as the exact solver reads it), `cutoff` (the
+//! short-wave cutoff of the stability verdicts), nalgebra.
 
 pub(crate) mod load;
 mod seed;
@@ -36,6 +37,7 @@ pub mod poly;
 mod trace;
 
 use crate::control::Hold;
+use crate::cutoff::Cutoff;
 use crate::equations::held;
 use crate::error::{check_range, short, Error, Result};
 use crate::fold::FoldCondition;
@@ -196,19 +198,43 @@ pub struct ConformalState {
     pub coefficients: Vec<f64>,
     /// max |∂p̄/∂ν − 1| on the contour: the defect of (3)₂ the Ritz closure leaves.
     pub bc_defect: f64,
-    /// Stable under displacement control (∂²Π̄/∂c² positive definite).
+    /// Stable under displacement control: no negative direction of
+    /// ∂²Π̄/∂c² whose mode is at least the cutoff's wavelength long.
     pub stable_displacement: bool,
-    /// Stable under load control (the Hessian in (c, δ̄) of Π̄ − F̄δ̄ positive definite).
+    /// Stable under load control: the same for the Hessian in (c, δ̄) of
+    /// Π̄ − F̄δ̄.
     pub stable_load: bool,
     /// Contour modes n (cos nθ) that are unstable under displacement
-    /// control: the dominant mode of each negative eigenvector.
+    /// control: the dominant mode of each negative eigenvector (n = 0:
+    /// the size), whether above the cutoff or not.
     pub unstable_modes: Vec<u32>,
+    /// The same under load control (n = 0 also for δ̄).
+    pub unstable_modes_load: Vec<u32>,
+    /// The contour's perimeter (units of L): mode n is perimeter/n long.
+    pub perimeter: f64,
+    /// The short-wave cutoff the two verdicts count modes above
+    /// (`crate::cutoff`).
+    pub cutoff: Cutoff,
     /// Why the state is doubtful, in words (empty when it is not): its
     /// closure misses (3)₂ by more than 0.1 somewhere on
     /// the contour, or its contour is wider across than along (b̄ > ā at
     /// ρ < 1). Every front end shows them.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+}
+
+impl ConformalState {
+    /// The same state's verdicts under another short-wave cutoff (another
+    /// thinness h/L): a negative direction counts when its mode is the
+    /// size (n = 0) or at least the cutoff's wavelength long.
+    pub(crate) fn under(mut self, cutoff: Cutoff) -> ConformalState {
+        let perimeter = self.perimeter;
+        let counts = |n: &u32| *n == 0 || cutoff.resolves(perimeter / *n as f64);
+        self.stable_displacement = !self.unstable_modes.iter().any(counts);
+        self.stable_load = !self.unstable_modes_load.iter().any(counts);
+        self.cutoff = cutoff;
+        self
+    }
 }
 
 /// The boundary defect max |∂p̄/∂ν − 1| above which a member's state is
@@ -1165,8 +1191,8 @@ impl Conformal {
         let n = k + 1;
         let h = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
         let hcc = h.view((0, 0), (k, k)).into_owned();
-        let (stable_d, modes) = self.modes(&hcc);
-        let stable_l = positive_definite(&h);
+        let modes = self.modes(&hcc, false);
+        let modes_load = self.modes(&h, true);
         let force = e.grad[k];
         let bc_defect = self.bc_defect(x, rho);
         let out = ConformalState {
@@ -1179,11 +1205,15 @@ impl Conformal {
             force_bar: force,
             coefficients: c.to_vec(),
             bc_defect,
-            stable_displacement: stable_d,
-            stable_load: stable_l,
+            stable_displacement: false,
+            stable_load: false,
             unstable_modes: modes,
+            unstable_modes_load: modes_load,
+            perimeter: self.perimeter(c),
+            cutoff: Cutoff::default(),
             warnings: doubts(rho, a, b, bc_defect),
-        };
+        }
+        .under(Cutoff::default());
         if ![a, b, x[k], force, out.bc_defect]
             .iter()
             .all(|v| v.is_finite())
@@ -1202,19 +1232,41 @@ impl Conformal {
     /// contour's radius by Re(δw(e^{iθ}) e^{−iθ}) = Σ δc_k cos((n_k − 1)θ),
     /// so the mode of c_k is n_k − 1; each negative eigenvector reports the
     /// mode of its largest component.
-    fn modes(&self, hcc: &DMatrix<f64>) -> (bool, Vec<u32>) {
-        let eig = hcc.clone().symmetric_eigen();
+    /// With `with_delta` the Hessian is bordered by δ̄ (load control),
+    /// whose component counts as the size, n = 0.
+    fn modes(&self, h: &DMatrix<f64>, with_delta: bool) -> Vec<u32> {
+        let k = self.terms();
+        let eig = h.clone().symmetric_eigen();
         let top = eig.eigenvalues.amax().max(1e-300);
         let mut modes = Vec::new();
         for (i, &l) in eig.eigenvalues.iter().enumerate() {
             if l <= 1e-9 * top {
                 let v = eig.eigenvectors.column(i);
                 let kmax = v.iamax();
-                modes.push(self.tables.powers[kmax] as u32 - 1);
+                modes.push(if with_delta && kmax == k {
+                    0
+                } else {
+                    self.tables.powers[kmax] as u32 - 1
+                });
             }
         }
         modes.sort_unstable();
-        (modes.is_empty(), modes)
+        modes
+    }
+
+    /// The perimeter ∮|w′(e^{iθ})| dθ of the contour (the trapezoidal rule
+    /// on 512 angles: spectrally accurate for the periodic integrand).
+    fn perimeter(&self, c: &[f64]) -> f64 {
+        const ANGLES: usize = 512;
+        let h = 2.0 * std::f64::consts::PI / ANGLES as f64;
+        (0..ANGLES)
+            .map(|j| {
+                let t = h * j as f64;
+                let (_, dw) = self.map(c, (t.cos(), t.sin()));
+                dw.0.hypot(dw.1)
+            })
+            .sum::<f64>()
+            * h
     }
 }
 
@@ -1303,12 +1355,6 @@ fn hermite(
         + t0 * (h * (s3 - 2.0 * s2 + s))
         + x1 * (3.0 * s2 - 2.0 * s3)
         + t1 * (h * (s3 - s2))
-}
-
-fn positive_definite(h: &DMatrix<f64>) -> bool {
-    let eig = h.clone().symmetric_eigen();
-    let top = eig.eigenvalues.amax().max(1e-300);
-    eig.eigenvalues.iter().all(|&l| l > 1e-9 * top)
 }
 
 fn no_circle(a: f64) -> Error {

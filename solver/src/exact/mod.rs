@@ -995,10 +995,7 @@ impl Exact {
             contour,
             bc_error,
             truncation: self.truncation,
-            stability: stability::ExactStability {
-                displacement: Vec::new(),
-                load: Vec::new(),
-            },
+            stability: stability::ExactStability::default(),
             route: Route::FromCircle,
             gap: self.gap_source,
         };

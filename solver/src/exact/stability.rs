@@ -31,9 +31,15 @@
 //! the coating thickness h, so such modes are reported with their
 //! wavelength, for comparison with h, not hidden.
 //!
-//! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, `error`, nalgebra.
+//! Each mode is marked resolved or not by a short-wave [`Cutoff`] (its
+//! wavelength against 2π h/L, `crate::cutoff`), and the two verdicts count
+//! only the resolved modes: [`Cutoff::default`] when the state is solved,
+//! the user's thinness through [`ExactStability::under`].
+//!
+//! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, `error`, `cutoff`, nalgebra.
 
 use super::{Exact, ExactState};
+use crate::cutoff::Cutoff;
 use crate::error::{Error, Result};
 use nalgebra::{Complex, DMatrix, SymmetricEigen};
 use serde::Serialize;
@@ -45,20 +51,78 @@ pub struct UnstableMode {
     /// The contour mode the eigenvector is made of: the radius perturbed
     /// by cos nθ (n = 0: the size; under load control also δ̄).
     pub n: usize,
-    /// The wavelength 2πā/n along the contour, in units of L (∞ for n = 0).
+    /// The wavelength along the contour, its perimeter over n, in units
+    /// of L (∞ for n = 0; 2πā/n on a circle).
     pub wavelength: f64,
     /// The eigenvalue (negative).
     pub eigenvalue: f64,
+    /// Whether the wavelength is at least the cutoff's (the model resolves
+    /// the mode and predicts a change of shape), or shorter (the
+    /// thin-layer equation (2) does not hold there).
+    pub resolved: bool,
 }
 
 /// Which modes of an exact state are unstable.
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct ExactStability {
     /// Under displacement control (δ̄ fixed).
     pub displacement: Vec<UnstableMode>,
     /// Under load control (F̄ fixed, δ̄ free).
     pub load: Vec<UnstableMode>,
+    /// The wavelength of the shortest contour mode the state's series
+    /// represents (its perimeter over that mode's n); none where the
+    /// stability was not computed.
+    pub shortest_wavelength: Option<f64>,
+    /// The short-wave cutoff the verdicts count modes above.
+    pub cutoff: Cutoff,
+    /// No resolved mode is unstable under displacement control: `false`
+    /// when one is; `true` when none is and the series reaches the cutoff
+    /// (its shortest mode is not longer than the cutoff's wavelength);
+    /// null (not settled) when none is but the series stops short of the
+    /// cutoff, or the stability was not computed.
+    pub stable_displacement: Option<bool>,
+    /// The same under load control.
+    pub stable_load: Option<bool>,
+}
+
+impl Default for ExactStability {
+    /// Not computed: no mode, no verdict.
+    fn default() -> Self {
+        ExactStability {
+            displacement: Vec::new(),
+            load: Vec::new(),
+            shortest_wavelength: None,
+            cutoff: Cutoff::default(),
+            stable_displacement: None,
+            stable_load: None,
+        }
+    }
+}
+
+impl ExactStability {
+    /// The same modes judged under another cutoff (another thinness h/L).
+    pub fn under(mut self, cutoff: Cutoff) -> ExactStability {
+        for m in self.displacement.iter_mut().chain(self.load.iter_mut()) {
+            m.resolved = cutoff.resolves(m.wavelength);
+        }
+        let reaches = self
+            .shortest_wavelength
+            .is_some_and(|w| w <= cutoff.wavelength);
+        let verdict = |v: &[UnstableMode]| {
+            if v.iter().any(|m| m.resolved) {
+                Some(false)
+            } else if reaches {
+                Some(true)
+            } else {
+                None
+            }
+        };
+        self.stable_displacement = verdict(&self.displacement);
+        self.stable_load = verdict(&self.load);
+        self.cutoff = cutoff;
+        self
+    }
 }
 
 impl Exact {
@@ -72,6 +136,7 @@ impl Exact {
         let samples = st.contour.samples(&self.grid);
         let n = self.grid.len();
         let h = 2.0 * std::f64::consts::PI / n as f64;
+        let perimeter: f64 = samples.dz.iter().map(|d| d.norm()).sum::<f64>() * h;
         // ∂Π̄/∂u_k = Σ_i ((∂p̄/∂ν)² − 1) Re(e_k(θ_i) · i conj z′_i) h at fixed δ̄
         // (V_k|z′| = Re(∂z/∂u_k ν̄)|z′| with ν = −i z′/|z′|), and its
         // derivative in u_l with δz′ = i m_l e_l
@@ -179,18 +244,27 @@ impl Exact {
                         wavelength: if n == 0 {
                             f64::INFINITY
                         } else {
-                            2.0 * std::f64::consts::PI * st.a_bar / n as f64
+                            perimeter / n as f64
                         },
                         eigenvalue: eig.eigenvalues[i],
+                        resolved: true,
                     }
                 })
                 .collect();
             out.sort_by_key(|u| u.n);
             out
         };
+        // the shortest mode the series holds: e^{imθ} is the radius's cos (m − 1)θ
+        let n_max = mult
+            .iter()
+            .map(|&x| (x - 1.0).abs().round())
+            .fold(1.0, f64::max);
         Ok(ExactStability {
             displacement: unstable(hess.view((0, 0), (m, m)).into_owned(), false),
             load: unstable(hess, true),
-        })
+            shortest_wavelength: Some(perimeter / n_max),
+            ..ExactStability::default()
+        }
+        .under(Cutoff::default()))
     }
 }

@@ -1,0 +1,94 @@
+//! The short-wave cutoff of a contour state's stability: which of its
+//! unstable contour modes the thin-layer model resolves.
+//!
+//! The leading-order model (2)–(3) is the long-wave limit of the elastic
+//! layer: its pressure–displacement relation Δp = m(φ − δ) holds for
+//! undulations of wavenumber k with kh ≪ 1 (h the coating thickness), and
+//! its first correction is of relative order (kh)². It has no length of
+//! its own below which undulations are stabilised: at ρ = 1 the circle of
+//! radius ā is unstable to every mode n > ā³/4 + 1, whose wavelengths
+//! 2πā/n lie below 2πā/(ā³/4 + 1) (docs/exact.md, "Stability"), and the series
+//! of an exact state reports every such mode it holds, down to its
+//! shortest. A real coating stabilises short undulations at a few h (the
+//! fingering of confined elastic films has a wavelength of about 3h), so
+//! the model's verdict on a mode shorter than that is not the coating's.
+//!
+//! The cutoff counts a mode as resolved when its wavelength along the
+//! contour (perimeter / n) is at least 2π h, that is kh ≤ 1, the edge of
+//! the long-wave range; shorter modes are reported as not resolved, and a
+//! state's stability verdict counts only the resolved ones. In the units
+//! (17) the cutoff wavelength is 2π h/L, so it is set by the thinness h/L:
+//! `physical` knows it (the thicker coating's h over L); the dimensionless
+//! commands take `--thinness` and otherwise h/L = 0.1 ([`Cutoff::default`]).
+//!
+//! Owns: [`Cutoff`]. May use: `error`.
+
+use crate::error::{check_range, Result};
+use serde::{Deserialize, Serialize};
+
+/// The shortest wavelength (in units of L) whose stability the thin-layer
+/// model is trusted with: 2π h/L.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Cutoff {
+    /// The thinness h/L (the coating thickness over the length unit L of
+    /// (17); for two coatings the thicker one's).
+    pub thinness: f64,
+    /// The cutoff wavelength 2π h/L: modes shorter than it are not
+    /// resolved by (2).
+    pub wavelength: f64,
+}
+
+impl Cutoff {
+    /// The thinness of the dimensionless commands when none is given:
+    /// h/L = 0.1, coatings a few per cent of the contact's size at the
+    /// loads of docs/accuracy.md (ā ≈ 1.5–4), well inside the thin-layer
+    /// range (`physical` warns from h/a = 0.2).
+    pub(crate) const DEFAULT_THINNESS: f64 = 0.1;
+
+    /// The cutoff of coatings of thinness h/L (positive, finite).
+    pub fn for_thinness(thinness: f64) -> Result<Cutoff> {
+        check_range(
+            "thinness",
+            thinness,
+            thinness > 0.0 && thinness.is_finite(),
+            "(0, ∞)",
+        )?;
+        Ok(Cutoff {
+            thinness,
+            wavelength: 2.0 * std::f64::consts::PI * thinness,
+        })
+    }
+
+    /// Whether a mode of this wavelength (units of L; ∞ for the size) is
+    /// resolved by the model.
+    pub(crate) fn resolves(&self, wavelength: f64) -> bool {
+        wavelength >= self.wavelength
+    }
+}
+
+impl Default for Cutoff {
+    fn default() -> Self {
+        Cutoff {
+            thinness: Cutoff::DEFAULT_THINNESS,
+            wavelength: 2.0 * std::f64::consts::PI * Cutoff::DEFAULT_THINNESS,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_cutoff_is_two_pi_h_and_refuses_a_bad_thinness() {
+        let c = Cutoff::for_thinness(0.5).unwrap();
+        assert!((c.wavelength - std::f64::consts::PI).abs() < 1e-15);
+        assert!(c.resolves(f64::INFINITY) && c.resolves(3.2) && !c.resolves(3.1));
+        assert_eq!(Cutoff::default(), Cutoff::for_thinness(0.1).unwrap());
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            let e = Cutoff::for_thinness(bad).unwrap_err().to_string();
+            assert!(e.contains("thinness") && e.contains("(0, ∞)"), "{e}");
+        }
+    }
+}
