@@ -389,6 +389,36 @@ fn the_short_wave_cutoff_counts_the_modes_the_model_resolves() {
         assert_eq!(resolved(&thin.load), every);
         assert_eq!(thin.stable_load, Some(false));
     }
+    // the closed form at ρ = 1 (docs/exact.md): with h/L = 0.1 the circle
+    // is unstable above the cutoff up to ā = 6.2485, where its longest
+    // unstable mode is n* = 62 (the smallest even n > ā³/4 + 1), 2πā/62 =
+    // 0.6332 long against the cutoff 0.6283; just above, n* = 64 is 0.6140
+    // long, and the circle is stable (32 modes reach n = 64)
+    for (a, verdict) in [(6.2482, Some(false)), (6.2545, Some(true))] {
+        let ex = Exact::new(1.0, trunc(32, 256)).unwrap();
+        let st = ex
+            .solve(a, &Contour::ellipse(a, a, 32), a * a / 4.0 - 2.0 / a)
+            .unwrap();
+        let stab = ex.stability(&st).unwrap();
+        assert_eq!(stab.stable_load, verdict, "a = {a}: {stab:?}");
+        assert_eq!(stab.stable_displacement, verdict, "a = {a}");
+        let n_star = 2 * ((a * a * a / 4.0 + 1.0) / 2.0).floor() as usize + 2;
+        assert_eq!(stab.load.first().map(|m| m.n), Some(n_star), "a = {a}");
+        let resolved: Vec<usize> = stab
+            .load
+            .iter()
+            .filter(|m| m.resolved)
+            .map(|m| m.n)
+            .collect();
+        assert_eq!(
+            resolved,
+            if verdict == Some(false) {
+                vec![62]
+            } else {
+                vec![]
+            }
+        );
+    }
     let short = judged(3, 0.4);
     assert!(
         short.load.is_empty() && short.displacement.is_empty(),
