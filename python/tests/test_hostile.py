@@ -188,11 +188,18 @@ def test_a_doubtful_state_is_answered_with_a_warning_not_in_silence():
         warnings.simplefilter("error", thinjkr.ThinJkrWarning)
         good = thinjkr.solve(0.8, force=0.0, model="conformal:8")
     assert "warnings" not in good.to_dict()
-    # conformal:8's displacement-controlled pull-off misses (3)2 by about 0.2
-    # (issue 31, item 1): doubtful at both points, answered with one warning
+    # conformal:2's displacement-controlled pull-off misses (3)2 by 0.29 and
+    # 0.60 at rho = 0.5 and 0.3: doubtful at both points, answered with one
+    # warning
     with pytest.warns(thinjkr.ThinJkrWarning, match=r"2 of 2 states carry warnings"):
-        po = thinjkr.pull_off([0.9, 0.5], model="conformal:8", control="displacement")
+        po = thinjkr.pull_off([0.5, 0.3], model="conformal:2", control="displacement")
     assert po.doubtful.all() and all("(3)2" in w for w in po.warning)
+    # conformal:8's (issue 31, item 1: it moved with K and missed (3)2 by
+    # 0.2) is no pull-off: its branch is already unstable under displacement
+    # control to modes above the short-wave cutoff, and the reason names them
+    many = thinjkr.pull_off([0.9, 0.5], model="conformal:8", control="displacement")
+    assert np.isnan(many.force_bar).all()
+    assert all("no displacement-controlled pull-off" in e and "cos 8θ" in e for e in many.error)
     # an array of solve: the doubtful point is marked and says why, the rest not
     with pytest.warns(thinjkr.ThinJkrWarning, match=r"1 of 2 states carry warnings"):
         many = thinjkr.solve([0.515, 0.8], force=[10.0, 0.0], model="conformal:8")

@@ -1275,7 +1275,29 @@ impl Contact {
     /// branch that continues the non-adhesive one with dδ̄/dā > 0 — the first
     /// minimum of δ̄ or the fold of the contact size, whichever comes first;
     /// labelled a fold of the model, not a proven instability.
+    ///
+    /// An end at a compressive force is no pull-off: the contact would
+    /// separate while still pressed (issue 31, item 6: `apexes` at
+    /// ρ = 0.01, F̄ = +0.605, error (14) 250 %), and is refused as the
+    /// load-controlled one is.
     pub fn pull_off_displacement(&self) -> Result<PullOff> {
+        let po = self.displacement_end()?;
+        if po.state.force_bar >= 0.0 {
+            return Err(Error::NoState(format!(
+                "model {} has no displacement-controlled pull-off at rho = {}: its branch ends under displacement control at a compressive force (F = {} at a_bar = {}, s = {}), so the contact carries no tensile load",
+                self.model_id(),
+                short(self.rho),
+                rounded(po.state.force_bar),
+                rounded(po.state.a_bar),
+                rounded(po.state.s)
+            )));
+        }
+        Ok(po)
+    }
+
+    /// Where the branch from large loads ends under displacement control,
+    /// whatever the sign of its force.
+    fn displacement_end(&self) -> Result<PullOff> {
         let basis = if self.has_energy() {
             FoldBasis::EnergyInstability
         } else {

@@ -127,6 +127,39 @@ fn unstable_modes_agree_with_the_exact_solver() {
     assert_eq!(c.unstable_modes, exact_modes(&e), "zero force at rho = 0.8");
 }
 
+/// Issue 31, item 1: conformal:K's displacement-controlled end moved with K
+/// (F̄ = −3.226, −4.173, −4.185, −3.994, −4.001, −3.672, −3.675 for K =
+/// 2 … 8 at ρ = 0.8), because a member with modes up to n = 2K − 2 loses
+/// stability under displacement control where its shortest mode turns
+/// unstable (at ρ = 1 at ā³ = 4(2K − 3)), before the first extremum of δ̄.
+/// Now K = 2 and 3 end at that extremum, where only the fold's own
+/// direction is neutral (K = 3: the imperfect bifurcation of cos 4θ), and
+/// K ≥ 4 are refused, naming a mode above the short-wave cutoff that is
+/// unstable there (cos 6θ for K = 4). Under load control every member
+/// still pulls off.
+#[test]
+fn the_end_of_displacement_control_is_refused_where_the_branch_is_unstable_before_it() {
+    for k in 2..=8 {
+        let m = Conformal::member("conformal", k).unwrap();
+        let got = m.pull_off(0.8, FoldCondition::Displacement);
+        if k <= 3 {
+            let (st, _) = got.unwrap_or_else(|e| panic!("K = {k}: {e}"));
+            assert!(st.force_bar < 0.0, "K = {k}: {st:?}");
+        } else {
+            match got {
+                Err(Error::NoState(why)) => assert!(
+                    why.contains("no displacement-controlled pull-off")
+                        && why.contains("above the short-wave cutoff")
+                        && (k != 4 || why.contains("cos 6θ")),
+                    "K = {k}: {why}"
+                ),
+                other => panic!("K = {k}: {other:?}"),
+            }
+        }
+        assert!(m.pull_off(0.8, FoldCondition::Load).is_ok(), "K = {k}");
+    }
+}
+
 /// A map that folds over itself is not a contact.
 #[test]
 fn a_map_that_is_not_one_to_one_is_rejected() {

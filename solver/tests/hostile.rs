@@ -231,7 +231,8 @@ fn model_and_missing_input_errors_name_what_is_accepted() {
 /// fold of the contact size, whichever comes first, as under displacement
 /// control: `max` at ρ = 0.01 had its minimum of F̄ past the size fold
 /// (−0.1411, `beyond_size_fold`), after the displacement-controlled end
-/// (−0.1225); its load-controlled pull-off is now that fold.
+/// (−0.1225); its load-controlled pull-off is now that fold. The same sign
+/// rule holds under displacement control.
 #[test]
 fn a_pull_off_is_tensile_and_comes_no_later_than_the_displacement_end() {
     use thinjkr::{Contact, ModelId};
@@ -263,6 +264,19 @@ fn a_pull_off_is_tensile_and_comes_no_later_than_the_displacement_end() {
     assert!(!load.beyond_size_fold, "{load:?}");
     assert!((load.force_bar - end.force_bar).abs() < 1e-9 && (load.s - end.s).abs() < 1e-9);
     assert!((load.force_bar + 0.1225).abs() < 5e-4, "{load:?}");
+    // and a displacement-controlled end at a compressive force is no
+    // pull-off either: apexes at ρ = 0.01 (F̄ = +0.605, where `pull-off
+    // --control displacement` answered it)
+    match Contact::with_model(ModelId::Apexes, 0.01)
+        .unwrap()
+        .pull_off_displacement()
+    {
+        Err(Error::NoState(why)) => assert!(
+            why.contains("no displacement-controlled pull-off") && why.contains("F = 0.605"),
+            "{why}"
+        ),
+        other => panic!("{other:?}"),
+    }
     // every model's pull-off is tensile and not beyond the size fold
     // wherever it answers, and comes no later along the branch (s falls
     // along it) than the displacement-controlled end (the sweep of the
@@ -272,6 +286,9 @@ fn a_pull_off_is_tensile_and_comes_no_later_than_the_displacement_end() {
         for k in 0..120 {
             let rho = (0.005f64.ln() * (1.0 - k as f64 / 119.0)).exp();
             let c = Contact::with_model(id, rho).unwrap();
+            if let Ok(d) = c.pull_off_displacement() {
+                assert!(d.state.force_bar < 0.0, "{id} rho {rho}: {d:?}");
+            }
             let Ok(p) = c.pull_off_load() else { continue };
             assert!(p.state.force_bar < 0.0, "{id} rho {rho}: {p:?}");
             assert!(!p.state.beyond_size_fold, "{id} rho {rho}: {p:?}");

@@ -1088,20 +1088,82 @@ impl Conformal {
         }
         let rho = check_rho(self.family, rho)?;
         let direct = self.pull_off_traced(rho, control);
-        if direct.is_ok() || rho >= 1.0 {
-            return direct;
+        let found = if direct.is_ok() || rho >= 1.0 {
+            direct
+        } else {
+            // the arm through ā = 2.6 folds in ρ above `rho`: the pull-off
+            // itself is continued in ρ from where the direct route finds it
+            self.pull_off_continued(rho, control)
+                .map_err(|e| match direct {
+                    Err(first) => Error::NoState(format!(
+                        "{}; continued in rho from above: {}",
+                        first.detail(),
+                        e.detail()
+                    )),
+                    Ok(_) => e,
+                })
+        }?;
+        if control == FoldCondition::Displacement {
+            self.reached_under_displacement(&found.0)?;
         }
-        // the arm through ā = 2.6 folds in ρ above `rho`: the pull-off
-        // itself is continued in ρ from where the direct route finds it
-        self.pull_off_continued(rho, control)
-            .map_err(|e| match direct {
-                Err(first) => Error::NoState(format!(
-                    "{}; continued in rho from above: {}",
-                    first.detail(),
-                    e.detail()
-                )),
-                Ok(_) => e,
+        Ok(found)
+    }
+
+    /// The first extremum of δ̄ ends displacement control only where the
+    /// branch is still stable there apart from the fold itself: a contour
+    /// mode the member holds, at least the short-wave cutoff long, with a
+    /// clearly negative eigenvalue of ∂²Π̄/∂c² (below −1e-6 of the largest;
+    /// the fold's own direction is zero) means the branch lost stability
+    /// under displacement control before it, where a contact changes shape
+    /// (issue 31, item 1: the end moved with K, −4.17 … −3.68 at ρ = 0.8).
+    /// At ρ = 1 the circle is unstable to the modes n > ā³/4 + 1, so a
+    /// member with modes up to 2K − 2 becomes a saddle at ā³ = 4(2K − 3).
+    fn reached_under_displacement(&self, st: &ConformalState) -> Result<()> {
+        let k = self.terms();
+        let mut x = DVector::from_vec(st.coefficients.clone());
+        x = x.push(st.delta_bar);
+        let e = self.potential(&x, st.rho);
+        let hcc = DMatrix::from_fn(k, k, |i, j| e.hess[i][j]);
+        let eig = hcc.symmetric_eigen();
+        let top = eig.eigenvalues.amax().max(1e-300);
+        let mut before: Vec<(u32, f64)> = Vec::new();
+        for (i, &l) in eig.eigenvalues.iter().enumerate() {
+            if l < -1e-6 * top {
+                let n = self.tables.powers[eig.eigenvectors.column(i).iamax()] as u32 - 1;
+                let wavelength = if n == 0 {
+                    f64::INFINITY
+                } else {
+                    st.perimeter / n as f64
+                };
+                if st.cutoff.resolves(wavelength) {
+                    before.push((n, wavelength));
+                }
+            }
+        }
+        if before.is_empty() {
+            return Ok(());
+        }
+        before.sort_by_key(|m| m.0);
+        let modes: Vec<String> = before
+            .iter()
+            .map(|&(n, w)| {
+                if n == 0 {
+                    "the size".to_string()
+                } else {
+                    format!("cos {n}θ (wavelength {w:.3})")
+                }
             })
+            .collect();
+        Err(Error::NoState(format!(
+            "{} has no displacement-controlled pull-off at rho = {}: at its first extremum of delta (a = {}, F = {}) the branch is already unstable under displacement control to {}, modes above the short-wave cutoff {:.3} = 2π h/L (h/L = {}); a contact held at its approach changes shape before, which this contour cannot follow (docs/exact.md, \"The short-wave cutoff\")",
+            self.name(),
+            short(st.rho),
+            crate::error::rounded(st.a_bar),
+            crate::error::rounded(st.force_bar),
+            modes.join(", "),
+            st.cutoff.wavelength,
+            short(st.cutoff.thinness)
+        )))
     }
 
     /// The pull-off traced from the state at ā = [`Family::trace_start_a`]
