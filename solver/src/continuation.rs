@@ -658,96 +658,21 @@ where
         accepted += 1;
         let q = engine.point(u, t, &l, det);
         let i = points.len();
-        let between = [i - 1, i];
-        let mut stop = None;
-        let mut note = |kind: EventKind, on: On, at: Option<OVector<f64, D>>| {
-            events.push(Event { kind, between, at });
-            if on == On::Stop && stop.is_none() {
-                stop = Some(kind);
+        // the events of the step p → q; where one cannot be located (the
+        // family bends too sharply inside the step for the corrector's
+        // planes, as at an imperfect bifurcation on a force minimum), the
+        // step is taken again shorter
+        let found = step_events(&engine, family, &watch, p, &q, &l, [i - 1, i]);
+        let (step_events, stop) = match found {
+            Ok(found) => found,
+            Err(_) if h > settings.min_step => {
+                accepted -= 1;
+                h = shorter(h, p, "an event of the step cannot be located")?;
+                continue;
             }
+            Err(e) => return Err(e),
         };
-        let located = |on: On| matches!(on, On::Locate | On::Stop);
-        // the located fold of ā in this step, if any: a minimum of F̄ just
-        // before it, in the same step, is looked for up to it
-        let mut size_fold = None;
-        if watch.size_fold != On::Ignore && p.d_a_bar.signum() != q.d_a_bar.signum() {
-            let at = if located(watch.size_fold) {
-                let f =
-                    engine.zero_point(p, &q, p.d_a_bar, q.d_a_bar, &|x: &Point<D>| x.d_a_bar)?;
-                let u = f.u.clone();
-                size_fold = Some(f);
-                Some(u)
-            } else {
-                None
-            };
-            note(EventKind::SizeFold, watch.size_fold, at);
-        }
-        if watch.bifurcation != On::Ignore && p.det_sign != q.det_sign {
-            let mode = family.bifurcation_mode(&engine.bordered(&l.j, &p.t));
-            note(EventKind::Bifurcation(mode), watch.bifurcation, None);
-        }
-        if let Some((quantity, target, on)) = watch.crossing {
-            let (k0, k1) = (p.value(quantity) - target, q.value(quantity) - target);
-            // a point exactly at the value is the crossing (the start, or a
-            // point the last step landed on)
-            let crossed =
-                (k0 == 0.0 && i == 1) || k1 == 0.0 || (k0 != 0.0 && k0.signum() != k1.signum());
-            if on != On::Ignore && crossed {
-                let at = if !located(on) {
-                    None
-                } else if k0 == 0.0 {
-                    Some(p.u.clone())
-                } else if k1 == 0.0 {
-                    Some(q.u.clone())
-                } else {
-                    Some(engine.zero(p, &q, k0, k1, &|x: &Point<D>| x.value(quantity) - target)?)
-                };
-                note(EventKind::Crossing, on, at);
-            }
-        }
-        if watch.displacement_fold != On::Ignore && p.d_delta_bar.signum() != q.d_delta_bar.signum()
-        {
-            let at = if located(watch.displacement_fold) {
-                Some(
-                    engine.zero(p, &q, p.d_delta_bar, q.d_delta_bar, &|x: &Point<D>| {
-                        x.d_delta_bar
-                    })?,
-                )
-            } else {
-                None
-            };
-            note(EventKind::DisplacementFold, watch.displacement_fold, at);
-        }
-        // a minimum of F̄ in the step: looked for on either side of a
-        // located fold of ā (F̄ can turn twice in a step that passes one)
-        // (the flag: the piece ends at the fold)
-        let pieces: Vec<(&Point<D>, &Point<D>, bool)> = match &size_fold {
-            Some(f) => vec![(p, f, true), (f, &q, false)],
-            None => vec![(p, &q, false)],
-        };
-        let minimum = pieces
-            .into_iter()
-            .find(|(a, b, _)| a.d_force < 0.0 && b.d_force >= 0.0);
-        if let (true, Some((a, b, to_fold))) = (watch.force_minimum != On::Ignore, minimum) {
-            let at = if located(watch.force_minimum) {
-                // on the rate where the tangent is defined throughout the
-                // step; by values where a bifurcation point lies in it. A
-                // piece that ends at the located fold is parametrised from
-                // the fold: from its other end the arclength plane can cut
-                // the family twice, on either side of the fold
-                let rate = &|x: &Point<D>| x.d_force;
-                Some(if a.det_sign == b.det_sign && to_fold {
-                    engine.zero(b, a, b.d_force, a.d_force, rate)?
-                } else if a.det_sign == b.det_sign {
-                    engine.zero(a, b, a.d_force, b.d_force, rate)?
-                } else {
-                    engine.force_minimum(a, b)?
-                })
-            } else {
-                None
-            };
-            note(EventKind::ForceMinimum, watch.force_minimum, at);
-        }
+        events.extend(step_events);
         let done = until(&q);
         points.push(q);
         if let Some(kind) = stop {
@@ -773,6 +698,114 @@ where
         events,
         end: End::Budget,
     })
+}
+
+/// The events of one step from `p` to `q` (`l` the linearisation at `q`,
+/// `between` their indices): each one `watch` asks for, located where it
+/// asks, and the kind of the first that stops the trace. An event that
+/// cannot be located is an error (the caller shortens the step).
+fn step_events<D: Size, F: Family<D>>(
+    engine: &Engine<'_, D, F>,
+    family: &F,
+    watch: &Watch,
+    p: &Point<D>,
+    q: &Point<D>,
+    l: &Linear<D>,
+    between: [usize; 2],
+) -> Result<(Vec<Event<D>>, Option<EventKind>)>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    let mut events: Vec<Event<D>> = Vec::new();
+    let mut stop = None;
+    let mut note = |kind: EventKind, on: On, at: Option<OVector<f64, D>>| {
+        events.push(Event { kind, between, at });
+        if on == On::Stop && stop.is_none() {
+            stop = Some(kind);
+        }
+    };
+    let located = |on: On| matches!(on, On::Locate | On::Stop);
+    // the located fold of ā in this step, if any: a minimum of F̄ just
+    // before it, in the same step, is looked for up to it
+    let mut size_fold = None;
+    if watch.size_fold != On::Ignore && p.d_a_bar.signum() != q.d_a_bar.signum() {
+        let at = if located(watch.size_fold) {
+            let f = engine.zero_point(p, q, p.d_a_bar, q.d_a_bar, &|x: &Point<D>| x.d_a_bar)?;
+            let u = f.u.clone();
+            size_fold = Some(f);
+            Some(u)
+        } else {
+            None
+        };
+        note(EventKind::SizeFold, watch.size_fold, at);
+    }
+    if watch.bifurcation != On::Ignore && p.det_sign != q.det_sign {
+        let mode = family.bifurcation_mode(&engine.bordered(&l.j, &p.t));
+        note(EventKind::Bifurcation(mode), watch.bifurcation, None);
+    }
+    if let Some((quantity, target, on)) = watch.crossing {
+        let (k0, k1) = (p.value(quantity) - target, q.value(quantity) - target);
+        // a point exactly at the value is the crossing (the start, or a
+        // point the last step landed on)
+        let crossed = (k0 == 0.0 && between[1] == 1)
+            || k1 == 0.0
+            || (k0 != 0.0 && k0.signum() != k1.signum());
+        if on != On::Ignore && crossed {
+            let at = if !located(on) {
+                None
+            } else if k0 == 0.0 {
+                Some(p.u.clone())
+            } else if k1 == 0.0 {
+                Some(q.u.clone())
+            } else {
+                Some(engine.zero(p, q, k0, k1, &|x: &Point<D>| x.value(quantity) - target)?)
+            };
+            note(EventKind::Crossing, on, at);
+        }
+    }
+    if watch.displacement_fold != On::Ignore && p.d_delta_bar.signum() != q.d_delta_bar.signum() {
+        let at = if located(watch.displacement_fold) {
+            Some(
+                engine.zero(p, q, p.d_delta_bar, q.d_delta_bar, &|x: &Point<D>| {
+                    x.d_delta_bar
+                })?,
+            )
+        } else {
+            None
+        };
+        note(EventKind::DisplacementFold, watch.displacement_fold, at);
+    }
+    // a minimum of F̄ in the step: looked for on either side of a
+    // located fold of ā (F̄ can turn twice in a step that passes one)
+    // (the flag: the piece ends at the fold)
+    let pieces: Vec<(&Point<D>, &Point<D>, bool)> = match &size_fold {
+        Some(f) => vec![(p, f, true), (f, q, false)],
+        None => vec![(p, q, false)],
+    };
+    let minimum = pieces
+        .into_iter()
+        .find(|(a, b, _)| a.d_force < 0.0 && b.d_force >= 0.0);
+    if let (true, Some((a, b, to_fold))) = (watch.force_minimum != On::Ignore, minimum) {
+        let at = if located(watch.force_minimum) {
+            // on the rate where the tangent is defined throughout the
+            // step; by values where a bifurcation point lies in it. A
+            // piece that ends at the located fold is parametrised from
+            // the fold: from its other end the arclength plane can cut
+            // the family twice, on either side of the fold
+            let rate = &|x: &Point<D>| x.d_force;
+            Some(if a.det_sign == b.det_sign && to_fold {
+                engine.zero(b, a, b.d_force, a.d_force, rate)?
+            } else if a.det_sign == b.det_sign {
+                engine.zero(a, b, a.d_force, b.d_force, rate)?
+            } else {
+                engine.force_minimum(a, b)?
+            })
+        } else {
+            None
+        };
+        note(EventKind::ForceMinimum, watch.force_minimum, at);
+    }
+    Ok((events, stop))
 }
 
 #[cfg(test)]
