@@ -1204,21 +1204,27 @@ impl Contact {
     /// Pull-off under load control: the minimum of F̄ along the branch,
     /// located by Newton on the fold condition.
     pub fn pull_off_load(&self) -> Result<PullOff> {
-        let po = self.load_end()?;
-        // a pull-off is where a tensile load detaches the contact: a
-        // minimum of F̄ at a compressive force is no pull-off (issue 31,
+        // a minimum of F̄ at a compressive force is no pull-off (issue 31,
         // item 6: apex45 far below the paper's range)
-        if po.state.force_bar >= 0.0 {
-            return Err(Error::NoState(format!(
-                "model {} has no load-controlled pull-off at rho = {}: its branch ends under load control at a compressive force (F = {} at a_bar = {}, s = {}), so the contact carries no tensile load",
-                self.model_id(),
-                short(self.rho),
-                rounded(po.state.force_bar),
-                rounded(po.state.a_bar),
-                rounded(po.state.s)
-            )));
+        self.tensile(self.load_end()?, "load")
+    }
+
+    /// `end` as a pull-off under `control` ("load" or "displacement") if
+    /// its force is tensile: a pull-off is where a tensile load detaches
+    /// the contact, and an end at a compressive force is refused, with
+    /// that force.
+    fn tensile(&self, end: PullOff, control: &str) -> Result<PullOff> {
+        if end.state.force_bar < 0.0 {
+            return Ok(end);
         }
-        Ok(po)
+        Err(Error::NoState(format!(
+            "model {} has no {control}-controlled pull-off at rho = {}: its branch ends under {control} control at a compressive force (F = {} at a_bar = {}, s = {}), so the contact carries no tensile load",
+            self.model_id(),
+            short(self.rho),
+            rounded(end.state.force_bar),
+            rounded(end.state.a_bar),
+            rounded(end.state.s)
+        )))
     }
 
     /// Where the branch from large loads ends under load control, whatever
@@ -1281,18 +1287,7 @@ impl Contact {
     /// ρ = 0.01, F̄ = +0.605, error (14) 250 %), and is refused as the
     /// load-controlled one is.
     pub fn pull_off_displacement(&self) -> Result<PullOff> {
-        let po = self.displacement_end()?;
-        if po.state.force_bar >= 0.0 {
-            return Err(Error::NoState(format!(
-                "model {} has no displacement-controlled pull-off at rho = {}: its branch ends under displacement control at a compressive force (F = {} at a_bar = {}, s = {}), so the contact carries no tensile load",
-                self.model_id(),
-                short(self.rho),
-                rounded(po.state.force_bar),
-                rounded(po.state.a_bar),
-                rounded(po.state.s)
-            )));
-        }
-        Ok(po)
+        self.tensile(self.displacement_end()?, "displacement")
     }
 
     /// Where the branch from large loads ends under displacement control,
