@@ -299,9 +299,12 @@ impl Choice {
         }
     }
 
-    /// Every state of the model at `hold`: one, except for a model of the
-    /// ellipse at a given ā, which may have a state on each side of its
-    /// contact-size fold (first the one before it). The exact solver is
+    /// Every state of the model at `hold`, the one [`Choice::state`]
+    /// returns first: for a model of the ellipse at a given ā a state on
+    /// each side of its contact-size fold may exist (first the one before
+    /// it), and at a given F̄ the stable state on the branch from large
+    /// loads and every other state with that force (past the pull-off, or
+    /// past the size fold); one state otherwise. The exact solver is
     /// asked by δ̄ or F̄ (with its default escalation and, where no route
     /// finds the state, the continuation in ρ).
     pub fn states(&self, rho: f64, hold: Hold) -> crate::Result<Vec<crate::report::AnyState>> {
@@ -311,7 +314,18 @@ impl Choice {
                 let c = crate::Contact::with_model(m, rho)?;
                 match hold {
                     Hold::Delta(d) => vec![AnyState::Ellipse(c.at_displacement(d)?)],
-                    Hold::Force(f) => vec![AnyState::Ellipse(c.at_load(f)?)],
+                    Hold::Force(f) => {
+                        let stable = c.at_load(f)?;
+                        let same = |o: &crate::State| {
+                            (o.a_bar - stable.a_bar).abs() <= 1e-6 * stable.a_bar
+                                && (o.s - stable.s).abs() <= 1e-6
+                        };
+                        let others = c.at_load_all(f)?;
+                        std::iter::once(stable)
+                            .chain(others.into_iter().filter(|o| !same(o)))
+                            .map(AnyState::Ellipse)
+                            .collect()
+                    }
                     Hold::Size(a) => {
                         let states = c.at_contact_size(a)?;
                         if states.is_empty() {
@@ -335,8 +349,14 @@ impl Choice {
     }
 
     /// The model's state at `hold` (at a given ā, the one before the
-    /// contact-size fold: [`Choice::states`] has them all).
+    /// contact-size fold; at a given F̄, the stable one: [`Choice::states`]
+    /// has them all).
     pub fn state(&self, rho: f64, hold: Hold) -> crate::Result<crate::report::AnyState> {
+        if let (Choice::Ellipse(m), Hold::Force(f)) = (*self, hold) {
+            // the stable state alone, without reading the whole branch
+            let c = crate::Contact::with_model(m, rho)?;
+            return Ok(crate::report::AnyState::Ellipse(c.at_load(f)?));
+        }
         let mut states = self.states(rho, hold)?;
         // states() returns at least one state or an error
         Ok(states.swap_remove(0))

@@ -269,6 +269,11 @@ pub(crate) enum Document {
         /// The models at the same control (beside an exact state).
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
         models: Vec<ModelAnswer>,
+        /// How many other states have the same force (`solve --force`
+        /// with a model of the ellipse; `solve --all` lists them); absent
+        /// where not counted.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        others: Option<usize>,
     },
     /// A curve (`curve --format json`): its states in order and its folds
     /// (`{"kind": "load", "state": {…}}`).

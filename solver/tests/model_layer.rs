@@ -137,3 +137,46 @@ fn a_state_continued_from_its_neighbour_is_the_cold_state() {
         "{wa} {ca} {wd} {cd}"
     );
 }
+
+/// Issue 31: where several states have the control, `solve` says which it
+/// answers and how many others `--all` lists. For `max` at ρ = 0.8 and
+/// F̄ = −4 the layer's states are the stable one (the answer of `state`)
+/// and one more past the pull-off, smaller (ā 2.18 against 2.48); the
+/// command line says "1 other state", lists both with `--all`, and counts
+/// it in JSON.
+#[test]
+fn solve_at_a_force_says_how_many_other_states_have_it() {
+    use thinjkr::control::Hold;
+    let m = thinjkr::registry::parse("max").unwrap();
+    let states = m.states(0.8, Hold::Force(-4.0)).unwrap();
+    assert_eq!(states.len(), 2);
+    assert_eq!(
+        json(&states[0]),
+        json(&m.state(0.8, Hold::Force(-4.0)).unwrap())
+    );
+    let (a0, _, _, f0) = states[0].size_and_load();
+    let (a1, _, _, f1) = states[1].size_and_load();
+    assert!((f0 + 4.0).abs() < 1e-9 && (f1 + 4.0).abs() < 1e-9);
+    assert!(a1 < a0 - 0.2, "{a0} {a1}");
+    let run = |args: &[&str]| {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(o.status.success());
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let one = run(&["solve", "--rho", "0.8", "--force", "-4"]);
+    assert!(one.contains("1 other state has this force"), "{one}");
+    let all = run(&["solve", "--rho", "0.8", "--force", "-4", "--all"]);
+    assert_eq!(
+        all.lines().filter(|l| l.starts_with("state:")).count(),
+        2,
+        "{all}"
+    );
+    let j = run(&["solve", "--rho", "0.8", "--force", "-4", "--json"]);
+    assert!(j.contains("\"others\":1"), "{j}");
+    // a force only the stable state has says nothing more
+    let ten = run(&["solve", "--rho", "0.8", "--force", "10"]);
+    assert_eq!(ten.lines().count(), 1, "{ten}");
+}

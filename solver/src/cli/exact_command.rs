@@ -640,6 +640,7 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
                 .iter()
                 .map(|(m, r)| ModelAnswer::new(m.name(), r))
                 .collect(),
+            others: None,
         };
         outln!("{}", doc.to_json());
         return Ok(());

@@ -70,6 +70,10 @@ enum Command {
         /// Major semi-axis ā (all states with this size).
         #[arg(long, allow_hyphen_values = true, group = "control")]
         a: Option<f64>,
+        /// Every state at that control, the one answered without --all first (with --force and a model of the
+        /// ellipse: each state with that force, the stable one first; --a lists every state of that size anyway).
+        #[arg(long)]
+        all: bool,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -298,8 +302,9 @@ fn run(cli: Cli) -> crate::Result<u8> {
             delta,
             force,
             a,
+            all,
             json,
-        }) => solve_command(rho, model, delta, force, a, json)?,
+        }) => solve_command(rho, model, delta, force, a, all, json)?,
         Some(Command::PullOff {
             rho,
             model,
@@ -384,6 +389,7 @@ fn solve_command(
     delta: Option<f64>,
     force: Option<f64>,
     a: Option<f64>,
+    all: bool,
     j: bool,
 ) -> crate::Result<()> {
     let hold = match (delta, force, a) {
@@ -407,7 +413,34 @@ fn solve_command(
     if let Some(control) = exact {
         return exact_command::state(rho, control, &exact_command::Discretisation::default(), j);
     }
-    show_states("state", &model.states(rho, hold)?, j)
+    if all || !matches!(hold, Hold::Force(_)) {
+        return show_states("state", &model.states(rho, hold)?, j);
+    }
+    // at a given force the stable state, and how many others have it
+    let state = model.state(rho, hold)?;
+    let others = model.states(rho, hold).map(|v| v.len().saturating_sub(1));
+    if j {
+        let doc = Document::State {
+            state,
+            models: Vec::new(),
+            others: others.as_ref().ok().copied(),
+        };
+        outln!("{}", doc.to_json());
+        return Ok(());
+    }
+    show_states("state", std::slice::from_ref(&state), false)?;
+    match others {
+        Ok(0) => {}
+        Ok(n) => outln!(
+            "  the stable state, on the branch from large loads; {n} other state{} {} this force (--all lists every one)",
+            if n == 1 { "" } else { "s" },
+            if n == 1 { "has" } else { "have" }
+        ),
+        Err(e) => outln!(
+            "  the stable state, on the branch from large loads; the other states with this force were not counted: {e}"
+        ),
+    }
+    Ok(())
 }
 
 /// States of the models of the ellipse and of the contour families, as
@@ -418,6 +451,7 @@ fn show_states(label: &str, states: &[AnyState], j: bool) -> crate::Result<()> {
             [one] => Document::State {
                 state: one.clone(),
                 models: Vec::new(),
+                others: None,
             },
             many => Document::States {
                 states: many.to_vec(),
