@@ -54,10 +54,15 @@ impl Cutoff {
             thinness > 0.0 && thinness.is_finite(),
             "(0, ∞)",
         )?;
-        Ok(Cutoff {
+        Ok(Cutoff::of(thinness))
+    }
+
+    /// The cutoff of a thinness already checked.
+    fn of(thinness: f64) -> Cutoff {
+        Cutoff {
             thinness,
             wavelength: 2.0 * std::f64::consts::PI * thinness,
-        })
+        }
     }
 
     /// Whether a mode of this wavelength (units of L; ∞ for the size) is
@@ -69,10 +74,7 @@ impl Cutoff {
 
 impl Default for Cutoff {
     fn default() -> Self {
-        Cutoff {
-            thinness: Cutoff::DEFAULT_THINNESS,
-            wavelength: 2.0 * std::f64::consts::PI * Cutoff::DEFAULT_THINNESS,
-        }
+        Cutoff::of(Cutoff::DEFAULT_THINNESS)
     }
 }
 

@@ -17,7 +17,7 @@ fn modes(st: &ConformalState) -> String {
             .map(|&n| {
                 if n == 0 {
                     "the size".to_string()
-                } else if st.cutoff.resolves(st.perimeter / n as f64) {
+                } else if st.cutoff.resolves(st.wavelength(n)) {
                     format!("cos {n}θ")
                 } else {
                     format!("cos {n}θ (shorter than the cutoff)")

@@ -332,13 +332,9 @@ fn modes(v: &[UnstableMode], series_modes: usize) -> String {
     if v.is_empty() {
         return "stable".into();
     }
+    let ns: Vec<usize> = v.iter().map(|m| m.n).collect();
     let mut parts = Vec::new();
-    let mut i = 0;
-    while i < v.len() {
-        let mut j = i;
-        while j + 1 < v.len() && v[j + 1].n == v[j].n + 2 && v[j].n > 0 {
-            j += 1;
-        }
+    for (i, j) in even_runs(&ns) {
         if j >= i + 2 {
             let last = if v[j].n == 2 * series_modes {
                 format!(", the shortest the {series_modes}-mode series represents")
@@ -362,9 +358,25 @@ fn modes(v: &[UnstableMode], series_modes: usize) -> String {
                 });
             }
         }
-        i = j + 1;
     }
     format!("unstable modes {}", parts.join(", "))
+}
+
+/// The index ranges `(i, j)` (inclusive) of `ns` in order: a run of
+/// consecutive even modes n, n + 2, … (n > 0) as one range, every other
+/// mode alone; a range of three or more is written as a run.
+fn even_runs(ns: &[usize]) -> Vec<(usize, usize)> {
+    let mut runs = Vec::new();
+    let mut i = 0;
+    while i < ns.len() {
+        let mut j = i;
+        while j + 1 < ns.len() && ns[j + 1] == ns[j] + 2 && ns[j] > 0 {
+            j += 1;
+        }
+        runs.push((i, j));
+        i = j + 1;
+    }
+    runs
 }
 
 /// An exact state in words: its size and load to ten digits, then how
@@ -456,18 +468,12 @@ pub(crate) fn cutoff_words(stab: &crate::exact::stability::ExactStability) -> St
 /// Mode numbers, runs of three or more consecutive even ones as a range.
 fn mode_list(ns: &[usize]) -> String {
     let mut parts = Vec::new();
-    let mut i = 0;
-    while i < ns.len() {
-        let mut j = i;
-        while j + 1 < ns.len() && ns[j + 1] == ns[j] + 2 && ns[j] > 0 {
-            j += 1;
-        }
+    for (i, j) in even_runs(ns) {
         if j >= i + 2 {
             parts.push(format!("{}, {}, …, {}", ns[i], ns[i + 1], ns[j]));
         } else {
             parts.extend(ns[i..=j].iter().map(|n| n.to_string()));
         }
-        i = j + 1;
     }
     parts.join(", ")
 }

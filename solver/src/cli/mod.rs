@@ -416,9 +416,15 @@ fn solve_command(
     if all || !matches!(hold, Hold::Force(_)) {
         return show_states("state", &model.states(rho, hold)?, j);
     }
-    // at a given force the stable state, and how many others have it
-    let state = model.state(rho, hold)?;
-    let others = model.states(rho, hold).map(|v| v.len().saturating_sub(1));
+    // at a given force the stable state, and how many others have it (the
+    // stable state alone where the others cannot be read)
+    let (state, others) = match model.states(rho, hold) {
+        Ok(mut all) => {
+            let n = all.len() - 1;
+            (all.remove(0), Ok(n))
+        }
+        Err(e) => (model.state(rho, hold)?, Err(e)),
+    };
     if j {
         let doc = Document::State {
             state,

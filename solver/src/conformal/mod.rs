@@ -224,14 +224,25 @@ pub struct ConformalState {
 }
 
 impl ConformalState {
+    /// The wavelength of contour mode `n` along this contour, its
+    /// perimeter over n (∞ for the size, n = 0).
+    pub(crate) fn wavelength(&self, n: u32) -> f64 {
+        if n == 0 {
+            f64::INFINITY
+        } else {
+            self.perimeter / n as f64
+        }
+    }
+
     /// The same state's verdicts under another short-wave cutoff (another
     /// thinness h/L): a negative direction counts when its mode is the
     /// size (n = 0) or at least the cutoff's wavelength long.
     pub(crate) fn under(mut self, cutoff: Cutoff) -> ConformalState {
-        let perimeter = self.perimeter;
-        let counts = |n: &u32| *n == 0 || cutoff.resolves(perimeter / *n as f64);
-        self.stable_displacement = !self.unstable_modes.iter().any(counts);
-        self.stable_load = !self.unstable_modes_load.iter().any(counts);
+        let stable = |modes: &[u32]| !modes.iter().any(|&n| cutoff.resolves(self.wavelength(n)));
+        (self.stable_displacement, self.stable_load) = (
+            stable(&self.unstable_modes),
+            stable(&self.unstable_modes_load),
+        );
         self.cutoff = cutoff;
         self
     }
@@ -1129,12 +1140,8 @@ impl Conformal {
         let mut before: Vec<(u32, f64)> = Vec::new();
         for (i, &l) in eig.eigenvalues.iter().enumerate() {
             if l < -1e-6 * top {
-                let n = self.tables.powers[eig.eigenvectors.column(i).iamax()] as u32 - 1;
-                let wavelength = if n == 0 {
-                    f64::INFINITY
-                } else {
-                    st.perimeter / n as f64
-                };
+                let n = self.mode_of(eig.eigenvectors.column(i).iamax(), false);
+                let wavelength = st.wavelength(n);
                 if st.cutoff.resolves(wavelength) {
                     before.push((n, wavelength));
                 }
@@ -1297,23 +1304,26 @@ impl Conformal {
     /// With `with_delta` the Hessian is bordered by δ̄ (load control),
     /// whose component counts as the size, n = 0.
     fn modes(&self, h: &DMatrix<f64>, with_delta: bool) -> Vec<u32> {
-        let k = self.terms();
         let eig = h.clone().symmetric_eigen();
         let top = eig.eigenvalues.amax().max(1e-300);
         let mut modes = Vec::new();
         for (i, &l) in eig.eigenvalues.iter().enumerate() {
             if l <= 1e-9 * top {
-                let v = eig.eigenvectors.column(i);
-                let kmax = v.iamax();
-                modes.push(if with_delta && kmax == k {
-                    0
-                } else {
-                    self.tables.powers[kmax] as u32 - 1
-                });
+                modes.push(self.mode_of(eig.eigenvectors.column(i).iamax(), with_delta));
             }
         }
         modes.sort_unstable();
         modes
+    }
+
+    /// The contour mode of unknown `k` (c_k moves the radius by
+    /// cos((n_k − 1)θ)); with `with_delta`, δ̄ (k = K) counts as the size.
+    fn mode_of(&self, k: usize, with_delta: bool) -> u32 {
+        if with_delta && k == self.terms() {
+            0
+        } else {
+            self.tables.powers[k] as u32 - 1
+        }
     }
 
     /// The perimeter ∮|w′(e^{iθ})| dθ of the contour (the trapezoidal rule
