@@ -391,6 +391,26 @@ fn render_body(
     Ok(quote!(#(#prelude)* #(#lets)* #body))
 }
 
+/// One straight-line function of the given outputs, as derived (no charts):
+/// for generators of other kinds of model (the slender limit), which check
+/// their functions themselves.
+pub fn plain_function(
+    name: &'static str,
+    doc: &str,
+    params: Vec<&'static str>,
+    outputs: Vec<Atom>,
+) -> Result<TokenStream, String> {
+    render_function(
+        &Function {
+            name,
+            doc: doc.to_string(),
+            params,
+            outputs,
+        },
+        None,
+    )
+}
+
 fn render_function(f: &Function, charts: Option<&Charted>) -> Result<TokenStream, String> {
     let name = ident(f.name);
     let params: Vec<TokenStream> = f

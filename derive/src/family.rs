@@ -18,6 +18,7 @@
 //! `conformal`, `sym`, `ansatz` (the names already taken).
 
 use crate::conformal::{ConformalAnsatz, MAX_TERMS};
+pub use crate::slender::SlenderFamily;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -33,11 +34,18 @@ pub const EXACT_GAP: &str = "X^2/2 + mu*Y^2/2";
 const MAX_FILE_BYTES: u64 = 64 * 1024;
 
 /// The kinds of family the generator knows.
-pub const KINDS: &[&str] = &["conformal"];
+pub const KINDS: &[&str] = &["conformal", "slender"];
 
 /// Names no family may take: the ellipse models', `exact`, and the
 /// registry's own module names.
-const RESERVED: &[&str] = &["exact", "registry", "mod", "table", "families"];
+const RESERVED: &[&str] = &[
+    "exact",
+    "registry",
+    "mod",
+    "table",
+    "families",
+    crate::slender::REGISTRY_MODULE,
+];
 
 /// A family file as written.
 #[derive(Deserialize)]
@@ -104,7 +112,104 @@ impl Family {
     }
 }
 
-/// Parse and check one family file's text; `source` names it in errors.
+/// A slender family file as written.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSlender {
+    #[allow(dead_code)]
+    kind: String,
+    name: String,
+    title: String,
+    gap: String,
+}
+
+/// A family file of any kind.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AnyFamily {
+    /// A contour family (`kind = "conformal"`).
+    Conformal(Family),
+    /// The slender limit (`kind = "slender"`).
+    Slender(SlenderFamily),
+}
+
+impl AnyFamily {
+    fn name(&self) -> &str {
+        match self {
+            AnyFamily::Conformal(f) => &f.name,
+            AnyFamily::Slender(f) => &f.name,
+        }
+    }
+    fn source(&self) -> &Path {
+        match self {
+            AnyFamily::Conformal(f) => &f.source,
+            AnyFamily::Slender(f) => &f.source,
+        }
+    }
+}
+
+/// The families of every kind, in the order of their files' names.
+#[derive(Clone, Debug, Default)]
+pub struct Families {
+    /// The contour families.
+    pub conformal: Vec<Family>,
+    /// The slender models.
+    pub slender: Vec<SlenderFamily>,
+}
+
+/// The name and title checks every kind shares.
+fn check_name_title(at: &std::path::Display<'_>, name: &str, title: &str) -> Result<(), String> {
+    let ident = name.len() <= 32
+        && name.starts_with(|c: char| c.is_ascii_lowercase())
+        && name
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+    if !ident {
+        return Err(format!(
+            "{at}: name = {:?} must be a lower-case identifier of at most 32 characters (a-z, 0-9, _; a letter first)",
+            short(name)
+        ));
+    }
+    let taken = RESERVED.contains(&name) || crate::ansatz::ALL.iter().any(|a| a.id == name);
+    if taken {
+        return Err(format!(
+            "{at}: name = {:?} is taken (by an ellipse model, `exact` or a generated module)",
+            name
+        ));
+    }
+    if title.trim().is_empty() || title.len() > 200 || title.contains('\n') {
+        return Err(format!(
+            "{at}: title must be one line of 1 to 200 characters"
+        ));
+    }
+    Ok(())
+}
+
+/// Parse and check one family file of any kind; `source` names it in
+/// errors.
+pub fn parse_any(text: &str, source: &Path) -> Result<AnyFamily, String> {
+    let at = source.display();
+    let table: toml::Table = toml::from_str(text).map_err(|e| format!("{at}: {}", e.message()))?;
+    match table.get("kind").and_then(|k| k.as_str()) {
+        Some("slender") => {
+            let raw: RawSlender =
+                toml::from_str(text).map_err(|e| format!("{at}: {}", e.message()))?;
+            check_name_title(&at, &raw.name, &raw.title)?;
+            crate::sym::try_ex(&raw.gap)
+                .map(drop)
+                .map_err(|why| format!("{at}: gap does not parse: {why}"))?;
+            Ok(AnyFamily::Slender(SlenderFamily {
+                name: raw.name,
+                title: raw.title,
+                gap: raw.gap,
+                source: source.to_path_buf(),
+            }))
+        }
+        _ => parse(text, source).map(AnyFamily::Conformal),
+    }
+}
+
+/// Parse and check one contour family file's text; `source` names it in
+/// errors.
 pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
     let at = source.display();
     let raw: Raw = toml::from_str(text).map_err(|e| format!("{at}: {}", e.message()))?;
@@ -115,31 +220,13 @@ pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
             KINDS.join(", ")
         ));
     }
-    let ident = raw.name.len() <= 32
-        && raw.name.starts_with(|c: char| c.is_ascii_lowercase())
-        && raw
-            .name
-            .chars()
-            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
-    if !ident {
+    if raw.kind != "conformal" {
         return Err(format!(
-            "{at}: name = {:?} must be a lower-case identifier of at most 32 characters (a-z, 0-9, _; a letter first)",
-            short(&raw.name)
+            "{at}: kind = {:?} is not a contour family",
+            short(&raw.kind)
         ));
     }
-    let taken = RESERVED.contains(&raw.name.as_str())
-        || crate::ansatz::ALL.iter().any(|a| a.id == raw.name);
-    if taken {
-        return Err(format!(
-            "{at}: name = {:?} is taken (by an ellipse model, `exact` or a generated module)",
-            raw.name
-        ));
-    }
-    if raw.title.trim().is_empty() || raw.title.len() > 200 || raw.title.contains('\n') {
-        return Err(format!(
-            "{at}: title must be one line of 1 to 200 characters"
-        ));
-    }
+    check_name_title(&at, &raw.name, &raw.title)?;
     if raw.powers.is_empty() || raw.powers.len() > MAX_TERMS {
         return Err(format!(
             "{at}: powers must list 1 to {MAX_TERMS} powers of the map (it lists {})",
@@ -201,10 +288,23 @@ fn short(s: &str) -> String {
     }
 }
 
+/// Every contour family file under `root`'s [`FOLDER`] ([`read_kinds`]'s
+/// contour families); there must be at least one.
+pub fn read_all(root: &Path) -> Result<Vec<Family>, String> {
+    let all = read_kinds(root)?;
+    if all.conformal.is_empty() {
+        return Err(format!(
+            "{}: no contour family file (*.toml of kind conformal)",
+            root.join(FOLDER).display()
+        ));
+    }
+    Ok(all.conformal)
+}
+
 /// Every family file under `root`'s [`FOLDER`], sorted by file name, read
 /// and checked; no two may share a name, and at most one per gap may seed
 /// the exact solver.
-pub fn read_all(root: &Path) -> Result<Vec<Family>, String> {
+pub fn read_kinds(root: &Path) -> Result<Families, String> {
     let dir = root.join(FOLDER);
     let entries = std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let mut paths: Vec<PathBuf> = entries
@@ -212,7 +312,7 @@ pub fn read_all(root: &Path) -> Result<Vec<Family>, String> {
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .collect();
     paths.sort();
-    let mut out: Vec<Family> = Vec::new();
+    let mut out: Vec<AnyFamily> = Vec::new();
     for p in paths {
         let rel = p.strip_prefix(root).unwrap_or(&p).to_path_buf();
         let size = std::fs::metadata(&p)
@@ -225,25 +325,28 @@ pub fn read_all(root: &Path) -> Result<Vec<Family>, String> {
             ));
         }
         let text = std::fs::read_to_string(&p).map_err(|e| format!("{}: {e}", rel.display()))?;
-        let f = parse(&text, &rel)?;
-        if let Some(other) = out.iter().find(|o| o.name == f.name) {
+        let f = parse_any(&text, &rel)?;
+        if let Some(other) = out.iter().find(|o| o.name() == f.name()) {
             return Err(format!(
                 "{}: name = {:?} is the name of {} too",
                 rel.display(),
-                f.name,
-                other.source.display()
+                f.name(),
+                other.source().display()
             ));
         }
-        if f.seeds_exact {
-            if let Some(other) = out
-                .iter()
-                .find(|o| o.seeds_exact && same_gap(&o.gap, &f.gap))
-            {
-                return Err(format!(
-                    "{}: seeds_exact: {} seeds the exact solver of the same gap already",
-                    rel.display(),
-                    other.source.display()
-                ));
+        if let AnyFamily::Conformal(f) = &f {
+            if f.seeds_exact {
+                let twin = out.iter().find_map(|o| match o {
+                    AnyFamily::Conformal(o) if o.seeds_exact && same_gap(&o.gap, &f.gap) => Some(o),
+                    _ => None,
+                });
+                if let Some(other) = twin {
+                    return Err(format!(
+                        "{}: seeds_exact: {} seeds the exact solver of the same gap already",
+                        rel.display(),
+                        other.source.display()
+                    ));
+                }
             }
         }
         out.push(f);
@@ -251,7 +354,14 @@ pub fn read_all(root: &Path) -> Result<Vec<Family>, String> {
     if out.is_empty() {
         return Err(format!("{}: no family file (*.toml)", dir.display()));
     }
-    Ok(out)
+    let mut families = Families::default();
+    for f in out {
+        match f {
+            AnyFamily::Conformal(f) => families.conformal.push(f),
+            AnyFamily::Slender(f) => families.slender.push(f),
+        }
+    }
+    Ok(families)
 }
 
 /// Whether two gaps are the same expression (their difference expands to 0).

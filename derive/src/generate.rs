@@ -61,8 +61,20 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
     // ellipse models are derived: symbolica orders terms by when their
     // symbols were first seen, and the generated code must not depend on
     // which families exist
-    let families = crate::family::read_all(root)?;
-    let modules: Vec<&str> = families.iter().map(|f| f.name.as_str()).collect();
+    let kinds = crate::family::read_kinds(root)?;
+    let families = kinds.conformal;
+    if families.is_empty() {
+        return Err(format!(
+            "{}: no contour family file (*.toml of kind conformal)",
+            root.join(crate::family::FOLDER).display()
+        ));
+    }
+    let modules: Vec<&str> = families
+        .iter()
+        .map(|f| f.name.as_str())
+        .chain(kinds.slender.iter().map(|f| f.name.as_str()))
+        .chain([crate::slender::REGISTRY_MODULE])
+        .collect();
     out.extend(crate::codegen::outputs(&all, &modules)?);
     let mut exact_gap = Vec::new();
     for f in &families {
@@ -86,6 +98,23 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
     out.extend(crate::codegen_conformal::registry_outputs(
         &families, &exact_gap,
     )?);
+    // the slender models (issue 32, milestone (c)) and their registry
+    out.push(Output {
+        path: format!(
+            "solver/src/generated/{}.rs",
+            crate::slender::REGISTRY_MODULE
+        )
+        .into(),
+        contents: crate::slender::registry_source(&kinds.slender)?,
+    });
+    for f in &kinds.slender {
+        let derived = crate::slender::derive(f)?;
+        out[0].contents.push_str(&derived.derivation_section());
+        out.push(Output {
+            path: format!("solver/src/generated/{}.rs", f.name).into(),
+            contents: derived.module_source()?,
+        });
+    }
     // no line of a document longer than 400 characters (issue 32)
     for o in out.iter_mut() {
         if o.path.extension().is_some_and(|e| e == "md") {

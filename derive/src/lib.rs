@@ -33,6 +33,7 @@ pub mod nondimensional;
 pub mod numeric;
 pub mod report;
 pub mod routes;
+pub mod slender;
 pub mod special;
 pub mod sym;
 pub mod thin_layer;

@@ -36,7 +36,7 @@ def assert_same_state(st, d):
             assert getattr(st, name) == v, (name, getattr(st, name), v)
 
 
-@pytest.mark.parametrize("model", ELLIPSE + ["conformal:2", "conformal:8"])
+@pytest.mark.parametrize("model", ELLIPSE + ["conformal:2", "conformal:8", "slender"])
 def test_solve_equals_the_command_line(cli, model):
     for args, kwargs in [
         (["--delta", "2"], {"delta": 2.0}),
@@ -47,7 +47,7 @@ def test_solve_equals_the_command_line(cli, model):
         assert_same_state(thinjkr.solve(0.8, model=model, **kwargs), d)
 
 
-@pytest.mark.parametrize("model", ELLIPSE + ["conformal:4"])
+@pytest.mark.parametrize("model", ELLIPSE + ["conformal:4", "slender"])
 def test_pull_off_and_zero_force_equal_the_command_line(cli, model):
     d = run_json(cli, "pull-off", "--model", model, "--rho", "0.8")
     po = thinjkr.pull_off(0.8, model=model)
@@ -56,6 +56,17 @@ def test_pull_off_and_zero_force_equal_the_command_line(cli, model):
         assert po.basis == d["basis"]
     z = run_json(cli, "zero-force", "--model", model, "--rho", "0.8")
     assert_same_state(thinjkr.zero_force(0.8, model=model), z.get("state", z))
+
+
+def test_slender_refuses_what_it_lacks_with_the_reason():
+    """The slender contact has no finite length: a state at a contact size,
+    its curve and its displacement-controlled pull-off are refused, typed."""
+    with pytest.raises(thinjkr.Unavailable, match="no finite length"):
+        thinjkr.solve(0.1, a=2.0, model="slender")
+    with pytest.raises(thinjkr.Unavailable, match="never lets go"):
+        thinjkr.pull_off(0.1, model="slender", control="displacement")
+    st = thinjkr.pull_off(0.1, model="slender")
+    assert close(st.force_bar / math.sqrt(0.1), -4.0192414, rel=1e-7)
 
 
 def test_exact_equals_the_command_line(cli):

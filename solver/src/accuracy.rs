@@ -12,7 +12,8 @@
 //!
 //! Owns: [`Quantity`], [`Row`], [`row`], [`render`], [`RHOS`],
 //! [`Doubling`], [`doubling`], [`Reference`], [`band_markdown`]. May use: `fold`, `control`, `exact`, `contact`,
-//! `conformal` (the compared members), `model` (the ellipse models), `error`.
+//! `conformal` (the compared members), `model` (the ellipse models), `slender`
+//! (the slender limit's table), `report` (its state), `error`.
 
 // the accuracy table is rendered by the command line (`thinjkr accuracy`)
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
@@ -405,6 +406,9 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
             o.push('\n');
         }
     }
+    for m in crate::slender::Slender::all() {
+        o.push_str(&render_slender(m, rows));
+    }
     for f in own_gap_families() {
         o.push_str(&render_own_gap(f, rows));
     }
@@ -421,6 +425,73 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
         o.push('\n');
     }
     tidy(&o)
+}
+
+/// The slender model's section: its F̄ (pull-off) or δ̄ and its half-width
+/// at the centre b̄₀ against the exact state's F̄ or δ̄ and b̄, in per cent,
+/// at every ρ with an exact value (the slender contact has no length, so
+/// neither ā nor s is compared).
+#[cfg(feature = "cli")]
+fn render_slender(m: crate::slender::Slender, rows: &[Row]) -> String {
+    let c = m.pull_off_load(1.0).map(|p| p.force_bar);
+    let mut o = format!(
+        "\n## The slender limit against the exact solution\n\n\
+         `{name}` ([derivation.md](derivation.md), \"The slender limit\") makes every cross-section of the contact a \
+         strip of the one-dimensional (2)–(3) at the local approach δ̄ − X²/2: F̄ = ρ^(1/2) G and δ̄ = ρ^(−1/3) D \
+         of the centre's scaled half-width β₀, the pull-off F̄ = {g} ρ^(1/2). Its contact has no finite length \
+         (the strip thins as 2/ξ² along X without end), so its F̄ or δ̄ and its half-width at the centre b̄₀ are \
+         compared with the exact state's F̄ or δ̄ and b̄ = sā, in per cent; exact.md, \"The slender limit\", says \
+         what it is good for.\n",
+        name = m.name(),
+        g = c.map(|g| format!("{g:.7}")).unwrap_or_else(|e| e.to_string()),
+    );
+    for q in Quantity::ALL {
+        let first = match q {
+            Quantity::PullOff => "F̄",
+            _ => "δ̄",
+        };
+        o.push_str(&format!(
+            "\n### {}\n\n| ρ | exact: {first} / b̄ | `{}`: {first} / b̄₀ | `{}` against exact: {first} / b̄ |\n|---|---|---|---|\n",
+            q.title(),
+            m.name(),
+            m.name()
+        ));
+        for r in rows
+            .iter()
+            .filter(|r| r.quantity == q && r.family.is_none())
+        {
+            let st = match q {
+                Quantity::PullOff => m.pull_off_load(r.rho),
+                Quantity::ZeroForce => m.zero_force(r.rho),
+                Quantity::Force10 => m.at_load(r.rho, 10.0),
+            };
+            let mine = |st: &crate::report::SlenderState| match q {
+                Quantity::PullOff => st.force_bar,
+                _ => st.delta_bar,
+            };
+            let (exact, model, diff) = match (&r.exact, &st) {
+                (Ok(e), Ok(st)) => {
+                    let ex = match q {
+                        Quantity::PullOff => e.force_bar,
+                        _ => e.delta_bar,
+                    };
+                    (
+                        format!("{ex:.6} / {:.6}", e.b_bar),
+                        format!("{:.6} / {:.6}", mine(st), st.b_bar),
+                        format!("{} / {}", pct(mine(st), ex), pct(st.b_bar, e.b_bar)),
+                    )
+                }
+                (Err(_), Ok(st)) => (
+                    "no exact value (see above)".into(),
+                    format!("{:.6} / {:.6}", mine(st), st.b_bar),
+                    "—".into(),
+                ),
+                (_, Err(why)) => ("—".into(), cell(&why.to_string()), "—".into()),
+            };
+            o.push_str(&format!("| {} | {exact} | {model} | {diff} |\n", r.rho));
+        }
+    }
+    o
 }
 
 /// The longest table cell kept whole; a longer one (a reason why there is

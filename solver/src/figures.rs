@@ -773,7 +773,7 @@ pub fn exact_bands_force(
 }
 
 /// The files of [`exact_bands_force`], by ρ.
-pub const BANDS_FORCE_FILES: [(f64, &str); 6] = [
+pub(crate) const BANDS_FORCE_FILES: [(f64, &str); 6] = [
     (0.9, "exact_bands_force_0.9.svg"),
     (0.8, "exact_bands_force_0.8.svg"),
     (0.7, "exact_bands_force_0.7.svg"),

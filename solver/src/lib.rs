@@ -40,6 +40,7 @@ pub mod model;
 pub mod newton;
 pub mod registry;
 pub mod report;
+pub(crate) mod slender;
 pub mod units;
 
 /// The user's guide.

@@ -13,15 +13,16 @@
 //! exact solver alike, so that the command line and the Python package do
 //! not dispatch over kinds of model themselves to solve.
 //!
-//! Owns: [`Choice`], [`PhysicalAnswer`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
+//! Owns: [`Choice`] (and names [`Slender`], a slender model's handle), [`PhysicalAnswer`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
 //! [`Entry`], [`parse`], [`entries`], [`help`]. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
 //! curves), `model`, `control`, `units` (`physical`), `cutoff` (a contour state's
-//! stability judged with the coatings' thinness), `error`.
+//! stability judged with the coatings' thinness), `slender`, `error`.
 
 use crate::conformal::{families, Conformal};
 use crate::control::Hold;
+pub use crate::slender::Slender;
 use crate::ModelId;
 
 /// A model chosen by name.
@@ -33,6 +34,8 @@ pub enum Choice {
     Contour(Conformal),
     /// The exact solution of the free-boundary problem (2)–(3).
     Exact,
+    /// A slender model (the limit ρ → 0; `slender`).
+    Slender(crate::slender::Slender),
 }
 
 /// What a model is, for `thinjkr models` and the Python package.
@@ -52,6 +55,9 @@ pub fn parse(name: &str) -> Result<Choice, String> {
     }
     if let Some(member) = Conformal::parse(name) {
         return member.map(Choice::Contour);
+    }
+    if let Some(m) = crate::slender::Slender::parse(name) {
+        return Ok(Choice::Slender(m));
     }
     name.parse().map(Choice::Ellipse).map_err(|_: String| {
         let mut why = format!(
@@ -74,6 +80,7 @@ pub(crate) fn names() -> String {
     for f in families() {
         out.push(format!("{}:K with K = {}", f.name, f.member_range()));
     }
+    out.extend(crate::slender::Slender::all().map(|m| m.name().to_string()));
     out.push(EXACT.into());
     out.join(", ")
 }
@@ -99,6 +106,9 @@ pub(crate) fn help(with_exact: bool, extra: &str) -> String {
             f.name,
             f.member_range()
         ));
+    }
+    for m in crate::slender::Slender::all() {
+        parts.push(format!("{} (the limit rho -> 0)", m.name()));
     }
     if with_exact {
         parts.push("or exact (the free-boundary problem itself)".into());
@@ -129,6 +139,14 @@ pub fn entries() -> Vec<Entry> {
         unknowns: Some(c.terms() + 1),
         rho_min: c.family().rho_min,
         controls: controls(),
+    }));
+    out.extend(crate::slender::Slender::all().map(|m| Entry {
+        name: m.name().to_string(),
+        description: m.model().title.to_string(),
+        family: None,
+        unknowns: Some(1),
+        rho_min: crate::contact::RHO_MIN,
+        controls: vec!["delta".into(), "force".into()],
     }));
     out.push(Entry {
         name: EXACT.into(),
@@ -169,6 +187,13 @@ impl Choice {
         delta: Option<f64>,
     ) -> crate::Result<PhysicalAnswer> {
         let model = *self;
+        if let Choice::Slender(m) = model {
+            return Err(crate::Error::Unavailable {
+                model: m.name(),
+                what: "answer in physical units".into(),
+                why: "a slender contact has no finite length, so no semi-axis in metres; ask `thinjkr solve` or `pull-off` with --model slender in the units (17)",
+            });
+        }
         let sc = cyl.scales()?;
         let force_si = force;
         // a value the user typed, scaled: refused in the user's units when it
@@ -257,7 +282,7 @@ impl Choice {
                 }
             }
             crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
-            crate::report::AnyState::Exact(_) => {}
+            crate::report::AnyState::Exact(_) | crate::report::AnyState::Slender(_) => {}
         }
         if si.h_over_a > 0.1 {
             warnings.push(format!(
@@ -296,6 +321,7 @@ impl Choice {
             Choice::Ellipse(m) => m.name().to_string(),
             Choice::Contour(m) => m.name(),
             Choice::Exact => EXACT.into(),
+            Choice::Slender(m) => m.name().into(),
         }
     }
 
@@ -340,6 +366,14 @@ impl Choice {
                 }
             }
             Choice::Contour(m) => vec![AnyState::Conformal(m.solve(rho, hold)?)],
+            Choice::Slender(m) => match hold {
+                Hold::Force(f) => m
+                    .at_load_all(rho, f)?
+                    .into_iter()
+                    .map(AnyState::Slender)
+                    .collect(),
+                other => vec![AnyState::Slender(m.solve(rho, other)?)],
+            },
             Choice::Exact => {
                 vec![AnyState::Exact(Box::new(crate::exact::at_resolved(
                     rho, hold,
@@ -388,6 +422,18 @@ impl Choice {
             (Choice::Contour(m), AnyState::Conformal(st)) => {
                 Ok(AnyState::Conformal(m.solve_near(rho, hold, st)?))
             }
+            (Choice::Slender(m), AnyState::Slender(st)) => {
+                // at a force, the state on `near`'s side of the force minimum
+                let all = match hold {
+                    Hold::Force(f) => m.at_load_all(rho, f)?,
+                    other => vec![m.solve(rho, other)?],
+                };
+                let same_side = all
+                    .iter()
+                    .find(|o| o.stable_load == st.stable_load)
+                    .copied();
+                Ok(AnyState::Slender(same_side.unwrap_or(all[0])))
+            }
             (Choice::Exact, AnyState::Exact(st)) => {
                 let hold = hold.check_finite()?;
                 let ex = crate::exact::Exact::new(rho, st.truncation)?;
@@ -408,6 +454,7 @@ impl Choice {
                 crate::Contact::with_model(m, rho)?.zero_force()?,
             )),
             Choice::Contour(m) => Ok(AnyState::Conformal(m.zero_force(rho)?)),
+            Choice::Slender(m) => Ok(AnyState::Slender(m.zero_force(rho)?)),
             Choice::Exact => self.state(rho, Hold::Force(0.0)),
         }
     }
@@ -455,6 +502,13 @@ impl Choice {
                     passed: Passed::from_conformal(&folds),
                 }
             }
+            Choice::Slender(m) if !load => return Err(m.pull_off_displacement()),
+            Choice::Slender(m) => PullOffAnswer {
+                state: AnyState::Slender(m.pull_off_load(rho)?),
+                control,
+                basis: None,
+                passed: Vec::new(),
+            },
             Choice::Exact if !load => {
                 return Err(crate::Error::Unavailable {
                     model: "exact",
@@ -537,6 +591,13 @@ impl Choice {
                     why: "use `thinjkr exact solve` at the loads wanted",
                 })
             }
+            Choice::Slender(m) => {
+                return Err(crate::Error::Unavailable {
+                    model: m.name(),
+                    what: "curve command".into(),
+                    why: "its one curve is universal: F = rho^(1/2) G and delta = rho^(-1/3) D of the centre's half-width (docs/derivation.md, \"The slender limit\"); use `thinjkr solve --model slender` at the approaches wanted",
+                })
+            }
         })
     }
 }
@@ -560,6 +621,12 @@ impl crate::batch::Solves for Choice {
         match self {
             Choice::Ellipse(m) => Ok(AtRho::Ellipse(m.at_rho(rho)?)),
             Choice::Contour(_) | Choice::Exact => Ok(AtRho::Rho(rho)),
+            // a batch row carries ā and s, which a slender contact has not
+            Choice::Slender(m) => Err(crate::Error::Unavailable {
+                model: m.name(),
+                what: "batch rows".into(),
+                why: "a row carries a and s, and a slender contact has no finite length; use `thinjkr solve --model slender` per state",
+            }),
         }
     }
     fn solve(&self, at: &AtRho, given: Hold) -> crate::Result<Self::State> {
@@ -569,7 +636,7 @@ impl crate::batch::Solves for Choice {
             (Choice::Contour(m), AtRho::Rho(rho)) => {
                 crate::batch::Solves::solve(m, rho, given).map(AnyState::Conformal)
             }
-            (Choice::Exact, AtRho::Rho(rho)) => self.state(*rho, given),
+            (Choice::Exact | Choice::Slender(_), AtRho::Rho(rho)) => self.state(*rho, given),
             _ => Err(crate::Error::Usage(
                 "a batch's shared state is of another model".into(),
             )),
@@ -597,6 +664,23 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
                 route: serde_json::to_value(s.route)
                     .ok()
                     .and_then(|v| v.as_str().map(String::from)),
+            },
+            // not reached by a batch (`at_rho` refuses a slender model: a
+            // row carries ā and s, and a slender contact has no length); a
+            // row of one gives b̄ at the centre, ā infinite and s = 0, the
+            // limits of its length and aspect
+            AnyState::Slender(s) => crate::batch::Row {
+                a_bar: f64::INFINITY,
+                b_bar: s.b_bar,
+                s: 0.0,
+                delta_bar: s.delta_bar,
+                force_bar: s.force_bar,
+                xi: None,
+                p0: None,
+                bc_error: 0.0,
+                warning: String::new(),
+                departure: None,
+                route: None,
             },
         }
     }

@@ -9,7 +9,8 @@
 //! JSON Schema of [`Document`] is derived from these types (`thinjkr
 //! schema`, committed as docs/schema.json).
 //!
-//! Owns: [`Document`] and its parts. May use: `contact`, `conformal`,
+//! Owns: [`Document`] and its parts, and the shape of a slender state
+//! ([`SlenderState`]). May use: `contact`, `conformal`,
 //! `exact`, `curve`, `fold`, `units`, `error`, `registry` (the model list).
 
 use crate::conformal::{ConformalState, Extremum};
@@ -37,6 +38,8 @@ pub enum AnyState {
     Conformal(ConformalState),
     /// The exact solution of (2)–(3).
     Exact(Box<ExactState>),
+    /// The slender limit ρ → 0 (`slender`).
+    Slender(SlenderState),
 }
 
 /// A state of a model of the ellipse as JSON: its fields and, where it is
@@ -61,12 +64,15 @@ fn ellipse_with_warnings<S: serde::Serializer>(st: &State, s: S) -> Result<S::Ok
 }
 
 impl AnyState {
-    /// (ā, b̄, δ̄, F̄) of the state, whatever its model.
+    /// (ā, b̄, δ̄, F̄) of the state, whatever its model (a slender state's
+    /// ā is infinite: its contact has no finite length; b̄ is its half-width
+    /// at the centre).
     pub fn size_and_load(&self) -> (f64, f64, f64, f64) {
         match self {
             AnyState::Ellipse(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
             AnyState::Conformal(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
             AnyState::Exact(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
+            AnyState::Slender(st) => (f64::INFINITY, st.b_bar, st.delta_bar, st.force_bar),
         }
     }
 }
@@ -324,4 +330,32 @@ impl Document {
 pub(crate) fn schema() -> String {
     let s = schemars::schema_for!(Document);
     serde_json::to_string_pretty(&s).expect("a schema serialises") + "\n"
+}
+
+/// A state of the slender model.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct SlenderState {
+    /// The model's name.
+    pub model: &'static str,
+    /// ρ = R₂/R₁.
+    pub rho: f64,
+    /// The centre's half-width in the slender units (b̄₀ = ρ^(1/3) β₀).
+    pub beta0: f64,
+    /// The half-width of the contact at its centre, in the units (17).
+    pub b_bar: f64,
+    /// The approach δ̄ = ρ^(−1/3) D(β₀).
+    pub delta_bar: f64,
+    /// The force F̄ = ρ^(1/2) G(β₀).
+    pub force_bar: f64,
+    /// dF̄/dδ̄ along the model's one curve.
+    pub stiffness: f64,
+    /// Stable under load control (dF̄/dδ̄ > 0: the state lies beyond the
+    /// force minimum, on the branch from large loads).
+    pub stable_load: bool,
+    /// Stable under displacement control (always: δ̄ fixes β₀).
+    pub stable_displacement: bool,
+    /// |D(β₀) − ρ^(1/3) δ̄| relative to max(1, |Δ|) at the returned state
+    /// (the residual of the control, checked before the state is returned).
+    pub residual: f64,
 }

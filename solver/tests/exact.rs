@@ -671,58 +671,6 @@ fn the_default_points_per_mode_give_the_state_of_twice_as_many() {
     );
 }
 
-/// The continuation in ρ at a fixed control (the route for ρ where no
-/// start finds the state directly): from the state at F̄ = 10 and ρ = 0.4,
-/// continued to ρ = 0.38, it is the state found there directly from
-/// `conformal:8` (another start, another truncation): ā and s agree to
-/// 1e-9, and both are converged below 1e-9.
-#[test]
-fn continuing_in_rho_at_a_force_gives_the_state_found_there_directly() {
-    use thinjkr::control::Hold;
-    use thinjkr::exact::{at_resolved, continued_in_rho, Route};
-    let control = Hold::Force(10.0);
-    let start = at_resolved(0.4, control).unwrap();
-    let continued = continued_in_rho(&start, 0.38, control).unwrap();
-    let direct = at_resolved(0.38, control).unwrap();
-    assert_eq!(continued.route, Route::ContinuedInRho);
-    assert_eq!(direct.route, Route::FromModel);
-    assert!(continued.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
-    assert!(
-        (continued.a_bar - direct.a_bar).abs() < 1e-9 && (continued.s - direct.s).abs() < 1e-9,
-        "continued a = {}, s = {}; direct a = {}, s = {}",
-        continued.a_bar,
-        continued.s,
-        direct.a_bar,
-        direct.s
-    );
-}
-
-/// The pull-off continued in ρ (the route below the ρ that the starts from
-/// `conformal:8` and from the circle reach): from the pull-off at ρ = 0.4,
-/// continued to ρ = 0.38, it is the pull-off found there directly (another
-/// start): F̄ agrees to 1e-11, s to 1e-9 and ā (where F̄ is stationary) to
-/// 1e-8, both converged below 1e-9 (measured: all three to 2e-13).
-#[test]
-fn continuing_the_pull_off_in_rho_gives_the_pull_off_found_there_directly() {
-    use thinjkr::exact::{pull_off_continued_in_rho, pull_off_resolved, Route};
-    let (start, _) = pull_off_resolved(0.4).unwrap();
-    let (continued, _) = pull_off_continued_in_rho(&start, 0.38).unwrap();
-    let (direct, _) = pull_off_resolved(0.38).unwrap();
-    assert_eq!(continued.route, Route::ContinuedInRho);
-    assert_ne!(direct.route, Route::ContinuedInRho);
-    assert!(continued.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
-    let (df, ds, da) = (
-        (continued.force_bar - direct.force_bar).abs(),
-        (continued.s - direct.s).abs(),
-        (continued.a_bar - direct.a_bar).abs(),
-    );
-    eprintln!("pull-off at rho = 0.38, continued against direct: F {df:e}, s {ds:e}, a {da:e}");
-    assert!(
-        df < 1e-11 && ds < 1e-9 && da < 1e-8,
-        "F {df:e}, s {ds:e}, a {da:e}"
-    );
-}
-
 /// Issue 31, item 2: at ρ = 0.515 the state at F̄ = 10 exists (ā = 3.37182,
 /// s = 0.77552, found independently by `exact solve --all` and by a second
 /// implementation), but every route before the screen misses it (the

@@ -266,6 +266,22 @@ fn stability(st: &State) -> String {
     }
 }
 
+/// A slender state in a line: its centre's half-width instead of a size
+/// (its contact has no finite length), and its stability.
+fn show_slender(label: &str, st: &crate::report::SlenderState) -> crate::Result<()> {
+    outln!(
+        "{label}: model {}, rho = {}, half-width at the centre b = {}, delta = {}, force = {}, dF/ddelta = {} [no finite length: the strip thins as 2/xi^2 along X without end; stable under displacement control, {} under load control]",
+        st.model,
+        output::num(st.rho),
+        output::num(st.b_bar),
+        output::num(st.delta_bar),
+        output::num(st.force_bar),
+        output::num(st.stiffness),
+        if st.stable_load { "stable" } else { "unstable" }
+    );
+    Ok(())
+}
+
 fn show(label: &str, st: &State) -> crate::Result<()> {
     outln!(
         "{label}: model {}, a = {}, s = {}, delta = {}, force = {}, xi = {}, p0 = {}, error (14) = {:.4} %{}{}",
@@ -471,6 +487,7 @@ fn show_states(label: &str, states: &[AnyState], j: bool) -> crate::Result<()> {
             AnyState::Ellipse(st) => show(label, st)?,
             AnyState::Conformal(st) => contour::show(label, st)?,
             AnyState::Exact(st) => exact_command::show_state(label, st)?,
+            AnyState::Slender(st) => show_slender(label, st)?,
         }
     }
     Ok(())
@@ -873,7 +890,7 @@ fn physical(
             crate::error::short(st.cutoff.thinness),
             if st.stable_load { "stable" } else { "unstable" }
         ),
-        AnyState::Ellipse(_) => {}
+        AnyState::Ellipse(_) | AnyState::Slender(_) => {}
     }
     Ok(())
 }
@@ -959,6 +976,11 @@ fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) ->
                 "exact".into(),
                 false,
                 (e.stability.stable_displacement, e.stability.stable_load),
+            ),
+            AnyState::Slender(sl) => (
+                sl.model.to_string(),
+                false,
+                (Some(sl.stable_displacement), Some(sl.stable_load)),
             ),
         };
         outln!(

@@ -61,8 +61,8 @@ use nalgebra::{Complex, DMatrix, DVector};
 #[cfg(feature = "cli")]
 pub(crate) use resolve::ESCALATION;
 pub use resolve::{
-    at_resolved, at_searched, continued_in_rho, default_tries, pull_off_continued_in_rho,
-    pull_off_resolved, pull_off_with, CONVERGED, MAX_USER_MODES,
+    at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
+    MAX_USER_MODES,
 };
 pub(crate) use resolve::{at_resolved_on, next_try, pull_off_resolved_on, resolved, RESOLVED};
 use serde::Serialize;

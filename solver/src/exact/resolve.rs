@@ -261,7 +261,7 @@ pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Ve
 /// before ([`Exact::pull_off_load_near`]) with the truncations escalated
 /// ([`resolved`]). The answer only where it converges; else an error that
 /// says down to which ρ the pull-off was followed, and how it stopped.
-pub fn pull_off_continued_in_rho(
+pub(crate) fn pull_off_continued_in_rho(
     start: &ExactState,
     rho: f64,
 ) -> Result<(ExactState, Vec<branch::Event>)> {
@@ -448,7 +448,7 @@ fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
 /// [`CONVERGED`]. The answer only where it converges; else an error that
 /// says down to which ρ the family was followed converged, and how it
 /// stopped.
-pub fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactState> {
+pub(crate) fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactState> {
     continued_in_rho_along(start, rho, control, &default_tries())
 }
 
@@ -609,6 +609,55 @@ pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Re
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The continuation in ρ at a fixed control (the route for ρ where no
+    /// start finds the state directly): from the state at F̄ = 10 and ρ = 0.4,
+    /// continued to ρ = 0.38, it is the state found there directly from
+    /// `conformal:8` (another start, another truncation): ā and s agree to
+    /// 1e-9, and both are converged below 1e-9.
+    #[test]
+    fn continuing_in_rho_at_a_force_gives_the_state_found_there_directly() {
+        let control = Hold::Force(10.0);
+        let start = at_resolved(0.4, control).unwrap();
+        let continued = continued_in_rho(&start, 0.38, control).unwrap();
+        let direct = at_resolved(0.38, control).unwrap();
+        assert_eq!(continued.route, Route::ContinuedInRho);
+        assert_eq!(direct.route, Route::FromModel);
+        assert!(continued.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
+        assert!(
+            (continued.a_bar - direct.a_bar).abs() < 1e-9 && (continued.s - direct.s).abs() < 1e-9,
+            "continued a = {}, s = {}; direct a = {}, s = {}",
+            continued.a_bar,
+            continued.s,
+            direct.a_bar,
+            direct.s
+        );
+    }
+
+    /// The pull-off continued in ρ (the route below the ρ that the starts from
+    /// `conformal:8` and from the circle reach): from the pull-off at ρ = 0.4,
+    /// continued to ρ = 0.38, it is the pull-off found there directly (another
+    /// start): F̄ agrees to 1e-11, s to 1e-9 and ā (where F̄ is stationary) to
+    /// 1e-8, both converged below 1e-9 (measured: all three to 2e-13).
+    #[test]
+    fn continuing_the_pull_off_in_rho_gives_the_pull_off_found_there_directly() {
+        let (start, _) = pull_off_resolved(0.4).unwrap();
+        let (continued, _) = pull_off_continued_in_rho(&start, 0.38).unwrap();
+        let (direct, _) = pull_off_resolved(0.38).unwrap();
+        assert_eq!(continued.route, Route::ContinuedInRho);
+        assert_ne!(direct.route, Route::ContinuedInRho);
+        assert!(continued.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
+        let (df, ds, da) = (
+            (continued.force_bar - direct.force_bar).abs(),
+            (continued.s - direct.s).abs(),
+            (continued.a_bar - direct.a_bar).abs(),
+        );
+        eprintln!("pull-off at rho = 0.38, continued against direct: F {df:e}, s {ds:e}, a {da:e}");
+        assert!(
+            df < 1e-11 && ds < 1e-9 && da < 1e-8,
+            "F {df:e}, s {ds:e}, a {da:e}"
+        );
+    }
 
     /// The arclength representation against the conformal-map form at
     /// states both resolve (ρ = 0.8 at zero force, the pull-offs at 0.5 and

@@ -8,6 +8,8 @@ pub mod apexes;
 pub mod energy;
 pub mod apex45;
 pub mod conformal;
+pub mod slender;
+pub mod slender_registry;
 pub mod registry;
 /// A generated model, chosen at run time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
