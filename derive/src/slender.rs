@@ -68,8 +68,7 @@ pub fn registry_source(families: &[SlenderFamily]) -> Result<String, String> {
                     name: #name,
                     title: #title,
                     approach: super::#module::approach,
-                    kernel: super::#module::kernel,
-                    nodes: super::#module::NODES,
+                    force: super::#module::force,
                     beta0_max: super::#module::BETA0_MAX,
                 }
             }
@@ -93,8 +92,15 @@ pub fn registry_source(families: &[SlenderFamily]) -> Result<String, String> {
 /// 3.9e8 √ρ, δ̄ up to about 417 ρ^(−1/3).
 pub const BETA0_MAX: f64 = 50.0;
 
+/// The upper ends of the intervals of β₀ that get a quadrature rule each
+/// (the kernel's nearest complex singularity approaches the interval as β₀
+/// grows, so larger β₀ need more nodes).
+const RULE_BOUNDS: [f64; 6] = [2.0, 4.0, 8.0, 16.0, 32.0, BETA0_MAX];
+
 /// The quadrature rules tried, fewest nodes first.
-const NODE_CHOICES: [usize; 9] = [16, 24, 32, 48, 64, 96, 128, 192, 256];
+const NODE_CHOICES: [usize; 15] = [
+    8, 12, 16, 20, 24, 32, 40, 48, 64, 80, 96, 128, 160, 192, 256,
+];
 
 /// The agreement asked of the quadrature against a rule four times finer,
 /// relative to ∫|K| dφ.
@@ -134,8 +140,8 @@ pub struct Slender {
     pub secant: Atom,
     /// K(β₀, c) and ∂K/∂β₀.
     pub kernel: [Atom; 2],
-    /// The quadrature's nodes.
-    pub nodes: usize,
+    /// The quadrature's rules: (largest β₀, nodes), β₀ increasing.
+    pub rules: Vec<(f64, usize)>,
     /// The checks that held.
     pub checks: Vec<Check>,
     /// The universal constants: (β₀, Δ, G) at the force minimum, (β₀, Δ)
@@ -297,33 +303,55 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
             crate::accuracy::TOLERANCE
         ),
     });
-    // the quadrature: the fewest nodes that meet the tolerance
+    // the quadrature: for each interval of β₀, the fewest nodes that meet
+    // the tolerance against a rule four times finer
     let kernel_ir = [Ir::from_atom(&kernel[0])?, Ir::from_atom(&kernel[1])?];
-    let g_of = |beta0: f64, nodes: usize| -> Result<(f64, f64, f64), String> {
-        midpoint(&kernel_ir, beta0, nodes).map(|(g, dg, m, _)| (g, dg, m))
-    };
     let samples = beta0_samples();
-    let mut nodes = None;
-    'rules: for n in NODE_CHOICES {
-        for &b0 in &samples {
-            let (g, dg, _, _) = midpoint(&kernel_ir, b0, n)?;
-            let (g4, dg4, m4, md4) = midpoint(&kernel_ir, b0, 4 * n)?;
-            if (g - g4).abs() > QUADRATURE_TOLERANCE * m4
-                || (dg - dg4).abs() > QUADRATURE_TOLERANCE * md4
-            {
-                continue 'rules;
+    let mut rules: Vec<(f64, usize)> = Vec::new();
+    let mut below = 0.0;
+    for &bound in &RULE_BOUNDS {
+        let mut chosen = None;
+        'rules: for n in NODE_CHOICES {
+            for &b0 in samples.iter().filter(|&&b| b > below && b <= bound) {
+                let (g, dg, _, _) = midpoint(&kernel_ir, b0, n)?;
+                let (g4, dg4, m4, md4) = midpoint(&kernel_ir, b0, 4 * n)?;
+                if (g - g4).abs() > QUADRATURE_TOLERANCE * m4
+                    || (dg - dg4).abs() > QUADRATURE_TOLERANCE * md4
+                {
+                    continue 'rules;
+                }
             }
+            chosen = Some(n);
+            break;
         }
-        nodes = Some(n);
-        break;
+        let n = chosen.ok_or_else(|| {
+            fail(&format!(
+                "no quadrature rule of at most 256 nodes meets 1e-13 for beta0 up to {bound}"
+            ))
+        })?;
+        rules.push((bound, n));
+        below = bound;
     }
-    let nodes = nodes.ok_or_else(|| fail("no quadrature rule of at most 256 nodes meets 1e-13"))?;
+    let nodes_for = |b0: f64| {
+        rules
+            .iter()
+            .find(|(bound, _)| b0 <= *bound)
+            .map(|r| r.1)
+            .unwrap_or(rules[rules.len() - 1].1)
+    };
+    let g_of = |beta0: f64| -> Result<(f64, f64, f64), String> {
+        midpoint(&kernel_ir, beta0, nodes_for(beta0)).map(|(g, dg, m, _)| (g, dg, m))
+    };
     checks.push(Check {
-        what: format!("the quadrature over φ: the midpoint rule with {nodes} nodes"),
+        what: "the quadrature over φ: the midpoint rule".into(),
         detail: format!(
-            "G and dG/dβ₀ agree with the rule of {} nodes within {QUADRATURE_TOLERANCE:e} of ∫|K| dφ at {} values of β₀ from 1e-3 to {BETA0_MAX}",
-            4 * nodes,
-            samples.len()
+            "per interval of β₀ the fewest nodes whose G and dG/dβ₀ agree with a rule four times finer within {QUADRATURE_TOLERANCE:e} of ∫|K| dφ (resp. ∫|∂K/∂β₀| dφ) at {} values of β₀ from 1e-3 to {BETA0_MAX}: {}",
+            samples.len(),
+            rules
+                .iter()
+                .map(|(b, n)| format!("{n} nodes up to β₀ = {b}"))
+                .collect::<Vec<_>>()
+                .join(", ")
         ),
     });
     // second route of the total force: the ξ integral with the cubic
@@ -332,7 +360,7 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
     let g_ir = Ir::from_atom(&strip_force)?;
     let mut worst: f64 = 0.0;
     for &b0 in &[0.05, 0.5, 1.0, 2.0, 2.8, 5.0, 12.0] {
-        let (g, _, m) = g_of(b0, nodes)?;
+        let (g, _, m) = g_of(b0)?;
         let gx = force_by_xi(&d_ir, &dd_ir, &g_ir, b0)?;
         let err = (g - gx).abs() / m;
         worst = worst.max(err);
@@ -349,8 +377,8 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
         ),
     });
     // the universal constants
-    let g_only = |b0: f64| g_of(b0, nodes).map(|x| x.0).unwrap_or(f64::NAN);
-    let dg_only = |b0: f64| g_of(b0, nodes).map(|x| x.1).unwrap_or(f64::NAN);
+    let g_only = |b0: f64| g_of(b0).map(|x| x.0).unwrap_or(f64::NAN);
+    let dg_only = |b0: f64| g_of(b0).map(|x| x.1).unwrap_or(f64::NAN);
     let beta_c = crate::numeric::bisect(dg_only, 1.0, 4.0)?;
     let zero = crate::numeric::bisect(g_only, beta_c, 10.0)?;
     let d_at = |b: f64| eval(&approach, &[("beta", b)]);
@@ -373,7 +401,7 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
         weight,
         secant,
         kernel,
-        nodes,
+        rules,
         checks,
         constants,
     })
@@ -410,6 +438,10 @@ fn beta0_samples() -> Vec<f64> {
         b *= 1.25;
     }
     out.push(BETA0_MAX);
+    // each rule's interval is checked up to its end, where it is worst
+    out.extend(RULE_BOUNDS);
+    out.sort_by(f64::total_cmp);
+    out.dedup();
     out
 }
 
@@ -440,9 +472,14 @@ fn functions_of<'a>(
 fn midpoint(kernel: &[Ir; 2], beta0: f64, nodes: usize) -> Result<(f64, f64, f64, f64), String> {
     let h = std::f64::consts::FRAC_PI_2 / nodes as f64;
     let (mut g, mut dg, mut m, mut md) = (0.0, 0.0, 0.0, 0.0);
-    for k in 0..nodes {
-        let phi = (k as f64 + 0.5) * h;
-        let c = phi.cos().powi(2);
+    // the nodes' cosines by rotation, as the generated `force` computes them
+    let (sh, ch) = h.sin_cos();
+    let (mut sn, mut cs) = (0.5 * h).sin_cos();
+    for _ in 0..nodes {
+        let c = cs * cs;
+        let next = cs * ch - sn * sh;
+        sn = sn * ch + cs * sh;
+        cs = next;
         let vars: BTreeMap<&str, f64> = [("beta0", beta0), ("c", c)].into_iter().collect();
         let v = kernel[0].eval(&vars)?;
         g += v;
@@ -580,17 +617,51 @@ impl Slender {
                 .unwrap_or("");
             items.push(crate::codegen::plain_function(name, doc, params, outs)?);
         }
-        let nodes = proc_macro2::Literal::usize_unsuffixed(self.nodes);
+        let bounds = self
+            .rules
+            .iter()
+            .map(|(b, _)| proc_macro2::Literal::f64_suffixed(*b));
+        let counts = self
+            .rules
+            .iter()
+            .map(|(_, n)| proc_macro2::Literal::usize_unsuffixed(*n));
+        let n_rules = proc_macro2::Literal::usize_unsuffixed(self.rules.len());
         let beta0_max = proc_macro2::Literal::f64_suffixed(BETA0_MAX);
         let file = quote::quote! {
-            /// The nodes of the midpoint rule over φ ∈ [0, π/2] that the generator
-            /// found to meet 1e-13 against a rule four times finer for every β₀ up to
-            /// [`BETA0_MAX`].
-            pub const NODES: usize = #nodes;
+            /// The midpoint rules over φ ∈ [0, π/2]: (largest β₀, nodes), β₀
+            /// increasing; each the fewest nodes the generator found to meet 1e-13
+            /// against a rule four times finer on its interval of β₀.
+            pub const RULES: [(f64, usize); #n_rules] = [#((#bounds, #counts)),*];
             /// The largest β₀ (the centre's half-width in the slender units) the
             /// functions are checked for.
             pub const BETA0_MAX: f64 = #beta0_max;
             #(#items)*
+            /// G(β₀) and dG/dβ₀, the total force in the slender units (F̄ = ρ^(1/2) G):
+            /// [`kernel`] integrated over φ ∈ [0, π/2] by the midpoint rule of
+            /// [`RULES`] for β₀, the cosines of the nodes by rotation.
+            #[allow(clippy::all)]
+            pub fn force(beta0: f64) -> [f64; 2] {
+                let mut n = RULES[RULES.len() - 1].1;
+                for (bound, nodes) in RULES {
+                    if beta0 <= bound {
+                        n = nodes;
+                        break;
+                    }
+                }
+                let h = ::core::f64::consts::FRAC_PI_2 / n as f64;
+                let (sh, ch) = h.sin_cos();
+                let (mut s, mut c) = (0.5 * h).sin_cos();
+                let (mut g, mut dg) = (0.0, 0.0);
+                for _ in 0..n {
+                    let [v, dv] = kernel(beta0, c * c);
+                    g += v;
+                    dg += dv;
+                    let next = c * ch - s * sh;
+                    s = s * ch + c * sh;
+                    c = next;
+                }
+                [g * h, dg * h]
+            }
         };
         let ast: syn::File = syn::parse2(file)
             .map_err(|e| format!("generated slender module does not parse: {e}"))?;

@@ -4,7 +4,8 @@
 //! pull-off, zero force, and a curve of 1 000 points; and, side by side in
 //! one group, the warm sweep of the peer comparison (20 000 solves, δ̄ from
 //! 6 to 0.5, each from the previous) with the generated residuals through
-//! `&dyn Model` and with the hand-written ones.
+//! `&dyn Model` and with the hand-written ones; the slender model's states
+//! through the model layer.
 
 #[path = "peer/handwritten.rs"]
 mod handwritten;
@@ -93,5 +94,26 @@ fn warm_sweep(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(solver_benches, benches, warm_sweep);
+/// The slender model (issue 32: a state within 2 µs) through the model
+/// layer: a state at δ̄, at F̄, and the pull-off.
+fn slender(c: &mut Criterion) {
+    use thinjkr::control::Hold;
+    let m = thinjkr::registry::parse("slender").unwrap();
+    let mut g = c.benchmark_group("slender, rho=0.1");
+    g.bench_function("state at delta", |b| {
+        b.iter(|| m.state(0.1, Hold::Delta(black_box(1.0))).unwrap())
+    });
+    g.bench_function("state at force", |b| {
+        b.iter(|| m.state(0.1, Hold::Force(black_box(1.0))).unwrap())
+    });
+    g.bench_function("pull-off (load control)", |b| {
+        b.iter(|| {
+            m.pull_off(black_box(0.1), thinjkr::fold::FoldCondition::Load)
+                .unwrap()
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(solver_benches, benches, warm_sweep, slender);
 criterion_main!(solver_benches);

@@ -8,8 +8,8 @@
 //! The model has one unknown, the centre's half-width β₀ in the slender
 //! units, and one universal curve for every ρ: δ̄ = ρ^(−1/3) D(β₀),
 //! F̄ = ρ^(1/2) G(β₀), the half-width at the centre b̄₀ = ρ^(1/3) β₀. G is
-//! the generated kernel integrated over φ by the midpoint rule whose nodes
-//! the generator chose. Its contact has no finite length: far out along X
+//! generated: the kernel integrated over φ by the midpoint rules the
+//! generator chose. Its contact has no finite length: far out along X
 //! the strip thins as 2/ξ² but never ends, so a state has no ā, and under
 //! displacement control the strip never lets go (F̄ → 0⁻ as δ̄ → −∞).
 //!
@@ -32,10 +32,9 @@ pub(crate) struct SlenderModel {
     pub title: &'static str,
     /// D(β) and D′(β): a strip's local approach in the slender units.
     pub approach: fn(f64) -> [f64; 2],
-    /// K(β₀, c) and ∂K/∂β₀: the integrand of G over φ, c = cos²φ.
-    pub kernel: fn(f64, f64) -> [f64; 2],
-    /// The midpoint rule's nodes over φ ∈ [0, π/2].
-    pub nodes: usize,
+    /// G(β₀) and dG/dβ₀: the total force in the slender units (the
+    /// generated kernel integrated over φ by the generated rule).
+    pub force: fn(f64) -> [f64; 2],
     /// The largest β₀ the functions are checked for.
     pub beta0_max: f64,
 }
@@ -47,6 +46,69 @@ const BETA0_MIN: f64 = 1e-3;
 /// states are asked through the model layer.
 #[derive(Clone, Copy, Debug)]
 pub struct Slender(&'static SlenderModel);
+
+/// A slender model's ρ-free curve: its force minimum, the ends of its
+/// checked domain, and a table of G along each branch (the starts of
+/// Newton at a force).
+#[derive(Debug)]
+struct Universal {
+    /// β₀ at the minimum of G.
+    beta_c: f64,
+    /// G there.
+    g_min: f64,
+    /// G at the smallest β₀ checked.
+    g_smallest: f64,
+    /// G at the largest β₀ checked.
+    g_max: f64,
+    /// (β₀, G) from β_c to the largest β₀: G increasing.
+    stable: Vec<(f64, f64)>,
+    /// (β₀, −G) from the smallest β₀ to β_c: −G increasing.
+    unstable: Vec<(f64, f64)>,
+}
+
+impl Universal {
+    /// The table's points per branch (spaced evenly in ln β₀).
+    const POINTS: usize = 256;
+
+    fn of(m: Slender) -> Result<Universal> {
+        let beta_c = m.locate_force_minimum()?;
+        let table = |lo: f64, hi: f64, sign: f64| -> Vec<(f64, f64)> {
+            (0..Self::POINTS)
+                .map(|i| {
+                    let t = i as f64 / (Self::POINTS - 1) as f64;
+                    let b = (lo.ln() + t * (hi.ln() - lo.ln())).exp().clamp(lo, hi);
+                    (b, sign * m.force(b).0)
+                })
+                .collect()
+        };
+        Ok(Universal {
+            beta_c,
+            g_min: m.force(beta_c).0,
+            g_smallest: m.force(BETA0_MIN).0,
+            g_max: m.force(m.0.beta0_max).0,
+            stable: table(beta_c, m.0.beta0_max, 1.0),
+            unstable: table(BETA0_MIN, beta_c, -1.0),
+        })
+    }
+
+    /// The table's interval that holds `target` (its values increasing),
+    /// and a start inside it by linear interpolation.
+    fn bracket(table: &[(f64, f64)], target: f64) -> ((f64, f64), Option<f64>) {
+        let k = table
+            .windows(2)
+            .position(|w| target <= w[1].1)
+            .unwrap_or(table.len() - 2);
+        let ((b0, g0), (b1, g1)) = (table[k], table[k + 1]);
+        let t = ((target - g0) / (g1 - g0)).clamp(0.0, 1.0);
+        // the bracket widened by a little, for the round-off of its ends
+        let (first, last) = (table[0].0, table[table.len() - 1].0);
+        let (lo, hi) = (
+            (b0 * (1.0 - 1e-12)).max(first),
+            (b1 * (1.0 + 1e-12)).min(last),
+        );
+        ((lo, hi), Some(b0 + t * (b1 - b0)))
+    }
+}
 
 impl Slender {
     /// Every slender model in the generated registry.
@@ -73,16 +135,8 @@ impl Slender {
 
     /// G(β₀) and dG/dβ₀, the total force in the slender units.
     pub(crate) fn force(&self, beta0: f64) -> (f64, f64) {
-        let n = self.0.nodes;
-        let h = std::f64::consts::FRAC_PI_2 / n as f64;
-        let (mut g, mut dg) = (0.0, 0.0);
-        for k in 0..n {
-            let c = ((k as f64 + 0.5) * h).cos().powi(2);
-            let [v, dv] = (self.0.kernel)(beta0, c);
-            g += v;
-            dg += dv;
-        }
-        (g * h, dg * h)
+        let [g, dg] = (self.0.force)(beta0);
+        (g, dg)
     }
 
     /// β₀ at which `f` (increasing on [lo, hi], its value and slope) meets
@@ -90,10 +144,12 @@ impl Slender {
     fn solve_increasing(
         f: impl Fn(f64) -> (f64, f64),
         target: f64,
-        mut lo: f64,
-        mut hi: f64,
+        (mut lo, mut hi): (f64, f64),
+        start: Option<f64>,
     ) -> Option<f64> {
-        let mut b = 0.5 * (lo + hi);
+        let mut b = start
+            .filter(|b| *b > lo && *b < hi)
+            .unwrap_or(0.5 * (lo + hi));
         for _ in 0..200 {
             let (v, dv) = f(b);
             let r = v - target;
@@ -109,21 +165,45 @@ impl Slender {
                 lo = b;
             }
             let next = b - r / dv;
-            let tol = 1e-15 * b;
-            if (next - b).abs() <= tol || hi - lo <= tol {
+            // a Newton step of at most 1e-8 (relative) inside the bracket
+            // leaves an error of the order of its square: done (the state's
+            // check then holds its residual)
+            let newton = next > lo && next < hi && dv > 0.0;
+            if (newton && (next - b).abs() <= 1e-8 * b) || hi - lo <= 1e-15 * b {
                 return Some(next.clamp(lo, hi));
             }
-            b = if next > lo && next < hi && dv > 0.0 {
-                next
-            } else {
-                0.5 * (lo + hi)
-            };
+            b = if newton { next } else { 0.5 * (lo + hi) };
         }
         None
     }
 
-    /// The force minimum: β₀ where dG/dβ₀ = 0 (ρ-free; found once).
+    /// The model's ρ-free curve, computed once per model and process.
+    fn universal(&self) -> Result<&'static Universal> {
+        static ALL: std::sync::OnceLock<Vec<(&'static str, Result<Universal>)>> =
+            std::sync::OnceLock::new();
+        let all = ALL.get_or_init(|| {
+            Slender::all()
+                .map(|m| (m.name(), Universal::of(m)))
+                .collect()
+        });
+        match all.iter().find(|(n, _)| *n == self.name()) {
+            Some((_, Ok(u))) => Ok(u),
+            Some((_, Err(e))) => Err(e.clone()),
+            None => Err(Error::Usage(format!(
+                "{} is not in the slender registry",
+                self.name()
+            ))),
+        }
+    }
+
+    /// The force minimum: β₀ where dG/dβ₀ = 0.
     fn force_minimum(&self) -> Result<f64> {
+        self.universal().map(|u| u.beta_c)
+    }
+
+    /// [`Slender::force_minimum`], located: bisection with secant steps on
+    /// dG/dβ₀.
+    fn locate_force_minimum(&self) -> Result<f64> {
         // dG/dβ₀ < 0 at β₀ = 1 and > 0 at 4 (the derivation's table has
         // the minimum at 2.134); bisection with secant steps
         let dg = |b: f64| self.force(b).1;
@@ -244,16 +324,15 @@ impl Slender {
             let [d, slope] = (self.0.approach)(b);
             (d, slope)
         };
-        let b = Self::solve_increasing(approach, target, BETA0_MIN, self.0.beta0_max).ok_or_else(
-            || {
+        let b = Self::solve_increasing(approach, target, (BETA0_MIN, self.0.beta0_max), None)
+            .ok_or_else(|| {
                 Error::NoState(format!(
                     "{}: no strip width found at delta = {} (rho = {})",
                     self.name(),
                     short(delta_bar),
                     short(rho)
                 ))
-            },
-        )?;
+            })?;
         self.state(rho, b, Some(delta_bar))
     }
 
@@ -262,10 +341,9 @@ impl Slender {
     /// the checked domain, β₀ ≥ 1e-3: F̄ below about −4.7e-5 ρ^(1/2)).
     pub(crate) fn at_load_all(&self, rho: f64, force_bar: f64) -> Result<Vec<SlenderState>> {
         let rho = Self::check_rho(rho)?;
-        let bc = self.force_minimum()?;
+        let u = self.universal()?;
         let target = force_bar / rho.sqrt();
-        let g_min = self.force(bc).0;
-        let g_max = self.force(self.0.beta0_max).0;
+        let (g_min, g_max) = (u.g_min, u.g_max);
         if !force_bar.is_finite() || target < g_min {
             return Err(Error::OutOfRange {
                 name: "force",
@@ -293,7 +371,8 @@ impl Slender {
         }
         let g = |b: f64| self.force(b);
         let mut out = Vec::new();
-        let stable = Self::solve_increasing(g, target, bc, self.0.beta0_max);
+        let (bracket, start) = Universal::bracket(&u.stable, target);
+        let stable = Self::solve_increasing(g, target, bracket, start);
         let fail = || {
             Error::NoState(format!(
                 "{}: no state found at force = {} (rho = {})",
@@ -309,12 +388,13 @@ impl Slender {
         // the branch before the minimum: G falls from 0⁻ (β₀ → 0) to the
         // minimum, so a tensile force has a second state there (inside the
         // checked domain β₀ ≥ 1e-3 when F̄ < G(1e-3) ρ^(1/2) ≈ −4.7e-5 ρ^(1/2))
-        if target < self.force(BETA0_MIN).0 {
+        if target < u.g_smallest {
             let minus = |b: f64| {
                 let (v, dv) = self.force(b);
                 (-v, -dv)
             };
-            let b = Self::solve_increasing(minus, -target, BETA0_MIN, bc).ok_or_else(fail)?;
+            let (bracket, start) = Universal::bracket(&u.unstable, -target);
+            let b = Self::solve_increasing(minus, -target, bracket, start).ok_or_else(fail)?;
             let st = self.state(rho, b, None)?;
             Self::check_force(&st, force_bar)?;
             out.push(st);

@@ -3,10 +3,17 @@
 //! The slender model `slender`: slender limit rho -> 0: every cross-section a strip of the one-dimensional (2)-(3) at the local approach.
 //! Derived and checked by `thinjkr_derive::slender` (docs/derivation.md, "The slender limit").
 
-/// The nodes of the midpoint rule over φ ∈ [0, π/2] that the generator
-/// found to meet 1e-13 against a rule four times finer for every β₀ up to
-/// [`BETA0_MAX`].
-pub const NODES: usize = 128;
+/// The midpoint rules over φ ∈ [0, π/2]: (largest β₀, nodes), β₀
+/// increasing; each the fewest nodes the generator found to meet 1e-13
+/// against a rule four times finer on its interval of β₀.
+pub const RULES: [(f64, usize); 6] = [
+    (2f64, 12),
+    (4f64, 24),
+    (8f64, 48),
+    (16f64, 96),
+    (32f64, 128),
+    (50f64, 128),
+];
 /// The largest β₀ (the centre's half-width in the slender units) the
 /// functions are checked for.
 pub const BETA0_MAX: f64 = 50f64;
@@ -52,4 +59,30 @@ pub fn kernel(beta0: f64, c: f64) -> [f64; 2] {
                 - (5.0 * t0 * t7 * t2 * t5) + (t0 * t8 * c.powi(8))
                 + (t0 * t8 * c.powi(9))) / ((t5.sqrt() * t5))),
     ]
+}
+/// G(β₀) and dG/dβ₀, the total force in the slender units (F̄ = ρ^(1/2) G):
+/// [`kernel`] integrated over φ ∈ [0, π/2] by the midpoint rule of
+/// [`RULES`] for β₀, the cosines of the nodes by rotation.
+#[allow(clippy::all)]
+pub fn force(beta0: f64) -> [f64; 2] {
+    let mut n = RULES[RULES.len() - 1].1;
+    for (bound, nodes) in RULES {
+        if beta0 <= bound {
+            n = nodes;
+            break;
+        }
+    }
+    let h = ::core::f64::consts::FRAC_PI_2 / n as f64;
+    let (sh, ch) = h.sin_cos();
+    let (mut s, mut c) = (0.5 * h).sin_cos();
+    let (mut g, mut dg) = (0.0, 0.0);
+    for _ in 0..n {
+        let [v, dv] = kernel(beta0, c * c);
+        g += v;
+        dg += dv;
+        let next = c * ch - s * sh;
+        s = s * ch + c * sh;
+        c = next;
+    }
+    [g * h, dg * h]
 }

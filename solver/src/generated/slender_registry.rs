@@ -9,8 +9,7 @@ pub(crate) static SLENDER_MODELS: [crate::slender::SlenderModel; 1] = [
         name: "slender",
         title: "slender limit rho -> 0: every cross-section a strip of the one-dimensional (2)-(3) at the local approach",
         approach: super::slender::approach,
-        kernel: super::slender::kernel,
-        nodes: super::slender::NODES,
+        force: super::slender::force,
         beta0_max: super::slender::BETA0_MAX,
     },
 ];
