@@ -11,7 +11,7 @@
 //! Owns: figure data and rendering. May use: `accuracy`, `fold`, `contact`, `curve`, `limits`,
 //! `exact`, `generated` (the paper's model `max`, whose figures these are),
 //! `model` (every ellipse model beside it), `conformal` (its arms and
-//! convergence), `error`.
+//! convergence), `slender` (its pull-off beside the models'), `error`.
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
@@ -823,6 +823,20 @@ fn model_pull_offs(m: ModelId, xs: &[(f64, f64)], x_name: &str, color: RGBColor)
     solid(&label, pts, color)
 }
 
+/// Each slender model's load-controlled pull-off F̄ = G_min ρ^(1/2) at the
+/// points (x, ρ) of `xs`, dashed (the limit ρ → 0, not an ellipse model).
+fn slender_pull_offs(xs: &[(f64, f64)]) -> Vec<Series> {
+    crate::slender::Slender::all()
+        .map(|m| {
+            let pts = xs
+                .iter()
+                .filter_map(|&(x, rho)| m.pull_off_load(rho).map(|p| (x, p.force_bar)).ok())
+                .collect();
+            dashed(&format!("{} (the limit ρ → 0)", m.name()), pts, MAGENTA)
+        })
+        .collect()
+}
+
 fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> {
     use crate::exact::{Exact, ExactState, Truncation};
     let po = &reference.pull_off;
@@ -842,10 +856,11 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         po.iter().map(|e| (e.rho, e.force_bar)).collect(),
         BLACK,
     )];
+    let xs: Vec<(f64, f64)> = grid(lowest, 1.0, 31).map(|rho| (rho, rho)).collect();
     for (m, &c) in ModelId::ALL.iter().zip(&colors) {
-        let xs: Vec<(f64, f64)> = grid(lowest, 1.0, 31).map(|rho| (rho, rho)).collect();
         series.push(model_pull_offs(*m, &xs, "ρ", c));
     }
+    series.extend(slender_pull_offs(&xs));
     out.push(Figure {
         file: "exact_pull_off.svg",
         title: "Load-controlled pull-off: the exact solution and the models".into(),
@@ -864,12 +879,13 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         po.iter().map(|e| (theta_of(e.rho), e.force_bar)).collect(),
         BLACK,
     )];
+    let xs: Vec<(f64, f64)> = grid(16.0, 90.0, 75)
+        .map(|th| (th, (th.to_radians() / 2.0).tan().powi(2).min(1.0)))
+        .collect();
     for (m, &c) in ModelId::ALL.iter().zip(&colors) {
-        let xs: Vec<(f64, f64)> = grid(16.0, 90.0, 75)
-            .map(|th| (th, (th.to_radians() / 2.0).tan().powi(2).min(1.0)))
-            .collect();
         series.push(model_pull_offs(*m, &xs, "θ", c));
     }
+    series.extend(slender_pull_offs(&xs));
     out.push(Figure {
         file: "exact_crossing_angle.svg",
         title: format!(
