@@ -29,6 +29,16 @@ use thinjkr::registry::parse;
 use thinjkr::report::AnyState;
 use thinjkr::Error;
 
+/// The sweep's controls: δ̄ = 0.5 and 2, F̄ = −1, 0 and 10, ā = 3.
+const CONTROLS: [Hold; 6] = [
+    Hold::Delta(0.5),
+    Hold::Delta(2.0),
+    Hold::Force(-1.0),
+    Hold::Force(0.0),
+    Hold::Force(10.0),
+    Hold::Size(3.0),
+];
+
 /// The sweep's ρ: `n` values from 0.02 to 1, equally spaced in ln ρ.
 fn rho_grid(n: usize) -> Vec<f64> {
     let (lo, hi) = (0.02f64.ln(), 0.0f64);
@@ -40,14 +50,7 @@ fn rho_grid(n: usize) -> Vec<f64> {
 #[test]
 fn the_models_of_the_ellipse_answer_continuously_in_rho_or_report_why() {
     let rho = rho_grid(240);
-    let controls = [
-        Hold::Delta(0.5),
-        Hold::Delta(2.0),
-        Hold::Force(-1.0),
-        Hold::Force(0.0),
-        Hold::Force(10.0),
-        Hold::Size(3.0),
-    ];
+    let controls = CONTROLS;
     let mut report = Vec::new();
     for name in ["max", "apexes", "energy", "apex45"] {
         let model = parse(name).unwrap();
@@ -140,14 +143,7 @@ fn the_slender_model_answers_continuously_in_rho_or_report_why() {
     let rho = rho_grid(240);
     let model = parse("slender").unwrap();
     let mut report = Vec::new();
-    for hold in [
-        Hold::Delta(0.5),
-        Hold::Delta(2.0),
-        Hold::Force(-1.0),
-        Hold::Force(0.0),
-        Hold::Force(10.0),
-        Hold::Size(3.0),
-    ] {
+    for hold in CONTROLS {
         let mut answers: Vec<Option<f64>> = Vec::new();
         for &r in &rho {
             match model.state(r, hold) {
