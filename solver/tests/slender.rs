@@ -160,3 +160,43 @@ fn what_a_slender_contact_lacks_is_refused_with_the_reason() {
         .iter()
         .any(|e| e.name == "slender"));
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// The scaling laws and the round trip, for random ρ and approach:
+    /// the state at δ̄ and the state at ρ' with δ̄' = δ̄ (ρ/ρ')^(1/3) have
+    /// the same β₀, their forces in the ratio (ρ'/ρ)^(1/2); and the stable
+    /// state at that force (the one on the approach's side of the force
+    /// minimum) has the approach back.
+    #[test]
+    fn the_scaling_laws_and_the_round_trip_hold(
+        rho in 0.02f64..1.0,
+        rho2 in 0.02f64..1.0,
+        scaled in -2.0f64..40.0,
+    ) {
+        let m = slender();
+        let delta = scaled / rho.cbrt();
+        let a = state(m.state(rho, Hold::Delta(delta)).unwrap());
+        let b = state(m.state(rho2, Hold::Delta(scaled / rho2.cbrt())).unwrap());
+        proptest::prop_assert!((a.beta0 - b.beta0).abs() <= 1e-12 * a.beta0);
+        let ratio = (b.force_bar / a.force_bar) / (rho2 / rho).sqrt();
+        proptest::prop_assert!(
+            (ratio - 1.0).abs() <= 1e-9 || a.force_bar.abs() < 1e-9,
+            "force ratio {ratio}"
+        );
+        let back = m
+            .states(rho, Hold::Force(a.force_bar))
+            .unwrap()
+            .into_iter()
+            .map(state)
+            .find(|s| s.stable_load == a.stable_load)
+            .unwrap();
+        proptest::prop_assert!(
+            (back.delta_bar - delta).abs() <= 1e-8 * delta.abs().max(1.0),
+            "delta {delta} -> force {} -> delta {}",
+            a.force_bar,
+            back.delta_bar
+        );
+    }
+}
