@@ -125,6 +125,35 @@ pub enum Passed {
         /// The contour mode n that dominates its null direction.
         mode: Option<usize>,
     },
+    /// The unloading path to an exact pull-off (`exact pull-off
+    /// --unloading`): the family traced from its state at F̄ = `from_force`
+    /// towards smaller ā to its first minimum of F̄. `None` where the path
+    /// is not settled (`why_not_settled` says why).
+    Unloading {
+        /// The load the path starts from.
+        from_force: f64,
+        /// Whether its first force minimum is this pull-off.
+        reaches: Option<bool>,
+        /// F̄ at its first force minimum.
+        first_minimum_force: Option<f64>,
+        /// ā there.
+        first_minimum_a_bar: Option<f64>,
+        /// The largest h/L below which a traced state is unstable under
+        /// load control above the short-wave cutoff (the longest unstable
+        /// contour mode's wavelength over 2π); `None` when no contour mode
+        /// is unstable on the way.
+        critical_thinness: Option<f64>,
+        /// That mode's n.
+        critical_mode: Option<usize>,
+        /// The thinness h/L the path is judged with.
+        cutoff_thinness: f64,
+        /// Whether every traced state is stable under load control above
+        /// the cutoff (h/L above the critical thinness and the size stable).
+        stable_above_cutoff: Option<bool>,
+        /// Why the path is not settled, in words.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        why_not_settled: Option<String>,
+    },
 }
 
 impl Passed {

@@ -729,3 +729,43 @@ fn the_pull_off_at_rho_0_2_is_resolved_in_the_arclength_representation() {
         assert!((d_inward + 1.0).abs() < 1e-4, "dp/dnu = {}", -d_inward);
     }
 }
+
+/// Issue 32 (b): `exact pull-off --unloading` traces the family from F̄ = 10
+/// to its first force minimum. At ρ = 0.8 that minimum is the pull-off, and
+/// the states on the way are unstable above the cutoff below h/L = 0.434
+/// (mode 6; the probe `unloading_probe` gives the same); the verdict at
+/// h/L = 0.1 is unstable and at 0.5 stable.
+#[cfg(feature = "cli")]
+#[test]
+fn the_unloading_path_reaches_the_pull_off_at_rho_0_8() {
+    let run = |thinness: &str| -> serde_json::Value {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+            .args(["exact", "pull-off", "--rho", "0.8", "--unloading", "--json"])
+            .args(["--thinness", thinness])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        doc["passed"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|p| p["kind"] == "unloading")
+            .cloned()
+            .expect("an unloading entry")
+    };
+    let thin = run("0.1");
+    assert_eq!(thin["reaches"], true);
+    assert!((thin["first_minimum_force"].as_f64().unwrap() + 4.197605).abs() < 1e-6);
+    assert!(
+        (thin["critical_thinness"].as_f64().unwrap() - 0.434).abs() < 1e-3,
+        "{thin}"
+    );
+    assert_eq!(thin["critical_mode"], 6);
+    assert_eq!(thin["stable_above_cutoff"], false);
+    assert_eq!(run("0.5")["stable_above_cutoff"], true);
+}

@@ -104,6 +104,11 @@ pub(crate) enum ExactCommand {
         rho: f64,
         #[command(flatten)]
         discretisation: Discretisation,
+        /// Also trace the unloading path: the family from its state at F̄ = 10 towards smaller ā to its first
+        /// minimum of F̄, whether that is this pull-off, and the thinness h/L below which a state on the way is
+        /// unstable above the short-wave cutoff (seconds at ρ ≥ 0.8, more below).
+        #[arg(long)]
+        unloading: bool,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -194,8 +199,9 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
         ExactCommand::PullOff {
             rho,
             discretisation,
+            unloading,
             json,
-        } => pull_off(rho, &discretisation, json),
+        } => pull_off(rho, &discretisation, unloading, json),
         ExactCommand::Solve {
             rho,
             delta,
@@ -479,7 +485,51 @@ fn mode_list(ns: &[usize]) -> String {
 }
 
 /// The exact load-controlled pull-off and every model's.
-pub(crate) fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
+/// The unloading path in words.
+fn unloading_words(p: &Passed) -> String {
+    let Passed::Unloading {
+        from_force,
+        reaches,
+        first_minimum_force,
+        first_minimum_a_bar,
+        critical_thinness,
+        critical_mode,
+        cutoff_thinness,
+        stable_above_cutoff,
+        why_not_settled,
+    } = p
+    else {
+        return String::new();
+    };
+    let (Some(reaches), Some(f), Some(a)) = (reaches, first_minimum_force, first_minimum_a_bar)
+    else {
+        return format!(
+            "not settled: {}",
+            why_not_settled.as_deref().unwrap_or("no reason given")
+        );
+    };
+    let first = if *reaches {
+        format!("from F = {from_force} its first force minimum is this pull-off")
+    } else {
+        format!(
+            "from F = {from_force} its first force minimum is another state, F = {}, a = {} (this pull-off lies on another piece)",
+            crate::error::short(*f),
+            crate::error::short(*a)
+        )
+    };
+    let stability = match (critical_thinness, critical_mode, stable_above_cutoff) {
+        (Some(h), Some(n), Some(stable)) => format!(
+            "; on the way a state is unstable under load control above the cutoff for h/L below {h:.3} (mode n = {n}): at h/L = {} the path is {}",
+            crate::error::short(*cutoff_thinness),
+            if *stable { "stable" } else { "unstable (the contact changes shape before it gets there)" }
+        ),
+        (_, _, Some(true)) => "; every state on the way is stable under load control".into(),
+        _ => "; the size is unstable under load control on the way".into(),
+    };
+    format!("{first}{stability}")
+}
+
+pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool) -> Result<()> {
     let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
     let (po, events) = match (d.modes, d.points) {
         // the default escalation, and the continuation in rho from a larger
@@ -488,6 +538,10 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
         _ => crate::exact::pull_off_with(rho, &d.tries()?),
     }?;
     let po = d.judged(po)?;
+    let mut passed = Passed::from_exact(&events);
+    if unloading {
+        passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?));
+    }
     let models: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {
@@ -503,7 +557,7 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
             state: AnyState::Exact(Box::new(po)),
             control: crate::fold::FoldCondition::Load,
             basis: None,
-            passed: Passed::from_exact(&events),
+            passed,
             models: models
                 .iter()
                 .map(|(m, r)| ModelAnswer::new(m.name(), &r.clone().map(|p| p.state)))
@@ -523,6 +577,19 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, json: bool) -> Result<()> {
     for e in &events {
         if let Some(words) = e.describe() {
             outln!("  on the way: {words}")
+        }
+    }
+    outln!(
+        "  which pull-off: the first minimum of F on the near-elliptic arm traced towards smaller a from its start (docs/exact.md, \"Which family\"); {}",
+        if unloading {
+            "the unloading path from F = 10:"
+        } else {
+            "--unloading says whether the unloading path from F = 10 reaches it"
+        }
+    );
+    for p in &passed {
+        if let Passed::Unloading { .. } = p {
+            outln!("    {}", unloading_words(p));
         }
     }
     for (m, r) in &models {

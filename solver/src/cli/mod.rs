@@ -503,7 +503,7 @@ fn pull_off_command(
     if let (ModelChoice::Exact, FoldCondition::Load) = (model, condition) {
         // the exact pull-off's report also solves the ellipse models' and
         // prints each one's distance from it
-        return exact_command::pull_off(rho, &exact_command::Discretisation::default(), j);
+        return exact_command::pull_off(rho, &exact_command::Discretisation::default(), false, j);
     }
     let p = model.pull_off(rho, condition)?;
     if j {

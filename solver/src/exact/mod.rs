@@ -50,6 +50,7 @@ pub(crate) mod linear;
 mod resolve;
 pub(crate) mod seed;
 pub mod stability;
+pub(crate) mod unloading;
 
 use crate::control::Hold;
 use crate::error::{Error, Result};

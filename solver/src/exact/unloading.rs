@@ -1,0 +1,146 @@
+//! The unloading path to a pull-off (issue 32, milestone (b)): the exact
+//! family traced from its state at F̄ = 10 towards smaller ā up to its
+//! first minimum of F̄, and whether that minimum is the given pull-off;
+//! on the way, the longest contour mode unstable under load control at
+//! every traced point, whose wavelength over 2π is the thinness h/L below
+//! which the path is unstable above the short-wave cutoff (a contact that
+//! thin changes shape before it reaches the minimum).
+//!
+//! Owns: [`unloading`]. May use: `resolve` (the start), `branch` (the
+//! trace), `stability`, `control`, `cutoff`, `report` (the outcome's
+//! shape).
+
+// asked by the command line (`exact pull-off --unloading`)
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
+
+use super::{Exact, ExactState};
+use crate::control::Hold;
+use crate::cutoff::Cutoff;
+use crate::report::Passed;
+
+/// The load the unloading starts from (a large load, F̄ = 10, where every
+/// table of docs/accuracy.md has a row).
+const START_FORCE: f64 = 10.0;
+
+/// The largest boundary error of a traced point that still counts as a
+/// state of the problem (a trace that leaves it leaves the family it can
+/// resolve: the path is then not settled).
+const TRACED: f64 = 1e-6;
+
+/// The unloading path from F̄ = 10 to the first minimum of F̄ at
+/// `pull_off.rho`, judged with `cutoff`'s thinness: an entry of the
+/// pull-off's `passed` list.
+pub(crate) fn unloading(pull_off: &ExactState, cutoff: Cutoff) -> Passed {
+    match path(pull_off) {
+        Ok(p) => p.judged(cutoff),
+        Err(why) => Passed::Unloading {
+            from_force: START_FORCE,
+            reaches: None,
+            first_minimum_force: None,
+            first_minimum_a_bar: None,
+            critical_thinness: None,
+            critical_mode: None,
+            cutoff_thinness: cutoff.thinness,
+            stable_above_cutoff: None,
+            why_not_settled: Some(why),
+        },
+    }
+}
+
+/// What the trace found.
+struct Path {
+    minimum: ExactState,
+    reaches: bool,
+    /// (h/L, mode n) of the longest unstable contour mode on the way.
+    critical: (f64, usize),
+    /// Whether the size itself (n = 0) is unstable under load somewhere on
+    /// the way (then the path is unstable at any thinness).
+    size_unstable: bool,
+}
+
+impl Path {
+    fn judged(self, cutoff: Cutoff) -> Passed {
+        let (h, n) = self.critical;
+        Passed::Unloading {
+            from_force: START_FORCE,
+            reaches: Some(self.reaches),
+            first_minimum_force: Some(self.minimum.force_bar),
+            first_minimum_a_bar: Some(self.minimum.a_bar),
+            critical_thinness: (n > 0).then_some(h),
+            critical_mode: (n > 0).then_some(n),
+            cutoff_thinness: cutoff.thinness,
+            stable_above_cutoff: Some(!self.size_unstable && cutoff.thinness > h),
+            why_not_settled: None,
+        }
+    }
+}
+
+/// The trace from F̄ = 10 to the first minimum, or why it is not settled
+/// (in words, for the report).
+fn path(pull_off: &ExactState) -> std::result::Result<Path, String> {
+    let rho = pull_off.rho;
+    let start = super::at_resolved(rho, Hold::Force(START_FORCE))
+        .map_err(|e| format!("no resolved exact state at force = {START_FORCE}: {e}"))?;
+    let ex = Exact::new(rho, start.truncation).map_err(|e| e.to_string())?;
+    let branch = ex
+        .trace(&start, 0.8, 0.05, 600)
+        .map_err(|e| format!("the trace from force = {START_FORCE} failed: {e}"))?;
+    let mut critical = (0.0f64, 0usize);
+    let mut size_unstable = false;
+    let points = &branch.points;
+    for (i, p) in points.iter().enumerate() {
+        let st = &p.state;
+        if st.bc_error > TRACED {
+            return Err(format!(
+                "the trace from force = {START_FORCE} leaves the states its {} modes resolve at a = {:.4} (boundary error {:.1e}) before a minimum of the force",
+                start.truncation.modes, st.a_bar, st.bc_error
+            ));
+        }
+        if i > 0 && st.force_bar > points[i - 1].state.force_bar {
+            // the force rises: the minimum lies between the last two points
+            let minimum = first_minimum(&branch, &points[i - 1].state);
+            let reaches = (minimum.force_bar - pull_off.force_bar).abs()
+                <= 1e-6 * pull_off.force_bar.abs()
+                && (minimum.a_bar - pull_off.a_bar).abs() <= 1e-3 * pull_off.a_bar;
+            return Ok(Path {
+                minimum,
+                reaches,
+                critical,
+                size_unstable,
+            });
+        }
+        // a traced point past the minimum (the force rising along the
+        // trace there; the trace can step over the minimum before the
+        // force it prints rises) is not on the way to it
+        if p.d_force >= 0.0 {
+            continue;
+        }
+        let stab = ex.stability(st).map_err(|e| e.to_string())?;
+        for m in &stab.load {
+            if m.n == 0 {
+                size_unstable = true;
+            } else if m.wavelength / (2.0 * std::f64::consts::PI) > critical.0 {
+                critical = (m.wavelength / (2.0 * std::f64::consts::PI), m.n);
+            }
+        }
+    }
+    Err(format!(
+        "the trace from force = {START_FORCE} meets no minimum of the force within its {} points",
+        points.len()
+    ))
+}
+
+/// The trace's first located force minimum, or the traced point before the
+/// force rose where none was located.
+fn first_minimum(branch: &super::branch::Branch, before: &ExactState) -> ExactState {
+    branch
+        .events
+        .iter()
+        .find_map(|e| match e {
+            super::branch::Event::ForceMinimum { state } if state.bc_error <= TRACED => {
+                Some((**state).clone())
+            }
+            _ => None,
+        })
+        .unwrap_or_else(|| before.clone())
+}
