@@ -384,7 +384,9 @@ pub struct SlenderState {
     pub stable_load: bool,
     /// Stable under displacement control (always: δ̄ fixes β₀).
     pub stable_displacement: bool,
-    /// |D(β₀) − ρ^(1/3) δ̄| relative to max(1, |Δ|) at the returned state
-    /// (the residual of the control, checked before the state is returned).
+    /// How far the state is from what it claims, checked before it is
+    /// returned: at a δ̄, |D(β₀) − ρ^(1/3) δ̄| over max(1, |D|); at an F̄,
+    /// |F̄(β₀) − F̄| over max(|F̄|, ρ^(1/2)); at the pull-off, |dG/dβ₀| over
+    /// max(1, |G|).
     pub residual: f64,
 }
