@@ -148,10 +148,11 @@ impl Exact {
             }
         }
         let d_mu_red = lu.solve(&rhs)?;
-        let d_mu_all = DMatrix::<f64>::from_fn(n, nu, |j, l| d_mu_red[(orbit[j], l)]);
-        let dd_mu_all = &grid.d1 * &d_mu_all; // δμ′
-        let ddd_mu_all = &grid.d1 * &dd_mu_all; // δμ″
-                                                // δψ_j = (δμ′_j − ψ_j δz′_j)/z′_j
+        // δμ′ at every point and δμ″ at the representatives
+        let (d1p, d2r) = grid.orbit_derivatives();
+        let dd_mu_all = d1p * &d_mu_red;
+        let ddd_mu_rep = d2r * &d_mu_red;
+        // δψ_j = (δμ′_j − ψ_j δz′_j)/z′_j
         let d_psi_all = DMatrix::<C>::from_fn(n, nu, |j, l| {
             (dd_mu_all[(j, l)] - psi[j] * ddz_of(j, l)) / s.dz[j]
         });
@@ -171,7 +172,7 @@ impl Exact {
             let nu_i = nu_of(i);
             for l in 0..nu {
                 let (dz1, dz2, dz3) = (dz_of(i, l), ddz_of(i, l), dddz_of(i, l));
-                let d_d_psi = (dz2 * dd_mu[i] + dz * ddd_mu_all[(i, l)]
+                let d_d_psi = (dz2 * dd_mu[i] + dz * ddd_mu_rep[(r, l)]
                     - dz3 * d_mu[i]
                     - s.ddz[i] * dd_mu_all[(i, l)])
                     / (dz * dz)

@@ -497,8 +497,10 @@ pub struct Exact {
     truncation: Truncation,
     grid: Grid,
     fine: Grid,
-    /// cos 2kθ_i on the grid, k = 0..N: the imposed modes of ∂p̄/∂ν − 1.
-    cos_modes: Vec<Vec<f64>>,
+    /// cos 2kθ_i on the grid (row k = 0..N, column i), divided by the
+    /// number of points: the imposed modes of ∂p̄/∂ν − 1 as the mean of
+    /// their product with it.
+    cos_modes: DMatrix<f64>,
     /// Whether [`Exact::state`] computes the stability of the states it
     /// returns (not while [`resolved`] escalates the truncation).
     with_stability: bool,
@@ -560,14 +562,9 @@ impl Exact {
             });
         }
         let grid = Grid::with_basis(truncation.points, truncation.modes, truncation.arclength);
-        let cos_modes = (0..=truncation.modes)
-            .map(|k| {
-                grid.theta
-                    .iter()
-                    .map(|&t| (2.0 * k as f64 * t).cos())
-                    .collect()
-            })
-            .collect();
+        let cos_modes = DMatrix::from_fn(truncation.modes + 1, grid.len(), |k, i| {
+            (2.0 * k as f64 * grid.theta[i]).cos() / grid.len() as f64
+        });
         Ok(Exact {
             rho,
             gap_source: gap,
@@ -635,16 +632,10 @@ impl Exact {
     /// of |z′(θ)|² (mean over the grid), zero when θ is proportional to
     /// arclength; empty for the conformal-map form.
     fn gauge_rows(&self, dz: &[Complex<f64>]) -> Vec<f64> {
-        let n = self.grid.len() as f64;
-        (1..=self.truncation.arclength)
-            .map(|k| {
-                self.cos_modes[k]
-                    .iter()
-                    .zip(dz)
-                    .map(|(c, d)| c * d.norm_sqr())
-                    .sum::<f64>()
-                    / n
-            })
+        let speed2 = DVector::from_iterator(dz.len(), dz.iter().map(|d| d.norm_sqr()));
+        (self.cos_modes.rows(1, self.truncation.arclength) * speed2)
+            .iter()
+            .copied()
             .collect()
     }
 
@@ -658,39 +649,20 @@ impl Exact {
             return jac;
         }
         let s = self.contour_of(u).samples(&self.grid);
-        let n = self.grid.len() as f64;
         let i_unit = Complex::new(0.0, 1.0);
-        for l in 0..nu - 1 {
+        let d = DMatrix::from_fn(self.grid.len(), nu - 1, |i, l| {
             let m = self.grid.multipliers[l];
-            let d: Vec<f64> = (0..self.grid.len())
-                .map(|i| 2.0 * (s.dz[i].conj() * i_unit * m * self.grid.basis[l][i]).re)
-                .collect();
-            for k in 1..=np {
-                jac[(k - 1, l)] = self.cos_modes[k]
-                    .iter()
-                    .zip(&d)
-                    .map(|(c, v)| c * v)
-                    .sum::<f64>()
-                    / n;
-            }
-        }
+            2.0 * (s.dz[i].conj() * i_unit * m * self.grid.basis[l][i]).re
+        });
+        jac.columns_mut(0, nu - 1)
+            .copy_from(&(self.cos_modes.rows(1, np) * d));
         jac
     }
 
     /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 from ∂p̄/∂ν at the grid
     /// points `dn`: the equations' residuals besides the held quantity.
     pub(crate) fn cos_modes_of(&self, dn: &[f64]) -> DVector<f64> {
-        let n = self.grid.len() as f64;
-        DVector::from_iterator(
-            self.cos_modes.len(),
-            self.cos_modes.iter().map(|cos_k| {
-                let mut m = 0.0;
-                for (c, dn) in cos_k.iter().zip(dn) {
-                    m += (dn - 1.0) * c;
-                }
-                m / n
-            }),
-        )
+        &self.cos_modes * DVector::from_iterator(dn.len(), dn.iter().map(|v| v - 1.0))
     }
 
     /// The family's equations (ā free) from ∂p̄/∂ν at the grid points `dn`
@@ -708,15 +680,8 @@ impl Exact {
     /// ∂/∂u of the cosine modes k = 0..N of ∂p̄/∂ν − 1 (as [`Exact::modes`]
     /// computes them) from the linearisation: (N + 1) × (N + 2).
     pub(crate) fn mode_jacobian(&self, lin: &linear::Linear, u: &DVector<f64>) -> DMatrix<f64> {
-        let n = self.grid.len() as f64;
         let nu = lin.d_dn.ncols();
-        let bc = DMatrix::from_fn(self.cos_modes.len(), nu, |k, l| {
-            let mut m = 0.0;
-            for (i, c) in self.cos_modes[k].iter().enumerate() {
-                m += lin.d_dn[(i, l)] * c;
-            }
-            m / n
-        });
+        let bc = &self.cos_modes * &lin.d_dn;
         if self.truncation.arclength == 0 {
             return bc;
         }

@@ -219,8 +219,10 @@ pub fn default_tries() -> Vec<Truncation> {
 
 /// The load-controlled pull-off at `rho` with the default escalation of
 /// truncations ([`resolved`], [`default_tries`]); where no start finds it,
-/// continued in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
-/// that is found ([`pull_off_continued_in_rho`]).
+/// followed in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
+/// that is found, in the arclength representation
+/// ([`pull_off_followed_in_arclength`]), else in the conformal form
+/// ([`pull_off_continued_in_rho`]).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     pull_off_resolved_on(Gap::cylinders(), rho)
 }
@@ -229,8 +231,8 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
 pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     match pull_off_on(gap, rho, &default_tries()) {
         // not found, or not resolved by the conformal form's escalation:
-        // continued in ρ from the pull-off at a larger ρ, in the conformal
-        // form, then in the arclength representation
+        // followed in ρ from the pull-off at a larger ρ in the arclength
+        // representation, else continued in the conformal form
         Err(e @ (Error::NoState(_) | Error::Unresolved { .. })) => {
             let why = e.detail();
             let Some((start, _)) = first_above(rho, |r| pull_off_on(gap, r, &default_tries()))
@@ -239,17 +241,17 @@ pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Ve
                     "{why}; no pull-off found at any rho above it in steps of 0.1 to continue from"
                 )));
             };
-            pull_off_continued_in_rho(&start, rho).or_else(|conformal| {
-                pull_off_followed_in_arclength(&start, rho)
-                    .map(|st| (st, Vec::new()))
-                    .map_err(|arclength| {
+            pull_off_followed_in_arclength(&start, rho)
+                .map(|st| (st, Vec::new()))
+                .or_else(|arclength| {
+                    pull_off_continued_in_rho(&start, rho).map_err(|conformal| {
                         Error::NoState(format!(
                             "{why}; {}; {}",
-                            conformal.detail(),
-                            arclength.detail()
+                            arclength.detail(),
+                            conformal.detail()
                         ))
                     })
-            })
+                })
         }
         other => other,
     }
@@ -549,11 +551,13 @@ pub(crate) const ARCLENGTH_ESCALATION: [usize; 5] = [48, 64, 96, 128, 160];
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
 /// larger ρ, in the arclength representation ([`Truncation::in_arclength`]).
 /// Each step in ρ (0.01 first, grown by 1.5 up to 0.02, halved where it
-/// fails down to 0.00125): Newton at the previous pull-off's δ̄ (regular
-/// there, where fixed F̄ is singular), else at its ā; then the arm traced
-/// from that state towards the previous pull-off's ā to its first force
-/// minimum, the other way only where that finds none
-/// ([`Exact::force_minimum_nearest`]). A step is taken when its pull-off's
+/// fails down to 0.00125): Newton at the previous pull-off's ā, else at
+/// its δ̄ (both regular there, where fixed F̄ is singular); then the
+/// minimum of F̄ over ā by the secant method on dF̄/dā
+/// ([`Exact::force_minimum_in_size`]), or, where ā is no parameter there (a
+/// fold in ā near, as at ρ ≈ 0.3), the arm traced from that state towards
+/// the previous pull-off's ā to its first force minimum, the other way
+/// only where that finds none ([`Exact::force_minimum_nearest`]). A step is taken when its pull-off's
 /// boundary error is at most [`CONVERGED`]; else the modes are escalated
 /// along [`ARCLENGTH_ESCALATION`], then the step is halved. The last route
 /// of [`pull_off_resolved`], where the conformal form's continuation stops
@@ -567,12 +571,14 @@ pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Re
         let next = (at.rho - step).max(rho);
         let t = Truncation::in_arclength(ARCLENGTH_ESCALATION[k]);
         let ex = Exact::on(start.gap, next, t)?.deferring_stability();
-        // Newton at the previous pull-off's δ̄, else at its ā
+        // Newton at the previous pull-off's ā, else at its δ̄
         let from = |hold: Hold| {
-            ex.solve_at(hold, &at.contour, at.delta_bar)
-                .and_then(|s0| ex.force_minimum_nearest(&s0, at.a_bar))
+            ex.solve_at(hold, &at.contour, at.delta_bar).and_then(|s0| {
+                ex.force_minimum_in_size(&s0)
+                    .or_else(|_| ex.force_minimum_nearest(&s0, at.a_bar))
+            })
         };
-        let found = from(Hold::Delta(at.delta_bar)).or_else(|_| from(Hold::Size(at.a_bar)));
+        let found = from(Hold::Size(at.a_bar)).or_else(|_| from(Hold::Delta(at.delta_bar)));
         match found {
             Ok(po) if po.bc_error <= CONVERGED => {
                 at = po;
