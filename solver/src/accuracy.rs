@@ -271,10 +271,14 @@ pub(crate) fn render_row(r: &Row) -> String {
         }
         Err(e) => {
             let why = e.to_string();
-            let short = if matches!(e, Error::Unresolved { .. }) {
-                cell(&why)
-            } else {
-                format!("no exact value: {}", cell(&why))
+            let short = match e {
+                Error::Unresolved { .. } => cell(&why),
+                // the reason in a few words; the story in docs/exact.md
+                Error::PastRhoFold { fold, .. } => format!(
+                    "no exact value: the near-elliptic family turns back at ρ = {} (a fold in ρ; exact.md)",
+                    crate::error::rounded(*fold)
+                ),
+                _ => format!("no exact value: {}", cell(&why)),
             };
             cells.push(short);
             for _ in &r.models {

@@ -52,6 +52,18 @@ pub enum Error {
     /// no decision has to read the words.
     #[error("no contact state: {0}")]
     InBand(String),
+    /// The exact solver's family at the control, continued in ρ from a
+    /// larger ρ, turns back at a fold in ρ above the ρ asked for: no state
+    /// on it lies below. A `no_state` for machine readers, told apart so
+    /// that no decision has to read the words.
+    #[error("no contact state: {what}")]
+    PastRhoFold {
+        /// The smallest ρ of the family at the control.
+        fold: f64,
+        /// The whole story: where the family was continued from, the fold's
+        /// ā and the two states beside it, and the routes tried before.
+        what: String,
+    },
     /// The request itself is incomplete or contradictory (a usage error,
     /// not a property of the contact).
     #[error("usage: {0}")]
@@ -91,7 +103,7 @@ impl Error {
             Error::OutOfRange { .. } => "out_of_range",
             Error::NoConvergence { .. } => "no_convergence",
             Error::Unresolved { .. } => "unresolved",
-            Error::NoState(_) | Error::InBand(_) => "no_state",
+            Error::NoState(_) | Error::InBand(_) | Error::PastRhoFold { .. } => "no_state",
             Error::Usage(_) => "usage",
             Error::Unsupported { .. } => "unsupported",
             Error::Io(_) => "io",
@@ -105,7 +117,9 @@ impl Error {
     /// `not resolved: `), to nest it in another message.
     pub fn detail(&self) -> String {
         match self {
-            Error::NoState(why) | Error::InBand(why) => why.clone(),
+            Error::NoState(why) | Error::InBand(why) | Error::PastRhoFold { what: why, .. } => {
+                why.clone()
+            }
             Error::Unresolved { what, .. } => what.clone(),
             other => other.to_string(),
         }

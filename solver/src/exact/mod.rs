@@ -48,6 +48,7 @@ pub mod branch;
 pub(crate) mod gap;
 pub(crate) mod linear;
 mod resolve;
+pub(crate) mod rho_fold;
 pub(crate) mod seed;
 pub mod stability;
 pub(crate) mod unloading;
@@ -580,6 +581,21 @@ impl Exact {
             cos_modes,
             with_stability: true,
         })
+    }
+
+    /// The same problem at another ρ, its grids kept (they do not depend
+    /// on ρ; building them is most of [`Exact::on`]'s work).
+    pub(crate) fn move_to_rho(&mut self, rho: f64) -> Result<()> {
+        if !(rho > 0.0 && rho <= 1.0) {
+            return Err(Error::OutOfRange {
+                name: "rho",
+                value: rho,
+                range: "(0, 1]".into(),
+            });
+        }
+        self.gap = self.gap_source.at(rho)?;
+        self.rho = rho;
+        Ok(())
     }
 
     /// The gap it solves.

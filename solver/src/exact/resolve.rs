@@ -344,9 +344,15 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
     match searched_on(gap, rho, control, &default_tries()) {
         // not reached, and not in a band: from the state at a larger ρ
         // (a value in a band, Error::InBand, is answered as it is)
+        // (a fold in ρ of the family continued from a larger ρ is said
+        // first, as what decides)
         Err(Error::NoState(why)) => from_larger_rho(gap, rho, control).or_else(|more| {
-            screened(gap, rho, control).map_err(|last| {
-                Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail()))
+            screened(gap, rho, control).map_err(|last| match more {
+                Error::PastRhoFold { fold, what } => Error::PastRhoFold {
+                    fold,
+                    what: format!("{what}; {why}; {}", last.detail()),
+                },
+                more => Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail())),
             })
         }),
         other => other,
@@ -422,7 +428,9 @@ fn by_delta_or_force(control: Hold) -> Result<Hold> {
 
 /// The state at `control` at `rho` from the first larger ρ where
 /// [`at_with`] finds it ([`first_above`]), continued in ρ
-/// ([`continued_in_rho`]).
+/// ([`continued_in_rho`]), and where the conformal form's series stops
+/// resolving the family, again in the arclength representation; a fold
+/// in ρ on the way ends it ([`Error::PastRhoFold`]).
 fn from_larger_rho(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
     let start =
         first_above(rho, |r| at_with(gap, r, control, &default_tries())).ok_or_else(|| {
@@ -430,7 +438,32 @@ fn from_larger_rho(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
                 "no state at {control} found at any rho above it in steps of 0.1 to continue from"
             ))
         })?;
-    continued_in_rho(&start, rho, control)
+    continued_in_rho(&start, rho, control).or_else(|conformal| match conformal {
+        Error::PastRhoFold { .. } => Err(conformal),
+        // where the conformal form's series no longer resolves the family:
+        // again from the start, in the arclength representation
+        _ => {
+            continued_in_rho_along(&start, rho, control, &arclength_tries()).map_err(|arclength| {
+                match arclength {
+                    Error::PastRhoFold { .. } => arclength,
+                    _ => Error::NoState(format!(
+                        "{}; in the arclength representation: {}",
+                        conformal.detail(),
+                        arclength.detail()
+                    )),
+                }
+            })
+        }
+    })
+}
+
+/// The arclength representation's truncations, in the order of
+/// [`ARCLENGTH_ESCALATION`].
+fn arclength_tries() -> Vec<Truncation> {
+    ARCLENGTH_ESCALATION
+        .iter()
+        .map(|&m| Truncation::in_arclength(m))
+        .collect()
 }
 
 /// The first answer of `solve` at ρ + 0.1, ρ + 0.2, … (below 1): the start
@@ -504,9 +537,30 @@ pub(crate) fn continued_in_rho_along(
                         n.truncation.modes,
                         n.deviation_from_ellipse
                     ),
-                ))
+                ));
             }
             Err(e) => {
+                // a fold in ρ of the family at the control, located, or
+                // Newton stopped for another reason
+                if let Some(fold) = super::rho_fold::rho_fold(&st, control, tries) {
+                    if fold.rho > rho {
+                        return Err(Error::PastRhoFold {
+                            fold: fold.rho,
+                            what: format!(
+                            "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (a fold in rho at a_bar = {}, resolved with {} modes{}; two states at rho {} above it, a_bar = {} and {}), so it has no state at rho = {}",
+                            crate::error::short(start.rho),
+                            crate::error::rounded(fold.rho),
+                            crate::error::rounded(fold.a_bar),
+                            fold.truncation.modes,
+                            if fold.truncation.arclength > 0 { " of each sign" } else { "" },
+                            crate::error::rounded(fold.above - fold.rho),
+                            crate::error::rounded(fold.beside[0]),
+                            crate::error::rounded(fold.beside[1]),
+                            crate::error::short(rho)
+                        ),
+                        });
+                    }
+                }
                 return Err(stop(
                     &st,
                     format!(
@@ -514,7 +568,7 @@ pub(crate) fn continued_in_rho_along(
                         st.deviation_from_ellipse,
                         e.to_string().chars().take(120).collect::<String>()
                     ),
-                ))
+                ));
             }
         }
     }
