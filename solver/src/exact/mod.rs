@@ -49,6 +49,7 @@ pub(crate) mod gap;
 pub(crate) mod linear;
 mod resolve;
 pub(crate) mod rho_fold;
+pub(crate) mod rho_path;
 pub(crate) mod seed;
 pub mod stability;
 pub(crate) mod unloading;
@@ -1005,16 +1006,24 @@ impl crate::newton::ChordSystem for Held<'_> {
         &self,
         u: &DVector<f64>,
     ) -> Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>> {
-        let nu = self.exact.unknown_count();
-        let lin = self.exact.linear(u)?;
+        self.exact.held_jacobian(u, self.held).map(|j| j.lu())
+    }
+}
+
+impl Exact {
+    /// The Jacobian of [`Exact::equations`] at `held` in u: the hold's row,
+    /// then the derivatives of the discrete equations ([`Exact::linear`]).
+    pub(crate) fn held_jacobian(&self, u: &DVector<f64>, held: Hold) -> Option<DMatrix<f64>> {
+        let nu = self.unknown_count();
+        let lin = self.linear(u)?;
         let mut jac = DMatrix::zeros(nu, nu);
-        match self.held {
+        match held {
             Hold::Size(_) => jac.view_mut((0, 0), (1, nu - 1)).fill(1.0),
             Hold::Delta(_) => jac[(0, nu - 1)] = 1.0,
             Hold::Force(_) => jac.row_mut(0).copy_from(&lin.d_force.transpose()),
         }
         jac.view_mut((1, 0), (nu - 1, nu))
-            .copy_from(&self.exact.mode_jacobian(&lin, u));
-        Some(jac.lu())
+            .copy_from(&self.mode_jacobian(&lin, u));
+        Some(jac)
     }
 }

@@ -2,7 +2,8 @@
 //! and when one resolves a state (the escalation of contour modes, the
 //! fine-grid boundary error a state must reach), and the routes to a state
 //! or a pull-off (from the seeding model's state, along the family, past
-//! the folds of a band, continued in ρ from a larger ρ). The problem itself
+//! the folds of a band, continued in ρ from a larger ρ, and where that
+//! stops, whether the family turns back in ρ: `rho_fold`, `rho_path`). The problem itself
 //! (the contour, the fields, the equations, one truncation's Newton) is the
 //! parent's.
 //!
@@ -11,6 +12,7 @@
 //! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`, `newton` (the
 //! caller's stop flag).
 
+use super::rho_path::Followed;
 use super::{bands, branch, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
 use crate::error::{Error, Result};
@@ -560,6 +562,33 @@ pub(crate) fn continued_in_rho_along(
                         ),
                         });
                     }
+                }
+                // else the path in (u, ρ), which steps around a fold in ā
+                // (a band's edge) and shows a fold in ρ as ρ turning back
+                match super::rho_path::follow(&st, rho, control) {
+                    Ok(Followed::Reached(found)) if found.bc_error <= CONVERGED => {
+                        let mut found = *found;
+                        found.stability =
+                            Exact::on(start.gap, rho, found.truncation)?.stability(&found)?;
+                        found.route = Route::ContinuedInRho;
+                        return Ok(found);
+                    }
+                    Ok(Followed::TurnedBack { rho: fold, a_bar }) if fold > rho => {
+                        return Err(Error::PastRhoFold {
+                            fold,
+                            what: format!(
+                                "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (the path in shape and rho from its last state at rho = {} turns back there, at a_bar = {}, {} modes{}), so it has no state at rho = {}",
+                                crate::error::short(start.rho),
+                                crate::error::rounded(fold),
+                                crate::error::rounded(st.rho),
+                                crate::error::rounded(a_bar),
+                                st.truncation.modes,
+                                if st.truncation.arclength > 0 { " of each sign" } else { "" },
+                                crate::error::short(rho)
+                            ),
+                        });
+                    }
+                    _ => {}
                 }
                 return Err(stop(
                     &st,

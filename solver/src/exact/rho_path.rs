@@ -1,0 +1,218 @@
+//! The family of exact states at a fixed δ̄ or F̄ followed in ρ by
+//! pseudo-arclength continuation in (u, ρ) together: where the plain
+//! continuation in ρ (Newton at each ρ from the state before) stops because
+//! the family folds in ā close by (a band's edge), the path in (u, ρ) is
+//! regular and steps around it; a fold in ρ itself shows as ρ turning back.
+//! The equations are the state equations at the control
+//! ([`Exact::equations`]); their derivative in u is the discrete one
+//! ([`Exact::held_jacobian`]), in ρ a central difference (the gap is the
+//! only thing that depends on ρ).
+//!
+//! Owns: [`follow`], [`Followed`]. May use: `exact`, `control`, `error`,
+//! `newton` (its stop check).
+
+use super::{Exact, ExactState, RESIDUAL_TOLERANCE};
+use crate::control::Hold;
+use crate::error::{Error, Result};
+use nalgebra::{DMatrix, DVector};
+
+/// How a path in (u, ρ) ended.
+pub(crate) enum Followed {
+    /// It reached the ρ asked for: the state there.
+    Reached(Box<ExactState>),
+    /// ρ turned back at this smallest ρ (a fold in ρ), above the ρ asked
+    /// for, at this ā.
+    TurnedBack { rho: f64, a_bar: f64 },
+}
+
+/// The path's unknowns v = (u, ρ) and its equations R(u; ρ) at `control`.
+struct Path {
+    ex: std::cell::RefCell<Exact>,
+    control: Hold,
+}
+
+impl Path {
+    fn residuals(&self, v: &DVector<f64>) -> Option<DVector<f64>> {
+        let n = v.len() - 1;
+        let mut ex = self.ex.borrow_mut();
+        ex.move_to_rho(v[n]).ok()?;
+        ex.equations(&v.rows(0, n).into_owned(), self.control)
+            .map(|(r, _)| r)
+    }
+
+    /// [∂R/∂u | ∂R/∂ρ], n × (n + 1).
+    fn jacobian(&self, v: &DVector<f64>) -> Option<DMatrix<f64>> {
+        let n = v.len() - 1;
+        let rho = v[n];
+        let u = v.rows(0, n).into_owned();
+        let ju = {
+            let mut ex = self.ex.borrow_mut();
+            ex.move_to_rho(rho).ok()?;
+            ex.held_jacobian(&u, self.control)?
+        };
+        let h = 1e-6;
+        let mut vp = v.clone();
+        vp[n] = rho + h;
+        let rp = self.residuals(&vp)?;
+        vp[n] = rho - h;
+        let rm = self.residuals(&vp)?;
+        let mut j = DMatrix::zeros(n, n + 1);
+        j.columns_mut(0, n).copy_from(&ju);
+        j.column_mut(n).copy_from(&((rp - rm) / (2.0 * h)));
+        Some(j)
+    }
+
+    /// The unit tangent of the path at v, oriented along `before`.
+    fn tangent(&self, j: &DMatrix<f64>, before: &DVector<f64>) -> Option<DVector<f64>> {
+        let n = j.nrows();
+        let mut m = DMatrix::zeros(n + 1, n + 1);
+        m.rows_mut(0, n).copy_from(j);
+        m.row_mut(n).copy_from(&before.transpose());
+        let mut e = DVector::zeros(n + 1);
+        e[n] = 1.0;
+        let t = m.lu().solve(&e)?;
+        let t = t.normalize();
+        Some(if t.dot(before) < 0.0 { -t } else { t })
+    }
+
+    /// Newton on [R(v); tᵀ(v − v_p)] = 0 from the prediction v_p.
+    fn correct(&self, vp: &DVector<f64>, t: &DVector<f64>) -> Option<DVector<f64>> {
+        let n = vp.len() - 1;
+        let mut v = vp.clone();
+        for _ in 0..8 {
+            let r = self.residuals(&v)?;
+            if r.amax() < RESIDUAL_TOLERANCE {
+                return Some(v);
+            }
+            let j = self.jacobian(&v)?;
+            let mut m = DMatrix::zeros(n + 1, n + 1);
+            m.rows_mut(0, n).copy_from(&j);
+            m.row_mut(n).copy_from(&t.transpose());
+            let mut g = DVector::zeros(n + 1);
+            g.rows_mut(0, n).copy_from(&r);
+            g[n] = t.dot(&(&v - vp));
+            let dv = m.lu().solve(&g)?;
+            v -= dv;
+            if !v.iter().all(|x| x.is_finite()) || !(v[n] > 0.0 && v[n] <= 1.0) {
+                return None;
+            }
+        }
+        let r = self.residuals(&v)?;
+        (r.amax() < RESIDUAL_TOLERANCE).then_some(v)
+    }
+}
+
+/// The family at `control` followed in ρ from `start` (a converged state of
+/// its truncation at a larger ρ) down to `rho`: pseudo-arclength steps in
+/// (u, ρ) of at most 0.05 (halved where the corrector fails, down to
+/// 1e-5; at most 400). [`Followed::Reached`] with the state at `rho`
+/// (Newton at the control there from the path's last point beyond it);
+/// [`Followed::TurnedBack`] where ρ turns back above `rho`, with the
+/// smallest ρ the path reached. An error where a step fails.
+pub(crate) fn follow(start: &ExactState, rho: f64, control: Hold) -> Result<Followed> {
+    let ex = Exact::on(start.gap, start.rho, start.truncation)?.deferring_stability();
+    let u0 = ex.unknowns(start);
+    let n = u0.len();
+    let mut v = DVector::zeros(n + 1);
+    v.rows_mut(0, n).copy_from(&u0);
+    v[n] = start.rho;
+    let path = Path {
+        ex: std::cell::RefCell::new(ex),
+        control,
+    };
+    let failed = |at: &DVector<f64>, why: &str| {
+        Error::NoState(format!(
+            "the path in (shape, rho) at {control} from rho = {} stopped at rho = {}: {why}",
+            crate::error::rounded(start.rho),
+            crate::error::rounded(at[n])
+        ))
+    };
+    // the first tangent: towards smaller ρ
+    let mut down = DVector::zeros(n + 1);
+    down[n] = -1.0;
+    let j = path
+        .jacobian(&v)
+        .ok_or_else(|| failed(&v, "singular system"))?;
+    let mut t = path
+        .tangent(&j, &down)
+        .ok_or_else(|| failed(&v, "no tangent"))?;
+    let mut ds: f64 = 0.01;
+    let mut lowest = (v[n], start.a_bar);
+    for _ in 0..400 {
+        crate::newton::check_stop()?;
+        let vp = &v + &t * ds;
+        let Some(next) = path.correct(&vp, &t) else {
+            if ds < 1e-5 {
+                return Err(failed(&v, "the corrector fails with steps down to 1e-5"));
+            }
+            ds *= 0.5;
+            continue;
+        };
+        let j = path
+            .jacobian(&next)
+            .ok_or_else(|| failed(&next, "singular system"))?;
+        let t_next = path
+            .tangent(&j, &t)
+            .ok_or_else(|| failed(&next, "no tangent"))?;
+        if next[n] < lowest.0 {
+            let a = {
+                let ex = path.ex.borrow();
+                ex.contour_of(&next.rows(0, n).into_owned()).a_bar()
+            };
+            lowest = (next[n], a);
+        }
+        if next[n] <= rho {
+            // the state at `rho` itself, from the point beyond it
+            let mut ex = path.ex.borrow_mut();
+            ex.move_to_rho(rho)?;
+            let u = next.rows(0, n).into_owned();
+            let id = n - 1;
+            let solved = ex.newton(control, &ex.contour_of(&u), u[id])?;
+            return Ok(Followed::Reached(Box::new(ex.state(&solved)?)));
+        }
+        // ρ going up again after it went down: a fold in ρ
+        if t[n] < 0.0 && t_next[n] > 0.0 {
+            return Ok(Followed::TurnedBack {
+                rho: lowest.0,
+                a_bar: lowest.1,
+            });
+        }
+        v = next;
+        t = t_next;
+        ds = (ds * 1.3).min(0.05);
+    }
+    Err(failed(&v, "400 steps without reaching it"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::resolve::{at_with, continued_in_rho_along};
+    use crate::exact::{default_tries, Gap, Truncation};
+
+    /// At F̄ = 10 the near-elliptic family continued from ρ = 0.4 (56
+    /// modes, then 48 to 96 of each sign in the arclength representation)
+    /// to ρ = 0.3235 is followed on in (shape, ρ) and turns back between
+    /// ρ = 0.3222 and 0.3228 (measured: 0.322471; from the state at ρ = 0.4
+    /// itself, 0.322687, and the plain continuation's last state is at
+    /// 0.322422: folds of neighbouring arms of an imperfect bifurcation,
+    /// docs/exact.md); a second route, Newton at F̄ = 10 and ρ = 0.3215 from
+    /// that state (the plain continuation's step), finds no state.
+    #[test]
+    fn the_force_10_family_turns_back_in_rho() {
+        let control = Hold::Force(10.0);
+        let start = at_with(Gap::cylinders(), 0.4, control, &default_tries()).unwrap();
+        let tries = [48, 64, 96].map(Truncation::in_arclength);
+        let last = continued_in_rho_along(&start, 0.3235, control, &tries).unwrap();
+        match follow(&last, 0.3, control).unwrap() {
+            Followed::TurnedBack { rho, .. } => {
+                assert!(rho > 0.3222 && rho < 0.3228, "turned back at rho = {rho}")
+            }
+            Followed::Reached(st) => panic!("reached rho = 0.3 at a = {}", st.a_bar),
+        }
+        let below = Exact::on(last.gap, 0.3215, last.truncation).unwrap();
+        assert!(below
+            .solve_at(control, &last.contour, last.delta_bar)
+            .is_err());
+    }
+}
