@@ -93,7 +93,7 @@ impl Path {
             g[n] = t.dot(&(&v - vp));
             let dv = m.lu().solve(&g)?;
             v -= dv;
-            if !v.iter().all(|x| x.is_finite()) || !(v[n] > 0.0 && v[n] <= 1.0) {
+            if !(v.iter().all(|x| x.is_finite()) && v[n] > 0.0 && v[n] <= 1.0) {
                 return None;
             }
         }
