@@ -861,3 +861,45 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod convergence {
+    use super::*;
+
+    /// The convergence table of docs/exact.md for the pull-offs below
+    /// ρ = 0.3 (not run by default: about 3 min on the release build):
+    /// each pull-off as `pull_off_resolved` finds it, solved again at its ā
+    /// with N = 32 … 160 modes of each sign; the boundary error on the fine
+    /// grid and F̄'s change from the finest. `cargo test --release -p thinjkr
+    /// --lib convergence_table -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn convergence_table_of_the_small_rho_pull_offs() {
+        let ns = [32, 48, 64, 96, 128, 160];
+        println!("| ρ | N = {} |", ns.map(|n| n.to_string()).join(" | "));
+        for rho in [0.2, 0.1, 0.0718] {
+            let po = pull_off_resolved(rho).unwrap().0;
+            let rows: Vec<(f64, f64)> = ns
+                .iter()
+                .map(|&n| {
+                    Exact::on(po.gap, rho, Truncation::in_arclength(n))
+                        .and_then(|ex| {
+                            ex.deferring_stability()
+                                .solve(po.a_bar, &po.contour, po.delta_bar)
+                        })
+                        .map_or((f64::NAN, f64::NAN), |st| (st.bc_error, st.force_bar))
+                })
+                .collect();
+            let finest = rows.last().unwrap().1;
+            let cells: Vec<String> = rows
+                .iter()
+                .map(|(bc, f)| format!("{bc:.1e} / {:.0e}", (f - finest).abs()))
+                .collect();
+            println!(
+                "| {rho} (N = {}) | {} |",
+                po.truncation.modes,
+                cells.join(" | ")
+            );
+        }
+    }
+}
