@@ -36,6 +36,19 @@ pub(crate) struct Grid {
     pub negative: usize,
     /// [`Grid::orbit_derivatives`], made on first use.
     orbit_derivatives: std::sync::OnceLock<(DMatrix<f64>, DMatrix<f64>)>,
+    /// The forward FFT of the grid's length, planned on first use
+    /// ([`Grid::basis_sums`]).
+    fft: std::sync::OnceLock<Planned>,
+}
+
+/// A planned FFT (no `Debug` of its own).
+#[derive(Clone)]
+struct Planned(std::sync::Arc<dyn rustfft::Fft<f64>>);
+
+impl std::fmt::Debug for Planned {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "FFT of length {}", self.0.len())
+    }
 }
 
 impl Grid {
@@ -96,7 +109,40 @@ impl Grid {
             multipliers: Vec::new(),
             negative: 0,
             orbit_derivatives: std::sync::OnceLock::new(),
+            fft: std::sync::OnceLock::new(),
         }
+    }
+
+    /// Σ_j a_rj e^{i m_l θ_j} for every row r of `a` (n columns, one per
+    /// grid point) and every multiplier m_l of the basis: the product of
+    /// `a` with the basis table, as one FFT per row (X_k = Σ_j a_j
+    /// e^{−2πi jk/n}, read at k = −m_l mod n). n log n per row instead of
+    /// n times the basis' length.
+    pub(crate) fn basis_sums(&self, a: &DMatrix<Complex<f64>>) -> DMatrix<Complex<f64>> {
+        let n = self.len();
+        let fft = &self
+            .fft
+            .get_or_init(|| Planned(rustfft::FftPlanner::new().plan_fft_forward(n)))
+            .0;
+        let zero = Complex::new(0.0, 0.0);
+        let mut row = vec![zero; n];
+        let mut scratch = vec![zero; fft.get_inplace_scratch_len()];
+        let at: Vec<usize> = self
+            .multipliers
+            .iter()
+            .map(|&m| (-(m.round() as i64)).rem_euclid(n as i64) as usize)
+            .collect();
+        let mut out = DMatrix::zeros(a.nrows(), at.len());
+        for r in 0..a.nrows() {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = a[(r, j)];
+            }
+            fft.process_with_scratch(&mut row, &mut scratch);
+            for (l, &k) in at.iter().enumerate() {
+                out[(r, l)] = row[k];
+            }
+        }
+        out
     }
 
     /// The first derivative of samples symmetric under the reflections

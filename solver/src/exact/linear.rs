@@ -23,7 +23,7 @@
 //! Owns: [`Linear`], [`Exact::linear`]. May use: `exact`, `exact::bie`,
 //! nalgebra.
 
-use super::bie::orbits;
+use super::bie::{orbits, Grid};
 use super::Exact;
 use nalgebra::{Complex, DMatrix, DVector};
 
@@ -141,7 +141,7 @@ impl Exact {
         }
         // minus Σ_j Im(δw_ij)(μ_j − μ_i)/n
         let mu_c: Vec<C> = mu.iter().map(|&v| C::new(v, 0.0)).collect();
-        let q = moving_kernel_sums(&reps, &inv, &w, &e, &mult, &mu_c);
+        let q = moving_kernel_sums(grid, &reps, &inv, &w, &e, &mult, &mu_c);
         for r in 0..m {
             for l in 0..nc {
                 rhs[(r, l)] -= q[(r, l)].im / nf;
@@ -159,7 +159,7 @@ impl Exact {
         // Σ_j δψ_j w_ij, and Σ_j (ψ_j − ψ_i) δw_ij
         let t = product(&w, &d_psi_all);
         let w_sum: Vec<C> = (0..m).map(|r| w.row(r).iter().sum()).collect();
-        let u = moving_kernel_sums(&reps, &inv, &w, &e, &mult, &psi);
+        let u = moving_kernel_sums(grid, &reps, &inv, &w, &e, &mult, &psi);
         let mut d_dn_rep = DMatrix::<f64>::zeros(m, nu);
         // P's second derivatives at the representatives
         let hess: Vec<_> = reps
@@ -237,8 +237,10 @@ impl Exact {
 /// coefficient l (column), with w_ij = z′_j ι_ij, ι_ij = 1/(z_j − z_i) and
 /// δw_ij = i m_l ι_ij δz_j − w_ij ι_ij (δz_j − δz_i), δz_j = e_l(θ_j):
 /// i m_l ((ι∘Δx)E)_rl − ((ι∘w∘Δx)E)_rl + e_l(θ_i) Σ_j ι_ij w_ij Δx_ij, the
-/// sums over j for all l at once as matrix products with the basis E.
+/// sums over j for all l at once: products with the basis E, which are
+/// discrete Fourier sums ([`Grid::basis_sums`]).
 fn moving_kernel_sums(
+    grid: &Grid,
     reps: &[usize],
     inv: &DMatrix<C>,
     w: &DMatrix<C>,
@@ -258,7 +260,7 @@ fn moving_kernel_sums(
             b_sum[r] += b[(r, j)];
         }
     }
-    let (pa, pb) = (product(&a, e), product(&b, e));
+    let (pa, pb) = (grid.basis_sums(&a), grid.basis_sums(&b));
     let i_unit = C::new(0.0, 1.0);
     DMatrix::from_fn(m, e.ncols(), |r, l| {
         i_unit * mult[l] * pa[(r, l)] - pb[(r, l)] + e[(reps[r], l)] * b_sum[r]
