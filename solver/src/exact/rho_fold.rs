@@ -176,8 +176,12 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
     if !(r <= rl && r <= rr && rl.is_finite() && rr.is_finite()) {
         return None;
     }
-    // successive parabolas through (a − h, a, a + h), h shrinking
-    while h > 1e-3 {
+    // successive parabolas through (a − h, a, a + h), h shrinking (at most
+    // 12 of them: a widened step keeps h)
+    for _ in 0..12 {
+        if h <= 1e-3 {
+            break;
+        }
         let curvature = rl - 2.0 * r + rr;
         let shift = if curvature > 0.0 && curvature.is_finite() {
             (0.5 * h * (rl - rr) / curvature).clamp(-h, h)
@@ -202,11 +206,11 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
             return None;
         }
     }
-    if r >= last.rho {
+    if h > 1e-3 || r >= last.rho {
         return None;
     }
     // ρ*(ā) ≈ r + c (ā − a)² near the fold, from the last parabola
-    let c = ((rl - 2.0 * r + rr) / (h * h)).max(1e-6);
+    let c = ((rl - 2.0 * r + rr) / (2.0 * h * h)).max(1e-6);
     // the two states at the control a little above the fold
     let above = r + (0.002 * (last.rho - r)).max(1e-4);
     let mut beside = [f64::NAN; 2];
