@@ -249,7 +249,8 @@ struct Arm {
 /// Trace one arm from `x0` along `towards` past its folds until ā <
 /// [`CURVE_A_MIN`] or above `a_max` or the first state whose map is not
 /// one-to-one (not returned: past its folds in ā the contour grows
-/// undulated until it is no contact).
+/// undulated until it is no contact), or whose contour is wider across
+/// than along at ρ < 1 (not returned either).
 fn arm(
     m: &Conformal,
     rho: f64,
@@ -268,24 +269,40 @@ fn arm(
         crossing: None,
     };
     let mut broke = None;
+    let mut wider = None;
     let traced = continuation::trace(&family, x0, towards, settings, watch, |p| {
-        if let Err(e) = m.univalence(&p.u.as_slice()[..n - 1]) {
+        let c = &p.u.as_slice()[..n - 1];
+        if let Err(e) = m.univalence(c) {
             broke = Some(e);
+            return true;
+        }
+        // b̄ > ā at ρ < 1: not the near-elliptic state the family
+        // approximates (the check every state's warnings make)
+        let (a, b) = m.semi_axes(c);
+        if rho < 1.0 && b > a * (1.0 + 1e-9) {
+            wider = Some(b / a);
             return true;
         }
         p.a_bar < CURVE_A_MIN || p.a_bar > a_max
     })?;
     let mut pts = traced.points;
-    let end = match (&broke, traced.end) {
-        (Some(e), _) => {
+    let end = match (&broke, wider, traced.end) {
+        (Some(e), _, _) => {
             pts.pop();
             format!("the map stops being one-to-one ({e})")
         }
-        (None, End::Until) => {
+        (None, Some(s), _) => {
+            pts.pop();
+            format!(
+                "the contour turns wider across than along (s = {}), not the near-elliptic state the family approximates",
+                crate::error::rounded(s)
+            )
+        }
+        (None, None, End::Until) => {
             let q = pts.last().expect("one point");
             format!("it reaches a = {:.4}, the end of the traced range", q.a_bar)
         }
-        (None, _) => {
+        (None, None, _) => {
             let last = &pts.last().expect("one point").u;
             return Err(stuck(m, last, rho, "the curve's step budget ended"));
         }
