@@ -35,11 +35,11 @@ pub(crate) struct RhoFold {
     pub truncation: Truncation,
 }
 
-/// The unknowns of the point of `memo` nearest `a`.
-fn memo_at(memo: &[(f64, OnCurve)], a: f64) -> Option<DVector<f64>> {
+/// The point of `memo` nearest `a`.
+fn memo_at(memo: &[(f64, OnCurve)], a: f64) -> Option<OnCurve> {
     memo.iter()
         .min_by(|x, y| (x.0 - a).abs().total_cmp(&(y.0 - a).abs()))
-        .map(|x| x.1.u.clone())
+        .map(|x| x.1.clone())
 }
 
 /// One point of ρ*(ā): the unknowns of the state at half-width `a_bar`
@@ -138,26 +138,23 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
     let mut memo: Vec<(f64, OnCurve)> = Vec::new();
     // ρ*(ā); +∞ where no state at that ā is found (inside a band, or
     // Newton fails from the nearest point solved): never the minimum
-    let mut eval = |a: f64| -> Option<f64> {
-        let near = memo
-            .iter()
-            .min_by(|x, y| (x.0 - a).abs().total_cmp(&(y.0 - a).abs()))
-            .map_or(start.clone(), |x| x.1.clone());
+    let mut eval = |a: f64| -> f64 {
+        let near = memo_at(&memo, a).unwrap_or_else(|| start.clone());
         let Ok(p) = rho_at(&ex, control, a, &near) else {
-            return Some(f64::INFINITY);
+            return f64::INFINITY;
         };
         let r = p.rho;
         memo.push((a, p));
-        Some(r)
+        r
     };
     let a0 = last.a_bar;
     let mut h = 0.02;
-    let (mut a, mut r) = (a0, eval(a0)?);
+    let (mut a, mut r) = (a0, eval(a0));
     if !r.is_finite() {
         return None;
     }
     // downhill in ρ in steps of h until a minimum is bracketed
-    let (mut rl, mut rr) = (eval(a - h)?, eval(a + h)?);
+    let (mut rl, mut rr) = (eval(a - h), eval(a + h));
     for _ in 0..25 {
         if r <= rl && r <= rr {
             break;
@@ -168,9 +165,9 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
             return None;
         }
         (rl, r, rr) = if dir < 0.0 {
-            (eval(a - h)?, rl, r)
+            (eval(a - h), rl, r)
         } else {
-            (r, rr, eval(a + h)?)
+            (r, rr, eval(a + h))
         };
     }
     if !(r <= rl && r <= rr && rl.is_finite() && rr.is_finite()) {
@@ -190,14 +187,14 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
         };
         a += shift;
         h *= 0.25;
-        r = eval(a)?;
-        rl = eval(a - h)?;
-        rr = eval(a + h)?;
+        r = eval(a);
+        rl = eval(a - h);
+        rr = eval(a + h);
         if !(r <= rl && r <= rr) {
             // the parabola's vertex missed by more than h: widen once
             h *= 4.0;
-            rl = eval(a - h)?;
-            rr = eval(a + h)?;
+            rl = eval(a - h);
+            rr = eval(a + h);
             if !(r <= rl && r <= rr) {
                 return None;
             }
@@ -218,7 +215,7 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
         // ā where ρ*(ā) = above, by the secant method from the fold outwards
         let (mut x0, mut f0) = (a, r - above);
         let mut x1 = a + dir * ((above - r) / c).sqrt();
-        let mut f1 = eval(x1)? - above;
+        let mut f1 = eval(x1) - above;
         for _ in 0..30 {
             if f1.abs() <= 1e-10 {
                 break;
@@ -226,7 +223,7 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
             let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
             (x0, f0) = (x1, f1);
             x1 = x2;
-            f1 = eval(x1)? - above;
+            f1 = eval(x1) - above;
         }
         if f1.abs() > 1e-10 || (x1 - a) * dir <= 0.0 {
             return None;
@@ -240,7 +237,7 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
         a,
         &OnCurve {
             rho: r,
-            u: memo_at(&memo, a)?,
+            u: memo_at(&memo, a)?.u,
         },
     )
     .ok()?;
