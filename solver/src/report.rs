@@ -154,6 +154,37 @@ pub enum Passed {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         why_not_settled: Option<String>,
     },
+    /// The loading path by descent (`--unloading`; docs/exact.md, "The
+    /// loading path by descent"): the load lowered from F̄ = 10 in steps, each state
+    /// the descent of the potential at the new load from the last, modes
+    /// shorter than the cutoff held at equilibrium.
+    LoadingPath {
+        /// The load the path starts from.
+        from_force: f64,
+        /// The thinness h/L whose cutoff chose the moving modes.
+        cutoff_thinness: f64,
+        /// The number of states held on the way.
+        states_held: usize,
+        /// The forces at which the path jumped to another state.
+        jump_forces: Vec<f64>,
+        /// ā of the state each jump landed on.
+        jump_landing_a_bar: Vec<f64>,
+        /// F̄ where the path first loses the state it holds (a fold in F̄
+        /// or a resolved mode turning unstable); none where it is not
+        /// settled before.
+        first_lost_force: Option<f64>,
+        /// ā there.
+        first_lost_a_bar: Option<f64>,
+        /// Whether that state is this pull-off.
+        reaches: Option<bool>,
+        /// Whether the contact comes off where the path ends (true: the
+        /// path's pull-off is its last state; false: not settled there).
+        comes_off: Option<bool>,
+        /// Why the path or the descent from its last state is not settled,
+        /// in words.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        why_not_settled: Option<String>,
+    },
 }
 
 impl Passed {

@@ -106,7 +106,8 @@ pub(crate) enum ExactCommand {
         discretisation: Discretisation,
         /// Also trace the unloading path: the family from its state at F̄ = 10 towards smaller ā to its first
         /// minimum of F̄, whether that is this pull-off, and the thinness h/L below which a state on the way is
-        /// unstable above the short-wave cutoff (seconds at ρ ≥ 0.8, more below).
+        /// unstable above the short-wave cutoff; and the loading path by descent: the load lowered from F̄ = 10,
+        /// where the contact loses its state and whether it comes off there (seconds at ρ ≥ 0.8, minutes below).
         #[arg(long)]
         unloading: bool,
         /// Print JSON.
@@ -529,6 +530,57 @@ fn unloading_words(p: &Passed) -> String {
     format!("{first}{stability}")
 }
 
+/// The loading path by descent in words.
+fn loading_words(p: &Passed) -> String {
+    let Passed::LoadingPath {
+        from_force,
+        cutoff_thinness,
+        states_held,
+        jump_forces,
+        jump_landing_a_bar,
+        first_lost_force,
+        first_lost_a_bar,
+        reaches,
+        comes_off,
+        why_not_settled,
+    } = p
+    else {
+        return String::new();
+    };
+    let why = why_not_settled.as_deref().unwrap_or("no reason given");
+    let head = format!(
+        "the loading path by descent (modes at least 2 pi h long move, h/L = {}; docs/exact.md, \"The loading path by descent\"):",
+        crate::error::short(*cutoff_thinness)
+    );
+    let (Some(f), Some(a), Some(reaches)) = (first_lost_force, first_lost_a_bar, reaches) else {
+        return format!(
+            "{head} from F = {from_force} not settled after {states_held} states: {why}"
+        );
+    };
+    let jumps = match jump_forces.len() {
+        0 => String::new(),
+        n => format!(
+            " after {n} jump(s), the first at F = {} to a = {}",
+            crate::error::short(jump_forces[0]),
+            crate::error::short(jump_landing_a_bar[0])
+        ),
+    };
+    let lost = format!(
+        "from F = {from_force} it holds its state down to F = {}, a = {}{jumps} ({})",
+        crate::error::short(*f),
+        crate::error::short(*a),
+        if *reaches {
+            "this pull-off"
+        } else {
+            "not this pull-off"
+        }
+    );
+    match comes_off {
+        Some(true) => format!("{head} {lost}, and the contact comes off there"),
+        _ => format!("{head} {lost}; where the contact goes from there is not settled: {why}"),
+    }
+}
+
 pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool) -> Result<()> {
     let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
     let (po, events) = match (d.modes, d.points) {
@@ -541,6 +593,7 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
     let mut passed = Passed::from_exact(&events);
     if unloading {
         passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?));
+        passed.push(crate::exact::loading::reported(&po, d.cutoff()?));
     }
     let models: Vec<_> = ModelId::ALL
         .iter()
@@ -588,8 +641,10 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
         }
     );
     for p in &passed {
-        if let Passed::Unloading { .. } = p {
-            outln!("    {}", unloading_words(p));
+        match p {
+            Passed::Unloading { .. } => outln!("    {}", unloading_words(p)),
+            Passed::LoadingPath { .. } => outln!("    {}", loading_words(p)),
+            _ => {}
         }
     }
     for (m, r) in &models {

@@ -221,6 +221,26 @@ impl Poly {
         out
     }
 
+    /// The product with another polynomial.
+    fn times(&self, other: &Poly) -> Poly {
+        let mut out = Poly::default();
+        for &(i, j, c) in &self.terms {
+            for &(k, l, d) in &other.terms {
+                out.push(i + k, j + l, c * d);
+            }
+        }
+        out
+    }
+
+    /// The polynomial times a constant.
+    fn scaled(&self, factor: f64) -> Poly {
+        let mut out = Poly::default();
+        for &(i, j, c) in &self.terms {
+            out.push(i, j, c * factor);
+        }
+        out
+    }
+
     /// ∫ · dX from X = 0.
     fn integral_x(&self) -> Poly {
         let mut out = Poly::default();
@@ -247,7 +267,8 @@ fn angular_mean(i: i32, j: i32) -> f64 {
 }
 
 /// The gap's polynomials at one ρ: P = P₀ + δ̄P₁, their derivatives, the
-/// gap φ̄ = ΔP₀ and the force's antiderivative W = W₀ + δ̄W₁.
+/// gap φ̄ = ΔP₀, the force's antiderivative W = W₀ + δ̄W₁ and the energy's
+/// Q = Q₀ + δ̄Q₁ + δ̄²Q₂ = ∫ P(φ̄ − δ̄) dX.
 #[derive(Clone, Debug)]
 pub(crate) struct GapAt {
     p0: Poly,
@@ -267,6 +288,7 @@ pub(crate) struct GapAt {
     w1: Poly,
     w0y: Poly,
     w1y: Poly,
+    q: [Poly; 3],
 }
 
 /// P's second derivatives at one point.
@@ -283,7 +305,18 @@ impl GapAt {
         let mut minus_one = Poly::default();
         minus_one.push(0, 0, -1.0);
         let w1 = minus_one.times_w().integral_x();
+        // P(φ̄ − δ̄) = P₀φ̄ + δ̄(P₁φ̄ − P₀) − δ̄²P₁
+        let mut p1_phi_minus_p0 = p1.times(&phi);
+        for &(i, j, c) in &p0.terms {
+            p1_phi_minus_p0.push(i, j, -c);
+        }
+        let q = [
+            p0.times(&phi).integral_x(),
+            p1_phi_minus_p0.integral_x(),
+            p1.scaled(-1.0).integral_x(),
+        ];
         GapAt {
+            q,
             p0x: p0.dx(),
             p0y: p0.dy(),
             p1x: p1.dx(),
@@ -346,6 +379,13 @@ impl GapAt {
             self.w0y.eval(x, y) + delta_bar * self.w1y.eval(x, y),
             self.w1.eval(x, y),
         ]
+    }
+
+    /// Q = ∫ P(φ̄ − δ̄) dX at (X, Y): ∫ω P(φ̄ − δ̄) dA = ∮ Q dY, for the
+    /// energy's boundary form (`exact::energy`).
+    pub(crate) fn energy_potential(&self, x: f64, y: f64, delta_bar: f64) -> f64 {
+        let [q0, q1, q2] = &self.q;
+        q0.eval(x, y) + delta_bar * (q1.eval(x, y) + delta_bar * q2.eval(x, y))
     }
 
     /// The gap φ̄ at (X, Y).

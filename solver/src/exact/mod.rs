@@ -45,8 +45,11 @@
 pub mod bands;
 pub(crate) mod bie;
 pub mod branch;
+pub(crate) mod descent;
+pub(crate) mod energy;
 pub(crate) mod gap;
 pub(crate) mod linear;
+pub(crate) mod loading;
 mod resolve;
 pub(crate) mod rho_fold;
 pub(crate) mod rho_path;

@@ -41,7 +41,7 @@
 use super::{Exact, ExactState};
 use crate::cutoff::Cutoff;
 use crate::error::{Error, Result};
-use nalgebra::{Complex, DMatrix, SymmetricEigen};
+use nalgebra::{DMatrix, SymmetricEigen};
 use serde::Serialize;
 
 /// One unstable direction of the second variation.
@@ -132,36 +132,11 @@ impl Exact {
         let mult = &self.grid.multipliers;
         let err = || Error::NoState("exact stability: singular boundary integral equation".into());
         let u = self.unknowns(st);
-        let lin = self.linear(&u).ok_or_else(err)?;
+        let hess = self.bordered_hessian(&u).ok_or_else(err)?;
         let samples = st.contour.samples(&self.grid);
         let n = self.grid.len();
         let h = 2.0 * std::f64::consts::PI / n as f64;
         let perimeter: f64 = samples.dz.iter().map(|d| d.norm()).sum::<f64>() * h;
-        // ∂Π̄/∂u_k = Σ_i ((∂p̄/∂ν)² − 1) Re(e_k(θ_i) · i conj z′_i) h at fixed δ̄
-        // (V_k|z′| = Re(∂z/∂u_k ν̄)|z′| with ν = −i z′/|z′|), and its
-        // derivative in u_l with δz′ = i m_l e_l
-        let mut hess = DMatrix::zeros(m + 1, m + 1);
-        let basis = &self.grid.basis;
-        for i in 0..n {
-            let dn = lin.dn[i];
-            let rot = Complex::new(0.0, 1.0) * samples.dz[i].conj();
-            for k in 0..m {
-                let ek = basis[k][i];
-                let vk = (ek * rot).re * h;
-                let a = 2.0 * dn * vk;
-                let b = (dn * dn - 1.0) * h;
-                for l in 0..m {
-                    hess[(k, l)] +=
-                        a * lin.d_dn[(i, l)] + b * mult[l] * (ek * basis[l][i].conj()).re;
-                }
-            }
-        }
-        // the border: ∂²(Π̄ − 2F̄δ̄)/∂u∂δ̄ = 2∂F̄/∂u at fixed applied F̄, and
-        // ∂²/∂δ̄² = 2∂F̄/∂δ̄
-        for k in 0..=m {
-            hess[(m, k)] = 2.0 * lin.d_force[k];
-            hess[(k, m)] = 2.0 * lin.d_force[k];
-        }
         let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
         // the arclength representation: the Hessian on the directions that
         // keep θ proportional to arclength (the null space Z of the gauge

@@ -1,0 +1,423 @@
+//! The jump rule of the loading path (issue 32 (b)): where a contact goes
+//! at a held force F̄₀ from a contour that is no state there (a state of a
+//! nearby force, or one past a fold of its arm).
+//!
+//! Statics does not say where a jump lands; the rule used here is the
+//! descent of the potential at the held force, V = Π̄ − 2F̄₀δ̄
+//! (`exact::energy`), the quasi-static limit of a contact line whose
+//! normal speed is proportional to the local excess of the energy release
+//! rate over the work of adhesion: V_n ∝ 1 − (∂p̄/∂ν)² (the steepest
+//! descent of V in the L² norm of the normal motion). The contact ends in
+//! the first local minimum of V down the gradient from where it starts, or
+//! it shrinks without end (δ̄ → −∞, V → −∞ at a tensile force): it
+//! detaches.
+//!
+//! The short-wave cutoff ([`Cutoff`]) enters as which contour modes move
+//! by the descent: the modes whose wavelength along the contour (its
+//! perimeter over n) is at least the cutoff's are the descent's; the
+//! shorter ones, whose stability the thin-layer equation (2) cannot judge,
+//! are held at equilibrium (their gradient zero, by Newton's method, stable
+//! or not in (2)), as a real coating, stiffer at short waves, holds them.
+//! So the descent minimises the reduced potential V(a, s*(a)) over the
+//! resolved coefficients a, s*(a) the equilibrium of the others.
+//!
+//! Steps are pseudo-transient: d = −(H + M/τ)⁻¹ g in the resolved
+//! coefficients, with H the reduced Hessian (the bordered Hessian's Schur
+//! complements on δ̄ and on the held modes), M the metric of the normal
+//! motion and g the gradient: a short gradient-flow step for small τ,
+//! Newton's step of the minimisation for large τ. A step is taken when
+//! H + M/τ is positive definite and V falls by at least 1e-4 of the
+//! predicted decrease; τ grows fourfold after a step and shrinks fourfold
+//! otherwise. Only the conformal-map form of the contour is descended (the
+//! arclength representation's reparametrisations move no contour and
+//! leave M singular).
+//!
+//! Owns: [`Landing`], [`descend`]. May use: `exact` (the problem, its
+//! energy and Newton), `control`, `cutoff`, `newton` (the stop request),
+//! nalgebra.
+
+// asked by the loading path, which the command line asks
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
+
+use super::{Exact, ExactState};
+use crate::control::Hold;
+use crate::cutoff::Cutoff;
+use nalgebra::{DMatrix, DVector};
+
+/// Where a descent ends.
+#[derive(Clone, Debug)]
+pub(crate) enum Landing {
+    /// A state at the held force: a local minimum of the potential in the
+    /// resolved modes, solved again by Newton's method at the force.
+    Landed(Box<ExactState>),
+    /// The contact shrank below a tenth of its starting area with the
+    /// potential still falling: it comes off.
+    Detached,
+    /// The descent stopped before either (in words, for a report).
+    NotSettled(String),
+}
+
+/// The largest number of descent steps.
+const MAX_STEPS: usize = 600;
+
+/// The gradient's norm in the metric (the normal speed's L² norm) below
+/// which the descent has reached a stationary point.
+const STATIONARY: f64 = 1e-9;
+
+/// How far a saddle is left along its unstable direction, relative to ā
+/// (in the metric's unit norm).
+const KICK: f64 = 1e-3;
+
+/// How many saddles one descent may leave.
+const MAX_KICKS: usize = 8;
+
+/// The most unstable direction of the reduced Hessian in the metric (unit
+/// norm in M), or `None` where the Hessian is positive definite there.
+fn unstable_direction(
+    p: &Point,
+    mc: &nalgebra::Cholesky<f64, nalgebra::Dyn>,
+) -> Option<DVector<f64>> {
+    // L⁻¹ H L⁻ᵀ with M = L Lᵀ: its eigenvectors w give v = L⁻ᵀ w
+    let l = mc.l();
+    let l_inv = l.clone().try_inverse()?;
+    let sym = &l_inv * &p.hessian * l_inv.transpose();
+    let eig = nalgebra::SymmetricEigen::new((&sym + sym.transpose()) * 0.5);
+    let i = eig.eigenvalues.imin();
+    // (round-off at a nearly neutral direction is no instability)
+    if eig.eigenvalues[i] >= -1e-8 * eig.eigenvalues.amax() {
+        return None;
+    }
+    Some(l_inv.transpose() * eig.eigenvectors.column(i))
+}
+
+/// Which coefficients the descent moves: A (the size) and the contour
+/// modes at least the cutoff's wavelength long on a contour of `perimeter`.
+fn resolved_coefficients(ex: &Exact, perimeter: f64, cutoff: Cutoff) -> Vec<bool> {
+    ex.grid
+        .multipliers
+        .iter()
+        .enumerate()
+        .map(|(k, &m)| {
+            let n = (m - 1.0).abs().round();
+            k == 0 || cutoff.resolves(perimeter / n)
+        })
+        .collect()
+}
+
+/// The rows/columns `idx` of a square matrix.
+fn block(a: &DMatrix<f64>, rows: &[usize], cols: &[usize]) -> DMatrix<f64> {
+    DMatrix::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])])
+}
+
+/// One point of the descent: the held modes at equilibrium, the potential,
+/// its gradient, Hessian and metric in the resolved coefficients.
+struct Point {
+    u: DVector<f64>,
+    potential: f64,
+    gradient: DVector<f64>,
+    hessian: DMatrix<f64>,
+    metric: DMatrix<f64>,
+    /// dS/dA of the held modes' equilibrium (for the next predictor).
+    held_response: DMatrix<f64>,
+}
+
+/// The descent's problem.
+struct Descent<'a> {
+    ex: &'a Exact,
+    force: f64,
+    free: Vec<usize>,
+    held: Vec<usize>,
+}
+
+impl Descent<'_> {
+    /// The Hessian of V at the held force in the coefficients (the
+    /// bordered Hessian's Schur complement on δ̄), symmetrised.
+    fn hessian(&self, u: &DVector<f64>) -> Option<DMatrix<f64>> {
+        let b = self.ex.bordered_hessian(u)?;
+        let m = b.nrows() - 1;
+        let h = b.view((0, 0), (m, m)).into_owned();
+        let border = b.view((0, m), (m, 1)).into_owned();
+        let corner = b[(m, m)];
+        if !(corner.abs() > 0.0) {
+            return None;
+        }
+        let h = h - &border * border.transpose() / corner;
+        Some((&h + h.transpose()) * 0.5)
+    }
+
+    /// The point at the coefficients of u: the held modes put at
+    /// equilibrium first (Newton's method on their gradient).
+    fn point(&self, mut u: DVector<f64>) -> Option<Point> {
+        for _ in 0..30 {
+            let at = self.ex.at_force(&u, self.force)?;
+            let hess = self.hessian(&at.u)?;
+            let g_held =
+                DVector::from_iterator(self.held.len(), self.held.iter().map(|&k| at.gradient[k]));
+            let scale = at.gradient.amax().max(1.0);
+            let h_hh = block(&hess, &self.held, &self.held);
+            if g_held.amax() <= 1e-11 * scale {
+                let free = &self.free;
+                let h_ff = block(&hess, free, free);
+                let h_fh = block(&hess, free, &self.held);
+                let (hessian, held_response) = if self.held.is_empty() {
+                    (h_ff, DMatrix::zeros(0, free.len()))
+                } else {
+                    let lu = h_hh.lu();
+                    let response = -lu.solve(&h_fh.transpose())?;
+                    (&h_ff + &h_fh * &response, response)
+                };
+                return Some(Point {
+                    gradient: DVector::from_iterator(
+                        free.len(),
+                        free.iter().map(|&k| at.gradient[k]),
+                    ),
+                    metric: block(&at.metric, free, free),
+                    potential: at.potential,
+                    u: at.u,
+                    hessian,
+                    held_response,
+                });
+            }
+            let step = h_hh.lu().solve(&(-g_held))?;
+            for (i, &k) in self.held.iter().enumerate() {
+                u[k] += step[i];
+            }
+        }
+        None
+    }
+}
+
+/// The descent of the potential at the held `force` from the contour and
+/// approach of `start` (a state of `ex`'s truncation in the conformal-map
+/// form), moving the modes that `cutoff` resolves.
+pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff) -> Landing {
+    if ex.truncation.arclength > 0 {
+        return Landing::NotSettled(
+            "the descent moves contours of the conformal-map form only".into(),
+        );
+    }
+    let samples = start.contour.samples(&ex.grid);
+    let h = 2.0 * std::f64::consts::PI / ex.grid.len() as f64;
+    let perimeter: f64 = samples.dz.iter().map(|d| d.norm()).sum::<f64>() * h;
+    let resolved = resolved_coefficients(ex, perimeter, cutoff);
+    let (free, held): (Vec<usize>, Vec<usize>) = (0..resolved.len()).partition(|&k| resolved[k]);
+    let d = Descent {
+        ex,
+        force,
+        free,
+        held,
+    };
+    let Some(mut p) = d.point(ex.unknowns(start)) else {
+        return Landing::NotSettled(format!(
+            "the modes shorter than the cutoff have no equilibrium near the start (a = {:.4})",
+            start.a_bar
+        ));
+    };
+    let start_u = p.u.clone();
+    let start_area = area(ex, &start_u);
+    let mut kicks = 0;
+    // Newton's step first (a start near a minimum, the path's common
+    // case); shortened where the Hessian is not positive definite
+    let mut tau: f64 = 1e6;
+    // whether the last pass found no step above round-off
+    let mut at_rest = false;
+    for _ in 0..MAX_STEPS {
+        if crate::newton::check_stop().is_err() {
+            return Landing::NotSettled("stopped at the caller's request".into());
+        }
+        let a_bar = ex.contour_of(&p.u).a_bar();
+        if area(ex, &p.u) < start_area / 10.0 {
+            return Landing::Detached;
+        }
+        // the normal speed's norm: gᵀM⁻¹g
+        let Some(mc) = p.metric.clone().cholesky() else {
+            return Landing::NotSettled(format!("the contour degenerates at a = {a_bar:.4}"));
+        };
+        let speed = p.gradient.dot(&mc.solve(&p.gradient)).max(0.0).sqrt();
+        if at_rest || speed < STATIONARY * p.gradient.amax().max(1.0) {
+            at_rest = false;
+            // a minimum lands; a saddle (a resolved mode unstable) is left
+            // along its most unstable direction, on the side the descent
+            // came from (the path's imperfection picks it)
+            match unstable_direction(&p, &mc) {
+                None => return land(ex, &p, force),
+                Some(_) if kicks == MAX_KICKS => {
+                    return Landing::NotSettled(format!(
+                        "the descent stays on a saddle at a = {a_bar:.4}"
+                    ))
+                }
+                Some(v) => {
+                    kicks += 1;
+                    let came = DVector::from_iterator(
+                        d.free.len(),
+                        d.free.iter().map(|&k| p.u[k] - start_u[k]),
+                    );
+                    let sign = if came.dot(&v) < 0.0 { -1.0 } else { 1.0 };
+                    let kick = v * (sign * KICK * a_bar);
+                    let mut u = p.u.clone();
+                    for (i, &k) in d.free.iter().enumerate() {
+                        u[k] += kick[i];
+                    }
+                    let held_step = &p.held_response * &kick;
+                    for (i, &k) in d.held.iter().enumerate() {
+                        u[k] += held_step[i];
+                    }
+                    match d.point(u) {
+                        Some(next) => {
+                            p = next;
+                            tau = 1e-2;
+                            continue;
+                        }
+                        None => {
+                            return Landing::NotSettled(format!(
+                                "the contour off the saddle at a = {a_bar:.4} has no equilibrium of its short modes"
+                            ))
+                        }
+                    }
+                }
+            }
+        }
+        let mut moved = false;
+        let mut stationary = false;
+        // whether a trial step failed for want of the held modes'
+        // equilibrium (rather than for the potential)
+        let mut unreachable_equilibrium = false;
+        while tau > 1e-12 {
+            let Some(ch) = (&p.hessian + &p.metric / tau).cholesky() else {
+                tau /= 4.0;
+                continue;
+            };
+            let step = ch.solve(&(-&p.gradient));
+            let predicted = p.gradient.dot(&step);
+            // a decrease below the potential's round-off cannot be seen:
+            // the point is stationary to working precision
+            if tau >= 1.0 && -predicted < 1e-13 * p.potential.abs().max(1.0) {
+                stationary = true;
+                break;
+            }
+            let mut u = p.u.clone();
+            for (i, &k) in d.free.iter().enumerate() {
+                u[k] += step[i];
+            }
+            let held_step = &p.held_response * &step;
+            for (i, &k) in d.held.iter().enumerate() {
+                u[k] += held_step[i];
+            }
+            match d.point(u) {
+                Some(next) if next.potential <= p.potential + 1e-4 * predicted => {
+                    p = next;
+                    tau = (tau * 4.0).min(1e12);
+                    moved = true;
+                    break;
+                }
+                other => {
+                    unreachable_equilibrium |= other.is_none();
+                    tau /= 4.0
+                }
+            }
+        }
+        if stationary {
+            at_rest = true;
+            continue;
+        }
+        if !moved {
+            let at = ex.contour_of(&p.u);
+            let why = if d.held.is_empty() || !unreachable_equilibrium {
+                "no step lowers the potential"
+            } else {
+                "the contour modes shorter than the cutoff lose their equilibrium (what the contact does then is below the thin-layer model's resolution)"
+            };
+            let after = if kicks > 0 {
+                " (after leaving an unstable state along a resolved mode: the contact changes shape towards contours the series does not follow)"
+            } else {
+                ""
+            };
+            return Landing::NotSettled(format!(
+                "{why} at a = {:.4}, s = {:.4}{after}",
+                at.a_bar(),
+                at.b_bar() / at.a_bar()
+            ));
+        }
+    }
+    Landing::NotSettled(format!("no minimum within {MAX_STEPS} steps"))
+}
+
+/// The contact's area |ω| = ∮ X dY at u.
+fn area(ex: &Exact, u: &DVector<f64>) -> f64 {
+    let s = ex.contour_of(u).samples(&ex.grid);
+    let h = 2.0 * std::f64::consts::PI / ex.grid.len() as f64;
+    s.z.iter()
+        .zip(&s.dz)
+        .map(|(z, dz)| z.re * dz.im)
+        .sum::<f64>()
+        * h
+}
+
+/// The stationary point `p`, solved again at the force by Newton's method
+/// (all modes, the truncation's equations).
+fn land(ex: &Exact, p: &Point, force: f64) -> Landing {
+    let id = ex.unknown_count() - 1;
+    match ex.solve_at(Hold::Force(force), &ex.contour_of(&p.u), p.u[id]) {
+        Ok(st) => Landing::Landed(Box::new(st)),
+        Err(e) => Landing::NotSettled(format!("Newton at the descent's end failed: {e}")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::{Contour, Truncation};
+
+    /// At ρ = 1 the circles are the states, F̄ = π(ā⁶ − 24ā³)/96, with the
+    /// load-controlled pull-off at ā³ = 12: at a force just above it, a
+    /// contact started just above the smaller (unstable) circle descends
+    /// to the larger (stable) one, one started just below it comes off; at
+    /// a force below the pull-off the stable circle of the pull-off comes
+    /// off.
+    #[test]
+    fn at_rho_1_the_descent_finds_the_stable_circle_or_comes_off() {
+        let ex = Exact::new(1.0, Truncation::with_modes(8)).unwrap();
+        let force_of = |a: f64| std::f64::consts::PI * (a.powi(6) - 24.0 * a.powi(3)) / 96.0;
+        let pull_off_a = 12f64.cbrt();
+        let force = force_of(pull_off_a) + 0.5;
+        // the two circles at that force, by bisection on either side
+        let root = |mut lo: f64, mut hi: f64| {
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                if (force_of(mid) > force) == (force_of(lo) > force) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            0.5 * (lo + hi)
+        };
+        let small = root(0.5, pull_off_a);
+        let large = root(pull_off_a, 4.0);
+        let circle = |a: f64| {
+            ex.solve(a, &Contour::ellipse(a, a, 8), a * a / 4.0 - 2.0 / a)
+                .unwrap()
+        };
+        let cutoff = Cutoff::for_thinness(0.5).unwrap();
+        match descend(&ex, &circle(small + 0.05), force, cutoff) {
+            Landing::Landed(st) => {
+                assert!((st.a_bar - large).abs() < 1e-9, "{} vs {large}", st.a_bar);
+                assert!((st.force_bar - force).abs() < 1e-10);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(matches!(
+            descend(&ex, &circle(small - 0.05), force, cutoff),
+            Landing::Detached
+        ));
+        assert!(matches!(
+            descend(
+                &ex,
+                &circle(pull_off_a),
+                force_of(pull_off_a) - 1e-3,
+                cutoff
+            ),
+            Landing::Detached
+        ));
+    }
+}

@@ -1,0 +1,481 @@
+//! The loading path (issue 32 (b)): the states a contact takes when its
+//! load is lowered quasi-statically from a large load, F̄ = 10, to where it
+//! comes off, under load control, with the jump rule of
+//! `exact::descent` wherever the state it holds is lost.
+//!
+//! At each step in F̄ the contour descends the potential at the new force
+//! from the state at the last one (`descent::descend`): on a stable arm
+//! that is Newton's method with the arm's state as the guess; where the
+//! arm folds in F̄ (a load-controlled fold) or a resolved contour mode
+//! turns unstable, the descent carries the contact to another state, or it
+//! comes off. A step whose landing is not near its start is halved until
+//! the state is lost within 1e-3 (relative to max(1, |F̄|)); where it is
+//! lost is then the minimum of F̄ over ā on its arm, by the secant method
+//! on dF̄/dā (`Exact::force_minimum_in_size`), where there is one that
+//! near (a fold in F̄), else the last state held. From there the contour
+//! descends at a force 1e-4 lower: it lands on another state (a jump, an
+//! event with the force, the state before and the state after) or comes
+//! off (the path's pull-off: the last state held).
+//!
+//! Which modes count as resolved (and so move, or are held) is the
+//! short-wave cutoff's choice; the path depends on it, and every path says
+//! which cutoff it used.
+//!
+//! Owns: [`LoadingPath`], [`Jump`], [`PathEnd`], [`loading_path`],
+//! [`reported`]. May use: `exact` (the problem, `descent`, `resolve`),
+//! `control`, `cutoff`, `error`, `newton` (the stop request), `report`
+//! (the outcome's shape).
+
+// asked by the command line (`exact pull-off --unloading`)
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
+
+use super::descent::{descend, Landing};
+use super::resolve::ESCALATION;
+use super::{Exact, ExactState, Truncation, CONVERGED, RESOLVED};
+use crate::control::Hold;
+use crate::cutoff::Cutoff;
+use crate::error::Result;
+
+/// The large load the path starts from.
+pub(crate) const START_FORCE: f64 = 10.0;
+
+/// The force steps are halved down to this (relative to max(1, |F̄|)):
+/// where a step this short still loses the state held, it is lost within
+/// it.
+const BRACKET: f64 = 1e-3;
+
+/// How far below the force where a state is lost the descent from it is
+/// taken (relative to max(1, |F̄|)): far enough to leave the fold's
+/// bottleneck in a few dozen steps, near enough for the landing to be the
+/// fold's.
+const PUSH: f64 = 1e-4;
+
+/// The largest step in F̄.
+const MAX_STEP: f64 = 1.0;
+
+/// A jump of the path: at `force` the state held at the step before is
+/// lost and the contact descends to `to`.
+#[derive(Clone, Debug)]
+pub(crate) struct Jump {
+    /// The force at which the state before is lost.
+    pub force: f64,
+    /// The last state held before the jump.
+    pub from: ExactState,
+    /// Where the descent lands.
+    pub to: ExactState,
+}
+
+/// How a path ends.
+#[derive(Clone, Debug)]
+pub(crate) enum PathEnd {
+    /// The contact comes off: `state` is the last one held (the path's
+    /// pull-off), `located` says how its force was located.
+    PullOff { state: Box<ExactState> },
+    /// The state held is lost at `state` (located as for a pull-off), and
+    /// where the contact goes from there is not settled (`why`, in words):
+    /// the force of the path's pull-off is then at most this state's.
+    Lost { state: Box<ExactState>, why: String },
+    /// The path stops before a state is lost (in words).
+    NotSettled(String),
+}
+
+/// The path from F̄ = 10 down.
+#[derive(Clone, Debug)]
+pub(crate) struct LoadingPath {
+    /// The states held on the way, at decreasing F̄ (the start first).
+    pub states: Vec<ExactState>,
+    /// The jumps on the way, in order.
+    pub jumps: Vec<Jump>,
+    /// Where it ends.
+    pub end: PathEnd,
+}
+
+/// Whether `b` continues the arm of `a` (a small step in F̄ moves a state
+/// on an arm by little; a jump moves it by a finite amount).
+fn near(a: &ExactState, b: &ExactState) -> bool {
+    let scale = a.a_bar.max(1.0);
+    let coefficients = std::iter::once(a.contour.a - b.contour.a)
+        .chain(a.contour.b.iter().zip(&b.contour.b).map(|(x, y)| x - y));
+    coefficients.fold(0.0f64, |m, d| m.max(d.abs())) <= 0.02 * scale
+}
+
+/// The loading path at `rho` from F̄ = 10 down, with `cutoff` choosing the
+/// resolved modes.
+pub(crate) fn loading_path(rho: f64, cutoff: Cutoff) -> Result<LoadingPath> {
+    let start = super::at_resolved(rho, Hold::Force(START_FORCE))?;
+    let ex = Exact::new(rho, start.truncation)?;
+    Ok(follow(ex, start, cutoff))
+}
+
+/// `st` (a state of `ex`) or, where `ex`'s modes do not resolve it to
+/// [`CONVERGED`] (its fine-grid boundary error), the same state solved
+/// again at the force with more modes of the escalation, up to the first
+/// that does; accepted when its boundary error is at most [`RESOLVED`].
+fn resolved(ex: Exact, st: ExactState) -> std::result::Result<(Exact, ExactState), String> {
+    if st.bc_error <= CONVERGED {
+        return Ok((ex, st));
+    }
+    let mut best = (ex, st);
+    let rungs: Vec<usize> = ESCALATION
+        .iter()
+        .copied()
+        .filter(|&m| m > best.0.truncation.modes)
+        .collect();
+    for modes in rungs {
+        let st = &best.1;
+        let Ok(finer) = Exact::new(best.0.rho, Truncation::with_modes(modes)) else {
+            continue;
+        };
+        if let Ok(again) = finer.solve_at(Hold::Force(st.force_bar), &st.contour, st.delta_bar) {
+            if again.bc_error < st.bc_error && near(st, &again) {
+                let done = again.bc_error <= CONVERGED;
+                best = (finer, again);
+                if done {
+                    break;
+                }
+            }
+        }
+    }
+    if best.1.bc_error <= RESOLVED {
+        return Ok(best);
+    }
+    Err(format!(
+        "at force = {} the state (a = {:.4}) is not resolved by {} modes (boundary error {:.1e})",
+        crate::error::rounded(best.1.force_bar),
+        best.1.a_bar,
+        best.0.truncation.modes,
+        best.1.bc_error
+    ))
+}
+
+/// Where the state `held` is lost, given that a step of at most
+/// [`BRACKET`] loses it (to `force`, where the descent gave `landing`):
+/// the minimum of F̄ over ā on its arm where there is one in the bracket
+/// (the secant method, else the traced arm), from which the descent is
+/// taken again just below; else `held` and that landing.
+fn where_lost(
+    ex: &Exact,
+    held: &ExactState,
+    force: f64,
+    landing: Landing,
+    cutoff: Cutoff,
+) -> (ExactState, Landing) {
+    let in_bracket =
+        |m: &ExactState| near(held, m) && m.force_bar <= held.force_bar && m.force_bar >= force;
+    let fold = ex
+        .force_minimum_in_size(held)
+        .ok()
+        .filter(in_bracket)
+        .or_else(|| {
+            ex.force_minimum_nearest(held, held.a_bar - 0.05)
+                .ok()
+                .filter(in_bracket)
+        });
+    match fold {
+        Some(m) => {
+            let below = m.force_bar - PUSH * m.force_bar.abs().max(1.0);
+            let from_fold = descend(ex, &m, below, cutoff);
+            (m, from_fold)
+        }
+        None => (held.clone(), landing),
+    }
+}
+
+/// The path from `start` (a state of `ex`'s truncation) down.
+fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
+    let mut states = vec![start.clone()];
+    let mut jumps = Vec::new();
+    let mut held = start;
+    let mut ex = ex;
+    let mut step: f64 = 0.25;
+    let done = |states, jumps, end| LoadingPath { states, jumps, end };
+    loop {
+        if let Err(e) = crate::newton::check_stop() {
+            return done(states, jumps, PathEnd::NotSettled(e.to_string()));
+        }
+        let scale = held.force_bar.abs().max(1.0);
+        // a state unstable under load to a resolved mode is lost where it
+        // is: the descent leaves it along that mode (`descend` kicks a
+        // saddle)
+        let unstable = held
+            .stability
+            .clone()
+            .under(cutoff)
+            .load
+            .into_iter()
+            .find(|m| m.resolved);
+        let (lost, landing, shape) = if let Some(m) = unstable {
+            let landing = descend(&ex, &held, held.force_bar, cutoff);
+            let words = format!(
+                "the state at force = {} is unstable under load to the resolved mode n = {} (wavelength {:.3}); from there: ",
+                crate::error::rounded(held.force_bar),
+                m.n,
+                m.wavelength
+            );
+            (held.clone(), landing, words)
+        } else {
+            let force = held.force_bar - step;
+            let landing = descend(&ex, &held, force, cutoff);
+            match landing {
+                Landing::Landed(st) if near(&held, &st) => {
+                    match resolved(ex, *st) {
+                        Ok((e, st)) => {
+                            ex = e;
+                            held = st;
+                        }
+                        Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
+                    }
+                    states.push(held.clone());
+                    step = (step * 1.5).min(MAX_STEP);
+                    continue;
+                }
+                _ if step > BRACKET * scale => {
+                    step *= 0.5;
+                    continue;
+                }
+                _ => {}
+            }
+            // the state held is lost within BRACKET below its force
+            let (lost, landing) = where_lost(&ex, &held, force, landing, cutoff);
+            (lost, landing, String::new())
+        };
+        match landing {
+            Landing::Landed(st) if !near(&lost, &st) => {
+                jumps.push(Jump {
+                    force: lost.force_bar,
+                    from: lost,
+                    to: (*st).clone(),
+                });
+                match resolved(ex, *st) {
+                    Ok((e, st)) => {
+                        ex = e;
+                        held = st;
+                    }
+                    Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
+                }
+                states.push(held.clone());
+                step = 0.25;
+            }
+            Landing::Landed(_) => {
+                return done(
+                    states,
+                    jumps,
+                    PathEnd::NotSettled(format!(
+                        "{shape}at force = {} the state is lost for a step of {:.0e} but the descent from it lands beside it",
+                        crate::error::rounded(lost.force_bar),
+                        BRACKET * scale,
+                    )),
+                )
+            }
+            Landing::Detached => {
+                return done(
+                    states,
+                    jumps,
+                    PathEnd::PullOff {
+                        state: Box::new(lost),
+                    },
+                );
+            }
+            Landing::NotSettled(why) => {
+                return done(
+                    states,
+                    jumps,
+                    PathEnd::Lost {
+                        state: Box::new(lost),
+                        why: format!("{shape}{why}"),
+                    },
+                )
+            }
+        }
+        if jumps.len() > 50 {
+            return done(
+                states,
+                jumps,
+                PathEnd::NotSettled("more than 50 jumps".into()),
+            );
+        }
+    }
+}
+
+/// The loading path at `pull_off.rho` judged against `pull_off` (the
+/// pull-off the trace reports): an entry of its `passed` list.
+pub(crate) fn reported(pull_off: &ExactState, cutoff: Cutoff) -> crate::report::Passed {
+    let path = loading_path(pull_off.rho, cutoff);
+    let (held, jumps, lost, comes_off, why): (usize, Vec<(f64, f64)>, _, _, _) = match &path {
+        Err(e) => (0, Vec::new(), None, None, Some(e.to_string())),
+        Ok(p) => {
+            let (comes_off, why) = match &p.end {
+                PathEnd::PullOff { .. } => (Some(true), None),
+                PathEnd::Lost { why, .. } => (Some(false), Some(why.clone())),
+                PathEnd::NotSettled(why) => (None, Some(why.clone())),
+            };
+            (
+                p.states.len(),
+                p.jumps.iter().map(|j| (j.force, j.to.a_bar)).collect(),
+                p.first_lost(),
+                comes_off,
+                why,
+            )
+        }
+    };
+    crate::report::Passed::LoadingPath {
+        from_force: START_FORCE,
+        cutoff_thinness: cutoff.thinness,
+        states_held: held,
+        jump_forces: jumps.iter().map(|j| j.0).collect(),
+        jump_landing_a_bar: jumps.iter().map(|j| j.1).collect(),
+        first_lost_force: lost.map(|s| s.force_bar),
+        first_lost_a_bar: lost.map(|s| s.a_bar),
+        reaches: lost.map(|s| {
+            (s.force_bar - pull_off.force_bar).abs() <= 1e-6 * pull_off.force_bar.abs()
+                && (s.a_bar - pull_off.a_bar).abs() <= 1e-3 * pull_off.a_bar
+        }),
+        comes_off,
+        why_not_settled: why,
+    }
+}
+
+impl LoadingPath {
+    /// The path's pull-off state, or why there is none.
+    #[cfg(test)]
+    pub(crate) fn pull_off(&self) -> Result<&ExactState> {
+        match &self.end {
+            PathEnd::PullOff { state, .. } => Ok(state),
+            PathEnd::Lost { state, why, .. } => Err(crate::error::Error::NoState(format!(
+                "the loading path from force = {START_FORCE} loses its state at force = {}, a = {}, and where the contact goes from there is not settled: {why}",
+                crate::error::rounded(state.force_bar),
+                crate::error::rounded(state.a_bar)
+            ))),
+            PathEnd::NotSettled(why) => Err(crate::error::Error::NoState(format!(
+                "the loading path from force = {START_FORCE} is not settled: {why}"
+            ))),
+        }
+    }
+
+    /// The first state the path loses (at a fold in F̄ or a resolved mode
+    /// turning unstable): the first jump's start, else the end's state.
+    pub(crate) fn first_lost(&self) -> Option<&ExactState> {
+        self.jumps.first().map(|j| &j.from).or(match &self.end {
+            PathEnd::PullOff { state, .. } | PathEnd::Lost { state, .. } => Some(&**state),
+            PathEnd::NotSettled(_) => None,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// At ρ = 1 the path from F̄ = 10 is the circle all the way (the circle
+    /// is stable under load to every mode longer than the cutoff at h/L =
+    /// 0.5), and it comes off at the closed form's pull-off, ā³ = 12,
+    /// F̄ = −3π/2, with no jump.
+    #[test]
+    fn at_rho_1_the_path_is_the_circle_down_to_the_closed_form_pull_off() {
+        let path = loading_path(1.0, Cutoff::for_thinness(0.5).unwrap()).unwrap();
+        assert!(path.jumps.is_empty(), "{:?}", path.jumps.len());
+        let p = path.pull_off().unwrap();
+        assert!(
+            (p.force_bar + 1.5 * std::f64::consts::PI).abs() < 1e-9,
+            "{}",
+            p.force_bar
+        );
+        assert!((p.a_bar - 12f64.cbrt()).abs() < 1e-5, "{}", p.a_bar);
+        for st in &path.states {
+            assert!(
+                st.s > 1.0 - 1e-9 && st.bc_error < 1e-9,
+                "{} {}",
+                st.s,
+                st.bc_error
+            );
+        }
+    }
+
+    /// At ρ = 0.8 the path from F̄ = 10 first loses its state at a fold in
+    /// F̄ that is the load-controlled pull-off the trace finds
+    /// (`pull_off_resolved`, the first minimum of F̄ on the arm traced from
+    /// near the model's pull-off): two routes, the descent and secant on
+    /// one side, the arm's trace on the other. Every state held on the way
+    /// is resolved and stable under load above the cutoff of h/L = 0.5.
+    #[test]
+    fn at_rho_0_8_the_path_first_loses_its_state_at_the_traced_pull_off() {
+        let cutoff = Cutoff::for_thinness(0.5).unwrap();
+        let path = loading_path(0.8, cutoff).unwrap();
+        let lost = path.first_lost().expect("a state is lost");
+        let (traced, _) = crate::exact::pull_off_resolved(0.8).unwrap();
+        assert!(
+            (lost.force_bar - traced.force_bar).abs() < 1e-8,
+            "{} vs {}",
+            lost.force_bar,
+            traced.force_bar
+        );
+        assert!(
+            (lost.a_bar - traced.a_bar).abs() < 1e-5,
+            "{} vs {}",
+            lost.a_bar,
+            traced.a_bar
+        );
+        assert!(path.jumps.is_empty());
+        for st in &path.states {
+            assert!(st.bc_error <= RESOLVED, "{}", st.bc_error);
+            assert_ne!(
+                st.stability.clone().under(cutoff).stable_load,
+                Some(false),
+                "F = {}",
+                st.force_bar
+            );
+        }
+    }
+
+    /// The paths at several ρ and thinnesses, printed (a probe, not a check).
+    #[test]
+    #[ignore]
+    fn probe_loading_paths() {
+        let rhos: Vec<f64> = std::env::var("PROBE_RHOS")
+            .map(|v| v.split(',').map(|x| x.parse().unwrap()).collect())
+            .unwrap_or_else(|_| vec![0.8, 0.5]);
+        let hs: Vec<f64> = std::env::var("PROBE_HS")
+            .map(|v| v.split(',').map(|x| x.parse().unwrap()).collect())
+            .unwrap_or_else(|_| vec![0.5, 0.1]);
+        for &rho in &rhos {
+            for &h in &hs {
+                let t = std::time::Instant::now();
+                let path = loading_path(rho, Cutoff::for_thinness(h).unwrap());
+                match path {
+                    Err(e) => println!("rho {rho} h {h}: {e}"),
+                    Ok(p) => {
+                        println!(
+                            "rho {rho} h {h}: {} states, {:.1} s",
+                            p.states.len(),
+                            t.elapsed().as_secs_f64()
+                        );
+                        for st in p.states.iter().step_by((p.states.len() / 12).max(1)) {
+                            println!(
+                                "   F {:9.5} a {:.5} s {:.5} bc {:.1e} dev {:.3}",
+                                st.force_bar,
+                                st.a_bar,
+                                st.s,
+                                st.bc_error,
+                                st.deviation_from_ellipse
+                            );
+                        }
+                        for j in &p.jumps {
+                            println!("   JUMP at F {:.7}: a {:.5} -> {:.5}, s {:.5} -> {:.5}, delta {:.5} -> {:.5}, dev {:.3} -> {:.3}", j.force, j.from.a_bar, j.to.a_bar, j.from.s, j.to.s, j.from.delta_bar, j.to.delta_bar, j.from.deviation_from_ellipse, j.to.deviation_from_ellipse);
+                        }
+                        match &p.end {
+                            PathEnd::PullOff { state } => println!(
+                                "   PULL-OFF F {:.9} a {:.6} s {:.6} bc {:.1e}",
+                                state.force_bar, state.a_bar, state.s, state.bc_error
+                            ),
+                            PathEnd::Lost { state, why } => println!(
+                                "   LOST at F {:.9} a {:.6} s {:.6} bc {:.1e}: {why}",
+                                state.force_bar, state.a_bar, state.s, state.bc_error
+                            ),
+                            PathEnd::NotSettled(w) => println!("   NOT SETTLED: {w}"),
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
