@@ -29,7 +29,7 @@ use crate::fold::FoldCondition;
 use crate::{Contact, Error, ModelId, State};
 
 /// The radii ratios of the table.
-pub(crate) const RHOS: [f64; 10] = [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1];
+pub(crate) const RHOS: [f64; 12] = [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.02];
 
 /// What a table compares.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -278,6 +278,10 @@ pub(crate) fn render_row(r: &Row) -> String {
                     "no exact value: the near-elliptic family turns back at ρ = {} (a fold in ρ; exact.md)",
                     crate::error::rounded(*fold)
                 ),
+                Error::StopsInRho { reached, .. } => format!(
+                    "no exact value: followed in ρ, it converges down to ρ = {} only (exact.md)",
+                    crate::error::rounded(*reached)
+                ),
                 _ => format!("no exact value: {}", cell(&why)),
             };
             cells.push(short);
@@ -347,8 +351,9 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
         .map(|r| r.rho)
         .fold(f64::INFINITY, f64::min);
     o.push_str(&format!(
-        "\nThe exact pull-off on this family is resolved down to ρ = {lowest}; below, it is not resolved \
-         by the contour series at 96 modes or the continuations in ρ stop (the rows say which).\n"
+        "\nThe exact pull-off on this family is resolved down to ρ = {lowest}; below, the pull-off followed \
+         in ρ in the arclength representation stops converging (the rows say where; exact.md, \
+         \"Convergence under refinement\").\n"
     ));
     let names: Vec<String> = ModelId::ALL.iter().map(|m| format!("`{m}`")).collect();
     for q in Quantity::ALL {

@@ -64,6 +64,17 @@ pub enum Error {
         /// ā and the two states beside it, and the routes tried before.
         what: String,
     },
+    /// A state followed in ρ from a larger ρ (the pull-off in the
+    /// arclength representation) converges down to `reached` only, above
+    /// the ρ asked for: a `no_state` for machine readers, told apart so
+    /// that a table can say where in few words.
+    #[error("no contact state: {what}")]
+    StopsInRho {
+        /// The smallest ρ at which the followed state converged.
+        reached: f64,
+        /// The whole story: how it stopped, and the routes tried before.
+        what: String,
+    },
     /// The request itself is incomplete or contradictory (a usage error,
     /// not a property of the contact).
     #[error("usage: {0}")]
@@ -103,7 +114,10 @@ impl Error {
             Error::OutOfRange { .. } => "out_of_range",
             Error::NoConvergence { .. } => "no_convergence",
             Error::Unresolved { .. } => "unresolved",
-            Error::NoState(_) | Error::InBand(_) | Error::PastRhoFold { .. } => "no_state",
+            Error::NoState(_)
+            | Error::InBand(_)
+            | Error::PastRhoFold { .. }
+            | Error::StopsInRho { .. } => "no_state",
             Error::Usage(_) => "usage",
             Error::Unsupported { .. } => "unsupported",
             Error::Io(_) => "io",
@@ -117,9 +131,10 @@ impl Error {
     /// `not resolved: `), to nest it in another message.
     pub fn detail(&self) -> String {
         match self {
-            Error::NoState(why) | Error::InBand(why) | Error::PastRhoFold { what: why, .. } => {
-                why.clone()
-            }
+            Error::NoState(why)
+            | Error::InBand(why)
+            | Error::PastRhoFold { what: why, .. }
+            | Error::StopsInRho { what: why, .. } => why.clone(),
             Error::Unresolved { what, .. } => what.clone(),
             other => other.to_string(),
         }

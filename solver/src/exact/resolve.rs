@@ -246,12 +246,15 @@ pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Ve
             pull_off_followed_in_arclength(&start, rho)
                 .map(|st| (st, Vec::new()))
                 .or_else(|arclength| {
+                    // (the arclength follow, the deepest route, said first)
                     pull_off_continued_in_rho(&start, rho).map_err(|conformal| {
-                        Error::NoState(format!(
-                            "{why}; {}; {}",
-                            arclength.detail(),
-                            conformal.detail()
-                        ))
+                        let what = format!("{}; {why}; {}", arclength.detail(), conformal.detail());
+                        match arclength {
+                            Error::StopsInRho { reached, .. } => {
+                                Error::StopsInRho { reached, what }
+                            }
+                            _ => Error::NoState(what),
+                        }
                     })
                 })
         }
@@ -348,15 +351,20 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         // (a value in a band, Error::InBand, is answered as it is)
         // (a fold in ρ of the family continued from a larger ρ is said
         // first, as what decides)
-        Err(Error::NoState(why)) => from_larger_rho(gap, rho, control).or_else(|more| {
-            screened(gap, rho, control).map_err(|last| match more {
-                Error::PastRhoFold { fold, what } => Error::PastRhoFold {
-                    fold,
-                    what: format!("{what}; {why}; {}", last.detail()),
-                },
-                more => Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail())),
+        // (a search whose Newton or trace did not converge found no state
+        // either: the same routes follow)
+        Err(e @ (Error::NoState(_) | Error::NoConvergence { .. })) => {
+            let why = e.detail();
+            from_larger_rho(gap, rho, control).or_else(|more| {
+                screened(gap, rho, control).map_err(|last| match more {
+                    Error::PastRhoFold { fold, what } => Error::PastRhoFold {
+                        fold,
+                        what: format!("{what}; {why}; {}", last.detail()),
+                    },
+                    more => Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail())),
+                })
             })
-        }),
+        }
         other => other,
     }
 }
@@ -670,21 +678,27 @@ pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Re
             Ok(_) if k + 1 < ARCLENGTH_ESCALATION.len() => k += 1,
             _ if step > 0.00125 => step *= 0.5,
             Ok(po) => {
-                return Err(Error::NoState(format!(
-                    "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {} the boundary error is {:.1e} with {} modes",
-                    crate::error::rounded(at.rho),
-                    crate::error::rounded(next),
-                    po.bc_error,
-                    t.modes
-                )))
+                return Err(Error::StopsInRho {
+                    reached: at.rho,
+                    what: format!(
+                        "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {} the boundary error is {:.1e} with {} modes",
+                        crate::error::rounded(at.rho),
+                        crate::error::rounded(next),
+                        po.bc_error,
+                        t.modes
+                    ),
+                })
             }
             Err(e) => {
-                return Err(Error::NoState(format!(
-                    "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {}: {}",
-                    crate::error::rounded(at.rho),
-                    crate::error::rounded(next),
-                    e.to_string().chars().take(160).collect::<String>()
-                )))
+                return Err(Error::StopsInRho {
+                    reached: at.rho,
+                    what: format!(
+                        "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {}: {}",
+                        crate::error::rounded(at.rho),
+                        crate::error::rounded(next),
+                        e.to_string().chars().take(160).collect::<String>()
+                    ),
+                })
             }
         }
     }
