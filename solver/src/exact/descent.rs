@@ -28,9 +28,11 @@
 //! Newton's step of the minimisation for large τ. A step is taken when
 //! H + M/τ is positive definite and V falls by at least 1e-4 of the
 //! predicted decrease; τ grows fourfold after a step and shrinks fourfold
-//! otherwise. Only the conformal-map form of the contour is descended (the
-//! arclength representation's reparametrisations move no contour and
-//! leave M singular).
+//! otherwise. In the arclength representation the shape coordinates are
+//! A and the b_j; the c_j follow from the gauge (θ proportional to
+//! arclength), to first order along its tangent and exactly after each
+//! step (the reparametrisations move no contour and would leave M
+//! singular).
 //!
 //! Owns: [`Landing`], [`descend`]. May use: `exact` (the problem, its
 //! energy and Newton), `control`, `cutoff`, `newton` (the stop request),
@@ -119,14 +121,22 @@ struct Point {
     metric: DMatrix<f64>,
     /// dS/dA of the held modes' equilibrium (for the next predictor).
     held_response: DMatrix<f64>,
+    /// ∂u/∂(shape coordinates) on the arclength representation's gauge
+    /// (the identity for the conformal-map form).
+    lift: DMatrix<f64>,
 }
 
 /// The descent's problem.
 struct Descent<'a> {
     ex: &'a Exact,
     force: f64,
+    /// Indices among the shape coordinates (A, b₀..b_{N−1}).
     free: Vec<usize>,
     held: Vec<usize>,
+    /// The number of shape coordinates, 1 + N.
+    shape: usize,
+    /// The number of gauge coefficients c_j (0 in the conformal-map form).
+    gauge: usize,
 }
 
 impl Descent<'_> {
@@ -145,15 +155,79 @@ impl Descent<'_> {
         Some((&h + h.transpose()) * 0.5)
     }
 
-    /// The point at the coefficients of u: the held modes put at
-    /// equilibrium first (Newton's method on their gradient).
-    fn point(&self, mut u: DVector<f64>) -> Option<Point> {
+    /// u moved onto the arclength representation's gauge (θ proportional
+    /// to arclength) by Newton's method in the c_j alone.
+    fn on_gauge(&self, mut u: DVector<f64>) -> Option<DVector<f64>> {
+        if self.gauge == 0 {
+            return Some(u);
+        }
         for _ in 0..30 {
+            let dz = self.ex.contour_of(&u).samples(&self.ex.grid).dz;
+            let rows = DVector::from_vec(self.ex.gauge_rows(&dz));
+            let scale = u[0] * u[0];
+            if rows.amax() <= 1e-13 * scale.max(1.0) {
+                return Some(u);
+            }
+            let g = self.ex.gauge_jacobian(&u);
+            let gc = g
+                .view((0, self.shape), (self.gauge, self.gauge))
+                .into_owned();
+            let step = gc.lu().solve(&(-rows))?;
+            for i in 0..self.gauge {
+                u[self.shape + i] += step[i];
+            }
+        }
+        None
+    }
+
+    /// ∂u/∂(shape coordinates) along the gauge at u: the identity on
+    /// (A, b_j) and −G_c⁻¹G_o for the c_j (G the gauge rows' Jacobian).
+    fn lift(&self, u: &DVector<f64>) -> Option<DMatrix<f64>> {
+        let m = self.shape + self.gauge;
+        let mut z = DMatrix::zeros(m, self.shape);
+        z.view_mut((0, 0), (self.shape, self.shape))
+            .fill_with_identity();
+        if self.gauge > 0 {
+            let g = self.ex.gauge_jacobian(u);
+            let go = g.view((0, 0), (self.gauge, self.shape)).into_owned();
+            let gc = g
+                .view((0, self.shape), (self.gauge, self.gauge))
+                .into_owned();
+            let dc = gc.lu().solve(&(-go))?;
+            z.view_mut((self.shape, 0), (self.gauge, self.shape))
+                .copy_from(&dc);
+        }
+        Some(z)
+    }
+
+    /// u moved by `d` in the shape coordinates, along the gauge's tangent.
+    fn moved(&self, u: &DVector<f64>, lift: &DMatrix<f64>, d: &DVector<f64>) -> DVector<f64> {
+        let mut out = u.clone();
+        let du = lift * d;
+        for k in 0..du.len() {
+            out[k] += du[k];
+        }
+        out
+    }
+
+    /// The point at the coefficients of u: on the gauge, the held modes
+    /// put at equilibrium first (Newton's method on their gradient).
+    fn point(&self, u: DVector<f64>) -> Option<Point> {
+        let mut u = u;
+        for _ in 0..30 {
+            u = self.on_gauge(u)?;
             let at = self.ex.at_force(&u, self.force)?;
-            let hess = self.hessian(&at.u)?;
+            let lift = self.lift(&at.u)?;
+            let hess = {
+                let h = self.hessian(&at.u)?;
+                let h = lift.transpose() * h * &lift;
+                (&h + h.transpose()) * 0.5
+            };
+            let gradient = lift.transpose() * &at.gradient;
+            let metric = lift.transpose() * &at.metric * &lift;
             let g_held =
-                DVector::from_iterator(self.held.len(), self.held.iter().map(|&k| at.gradient[k]));
-            let scale = at.gradient.amax().max(1.0);
+                DVector::from_iterator(self.held.len(), self.held.iter().map(|&k| gradient[k]));
+            let scale = gradient.amax().max(1.0);
             let h_hh = block(&hess, &self.held, &self.held);
             if g_held.amax() <= 1e-11 * scale {
                 let free = &self.free;
@@ -167,45 +241,57 @@ impl Descent<'_> {
                     (&h_ff + &h_fh * &response, response)
                 };
                 return Some(Point {
-                    gradient: DVector::from_iterator(
-                        free.len(),
-                        free.iter().map(|&k| at.gradient[k]),
-                    ),
-                    metric: block(&at.metric, free, free),
+                    gradient: DVector::from_iterator(free.len(), free.iter().map(|&k| gradient[k])),
+                    metric: block(&metric, free, free),
                     potential: at.potential,
                     u: at.u,
                     hessian,
                     held_response,
+                    lift,
                 });
             }
             let step = h_hh.lu().solve(&(-g_held))?;
+            let mut d = DVector::zeros(self.shape);
             for (i, &k) in self.held.iter().enumerate() {
-                u[k] += step[i];
+                d[k] = step[i];
             }
+            u = self.moved(&at.u, &lift, &d);
         }
         None
+    }
+
+    /// The shape coordinates' step of a step `d` in the free ones, the held
+    /// ones following their equilibrium to first order.
+    fn with_held(&self, p: &Point, d: &DVector<f64>) -> DVector<f64> {
+        let mut full = DVector::zeros(self.shape);
+        for (i, &k) in self.free.iter().enumerate() {
+            full[k] = d[i];
+        }
+        let held = &p.held_response * d;
+        for (i, &k) in self.held.iter().enumerate() {
+            full[k] = held[i];
+        }
+        full
     }
 }
 
 /// The descent of the potential at the held `force` from the contour and
-/// approach of `start` (a state of `ex`'s truncation in the conformal-map
-/// form), moving the modes that `cutoff` resolves.
+/// approach of `start` (a state of `ex`'s truncation), moving the modes
+/// that `cutoff` resolves.
 pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff) -> Landing {
-    if ex.truncation.arclength > 0 {
-        return Landing::NotSettled(
-            "the descent moves contours of the conformal-map form only".into(),
-        );
-    }
     let samples = start.contour.samples(&ex.grid);
     let h = 2.0 * std::f64::consts::PI / ex.grid.len() as f64;
     let perimeter: f64 = samples.dz.iter().map(|d| d.norm()).sum::<f64>() * h;
+    let shape = 1 + ex.truncation.modes;
     let resolved = resolved_coefficients(ex, perimeter, cutoff);
-    let (free, held): (Vec<usize>, Vec<usize>) = (0..resolved.len()).partition(|&k| resolved[k]);
+    let (free, held): (Vec<usize>, Vec<usize>) = (0..shape).partition(|&k| resolved[k]);
     let d = Descent {
         ex,
         force,
         free,
         held,
+        shape,
+        gauge: ex.truncation.arclength,
     };
     let Some(mut p) = d.point(ex.unknowns(start)) else {
         return Landing::NotSettled(format!(
@@ -254,14 +340,7 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
                     );
                     let sign = if came.dot(&v) < 0.0 { -1.0 } else { 1.0 };
                     let kick = v * (sign * KICK * a_bar);
-                    let mut u = p.u.clone();
-                    for (i, &k) in d.free.iter().enumerate() {
-                        u[k] += kick[i];
-                    }
-                    let held_step = &p.held_response * &kick;
-                    for (i, &k) in d.held.iter().enumerate() {
-                        u[k] += held_step[i];
-                    }
+                    let u = d.moved(&p.u, &p.lift, &d.with_held(&p, &kick));
                     match d.point(u) {
                         Some(next) => {
                             p = next;
@@ -295,14 +374,7 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
                 stationary = true;
                 break;
             }
-            let mut u = p.u.clone();
-            for (i, &k) in d.free.iter().enumerate() {
-                u[k] += step[i];
-            }
-            let held_step = &p.held_response * &step;
-            for (i, &k) in d.held.iter().enumerate() {
-                u[k] += held_step[i];
-            }
+            let u = d.moved(&p.u, &p.lift, &d.with_held(&p, &step));
             match d.point(u) {
                 Some(next) if next.potential <= p.potential + 1e-4 * predicted => {
                     p = next;
@@ -376,48 +448,56 @@ mod tests {
     /// off.
     #[test]
     fn at_rho_1_the_descent_finds_the_stable_circle_or_comes_off() {
-        let ex = Exact::new(1.0, Truncation::with_modes(8)).unwrap();
-        let force_of = |a: f64| std::f64::consts::PI * (a.powi(6) - 24.0 * a.powi(3)) / 96.0;
-        let pull_off_a = 12f64.cbrt();
-        let force = force_of(pull_off_a) + 0.5;
-        // the two circles at that force, by bisection on either side
-        let root = |mut lo: f64, mut hi: f64| {
-            for _ in 0..100 {
-                let mid = 0.5 * (lo + hi);
-                if (force_of(mid) > force) == (force_of(lo) > force) {
-                    lo = mid;
-                } else {
-                    hi = mid;
+        // both representations: the conformal-map form and the arclength
+        // one, whose c_j follow the gauge
+        for t in [Truncation::with_modes(8), Truncation::in_arclength(8)] {
+            let ex = Exact::new(1.0, t).unwrap();
+            let force_of = |a: f64| std::f64::consts::PI * (a.powi(6) - 24.0 * a.powi(3)) / 96.0;
+            let pull_off_a = 12f64.cbrt();
+            let force = force_of(pull_off_a) + 0.5;
+            // the two circles at that force, by bisection on either side
+            let root = |mut lo: f64, mut hi: f64| {
+                for _ in 0..100 {
+                    let mid = 0.5 * (lo + hi);
+                    if (force_of(mid) > force) == (force_of(lo) > force) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
                 }
+                0.5 * (lo + hi)
+            };
+            let small = root(0.5, pull_off_a);
+            let large = root(pull_off_a, 4.0);
+            let circle = |a: f64| {
+                ex.solve(a, &Contour::ellipse(a, a, 8), a * a / 4.0 - 2.0 / a)
+                    .unwrap()
+            };
+            let cutoff = Cutoff::for_thinness(0.5).unwrap();
+            match descend(&ex, &circle(small + 0.05), force, cutoff) {
+                Landing::Landed(st) => {
+                    assert!(
+                        (st.a_bar - large).abs() < 1e-9,
+                        "{t:?}: {} vs {large}",
+                        st.a_bar
+                    );
+                    assert!((st.force_bar - force).abs() < 1e-10);
+                }
+                other => panic!("{t:?}: {other:?}"),
             }
-            0.5 * (lo + hi)
-        };
-        let small = root(0.5, pull_off_a);
-        let large = root(pull_off_a, 4.0);
-        let circle = |a: f64| {
-            ex.solve(a, &Contour::ellipse(a, a, 8), a * a / 4.0 - 2.0 / a)
-                .unwrap()
-        };
-        let cutoff = Cutoff::for_thinness(0.5).unwrap();
-        match descend(&ex, &circle(small + 0.05), force, cutoff) {
-            Landing::Landed(st) => {
-                assert!((st.a_bar - large).abs() < 1e-9, "{} vs {large}", st.a_bar);
-                assert!((st.force_bar - force).abs() < 1e-10);
-            }
-            other => panic!("{other:?}"),
+            assert!(matches!(
+                descend(&ex, &circle(small - 0.05), force, cutoff),
+                Landing::Detached
+            ));
+            assert!(matches!(
+                descend(
+                    &ex,
+                    &circle(pull_off_a),
+                    force_of(pull_off_a) - 1e-3,
+                    cutoff
+                ),
+                Landing::Detached
+            ));
         }
-        assert!(matches!(
-            descend(&ex, &circle(small - 0.05), force, cutoff),
-            Landing::Detached
-        ));
-        assert!(matches!(
-            descend(
-                &ex,
-                &circle(pull_off_a),
-                force_of(pull_off_a) - 1e-3,
-                cutoff
-            ),
-            Landing::Detached
-        ));
     }
 }

@@ -30,7 +30,7 @@
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
 use super::descent::{descend, Landing};
-use super::resolve::ESCALATION;
+use super::resolve::{ARCLENGTH_ESCALATION, ESCALATION};
 use super::{Exact, ExactState, Truncation, CONVERGED, RESOLVED};
 use crate::control::Hold;
 use crate::cutoff::Cutoff;
@@ -91,12 +91,25 @@ pub(crate) struct LoadingPath {
 }
 
 /// Whether `b` continues the arm of `a` (a small step in F̄ moves a state
-/// on an arm by little; a jump moves it by a finite amount).
+/// on an arm by little; a jump moves it by a finite amount): every point of
+/// one contour within 2 % of ā of the other (either representation).
 fn near(a: &ExactState, b: &ExactState) -> bool {
-    let scale = a.a_bar.max(1.0);
-    let coefficients = std::iter::once(a.contour.a - b.contour.a)
-        .chain(a.contour.b.iter().zip(&b.contour.b).map(|(x, y)| x - y));
-    coefficients.fold(0.0f64, |m, d| m.max(d.abs())) <= 0.02 * scale
+    let points = |st: &ExactState| -> Vec<nalgebra::Complex<f64>> {
+        (0..128)
+            .map(|i| st.contour.at(std::f64::consts::PI * i as f64 / 64.0)[0])
+            .collect()
+    };
+    let (pa, pb) = (points(a), points(b));
+    let tolerance = 0.02 * a.a_bar.max(1.0);
+    let within = |from: &[nalgebra::Complex<f64>], to: &[nalgebra::Complex<f64>]| {
+        from.iter().all(|p| {
+            to.iter()
+                .map(|q| (p - q).norm())
+                .fold(f64::INFINITY, f64::min)
+                <= tolerance
+        })
+    };
+    within(&pa, &pb) && within(&pb, &pa)
 }
 
 /// The loading path at `rho` from F̄ = 10 down, with `cutoff` choosing the
@@ -109,21 +122,31 @@ pub(crate) fn loading_path(rho: f64, cutoff: Cutoff) -> Result<LoadingPath> {
 
 /// `st` (a state of `ex`) or, where `ex`'s modes do not resolve it to
 /// [`CONVERGED`] (its fine-grid boundary error), the same state solved
-/// again at the force with more modes of the escalation, up to the first
-/// that does; accepted when its boundary error is at most [`RESOLVED`].
+/// again at the force with more modes of the escalation (the conformal-map
+/// form's, then the arclength representation's), up to the first that
+/// does; accepted when its boundary error is at most [`RESOLVED`].
 fn resolved(ex: Exact, st: ExactState) -> std::result::Result<(Exact, ExactState), String> {
     if st.bc_error <= CONVERGED {
         return Ok((ex, st));
     }
     let mut best = (ex, st);
-    let rungs: Vec<usize> = ESCALATION
+    // the conformal-map form's rungs above the state's, then the
+    // arclength representation's (above the state's if it is in it)
+    let t = best.0.truncation;
+    let rungs: Vec<Truncation> = ESCALATION
         .iter()
-        .copied()
-        .filter(|&m| m > best.0.truncation.modes)
+        .filter(|&&m| t.arclength == 0 && m > t.modes)
+        .map(|&m| Truncation::with_modes(m))
+        .chain(
+            ARCLENGTH_ESCALATION
+                .iter()
+                .filter(|&&m| t.arclength == 0 || m > t.modes)
+                .map(|&m| Truncation::in_arclength(m)),
+        )
         .collect();
-    for modes in rungs {
+    for rung in rungs {
         let st = &best.1;
-        let Ok(finer) = Exact::new(best.0.rho, Truncation::with_modes(modes)) else {
+        let Ok(finer) = Exact::new(best.0.rho, rung) else {
             continue;
         };
         if let Ok(again) = finer.solve_at(Hold::Force(st.force_bar), &st.contour, st.delta_bar) {
@@ -140,10 +163,15 @@ fn resolved(ex: Exact, st: ExactState) -> std::result::Result<(Exact, ExactState
         return Ok(best);
     }
     Err(format!(
-        "at force = {} the state (a = {:.4}) is not resolved by {} modes (boundary error {:.1e})",
+        "at force = {} the state (a = {:.4}) is not resolved by {} modes{} (boundary error {:.1e})",
         crate::error::rounded(best.1.force_bar),
         best.1.a_bar,
         best.0.truncation.modes,
+        if best.0.truncation.arclength > 0 {
+            " of each sign in the arclength representation"
+        } else {
+            ""
+        },
         best.1.bc_error
     ))
 }
@@ -204,14 +232,23 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
             .load
             .into_iter()
             .find(|m| m.resolved);
-        let (lost, landing, shape) = if let Some(m) = unstable {
+        // (the verdict counts every mode free; the descent holds the
+        // shorter ones at equilibrium: where it stays on the state, the
+        // state is a minimum of what moves, and the path goes on)
+        let shape_loss = unstable.and_then(|m| {
             let landing = descend(&ex, &held, held.force_bar, cutoff);
+            let stays = matches!(&landing, Landing::Landed(st)
+                if (st.a_bar - held.a_bar).abs() <= 1e-6 * held.a_bar
+                    && (st.s - held.s).abs() <= 1e-6);
             let words = format!(
                 "the state at force = {} is unstable under load to the resolved mode n = {} (wavelength {:.3}); from there: ",
                 crate::error::rounded(held.force_bar),
                 m.n,
                 m.wavelength
             );
+            (!stays).then_some((landing, words))
+        });
+        let (lost, landing, shape) = if let Some((landing, words)) = shape_loss {
             (held.clone(), landing, words)
         } else {
             let force = held.force_bar - step;
@@ -239,8 +276,17 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
             let (lost, landing) = where_lost(&ex, &held, force, landing, cutoff);
             (lost, landing, String::new())
         };
+        // (from a state unstable to a resolved mode the landing may lie
+        // close by: the contact changes shape a little, still a jump from
+        // one arm to another at the same force)
+        let moved = |st: &ExactState| {
+            !near(&lost, st)
+                || (!shape.is_empty()
+                    && ((st.a_bar - lost.a_bar).abs() > 1e-6 * lost.a_bar
+                        || (st.s - lost.s).abs() > 1e-6))
+        };
         match landing {
-            Landing::Landed(st) if !near(&lost, &st) => {
+            Landing::Landed(st) if moved(&st) => {
                 jumps.push(Jump {
                     force: lost.force_bar,
                     from: lost,
