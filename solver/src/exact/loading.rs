@@ -112,6 +112,12 @@ fn near(a: &ExactState, b: &ExactState) -> bool {
     within(&pa, &pb) && within(&pb, &pa)
 }
 
+/// Whether `b` is the state `a` itself (ā and s to 1e-6): a descent that
+/// stays where it started.
+fn same_state(a: &ExactState, b: &ExactState) -> bool {
+    (b.a_bar - a.a_bar).abs() <= 1e-6 * a.a_bar && (b.s - a.s).abs() <= 1e-6
+}
+
 /// The loading path at `rho` from F̄ = 10 down, with `cutoff` choosing the
 /// resolved modes.
 pub(crate) fn loading_path(rho: f64, cutoff: Cutoff) -> Result<LoadingPath> {
@@ -124,15 +130,17 @@ pub(crate) fn loading_path(rho: f64, cutoff: Cutoff) -> Result<LoadingPath> {
 /// [`CONVERGED`] (its fine-grid boundary error), the same state solved
 /// again at the force with more modes of the escalation (the conformal-map
 /// form's, then the arclength representation's), up to the first that
-/// does; accepted when its boundary error is at most [`RESOLVED`].
-fn resolved(ex: Exact, st: ExactState) -> std::result::Result<(Exact, ExactState), String> {
+/// does; accepted when its boundary error is at most [`RESOLVED`], the
+/// finer problem then replacing `ex`.
+fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, String> {
     if st.bc_error <= CONVERGED {
-        return Ok((ex, st));
+        return Ok(st);
     }
-    let mut best = (ex, st);
+    // the best state so far, and the finer problem it is on (none: `ex`)
+    let mut best: (Option<Exact>, ExactState) = (None, st);
     // the conformal-map form's rungs above the state's, then the
     // arclength representation's (above the state's if it is in it)
-    let t = best.0.truncation;
+    let t = ex.truncation;
     let rungs: Vec<Truncation> = ESCALATION
         .iter()
         .filter(|&&m| t.arclength == 0 && m > t.modes)
@@ -146,33 +154,38 @@ fn resolved(ex: Exact, st: ExactState) -> std::result::Result<(Exact, ExactState
         .collect();
     for rung in rungs {
         let st = &best.1;
-        let Ok(finer) = Exact::new(best.0.rho, rung) else {
+        let Ok(finer) = Exact::new(ex.rho, rung) else {
             continue;
         };
         if let Ok(again) = finer.solve_at(Hold::Force(st.force_bar), &st.contour, st.delta_bar) {
             if again.bc_error < st.bc_error && near(st, &again) {
                 let done = again.bc_error <= CONVERGED;
-                best = (finer, again);
+                best = (Some(finer), again);
                 if done {
                     break;
                 }
             }
         }
     }
-    if best.1.bc_error <= RESOLVED {
-        return Ok(best);
+    let (finer, st) = best;
+    let on = finer.as_ref().unwrap_or(ex).truncation;
+    if st.bc_error <= RESOLVED {
+        if let Some(f) = finer {
+            *ex = f;
+        }
+        return Ok(st);
     }
     Err(format!(
         "at force = {} the state (a = {:.4}) is not resolved by {} modes{} (boundary error {:.1e})",
-        crate::error::rounded(best.1.force_bar),
-        best.1.a_bar,
-        best.0.truncation.modes,
-        if best.0.truncation.arclength > 0 {
+        crate::error::rounded(st.force_bar),
+        st.a_bar,
+        on.modes,
+        if on.arclength > 0 {
             " of each sign in the arclength representation"
         } else {
             ""
         },
-        best.1.bc_error
+        st.bc_error
     ))
 }
 
@@ -237,9 +250,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
         // state is a minimum of what moves, and the path goes on)
         let shape_loss = unstable.and_then(|m| {
             let landing = descend(&ex, &held, held.force_bar, cutoff);
-            let stays = matches!(&landing, Landing::Landed(st)
-                if (st.a_bar - held.a_bar).abs() <= 1e-6 * held.a_bar
-                    && (st.s - held.s).abs() <= 1e-6);
+            let stays = matches!(&landing, Landing::Landed(st) if same_state(&held, st));
             let words = format!(
                 "the state at force = {} is unstable under load to the resolved mode n = {} (wavelength {:.3}); from there: ",
                 crate::error::rounded(held.force_bar),
@@ -255,13 +266,10 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
             let landing = descend(&ex, &held, force, cutoff);
             match landing {
                 Landing::Landed(st) if near(&held, &st) => {
-                    match resolved(ex, *st) {
-                        Ok((e, st)) => {
-                            ex = e;
-                            held = st;
-                        }
+                    held = match resolved(&mut ex, *st) {
+                        Ok(st) => st,
                         Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
-                    }
+                    };
                     states.push(held.clone());
                     step = (step * 1.5).min(MAX_STEP);
                     continue;
@@ -279,12 +287,8 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
         // (from a state unstable to a resolved mode the landing may lie
         // close by: the contact changes shape a little, still a jump from
         // one arm to another at the same force)
-        let moved = |st: &ExactState| {
-            !near(&lost, st)
-                || (!shape.is_empty()
-                    && ((st.a_bar - lost.a_bar).abs() > 1e-6 * lost.a_bar
-                        || (st.s - lost.s).abs() > 1e-6))
-        };
+        let moved =
+            |st: &ExactState| !near(&lost, st) || (!shape.is_empty() && !same_state(&lost, st));
         match landing {
             Landing::Landed(st) if moved(&st) => {
                 jumps.push(Jump {
@@ -292,13 +296,10 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                     from: lost,
                     to: (*st).clone(),
                 });
-                match resolved(ex, *st) {
-                    Ok((e, st)) => {
-                        ex = e;
-                        held = st;
-                    }
+                held = match resolved(&mut ex, *st) {
+                    Ok(st) => st,
                     Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
-                }
+                };
                 states.push(held.clone());
                 step = 0.25;
             }
@@ -470,58 +471,6 @@ mod tests {
                 "F = {}",
                 st.force_bar
             );
-        }
-    }
-
-    /// The paths at several ρ and thinnesses, printed (a probe, not a check).
-    #[test]
-    #[ignore]
-    fn probe_loading_paths() {
-        let rhos: Vec<f64> = std::env::var("PROBE_RHOS")
-            .map(|v| v.split(',').map(|x| x.parse().unwrap()).collect())
-            .unwrap_or_else(|_| vec![0.8, 0.5]);
-        let hs: Vec<f64> = std::env::var("PROBE_HS")
-            .map(|v| v.split(',').map(|x| x.parse().unwrap()).collect())
-            .unwrap_or_else(|_| vec![0.5, 0.1]);
-        for &rho in &rhos {
-            for &h in &hs {
-                let t = std::time::Instant::now();
-                let path = loading_path(rho, Cutoff::for_thinness(h).unwrap());
-                match path {
-                    Err(e) => println!("rho {rho} h {h}: {e}"),
-                    Ok(p) => {
-                        println!(
-                            "rho {rho} h {h}: {} states, {:.1} s",
-                            p.states.len(),
-                            t.elapsed().as_secs_f64()
-                        );
-                        for st in p.states.iter().step_by((p.states.len() / 12).max(1)) {
-                            println!(
-                                "   F {:9.5} a {:.5} s {:.5} bc {:.1e} dev {:.3}",
-                                st.force_bar,
-                                st.a_bar,
-                                st.s,
-                                st.bc_error,
-                                st.deviation_from_ellipse
-                            );
-                        }
-                        for j in &p.jumps {
-                            println!("   JUMP at F {:.7}: a {:.5} -> {:.5}, s {:.5} -> {:.5}, delta {:.5} -> {:.5}, dev {:.3} -> {:.3}", j.force, j.from.a_bar, j.to.a_bar, j.from.s, j.to.s, j.from.delta_bar, j.to.delta_bar, j.from.deviation_from_ellipse, j.to.deviation_from_ellipse);
-                        }
-                        match &p.end {
-                            PathEnd::PullOff { state } => println!(
-                                "   PULL-OFF F {:.9} a {:.6} s {:.6} bc {:.1e}",
-                                state.force_bar, state.a_bar, state.s, state.bc_error
-                            ),
-                            PathEnd::Lost { state, why } => println!(
-                                "   LOST at F {:.9} a {:.6} s {:.6} bc {:.1e}: {why}",
-                                state.force_bar, state.a_bar, state.s, state.bc_error
-                            ),
-                            PathEnd::NotSettled(w) => println!("   NOT SETTLED: {w}"),
-                        }
-                    }
-                }
-            }
         }
     }
 }

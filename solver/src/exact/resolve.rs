@@ -677,28 +677,23 @@ pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Re
             }
             Ok(_) if k + 1 < ARCLENGTH_ESCALATION.len() => k += 1,
             _ if step > 0.00125 => step *= 0.5,
-            Ok(po) => {
+            stopped => {
+                // how the step at `next` failed, after "only: at rho = …"
+                let how = match stopped {
+                    Ok(po) => format!(
+                        " the boundary error is {:.1e} with {} modes",
+                        po.bc_error, t.modes
+                    ),
+                    Err(e) => format!(": {}", e.to_string().chars().take(160).collect::<String>()),
+                };
                 return Err(Error::StopsInRho {
                     reached: at.rho,
                     what: format!(
-                        "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {} the boundary error is {:.1e} with {} modes",
+                        "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {}{how}",
                         crate::error::rounded(at.rho),
                         crate::error::rounded(next),
-                        po.bc_error,
-                        t.modes
                     ),
-                })
-            }
-            Err(e) => {
-                return Err(Error::StopsInRho {
-                    reached: at.rho,
-                    what: format!(
-                        "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {}: {}",
-                        crate::error::rounded(at.rho),
-                        crate::error::rounded(next),
-                        e.to_string().chars().take(160).collect::<String>()
-                    ),
-                })
+                });
             }
         }
     }

@@ -7,7 +7,7 @@
 //! thin changes shape before it reaches the minimum).
 //!
 //! Owns: [`unloading`]. May use: `resolve` (the start), `branch` (the
-//! trace), `stability`, `control`, `cutoff`, `report` (the outcome's
+//! trace), `loading` (its start force), `stability`, `control`, `cutoff`, `report` (the outcome's
 //! shape).
 
 // asked by the command line (`exact pull-off --unloading`)
@@ -18,9 +18,9 @@ use crate::control::Hold;
 use crate::cutoff::Cutoff;
 use crate::report::Passed;
 
-/// The load the unloading starts from (a large load, F̄ = 10, where every
-/// table of docs/accuracy.md has a row).
-const START_FORCE: f64 = 10.0;
+/// The load the unloading starts from: the loading path's (a large load,
+/// F̄ = 10, where every table of docs/accuracy.md has a row).
+use super::loading::START_FORCE;
 
 /// The largest boundary error of a traced point that still counts as a
 /// state of the problem (a trace that leaves it leaves the family it can
