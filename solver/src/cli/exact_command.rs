@@ -5,7 +5,7 @@
 //! Owns: [`ExactCommand`], the exact printers. May use: `batch` (an ellipse model at a control), `control`, `crate::exact`,
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
 //! state), `crate::report`, `crate::fold`, `crate::error`, `crate::cutoff`,
-//! `crate::cli` (`output`).
+//! `crate::cli` (`output`, `files`).
 
 use crate::control::Hold;
 use crate::exact::stability::UnstableMode;
@@ -165,6 +165,16 @@ pub(crate) enum ExactCommand {
         #[arg(long)]
         json: bool,
     },
+    /// Write the stored pull-offs (solver/data/exact_pull_offs.json): the exact pull-off at rho = 0.3 and at every step of its follow in rho down to where it stops converging, the starts of the exact pull-off below rho = 0.3 (minutes).
+    #[command(
+        name = "store-pull-offs",
+        after_help = "Example:\n  thinjkr exact store-pull-offs --out solver/data/exact_pull_offs.json"
+    )]
+    StorePullOffs {
+        /// Write the JSON here (a new or existing file in an existing folder).
+        #[arg(long)]
+        out: std::path::PathBuf,
+    },
     /// The exact zero-force state.
     #[command(
         name = "zero-force",
@@ -191,6 +201,7 @@ impl ExactCommand {
             | ExactCommand::Solve { json, .. }
             | ExactCommand::ZeroForce { json, .. }
             | ExactCommand::Bands { json, .. } => *json,
+            ExactCommand::StorePullOffs { .. } => false,
         }
     }
 }
@@ -243,6 +254,20 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             to,
             json,
         } => bands(rho, from, to, json),
+        ExactCommand::StorePullOffs { out } => {
+            super::files::check_file(&out)?;
+            let stored = crate::exact::stored::store()?;
+            let json = serde_json::to_string_pretty(&stored).expect("plain data serialises");
+            super::files::write_whole(&out, (json + "\n").as_bytes())?;
+            errln!(
+                "thinjkr: {} stored pull-offs, rho = {} down to {}; {}",
+                stored.pull_offs.len(),
+                crate::exact::stored::TOP,
+                crate::error::rounded(stored.reached),
+                stored.why_stopped
+            );
+            Ok(())
+        }
     }
 }
 

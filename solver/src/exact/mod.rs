@@ -55,6 +55,7 @@ pub(crate) mod rho_fold;
 pub(crate) mod rho_path;
 pub(crate) mod seed;
 pub mod stability;
+pub(crate) mod stored;
 pub(crate) mod unloading;
 
 use crate::control::Hold;
@@ -84,7 +85,7 @@ pub(crate) const RESIDUAL_TOLERANCE: f64 = 1e-11;
 pub const POINTS_PER_MODE: usize = 8;
 
 /// The discretisation: contour modes and quadrature points.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Truncation {
     /// Number of contour coefficients b_j (and of imposed modes minus one).

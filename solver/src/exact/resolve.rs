@@ -220,8 +220,10 @@ pub fn default_tries() -> Vec<Truncation> {
 }
 
 /// The load-controlled pull-off at `rho` with the default escalation of
-/// truncations ([`resolved`], [`default_tries`]); where no start finds it,
-/// followed in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
+/// truncations ([`resolved`], [`default_tries`]); below ρ = 0.3 on the
+/// cylinders' gap, followed in ρ in the arclength representation from the
+/// stored pull-off nearest above ([`super::stored`]); where no start finds
+/// it, followed in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
 /// that is found, in the arclength representation
 /// ([`pull_off_followed_in_arclength`]), else in the conformal form
 /// ([`pull_off_continued_in_rho`]).
@@ -231,6 +233,11 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
 
 /// [`pull_off_resolved`] on `gap`.
 pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
+    // below ρ = 0.3 on the cylinders' gap: followed from the stored
+    // pull-off nearest above (the same follow as from ρ = 0.3, shorter)
+    if let Some(followed) = super::stored::pull_off(gap, rho) {
+        return followed.map(|st| (st, Vec::new()));
+    }
     match pull_off_on(gap, rho, &default_tries()) {
         // not found, or not resolved by the conformal form's escalation:
         // followed in ρ from the pull-off at a larger ρ in the arclength
@@ -634,9 +641,11 @@ pub(crate) fn at_with(
 
 /// The arclength representation's contour modes, escalated in order by
 /// [`pull_off_followed_in_arclength`]: 96 carries the pull-off down to
-/// ρ ≈ 0.089, 128 to ρ ≈ 0.074, and 160 to ρ = 0.0718 (θ = 30° for equal
-/// cylinders, boundary error 3.1e-11), where the peanut's necks narrow.
-pub(crate) const ARCLENGTH_ESCALATION: [usize; 5] = [48, 64, 96, 128, 160];
+/// ρ ≈ 0.089, 128 to ρ ≈ 0.074, 160 to ρ ≈ 0.065 (through ρ = 0.0718,
+/// θ = 30° for equal cylinders, boundary error 3.1e-11) and 192, the most
+/// [`MAX_MODES`](super::MAX_MODES) allows, to ρ = 0.0592, where the
+/// peanut's necks have narrowed to a half-width of 0.15.
+pub(crate) const ARCLENGTH_ESCALATION: [usize; 6] = [48, 64, 96, 128, 160, 192];
 
 /// The load-controlled pull-off (the first minimum of F̄ on the arm that
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
@@ -654,9 +663,28 @@ pub(crate) const ARCLENGTH_ESCALATION: [usize; 5] = [48, 64, 96, 128, 160];
 /// of [`pull_off_resolved`], where the conformal form's continuation stops
 /// (near ρ = 0.3).
 pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Result<ExactState> {
+    pull_off_followed_in_arclength_visiting(start, rho, &mut |_| {})
+}
+
+/// [`pull_off_followed_in_arclength`], handing every pull-off it takes on
+/// the way (resolved, without its stability) to `visit` (the pull-offs
+/// stored as starts, [`super::seeds`]). The escalation begins at the rung
+/// of `start`'s modes when `start` is in the arclength representation.
+pub(crate) fn pull_off_followed_in_arclength_visiting(
+    start: &ExactState,
+    rho: f64,
+    visit: &mut dyn FnMut(&ExactState),
+) -> Result<ExactState> {
     let mut at = start.clone();
     let mut step: f64 = 0.01;
-    let mut k = 0;
+    let mut k = if start.truncation.arclength > 0 {
+        ARCLENGTH_ESCALATION
+            .iter()
+            .position(|&m| m >= start.truncation.modes)
+            .unwrap_or(ARCLENGTH_ESCALATION.len() - 1)
+    } else {
+        0
+    };
     while at.rho > rho {
         crate::newton::check_stop()?;
         let next = (at.rho - step).max(rho);
@@ -672,6 +700,7 @@ pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Re
         let found = from(Hold::Size(at.a_bar)).or_else(|_| from(Hold::Delta(at.delta_bar)));
         match found {
             Ok(po) if po.bc_error <= CONVERGED => {
+                visit(&po);
                 at = po;
                 step = (step * 1.5).min(0.02);
             }
