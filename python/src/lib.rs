@@ -536,22 +536,22 @@ fn curve(
 /// delta, force, h_over_a; p0 for a model of the ellipse), the state and
 /// the warnings.
 #[pyfunction]
-#[pyo3(signature = (cylinders_json, delta=None, force=None, model="max"))]
+#[pyo3(signature = (cylinders_json, delta=None, force=None, model=None))]
 fn physical(
     py: Python<'_>,
     cylinders_json: &str,
     delta: Option<f64>,
     force: Option<f64>,
-    model: &str,
+    model: Option<&str>,
 ) -> PyResult<String> {
-    let m = choice(model)?;
+    let m = model.map(choice).transpose()?;
     let cyl: thinjkr::units::Cylinders =
         serde_json::from_str(cylinders_json).map_err(|e| usage(format!("{e}")))?;
     if delta.is_some() && force.is_some() {
         return Err(raw(Error::Usage("give delta or force, not both".into())));
     }
     detached(py, move || -> thinjkr::Result<String> {
-        let answer = m.physical(&cyl, force, delta)?;
+        let answer = thinjkr::registry::physical(m, &cyl, force, delta)?;
         let si = answer.si;
         let mut out = serde_json::json!({
             "a": si.a,
@@ -561,6 +561,9 @@ fn physical(
             "h_over_a": si.h_over_a,
             "state": answer.state,
             "warnings": answer.warnings,
+            "model": answer.model,
+            "chosen_because": answer.chosen_because,
+            "paper_model": answer.paper_model,
         });
         if let thinjkr::report::AnyState::Ellipse(st) = &answer.state {
             let p0 = st.p0 * answer.scales.pressure;

@@ -222,7 +222,9 @@ def test_physical_units():
         st = thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6,
                               work_of_adhesion=0.05, force=0.0)
     assert st.a > 0 and st.force == pytest.approx(0.0, abs=1e-12)
-    assert abs(st.state.force_bar) < 1e-9 and st.state.model == "max"
+    # a state at a force, no model named: the table of defaults' energy
+    assert abs(st.state.force_bar) < 1e-9 and st.state.model == "energy" and st.model == "energy"
+    assert st.chosen_because.startswith("no model named: energy answers a state at a given force")
 
 
 def test_states_index_iterate_and_export():
@@ -320,11 +322,35 @@ def test_physical_takes_a_model_and_warns_as_the_command_line(cli):
     steep = {**contact, "theta_deg": 30}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
-        assert not close(thinjkr.physical(**steep).force, thinjkr.physical(**steep, model="energy").force, rel=0.1)
+        assert not close(thinjkr.physical(**steep, model="max").force,
+                         thinjkr.physical(**steep, model="energy").force, rel=0.1)
     with warnings.catch_warnings():
         warnings.simplefilter("error", thinjkr.ThinJkrWarning)
         with pytest.raises(thinjkr.ThinJkrWarning):
             thinjkr.physical(**contact)
+
+
+def test_physical_without_a_model_is_the_command_lines_default(cli):
+    """Issue 32 item 5: physical() without a model asks the table of
+    defaults, as the command line without --model does: at theta = 60 deg
+    (rho = 1/3) the exact pull-off, with its reason and max beside it (the
+    two differ by 9 %); the same numbers and words as the command line."""
+    import warnings
+
+    contact = dict(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6, work_of_adhesion=0.05)
+    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "60", "--h1", "1e-4", "--h2", "1e-4",
+            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
+        st = thinjkr.physical(**contact)
+    d = run_json(cli, *args)
+    assert st.model == "exact" and st.state.model == "exact"
+    assert st.chosen_because == d["chosen_because"]
+    assert "no model is within 0.5 %" in st.chosen_because
+    assert close(st.force, d["si"]["force"], 1e-9)
+    assert st.paper_model.model == "max"
+    assert close(st.paper_model.force_bar, d["paper_model"]["force_bar"], 1e-12)
+    assert abs(st.paper_model.force_bar / st.state.force_bar - 1) > 0.01
 
 
 def test_every_function_of_rho_takes_arrays_and_curves_come_as_a_list():

@@ -13,7 +13,7 @@
 //! exact solver alike, so that the command line and the Python package do
 //! not dispatch over kinds of model themselves to solve.
 //!
-//! Owns: [`Choice`] (and names [`Slender`], a slender model's handle), [`PhysicalAnswer`], [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
+//! Owns: [`Choice`] (and names [`Slender`], a slender model's handle), [`PhysicalAnswer`], [`physical`] and its table of defaults ([`DEFAULTS`]), [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
 //! [`Entry`], [`parse`], [`entries`], [`help`]. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
@@ -173,6 +173,138 @@ pub struct PhysicalAnswer {
     pub scales: crate::units::Scales,
     /// The warnings, in words.
     pub warnings: Vec<String>,
+    /// The name of the model that answered.
+    pub model: String,
+    /// Where no model was named: which model the table of defaults chose
+    /// for this ρ and question, and why ([`DEFAULTS`]).
+    pub chosen_because: Option<String>,
+    /// Where no model was named and the chosen one is not the paper's:
+    /// the paper's model `max` at the same question, when the two differ
+    /// by more than 1 % in F̄, δ̄ or ā.
+    pub paper_model: Option<crate::report::AnyState>,
+}
+
+/// Which questions a row of the table of defaults answers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Question {
+    /// The load-controlled pull-off.
+    PullOff,
+    /// A state at a given force or approach.
+    AtControl,
+}
+
+/// One row of the table of defaults: for `question` at ρ ≥ `from_rho`
+/// (and below the row before), `model` answers, for the reason `why`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DefaultRow {
+    pub question: Question,
+    pub from_rho: f64,
+    pub model: &'static str,
+    pub why: &'static str,
+}
+
+/// The table of defaults: the model that answers `physical` when none is
+/// named, by question and ρ, chosen from the measurements of
+/// docs/accuracy.md against the exact solution (the test
+/// `the_defaults_hold_what_they_claim` holds each reason against
+/// derive/data/exact_reference.json). The exact pull-off's row reaches down
+/// to the smallest ρ of the stored pull-offs (`exact::stored`, ρ = 0.0592)
+/// rounded up;
+/// below, the next row answers.
+pub(crate) const DEFAULTS: [DefaultRow; 5] = [
+    DefaultRow {
+        question: Question::PullOff,
+        from_rho: 0.4,
+        model: "conformal:8",
+        why: "within 0.3 % of the exact pull-off in force at every rho of docs/accuracy.md from 0.4 to 1, in a tenth of a second",
+    },
+    DefaultRow {
+        question: Question::PullOff,
+        from_rho: STORED_REACHED,
+        model: EXACT,
+        why: "no model is within 0.5 % of the exact pull-off below rho = 0.4 (conformal:8 is 1.0 % off at 0.3, max 9.6 %, energy 2.3 %), so the exact pull-off itself answers",
+    },
+    DefaultRow {
+        question: Question::PullOff,
+        from_rho: 0.0,
+        model: "max",
+        why: "the exact pull-off is not resolved below rho = 0.06 (docs/exact.md: it is followed down to 0.0592); max is the model nearest to it at the smallest rho measured (+6.5 % at rho = 0.1), and its error below is not measured",
+    },
+    DefaultRow {
+        question: Question::AtControl,
+        from_rho: 0.36,
+        model: "energy",
+        why: "within 0.1 % in approach and 0.8 % in size of the exact states at zero force and F = 10 at every rho of docs/accuracy.md from 0.4 to 1, nearer than max",
+    },
+    DefaultRow {
+        question: Question::AtControl,
+        from_rho: 0.0,
+        model: "energy",
+        why: "below rho = 0.36 the exact states at zero force and F = 10 are not found (their family turns back in rho), so no model is measured there; energy is the nearest above",
+    },
+];
+
+/// The smallest ρ of the exact pull-off's row in [`DEFAULTS`]: where the
+/// stored pull-offs end (`exact::stored`), rounded down.
+const STORED_REACHED: f64 = 0.06;
+
+/// The row of [`DEFAULTS`] for `question` at `rho`.
+pub(crate) fn default_row(question: Question, rho: f64) -> &'static DefaultRow {
+    DEFAULTS
+        .iter()
+        .find(|r| r.question == question && rho >= r.from_rho)
+        .unwrap_or(&DEFAULTS[DEFAULTS.len() - 1])
+}
+
+/// The contact `cyl` at force `force` (N) or approach `delta` (m), or its
+/// pull-off under load control, answered by `model`; where no model is
+/// named, by the table of defaults (the choice and its reason in the
+/// answer, with the paper's model `max` beside it when the two differ by
+/// more than 1 %).
+pub fn physical(
+    model: Option<Choice>,
+    cyl: &crate::units::Cylinders,
+    force: Option<f64>,
+    delta: Option<f64>,
+) -> crate::Result<PhysicalAnswer> {
+    if let Some(m) = model {
+        return m.physical(cyl, force, delta);
+    }
+    let rho = cyl.scales()?.rho;
+    let question = match (force, delta) {
+        (None, None) => Question::PullOff,
+        _ => Question::AtControl,
+    };
+    let row = default_row(question, rho);
+    let chosen = parse(row.model).map_err(crate::Error::Usage)?;
+    let mut answer = chosen.physical(cyl, force, delta)?;
+    answer.chosen_because = Some(format!(
+        "no model named: {} answers {} at rho = {} (the table of defaults): {}",
+        row.model,
+        match question {
+            Question::PullOff => "the pull-off",
+            Question::AtControl => "a state at a given force or approach",
+        },
+        crate::error::rounded(rho),
+        row.why
+    ));
+    if row.model != "max" {
+        let paper = Choice::Ellipse(ModelId::Max).physical(cyl, force, delta);
+        match paper {
+            Ok(p) => {
+                let (a0, _, d0, f0) = answer.state.size_and_load();
+                let (a1, _, d1, f1) = p.state.size_and_load();
+                let off = |x: f64, y: f64| (x - y).abs() > 0.01 * x.abs().max(y.abs());
+                if off(a0, a1) || off(d0, d1) || off(f0, f1) {
+                    answer.paper_model = Some(p.state);
+                }
+            }
+            Err(e) => answer.warnings.push(format!(
+                "the paper's model max has no answer beside it: {e}"
+            )),
+        }
+    }
+    Ok(answer)
 }
 
 impl Choice {
@@ -180,7 +312,7 @@ impl Choice {
     /// approach `delta` (m), or its pull-off under load control; a value the
     /// user typed is refused in the user's units (a force the model never
     /// reaches: from the pull-off force in newtons).
-    pub fn physical(
+    pub(crate) fn physical(
         &self,
         cyl: &crate::units::Cylinders,
         force: Option<f64>,
@@ -295,6 +427,9 @@ impl Choice {
             si,
             scales: sc,
             warnings,
+            model: model.name(),
+            chosen_because: None,
+            paper_model: None,
         })
     }
 }
@@ -682,6 +817,114 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
                 departure: None,
                 route: None,
             },
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rows `| rho | …` of the table under `heading` in
+    /// docs/accuracy.md (the generated measurements), as cells.
+    fn table(heading: &str) -> Vec<Vec<String>> {
+        let text = include_str!("../../docs/accuracy.md");
+        let section = text
+            .split(&format!("\n{heading}\n"))
+            .nth(1)
+            .unwrap_or_else(|| panic!("docs/accuracy.md has {heading}"));
+        section
+            .lines()
+            .skip_while(|l| !l.starts_with("|---"))
+            .skip(1)
+            .take_while(|l| l.starts_with('|'))
+            .map(|l| l.split('|').map(|c| c.trim().to_string()).collect())
+            .collect()
+    }
+
+    /// The first of "a / b / c" as a fraction: "-0.208 %" (per cent) or
+    /// "-4.0e-10" (a fraction) or "< 1e-10"; `None` for a cell without a
+    /// value.
+    fn first(cell: &str) -> Option<f64> {
+        let part = cell.split(" / ").next()?.trim();
+        if part.starts_with("< ") {
+            return Some(0.0);
+        }
+        match part.strip_suffix(" %") {
+            Some(pc) => pc.parse::<f64>().ok().map(|v| v / 100.0),
+            None => part.parse().ok(),
+        }
+    }
+
+    /// The second ("ā") of "a / b / c", as [`first`].
+    fn second(cell: &str) -> Option<f64> {
+        first(cell.split(" / ").nth(1)?)
+    }
+
+    fn rho(row: &[String]) -> f64 {
+        row[1].parse().unwrap()
+    }
+
+    /// Every reason in [`DEFAULTS`] holds against docs/accuracy.md's
+    /// measurements (the models against the exact solution):
+    /// - conformal:8 within 0.3 % of the exact pull-off's F̄ at every ρ ≥ 0.4;
+    /// - below 0.4, at ρ = 0.3, no model within 0.5 % (conformal:8, max,
+    ///   energy as the reason says), and the stored exact pull-offs reach
+    ///   down to the exact row's lower end;
+    /// - at ρ = 0.1, max the ellipse model nearest the exact pull-off
+    ///   (+6.5 %);
+    /// - energy within 0.1 % in δ̄ and 0.8 % in ā at zero force and F̄ = 10
+    ///   at every ρ ≥ 0.4, and nearer than max in both; no exact state at
+    ///   either load below ρ = 0.36 (the row at 0.3 says none).
+    #[test]
+    fn the_defaults_hold_what_they_claim() {
+        let at = |q, r| default_row(q, r).model;
+        assert_eq!(at(Question::PullOff, 1.0), "conformal:8");
+        assert_eq!(at(Question::PullOff, 0.4), "conformal:8");
+        assert_eq!(at(Question::PullOff, 0.3), EXACT);
+        assert_eq!(at(Question::PullOff, 0.07), EXACT);
+        assert_eq!(at(Question::PullOff, 0.05), "max");
+        assert_eq!(at(Question::PullOff, 0.06), EXACT);
+        assert_eq!(at(Question::AtControl, 0.2), "energy");
+        // conformal:8 is the fifth cell (| ρ | c2 | c4 | c6 | c8 |)
+        let conformal = table("### Load-controlled pull-off");
+        let measured: Vec<_> = conformal.iter().filter(|r| rho(r) >= 0.4).collect();
+        assert_eq!(measured.len(), 7);
+        for r in &measured {
+            let e = first(&r[5]).expect("a value");
+            assert!(e.abs() <= 0.003, "conformal:8 at rho {}: {e}", rho(r));
+        }
+        let r03 = conformal.iter().find(|r| rho(r) == 0.3).unwrap();
+        assert!((first(&r03[5]).unwrap().abs() - 0.010).abs() < 0.0005);
+        // the models of the ellipse: | ρ | exact | max | apexes | energy | apex45 |
+        let ellipse = table("## Load-controlled pull-off");
+        let r03 = ellipse.iter().find(|r| rho(r) == 0.3).unwrap();
+        for (cell, claim) in [(3, 0.096), (5, 0.023)] {
+            let e = first(&r03[cell]).unwrap().abs();
+            assert!((e - claim).abs() < 0.0005, "{e} against {claim}");
+        }
+        for cell in 3..=6 {
+            assert!(first(&r03[cell]).is_none_or(|e| e.abs() > 0.005));
+        }
+        let stored = crate::exact::stored::stored().expect("the stored pull-offs");
+        assert!(stored.reached <= STORED_REACHED, "{}", stored.reached);
+        let r01 = ellipse.iter().find(|r| rho(r) == 0.1).unwrap();
+        let max = first(&r01[3]).unwrap();
+        assert!((max - 0.065).abs() < 0.0005);
+        for cell in 4..=6 {
+            assert!(first(&r01[cell]).is_none_or(|e| e.abs() > max.abs()));
+        }
+        // energy at zero force and F = 10
+        for heading in ["## Zero force", "## F̄ = 10"] {
+            let rows = table(heading);
+            for r in rows.iter().filter(|r| rho(r) >= 0.4) {
+                let (d, a) = (first(&r[5]).unwrap(), second(&r[5]).unwrap());
+                assert!(d.abs() <= 0.001 && a.abs() <= 0.008, "{heading} {}", rho(r));
+                assert!(d.abs() <= first(&r[3]).unwrap().abs());
+                assert!(a.abs() <= second(&r[3]).unwrap().abs());
+            }
+            let r03 = rows.iter().find(|r| rho(r) == 0.3).unwrap();
+            assert!(r03[2].starts_with("no exact value"), "{}", r03[2]);
         }
     }
 }

@@ -326,6 +326,15 @@ pub(crate) enum Document {
         scales: Scales,
         /// Inputs outside the model's stated range of validity.
         warnings: Vec<String>,
+        /// Where no model was named: the model the table of defaults
+        /// chose for this ρ and question, and why.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        chosen_because: Option<String>,
+        /// Where no model was named and the chosen one is not `max`: the
+        /// paper's model `max` at the same question, when the two differ by
+        /// more than 1 % in F̄, δ̄ or ā.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        paper_model: Option<AnyState>,
     },
     /// One state (`solve`, `zero-force`, `exact solve`), with the models
     /// of the ellipse at the same control beside an exact one.

@@ -277,3 +277,30 @@ fn exact_is_chosen_by_name() {
     let (ok, _, err) = thinjkr(&["curve", "--model", "exact", "--rho", "0.8"]);
     assert!(!ok && err.contains("exact"), "{err}");
 }
+
+/// `thinjkr accuracy --rho`: only rows of the table, and it says so; a ρ
+/// not in the table is refused before any work, naming the allowed values;
+/// the partial table cannot write the reference or the figures.
+#[test]
+fn accuracy_computes_only_the_rows_asked_for() {
+    let (ok, _, err) = thinjkr(&["accuracy", "--rho", "0.33"]);
+    assert!(!ok);
+    assert!(
+        err.contains("parameter rho = 0.33") && err.contains("one of the table's: 1, 0.9"),
+        "{err}"
+    );
+    let (ok, _, err) = thinjkr(&["accuracy", "--rho", "1", "--reference", "x.json"]);
+    assert!(!ok && err.contains("cannot be used with"), "{err}");
+    let (ok, out, err) = thinjkr(&["accuracy", "--rho", "1"]);
+    assert!(ok, "{err}");
+    assert!(
+        out.starts_with("<!-- only the rows at rho = 1 (`--rho`)"),
+        "{}",
+        &out[..200]
+    );
+    let rows: Vec<&str> = out.lines().filter(|l| l.starts_with("| ")).collect();
+    assert!(rows.iter().any(|l| l.starts_with("| 1 |")));
+    assert!(!rows
+        .iter()
+        .any(|l| l.starts_with("| 0.9 |") || l.starts_with("| 0.02 |")));
+}

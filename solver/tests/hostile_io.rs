@@ -43,7 +43,7 @@ fn standard_error_gets_the_care_standard_output_gets() {
     ));
     assert_eq!(status, Some(1), "{out}{err}");
     assert!(
-        out.starts_with("physical: model max") && out.contains("dimensionless"),
+        out.starts_with("physical: model energy") && out.contains("dimensionless"),
         "{out}"
     );
     // a batch of 2001 lines, one without a state: every row is written

@@ -379,10 +379,13 @@ def physical(
     work_of_adhesion: float,
     delta: Optional[float] = None,
     force: Optional[float] = None,
-    model: str = "max",
+    model: Optional[str] = None,
 ) -> State:
     """A contact in SI units (the command line's ``physical``, any model as
-    with ``--model``): cylinder
+    with ``--model``; without a model, the one the table of defaults gives
+    for this ρ and question, named in ``model`` with the reason in
+    ``chosen_because``, and the paper's ``max`` under ``paper_model`` where
+    the two differ by more than 1 %): cylinder
     radii r1, r2 (m), crossing angle theta_deg (degrees), coating
     thicknesses h1, h2 (m), out-of-plane shear moduli g1, g2 (Pa), work of
     adhesion (J/m²); at approach ``delta`` (m), at ``force`` (N), or the
@@ -403,8 +406,9 @@ def physical(
     d = _json.loads(_call(_thinjkr.physical, _json.dumps(cyl),
                           None if delta is None else float(delta),
                           None if force is None else float(force), model))
-    inner = _state_from(d.pop("state"), model)
-    d["state"] = inner
+    d["state"] = _state_from(d.pop("state"), d["model"])
+    if d.get("paper_model") is not None:
+        d["paper_model"] = _state_from(d["paper_model"], "max")
     for w in d["warnings"]:
         _warnings.warn(w, ThinJkrWarning, stacklevel=2)
     return Physical(d)

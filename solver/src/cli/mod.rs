@@ -118,6 +118,9 @@ enum Command {
         /// Also draw the exact solution's figures (SVG) into this directory (docs/figures).
         #[arg(long)]
         figures: Option<std::path::PathBuf>,
+        /// Only the rows at these rho (each one of the table's: 1, 0.9, …, 0.1, 0.05, 0.02; repeat the flag or separate by commas); not with --reference or --figures, which need every row.
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, conflicts_with_all = ["reference", "figures"])]
+        rho: Vec<f64>,
     },
     /// The zero-force state (Section 5).
     #[command(
@@ -210,8 +213,8 @@ enum Command {
         /// Approach [m].
         #[arg(long, allow_hyphen_values = true, group = "physical_control")]
         delta: Option<f64>,
-        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
-        model: ModelChoice,
+        #[arg(long, value_parser = parse_model, help = crate::registry::help(true, "; without it, the model that the table of defaults gives for this rho and question (docs/guide.md, \"Which model answers by default\"), said in the output with its reason"))]
+        model: Option<ModelChoice>,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -333,7 +336,8 @@ fn run(cli: Cli) -> crate::Result<u8> {
             out,
             reference,
             figures,
-        }) => accuracy_command(out, reference, figures)?,
+            rho,
+        }) => accuracy_command(out, reference, figures, &rho)?,
         Some(Command::ZeroForce { rho, model, json }) => zero_force_command(rho, model, json)?,
         Some(Command::Curve {
             rho,
@@ -632,7 +636,26 @@ fn accuracy_command(
     out: Option<std::path::PathBuf>,
     reference: Option<std::path::PathBuf>,
     figures: Option<std::path::PathBuf>,
+    only: &[f64],
 ) -> crate::Result<()> {
+    use crate::accuracy::RHOS;
+    // the rows asked for: each a ρ of the table
+    if let Some(&r) = only.iter().find(|r| !RHOS.contains(r)) {
+        return Err(crate::Error::OutOfRange {
+            name: "rho",
+            value: r,
+            range: format!(
+                "one of the table's: {}",
+                RHOS.map(|r| r.to_string()).join(", ")
+            )
+            .into(),
+        });
+    }
+    let rhos: Vec<f64> = RHOS
+        .iter()
+        .copied()
+        .filter(|r| only.is_empty() || only.contains(r))
+        .collect();
     // every output path is checked before the minutes of work, and none
     // is created until the work is done (files::check_file)
     for p in [&out, &reference].into_iter().flatten() {
@@ -643,17 +666,17 @@ fn accuracy_command(
     }
     let began = std::time::Instant::now();
     use crate::accuracy::{
-        doubling, own_gap_families, reference as reference_of, render, row, row_on, Quantity, RHOS,
+        doubling, own_gap_families, reference as reference_of, render, row, row_on, Quantity,
     };
     use rayon::prelude::*;
     // the cylinders' rows, then those of every family on a gap of its own
     // (at the ρ of the table it accepts)
-    let mut jobs: Vec<(Option<&'static crate::conformal::Family>, f64, Quantity)> = RHOS
+    let mut jobs: Vec<(Option<&'static crate::conformal::Family>, f64, Quantity)> = rhos
         .iter()
         .flat_map(|&r| Quantity::ALL.iter().map(move |&q| (None, r, q)))
         .collect();
     for f in own_gap_families() {
-        for &r in RHOS.iter().filter(|&&r| r >= f.rho_min) {
+        for &r in rhos.iter().filter(|&&r| r >= f.rho_min) {
             jobs.extend(Quantity::ALL.iter().map(|&q| (Some(f), r, q)));
         }
     }
@@ -693,7 +716,14 @@ fn accuracy_command(
         })
         .collect();
     bar.finish_and_clear();
-    let text = render(&rows, &doublings);
+    let mut text = render(&rows, &doublings);
+    if !only.is_empty() {
+        let at: Vec<String> = rhos.iter().map(|r| r.to_string()).collect();
+        text = format!(
+            "<!-- only the rows at rho = {} (`--rho`): a part of the table, not docs/accuracy.md -->\n{text}",
+            at.join(", ")
+        );
+    }
     let refdata = reference_of(&doublings);
     if let Some(dir) = figures {
         let drawn = crate::figures::exact_all(&refdata)?;
@@ -832,7 +862,7 @@ fn manpage() -> String {
 /// the input lies outside the model's stated range (it still answers).
 fn physical(
     cyl: &Cylinders,
-    model: ModelChoice,
+    model: Option<ModelChoice>,
     force: Option<f64>,
     delta: Option<f64>,
     json: bool,
@@ -842,7 +872,10 @@ fn physical(
         si,
         scales: sc,
         warnings,
-    } = model.physical(cyl, force, delta)?;
+        model: model_name,
+        chosen_because,
+        paper_model,
+    } = crate::registry::physical(model, cyl, force, delta)?;
     let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
     for w in &warnings {
         errln!("thinjkr: warning: {w}");
@@ -853,15 +886,12 @@ fn physical(
             si,
             scales: sc,
             warnings,
+            chosen_because,
+            paper_model,
         };
         outln!("{}", doc.to_json());
         return Ok(());
     }
-    let model_name = match &state {
-        AnyState::Ellipse(st) => st.model.name().to_string(),
-        AnyState::Conformal(st) => st.model.clone(),
-        _ => "exact".into(),
-    };
     outln!(
         "physical: model {model_name}, rho = {}, a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, h/a = {:.4}",
         output::num(sc.rho),
@@ -891,6 +921,20 @@ fn physical(
             if st.stable_load { "stable" } else { "unstable" }
         ),
         AnyState::Ellipse(_) | AnyState::Slender(_) => {}
+    }
+    if let Some(why) = &chosen_because {
+        outln!("  {why}");
+    }
+    if let Some(p) = &paper_model {
+        let (a, b, d, f) = p.size_and_load();
+        let p_si = cyl.si(&sc, a, b, d, f)?;
+        outln!(
+            "  the paper's model max differs by more than 1 %: a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N",
+            p_si.a,
+            p_si.b,
+            p_si.delta,
+            p_si.force
+        );
     }
     Ok(())
 }
