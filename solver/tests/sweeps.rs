@@ -16,13 +16,14 @@
 //! contact-size fold).
 //! Every answer is finite, with ā > 0 and 0 < s ≤ 1.
 //!
-//! The models of the ellipse and the slender limit. The contour family `conformal:K` and the
-//! exact solution are not yet held to this: at F̄ = 10 both jump near
-//! ρ ≈ 0.6 (conformal:8 between ρ = 0.585 and 0.59, s 0.808 → 0.849; the
-//! exact family between 0.6 and 0.62, s 0.814 → 0.840), where the circle's
-//! neutral point of mode 10 (ā³ = 36) meets the states at F̄ = 10 and the
-//! family splits into arms; which arm a state is on is not yet reported
-//! (issue 32, milestone (b), maps those arms).
+//! The models of the ellipse, the slender limit and the contour family
+//! (conformal:4 and 8, where a change of arm is the event the state reports:
+//! `folds_crossed`, the folds of its arm in ρ that the continuation from
+//! the circle crossed). The exact solution is not yet held to this: at
+//! F̄ = 10 it jumps between ρ = 0.6 and 0.62 (s 0.814 → 0.840), where the
+//! circle's neutral point of mode 10 (ā³ = 36) meets the states at F̄ = 10
+//! and the family splits into arms; its states say their route, not their
+//! arm (issue 32, milestone (b), maps those arms).
 
 use thinjkr::control::Hold;
 use thinjkr::registry::parse;
@@ -190,4 +191,96 @@ fn the_slender_model_answers_continuously_in_rho_or_report_why() {
     // at large loads and approaches it answers everywhere; the size never
     assert!(report[1].contains("240 of 240") && report[4].contains("240 of 240"));
     assert!(report[5].contains(" 0 of 240"), "{}", report.join("\n"));
+}
+
+/// The contour family over the same sweep (conformal:4 and 8; ρ from
+/// 0.3, its `rho_min`, below which each answer is the typed refusal):
+/// every answer is finite with ā > 0, and between answered neighbours ā
+/// moves by at most 3 % and s by at most 0.03, unless the answers report
+/// an event: a typed error between them, or another arm (`folds_crossed`:
+/// the continuation from the circle crossed another number of folds of its
+/// arm in ρ, or the state came by another route than that continuation).
+/// The jump at F̄ = 10 between ρ = 0.59 and 0.585 (s 0.849 → 0.808) is such
+/// an event: the Jacobian at the control changes sign at ρ = 0.585.
+#[test]
+fn the_contour_family_answers_continuously_in_rho_or_reports_its_arm() {
+    let rho = rho_grid(240);
+    let mut report = Vec::new();
+    let mut arm_events = 0;
+    for name in ["conformal:4", "conformal:8"] {
+        let model = parse(name).unwrap();
+        let began = std::time::Instant::now();
+        for hold in CONTROLS {
+            // (ā, s, the folds crossed) at each ρ, or None where the model
+            // reports no state
+            // (on both cores: each ρ is solved on its own)
+            use rayon::prelude::*;
+            let solved: Vec<_> = rho.par_iter().map(|&r| model.state(r, hold)).collect();
+            let mut answers: Vec<Option<(f64, f64, Option<usize>)>> = Vec::new();
+            for (&r, answer) in rho.iter().zip(solved) {
+                match answer {
+                    Ok(AnyState::Conformal(st)) => {
+                        assert!(
+                            st.a_bar.is_finite()
+                                && st.a_bar > 0.0
+                                && st.s > 0.0
+                                && st.delta_bar.is_finite()
+                                && st.force_bar.is_finite()
+                                && st.bc_defect.is_finite(),
+                            "{name} {hold} at rho = {r}: {st:?}"
+                        );
+                        let arm = st.folds_crossed.as_ref().map(Vec::len);
+                        answers.push(Some((st.a_bar, st.s, arm)));
+                    }
+                    Ok(other) => panic!("{name}: not a contour state: {other:?}"),
+                    Err(Error::NoState(_) | Error::Unsupported { .. }) => answers.push(None),
+                    Err(e) => panic!(
+                        "{name} {hold} at rho = {r}: an error of kind {}: {e}",
+                        e.kind()
+                    ),
+                }
+            }
+            let answered = answers.iter().flatten().count();
+            let mut largest = (0.0f64, 0.0f64);
+            for (i, w) in answers.windows(2).enumerate() {
+                let (Some((a0, s0, arm0)), Some((a1, s1, arm1))) = (w[0], w[1]) else {
+                    continue;
+                };
+                let (da, ds) = ((a1 - a0).abs() / a1, (s1 - s0).abs());
+                if arm0 != arm1 || arm0.is_none() {
+                    arm_events += usize::from(da > 0.03 || ds > 0.03);
+                    continue; // reported: another arm, or another route
+                }
+                largest = (largest.0.max(da), largest.1.max(ds));
+                assert!(
+                    da <= 0.03 && ds <= 0.03,
+                    "{name} {hold}: between rho = {:.5} and {:.5} the state jumps (a_bar {a0:.6} -> {a1:.6}, s {s0:.6} -> {s1:.6}) on the same arm ({arm0:?} folds crossed)",
+                    rho[i],
+                    rho[i + 1]
+                );
+            }
+            report.push(format!(
+                "{name} {hold}: {answered} of {} answered, largest step on an arm |da|/a = {:.4}, |ds| = {:.4}",
+                rho.len(),
+                largest.0,
+                largest.1
+            ));
+        }
+        report.push(format!("{name}: {:.1} s", began.elapsed().as_secs_f64()));
+    }
+    println!(
+        "{}\njumps reported by the arm: {arm_events}",
+        report.join("\n")
+    );
+    // ρ ≥ 0.3 is 74 of the grid's 240: at F̄ = 10 conformal:8 answers at
+    // each (the sweep is not vacuous), and its jump near ρ = 0.59 is
+    // reported by the arm
+    assert!(
+        report
+            .iter()
+            .any(|l| l.starts_with("conformal:8 force = 10:") && l.contains("74 of 240")),
+        "{}",
+        report.join("\n")
+    );
+    assert!(arm_events >= 1);
 }

@@ -62,6 +62,20 @@ pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
     );
     let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();
     outln!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
+    match st.folds_crossed.as_deref() {
+        Some([]) => {
+            outln!("  arm: continued in rho from the circle at this control, on the circle's arm")
+        }
+        Some(folds) => {
+            let at: Vec<String> = folds.iter().map(|r| crate::error::short(*r)).collect();
+            outln!(
+                "  arm: continued in rho from the circle at this control, past {} of its arm (the Jacobian changed sign at rho = {}): another arm than the circle's",
+                if folds.len() == 1 { "a fold" } else { "folds" },
+                at.join(", ")
+            )
+        }
+        None => {}
+    }
     for w in &st.warnings {
         outln!("  warning: {w}");
     }

@@ -221,6 +221,15 @@ pub struct ConformalState {
     /// ρ < 1). Every front end shows them.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// Where the state comes from the continuation in ρ from the circle at
+    /// its control ([`Conformal::solve`]'s first route): the ρ of each step
+    /// after which the Jacobian at the control had changed sign, the
+    /// continuation having crossed a fold (or bifurcation) of its arm in ρ
+    /// there. Empty: it stayed on the arm through the circle. `None`: the
+    /// state came by another route (at sizes bracketing the control, on the
+    /// pull-off's arm, from a given state, a trace), whose arm is not counted.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub folds_crossed: Option<Vec<f64>>,
 }
 
 impl ConformalState {
@@ -843,8 +852,12 @@ impl Conformal {
         j1: DMatrix<f64>,
         rho: f64,
         control: Hold,
-    ) -> Result<DVector<f64>> {
+    ) -> Result<(DVector<f64>, Vec<f64>)> {
         let (mut x, mut j) = (x1, j1);
+        // the sign of the Jacobian's determinant at the control, and the ρ
+        // after which it changed (a fold or bifurcation of the arm crossed)
+        let mut sign = j.determinant().signum();
+        let mut folds = Vec::new();
         // the state and its tangent one step back, with its μ
         let mut before: Option<(DVector<f64>, DVector<f64>, f64)> = None;
         walk_rho(1.0, rho, 0.1, |rho_now, next| {
@@ -865,6 +878,11 @@ impl Conformal {
                 return false;
             };
             j = it.jacobian;
+            let now = j.determinant().signum();
+            if now != sign && now != 0.0 && sign != 0.0 {
+                folds.push(next);
+            }
+            sign = now;
             before = Some((std::mem::replace(&mut x, it.x), t, mu));
             true
         })
@@ -876,7 +894,7 @@ impl Conformal {
                 short(rho)
             ))
         })?;
-        Ok(x)
+        Ok((x, folds))
     }
 
     /// The state at `rho` under `control`.
@@ -890,11 +908,11 @@ impl Conformal {
         let (x1, j1) = self.circle(control)?;
         let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, control).1);
         let a_circle = x1[0];
-        let x = match self.continue_in_rho(x1, j1, rho, control) {
-            Ok(x) => x,
+        let (x, folds_crossed) = match self.continue_in_rho(x1, j1, rho, control) {
+            Ok((x, folds)) => (x, Some(folds)),
             Err(first) => match self.bracketed_by_sizes(rho, control, a_circle) {
-                Ok(x) => x,
-                Err(second) if matches!(control, Hold::Force(_)) => {
+                Ok(x) => (x, None),
+                Err(second) if matches!(control, Hold::Force(_)) => (
                     self.on_the_pull_off_arm(rho, control).map_err(|third| {
                         Error::NoState(format!(
                             "{}; {}; {}",
@@ -902,8 +920,9 @@ impl Conformal {
                             second.detail(),
                             third.detail()
                         ))
-                    })?
-                }
+                    })?,
+                    None,
+                ),
                 Err(second) => {
                     return Err(Error::NoState(format!(
                         "{}; {}",
@@ -913,7 +932,12 @@ impl Conformal {
                 }
             },
         };
-        self.state(&x, rho)
+        // which arm it is on is said (`folds_crossed`), not warned: a state
+        // past a fold is a state of the member like any other (at F̄ = 10
+        // below ρ = 0.575 it is the one nearest the exact state)
+        let mut st = self.state(&x, rho)?;
+        st.folds_crossed = folds_crossed;
+        Ok(st)
     }
 
     /// The state at force `control` on the arm that carries the pull-off:
@@ -1046,7 +1070,7 @@ impl Conformal {
         let near_elliptic = |a: f64| -> Option<(DVector<f64>, f64)> {
             let (x1, j1) = self.circle(Hold::Size(a)).ok()?;
             let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, Hold::Size(a)).1);
-            let x = self.continue_in_rho(x1, j1, rho, Hold::Size(a)).ok()?;
+            let (x, _) = self.continue_in_rho(x1, j1, rho, Hold::Size(a)).ok()?;
             (self.univalence(&x.as_slice()[..k]).is_ok() && self.bc_defect(&x, rho) < 1e-2).then(
                 || {
                     let v = value(&x);
@@ -1281,6 +1305,7 @@ impl Conformal {
             perimeter: self.perimeter(c),
             cutoff: Cutoff::default(),
             warnings: doubts(rho, a, b, bc_defect),
+            folds_crossed: None,
         }
         .under(Cutoff::default());
         if ![a, b, x[k], force, out.bc_defect]
