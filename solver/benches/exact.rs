@@ -66,9 +66,9 @@ fn benches(c: &mut Criterion) {
             b.iter(|| exact::pull_off_resolved(black_box(rho)).unwrap())
         });
     }
-    // below rho = 0.3: the pull-off at rho = 0.3 (conformal form, 80
-    // modes), followed in rho in the arclength representation (48, 64,
-    // then 96 modes of each sign); issue 32's goal is 200 ms
+    // below rho = 0.3: followed in rho in the arclength representation
+    // from the stored pull-off nearest above (rho = 0.105, 96 modes of each
+    // sign; `exact::stored`); issue 32's goal is 200 ms
     g.measurement_time(std::time::Duration::from_secs(120));
     g.bench_function("pull-off at rho = 0.1, resolved", |b| {
         b.iter(|| exact::pull_off_resolved(black_box(0.1)).unwrap())
