@@ -657,8 +657,18 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
             outln!("  on the way: {words}")
         }
     }
+    let which = if po.rho < crate::exact::stored::TOP
+        && po.route == crate::exact::Route::ContinuedInRho
+    {
+        format!(
+            "the minimum of F on the piece that carries the pull-off at rho = {}, followed in rho from there (started from the stored pull-off nearest above; docs/exact.md, \"The stored pull-offs\")",
+            crate::exact::stored::TOP
+        )
+    } else {
+        "the first minimum of F on the near-elliptic arm traced towards smaller a from its start (docs/exact.md, \"Which family\")".to_string()
+    };
     outln!(
-        "  which pull-off: the first minimum of F on the near-elliptic arm traced towards smaller a from its start (docs/exact.md, \"Which family\"); {}",
+        "  which pull-off: {which}; {}",
         if unloading {
             "the unloading path from F = 10:"
         } else {
