@@ -46,6 +46,40 @@ fn rho_grid(n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// Along one sweep, the answers (ā, s, what the state says of its arm) at
+/// each ρ, or `None` where the model reported no state: between answered
+/// neighbours on the same arm (`same`), ā may move by at most 3 % and s by
+/// at most 0.03, else the test fails naming the two ρ; a larger step
+/// between neighbours the states put on different arms is a reported
+/// event. Returns the largest step on an arm (|Δā|/ā, |Δs|) and the number
+/// of jumps reported by the arm.
+fn steps_along<K: Copy + std::fmt::Debug>(
+    what: &str,
+    rho: &[f64],
+    answers: &[Option<(f64, f64, K)>],
+    same: impl Fn(K, K) -> bool,
+) -> ((f64, f64), usize) {
+    let (mut largest, mut events) = ((0.0f64, 0.0f64), 0);
+    for (i, w) in answers.windows(2).enumerate() {
+        let (Some((a0, s0, k0)), Some((a1, s1, k1))) = (w[0], w[1]) else {
+            continue;
+        };
+        let (da, ds) = ((a1 - a0).abs() / a1, (s1 - s0).abs());
+        if !same(k0, k1) {
+            events += usize::from(da > 0.03 || ds > 0.03);
+            continue; // reported: another arm
+        }
+        largest = (largest.0.max(da), largest.1.max(ds));
+        assert!(
+            da <= 0.03 && ds <= 0.03,
+            "{what}: between rho = {:.5} and {:.5} the state jumps (a_bar {a0:.6} -> {a1:.6}, s {s0:.6} -> {s1:.6}) on one arm ({k0:?})",
+            rho[i],
+            rho[i + 1]
+        );
+    }
+    (largest, events)
+}
+
 #[test]
 fn the_models_of_the_ellipse_answer_continuously_in_rho_or_report_why() {
     let rho = rho_grid(240);
@@ -90,23 +124,9 @@ fn the_models_of_the_ellipse_answer_continuously_in_rho_or_report_why() {
                 }
             }
             let answered = answers.iter().filter(|a| a.is_some()).count();
-            let mut largest = (0.0f64, 0.0f64);
-            for (i, w) in answers.windows(2).enumerate() {
-                let (Some((a0, s0, f0)), Some((a1, s1, f1))) = (w[0], w[1]) else {
-                    continue;
-                };
-                let (da, ds) = ((a1 - a0).abs() / a1, (s1 - s0).abs());
-                if f0 != f1 {
-                    continue; // reported: a flag changed
-                }
-                largest = (largest.0.max(da), largest.1.max(ds));
-                assert!(
-                    da <= 0.03 && ds <= 0.03,
-                    "{name} {hold}: between rho = {:.5} and {:.5} the state jumps (a_bar {a0:.6} -> {a1:.6}, s {s0:.6} -> {s1:.6}) with no event reported",
-                    rho[i],
-                    rho[i + 1]
-                );
-            }
+            // a change of the flag (beyond the size fold) is the event
+            let (largest, _) =
+                steps_along(&format!("{name} {hold}"), &rho, &answers, |x, y| x == y);
             report.push(format!(
                 "{name} {hold}: {answered} of {} answered, largest step |da|/a = {:.4}, |ds| = {:.4}",
                 rho.len(),
@@ -239,24 +259,13 @@ fn the_contour_family_answers_continuously_in_rho_or_reports_its_arm() {
                 }
             }
             let answered = answers.iter().flatten().count();
-            let mut largest = (0.0f64, 0.0f64);
-            for (i, w) in answers.windows(2).enumerate() {
-                let (Some((a0, s0, arm0)), Some((a1, s1, arm1))) = (w[0], w[1]) else {
-                    continue;
-                };
-                let (da, ds) = ((a1 - a0).abs() / a1, (s1 - s0).abs());
-                if arm0 != arm1 || arm0.is_none() {
-                    arm_events += usize::from(da > 0.03 || ds > 0.03);
-                    continue; // reported: another arm, or another route
-                }
-                largest = (largest.0.max(da), largest.1.max(ds));
-                assert!(
-                    da <= 0.03 && ds <= 0.03,
-                    "{name} {hold}: between rho = {:.5} and {:.5} the state jumps (a_bar {a0:.6} -> {a1:.6}, s {s0:.6} -> {s1:.6}) on the same arm ({arm0:?} folds crossed)",
-                    rho[i],
-                    rho[i + 1]
-                );
-            }
+            // the same arm: the same count of folds crossed from the circle
+            // (a state by another route has no count: always an event)
+            let (largest, events) =
+                steps_along(&format!("{name} {hold}"), &rho, &answers, |x, y| {
+                    x.is_some() && x == y
+                });
+            arm_events += events;
             report.push(format!(
                 "{name} {hold}: {answered} of {} answered, largest step on an arm |da|/a = {:.4}, |ds| = {:.4}",
                 rho.len(),
@@ -329,24 +338,9 @@ fn the_exact_solution_answers_continuously_in_rho_or_reports_its_route() {
             }
         }
         let answered = answers.iter().flatten().count();
-        let mut largest = (0.0f64, 0.0f64);
-        for (i, w) in answers.windows(2).enumerate() {
-            let (Some((a0, s0, route0)), Some((a1, s1, route1))) = (w[0], w[1]) else {
-                continue;
-            };
-            let (da, ds) = ((a1 - a0).abs() / a1, (s1 - s0).abs());
-            if route0 != route1 {
-                route_events += usize::from(da > 0.03 || ds > 0.03);
-                continue; // reported: another route
-            }
-            largest = (largest.0.max(da), largest.1.max(ds));
-            assert!(
-                da <= 0.03 && ds <= 0.03,
-                "exact {hold}: between rho = {:.5} and {:.5} the state jumps (a_bar {a0:.6} -> {a1:.6}, s {s0:.6} -> {s1:.6}) by the same route",
-                rho[i],
-                rho[i + 1]
-            );
-        }
+        let (largest, events) =
+            steps_along(&format!("exact {hold}"), &rho, &answers, |x, y| x == y);
+        route_events += events;
         report.push(format!(
             "exact {hold}: {answered} of {n} answered, largest step by one route |da|/a = {:.4}, |ds| = {:.4}",
             largest.0, largest.1
