@@ -344,7 +344,7 @@ def test_physical_without_a_model_is_the_command_lines_default(cli):
         warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
         st = thinjkr.physical(**contact)
     d = run_json(cli, *args)
-    assert st.model == "exact" and st.state.model == "exact"
+    assert st.model == "exact" and st.state.model == "exact" and d["model"] == "exact"
     assert st.chosen_because == d["chosen_because"]
     assert "no model is within 0.5 %" in st.chosen_because
     assert close(st.force, d["si"]["force"], 1e-9)

@@ -326,6 +326,9 @@ pub(crate) enum Document {
         scales: Scales,
         /// Inputs outside the model's stated range of validity.
         warnings: Vec<String>,
+        /// The name of the model that answered (named, or chosen by the
+        /// table of defaults).
+        model: String,
         /// Where no model was named: the model the table of defaults
         /// chose for this ρ and question, and why.
         #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -886,6 +886,7 @@ fn physical(
             si,
             scales: sc,
             warnings,
+            model: model_name,
             chosen_because,
             paper_model,
         };
