@@ -19,6 +19,7 @@
 //! [`store`]. May use: its parent `exact` (`resolve`'s follow and
 //! escalation), `control`, `error`.
 
+#[cfg(feature = "cli")]
 use super::resolve::{default_tries, pull_off_followed_in_arclength_visiting, pull_off_on};
 use super::{Contour, Exact, ExactState, Gap, Route, Truncation};
 use crate::error::{Error, Result};
@@ -30,6 +31,7 @@ pub(crate) const TOP: f64 = 0.3;
 
 /// How far down in ρ [`store`] follows the pull-off (it stops where the
 /// follow stops converging, at ρ = 0.0592 with 192 modes).
+#[cfg(feature = "cli")]
 const FLOOR: f64 = 0.01;
 
 /// The stored pull-offs, as in `solver/data/exact_pull_offs.json`.
@@ -67,6 +69,7 @@ pub(crate) struct StoredPullOff {
 }
 
 impl StoredPullOff {
+    #[cfg(feature = "cli")]
     fn of(st: &ExactState) -> StoredPullOff {
         StoredPullOff {
             rho: st.rho,
@@ -129,6 +132,7 @@ pub(crate) fn pull_off(gap: Gap, rho: f64) -> Option<Result<ExactState>> {
 /// What `thinjkr exact store-pull-offs` writes: the pull-off at [`TOP`]
 /// (the conformal form's escalation), then every pull-off the follow in ρ
 /// takes on its way down to where it stops converging (or [`FLOOR`]).
+#[cfg(feature = "cli")]
 pub(crate) fn store() -> Result<Stored> {
     let gap = Gap::cylinders();
     let (top, _) = pull_off_on(gap, TOP, &default_tries())?;
