@@ -206,17 +206,16 @@ pub(crate) struct DefaultRow {
 /// The table of defaults: the model that answers `physical` when none is
 /// named, by question and ρ, chosen from the measurements of
 /// docs/accuracy.md against the exact solution (the test
-/// `the_defaults_hold_what_they_claim` holds each reason against
-/// derive/data/exact_reference.json). The exact pull-off's row reaches down
-/// to the smallest ρ of the stored pull-offs (`exact::stored`, ρ = 0.0592)
-/// rounded up;
-/// below, the next row answers.
+/// `the_defaults_hold_what_they_claim` holds each reason against that
+/// file). The exact pull-off's row reaches down to the smallest ρ of the
+/// stored pull-offs (`exact::stored`, ρ = 0.0592) rounded up; below, the
+/// next row answers.
 pub(crate) const DEFAULTS: [DefaultRow; 5] = [
     DefaultRow {
         question: Question::PullOff,
         from_rho: 0.4,
         model: "conformal:8",
-        why: "within 0.3 % of the exact pull-off in force at every rho of docs/accuracy.md from 0.4 to 1, in a tenth of a second",
+        why: "within 0.3 % of the exact pull-off in force at every rho of docs/accuracy.md from 0.4 to 1, in tens of milliseconds",
     },
     DefaultRow {
         question: Question::PullOff,
@@ -245,7 +244,8 @@ pub(crate) const DEFAULTS: [DefaultRow; 5] = [
 ];
 
 /// The smallest ρ of the exact pull-off's row in [`DEFAULTS`]: where the
-/// stored pull-offs end (`exact::stored`), rounded down.
+/// stored pull-offs end (`exact::stored`, 0.0592), rounded up (the test
+/// holds the stored pull-offs to reach it).
 const STORED_REACHED: f64 = 0.06;
 
 /// The row of [`DEFAULTS`] for `question` at `rho`.

@@ -5,9 +5,9 @@
 //! follow](super::resolve)), and the route that starts from them.
 //!
 //! Below ρ = 0.3 the pull-off is the one followed in ρ from the pull-off
-//! at ρ = 0.3 (docs/exact.md, "The pull-off below ρ = 0.3"); following it
-//! from 0.3 each time costs one step per 0.01–0.02 in ρ, a minute and a
-//! half to ρ = 0.1. Started instead from the stored pull-off nearest above
+//! at ρ = 0.3 (docs/exact.md, "The arclength representation"); following
+//! it from 0.3 each time costs one step per 0.01–0.02 in ρ: 7.5 s to
+//! ρ = 0.1, a minute and a half to 0.066. Started instead from the stored pull-off nearest above
 //! the ρ asked for, the same follow takes one step or two. A stored
 //! pull-off is only a start: it is checked on the fine grid before it is
 //! used (its boundary error at most [`CONVERGED`](super::CONVERGED)), and
@@ -17,7 +17,7 @@
 //!
 //! Owns: [`TOP`], [`Stored`], [`StoredPullOff`], [`pull_off`],
 //! [`store`]. May use: its parent `exact` (`resolve`'s follow and
-//! escalation), `control`, `error`.
+//! escalation), `error`.
 
 #[cfg(feature = "cli")]
 use super::resolve::{default_tries, pull_off_followed_in_arclength_visiting, pull_off_on};
