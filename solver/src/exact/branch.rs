@@ -512,16 +512,25 @@ impl Exact {
     /// ([`Exact::force_minimum_nearest`]). Far cheaper than the trace: a
     /// handful of states at fixed ā, each one or two Newton steps.
     pub(crate) fn force_minimum_in_size(&self, start: &ExactState) -> Result<ExactState> {
+        self.force_minimum_in_size_from(self.unknowns(start))
+    }
+
+    /// [`Exact::force_minimum_in_size`] from the unknowns `start` of a
+    /// converged state of this truncation (no fine-grid check of the start:
+    /// only the minimum is checked, as [`Exact::state`] checks every state
+    /// it returns).
+    pub(crate) fn force_minimum_in_size_from(&self, start: DVector<f64>) -> Result<ExactState> {
+        let start_a = self.contour_of(&start).a_bar();
         let failed = |why: &str| {
             Error::NoState(format!(
                 "the force minimum near a_bar = {} at rho = {} by the secant method in a_bar: {why}",
-                crate::error::rounded(start.a_bar),
+                crate::error::rounded(start_a),
                 crate::error::rounded(self.rho)
             ))
         };
         let id = self.unknown_count() - 1;
-        let mut u = self.unknowns(start);
-        let mut a = start.a_bar;
+        let mut u = start;
+        let mut a = start_a;
         let (mut g, mut du) = self
             .force_slope_in_size(&u)
             .ok_or_else(|| failed("the state equations at fixed a_bar are singular"))?;
@@ -542,7 +551,7 @@ impl Exact {
                 }
             }
             let next = a + step;
-            if (next - start.a_bar).abs() > 0.3 {
+            if (next - start_a).abs() > 0.3 {
                 return Err(failed("it left a_bar within 0.3 of the start"));
             }
             // from the tangent's prediction, else from the state itself

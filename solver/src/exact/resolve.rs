@@ -690,11 +690,14 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
         let next = (at.rho - step).max(rho);
         let t = Truncation::in_arclength(ARCLENGTH_ESCALATION[k]);
         let ex = Exact::on(start.gap, next, t)?.deferring_stability();
-        // Newton at the previous pull-off's ā, else at its δ̄
+        // Newton at the previous pull-off's ā, else at its δ̄ (the state
+        // there is checked on the fine grid only where the trace needs it)
         let from = |hold: Hold| {
-            ex.solve_at(hold, &at.contour, at.delta_bar).and_then(|s0| {
-                ex.force_minimum_in_size(&s0)
-                    .or_else(|_| ex.force_minimum_nearest(&s0, at.a_bar))
+            ex.newton(hold, &at.contour, at.delta_bar).and_then(|u0| {
+                ex.force_minimum_in_size_from(u0.clone()).or_else(|_| {
+                    ex.state(&u0)
+                        .and_then(|s0| ex.force_minimum_nearest(&s0, at.a_bar))
+                })
             })
         };
         let found = from(Hold::Size(at.a_bar)).or_else(|_| from(Hold::Delta(at.delta_bar)));
