@@ -424,7 +424,7 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
     o.push_str(
         "\n## Convergence under doubling\n\n\
          Each resolved pull-off above (N contour modes, 8 N quadrature points) is solved again at its ā with \
-         2N modes and 16 N points, from its own contour; the relative changes of F̄ and s are the truncation \
+         2N modes and 16 N points (or, where 2N is more than the solver accepts, its most: 320), from its own contour; the relative changes of F̄ and s are the truncation \
          and quadrature error of the pull-off. (At the pull-off F̄ is stationary in ā, so keeping ā fixed \
          does not hide a change of F̄; s is compared at the same ā.)\n\n\
          | ρ | N | F̄ (N) | F̄ (2N) | change of F̄ | change of s | bc (2N) |\n|---|---|---|---|---|---|---|\n",
@@ -670,15 +670,17 @@ pub(crate) struct Doubling {
 /// The doubling check of a resolved pull-off `coarse` (from [`row`]).
 pub(crate) fn doubling(coarse: &ExactState) -> Doubling {
     let t = coarse.truncation;
+    // twice the modes and points, or as many as the solver accepts
+    let modes = (2 * t.modes).min(crate::exact::MAX_MODES);
     let fine = Exact::new(
         coarse.rho,
         Truncation {
-            modes: 2 * t.modes,
-            points: 2 * t.points,
+            modes,
+            points: t.points * modes / t.modes,
             arclength: if t.arclength == 0 {
                 0
             } else {
-                (2 * t.arclength + 1).min(2 * t.modes)
+                (2 * t.arclength + 1).min(modes)
             },
         },
     )
@@ -699,7 +701,14 @@ pub(crate) fn render_doubling(d: &Doubling) -> String {
         Ok(f) => format!(
             "| {} | {} | {:.12} | {:.12} | {:.1e} | {:.1e} | {} |",
             d.rho,
-            c.truncation.modes,
+            if f.truncation.modes == 2 * c.truncation.modes {
+                c.truncation.modes.to_string()
+            } else {
+                format!(
+                    "{} (refined to {}, the most the solver accepts)",
+                    c.truncation.modes, f.truncation.modes
+                )
+            },
             c.force_bar,
             f.force_bar,
             (f.force_bar / c.force_bar - 1.0).abs(),

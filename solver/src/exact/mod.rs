@@ -512,16 +512,17 @@ pub struct Exact {
     with_stability: bool,
 }
 
-/// The longest contour series accepted ([`Truncation::modes`]): twice
-/// [`MAX_USER_MODES`], for the doubling checks of `thinjkr accuracy`.
-pub(crate) const MAX_MODES: usize = 2 * MAX_USER_MODES;
+/// The longest contour series accepted ([`Truncation::modes`]): the last
+/// rung of the arclength representation's escalation (320 modes of each
+/// sign, the pull-off followed down to ρ = 0.0452), more than twice
+/// [`MAX_USER_MODES`] (the doubling checks of `thinjkr accuracy`).
+pub(crate) const MAX_MODES: usize = 320;
 /// The most quadrature points accepted ([`Truncation::points`]): the
 /// boundary integral equation's matrices grow as points², the fine check
-/// uses twice as many. Measured with 64 modes and 2048 points
-/// (`thinjkr exact solve --rho 0.9 --force 1`): 0.52 GB and about 2 min;
-/// 4096 points took over 2 GB. The doubling checks of `thinjkr accuracy`
-/// use at most 1536.
-pub(crate) const MAX_POINTS: usize = 2048;
+/// uses twice as many. 320 modes of each sign on 2560 points (`thinjkr
+/// exact store-pull-offs`, its last steps) peak at 0.62 GB; an early
+/// version took 0.52 GB and 2 min for 64 modes on 2048 points.
+pub(crate) const MAX_POINTS: usize = 2560;
 
 impl Exact {
     /// The exact problem at `rho` ∈ (0, 1] on the cylinders' gap (1),
@@ -550,7 +551,7 @@ impl Exact {
             return Err(Error::OutOfRange {
                 name: "points",
                 value: truncation.points as f64,
-                range: "at most 2048 (memory and time grow as points²: 2048 points with 64 modes take about 0.5 GB and 2 min)".into(),
+                range: "at most 2560 (memory and time grow as points²: 2560 points with 320 modes take about 0.6 GB)".into(),
             });
         }
         if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {

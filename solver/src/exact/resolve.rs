@@ -642,10 +642,12 @@ pub(crate) fn at_with(
 /// The arclength representation's contour modes, escalated in order by
 /// [`pull_off_followed_in_arclength`]: 96 carries the pull-off down to
 /// ρ ≈ 0.089, 128 to ρ ≈ 0.074, 160 to ρ ≈ 0.065 (through ρ = 0.0718,
-/// θ = 30° for equal cylinders, boundary error 3.1e-11) and 192, the most
-/// [`MAX_MODES`](super::MAX_MODES) allows, to ρ = 0.0592, where the
-/// peanut's necks have narrowed to a half-width of 0.15.
-pub(crate) const ARCLENGTH_ESCALATION: [usize; 6] = [48, 64, 96, 128, 160, 192];
+/// θ = 30° for equal cylinders, boundary error 3.1e-11), 192 to
+/// ρ = 0.0592, 224 to 0.0555, 256 to 0.0518, 288 to 0.0494 (θ = 25°) and
+/// 320, the most [`MAX_MODES`](super::MAX_MODES) allows, to ρ = 0.0452,
+/// where the peanut's grooves have narrowed to a half-width of 0.090.
+pub(crate) const ARCLENGTH_ESCALATION: [usize; 10] =
+    [48, 64, 96, 128, 160, 192, 224, 256, 288, 320];
 
 /// The load-controlled pull-off (the first minimum of F̄ on the arm that
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
@@ -910,7 +912,7 @@ mod convergence {
     /// The convergence table of docs/exact.md for the pull-offs below
     /// ρ = 0.3 (not run by default: about 6 min on the release build):
     /// each pull-off as `pull_off_resolved` finds it, solved again at its ā
-    /// with N = 32 … 192 modes of each sign; the boundary error on the fine
+    /// with N = 32 … 320 modes of each sign; the boundary error on the fine
     /// grid and F̄'s change from the finest. `cargo test --release -p thinjkr
     /// --lib convergence_table -- --ignored --nocapture`. It holds what the
     /// docs say of the table: at each ρ the boundary error falls with N
@@ -919,9 +921,9 @@ mod convergence {
     #[test]
     #[ignore]
     fn convergence_table_of_the_small_rho_pull_offs() {
-        let ns = [32, 48, 64, 96, 128, 160, 192];
+        let ns = [32, 48, 64, 96, 128, 160, 192, 224, 256, 288, 320];
         println!("| ρ | N = {} |", ns.map(|n| n.to_string()).join(" | "));
-        for rho in [0.2, 0.1, 0.0718, 0.0592] {
+        for rho in [0.2, 0.1, 0.0718, 0.0592, 0.05, 0.0452] {
             let po = pull_off_resolved(rho).unwrap().0;
             let rows: Vec<(f64, f64)> = ns
                 .iter()

@@ -30,7 +30,7 @@ use crate::error::{Error, Result};
 pub(crate) const TOP: f64 = 0.3;
 
 /// How far down in ρ [`store`] follows the pull-off (it stops where the
-/// follow stops converging, at ρ = 0.0592 with 192 modes).
+/// follow stops converging, at ρ = 0.0452 with 320 modes).
 #[cfg(feature = "cli")]
 const FLOOR: f64 = 0.01;
 
