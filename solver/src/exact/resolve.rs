@@ -649,6 +649,10 @@ pub(crate) fn at_with(
 pub(crate) const ARCLENGTH_ESCALATION: [usize; 10] =
     [48, 64, 96, 128, 160, 192, 224, 256, 288, 320];
 
+/// The follow's smallest step in ρ: [`pull_off_followed_in_arclength`]
+/// halves a failed step while it is larger.
+pub(crate) const SMALLEST_RHO_STEP: f64 = 0.00125;
+
 /// The load-controlled pull-off (the first minimum of F̄ on the arm that
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
 /// larger ρ, in the arclength representation ([`Truncation::in_arclength`]).
@@ -710,7 +714,7 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
                 step = (step * 1.5).min(0.02);
             }
             Ok(_) if k + 1 < ARCLENGTH_ESCALATION.len() => k += 1,
-            _ if step > 0.00125 => step *= 0.5,
+            _ if step > SMALLEST_RHO_STEP => step *= 0.5,
             stopped => {
                 // how the step at `next` failed, after "only: at rho = …"
                 let how = match stopped {

@@ -114,12 +114,31 @@ pub(crate) fn stored() -> Option<&'static Stored> {
 /// The pull-off at `rho` followed in ρ from the stored pull-off nearest
 /// above it; `None` (the route not taken) for another gap than the
 /// cylinders', for ρ at or above [`TOP`], or where no stored start passes
-/// its check.
+/// its check. Below where the stored follow stopped, by more than the
+/// follow's smallest step in ρ, and with its last pull-off already at the
+/// escalation's last rung, the follow is not tried again: the store's own
+/// follow, from that pull-off with the same escalation, failed at every
+/// step it tried down to the smallest (a minute's work with 320 modes), so
+/// the store's reason is the answer, typed ([`Error::StopsInRho`]).
 pub(crate) fn pull_off(gap: Gap, rho: f64) -> Option<Result<ExactState>> {
     if gap != Gap::CYLINDERS || !(rho > 0.0 && rho < TOP) {
         return None;
     }
     let table = stored()?;
+    let last_rung = super::resolve::ARCLENGTH_ESCALATION.last().copied();
+    let at_last_rung = table
+        .pull_offs
+        .last()
+        .is_some_and(|p| Some(p.truncation.modes) == last_rung);
+    if at_last_rung && rho < table.reached - super::resolve::SMALLEST_RHO_STEP {
+        return Some(Err(Error::StopsInRho {
+            reached: table.reached,
+            what: format!(
+                "{} (as `thinjkr exact store-pull-offs` followed it, with the most modes the solver accepts; solver/data/exact_pull_offs.json)",
+                table.why_stopped
+            ),
+        }));
+    }
     let nearest = table
         .pull_offs
         .iter()
@@ -157,6 +176,23 @@ pub(crate) fn store() -> Result<Stored> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Well below where the stored follow stopped, the answer is the
+    /// store's reason, typed, without a follow (which would take a minute):
+    /// a follow's own error would name the ρ it reached from its start, not
+    /// the file.
+    #[test]
+    fn below_the_stored_pull_offs_the_answer_is_the_stores_reason() {
+        let table = stored().unwrap();
+        match pull_off(Gap::cylinders(), 0.02) {
+            Some(Err(Error::StopsInRho { reached, what })) => {
+                assert_eq!(reached, table.reached);
+                assert!(what.starts_with(&table.why_stopped), "{what}");
+                assert!(what.contains("solver/data/exact_pull_offs.json"), "{what}");
+            }
+            other => panic!("{:?}", other.map(|r| r.map(|st| st.rho))),
+        }
+    }
 
     /// The file parses, its pull-offs fall in ρ from [`TOP`] down to
     /// `reached`, and three of them (the first, one in the middle, the
