@@ -684,7 +684,13 @@ pub(crate) fn doubling(coarse: &ExactState) -> Doubling {
             },
         },
     )
-    .and_then(|ex| ex.solve(coarse.a_bar, &coarse.contour, coarse.delta_bar))
+    .and_then(|ex| {
+        ex.keeping_the_speed_of_grooved(&coarse.contour).solve(
+            coarse.a_bar,
+            &coarse.contour,
+            coarse.delta_bar,
+        )
+    })
     .map_err(|e| e.to_string());
     Doubling {
         rho: coarse.rho,

@@ -208,7 +208,7 @@ pub(crate) struct DefaultRow {
 /// docs/accuracy.md against the exact solution (the test
 /// `the_defaults_hold_what_they_claim` holds each reason against that
 /// file). The exact pull-off's row reaches down to the smallest ρ of the
-/// stored pull-offs (`exact::stored`, ρ = 0.0452) rounded up; below, the
+/// stored pull-offs (`exact::stored`, ρ = 0.0366) rounded up; below, the
 /// next row answers.
 pub(crate) const DEFAULTS: [DefaultRow; 5] = [
     DefaultRow {
@@ -227,7 +227,7 @@ pub(crate) const DEFAULTS: [DefaultRow; 5] = [
         question: Question::PullOff,
         from_rho: 0.0,
         model: "max",
-        why: "the exact pull-off is not resolved below rho = 0.046 (docs/exact.md: it is followed down to 0.0452); max is the model nearest to it at the smallest rho measured, but its error grows as rho falls (+6.5 % at rho = 0.1, +45 % at 0.05) and below is not measured",
+        why: "the exact pull-off is not resolved below rho = 0.037 (docs/exact.md: it is followed down to 0.0366); max is the model nearest to it at the smallest rho measured, but its error grows as rho falls (+6.5 % at rho = 0.1, +45 % at 0.05) and below is not measured",
     },
     DefaultRow {
         question: Question::AtControl,
@@ -244,9 +244,9 @@ pub(crate) const DEFAULTS: [DefaultRow; 5] = [
 ];
 
 /// The smallest ρ of the exact pull-off's row in [`DEFAULTS`]: where the
-/// stored pull-offs end (`exact::stored`, 0.0452), rounded up (the test
+/// stored pull-offs end (`exact::stored`, 0.0366), rounded up (the test
 /// holds the stored pull-offs to reach it).
-const STORED_REACHED: f64 = 0.046;
+const STORED_REACHED: f64 = 0.037;
 
 /// The row of [`DEFAULTS`] for `question` at `rho`.
 pub(crate) fn default_row(question: Question, rho: f64) -> &'static DefaultRow {
@@ -884,8 +884,8 @@ mod tests {
         assert_eq!(at(Question::PullOff, 0.3), EXACT);
         assert_eq!(at(Question::PullOff, 0.07), EXACT);
         assert_eq!(at(Question::PullOff, 0.05), EXACT);
-        assert_eq!(at(Question::PullOff, 0.046), EXACT);
-        assert_eq!(at(Question::PullOff, 0.045), "max");
+        assert_eq!(at(Question::PullOff, 0.037), EXACT);
+        assert_eq!(at(Question::PullOff, 0.036), "max");
         assert_eq!(at(Question::AtControl, 0.2), "energy");
         // conformal:8 is the fifth cell (| ρ | c2 | c4 | c6 | c8 |)
         let conformal = table("### Load-controlled pull-off");
