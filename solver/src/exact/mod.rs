@@ -597,7 +597,8 @@ pub(crate) const GROOVE_WIDTH: f64 = 0.1;
 /// rung of the arclength representation's escalation (320 modes of each
 /// sign, the pull-off followed down to ρ = 0.0366), more than twice
 /// [`MAX_USER_MODES`] (the doubling checks of `thinjkr accuracy`).
-pub(crate) const MAX_MODES: usize = 320;
+pub(crate) const MAX_MODES: usize =
+    resolve::ARCLENGTH_ESCALATION[resolve::ARCLENGTH_ESCALATION.len() - 1];
 /// The most quadrature points accepted ([`Truncation::points`]): the
 /// boundary integral equation's matrices grow as points², the fine check
 /// uses twice as many. 320 modes of each sign on 2560 points (`thinjkr
@@ -632,7 +633,7 @@ impl Exact {
             return Err(Error::OutOfRange {
                 name: "points",
                 value: truncation.points as f64,
-                range: "at most 2560 (memory and time grow as points²: 2560 points with 320 modes take about 0.6 GB)".into(),
+                range: format!("at most {MAX_POINTS} (memory and time grow as points²: 2560 points with 320 modes take about 0.6 GB)").into(),
             });
         }
         if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {
