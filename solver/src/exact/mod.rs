@@ -272,8 +272,10 @@ impl Contour {
     /// θ proportional to the weighted arclength ∫ d ds, the density d = 1 +
     /// [`GROOVE_CROWDING`] · e^(−(t − t_g)²/σ²) summed over the four grooves,
     /// with t = 2π s/perimeter and σ = [`GROOVE_WIDTH`] (so the map is
-    /// smooth, and the same for the same curve whatever its parameter); `None`
-    /// where the contour has no narrow groove.
+    /// smooth); `None` where the contour has no narrow groove. t is the
+    /// parameter of an equal-arclength series of this contour's modes,
+    /// which holds an already crowded contour only roughly (docs/exact.md,
+    /// "Convergence under refinement": the next thing to mend).
     pub(crate) fn crowded_at_groove(&self, modes: usize) -> Option<Contour> {
         self.narrow_groove()?;
         // the bump is placed in the parameter of equal arclength
