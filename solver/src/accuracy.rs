@@ -350,11 +350,23 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
         .filter(|r| r.quantity == Quantity::PullOff && r.exact.is_ok())
         .map(|r| r.rho)
         .fold(f64::INFINITY, f64::min);
-    o.push_str(&format!(
-        "\nThe exact pull-off on this family is resolved down to ρ = {lowest}; below, the pull-off followed \
-         in ρ in the arclength representation stops converging (the rows say where; exact.md, \
-         \"Convergence under refinement\").\n"
-    ));
+    let smallest = rows.iter().map(|r| r.rho).fold(f64::INFINITY, f64::min);
+    let stored = crate::exact::stored::stored()
+        .map(|t| crate::error::rounded(t.reached))
+        .unwrap_or_else(|| "the last stored pull-off".into());
+    o.push_str(&if lowest <= smallest {
+        format!(
+            "\nThe exact pull-off on this family is resolved at every ρ of the table, down to ρ = {lowest} \
+             (followed in ρ in the arclength representation, it converges down to ρ = {stored}; exact.md, \
+             \"Convergence under refinement\").\n"
+        )
+    } else {
+        format!(
+            "\nThe exact pull-off on this family is resolved down to ρ = {lowest}; below, the pull-off followed \
+             in ρ in the arclength representation stops converging (the rows say where; exact.md, \
+             \"Convergence under refinement\").\n"
+        )
+    });
     let names: Vec<String> = ModelId::ALL.iter().map(|m| format!("`{m}`")).collect();
     for q in Quantity::ALL {
         let first = match q {

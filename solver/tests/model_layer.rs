@@ -186,9 +186,9 @@ fn solve_at_a_force_says_how_many_other_states_have_it() {
 /// h = 0.1 mm, G′ = 1 MPa, Δγ = 0.05 J/m²) from 16° to 90° the default's
 /// pull-off is measured against the exact pull-off (`exact::pull_off_resolved`,
 /// another solver than the default's `conformal:8` where that answers):
-/// within 0.5 % wherever the exact pull-off is resolved (θ ≥ 21.6°, where
-/// the default is the exact pull-off itself below θ = 64.0°, ρ = 0.4), and
-/// where it is not (θ = 16°, 20°), the answer is `max`'s and says why.
+/// within 0.5 % at every one (the exact pull-off is resolved down to
+/// θ = 13.5°, and the default is the exact pull-off itself below θ = 64.0°,
+/// ρ = 0.4).
 /// Each answer names its model and its reason, and carries `max` beside it
 /// where the two differ by more than 1 %. A named model is answered as
 /// before, without a reason.
@@ -215,30 +215,16 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
             answer.model
         )));
         let (.., force_bar) = answer.state.size_and_load();
-        // (below θ = 21.6°, where the exact pull-off is not resolved: not
-        // tried again, as each try costs seconds)
-        let exact = if theta < 21.6 {
-            Err(thinjkr::Error::NoState("below theta = 21.6 degrees".into()))
-        } else {
-            thinjkr::exact::pull_off_resolved(rho)
-        };
-        match exact {
-            Ok((exact, _)) => {
-                let off = (force_bar / exact.force_bar - 1.0).abs();
-                assert!(
-                    off <= 0.005,
-                    "theta {theta}: {} off by {off:e}",
-                    answer.model
-                );
-                let expected = if rho >= 0.4 { "conformal:8" } else { "exact" };
-                assert_eq!(answer.model, expected, "theta {theta}");
-            }
-            Err(e) => {
-                assert!(theta < 21.6, "theta {theta}: {e}");
-                assert_eq!(answer.model, "max");
-                assert!(why.contains("not resolved below"), "{why}");
-            }
-        }
+        let (exact, _) =
+            thinjkr::exact::pull_off_resolved(rho).unwrap_or_else(|e| panic!("theta {theta}: {e}"));
+        let off = (force_bar / exact.force_bar - 1.0).abs();
+        assert!(
+            off <= 0.005,
+            "theta {theta}: {} off by {off:e}",
+            answer.model
+        );
+        let expected = if rho >= 0.4 { "conformal:8" } else { "exact" };
+        assert_eq!(answer.model, expected, "theta {theta}");
         // max beside it exactly where the two differ by more than 1 %
         let max = Choice::Ellipse(ModelId::Max)
             .pull_off(rho, FoldCondition::Load)

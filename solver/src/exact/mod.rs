@@ -181,35 +181,8 @@ impl Contour {
     pub(crate) fn reparametrised(&self, modes: usize, density: &dyn Fn(f64) -> f64) -> Contour {
         use std::f64::consts::PI;
         let modes = modes.max(1);
-        let n = 32 * modes.max(self.b.len() + self.c.len() + 1);
-        // arclength s(θ) = ∫₀^θ |z′|: the mean speed and the Fourier series of
-        // |z′| − mean integrated term by term (|z′| is even, of period π)
-        let speed: Vec<f64> = (0..n)
-            .map(|i| {
-                let theta = 2.0 * PI * i as f64 / n as f64;
-                density(theta) * self.at(theta)[1].norm()
-            })
-            .collect();
-        let mean = speed.iter().sum::<f64>() / n as f64;
-        let harmonics = n / 4;
-        let cos_k: Vec<f64> = (1..harmonics)
-            .map(|k| {
-                2.0 / n as f64
-                    * speed
-                        .iter()
-                        .enumerate()
-                        .map(|(i, v)| v * (2.0 * k as f64 * 2.0 * PI * i as f64 / n as f64).cos())
-                        .sum::<f64>()
-            })
-            .collect();
-        let arc = |theta: f64| {
-            mean * theta
-                + cos_k
-                    .iter()
-                    .enumerate()
-                    .map(|(k, a)| a * (2.0 * (k + 1) as f64 * theta).sin() / (2.0 * (k + 1) as f64))
-                    .sum::<f64>()
-        };
+        let n = self.sampling(modes);
+        let (mean, arc) = self.weighted_arclength(n, density);
         let speed_at = |theta: f64| density(theta) * self.at(theta)[1].norm();
         // z at equal arclength: t = 2π s/length, θ(t) by Newton from θ = t
         let m = n;
@@ -243,6 +216,56 @@ impl Contour {
         }
     }
 
+    /// The points a reparametrisation to `modes` modes samples this
+    /// contour at: 32 a mode of the larger of the two series.
+    fn sampling(&self, modes: usize) -> usize {
+        32 * modes.max(self.b.len() + self.c.len() + 1)
+    }
+
+    /// The weighted arclength θ ↦ ∫₀^θ density·|z′| dθ of this contour,
+    /// as its mean slope and the function: the integrand sampled at `n`
+    /// points (it is even, of period π) and its Fourier series integrated
+    /// term by term, the sines summed by the recurrence of e^{2iθ}.
+    fn weighted_arclength<'a>(
+        &'a self,
+        n: usize,
+        density: &'a dyn Fn(f64) -> f64,
+    ) -> (f64, impl Fn(f64) -> f64 + 'a) {
+        use std::f64::consts::PI;
+        let speed: Vec<f64> = (0..n)
+            .map(|i| {
+                let theta = 2.0 * PI * i as f64 / n as f64;
+                density(theta) * self.at(theta)[1].norm()
+            })
+            .collect();
+        let mean = speed.iter().sum::<f64>() / n as f64;
+        let harmonics = n / 4;
+        // the k-th cosine coefficient divided by 2k, the factor of its
+        // integral sin(2kθ)/(2k)
+        let sine_k: Vec<f64> = (1..harmonics)
+            .map(|k| {
+                2.0 / n as f64
+                    * speed
+                        .iter()
+                        .enumerate()
+                        .map(|(i, v)| v * (2.0 * k as f64 * 2.0 * PI * i as f64 / n as f64).cos())
+                        .sum::<f64>()
+                    / (2.0 * k as f64)
+            })
+            .collect();
+        let arc = move |theta: f64| {
+            let step = Complex::new(0.0, 2.0 * theta).exp();
+            let mut e = step;
+            let mut sum = 0.0;
+            for a in &sine_k {
+                sum += a * e.im;
+                e *= step;
+            }
+            mean * theta + sum
+        };
+        (mean, arc)
+    }
+
     /// The groove of a peanut-shaped contour: the parameter θ of the
     /// bottom of the deepest local minimum of Y(X) on the upper flank
     /// (0 < θ < π/2, X > 0) and its half-width Y there; `None` where the
@@ -270,29 +293,48 @@ impl Contour {
     /// The same curve as a series of `modes` modes of each sign with its
     /// points crowded into its narrow grooves ([`Contour::narrow_groove`]):
     /// θ proportional to the weighted arclength ∫ d ds, the density d = 1 +
-    /// [`GROOVE_CROWDING`] · e^(−(t − t_g)²/σ²) summed over the four grooves,
-    /// with t = 2π s/perimeter and σ = [`GROOVE_WIDTH`] (so the map is
-    /// smooth); `None` where the contour has no narrow groove. t is the
-    /// parameter of an equal-arclength series of this contour's modes,
-    /// which holds an already crowded contour only roughly (docs/exact.md,
-    /// "Convergence under refinement": the next thing to mend).
+    /// h · e^(−(t − t_g)²/σ²) summed over the four grooves, with t = 2π
+    /// s/perimeter, σ = [`GROOVE_WIDTH`] (so the map is smooth) and h the
+    /// larger of [`GROOVE_CROWDING`] and [`CROWDING_TIMES_HALF_WIDTH`] over
+    /// the groove's half-width (narrower grooves, more points); `None` where the contour has no narrow groove. t is this
+    /// contour's own arclength fraction, so that the result depends on the
+    /// curve only and not on how this contour's points lie (an already
+    /// crowded contour is crowded again to itself).
     pub(crate) fn crowded_at_groove(&self, modes: usize) -> Option<Contour> {
-        self.narrow_groove()?;
-        // the bump is placed in the parameter of equal arclength
-        let even = self.in_arclength(modes.max(self.b.len()));
-        let (t_g, _) = even.groove()?;
+        let (theta_g, half_width) = self.narrow_groove()?;
+        let crowding = GROOVE_CROWDING.max(CROWDING_TIMES_HALF_WIDTH / half_width);
+        Some(self.crowded_with(theta_g, modes, crowding, GROOVE_WIDTH))
+    }
+
+    /// The same curve as a series of `modes` modes of each sign with its
+    /// points crowded into the groove whose bottom is at this contour's
+    /// parameter `theta_g` (0 < θ_g < π/2) and its three mirror images, by
+    /// a bump of height `crowding` and width `width` in t
+    /// ([`Contour::crowded_at_groove`]).
+    pub(crate) fn crowded_with(
+        &self,
+        theta_g: f64,
+        modes: usize,
+        crowding: f64,
+        width: f64,
+    ) -> Contour {
+        let n = self.sampling(modes.max(1));
+        let (mean, arc) = self.weighted_arclength(n, &|_| 1.0);
+        let t_of = |theta: f64| arc(theta) / mean;
+        let t_g = t_of(theta_g);
         let pi = std::f64::consts::PI;
-        let density = |t: f64| {
-            1.0 + [t_g, -t_g, pi - t_g, pi + t_g, t_g - pi, 2.0 * pi - t_g]
+        let density = |theta: f64| {
+            let t = t_of(theta);
+            1.0 + [t_g, -t_g, pi - t_g, pi + t_g]
                 .iter()
                 .map(|c| {
                     let d = (t - c).rem_euclid(2.0 * pi);
                     let d = d.min(2.0 * pi - d);
-                    GROOVE_CROWDING * (-(d / GROOVE_WIDTH).powi(2)).exp()
+                    crowding * (-(d / width).powi(2)).exp()
                 })
                 .sum::<f64>()
         };
-        Some(even.reparametrised(modes, &density))
+        self.reparametrised(modes, &density)
     }
 
     /// z, z', z'' at θ.
@@ -582,22 +624,32 @@ pub struct Exact {
 /// The groove's half-width below which the follow of the pull-off in ρ
 /// crowds the points into it ([`Contour::crowded_at_groove`]): at
 /// ρ = 0.0631 (half-width 0.170) the crowded series is better at every
-/// truncation (128 modes: boundary error 3.9e-10 against 8.7e-8 at equal
-/// arclength), at ρ = 0.0813 (0.266) worse (9.2e-10 against 3.9e-11).
+/// truncation (128 modes: boundary error 3.3e-11 against 8.7e-8 at equal
+/// arclength), at ρ = 0.0813 (0.266) no better (96 modes: 1.4e-8 against
+/// 8.2e-9), at ρ = 0.215 (0.957) worse (64 modes: 1.6e-6 against 6.2e-12).
 pub(crate) const CROWD_BELOW_HALF_WIDTH: f64 = 0.2;
-/// The density of points added at a groove's bottom, relative to 1
-/// elsewhere ([`Contour::crowded_at_groove`]). At ρ = 0.0452 with 160
-/// modes: boundary error 2.0e-10 with 1, 9.1e-12 with 2; with 4 Newton
-/// fails (the crowded series no longer fits the curve).
+/// The least density of points added at a groove's bottom, relative to 1
+/// elsewhere ([`Contour::crowded_at_groove`]); narrower grooves get
+/// [`CROWDING_TIMES_HALF_WIDTH`] divided by their half-width where that is
+/// more. The best height grows as the groove narrows (boundary error with
+/// σ = 0.1, heights 2 / 3 / 4 / 6 / 8): at ρ = 0.0442 (half-width 0.086,
+/// 160 modes) 2.3e-11 / 1.0e-11 / 1.8e-10 / 4.5e-9 / 7.9e-8; at ρ = 0.0366
+/// (0.061, 192 modes) 5.5e-10 / 5.2e-11 / 5.5e-11 / 2.7e-10 / 4.7e-9; at
+/// ρ = 0.0270 (0.036, 256 modes) 1.4e-8 / 4.3e-10 / 3.0e-11 / 2.6e-11 /
+/// 2.8e-11.
 pub(crate) const GROOVE_CROWDING: f64 = 2.0;
-/// The width of the crowding, in the parameter of equal arclength (2π for
-/// the whole perimeter). At ρ = 0.0452 with 160 modes: 9.1e-12 with 0.1,
-/// 4.4e-11 with 0.2.
+/// The height of the crowding times the groove's half-width, where that
+/// is more than [`GROOVE_CROWDING`]: 2.3 at ρ = 0.0442, 3.3 at 0.0366 and
+/// 5.6 at 0.0270, inside the best range of each.
+pub(crate) const CROWDING_TIMES_HALF_WIDTH: f64 = 0.2;
+/// The width σ of the crowding, in the parameter of equal arclength (2π
+/// for the whole perimeter). Against 0.05 and 0.07 (heights 2 to 8), 0.1
+/// is best or within a factor 1.5 of the best at the three ρ above.
 pub(crate) const GROOVE_WIDTH: f64 = 0.1;
 
 /// The longest contour series accepted ([`Truncation::modes`]): the last
 /// rung of the arclength representation's escalation (320 modes of each
-/// sign, the pull-off followed down to ρ = 0.0366), more than twice
+/// sign, the pull-off followed down to ρ = 0.0141), more than twice
 /// [`MAX_USER_MODES`] (the doubling checks of `thinjkr accuracy`).
 pub(crate) const MAX_MODES: usize =
     resolve::ARCLENGTH_ESCALATION[resolve::ARCLENGTH_ESCALATION.len() - 1];
