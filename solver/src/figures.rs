@@ -6,7 +6,8 @@
 //!
 //! The figures of the exact solution ([`exact_all`]) are drawn from the
 //! exact pull-offs of the accuracy run (`derive/data/exact_reference.json`,
-//! [`crate::accuracy::Reference`]) beside every model's.
+//! [`crate::accuracy::Reference`]), with the stored pull-offs between them
+//! below ρ = 0.3 (`exact::stored`), beside every model's.
 //!
 //! Owns: figure data and rendering. May use: `accuracy`, `fold`, `contact`, `curve`, `limits`,
 //! `exact`, `generated` (the paper's model `max`, whose figures these are),
@@ -848,14 +849,24 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         })
     };
     let lowest = po.iter().map(|e| e.rho).fold(f64::INFINITY, f64::min);
+    // the exact curve: the reference's pull-offs and, between them, the
+    // stored ones (resolved states of the same follow, `exact::stored`)
+    // down to the reference's lowest ρ
+    let mut exact_curve: Vec<(f64, f64)> = po.iter().map(|e| (e.rho, e.force_bar)).collect();
+    if let Some(table) = crate::exact::stored::stored() {
+        exact_curve.extend(
+            table
+                .pull_offs
+                .iter()
+                .filter(|q| q.rho >= lowest && po.iter().all(|e| (e.rho - q.rho).abs() > 1e-9))
+                .map(|q| (q.rho, q.force_bar)),
+        );
+    }
+    exact_curve.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out = Vec::new();
     // 1. pull-off force against ρ
     let colors = [BLUE, RED, GREEN, ORANGE];
-    let mut series = vec![solid(
-        "exact (2)–(3)",
-        po.iter().map(|e| (e.rho, e.force_bar)).collect(),
-        BLACK,
-    )];
+    let mut series = vec![solid("exact (2)–(3)", exact_curve.clone(), BLACK)];
     let xs: Vec<(f64, f64)> = grid(lowest, 1.0, 31).map(|rho| (rho, rho)).collect();
     for (m, &c) in ModelId::ALL.iter().zip(&colors) {
         series.push(model_pull_offs(*m, &xs, "ρ", c));
@@ -876,7 +887,10 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
     let theta_of = |rho: f64| 2.0 * rho.sqrt().atan().to_degrees();
     let mut series = vec![solid(
         "exact (2)–(3)",
-        po.iter().map(|e| (theta_of(e.rho), e.force_bar)).collect(),
+        exact_curve
+            .iter()
+            .map(|&(rho, f)| (theta_of(rho), f))
+            .collect(),
         BLACK,
     )];
     let xs: Vec<(f64, f64)> = grid(16.0, 90.0, 75)
