@@ -296,10 +296,10 @@ impl Contour {
     /// h · e^(−(t − t_g)²/σ²) summed over the four grooves, with t = 2π
     /// s/perimeter, σ = [`GROOVE_WIDTH`] (so the map is smooth) and h the
     /// larger of [`GROOVE_CROWDING`] and [`CROWDING_TIMES_HALF_WIDTH`] over
-    /// the groove's half-width (narrower grooves, more points); `None` where the contour has no narrow groove. t is this
-    /// contour's own arclength fraction, so that the result depends on the
-    /// curve only and not on how this contour's points lie (an already
-    /// crowded contour is crowded again to itself).
+    /// the groove's half-width (narrower grooves, more points); `None`
+    /// where the contour has no narrow groove. t is this contour's own
+    /// arclength fraction, so that the result depends on the curve only
+    /// (up to the truncation) and not on how this contour's points lie.
     pub(crate) fn crowded_at_groove(&self, modes: usize) -> Option<Contour> {
         let (theta_g, half_width) = self.narrow_groove()?;
         let crowding = GROOVE_CROWDING.max(CROWDING_TIMES_HALF_WIDTH / half_width);
