@@ -910,6 +910,13 @@ mod tests {
         }
         let stored = crate::exact::stored::stored().expect("the stored pull-offs");
         assert!(stored.reached <= STORED_REACHED, "{}", stored.reached);
+        // the reason of the row below names where the stored pull-offs end
+        let below = default_row(Question::PullOff, 0.0);
+        assert!(
+            below.why.contains(&crate::error::rounded(stored.reached)),
+            "{}",
+            below.why
+        );
         // the claims as the reason rounds them: +6.5 %, +45 % and +96 %
         for (r, claim, to) in [
             (0.1, 0.065, 0.0005),

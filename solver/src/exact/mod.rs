@@ -687,7 +687,7 @@ impl Exact {
             return Err(Error::OutOfRange {
                 name: "points",
                 value: truncation.points as f64,
-                range: format!("at most {MAX_POINTS} (memory and time grow as points²: 2560 points with 320 modes take about 0.6 GB)").into(),
+                range: format!("at most {MAX_POINTS} (memory and time grow as points²: {MAX_POINTS} points with {MAX_MODES} modes take about 0.6 GB)").into(),
             });
         }
         if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {
