@@ -67,8 +67,8 @@ fn benches(c: &mut Criterion) {
         });
     }
     // below rho = 0.3: followed in rho in the arclength representation
-    // from the stored pull-off nearest above (rho = 0.105, 96 modes of each
-    // sign; `exact::stored`); issue 32's goal is 200 ms
+    // from the stored pull-offs (interpolated between those at rho = 0.115,
+    // 0.105 and 0.0975, 96 modes of each sign; `exact::stored`); issue 32's goal is 200 ms
     g.measurement_time(std::time::Duration::from_secs(120));
     g.bench_function("pull-off at rho = 0.1, resolved", |b| {
         b.iter(|| exact::pull_off_resolved(black_box(0.1)).unwrap())

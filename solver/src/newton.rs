@@ -373,10 +373,14 @@ pub(crate) struct ChordStop {
 /// old one; a fresh step is halved (down to 1e-4) until the residual
 /// falls. Converged at the round-off floor, or when the steps stall
 /// (below 1e-13 relative, or below 1e-9 and no longer halving) with the
-/// residual below the tolerance.
+/// residual below the tolerance. It begins with the factorised Jacobian
+/// `first` where one is given (made at a nearby point, such as the
+/// converged state a continuation steps from), kept while it serves and
+/// refreshed as any old one is; `None` factorises at `start`.
 pub(crate) fn chord(
     system: &impl ChordSystem,
     start: DVector<f64>,
+    first: Option<LU<f64, Dyn, Dyn>>,
     config: &ChordConfig,
 ) -> std::result::Result<DVector<f64>, ChordStop> {
     let mut u = start;
@@ -389,7 +393,7 @@ pub(crate) fn chord(
     let Some(mut r) = system.residuals(&u) else {
         return Err(stop(&u, f64::NAN, 0, ChordFailure::NoResiduals));
     };
-    let mut lu = None;
+    let mut lu = first;
     let mut last_step = f64::INFINITY;
     for it in 0..config.max_iterations {
         if r.amax() <= config.floor {

@@ -320,6 +320,15 @@ fn a_bar_gradient(n: usize) -> DVector<f64> {
     g
 }
 
+/// dF̄/dā along the family at a converged state, du/dā, and the factorised
+/// Jacobian of the equations at fixed ā there
+/// ([`Exact::force_slope_in_size`]).
+struct SlopeInSize {
+    slope: f64,
+    du: DVector<f64>,
+    lu: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
+}
+
 /// The exact family at one ρ and truncation.
 impl Family<Dyn> for Exact {
     fn linearise(&self, u: &DVector<f64>) -> Option<Linear<Dyn>> {
@@ -486,7 +495,7 @@ impl Exact {
     /// the state equations at fixed ā (their Jacobian, the hold's row
     /// first) differentiated in ā. `None` where that Jacobian is singular
     /// (a fold in ā).
-    fn force_slope_in_size(&self, u: &DVector<f64>) -> Option<(f64, DVector<f64>)> {
+    fn force_slope_in_size(&self, u: &DVector<f64>) -> Option<SlopeInSize> {
         let nu = self.unknown_count();
         let lin = self.linear(u)?;
         let mut jac = DMatrix::zeros(nu, nu);
@@ -496,9 +505,10 @@ impl Exact {
             .copy_from(&self.mode_jacobian(&lin, u));
         let mut e = DVector::zeros(nu);
         e[0] = 1.0;
-        let du = jac.lu().solve(&e)?;
+        let lu = jac.lu();
+        let du = lu.solve(&e)?;
         let slope = lin.d_force.dot(&du);
-        slope.is_finite().then_some((slope, du))
+        slope.is_finite().then_some(SlopeInSize { slope, du, lu })
     }
 
     /// The minimum of F̄ over ā on the arm through `start`, a converged
@@ -520,6 +530,18 @@ impl Exact {
     /// only the minimum is checked, as [`Exact::state`] checks every state
     /// it returns).
     pub(crate) fn force_minimum_in_size_from(&self, start: DVector<f64>) -> Result<ExactState> {
+        self.force_minimum_in_size_stepping(start, 0.01)
+    }
+
+    /// [`Exact::force_minimum_in_size_from`] with the first step `first_step`
+    /// in ā (downhill): small where `start` is already near the minimum
+    /// (a prediction), so that the secant's first slope of dF̄/dā is
+    /// taken close to it.
+    pub(crate) fn force_minimum_in_size_stepping(
+        &self,
+        start: DVector<f64>,
+        first_step: f64,
+    ) -> Result<ExactState> {
         let start_a = self.contour_of(&start).a_bar();
         let failed = |why: &str| {
             Error::NoState(format!(
@@ -531,10 +553,14 @@ impl Exact {
         let id = self.unknown_count() - 1;
         let mut u = start;
         let mut a = start_a;
-        let (mut g, mut du) = self
+        let SlopeInSize {
+            slope: mut g,
+            mut du,
+            mut lu,
+        } = self
             .force_slope_in_size(&u)
             .ok_or_else(|| failed("the state equations at fixed a_bar are singular"))?;
-        let mut step = -0.01 * g.signum();
+        let mut step = -first_step.abs() * g.signum();
         let mut before: Option<(f64, f64)> = None;
         for _ in 0..30 {
             crate::newton::check_stop()?;
@@ -554,16 +580,20 @@ impl Exact {
             if (next - start_a).abs() > 0.3 {
                 return Err(failed("it left a_bar within 0.3 of the start"));
             }
-            // from the tangent's prediction, else from the state itself
+            // from the tangent's prediction, its Jacobian the one of the
+            // state stepped from (the same equations at fixed ā: the chord
+            // iteration refreshes it where it stops serving), else from the
+            // state itself
             let guess = &u + &du * step;
             let solved = self
-                .newton(Hold::Size(next), &self.contour_of(&guess), guess[id])
+                .newton_from(Hold::Size(next), guess, Some(lu))
                 .or_else(|_| self.newton(Hold::Size(next), &self.contour_of(&u), u[id]))?;
-            let (g1, du1) = self
+            let slope = self
                 .force_slope_in_size(&solved)
                 .ok_or_else(|| failed("the state equations at fixed a_bar are singular"))?;
             before = Some((a, g));
-            (u, a, g, du) = (solved, next, g1, du1);
+            (u, a) = (solved, next);
+            SlopeInSize { slope: g, du, lu } = slope;
         }
         Err(failed("no convergence in 30 steps"))
     }

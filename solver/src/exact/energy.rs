@@ -135,21 +135,27 @@ impl Exact {
         let h = 2.0 * std::f64::consts::PI / n as f64;
         // ∂Π̄/∂u_k = Σ_i ((∂p̄/∂ν)² − 1) Re(e_k(θ_i) · i conj z′_i) h at fixed δ̄
         // (V_k|z′| = Re(∂z/∂u_k ν̄)|z′| with ν = −i z′/|z′|), and its
-        // derivative in u_l with δz′ = i m_l e_l
-        let mut hess = DMatrix::zeros(m + 1, m + 1);
+        // derivative in u_l with δz′ = i m_l e_l,
+        // summed as products over the points i: Σ_i a_ik ∂(∂p̄/∂ν)_i/∂u_l with
+        // a_ik = 2 ∂p̄/∂ν_i V_k h, and Σ_i b_i Re(e_k conj e_l) m_l with
+        // b_i = ((∂p̄/∂ν)² − 1) h (Re(e_k conj e_l) = Re e_k Re e_l + Im e_k Im e_l)
         let basis = &self.grid.basis;
-        for i in 0..n {
-            let dn = lin.dn[i];
-            let rot = Complex::new(0.0, 1.0) * samples.dz[i].conj();
+        let rot: Vec<Complex<f64>> = samples
+            .dz
+            .iter()
+            .map(|d| Complex::new(0.0, 1.0) * d.conj())
+            .collect();
+        let weights: Vec<f64> = lin.dn.iter().map(|dn| (dn * dn - 1.0) * h).collect();
+        let a = DMatrix::from_fn(n, m, |i, k| 2.0 * lin.dn[i] * (basis[k][i] * rot[i]).re * h);
+        let re = DMatrix::from_fn(n, m, |i, k| basis[k][i].re);
+        let im = DMatrix::from_fn(n, m, |i, k| basis[k][i].im);
+        let weighted = |e: &DMatrix<f64>| DMatrix::from_fn(n, m, |i, k| weights[i] * e[(i, k)]);
+        let moving = a.transpose() * lin.d_dn.columns(0, m);
+        let turning = weighted(&re).transpose() * &re + weighted(&im).transpose() * &im;
+        let mut hess = DMatrix::zeros(m + 1, m + 1);
+        for l in 0..m {
             for k in 0..m {
-                let ek = basis[k][i];
-                let vk = (ek * rot).re * h;
-                let a = 2.0 * dn * vk;
-                let b = (dn * dn - 1.0) * h;
-                for l in 0..m {
-                    hess[(k, l)] +=
-                        a * lin.d_dn[(i, l)] + b * mult[l] * (ek * basis[l][i].conj()).re;
-                }
+                hess[(k, l)] = moving[(k, l)] + turning[(k, l)] * mult[l];
             }
         }
         // the border: ∂²(Π̄ − 2F̄δ̄)/∂u∂δ̄ = 2∂F̄/∂u at fixed applied F̄, and

@@ -28,6 +28,7 @@ use super::Exact;
 use nalgebra::{Complex, DMatrix, DVector};
 
 /// ∂p̄/∂ν at the grid points and F̄, with their derivatives in u.
+#[derive(Clone, Debug)]
 pub(crate) struct Linear {
     /// ∂p̄/∂ν at the grid points.
     pub dn: Vec<f64>,
@@ -45,6 +46,22 @@ impl Exact {
     /// The linearisation at u = (A, b₀..b_{N−1}, δ̄); `None` where the
     /// discrete system is singular (a self-intersecting contour).
     pub(crate) fn linear(&self, u: &DVector<f64>) -> Option<Linear> {
+        if let Ok(last) = self.last_linear.lock() {
+            if let Some((at, lin)) = last.as_ref() {
+                if at == u {
+                    return Some(lin.clone());
+                }
+            }
+        }
+        let lin = self.linearise(u)?;
+        if let Ok(mut last) = self.last_linear.lock() {
+            *last = Some((u.clone(), lin.clone()));
+        }
+        Some(lin)
+    }
+
+    /// [`Exact::linear`], computed.
+    fn linearise(&self, u: &DVector<f64>) -> Option<Linear> {
         let nc = self.truncation.coefficients();
         let nu = nc + 1;
         let grid = &self.grid;
@@ -150,16 +167,21 @@ impl Exact {
         let d_mu_red = lu.solve(&rhs)?;
         // δμ′ at every point and δμ″ at the representatives
         let (d1p, d2r) = grid.orbit_derivatives();
-        let dd_mu_all = d1p * &d_mu_red;
-        let ddd_mu_rep = d2r * &d_mu_red;
+        // (independent products, on both cores)
+        let two_cores = n >= super::TWO_CORES_FROM_POINTS;
+        let (dd_mu_all, ddd_mu_rep) =
+            super::both(two_cores, || d1p * &d_mu_red, || d2r * &d_mu_red);
         // δψ_j = (δμ′_j − ψ_j δz′_j)/z′_j
         let d_psi_all = DMatrix::<C>::from_fn(n, nu, |j, l| {
             (dd_mu_all[(j, l)] - psi[j] * ddz_of(j, l)) / s.dz[j]
         });
         // Σ_j δψ_j w_ij, and Σ_j (ψ_j − ψ_i) δw_ij
-        let t = product(&w, &d_psi_all);
+        let (t, u) = super::both(
+            two_cores,
+            || product(&w, &d_psi_all),
+            || moving_kernel_sums(grid, &reps, &inv, &w, &e, &mult, &psi),
+        );
         let w_sum: Vec<C> = (0..m).map(|r| w.row(r).iter().sum()).collect();
-        let u = moving_kernel_sums(grid, &reps, &inv, &w, &e, &mult, &psi);
         let mut d_dn_rep = DMatrix::<f64>::zeros(m, nu);
         // P's second derivatives at the representatives
         let hess: Vec<_> = reps
@@ -260,7 +282,11 @@ fn moving_kernel_sums(
             b_sum[r] += b[(r, j)];
         }
     }
-    let (pa, pb) = (grid.basis_sums(&a), grid.basis_sums(&b));
+    let (pa, pb) = super::both(
+        n >= super::TWO_CORES_FROM_POINTS,
+        || grid.basis_sums(&a),
+        || grid.basis_sums(&b),
+    );
     let i_unit = C::new(0.0, 1.0);
     DMatrix::from_fn(m, e.ncols(), |r, l| {
         i_unit * mult[l] * pa[(r, l)] - pb[(r, l)] + e[(reps[r], l)] * b_sum[r]
@@ -272,8 +298,11 @@ fn moving_kernel_sums(
 fn product(a: &DMatrix<C>, b: &DMatrix<C>) -> DMatrix<C> {
     let (ar, ai) = (a.map(|v| v.re), a.map(|v| v.im));
     let (br, bi) = (b.map(|v| v.re), b.map(|v| v.im));
-    let re = &ar * &br - &ai * &bi;
-    let im = &ar * &bi + &ai * &br;
+    let (re, im) = super::both(
+        a.ncols() >= super::TWO_CORES_FROM_POINTS,
+        || &ar * &br - &ai * &bi,
+        || &ar * &bi + &ai * &br,
+    );
     re.zip_map(&im, C::new)
 }
 

@@ -274,7 +274,7 @@ impl Contour {
         let m = 4000;
         let quarter = std::f64::consts::FRAC_PI_2;
         let z: Vec<Complex<f64>> = (0..=m)
-            .map(|i| self.at(quarter * i as f64 / m as f64)[0])
+            .map(|i| self.point_at(quarter * i as f64 / m as f64))
             .collect();
         (1..m)
             .filter(|&i| z[i].im < z[i - 1].im && z[i].im <= z[i + 1].im)
@@ -361,6 +361,31 @@ impl Contour {
         [z, dz, ddz]
     }
 
+    /// The point z(θ) alone, the series' exponentials by the recurrence
+    /// of e^{2iθ} (one sine and cosine per point instead of one per term;
+    /// rounding grows with the mode number, to about 1e-14 of the
+    /// contour's size at 200 modes): for locating a groove and measuring
+    /// the departure from the ellipse, where [`Contour::at`] would spend
+    /// most of the time in sines and cosines.
+    pub(crate) fn point_at(&self, theta: f64) -> Complex<f64> {
+        let e = Complex::from_polar(1.0, theta);
+        let e2 = e * e;
+        let mut z = self.a * e;
+        // b_j: e^{−(2j+1)iθ}
+        let (mut p, back) = (e.conj(), e2.conj());
+        for &b in &self.b {
+            z += b * p;
+            p *= back;
+        }
+        // c_j: e^{(2j+3)iθ}
+        let mut q = e * e2;
+        for &c in &self.c {
+            z += c * q;
+            q *= e2;
+        }
+        z
+    }
+
     /// The half-width on the X axis, z(0).
     pub(crate) fn a_bar(&self) -> f64 {
         self.a + self.b.iter().sum::<f64>() + self.c.iter().sum::<f64>()
@@ -431,7 +456,7 @@ impl Contour {
         let (a, b) = (self.a_bar(), self.b_bar());
         (0..n)
             .map(|k| {
-                let z = self.at(2.0 * std::f64::consts::PI * k as f64 / n as f64)[0];
+                let z = self.point_at(2.0 * std::f64::consts::PI * k as f64 / n as f64);
                 let phi = z.im.atan2(z.re);
                 let r_ell = a * b / ((b * phi.cos()).powi(2) + (a * phi.sin()).powi(2)).sqrt();
                 (z.norm() - r_ell).abs() / a
@@ -598,6 +623,27 @@ impl std::fmt::Display for Route {
     }
 }
 
+/// The grid size from which the exact solver does two independent pieces
+/// of work on two cores ([`both`]); on smaller grids waking a second thread
+/// costs more than it saves (the warm state at ρ = 0.8 on 96 points took
+/// twice as long with every such pair on two cores).
+pub(crate) const TWO_CORES_FROM_POINTS: usize = 512;
+
+/// `a` and `b`: on two cores (`rayon::join`) where `two_cores`, else one
+/// after the other. Either way each is computed as it would be alone, so
+/// the results do not depend on it.
+pub(crate) fn both<A: Send, B: Send>(
+    two_cores: bool,
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    if two_cores {
+        rayon::join(a, b)
+    } else {
+        (a(), b())
+    }
+}
+
 /// The exact problem at one ρ and truncation.
 pub struct Exact {
     rho: f64,
@@ -619,6 +665,10 @@ pub struct Exact {
     /// Whether [`Exact::state`] computes the stability of the states it
     /// returns (not while [`resolved`] escalates the truncation).
     with_stability: bool,
+    /// The last linearisation and the unknowns it was made at
+    /// ([`Exact::linear`]): the secant's last slope and the stability of
+    /// the state it returns are taken at the same unknowns.
+    last_linear: std::sync::Mutex<Option<(DVector<f64>, linear::Linear)>>,
 }
 
 /// The groove's half-width below which the follow of the pull-off in ρ
@@ -704,7 +754,19 @@ impl Exact {
                 range: "0 ..= modes (the positive modes of the arclength representation)".into(),
             });
         }
-        let grid = Grid::with_basis(truncation.points, truncation.modes, truncation.arclength);
+        // the grid and the fine grid (twice the points, for the checks),
+        // made on both cores
+        let (grid, fine) = both(
+            truncation.points >= TWO_CORES_FROM_POINTS,
+            || Grid::with_basis(truncation.points, truncation.modes, truncation.arclength),
+            || {
+                Grid::with_basis(
+                    2 * truncation.points,
+                    truncation.modes,
+                    truncation.arclength,
+                )
+            },
+        );
         let cos_modes = DMatrix::from_fn(truncation.modes + 1, grid.len(), |k, i| {
             (2.0 * k as f64 * grid.theta[i]).cos() / grid.len() as f64
         });
@@ -715,14 +777,11 @@ impl Exact {
             circle: gap.at(1.0)?,
             truncation,
             grid,
-            fine: Grid::with_basis(
-                2 * truncation.points,
-                truncation.modes,
-                truncation.arclength,
-            ),
+            fine,
             cos_modes,
             gauge_weight: None,
             with_stability: true,
+            last_linear: std::sync::Mutex::new(None),
         })
     }
 
@@ -738,6 +797,9 @@ impl Exact {
         }
         self.gap = self.gap_source.at(rho)?;
         self.rho = rho;
+        if let Ok(mut last) = self.last_linear.lock() {
+            *last = None;
+        }
         Ok(())
     }
 
@@ -1045,13 +1107,26 @@ impl Exact {
             }
             _ => self.unknowns_of(guess, delta_guess),
         };
+        self.newton_from(held, u, None)
+    }
+
+    /// [`Exact::newton`] from the unknowns `u`, beginning with the
+    /// factorised Jacobian `first` where one is given (made at a nearby
+    /// state of this problem at the same kind of hold, as a continuation's
+    /// last step left it; refreshed where it stops serving).
+    pub(crate) fn newton_from(
+        &self,
+        held: Hold,
+        u: DVector<f64>,
+        first: Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
+    ) -> Result<DVector<f64>> {
         let id = self.unknown_count() - 1;
         let config = crate::newton::ChordConfig {
             floor: 1e-13,
             tolerance: RESIDUAL_TOLERANCE,
             max_iterations: 60,
         };
-        crate::newton::chord(&Held { exact: self, held }, u, &config).map_err(|stop| {
+        crate::newton::chord(&Held { exact: self, held }, u, first, &config).map_err(|stop| {
             // where it stopped: the contour of the last iterate
             let c = self.contour_of(&stop.u);
             Error::NoConvergence {

@@ -222,7 +222,7 @@ pub fn default_tries() -> Vec<Truncation> {
 /// The load-controlled pull-off at `rho` with the default escalation of
 /// truncations ([`resolved`], [`default_tries`]); below ρ = 0.3 on the
 /// cylinders' gap, followed in ρ in the arclength representation from the
-/// stored pull-off nearest above ([`super::stored`]); where no start finds
+/// stored pull-offs ([`super::stored`]); where no start finds
 /// it, followed in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
 /// that is found, in the arclength representation
 /// ([`pull_off_followed_in_arclength`]), else in the conformal form
@@ -233,8 +233,8 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
 
 /// [`pull_off_resolved`] on `gap`.
 pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
-    // below ρ = 0.3 on the cylinders' gap: followed from the stored
-    // pull-off nearest above (the same follow as from ρ = 0.3, shorter)
+    // below ρ = 0.3 on the cylinders' gap: from the stored pull-offs (the
+    // same pull-off as the follow from ρ = 0.3 reaches, sooner)
     if let Some(followed) = super::stored::pull_off(gap, rho) {
         return followed.map(|st| (st, Vec::new()));
     }

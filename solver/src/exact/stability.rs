@@ -234,9 +234,15 @@ impl Exact {
             .iter()
             .map(|&x| (x - 1.0).abs().round())
             .fold(1.0, f64::max);
+        // the two controls' eigenproblems, on both cores
+        let (displacement, load) = super::both(
+            n >= super::TWO_CORES_FROM_POINTS,
+            || unstable(hess.view((0, 0), (m, m)).into_owned(), false),
+            || unstable(hess.clone(), true),
+        );
         Ok(ExactStability {
-            displacement: unstable(hess.view((0, 0), (m, m)).into_owned(), false),
-            load: unstable(hess, true),
+            displacement,
+            load,
             shortest_wavelength: Some(perimeter / n_max),
             ..ExactStability::default()
         }
