@@ -17,11 +17,16 @@
 //! the normal derivative Re(F′ν) of [`super::bie`] is differentiated term
 //! by term (ψ = μ′/z′, the Cauchy sum, ν = −i z′/|z′|), and ∇P·ν and the
 //! force's boundary integrals as in [`super::fields`]. For δ̄ only g, ∇P
-//! and the force's integrands change. A test holds every entry against
-//! central differences of [`super::fields`].
+//! and the force's integrands change. The sums over the points of a
+//! quantity the reflections map to itself are taken over the orbits'
+//! representatives (the symmetric copies folded into the weights). A test
+//! holds every entry against central differences of [`super::fields`].
+//! The last linearisation is kept with its unknowns (asked for again at
+//! the same unknowns, it is not computed again), and on large grids
+//! independent products run on two cores ([`super::both`]).
 //!
 //! Owns: [`Linear`], [`Exact::linear`]. May use: `exact`, `exact::bie`,
-//! nalgebra.
+//! nalgebra, rayon (through `exact::both`).
 
 use super::bie::{orbits, Grid};
 use super::Exact;
@@ -165,20 +170,23 @@ impl Exact {
             }
         }
         let d_mu_red = lu.solve(&rhs)?;
-        // δμ′ at every point and δμ″ at the representatives
+        // δμ′ and δμ″ at the representatives (the sums below need δψ there
+        // only)
         let (d1p, d2r) = grid.orbit_derivatives();
+        let d1r = DMatrix::from_fn(m, m, |r, k| d1p[(reps[r], k)]);
         // (independent products, on both cores)
         let two_cores = n >= super::TWO_CORES_FROM_POINTS;
-        let (dd_mu_all, ddd_mu_rep) =
-            super::both(two_cores, || d1p * &d_mu_red, || d2r * &d_mu_red);
+        let (dd_mu_rep, ddd_mu_rep) =
+            super::both(two_cores, || d1r * &d_mu_red, || d2r * &d_mu_red);
         // δψ_j = (δμ′_j − ψ_j δz′_j)/z′_j
-        let d_psi_all = DMatrix::<C>::from_fn(n, nu, |j, l| {
-            (dd_mu_all[(j, l)] - psi[j] * ddz_of(j, l)) / s.dz[j]
+        let d_psi_rep = DMatrix::<C>::from_fn(m, nu, |r, l| {
+            let j = reps[r];
+            (dd_mu_rep[(r, l)] - psi[j] * ddz_of(j, l)) / s.dz[j]
         });
         // Σ_j δψ_j w_ij, and Σ_j (ψ_j − ψ_i) δw_ij
         let (t, u) = super::both(
             two_cores,
-            || product(&w, &d_psi_all),
+            || orbit_product(&w, &d_psi_rep, &reps),
             || moving_kernel_sums(grid, &reps, &inv, &w, &e, &mult, &psi),
         );
         let w_sum: Vec<C> = (0..m).map(|r| w.row(r).iter().sum()).collect();
@@ -196,14 +204,14 @@ impl Exact {
                 let (dz1, dz2, dz3) = (dz_of(i, l), ddz_of(i, l), dddz_of(i, l));
                 let d_d_psi = (dz2 * dd_mu[i] + dz * ddd_mu_rep[(r, l)]
                     - dz3 * d_mu[i]
-                    - s.ddz[i] * dd_mu_all[(i, l)])
+                    - s.ddz[i] * dd_mu_rep[(r, l)])
                     / (dz * dz)
                     - 2.0 * d_psi[r] * dz2 / dz;
-                let mut d_sum = d_d_psi + t[(r, l)] - d_psi_all[(i, l)] * w_sum[r];
+                let mut d_sum = d_d_psi + t[(r, l)] - d_psi_rep[(r, l)] * w_sum[r];
                 if l < nc {
                     d_sum += u[(r, l)];
                 }
-                let d_f_prime = d_psi_all[(i, l)] + d_sum / (i_unit * nf);
+                let d_f_prime = d_psi_rep[(r, l)] + d_sum / (i_unit * nf);
                 let d_nu =
                     -i_unit * (dz2 / speed[i] - dz * ((dz.conj() * dz2).re / speed[i].powi(3)));
                 let d_grad_p = if l < nc {
@@ -293,16 +301,48 @@ fn moving_kernel_sums(
     })
 }
 
-/// The complex matrix product a·b as four real ones (nalgebra multiplies
-/// real matrices with a blocked kernel, complex ones entry by entry).
-fn product(a: &DMatrix<C>, b: &DMatrix<C>) -> DMatrix<C> {
-    let (ar, ai) = (a.map(|v| v.re), a.map(|v| v.im));
-    let (br, bi) = (b.map(|v| v.re), b.map(|v| v.im));
-    let (re, im) = super::both(
-        a.ncols() >= super::TWO_CORES_FROM_POINTS,
-        || &ar * &br - &ai * &bi,
-        || &ar * &bi + &ai * &br,
-    );
+/// Σ_j w_rj δψ_jl over the n points, from δψ at the orbits'
+/// representatives (`d_psi_rep`, one row per representative). The contour
+/// and every perturbation of its coefficients keep both reflections, so δψ
+/// (like ψ = μ′/z′, μ even) at the images of a representative q under
+/// θ → −θ, π − θ and π + θ is conj δψ_q, −conj δψ_q and −δψ_q. The sum is
+/// then Σ_q (A_rq δψ_q + B_rq conj δψ_q), with A the signed weights w of the
+/// images where δψ is ±δψ_q and B of those where it is ±conj δψ_q (each
+/// distinct point once: at θ = 0, π/2, … images coincide), that is
+/// Σ_q ((A + B)_rq Re δψ_q + i(A − B)_rq Im δψ_q): four real products of
+/// (rows × representatives) by (representatives × unknowns), a quarter of
+/// the work of the product over all points (nalgebra multiplies real
+/// matrices with a blocked kernel, complex ones entry by entry).
+fn orbit_product(w: &DMatrix<C>, d_psi_rep: &DMatrix<C>, reps: &[usize]) -> DMatrix<C> {
+    let (rows, n) = w.shape();
+    let half = n / 2;
+    let m = reps.len();
+    let mut plain = DMatrix::<C>::zeros(rows, m);
+    let mut conjugated = DMatrix::<C>::zeros(rows, m);
+    for (k, &q) in reps.iter().enumerate() {
+        // (point, sign, conjugated)
+        let images = [
+            (q, 1.0, false),
+            ((n - q) % n, 1.0, true),
+            ((half + n - q) % n, -1.0, true),
+            ((half + q) % n, -1.0, false),
+        ];
+        for (idx, &(j, sign, conj)) in images.iter().enumerate() {
+            if images[..idx].iter().any(|im| im.0 == j) {
+                continue;
+            }
+            let target = if conj { &mut conjugated } else { &mut plain };
+            for r in 0..rows {
+                target[(r, k)] += w[(r, j)] * sign;
+            }
+        }
+    }
+    let i_unit = C::new(0.0, 1.0);
+    let p = &plain + &conjugated;
+    let q = (&plain - &conjugated) * i_unit;
+    let (x, y) = (d_psi_rep.map(|v| v.re), d_psi_rep.map(|v| v.im));
+    let re = p.map(|v| v.re) * &x + q.map(|v| v.re) * &y;
+    let im = p.map(|v| v.im) * &x + q.map(|v| v.im) * &y;
     re.zip_map(&im, C::new)
 }
 
