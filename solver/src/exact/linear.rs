@@ -79,8 +79,8 @@ impl Exact {
         let (reps, orbit) = orbits(n);
         let m = reps.len();
         let mult: Vec<f64> = grid.multipliers.clone();
-        // the contour basis, n × (N + 1)
-        let e = DMatrix::<C>::from_fn(n, nc, |j, l| grid.basis[l][j]);
+        // the contour basis: e_l(θ_j) = grid.basis[l][j]
+        let e = &grid.basis;
 
         // the forward solve, as bie::solve_dirichlet_symmetric, keeping
         // ι_ij = 1/(z_j − z_i) beside the kernel w_ij = z′_j ι_ij (sharing
@@ -147,7 +147,7 @@ impl Exact {
         let dn: Vec<f64> = orbit.iter().map(|&k| dn_rep[k]).collect();
 
         // δz, δz′, δz″ of each unknown at each point (δ̄ moves none)
-        let dz_of = |j: usize, l: usize| if l < nc { e[(j, l)] } else { C::new(0.0, 0.0) };
+        let dz_of = |j: usize, l: usize| if l < nc { e[l][j] } else { C::new(0.0, 0.0) };
         let ddz_of =
             |j: usize, l: usize| i_unit * mult.get(l).copied().unwrap_or(0.0) * dz_of(j, l);
         let dddz_of =
@@ -157,13 +157,13 @@ impl Exact {
         let mut rhs = DMatrix::<f64>::zeros(m, nu);
         for (r, &i) in reps.iter().enumerate() {
             for l in 0..nc {
-                rhs[(r, l)] = -(grad_p[i].conj() * e[(i, l)]).re;
+                rhs[(r, l)] = -(grad_p[i].conj() * e[l][i]).re;
             }
             rhs[(r, nc)] = -gap.p_delta(s.z[i].re, s.z[i].im);
         }
         // minus Σ_j Im(δw_ij)(μ_j − μ_i)/n
         let mu_c: Vec<C> = mu.iter().map(|&v| C::new(v, 0.0)).collect();
-        let q = moving_kernel_sums(grid, &reps, &inv, &w, &e, &mult, &mu_c);
+        let q = moving_kernel_sums(grid, &reps, &inv, &w, &mult, &mu_c);
         for r in 0..m {
             for l in 0..nc {
                 rhs[(r, l)] -= q[(r, l)].im / nf;
@@ -187,7 +187,7 @@ impl Exact {
         let (t, u) = super::both(
             two_cores,
             || orbit_product(&w, &d_psi_rep, &reps),
-            || moving_kernel_sums(grid, &reps, &inv, &w, &e, &mult, &psi),
+            || moving_kernel_sums(grid, &reps, &inv, &w, &mult, &psi),
         );
         let w_sum: Vec<C> = (0..m).map(|r| w.row(r).iter().sum()).collect();
         let mut d_dn_rep = DMatrix::<f64>::zeros(m, nu);
@@ -274,31 +274,46 @@ fn moving_kernel_sums(
     reps: &[usize],
     inv: &DMatrix<C>,
     w: &DMatrix<C>,
-    e: &DMatrix<C>,
     mult: &[f64],
     x: &[C],
 ) -> DMatrix<C> {
     let (m, n) = inv.shape();
-    let mut a = DMatrix::<C>::zeros(m, n);
-    let mut b = DMatrix::<C>::zeros(m, n);
-    let mut b_sum = vec![C::new(0.0, 0.0); m];
-    for (r, &i) in reps.iter().enumerate() {
-        for j in (0..n).filter(|&j| j != i) {
-            let dx = x[j] - x[i];
-            a[(r, j)] = inv[(r, j)] * dx;
-            b[(r, j)] = inv[(r, j)] * w[(r, j)] * dx;
-            b_sum[r] += b[(r, j)];
-        }
-    }
+    let zero = C::new(0.0, 0.0);
+    let mut b_sum = vec![zero; m];
+    // the rows of (ι∘Δx) and (ι∘w∘Δx), made as each row's FFT takes them
     let (pa, pb) = super::both(
         n >= super::TWO_CORES_FROM_POINTS,
-        || grid.basis_sums(&a),
-        || grid.basis_sums(&b),
+        || {
+            grid.basis_sums(m, |r, row| {
+                moving_row(row, reps[r], x, |j| inv[(r, j)]);
+            })
+        },
+        || {
+            grid.basis_sums(m, |r, row| {
+                b_sum[r] = moving_row(row, reps[r], x, |j| inv[(r, j)] * w[(r, j)]);
+            })
+        },
     );
     let i_unit = C::new(0.0, 1.0);
-    DMatrix::from_fn(m, e.ncols(), |r, l| {
-        i_unit * mult[l] * pa[(r, l)] - pb[(r, l)] + e[(reps[r], l)] * b_sum[r]
+    DMatrix::from_fn(m, mult.len(), |r, l| {
+        i_unit * mult[l] * pa[(r, l)] - pb[(r, l)] + grid.basis[l][reps[r]] * b_sum[r]
     })
+}
+
+/// `row` ← k_j (x_j − x_i) for j ≠ i and 0 at j = i, with the factor k_j
+/// = `factor(j)`; returns the row's sum.
+fn moving_row(row: &mut [C], i: usize, x: &[C], factor: impl Fn(usize) -> C) -> C {
+    let zero = C::new(0.0, 0.0);
+    let mut sum = zero;
+    for (j, v) in row.iter_mut().enumerate() {
+        *v = if j == i {
+            zero
+        } else {
+            factor(j) * (x[j] - x[i])
+        };
+        sum += *v;
+    }
+    sum
 }
 
 /// Σ_j w_rj δψ_jl over the n points, from δψ at the orbits'

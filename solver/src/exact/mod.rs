@@ -476,10 +476,14 @@ pub(crate) struct Fields {
 /// ∂p̄/∂ν and F̄ for the contour `c` (any contour: the boundary condition
 /// (3)₂ is not imposed here).
 pub(crate) fn fields(c: &Contour, gap: &GapAt, delta_bar: f64, grid: &Grid) -> Option<Fields> {
-    let s = c.samples(grid);
+    fields_of(&c.samples(grid), gap, delta_bar, grid)
+}
+
+/// [`fields`] from the contour's samples on `grid`.
+fn fields_of(s: &ContourSamples, gap: &GapAt, delta_bar: f64, grid: &Grid) -> Option<Fields> {
     let n = grid.len();
     let g: Vec<f64> = s.z.iter().map(|&z| -gap.p(z.re, z.im, delta_bar)).collect();
-    let d = solve_dirichlet_symmetric(grid, &s, &g)?;
+    let d = solve_dirichlet_symmetric(grid, s, &g)?;
     let h = 2.0 * std::f64::consts::PI / n as f64;
     let mut force = 0.0;
     let mut dn = Vec::with_capacity(n);
@@ -1051,7 +1055,8 @@ impl Exact {
         let n_modes = self.truncation.modes;
         let id = self.unknown_count() - 1;
         let c = self.contour_of(u);
-        let f = fields(&c, &self.gap, u[id], &self.grid)?;
+        let samples = c.samples(&self.grid);
+        let f = fields_of(&samples, &self.gap, u[id], &self.grid)?;
         let mut r = DVector::zeros(self.unknown_count());
         r[0] = match held {
             Hold::Size(a_bar) => c.a_bar() - a_bar,
@@ -1061,8 +1066,7 @@ impl Exact {
         r.rows_mut(1, n_modes + 1)
             .copy_from(&self.cos_modes_of(&f.normal_derivative));
         if self.truncation.arclength > 0 {
-            let dz = c.samples(&self.grid).dz;
-            for (k, g) in self.gauge_rows(&dz).into_iter().enumerate() {
+            for (k, g) in self.gauge_rows(&samples.dz).into_iter().enumerate() {
                 r[n_modes + 2 + k] = g;
             }
         }

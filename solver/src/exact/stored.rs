@@ -10,9 +10,10 @@
 //! ρ = 0.1, a minute and a half to 0.066. Started instead from the stored pull-off nearest above
 //! the ρ asked for, the same follow takes one step or two. Between three
 //! stored pull-offs of one truncation in the plain gauge, their
-//! interpolation in ρ ([`Prediction`]) is nearer still: the minimum is
-//! found from it directly, at the ρ asked for, in four or five secant
-//! steps; where that fails, or lands farther than [`PREDICTION_REACH`]
+//! interpolation in ρ ([`Prediction`]: contour, δ̄ and the curvature
+//! d²F̄/dā² stored with each) is nearer still: the minimum is found from
+//! it directly, at the ρ asked for, by a Newton step with the predicted
+//! curvature and then the secant; where that fails, or lands farther than [`PREDICTION_REACH`]
 //! from the prediction, the follow from the one nearest above is taken. A
 //! stored pull-off is only a start: it is checked on the fine grid before it is
 //! used (its boundary error at most [`CONVERGED`](super::CONVERGED)), and
@@ -71,12 +72,40 @@ pub(crate) struct StoredPullOff {
     pub truncation: Truncation,
     /// Its contour.
     pub contour: Contour,
+    /// d²F̄/dā² along its family at fixed ρ
+    /// ([`Exact::force_curvature_in_size`]), for the [`Prediction`]'s
+    /// first secant step; `None` where it is not in the plain gauge
+    /// ([`in_plain_gauge`]: the equations at fixed ā on its truncation
+    /// are not the ones it solves) or where it was not found (near a fold
+    /// in ā, as at ρ = 0.29, where the equations at fixed ā are nearly
+    /// singular).
+    pub force_curvature: Option<f64>,
+    /// Whether its contour has a narrow groove
+    /// ([`Contour::narrow_groove`]): where it or the pull-off before it
+    /// has one, its coefficients are in another gauge than plain
+    /// arclength, and it is not interpolated.
+    pub narrow_groove: bool,
 }
 
 impl StoredPullOff {
+    /// The record of the pull-off `st`, stored after `before` (`None` for
+    /// the first), with its curvature in ā computed on its own truncation
+    /// where it is in the plain gauge.
     #[cfg(feature = "cli")]
-    fn of(st: &ExactState) -> StoredPullOff {
-        StoredPullOff {
+    fn of(st: &ExactState, before: Option<&StoredPullOff>) -> Result<StoredPullOff> {
+        let narrow_groove = st.contour.narrow_groove().is_some();
+        let plain = in_plain_gauge(
+            st.truncation,
+            narrow_groove,
+            before.is_some_and(|b| b.narrow_groove),
+        );
+        let force_curvature = if plain {
+            let ex = Exact::on(st.gap, st.rho, st.truncation)?.deferring_stability();
+            ex.force_curvature_in_size(&ex.unknowns(st))
+        } else {
+            None
+        };
+        Ok(StoredPullOff {
             rho: st.rho,
             force_bar: st.force_bar,
             a_bar: st.a_bar,
@@ -85,7 +114,9 @@ impl StoredPullOff {
             bc_error: st.bc_error,
             truncation: st.truncation,
             contour: st.contour.clone(),
-        }
+            force_curvature,
+            narrow_groove,
+        })
     }
 
     /// The state again, from the contour and δ̄ (no Newton iteration): its
@@ -104,6 +135,15 @@ impl StoredPullOff {
         st.route = Route::ContinuedInRho;
         Ok(st)
     }
+}
+
+/// Whether a stored pull-off of truncation `t` is in the plain gauge of the
+/// arclength representation (θ proportional to arclength), so that its
+/// coefficients describe its curve as those of its neighbours do: it has
+/// no narrow groove, and neither has the pull-off it was followed from
+/// (the follow crowds the points of the next one where the last had one).
+fn in_plain_gauge(t: Truncation, grooved: bool, before_grooved: bool) -> bool {
+    t.arclength > 0 && !grooved && !before_grooved
 }
 
 /// The file compiled in.
@@ -157,23 +197,25 @@ pub(crate) fn pull_off(gap: Gap, rho: f64) -> Option<Result<ExactState>> {
     Some(super::resolve::pull_off_followed_in_arclength(&start, rho))
 }
 
-/// The first step in ā of the secant from a [`Prediction`]: about eight
-/// times the prediction's error in ā at ρ = 0.1 (1.2e-4), so that the
-/// secant's first slope is taken near the minimum.
-const PREDICTED_FIRST_STEP: f64 = 1e-3;
-
 /// How far in ā from a [`Prediction`] the minimum found from it may lie
 /// and still be taken for the one the follow reaches (more than a hundred
 /// times the prediction's error at ρ = 0.1); farther, the follow is taken.
 const PREDICTION_REACH: f64 = 0.02;
 
+/// The first step in ā of the secant from a [`Prediction`] without a
+/// curvature: about eight times the prediction's error in ā at ρ = 0.1
+/// (1.2e-4), so that the secant's first slope is taken near the minimum.
+const PREDICTED_FIRST_STEP: f64 = 1e-3;
+
 /// A pull-off at a ρ between stored ones, interpolated from the three
-/// stored pull-offs nearest in ρ: their contour coefficients and δ̄,
-/// quadratic in ρ (Lagrange).
+/// stored pull-offs nearest in ρ: their contour coefficients, δ̄ and
+/// (where all three have one) the curvature d²F̄/dā², quadratic in ρ
+/// (Lagrange).
 struct Prediction {
     truncation: Truncation,
     contour: Contour,
     delta_bar: f64,
+    force_curvature: Option<f64>,
 }
 
 /// The [`Prediction`] at `rho`, where the three stored pull-offs nearest
@@ -193,21 +235,13 @@ fn predicted(table: &Stored, rho: f64) -> Option<Prediction> {
     let first = &all[*near.first()?];
     let brackets =
         near.iter().any(|&i| all[i].rho >= rho) && near.iter().any(|&i| all[i].rho <= rho);
-    // each contour's groove looked for once (the three and the pull-offs
-    // they were followed from overlap)
-    let mut looked: Vec<usize> = near
-        .iter()
-        .flat_map(|&i| [i.saturating_sub(1), i])
-        .collect();
-    looked.sort_unstable();
-    looked.dedup();
-    let grooved: Vec<(usize, bool)> = looked
-        .into_iter()
-        .map(|i| (i, all[i].contour.narrow_groove().is_some()))
-        .collect();
-    let has_groove = |i: usize| grooved.iter().any(|&(j, g)| j == i && g);
+    // the grooves as stored (`the_stored_flags_are_fresh` holds them)
     let plain = |i: usize| {
-        all[i].truncation.arclength > 0 && !has_groove(i) && (i == 0 || !has_groove(i - 1))
+        in_plain_gauge(
+            all[i].truncation,
+            all[i].narrow_groove,
+            i > 0 && all[i - 1].narrow_groove,
+        )
     };
     if near.len() < 3
         || !brackets
@@ -236,12 +270,17 @@ fn predicted(table: &Stored, rho: f64) -> Option<Prediction> {
             c: (0..positive).map(|j| mix(&|p| p.contour.c[j])).collect(),
         },
         delta_bar: mix(&|p| p.delta_bar),
+        force_curvature: weights
+            .iter()
+            .map(|(w, p)| p.force_curvature.map(|k| w * k))
+            .sum::<Option<f64>>(),
     })
 }
 
 impl Prediction {
     /// The pull-off from the prediction: Newton at its ā, then the secant
-    /// on dF̄/dā from there with a first step of [`PREDICTED_FIRST_STEP`];
+    /// on dF̄/dā from there, its first step Newton's with the predicted
+    /// curvature (else [`PREDICTED_FIRST_STEP`] downhill);
     /// resolved (boundary error at most [`CONVERGED`](super::CONVERGED)),
     /// within [`PREDICTION_REACH`] of the prediction's ā, and with its
     /// stability, or an error (the caller then follows from the stored
@@ -250,7 +289,13 @@ impl Prediction {
         let ex = Exact::on(gap, rho, self.truncation)?.deferring_stability();
         let a_bar = self.contour.a_bar();
         let u0 = ex.newton(super::Hold::Size(a_bar), &self.contour, self.delta_bar)?;
-        let mut po = ex.force_minimum_in_size_stepping(u0, PREDICTED_FIRST_STEP)?;
+        let mut po = ex.force_minimum_in_size_stepping(
+            u0,
+            match self.force_curvature {
+                Some(k) => super::branch::FirstStep::ByCurvature(k),
+                None => super::branch::FirstStep::Downhill(PREDICTED_FIRST_STEP),
+            },
+        )?;
         if po.bc_error > super::CONVERGED || (po.a_bar - a_bar).abs() > PREDICTION_REACH {
             return Err(Error::NoState(format!(
                 "the pull-off predicted from the stored ones at rho = {} is not resolved or not near the prediction",
@@ -271,10 +316,17 @@ impl Prediction {
 pub(crate) fn store() -> Result<Stored> {
     let gap = Gap::cylinders();
     let (top, _) = pull_off_on(gap, TOP, &default_tries())?;
-    let mut pull_offs = vec![StoredPullOff::of(&top)];
+    let mut pull_offs = vec![StoredPullOff::of(&top, None)?];
+    let mut recorded = Ok(());
     let followed = pull_off_followed_in_arclength_visiting(&top, FLOOR, &mut |st| {
-        pull_offs.push(StoredPullOff::of(st))
+        if recorded.is_ok() {
+            match StoredPullOff::of(st, pull_offs.last()) {
+                Ok(p) => pull_offs.push(p),
+                Err(e) => recorded = Err(e),
+            }
+        }
     });
+    recorded?;
     let why_stopped = match followed {
         Ok(_) => format!("reached rho = {FLOOR}"),
         Err(Error::StopsInRho { what, .. }) => what,
@@ -293,6 +345,15 @@ pub(crate) fn store() -> Result<Stored> {
 mod tests {
     use super::*;
 
+    /// The stored pull-off nearest `rho`.
+    fn nearest(table: &Stored, rho: f64) -> &StoredPullOff {
+        table
+            .pull_offs
+            .iter()
+            .min_by(|a, b| (a.rho - rho).abs().total_cmp(&(b.rho - rho).abs()))
+            .expect("stored pull-offs")
+    }
+
     /// The points crowded into the grooves (docs/exact.md, "Points crowded
     /// into the grooves"): the stored pull-off nearest ρ = 0.045 solved
     /// again at its ā with 160 modes of each sign has a boundary error
@@ -305,11 +366,7 @@ mod tests {
         let table = stored().unwrap();
         assert!(table.pull_offs[0].contour.groove().is_none());
         assert!(table.pull_offs[0].contour.crowded_at_groove(48).is_none());
-        let q = table
-            .pull_offs
-            .iter()
-            .min_by(|a, b| (a.rho - 0.045).abs().total_cmp(&(b.rho - 0.045).abs()))
-            .unwrap();
+        let q = nearest(table, 0.045);
         let po = q.state(Gap::cylinders()).unwrap();
         let n = 160;
         let solve = |c: &Contour| {
@@ -383,6 +440,38 @@ mod tests {
         }
     }
 
+    /// The flags and curvatures stored are those of the stored contours:
+    /// every pull-off's narrow groove looked for again, a curvature only in
+    /// the plain gauge, and the curvature d²F̄/dā² of the one nearest
+    /// ρ = 0.105 computed again, to 1e-6.
+    #[test]
+    fn the_stored_flags_are_fresh() {
+        let table = stored().unwrap();
+        for (i, p) in table.pull_offs.iter().enumerate() {
+            assert_eq!(
+                p.narrow_groove,
+                p.contour.narrow_groove().is_some(),
+                "rho {}",
+                p.rho
+            );
+            let before = i > 0 && table.pull_offs[i - 1].narrow_groove;
+            if !in_plain_gauge(p.truncation, p.narrow_groove, before) {
+                assert!(p.force_curvature.is_none(), "rho {}", p.rho);
+            }
+        }
+        let q = nearest(table, 0.105);
+        let st = q.state(Gap::cylinders()).unwrap();
+        let ex = Exact::on(st.gap, st.rho, st.truncation).unwrap();
+        let curvature = ex.force_curvature_in_size(&ex.unknowns(&st)).unwrap();
+        let stored_curvature = q.force_curvature.expect("a stored curvature");
+        assert!(
+            (curvature / stored_curvature - 1.0).abs() < 1e-6,
+            "rho {}: {curvature} against {} stored",
+            q.rho,
+            stored_curvature
+        );
+    }
+
     /// From a stored pull-off, the follow in ρ lands on the next one (the
     /// file is the follow's own path): the step from the top, which leaves
     /// the conformal form, to 1e-9 in F̄ and s, 1e-7 in ā (F̄ is stationary
@@ -437,9 +526,11 @@ mod tests {
     /// prediction interpolated from the three nearest, and it is the one the
     /// follow from the stored pull-off just above reaches: F̄ to 1e-11, s to
     /// 1e-9, ā to 1e-8 (F̄ is stationary in ā there). The prediction's ā is
-    /// within 1e-3 of it (the secant's first step); both have the same
-    /// unstable modes and verdicts. Measured: F̄ 6e-14, s 2e-11, ā 4e-11
-    /// apart, the prediction 1.2e-4 off in ā.
+    /// within 1e-3 of it, and its curvature d²F̄/dā² within 1 % of the
+    /// curvature there (so that the secant's first step, Newton's, lands
+    /// near the minimum); both have the same unstable modes and verdicts.
+    /// Measured: F̄ 5e-14, s 5e-11, ā 1e-10 apart, the prediction 1.2e-4
+    /// off in ā and its curvature 2.4e-5 (relative) off.
     #[test]
     fn the_pull_off_from_the_prediction_is_the_followed_one() {
         let table = stored().unwrap();
@@ -467,7 +558,15 @@ mod tests {
             (prediction.contour.a_bar() - followed.a_bar).abs()
         );
         assert!(df < 1e-11 && ds < 1e-9 && da < 1e-8);
-        assert!((prediction.contour.a_bar() - followed.a_bar).abs() < PREDICTED_FIRST_STEP);
+        assert!((prediction.contour.a_bar() - followed.a_bar).abs() < 1e-3);
+        let ex = Exact::on(followed.gap, rho, followed.truncation).unwrap();
+        let curvature = ex.force_curvature_in_size(&ex.unknowns(&followed)).unwrap();
+        eprintln!(
+            "curvature: predicted {:?}, at the pull-off {curvature}",
+            prediction.force_curvature
+        );
+        let predicted_curvature = prediction.force_curvature.expect("a predicted curvature");
+        assert!((predicted_curvature / curvature - 1.0).abs() < 0.01);
         assert!(from_prediction.bc_error <= crate::exact::CONVERGED);
         // the same unstable modes and verdicts
         let modes =
