@@ -242,6 +242,7 @@ pub(crate) fn render_row(r: &Row) -> String {
             let route = match e.route {
                 crate::exact::Route::PastFold => ", past a fold",
                 crate::exact::Route::ContinuedInRho => ", continued in ρ",
+                crate::exact::Route::BetweenStored => ", between stored pull-offs",
                 _ => "",
             };
             let form = if e.truncation.arclength > 0 {
@@ -312,7 +313,7 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          first starts just above the pull-off of the one before; where neither start finds it, the pull-off is \
          continued in ρ (steps of at most 0.01) from the pull-off at the first of ρ + 0.1, ρ + 0.2, … found; \
          below ρ = 0.3 it is followed in ρ in the arclength representation from the stored pull-offs \
-         (interpolated between three of one truncation, else from the one nearest above) (\"N = … in arclength\": the contour's series with modes of both signs and θ proportional to \
+         (interpolated between three of one truncation, route `between_stored`, \"between stored pull-offs\" in the row; else from the one nearest above) (\"N = … in arclength\": the contour's series with modes of both signs and θ proportional to \
          arclength; exact.md, \"The arclength representation\" and \"The stored pull-offs\"). A state at given F̄ is solved by Newton at that \
          F̄ from the ellipse with `conformal:8`'s ā, b̄ and δ̄ at the same F̄ (else at the model's ā, then the \
          family traced to the F̄) and, where that finds \

@@ -658,8 +658,10 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
         }
     }
     let which = if po.rho < crate::exact::stored::TOP
-        && po.route == crate::exact::Route::ContinuedInRho
-    {
+        && matches!(
+            po.route,
+            crate::exact::Route::ContinuedInRho | crate::exact::Route::BetweenStored
+        ) {
         format!(
             "the minimum of F on the piece that carries the pull-off at rho = {}, followed in rho from there (started from the stored pull-offs: between three of one truncation from their interpolation, else from the one nearest above; docs/exact.md, \"The stored pull-offs\")",
             crate::exact::stored::TOP

@@ -600,6 +600,11 @@ pub enum Route {
     /// Continued in ρ at the control from the exact state at a larger ρ
     /// (found there by another route), where no route finds it directly.
     ContinuedInRho,
+    /// The pull-off found at its ρ from the interpolation of the stored
+    /// pull-offs on both sides of it (solver/data/exact_pull_offs.json,
+    /// `exact::stored`): the minimum the continuation in ρ reaches, found
+    /// without it.
+    BetweenStored,
     /// On an arm beside a band of the family, traced through the arm's
     /// fold in ā and on along its returning stretch to the control
     /// ([`bands::past_folds_or_band`]), where the other routes find nothing.
@@ -618,6 +623,9 @@ impl std::fmt::Display for Route {
             Route::FromCircle => "continued in rho from the circle at rho = 1",
             Route::ContinuedInRho => {
                 "continued in rho at the same control from the state at a larger rho"
+            }
+            Route::BetweenStored => {
+                "the minimum of F found at this rho from the stored pull-offs on both sides, interpolated in rho"
             }
             Route::PastFold => {
                 "traced from beside a band through the fold of its arm, on the returning stretch"

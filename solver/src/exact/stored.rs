@@ -303,7 +303,7 @@ impl Prediction {
             )));
         }
         po.stability = ex.stability(&po)?;
-        po.route = Route::ContinuedInRho;
+        po.route = Route::BetweenStored;
         ex.accept_resolved_pull_off((po, Vec::new()))
             .map(|(st, _)| st)
     }
@@ -528,7 +528,8 @@ mod tests {
     /// 1e-9, ā to 1e-8 (F̄ is stationary in ā there). The prediction's ā is
     /// within 1e-3 of it, and its curvature d²F̄/dā² within 1 % of the
     /// curvature there (so that the secant's first step, Newton's, lands
-    /// near the minimum); both have the same unstable modes and verdicts.
+    /// near the minimum); both have the same unstable modes and verdicts,
+    /// and the route of the one from the prediction says so.
     /// Measured: F̄ 5e-14, s 5e-11, ā 1e-10 apart, the prediction 1.2e-4
     /// off in ā and its curvature 2.4e-5 (relative) off.
     #[test]
@@ -568,6 +569,8 @@ mod tests {
         let predicted_curvature = prediction.force_curvature.expect("a predicted curvature");
         assert!((predicted_curvature / curvature - 1.0).abs() < 0.01);
         assert!(from_prediction.bc_error <= crate::exact::CONVERGED);
+        // the route says where it came from
+        assert_eq!(from_prediction.route, Route::BetweenStored);
         // the same unstable modes and verdicts
         let modes =
             |v: &[super::super::stability::UnstableMode]| v.iter().map(|m| m.n).collect::<Vec<_>>();
