@@ -617,8 +617,10 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
     if unloading {
-        passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?));
-        passed.push(crate::exact::loading::reported(&po, d.cutoff()?));
+        // the state at F = 10 both paths begin from, found once
+        let start = crate::exact::loading::start(po.rho);
+        passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?, &start));
+        passed.push(crate::exact::loading::reported(&po, d.cutoff()?, &start));
     }
     let models: Vec<_> = ModelId::ALL
         .iter()

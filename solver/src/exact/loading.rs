@@ -22,7 +22,7 @@
 //! which cutoff it used.
 //!
 //! Owns: [`LoadingPath`], [`Jump`], [`PathEnd`], [`loading_path`],
-//! [`reported`]. May use: `exact` (the problem, `descent`, `resolve`),
+//! [`start`], [`reported`]. May use: `exact` (the problem, `descent`, `resolve`),
 //! `control`, `cutoff`, `error`, `newton` (the stop request), `report`
 //! (the outcome's shape).
 
@@ -118,12 +118,17 @@ fn same_state(a: &ExactState, b: &ExactState) -> bool {
     (b.a_bar - a.a_bar).abs() <= 1e-6 * a.a_bar && (b.s - a.s).abs() <= 1e-6
 }
 
-/// The loading path at `rho` from F̄ = 10 down, with `cutoff` choosing the
-/// resolved modes.
-pub(crate) fn loading_path(rho: f64, cutoff: Cutoff) -> Result<LoadingPath> {
-    let start = super::at_resolved(rho, Hold::Force(START_FORCE))?;
-    let ex = Exact::new(rho, start.truncation)?;
-    Ok(follow(ex, start, cutoff))
+/// The resolved exact state at F̄ = [`START_FORCE`] at `rho`, where the
+/// loading path and the unloading trace begin (computed once for both).
+pub(crate) fn start(rho: f64) -> Result<ExactState> {
+    super::at_resolved(rho, Hold::Force(START_FORCE))
+}
+
+/// The loading path from `start`, the state at F̄ = [`START_FORCE`]
+/// ([`start`]), down, with `cutoff` choosing the resolved modes.
+pub(crate) fn loading_path(start: &ExactState, cutoff: Cutoff) -> Result<LoadingPath> {
+    let ex = Exact::new(start.rho, start.truncation)?;
+    Ok(follow(ex, start.clone(), cutoff))
 }
 
 /// `st` (a state of `ex`) or, where `ex`'s modes do not resolve it to
@@ -345,9 +350,14 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
 }
 
 /// The loading path at `pull_off.rho` judged against `pull_off` (the
-/// pull-off the trace reports): an entry of its `passed` list.
-pub(crate) fn reported(pull_off: &ExactState, cutoff: Cutoff) -> crate::report::Passed {
-    let path = loading_path(pull_off.rho, cutoff);
+/// pull-off the trace reports): an entry of its `passed` list. `start` is
+/// the state at F̄ = 10 there ([`start`]), or why there is none.
+pub(crate) fn reported(
+    pull_off: &ExactState,
+    cutoff: Cutoff,
+    start: &Result<ExactState>,
+) -> crate::report::Passed {
+    let path = start.clone().and_then(|s| loading_path(&s, cutoff));
     let (held, jumps, lost, comes_off, why): (usize, Vec<(f64, f64)>, _, _, _) = match &path {
         Err(e) => (0, Vec::new(), None, None, Some(e.to_string())),
         Ok(p) => {
@@ -419,7 +429,7 @@ mod tests {
     /// F̄ = −3π/2, with no jump.
     #[test]
     fn at_rho_1_the_path_is_the_circle_down_to_the_closed_form_pull_off() {
-        let path = loading_path(1.0, Cutoff::for_thinness(0.5).unwrap()).unwrap();
+        let path = loading_path(&start(1.0).unwrap(), Cutoff::for_thinness(0.5).unwrap()).unwrap();
         assert!(path.jumps.is_empty(), "{:?}", path.jumps.len());
         let p = path.pull_off().unwrap();
         assert!(
@@ -447,7 +457,7 @@ mod tests {
     #[test]
     fn at_rho_0_8_the_path_first_loses_its_state_at_the_traced_pull_off() {
         let cutoff = Cutoff::for_thinness(0.5).unwrap();
-        let path = loading_path(0.8, cutoff).unwrap();
+        let path = loading_path(&start(0.8).unwrap(), cutoff).unwrap();
         let lost = path.first_lost().expect("a state is lost");
         let (traced, _) = crate::exact::pull_off_resolved(0.8).unwrap();
         assert!(

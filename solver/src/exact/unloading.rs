@@ -6,16 +6,17 @@
 //! which the path is unstable above the short-wave cutoff (a contact that
 //! thin changes shape before it reaches the minimum).
 //!
-//! Owns: [`unloading`]. May use: `resolve` (the start), `branch` (the
-//! trace), `loading` (its start force), `stability`, `control`, `cutoff`, `report` (the outcome's
+//! Owns: [`unloading`]. May use: `branch` (the trace), `loading` (its
+//! start force; the start itself comes from the caller, shared with the
+//! loading path), `stability`, `cutoff`, `error`, `report` (the outcome's
 //! shape).
 
 // asked by the command line (`exact pull-off --unloading`)
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
 use super::{Exact, ExactState};
-use crate::control::Hold;
 use crate::cutoff::Cutoff;
+use crate::error::Result;
 use crate::report::Passed;
 
 /// The load the unloading starts from: the loading path's (a large load,
@@ -29,9 +30,15 @@ const TRACED: f64 = 1e-6;
 
 /// The unloading path from F̄ = 10 to the first minimum of F̄ at
 /// `pull_off.rho`, judged with `cutoff`'s thinness: an entry of the
-/// pull-off's `passed` list.
-pub(crate) fn unloading(pull_off: &ExactState, cutoff: Cutoff) -> Passed {
-    match path(pull_off) {
+/// pull-off's `passed` list. `start` is the state at F̄ = 10 there
+/// ([`super::loading::start`], shared with the loading path), or why
+/// there is none.
+pub(crate) fn unloading(
+    pull_off: &ExactState,
+    cutoff: Cutoff,
+    start: &Result<ExactState>,
+) -> Passed {
+    match path(pull_off, start) {
         Ok(p) => p.judged(cutoff),
         Err(why) => Passed::Unloading {
             from_force: START_FORCE,
@@ -77,9 +84,10 @@ impl Path {
 
 /// The trace from F̄ = 10 to the first minimum, or why it is not settled
 /// (in words, for the report).
-fn path(pull_off: &ExactState) -> std::result::Result<Path, String> {
+fn path(pull_off: &ExactState, start: &Result<ExactState>) -> std::result::Result<Path, String> {
     let rho = pull_off.rho;
-    let start = super::at_resolved(rho, Hold::Force(START_FORCE))
+    let start = start
+        .as_ref()
         .map_err(|e| format!("no resolved exact state at force = {START_FORCE}: {e}"))?;
     let ex = Exact::new(rho, start.truncation).map_err(|e| e.to_string())?;
     let branch = ex
