@@ -616,9 +616,9 @@ impl Exact {
     /// d²F̄/dā² along the family at the converged unknowns `u` of this
     /// truncation: the central difference of dF̄/dā
     /// ([`Exact::force_slope_in_size`]) at ā ± 10⁻³ā, each state solved at
-    /// its ā from the tangent's prediction (error of order 10⁻⁶ā²
-    /// relative to its fourth derivative, and the slopes' round-off over
-    /// 2·10⁻³ā). `None` where a state or a slope is not found.
+    /// its ā from the tangent's prediction (error 10⁻⁶ā² d⁴F̄/dā⁴ / 6, and
+    /// the slopes' round-off over 2·10⁻³ā). `None` where a state or a
+    /// slope is not found.
     #[cfg(any(test, feature = "cli"))]
     pub(crate) fn force_curvature_in_size(&self, u: &DVector<f64>) -> Option<f64> {
         let a = self.contour_of(u).a_bar();
