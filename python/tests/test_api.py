@@ -58,6 +58,20 @@ def test_pull_off_and_zero_force_equal_the_command_line(cli, model):
     assert_same_state(thinjkr.zero_force(0.8, model=model), z.get("state", z))
 
 
+def test_a_pull_off_is_neutral_under_its_own_control_not_unstable():
+    """Issue 31: a pull-off sits on the fold that ends its control, where
+    one eigenvalue is zero; it was counted as negative, and every pull-off
+    read "unstable" under its own control. It is now neutral, apart from
+    the unstable modes, in every model that judges stability."""
+    e = thinjkr.pull_off(0.8, model="energy")
+    assert (e.stable_load, e.neutral_load) == (True, True)
+    assert (e.stable_displacement, e.neutral_displacement) == (True, False)
+    c = thinjkr.pull_off(0.8, model="conformal:2", control="displacement")
+    assert c.stable_displacement and c.unstable_modes == [] and c.neutral_modes == [2]
+    z = thinjkr.zero_force(0.8, model="conformal:2")
+    assert z.neutral_modes == [] and z.neutral_modes_load == []
+
+
 def test_slender_refuses_what_it_lacks_with_the_reason():
     """The slender contact has no finite length: a state at a contact size,
     its curve and its displacement-controlled pull-off are refused, typed."""

@@ -25,7 +25,7 @@
 //! Owns: [`Contact`], [`NEAR_CIRCLE`], [`State`], [`Stability`], [`PullOff`], [`Search`]
 //! and the walk.
 //! May use: `control`, `model`, `newton`, `fold`, `error`, `equations` (the one model
-//! interface its Newton and continuation run on).
+//! interface its Newton and continuation run on), `cutoff` (the neutral band).
 
 mod cold;
 mod near_circle;
@@ -35,6 +35,7 @@ mod near_circle;
 pub(crate) const NEAR_CIRCLE: f64 = 1e-6;
 
 use crate::control::{Hold, Quantity};
+use crate::cutoff::Eigen;
 use crate::equations::held;
 use crate::error::{check_range, rounded, short, Error, Result};
 use crate::fold::{self, FoldCondition};
@@ -46,18 +47,37 @@ use serde::{Deserialize, Serialize};
 /// The stability of a state, for models with an energy (the energy
 /// closure): positive definiteness of the Hessian of Π̄ in (ā, s) under
 /// displacement control, of Π̄ − F̄δ̄ in (ā, s, δ̄) under load control.
-/// Stable means strictly: the smallest eigenvalue above 1e-9 of the
-/// largest in magnitude, so a state on a fold (pull-off, where the Hessian
-/// is singular up to round-off) is not stable under the control that ends
-/// there, whichever sign round-off gives its smallest eigenvalue.
+/// Stable means that no eigenvalue is negative beyond the neutral band
+/// (`crate::cutoff::Eigen`: 1e-6 of the largest in magnitude). A state on
+/// a fold (a pull-off, where the Hessian is singular up to round-off) is
+/// neutral under the control that ends there, whichever sign round-off
+/// gives its smallest eigenvalue: the limit of the stable states before
+/// it, marked by `neutral_*`, as the contour models mark theirs.
 /// `None` for models without an energy, whose stability is not defined.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Stability {
-    /// Stable under displacement control.
+    /// Stable under displacement control: no eigenvalue below the band.
     pub stable_displacement: Option<bool>,
     /// Stable under load control.
     pub stable_load: Option<bool>,
+    /// Stable under displacement control, with an eigenvalue zero within
+    /// the band: on a fold or bifurcation of that control.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub neutral_displacement: bool,
+    /// The same under load control (at the load-controlled pull-off).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub neutral_load: bool,
+    /// Strictly stable under displacement control: the least eigenvalue
+    /// above 1e-9 of the largest in magnitude. The walk to the
+    /// displacement-controlled end looks for the first state that is not,
+    /// so that a state on or near the fold counts as its end.
+    #[serde(skip)]
+    pub(crate) strictly_stable_displacement: bool,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 /// The smallest radii ratio the solver supports: the paper's model is
@@ -468,12 +488,17 @@ impl Contact {
         let m = self.model;
         let p = m.pressure_parameters(x, self.rho, delta);
         let stability = match m.potential_hessian(x, self.rho, delta) {
-            Some(h) => Stability {
-                stable_displacement: Some(strictly_positive_definite(
-                    h.fixed_view::<2, 2>(0, 0).into_owned(),
-                )),
-                stable_load: Some(strictly_positive_definite(h)),
-            },
+            Some(h) => {
+                let (displacement, strict) = least_eigen(h.fixed_view::<2, 2>(0, 0).into_owned());
+                let (load, _) = least_eigen(h);
+                Stability {
+                    stable_displacement: Some(displacement != Eigen::Unstable),
+                    stable_load: Some(load != Eigen::Unstable),
+                    neutral_displacement: displacement == Eigen::Neutral,
+                    neutral_load: load == Eigen::Neutral,
+                    strictly_stable_displacement: strict,
+                }
+            }
             None => Stability::default(),
         };
         State {
@@ -1356,7 +1381,10 @@ impl Contact {
             let walk = self.walk()?;
             let k = walk
                 .iter()
-                .position(|st| st.stability.stable_displacement == Some(false))
+                .position(|st| {
+                    st.stability.stable_displacement.is_some()
+                        && !st.stability.strictly_stable_displacement
+                })
                 .ok_or_else(|| self.stable_throughout(walk.last().map(|st| st.s)))?;
             let guess = walk[k.saturating_sub(1)];
             return Ok(PullOff {
@@ -1396,7 +1424,11 @@ impl Contact {
 
 /// Whether the symmetric `h` has its smallest eigenvalue above 1e-9 of its
 /// largest in magnitude (see [`Stability`]).
-fn strictly_positive_definite<const N: usize>(h: nalgebra::SMatrix<f64, N, N>) -> bool
+/// The least eigenvalue of a symmetric Hessian, classified by the neutral
+/// band (a non-finite Hessian is unstable: no verdict can be read), and
+/// whether it is strictly positive definite (the least eigenvalue above
+/// 1e-9 of the largest in magnitude).
+fn least_eigen<const N: usize>(h: nalgebra::SMatrix<f64, N, N>) -> (Eigen, bool)
 where
     nalgebra::Const<N>:
         nalgebra::DimMin<nalgebra::Const<N>, Output = nalgebra::Const<N>> + nalgebra::ToTypenum,
@@ -1406,7 +1438,10 @@ where
     >,
 {
     let e = h.symmetric_eigenvalues();
-    e.iter().all(|v| v.is_finite()) && e.min() > 1e-9 * e.amax()
+    if !e.iter().all(|v| v.is_finite()) {
+        return (Eigen::Unstable, false);
+    }
+    (Eigen::of(e.min(), e.amax()), e.min() > 1e-9 * e.amax())
 }
 
 /// The first interior index whose value is the smallest within 20 indices

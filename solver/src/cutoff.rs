@@ -21,7 +21,14 @@
 //! `physical` knows it (the thicker coating's h over L); the dimensionless
 //! commands take `--thinness` and otherwise h/L = 0.1 ([`Cutoff::default`]).
 //!
-//! Owns: [`Cutoff`]. May use: `error`.
+//! A direction whose eigenvalue is zero up to [`NEUTRAL`] of the largest is
+//! neutral, neither stable nor unstable: the state sits on a fold or a
+//! bifurcation of the control (a pull-off under its own control, or the
+//! circle at a neutral point ā³ = 4(n − 1)), located only as well as
+//! round-off allows. The verdicts count the clearly negative directions;
+//! the neutral ones are shown beside them ([`Eigen`]).
+//!
+//! Owns: [`Cutoff`], the neutral band ([`Eigen`]). May use: `error`.
 
 use crate::error::{check_range, Result};
 use serde::{Deserialize, Serialize};
@@ -72,6 +79,39 @@ impl Cutoff {
     }
 }
 
+/// The neutral band: an eigenvalue within this fraction of the largest
+/// in magnitude is zero as far as the state is located. At the folds
+/// where thinjkr ends a control (the pull-offs of `conformal:2` … `8`),
+/// the fold's own eigenvalue measures 1e-11 … 3e-9 of the largest; the
+/// nearest clearly unstable ones 3e-4 and more.
+pub(crate) const NEUTRAL: f64 = 1e-6;
+
+/// What an eigenvalue of a stability Hessian says about its direction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Eigen {
+    /// Positive beyond the neutral band.
+    Stable,
+    /// Zero within the neutral band: a fold or bifurcation.
+    Neutral,
+    /// Negative beyond the neutral band.
+    Unstable,
+}
+
+impl Eigen {
+    /// The direction of eigenvalue `l` of a Hessian whose largest
+    /// eigenvalue in magnitude is `scale`.
+    pub(crate) fn of(l: f64, scale: f64) -> Eigen {
+        let band = NEUTRAL * scale.abs();
+        if l < -band {
+            Eigen::Unstable
+        } else if l <= band {
+            Eigen::Neutral
+        } else {
+            Eigen::Stable
+        }
+    }
+}
+
 impl Default for Cutoff {
     fn default() -> Self {
         Cutoff::of(Cutoff::DEFAULT_THINNESS)
@@ -81,6 +121,16 @@ impl Default for Cutoff {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_neutral_band_is_a_millionth_of_the_largest() {
+        assert_eq!(Eigen::of(-2e-6, 1.0), Eigen::Unstable);
+        assert_eq!(Eigen::of(-5e-7, 1.0), Eigen::Neutral);
+        assert_eq!(Eigen::of(0.0, 1.0), Eigen::Neutral);
+        assert_eq!(Eigen::of(1.5e-6, 2.0), Eigen::Neutral);
+        assert_eq!(Eigen::of(3e-6, 2.0), Eigen::Stable);
+        assert_eq!(Eigen::of(-3e-6, -2.0), Eigen::Unstable);
+    }
 
     #[test]
     fn the_cutoff_is_two_pi_h_and_refuses_a_bad_thinness() {

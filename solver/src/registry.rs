@@ -465,7 +465,9 @@ impl Choice {
     /// each side of its contact-size fold may exist (first the one before
     /// it), and at a given F̄ the stable state on the branch from large
     /// loads and every other state with that force (past the pull-off, or
-    /// past the size fold); one state otherwise. The exact solver is
+    /// past the size fold); for a contour family every state at `hold` on
+    /// its curve ([`crate::conformal::Conformal::states`]), the one its
+    /// route answers first; one state otherwise. The exact solver is
     /// asked by δ̄ or F̄ (with its default escalation and, where no route
     /// finds the state, the continuation in ρ).
     pub fn states(&self, rho: f64, hold: Hold) -> crate::Result<Vec<crate::report::AnyState>> {
@@ -500,7 +502,11 @@ impl Choice {
                     }
                 }
             }
-            Choice::Contour(m) => vec![AnyState::Conformal(m.solve(rho, hold)?)],
+            Choice::Contour(m) => m
+                .states(rho, hold)?
+                .into_iter()
+                .map(AnyState::Conformal)
+                .collect(),
             Choice::Slender(m) => match hold {
                 Hold::Force(f) => m
                     .at_load_all(rho, f)?
@@ -525,6 +531,10 @@ impl Choice {
             // the stable state alone, without reading the whole branch
             let c = crate::Contact::with_model(m, rho)?;
             return Ok(crate::report::AnyState::Ellipse(c.at_load(f)?));
+        }
+        if let Choice::Contour(m) = self {
+            // the answered state alone, without tracing the curve
+            return Ok(crate::report::AnyState::Conformal(m.solve(rho, hold)?));
         }
         let mut states = self.states(rho, hold)?;
         // states() returns at least one state or an error

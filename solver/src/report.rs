@@ -348,8 +348,9 @@ pub(crate) enum Document {
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
         models: Vec<ModelAnswer>,
         /// How many other states have the same force (`solve --force`
-        /// with a model of the ellipse; `solve --all` lists them); absent
-        /// where not counted.
+        /// with a model of the ellipse), or the same control on the
+        /// member's curve (`solve` with a contour family, at any control);
+        /// `solve --all` lists them. Absent where not counted.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         others: Option<usize>,
     },

@@ -145,6 +145,14 @@ fn the_end_of_displacement_control_is_refused_where_the_branch_is_unstable_befor
         if k <= 3 {
             let (st, _) = got.unwrap_or_else(|e| panic!("K = {k}: {e}"));
             assert!(st.force_bar < 0.0, "K = {k}: {st:?}");
+            // its verdict is neutral, not unstable: one zero eigenvalue
+            // (cos 2θ, cos 4θ), nothing below the neutral band
+            assert!(
+                st.stable_displacement
+                    && st.unstable_modes.is_empty()
+                    && st.neutral_modes == [2 * k as u32 - 2],
+                "K = {k}: {st:?}"
+            );
         } else {
             match got {
                 Err(Error::NoState(why)) => assert!(
@@ -156,7 +164,15 @@ fn the_end_of_displacement_control_is_refused_where_the_branch_is_unstable_befor
                 other => panic!("K = {k}: {other:?}"),
             }
         }
-        assert!(m.pull_off(0.8, FoldCondition::Load).is_ok(), "K = {k}");
+        // under load control the pull-off (a fold of F̄) has one neutral
+        // direction, the branch's tangent (the size for K = 2; for K = 3
+        // mostly cos 4θ, near its imperfect bifurcation), whatever else is
+        // unstable there, and the size is not unstable
+        let (st, _) = m.pull_off(0.8, FoldCondition::Load).unwrap();
+        assert!(
+            st.neutral_modes_load.len() == 1 && !st.unstable_modes_load.contains(&0),
+            "K = {k}: {st:?}"
+        );
     }
 }
 
@@ -384,4 +400,32 @@ fn a_doubtful_member_state_says_so() {
         .unwrap()
         .get("warnings")
         .is_none());
+}
+
+/// Issue 31: "when several states exist at a control, `solve` says which
+/// one it returns and how many others `--all` would list". conformal:8 at
+/// ρ = 0.8 holds F̄ = −4 twice on its curve: the state on the arm from
+/// large contacts that `solve` answers (before the pull-off, F̄ = −4.1976),
+/// and one past the pull-off, where the curve turns back to larger ā
+/// through contours undulated with cos 4θ and δ̄ keeps falling. Each is a
+/// state at F̄ = −4 to 1e-9; the second lies below the pull-off's δ̄ and
+/// is not the first. Below the member's pull-off force there is none.
+#[test]
+fn every_state_on_the_curve_at_a_force_is_listed_the_answered_one_first() {
+    let m = Conformal::member("conformal", 8).unwrap();
+    let answered = m.solve(0.8, Hold::Force(-4.0)).unwrap();
+    let all = m.states(0.8, Hold::Force(-4.0)).unwrap();
+    assert_eq!(all.len(), 2, "{all:?}");
+    assert_eq!(all[0], answered);
+    let (pull_off, _) = m.pull_off(0.8, FoldCondition::Load).unwrap();
+    for st in &all {
+        assert!((st.force_bar + 4.0).abs() < 1e-9, "{st:?}");
+    }
+    assert!(all[0].delta_bar > pull_off.delta_bar, "{:?}", all[0]);
+    assert!(all[1].delta_bar < pull_off.delta_bar, "{:?}", all[1]);
+    assert!((all[1].a_bar - all[0].a_bar).abs() > 1e-3);
+    // below the pull-off force: no state at all
+    assert!(m
+        .states(0.8, Hold::Force(pull_off.force_bar - 0.01))
+        .is_err());
 }

@@ -338,6 +338,36 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
     }
 }
 
+/// At the circle's neutral point ā³ = 12 = 4(n − 1) (the pull-off at
+/// ρ = 1) the Hessian entry of mode 4, 2π(ā³/4 + 1 − n), is zero, and so
+/// is dF̄/dā = π(6ā⁵ − 72ā²)/96: mode 4 is neutral under displacement
+/// control, mode 4 and the size under load control. They are reported
+/// apart from the unstable modes (n ≥ 6), and the verdicts do not count
+/// them (issue 31: a pull-off was reported unstable under its own control,
+/// its fold's zero eigenvalue counted as negative).
+#[test]
+fn the_circle_at_its_pull_off_is_neutral_in_mode_four_and_in_size() {
+    let ex = Exact::new(1.0, trunc(6, 96)).unwrap();
+    let a = 12f64.cbrt();
+    let st = ex
+        .solve(a, &Contour::ellipse(a, a, 6), a * a / 4.0 - 2.0 / a)
+        .unwrap();
+    let stab = ex.stability(&st).unwrap();
+    let ns = |v: &[thinjkr::exact::stability::UnstableMode]| -> Vec<usize> {
+        v.iter().map(|m| m.n).collect()
+    };
+    assert_eq!(ns(&stab.neutral_displacement), [4], "{stab:?}");
+    assert_eq!(ns(&stab.neutral_load), [0, 4], "{stab:?}");
+    assert_eq!(ns(&stab.displacement), [6, 8, 10, 12], "{stab:?}");
+    assert_eq!(ns(&stab.load), [6, 8, 10, 12], "{stab:?}");
+    // with h/L = 0.4 (cutoff 2.513) mode 6 (2π·2.289/6 = 2.397) is shorter:
+    // nothing resolved is unstable, and the neutral mode 4 (3.596) does not
+    // make the verdict false
+    let under = stab.under(thinjkr::cutoff::Cutoff::for_thinness(0.4).unwrap());
+    assert_eq!(under.stable_displacement, Some(true), "{under:?}");
+    assert_eq!(under.stable_load, Some(true), "{under:?}");
+}
+
 /// The short-wave cutoff (docs/exact.md, "The short-wave cutoff"). The
 /// unstable modes are the model's, not the truncation's: the circle at
 /// ā = 3 (ā³/4 + 1 = 7.75) is unstable to every even n ≥ 8 its series

@@ -268,6 +268,20 @@ fn energy_fold_is_the_minimum_of_the_traced_force() {
         let c = Contact::with_model(ModelId::Energy, rho).unwrap();
         let po = c.pull_off_load().unwrap();
         assert_eq!(po.basis, FoldBasis::EnergyInstability);
+        // the fold itself is neutral under load control (a zero eigenvalue
+        // within the band, whichever sign round-off gives it), not
+        // unstable; under displacement control it is stable
+        let st = po.state.stability;
+        assert_eq!(
+            (st.stable_load, st.neutral_load),
+            (Some(true), true),
+            "rho {rho}: {st:?}"
+        );
+        assert_eq!(
+            (st.stable_displacement, st.neutral_displacement),
+            (Some(true), false),
+            "rho {rho}: {st:?}"
+        );
         let curve = thinjkr::curve::trace(&c, 3000, 20.0).unwrap();
         let (k, min) = curve
             .states

@@ -78,6 +78,9 @@ def _state_from(d: Dict[str, Any], model: Optional[str] = None) -> State:
         if isinstance(stab["displacement"], list):  # an exact state: unstable modes
             fields["unstable_modes_displacement"] = stab["displacement"]
             fields["unstable_modes_load"] = stab["load"]
+            # zero eigenvalues (a fold or bifurcation), not counted as unstable
+            fields["neutral_modes_displacement"] = stab.get("neutral_displacement", [])
+            fields["neutral_modes_load"] = stab.get("neutral_load", [])
             # the verdicts above the short-wave cutoff (None: not settled)
             fields["stable_displacement"] = stab.get("stable_displacement")
             fields["stable_load"] = stab.get("stable_load")
@@ -86,6 +89,13 @@ def _state_from(d: Dict[str, Any], model: Optional[str] = None) -> State:
         else:
             fields["stable_displacement"] = stab["displacement"]
             fields["stable_load"] = stab["load"]
+    # the neutral marks, which the JSON leaves out where there are none
+    if "stable_load" in fields and "coefficients" in fields and "contour" not in fields:
+        fields.setdefault("neutral_modes", [])
+        fields.setdefault("neutral_modes_load", [])
+    elif "xi" in fields and "stable_load" in fields:
+        fields.setdefault("neutral_displacement", False)
+        fields.setdefault("neutral_load", False)
     return State(fields)
 
 

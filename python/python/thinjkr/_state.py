@@ -56,15 +56,20 @@ class State:
     """One contact state. Attributes carry the solver's names: ``a_bar``,
     ``b_bar``, ``s``, ``delta_bar``, ``force_bar``, ``rho``, ``model`` and
     whatever else the model's state has (``xi``, ``p0``, ``bc_error``,
-    ``stable_displacement``, ``stable_load`` for the models of the
-    ellipse; ``coefficients``, ``bc_defect``, ``unstable_modes``,
-    ``unstable_modes_load``, ``perimeter`` for ``conformal:K``;
-    ``contour``, ``bc_error``, ``truncation``, ``route``,
+    ``stable_displacement``, ``stable_load``, ``neutral_displacement``,
+    ``neutral_load`` for the models of the ellipse; ``coefficients``,
+    ``bc_defect``, ``unstable_modes``, ``unstable_modes_load``,
+    ``neutral_modes``, ``neutral_modes_load``, ``perimeter`` for
+    ``conformal:K``; ``contour``, ``bc_error``, ``truncation``, ``route``,
     ``unstable_modes_displacement``, ``unstable_modes_load``,
+    ``neutral_modes_displacement``, ``neutral_modes_load``,
     ``shortest_wavelength`` for ``exact``; for both, ``stable_displacement``
     and ``stable_load`` count only the contour modes above the short-wave
     cutoff ``cutoff``, 2π h/L, and an exact verdict is None where it is not
-    settled). Equal when every field is equal; picklable."""
+    settled). A neutral direction has a zero eigenvalue (within 1e-6 of the
+    largest): the state is on a fold or bifurcation of that control, such
+    as a pull-off under its own control; it does not count as unstable.
+    Equal when every field is equal; picklable."""
 
     __slots__ = ("_fields",)
 

@@ -35,16 +35,47 @@ fn modes(st: &ConformalState) -> String {
     }
     if !st.unstable_modes_load.is_empty() {
         out.push_str(&format!(
-            "; under load control: {}",
+            "; {} load control: {}",
+            if st.unstable_modes.is_empty() {
+                "unstable contour modes under"
+            } else {
+                "under"
+            },
             list(&st.unstable_modes_load)
         ));
+    }
+    for (control, v) in [
+        ("displacement", &st.neutral_modes),
+        ("load", &st.neutral_modes_load),
+    ] {
+        if !v.is_empty() {
+            out.push_str(&format!(
+                "; neutral under {control} control (a zero eigenvalue: a fold or bifurcation of that control): {}",
+                list(v)
+            ));
+        }
     }
     out
 }
 
+/// The verdict under one control in a word: unstable, neutral (no
+/// resolved mode unstable, one neutral: the limit of stable states), or
+/// stable.
+pub(crate) fn verdict(st: &ConformalState, stable: bool, neutral: &[u32]) -> &'static str {
+    if !stable {
+        "unstable"
+    } else if neutral
+        .iter()
+        .any(|&n| st.cutoff.resolves(st.wavelength(n)))
+    {
+        "neutral"
+    } else {
+        "stable"
+    }
+}
+
 /// One state for a person.
 pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
-    let word = |b: bool| if b { "stable" } else { "unstable" };
     outln!(
         "{label}: model {}, a = {}, b = {}, s = {}, delta = {}, force = {}, max |dp/dnu - 1| on the contour = {:.1e} [above the short-wave cutoff {:.3} (2π h/L, h/L = {}): displacement control: {}, load control: {}{}]",
         st.model,
@@ -56,8 +87,8 @@ pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
         st.bc_defect,
         st.cutoff.wavelength,
         crate::error::short(st.cutoff.thinness),
-        word(st.stable_displacement),
-        word(st.stable_load),
+        verdict(st, st.stable_displacement, &st.neutral_modes),
+        verdict(st, st.stable_load, &st.neutral_modes_load),
         modes(st)
     );
     let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();

@@ -457,7 +457,7 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
 /// modes lie below it, in words.
 pub(crate) fn cutoff_words(stab: &crate::exact::stability::ExactStability) -> String {
     let c = stab.cutoff;
-    let verdict = |v: &[UnstableMode], stable: Option<bool>| -> String {
+    let verdict = |v: &[UnstableMode], neutral: &[UnstableMode], stable: Option<bool>| -> String {
         let list = |resolved: bool| -> Vec<usize> {
             v.iter()
                 .filter(|m| m.resolved == resolved)
@@ -465,7 +465,12 @@ pub(crate) fn cutoff_words(stab: &crate::exact::stability::ExactStability) -> St
                 .collect()
         };
         let (above, below) = (list(true), list(false));
+        let zero: Vec<usize> = neutral.iter().filter(|m| m.resolved).map(|m| m.n).collect();
         let mut w = match stable {
+            Some(true) if !zero.is_empty() => format!(
+                "neutral (n = {}: a zero eigenvalue, a fold or bifurcation of this control; no mode unstable)",
+                mode_list(&zero)
+            ),
             Some(true) => "stable".to_string(),
             Some(false) => format!("unstable (n = {})", mode_list(&above)),
             None => match stab.shortest_wavelength {
@@ -475,6 +480,12 @@ pub(crate) fn cutoff_words(stab: &crate::exact::stability::ExactStability) -> St
                 None => "not computed".to_string(),
             },
         };
+        if stable != Some(true) && !zero.is_empty() {
+            w.push_str(&format!(
+                "; n = {} neutral (a zero eigenvalue: a fold or bifurcation of this control)",
+                mode_list(&zero)
+            ));
+        }
         if !below.is_empty() {
             w.push_str(&format!(
                 "; n = {} shorter, not resolved by (2)",
@@ -492,8 +503,12 @@ pub(crate) fn cutoff_words(stab: &crate::exact::stability::ExactStability) -> St
         } else {
             ""
         },
-        verdict(&stab.displacement, stab.stable_displacement),
-        verdict(&stab.load, stab.stable_load)
+        verdict(
+            &stab.displacement,
+            &stab.neutral_displacement,
+            stab.stable_displacement
+        ),
+        verdict(&stab.load, &stab.neutral_load, stab.stable_load)
     )
 }
 

@@ -71,7 +71,9 @@ enum Command {
         #[arg(long, allow_hyphen_values = true, group = "control")]
         a: Option<f64>,
         /// Every state at that control, the one answered without --all first (with --force and a model of the
-        /// ellipse: each state with that force, the stable one first; --a lists every state of that size anyway).
+        /// ellipse: each state with that force, the stable one first; --a lists every state of that size anyway;
+        /// with a contour family: every state at that control on its curve, the arm through its state at δ̄ = 20
+        /// and the pull-off's arm).
         #[arg(long)]
         all: bool,
         /// Print JSON.
@@ -254,17 +256,19 @@ fn wants_json(c: &Option<Command>) -> bool {
 }
 
 fn stability(st: &State) -> String {
-    let word = |v: Option<bool>| match v {
+    let word = |v: Option<bool>, neutral: bool| match v {
+        Some(true) if neutral => "neutral (a zero eigenvalue: a fold of this control)",
         Some(true) => "stable",
         Some(false) => "unstable",
         None => "n/a",
     };
-    match (st.stability.stable_displacement, st.stability.stable_load) {
+    let s = st.stability;
+    match (s.stable_displacement, s.stable_load) {
         (None, None) => String::new(),
         (d, l) => format!(
             " [displacement control: {}, load control: {}]",
-            word(d),
-            word(l)
+            word(d, s.neutral_displacement),
+            word(l, s.neutral_load)
         ),
     }
 }
@@ -433,11 +437,25 @@ fn solve_command(
     if let Some(control) = exact {
         return exact_command::state(rho, control, &exact_command::Discretisation::default(), j);
     }
-    if all || !matches!(hold, Hold::Force(_)) {
-        return show_states("state", &model.states(rho, hold)?, j);
+    // a contour family's states at any control are read from its curve
+    let contour = matches!(model, ModelChoice::Contour(_));
+    if all || !(matches!(hold, Hold::Force(_)) || contour) {
+        let states = model.states(rho, hold)?;
+        if contour && !j {
+            outln!(
+                "{} state{} of {} at {} (rho = {}) on its curve (the arm through its state at delta = 20 and the pull-off's arm, past their folds), the one answered without --all first:",
+                states.len(),
+                if states.len() == 1 { "" } else { "s" },
+                model.name(),
+                hold,
+                crate::error::short(rho)
+            );
+        }
+        return show_states("state", &states, j);
     }
-    // at a given force the stable state, and how many others have it (the
-    // stable state alone where the others cannot be read)
+    // at a given force the stable state (for a contour family, the one its
+    // route answers), and how many others have it (the state alone where
+    // the others cannot be read)
     let (state, others) = match model.states(rho, hold) {
         Ok(mut all) => {
             let n = all.len() - 1;
@@ -455,7 +473,23 @@ fn solve_command(
         return Ok(());
     }
     show_states("state", std::slice::from_ref(&state), false)?;
+    let value = match hold {
+        Hold::Delta(_) => "this approach",
+        Hold::Force(_) => "this force",
+        Hold::Size(_) => "this size",
+    };
     match others {
+        Ok(0) if contour => outln!(
+            "  no other state on the member's curve (the arm through its state at delta = 20 and the pull-off's arm) has {value}"
+        ),
+        Ok(n) if contour => outln!(
+            "  {n} other state{} on the member's curve (the arm through its state at delta = 20 and the pull-off's arm) {} {value} (--all lists every one)",
+            if n == 1 { "" } else { "s" },
+            if n == 1 { "has" } else { "have" }
+        ),
+        Err(e) if contour => outln!(
+            "  the other states with {value} were not counted: {e}"
+        ),
         Ok(0) => {}
         Ok(n) => outln!(
             "  the stable state, on the branch from large loads; {n} other state{} {} this force (--all lists every one)",
@@ -916,10 +950,10 @@ fn physical(
         AnyState::Exact(st) => outln!("  {}", exact_command::cutoff_words(&st.stability)),
         AnyState::Conformal(st) => outln!(
             "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",
-            if st.stable_displacement { "stable" } else { "unstable" },
+            contour::verdict(st, st.stable_displacement, &st.neutral_modes),
             st.cutoff.wavelength,
             crate::error::short(st.cutoff.thinness),
-            if st.stable_load { "stable" } else { "unstable" }
+            contour::verdict(st, st.stable_load, &st.neutral_modes_load)
         ),
         AnyState::Ellipse(_) | AnyState::Slender(_) => {}
     }

@@ -37,7 +37,7 @@ pub mod poly;
 mod trace;
 
 use crate::control::Hold;
-use crate::cutoff::Cutoff;
+use crate::cutoff::{Cutoff, Eigen};
 use crate::equations::held;
 use crate::error::{check_range, short, Error, Result};
 use crate::fold::FoldCondition;
@@ -199,7 +199,9 @@ pub struct ConformalState {
     /// max |∂p̄/∂ν − 1| on the contour: the defect of (3)₂ the Ritz closure leaves.
     pub bc_defect: f64,
     /// Stable under displacement control: no negative direction of
-    /// ∂²Π̄/∂c² whose mode is at least the cutoff's wavelength long.
+    /// ∂²Π̄/∂c² (below the neutral band, `crate::cutoff::NEUTRAL` of the
+    /// largest eigenvalue) whose mode is at least the cutoff's wavelength
+    /// long. A neutral direction does not count: see `neutral_modes`.
     pub stable_displacement: bool,
     /// Stable under load control: the same for the Hessian in (c, δ̄) of
     /// Π̄ − F̄δ̄.
@@ -210,6 +212,17 @@ pub struct ConformalState {
     pub unstable_modes: Vec<u32>,
     /// The same under load control (n = 0 also for δ̄).
     pub unstable_modes_load: Vec<u32>,
+    /// Contour modes whose eigenvalue of ∂²Π̄/∂c² is zero within the
+    /// neutral band: the state is on a fold or bifurcation under
+    /// displacement control (its displacement-controlled pull-off, where
+    /// the fold's own direction is neutral), the limit of stable states
+    /// if nothing else is unstable.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub neutral_modes: Vec<u32>,
+    /// The same under load control (at the load-controlled pull-off, the
+    /// size).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub neutral_modes_load: Vec<u32>,
     /// The contour's perimeter (units of L): mode n is perimeter/n long.
     pub perimeter: f64,
     /// The short-wave cutoff the two verdicts count modes above
@@ -264,6 +277,10 @@ impl ConformalState {
 /// 3.1e-2, errors up to 8e-3; ρ = 0.515, F̄ = 10: defect 0.21, ā 3.4 %
 /// off), so a defect above 0.1 means errors of per cent.
 pub(crate) const DOUBTFUL_DEFECT: f64 = 0.1;
+
+/// The points of the curve [`Conformal::states`] reads the states at a
+/// control from.
+pub(crate) const STATES_POINTS: usize = 100;
 
 /// The warnings of a member's state ([`ConformalState::warnings`]).
 fn doubts(rho: f64, a_bar: f64, b_bar: f64, bc_defect: f64) -> Vec<String> {
@@ -940,6 +957,54 @@ impl Conformal {
         Ok(st)
     }
 
+    /// Every state at `control` that the member's curve at `rho` holds
+    /// ([`Conformal::curve`]: the arm from large contacts and the arm
+    /// that carries the pull-off, past their folds), the one
+    /// [`Conformal::solve`] answers first. The curve is traced from
+    /// δ̄ = 20 (or 1 above a larger δ̄ asked for) with [`STATES_POINTS`]
+    /// points; where the control's value minus the target changes sign
+    /// between two neighbours on one arm, Newton at the control from the
+    /// nearer one gives a state, kept when it is not one already found
+    /// (ā and s apart by more than 1e-6). A state the curve does not reach
+    /// (another arm, or a crossing closer than the curve's spacing) is
+    /// not listed; where the curve cannot be traced the error says so.
+    pub fn states(&self, rho: f64, control: Hold) -> Result<Vec<ConformalState>> {
+        let first = self.solve(rho, control)?;
+        let delta_start = match control {
+            Hold::Delta(d) if d >= 19.0 => d + 1.0,
+            _ => 20.0,
+        };
+        let curve = self.curve(rho, STATES_POINTS, delta_start)?;
+        let target = |st: &ConformalState| match control {
+            Hold::Delta(d) => st.delta_bar - d,
+            Hold::Force(f) => st.force_bar - f,
+            Hold::Size(a) => st.a_bar - a,
+        };
+        let same = |a: &ConformalState, b: &ConformalState| {
+            (a.a_bar - b.a_bar).abs() <= 1e-6 * a.a_bar && (a.s - b.s).abs() <= 1e-6
+        };
+        let mut out = vec![first];
+        for k in 1..curve.states.len() {
+            if curve.arm[k] != curve.arm[k - 1] {
+                continue;
+            }
+            let (p, q) = (&curve.states[k - 1], &curve.states[k]);
+            let (vp, vq) = (target(p), target(q));
+            if vp.signum() == vq.signum() && vp != 0.0 {
+                continue;
+            }
+            let near = if vp.abs() <= vq.abs() { p } else { q };
+            // a crossing Newton does not reach from the curve is not a state
+            // this curve holds at its spacing; it is left out, not guessed
+            if let Ok(st) = self.solve_near(rho, control, near) {
+                if !out.iter().any(|o| same(o, &st)) {
+                    out.push(st);
+                }
+            }
+        }
+        Ok(out)
+    }
+
     /// The state at force `control` on the arm that carries the pull-off:
     /// traced, as the pull-off is ([`Conformal::pull_off`]), from the state
     /// at ā = [`Family::trace_start_a`] towards smaller ā, to where F̄
@@ -1147,30 +1212,19 @@ impl Conformal {
     /// The first extremum of δ̄ ends displacement control only where the
     /// branch is still stable there apart from the fold itself: a contour
     /// mode the member holds, at least the short-wave cutoff long, with a
-    /// clearly negative eigenvalue of ∂²Π̄/∂c² (below −1e-6 of the largest;
-    /// the fold's own direction is zero) means the branch lost stability
+    /// clearly negative eigenvalue of ∂²Π̄/∂c² (below the neutral band,
+    /// `crate::cutoff::Eigen`; the fold's own direction is neutral) means the branch lost stability
     /// under displacement control before it, where a contact changes shape
     /// (issue 31, item 1: the end moved with K, −4.17 … −3.68 at ρ = 0.8).
     /// At ρ = 1 the circle is unstable to the modes n > ā³/4 + 1, so a
     /// member with modes up to 2K − 2 becomes a saddle at ā³ = 4(2K − 3).
     fn reached_under_displacement(&self, st: &ConformalState) -> Result<()> {
-        let k = self.terms();
-        let mut x = DVector::from_vec(st.coefficients.clone());
-        x = x.push(st.delta_bar);
-        let e = self.potential(&x, st.rho);
-        let hcc = DMatrix::from_fn(k, k, |i, j| e.hess[i][j]);
-        let eig = hcc.symmetric_eigen();
-        let top = eig.eigenvalues.amax().max(1e-300);
-        let mut before: Vec<(u32, f64)> = Vec::new();
-        for (i, &l) in eig.eigenvalues.iter().enumerate() {
-            if l < -1e-6 * top {
-                let n = self.mode_of(eig.eigenvectors.column(i).iamax(), false);
-                let wavelength = st.wavelength(n);
-                if st.cutoff.resolves(wavelength) {
-                    before.push((n, wavelength));
-                }
-            }
-        }
+        let mut before: Vec<(u32, f64)> = st
+            .unstable_modes
+            .iter()
+            .map(|&n| (n, st.wavelength(n)))
+            .filter(|&(_, w)| st.cutoff.resolves(w))
+            .collect();
         if before.is_empty() {
             return Ok(());
         }
@@ -1284,8 +1338,8 @@ impl Conformal {
         let n = k + 1;
         let h = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
         let hcc = h.view((0, 0), (k, k)).into_owned();
-        let modes = self.modes(&hcc, false);
-        let modes_load = self.modes(&h, true);
+        let (modes, neutral) = self.modes(&hcc, false);
+        let (modes_load, neutral_load) = self.modes(&h, true);
         let force = e.grad[k];
         let bc_defect = self.bc_defect(x, rho);
         let out = ConformalState {
@@ -1302,6 +1356,8 @@ impl Conformal {
             stable_load: false,
             unstable_modes: modes,
             unstable_modes_load: modes_load,
+            neutral_modes: neutral,
+            neutral_modes_load: neutral_load,
             perimeter: self.perimeter(c),
             cutoff: Cutoff::default(),
             warnings: doubts(rho, a, b, bc_defect),
@@ -1327,18 +1383,23 @@ impl Conformal {
     /// so the mode of c_k is n_k − 1; each negative eigenvector reports the
     /// mode of its largest component.
     /// With `with_delta` the Hessian is bordered by δ̄ (load control),
-    /// whose component counts as the size, n = 0.
-    fn modes(&self, h: &DMatrix<f64>, with_delta: bool) -> Vec<u32> {
+    /// whose component counts as the size, n = 0. Returns the unstable
+    /// modes and, apart, the neutral ones (`crate::cutoff::Eigen`).
+    fn modes(&self, h: &DMatrix<f64>, with_delta: bool) -> (Vec<u32>, Vec<u32>) {
         let eig = h.clone().symmetric_eigen();
         let top = eig.eigenvalues.amax().max(1e-300);
-        let mut modes = Vec::new();
+        let (mut unstable, mut neutral) = (Vec::new(), Vec::new());
         for (i, &l) in eig.eigenvalues.iter().enumerate() {
-            if l <= 1e-9 * top {
-                modes.push(self.mode_of(eig.eigenvectors.column(i).iamax(), with_delta));
+            let n = || self.mode_of(eig.eigenvectors.column(i).iamax(), with_delta);
+            match Eigen::of(l, top) {
+                Eigen::Unstable => unstable.push(n()),
+                Eigen::Neutral => neutral.push(n()),
+                Eigen::Stable => {}
             }
         }
-        modes.sort_unstable();
-        modes
+        unstable.sort_unstable();
+        neutral.sort_unstable();
+        (unstable, neutral)
     }
 
     /// The contour mode of unknown `k` (c_k moves the radius by

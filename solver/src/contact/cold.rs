@@ -499,10 +499,8 @@ impl Contact {
     /// the fold Newton.
     pub(super) fn cold_first_unstable(&self) -> Result<State> {
         let stable = |p: &Point| {
-            self.state_with(p.a, p.s, p.delta, false)
-                .stability
-                .stable_displacement
-                != Some(false)
+            let st = self.state_with(p.a, p.s, p.delta, false).stability;
+            st.stable_displacement.is_none() || st.strictly_stable_displacement
         };
         let mut scan = Scan::new(self)?;
         let mut i = 0;

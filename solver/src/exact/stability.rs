@@ -39,7 +39,7 @@
 //! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, `error`, `cutoff`, nalgebra.
 
 use super::{Exact, ExactState};
-use crate::cutoff::Cutoff;
+use crate::cutoff::{Cutoff, Eigen};
 use crate::error::{Error, Result};
 use nalgebra::{DMatrix, SymmetricEigen};
 use serde::Serialize;
@@ -54,7 +54,9 @@ pub struct UnstableMode {
     /// The wavelength along the contour, its perimeter over n, in units
     /// of L (∞ for n = 0; 2πā/n on a circle).
     pub wavelength: f64,
-    /// The eigenvalue (negative).
+    /// The eigenvalue: negative beyond the neutral band; in
+    /// [`ExactStability::neutral_load`] and `neutral_displacement`, zero
+    /// within it (either sign).
     pub eigenvalue: f64,
     /// Whether the wavelength is at least the cutoff's (the model resolves
     /// the mode and predicts a change of shape), or shorter (the
@@ -70,6 +72,15 @@ pub struct ExactStability {
     pub displacement: Vec<UnstableMode>,
     /// Under load control (F̄ fixed, δ̄ free).
     pub load: Vec<UnstableMode>,
+    /// The neutral directions under displacement control: eigenvalue zero
+    /// within the neutral band (`crate::cutoff::Eigen`), a fold or
+    /// bifurcation of the control (at ρ = 1 the circle's mode n where
+    /// ā³ = 4(n − 1)). The verdicts do not count them.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub neutral_displacement: Vec<UnstableMode>,
+    /// The same under load control (at the pull-off, the size).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub neutral_load: Vec<UnstableMode>,
     /// The wavelength of the shortest contour mode the state's series
     /// represents (its perimeter over that mode's n); none where the
     /// stability was not computed.
@@ -92,6 +103,8 @@ impl Default for ExactStability {
         ExactStability {
             displacement: Vec::new(),
             load: Vec::new(),
+            neutral_displacement: Vec::new(),
+            neutral_load: Vec::new(),
             shortest_wavelength: None,
             cutoff: Cutoff::default(),
             stable_displacement: None,
@@ -103,7 +116,13 @@ impl Default for ExactStability {
 impl ExactStability {
     /// The same modes judged under another cutoff (another thinness h/L).
     pub fn under(mut self, cutoff: Cutoff) -> ExactStability {
-        for m in self.displacement.iter_mut().chain(self.load.iter_mut()) {
+        for m in self
+            .displacement
+            .iter_mut()
+            .chain(self.load.iter_mut())
+            .chain(self.neutral_displacement.iter_mut())
+            .chain(self.neutral_load.iter_mut())
+        {
             m.resolved = cutoff.resolves(m.wavelength);
         }
         let reaches = self
@@ -155,7 +174,9 @@ impl Exact {
                 gg.eigenvectors[(r, order[c])]
             }))
         };
-        let unstable = |a: DMatrix<f64>, with_delta: bool| -> Vec<UnstableMode> {
+        let unstable = |a: DMatrix<f64>,
+                        with_delta: bool|
+         -> (Vec<UnstableMode>, Vec<UnstableMode>) {
             // in the reduced coordinates [Z 0; 0 1], and back
             let lift = restriction.as_ref().map(|z| {
                 let k = z.ncols();
@@ -176,8 +197,11 @@ impl Exact {
                 eig.eigenvectors = t * &eig.eigenvectors;
             }
             let scale = eig.eigenvalues.amax().max(1e-300);
+            // the unstable directions and the neutral ones, which take
+            // their modes first (the neutral band, `crate::cutoff::Eigen`)
+            let sign = |i: usize| Eigen::of(eig.eigenvalues[i], scale);
             let negative: Vec<usize> = (0..eig.eigenvalues.len())
-                .filter(|&i| eig.eigenvalues[i] < -1e-9 * scale)
+                .filter(|&i| sign(i) != Eigen::Stable)
                 .collect();
             // the mode of the component k of an eigenvector
             let mode_of = |k: usize| {
@@ -209,25 +233,30 @@ impl Exact {
                     taken.insert(n);
                 }
             }
-            let mut out: Vec<UnstableMode> = negative
+            let (mut out, mut neutral): (Vec<(usize, UnstableMode)>, Vec<_>) = negative
                 .iter()
                 .map(|&i| {
                     // (more directions than modes: its largest component)
                     let n = label[i].unwrap_or_else(|| mode_of(eig.eigenvectors.column(i).iamax()));
-                    UnstableMode {
-                        n,
-                        wavelength: if n == 0 {
-                            f64::INFINITY
-                        } else {
-                            perimeter / n as f64
+                    (
+                        i,
+                        UnstableMode {
+                            n,
+                            wavelength: if n == 0 {
+                                f64::INFINITY
+                            } else {
+                                perimeter / n as f64
+                            },
+                            eigenvalue: eig.eigenvalues[i],
+                            resolved: true,
                         },
-                        eigenvalue: eig.eigenvalues[i],
-                        resolved: true,
-                    }
+                    )
                 })
-                .collect();
-            out.sort_by_key(|u| u.n);
-            out
+                .partition(|&(i, _)| sign(i) == Eigen::Unstable);
+            out.sort_by_key(|u| u.1.n);
+            neutral.sort_by_key(|u| u.1.n);
+            let strip = |v: Vec<(usize, UnstableMode)>| v.into_iter().map(|u| u.1).collect();
+            (strip(out), strip(neutral))
         };
         // the shortest mode the series holds: e^{imθ} is the radius's cos (m − 1)θ
         let n_max = mult
@@ -235,7 +264,7 @@ impl Exact {
             .map(|&x| (x - 1.0).abs().round())
             .fold(1.0, f64::max);
         // the two controls' eigenproblems, on both cores
-        let (displacement, load) = super::both(
+        let ((displacement, neutral_displacement), (load, neutral_load)) = super::both(
             n >= super::TWO_CORES_FROM_POINTS,
             || unstable(hess.view((0, 0), (m, m)).into_owned(), false),
             || unstable(hess.clone(), true),
@@ -243,6 +272,8 @@ impl Exact {
         Ok(ExactStability {
             displacement,
             load,
+            neutral_displacement,
+            neutral_load,
             shortest_wavelength: Some(perimeter / n_max),
             ..ExactStability::default()
         }
