@@ -828,6 +828,11 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
         return Ok(());
     }
     show_state("exact state", &st)?;
+    // counting the others takes the screen of --all (seconds at rho = 0.8,
+    // minutes at small rho): said, not done
+    outln!(
+        "  other exact states at {control}: not counted; --all lists every near-elliptic one with a in [--from, --to] (by default [1, 4]; a screen of conformal:8's states at fixed a, each crossing solved exactly: seconds to minutes)"
+    );
     for (m, r) in &model_states {
         match r {
             Ok(p) => outln!(

@@ -52,7 +52,8 @@ pub struct UnstableMode {
     /// by cos nθ (n = 0: the size; under load control also δ̄).
     pub n: usize,
     /// The wavelength along the contour, its perimeter over n, in units
-    /// of L (∞ for n = 0; 2πā/n on a circle).
+    /// of L (∞ for n = 0, null in JSON; 2πā/n on a circle).
+    #[cfg_attr(feature = "schema", schemars(with = "Option<f64>"))]
     pub wavelength: f64,
     /// The eigenvalue: negative beyond the neutral band; in
     /// [`ExactStability::neutral_load`] and `neutral_displacement`, zero
