@@ -429,3 +429,36 @@ fn every_state_on_the_curve_at_a_force_is_listed_the_answered_one_first() {
         .states(0.8, Hold::Force(pull_off.force_bar - 0.01))
         .is_err());
 }
+
+/// At ρ = 1 the circle's δ̄ = ā²/4 − 2/ā has no extremum, and conformal:2's
+/// displacement-controlled pull-off was refused there ("no extremum before
+/// the contact vanished") while it answered at ρ = 0.9999. Its first
+/// extrema of δ̄ close in on the circle's neutral point of cos 2θ,
+/// ā³ = 4, F̄ = π(ā⁶ − 24ā³)/96 = −5π/6, the end the models of the ellipse
+/// give at ρ = 1: conformal:2 answers it, neutral in cos 2θ. conformal:3
+/// is refused there as at ρ = 0.9999, naming cos 4θ.
+#[test]
+fn the_end_of_displacement_control_at_rho_one_is_the_limit_of_the_folds() {
+    let m2 = Conformal::member("conformal", 2).unwrap();
+    let (st, _) = m2.pull_off(1.0, FoldCondition::Displacement).unwrap();
+    let a = 4f64.cbrt();
+    assert!(
+        (st.a_bar - a).abs() < 1e-12 && (st.s - 1.0).abs() < 1e-12,
+        "{st:?}"
+    );
+    assert!(
+        (st.force_bar + 5.0 * std::f64::consts::PI / 6.0).abs() < 1e-9,
+        "{st:?}"
+    );
+    assert!(st.stable_displacement && st.neutral_modes == [2], "{st:?}");
+    // continuous with rho just below 1 (the end moves as √(1 − ρ))
+    let (near, _) = m2.pull_off(0.9999, FoldCondition::Displacement).unwrap();
+    assert!((near.a_bar - a).abs() < 0.03, "{near:?}");
+    let m3 = Conformal::member("conformal", 3).unwrap();
+    for rho in [1.0, 0.9999] {
+        match m3.pull_off(rho, FoldCondition::Displacement) {
+            Err(Error::NoState(why)) => assert!(why.contains("cos 4θ"), "rho {rho}: {why}"),
+            other => panic!("rho {rho}: {other:?}"),
+        }
+    }
+}

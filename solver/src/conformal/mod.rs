@@ -1187,6 +1187,9 @@ impl Conformal {
             ));
         }
         let rho = check_rho(self.family, rho)?;
+        if control == FoldCondition::Displacement && rho >= 1.0 {
+            return self.displacement_end_of_the_circle();
+        }
         let direct = self.pull_off_traced(rho, control);
         let found = if direct.is_ok() || rho >= 1.0 {
             direct
@@ -1207,6 +1210,27 @@ impl Conformal {
             self.reached_under_displacement(&found.0)?;
         }
         Ok(found)
+    }
+
+    /// At ρ = 1 the circle's δ̄ = ā²/4 − 2/ā has no extremum in ā, and the
+    /// trace from ā = 2.6 stays on the circle. For a contour of cos 2θ
+    /// alone (conformal:2) the end of displacement control is the limit
+    /// of its first extrema of δ̄ at ρ < 1, which close in on the circle's
+    /// neutral point of cos 2θ, ā³ = 4, as √(1 − ρ) (as for the models of
+    /// the ellipse; at ρ = 0.9999: ā = 1.6040). A member with cos 4θ or
+    /// shorter is refused, as just below ρ = 1 (there its first extremum
+    /// of δ̄ lies on the branch of cos 4θ, at ā ≈ 1.74 for K = 3 and 2.01
+    /// for K = 8, where that mode is unstable): the circle followed to
+    /// ā³ = 4 is unstable to every n > ā³/4 + 1 it holds.
+    fn displacement_end_of_the_circle(&self) -> Result<(ConformalState, Vec<Extremum>)> {
+        let k = self.terms();
+        let a = 4f64.cbrt();
+        let mut x = DVector::zeros(k + 1);
+        x[0] = a;
+        x[k] = a * a / 4.0 - 2.0 / a;
+        let st = self.state(&x, 1.0)?;
+        self.reached_under_displacement(&st)?;
+        Ok((st, Vec::new()))
     }
 
     /// The first extremum of δ̄ ends displacement control only where the
@@ -1240,9 +1264,14 @@ impl Conformal {
             })
             .collect();
         Err(Error::NoState(format!(
-            "{} has no displacement-controlled pull-off at rho = {}: at its first extremum of delta (a = {}, F = {}) the branch is already unstable under displacement control to {}, modes above the short-wave cutoff {:.3} = 2π h/L (h/L = {}); a contact held at its approach changes shape before, which this contour cannot follow (docs/exact.md, \"The short-wave cutoff\")",
+            "{} has no displacement-controlled pull-off at rho = {}: at {} (a = {}, F = {}) the branch is already unstable under displacement control to {}, modes above the short-wave cutoff {:.3} = 2π h/L (h/L = {}); a contact held at its approach changes shape before, which this contour cannot follow (docs/exact.md, \"The short-wave cutoff\")",
             self.name(),
             short(st.rho),
+            if st.rho >= 1.0 {
+                "the circle's neutral point of cos 2θ, where a contour of cos 2θ alone ends (the circle has no extremum of delta)"
+            } else {
+                "its first extremum of delta"
+            },
             crate::error::rounded(st.a_bar),
             crate::error::rounded(st.force_bar),
             modes.join(", "),
