@@ -1188,7 +1188,9 @@ impl Conformal {
         }
         let rho = check_rho(self.family, rho)?;
         if control == FoldCondition::Displacement && rho >= 1.0 {
-            return self.displacement_end_of_the_circle();
+            if let Some(end) = self.displacement_end_of_the_circle() {
+                return end;
+            }
         }
         let direct = self.pull_off_traced(rho, control);
         let found = if direct.is_ok() || rho >= 1.0 {
@@ -1222,15 +1224,34 @@ impl Conformal {
     /// of δ̄ lies on the branch of cos 4θ, at ā ≈ 1.74 for K = 3 and 2.01
     /// for K = 8, where that mode is unstable): the circle followed to
     /// ā³ = 4 is unstable to every n > ā³/4 + 1 it holds.
-    fn displacement_end_of_the_circle(&self) -> Result<(ConformalState, Vec<Extremum>)> {
+    ///
+    /// The circle ā³ = 4, δ̄ = ā²/4 − 2/ā is that of the cylinders' gap
+    /// X²/2 + Y²/2: `None` (the trace decides) for a family on another
+    /// gap, found by its equations ∇_c Π̄ not vanishing there (to 1e-9 of
+    /// the largest Hessian entry) or cos 2θ not being neutral.
+    fn displacement_end_of_the_circle(&self) -> Option<Result<(ConformalState, Vec<Extremum>)>> {
         let k = self.terms();
         let a = 4f64.cbrt();
         let mut x = DVector::zeros(k + 1);
         x[0] = a;
         x[k] = a * a / 4.0 - 2.0 / a;
-        let st = self.state(&x, 1.0)?;
-        self.reached_under_displacement(&st)?;
-        Ok((st, Vec::new()))
+        let e = self.potential(&x, 1.0);
+        let scale = e
+            .hess
+            .iter()
+            .flat_map(|row| row.iter())
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        if e.grad[..k].iter().any(|g| g.abs() > 1e-9 * scale) {
+            return None;
+        }
+        let st = match self.state(&x, 1.0) {
+            Ok(st) if st.neutral_modes.contains(&2) => st,
+            _ => return None,
+        };
+        Some(
+            self.reached_under_displacement(&st)
+                .map(|()| (st, Vec::new())),
+        )
     }
 
     /// The first extremum of δ̄ ends displacement control only where the
