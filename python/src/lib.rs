@@ -201,6 +201,20 @@ fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> Py
     detached(py, move || solve_one(m, rho, &control, value))?.map_err(raw)
 }
 
+/// Every state of `model` at `rho` with `control` = `value`, the one
+/// [`solve`] gives first, as a JSON array (the model layer's
+/// `Choice::states`, what `thinjkr solve --all` lists).
+#[pyfunction]
+fn states(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> PyResult<String> {
+    let m = choice(model)?;
+    check_control(control)?;
+    let control = control.to_string();
+    detached(py, move || -> thinjkr::Result<String> {
+        Ok(json(&m.states(rho, Hold::named(&control, value)?)?))
+    })?
+    .map_err(raw)
+}
+
 /// One point's state: (a_bar, b_bar, s, delta_bar, force_bar, bc_error),
 /// its warnings joined by "; " ('' for none), and for an exact state its
 /// departure from the ellipse and route (NaN and '' otherwise).
@@ -638,6 +652,7 @@ fn _thinjkr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MAX_USER_MODES", thinjkr::exact::MAX_USER_MODES)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;
     m.add_function(wrap_pyfunction!(solve, m)?)?;
+    m.add_function(wrap_pyfunction!(states, m)?)?;
     m.add_function(wrap_pyfunction!(solve_many, m)?)?;
     m.add_function(wrap_pyfunction!(pull_off, m)?)?;
     m.add_function(wrap_pyfunction!(exact_contour, m)?)?;

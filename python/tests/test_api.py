@@ -58,6 +58,26 @@ def test_pull_off_and_zero_force_equal_the_command_line(cli, model):
     assert_same_state(thinjkr.zero_force(0.8, model=model), z.get("state", z))
 
 
+@pytest.mark.parametrize("model,args,kwargs", [
+    ("max", ["--force", "-4"], {"force": -4.0}),
+    ("max", ["--a", "2.3"], {"a": 2.3}),
+    ("conformal:8", ["--force", "-4"], {"force": -4.0}),
+])
+def test_all_states_equal_the_command_line(cli, model, args, kwargs):
+    """``solve(..., all=True)`` lists what ``thinjkr solve --all`` lists
+    (issue 34: Python gave the first state only), the one ``solve`` gives
+    first; conformal:8 at rho = 0.8, F = -4 has two on its curve."""
+    d = run_json(cli, "solve", "--model", model, "--rho", "0.8", *args, "--all")
+    want = d["states"] if "states" in d else [d["state"]]
+    got = thinjkr.solve(0.8, model=model, all=True, **kwargs)
+    assert len(got) == len(want) >= 2
+    for st, w in zip(got, want):
+        assert_same_state(st, w)
+    assert got[0] == thinjkr.solve(0.8, model=model, **kwargs)
+    with pytest.raises(thinjkr.InvalidInput, match="scalar"):
+        thinjkr.solve([0.8, 0.9], model=model, all=True, **kwargs)
+
+
 def test_a_pull_off_is_neutral_under_its_own_control_not_unstable():
     """Issue 31: a pull-off sits on the fold that ends its control, where
     one eigenvalue is zero; it was counted as negative, and every pull-off

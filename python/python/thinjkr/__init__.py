@@ -172,7 +172,7 @@ def _control(delta, force, a) -> Tuple[str, Any]:
     return given[0]
 
 
-def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
+def solve(rho, *, delta=None, force=None, a=None, model: str = "max", all: bool = False):
     """The state at radii ratio ``rho`` with exactly one control: approach
     ``delta`` (δ̄), force ``force`` (F̄, the stable state on the branch down
     to pull-off) or contact size ``a`` (ā, the state before the size fold).
@@ -181,9 +181,22 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max"):
     (broadcast together), the answer is a :class:`States` of arrays of
     that shape, computed in Rust on all cores; a point without a state is
     NaN in the arrays and has its reason in ``States.error``.
+
+    With ``all=True`` (scalars only) the answer is a list of every state
+    at that control, the one given without it first, as ``thinjkr solve
+    --all`` lists them: for a model of the ellipse each state with that
+    force (or size) along its branch, for ``conformal:K`` every state at
+    the control on its curve.
     """
     control, value = _control(delta, force, a)
     rho, value = _number("rho", rho), _number(control, value)
+    if all:
+        if _np.ndim(rho) != 0 or _np.ndim(value) != 0:
+            raise InvalidInput("all=True takes a scalar rho and control (a list of states per point)")
+        ds = _json.loads(_call(_thinjkr.states, model, rho, control, value))
+        for d in ds:
+            _warn(d)
+        return [_state_from(d, model) for d in ds]
     if _np.ndim(rho) == 0 and _np.ndim(value) == 0:
         d = _json.loads(_call(_thinjkr.solve, model, rho, control, value))
         _warn(d)
