@@ -466,7 +466,7 @@ impl Choice {
     /// it), and at a given F̄ the stable state on the branch from large
     /// loads and every other state with that force (past the pull-off, or
     /// past the size fold); for a contour family every state at `hold` on
-    /// its curve ([`crate::conformal::Conformal::states`]), the one its
+    /// its curve (`Conformal::states`), the one its
     /// route answers first; one state otherwise. The exact solver is
     /// asked by δ̄ or F̄ (with its default escalation and, where no route
     /// finds the state, the continuation in ρ).

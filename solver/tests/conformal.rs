@@ -414,7 +414,19 @@ fn a_doubtful_member_state_says_so() {
 fn every_state_on_the_curve_at_a_force_is_listed_the_answered_one_first() {
     let m = Conformal::member("conformal", 8).unwrap();
     let answered = m.solve(0.8, Hold::Force(-4.0)).unwrap();
-    let all = m.states(0.8, Hold::Force(-4.0)).unwrap();
+    // through the model layer, as `solve --all` and Python's all=True ask
+    let layer = thinjkr::registry::parse("conformal:8").unwrap();
+    let states = |f: f64| -> thinjkr::Result<Vec<thinjkr::conformal::ConformalState>> {
+        Ok(layer
+            .states(0.8, Hold::Force(f))?
+            .into_iter()
+            .map(|st| match st {
+                thinjkr::report::AnyState::Conformal(c) => c,
+                other => panic!("not a conformal state: {other:?}"),
+            })
+            .collect())
+    };
+    let all = states(-4.0).unwrap();
     assert_eq!(all.len(), 2, "{all:?}");
     assert_eq!(all[0], answered);
     let (pull_off, _) = m.pull_off(0.8, FoldCondition::Load).unwrap();
@@ -425,9 +437,7 @@ fn every_state_on_the_curve_at_a_force_is_listed_the_answered_one_first() {
     assert!(all[1].delta_bar < pull_off.delta_bar, "{:?}", all[1]);
     assert!((all[1].a_bar - all[0].a_bar).abs() > 1e-3);
     // below the pull-off force: no state at all
-    assert!(m
-        .states(0.8, Hold::Force(pull_off.force_bar - 0.01))
-        .is_err());
+    assert!(states(pull_off.force_bar - 0.01).is_err());
 }
 
 /// At ρ = 1 the circle's δ̄ = ā²/4 − 2/ā has no extremum, and conformal:2's

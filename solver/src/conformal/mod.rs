@@ -968,7 +968,7 @@ impl Conformal {
     /// (ā and s apart by more than 1e-6). A state the curve does not reach
     /// (another arm, or a crossing closer than the curve's spacing) is
     /// not listed; where the curve cannot be traced the error says so.
-    pub fn states(&self, rho: f64, control: Hold) -> Result<Vec<ConformalState>> {
+    pub(crate) fn states(&self, rho: f64, control: Hold) -> Result<Vec<ConformalState>> {
         let first = self.solve(rho, control)?;
         let delta_start = match control {
             Hold::Delta(d) if d >= 19.0 => d + 1.0,
