@@ -1422,8 +1422,6 @@ impl Contact {
     }
 }
 
-/// Whether the symmetric `h` has its smallest eigenvalue above 1e-9 of its
-/// largest in magnitude (see [`Stability`]).
 /// The least eigenvalue of a symmetric Hessian, classified by the neutral
 /// band (a non-finite Hessian is unstable: no verdict can be read), and
 /// whether it is strictly positive definite (the least eigenvalue above

@@ -122,7 +122,7 @@ pub(crate) fn show_pull_off(
     passed: &[Passed],
 ) -> crate::Result<()> {
     show("pull-off", st)?;
-    if control == FoldCondition::Displacement && st.rho >= 1.0 {
+    if control == FoldCondition::Displacement && crate::conformal::is_the_circle_end(st) {
         outln!("  end point: the circle loses stability to cos 2θ at a^3 = 4 (the limit of the first extrema of delta at rho < 1, which move as √(1 − rho))");
         return Ok(());
     }

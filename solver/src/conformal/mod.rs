@@ -278,6 +278,20 @@ impl ConformalState {
 /// off), so a defect above 0.1 means errors of per cent.
 pub(crate) const DOUBTFUL_DEFECT: f64 = 0.1;
 
+/// ā of the circle's neutral point of cos 2θ, ā³ = 4: the end of
+/// displacement control at ρ = 1 of a contour of cos 2θ alone, on the
+/// cylinders' gap ([`Conformal::pull_off`]).
+fn circle_end_a() -> f64 {
+    4f64.cbrt()
+}
+
+/// Whether `st` is that end: the circle of radius [`circle_end_a`] at
+/// ρ = 1 (the only state the end is built as; a trace does not land on it
+/// bit for bit).
+pub(crate) fn is_the_circle_end(st: &ConformalState) -> bool {
+    st.rho >= 1.0 && st.a_bar == circle_end_a() && st.coefficients[1..].iter().all(|&c| c == 0.0)
+}
+
 /// The points of the curve [`Conformal::states`] reads the states at a
 /// control from.
 pub(crate) const STATES_POINTS: usize = 100;
@@ -1231,7 +1245,7 @@ impl Conformal {
     /// the largest Hessian entry) or cos 2θ not being neutral.
     fn displacement_end_of_the_circle(&self) -> Option<Result<(ConformalState, Vec<Extremum>)>> {
         let k = self.terms();
-        let a = 4f64.cbrt();
+        let a = circle_end_a();
         let mut x = DVector::zeros(k + 1);
         x[0] = a;
         x[k] = a * a / 4.0 - 2.0 / a;
