@@ -288,6 +288,7 @@ fn circle_end_a() -> f64 {
 /// Whether `st` is that end: the circle of radius [`circle_end_a`] at
 /// ρ = 1 (the only state the end is built as; a trace does not land on it
 /// bit for bit).
+#[cfg(feature = "cli")]
 pub(crate) fn is_the_circle_end(st: &ConformalState) -> bool {
     st.rho >= 1.0 && st.a_bar == circle_end_a() && st.coefficients[1..].iter().all(|&c| c == 0.0)
 }
