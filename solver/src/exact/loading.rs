@@ -92,24 +92,68 @@ pub(crate) struct LoadingPath {
 
 /// Whether `b` continues the arm of `a` (a small step in F̄ moves a state
 /// on an arm by little; a jump moves it by a finite amount): every point of
-/// one contour within 2 % of ā of the other (either representation).
+/// one contour within 2 % of ā of the other (either representation). The
+/// distance is to the other contour's polygon through [`NEAR_POINTS`]
+/// points, not to its points alone: the two may be in different
+/// parametrisations (the conformal map's crowds its points where the
+/// contour is curved, the arclength representation spreads them evenly),
+/// so a point of one can fall midway between two of the other, half a
+/// spacing (about 0.08 at ā = 3.4) away from both.
 fn near(a: &ExactState, b: &ExactState) -> bool {
-    let points = |st: &ExactState| -> Vec<nalgebra::Complex<f64>> {
-        (0..128)
-            .map(|i| st.contour.at(std::f64::consts::PI * i as f64 / 64.0)[0])
+    contours_near(&a.contour, &b.contour, 0.02 * a.a_bar.max(1.0))
+}
+
+/// Whether every point of each contour lies within `tolerance` of the
+/// other ([`near`]).
+fn contours_near(a: &super::Contour, b: &super::Contour, tolerance: f64) -> bool {
+    let points = |c: &super::Contour| -> Vec<nalgebra::Complex<f64>> {
+        (0..NEAR_POINTS)
+            .map(|i| c.point_at(2.0 * std::f64::consts::PI * i as f64 / NEAR_POINTS as f64))
             .collect()
     };
     let (pa, pb) = (points(a), points(b));
-    let tolerance = 0.02 * a.a_bar.max(1.0);
-    let within = |from: &[nalgebra::Complex<f64>], to: &[nalgebra::Complex<f64>]| {
-        from.iter().all(|p| {
-            to.iter()
-                .map(|q| (p - q).norm())
-                .fold(f64::INFINITY, f64::min)
-                <= tolerance
-        })
-    };
-    within(&pa, &pb) && within(&pb, &pa)
+    within_polygon(&pa, &pb, tolerance) && within_polygon(&pb, &pa, tolerance)
+}
+
+/// How many points of each contour [`near`] compares.
+const NEAR_POINTS: usize = 256;
+
+/// Whether every point of `from` lies within `tolerance` of the closed
+/// polygon through `to`.
+fn within_polygon(
+    from: &[nalgebra::Complex<f64>],
+    to: &[nalgebra::Complex<f64>],
+    tolerance: f64,
+) -> bool {
+    let segment =
+        |p: nalgebra::Complex<f64>, q: nalgebra::Complex<f64>, r: nalgebra::Complex<f64>| {
+            let d = r - q;
+            let t = (((p - q).conj() * d).re / d.norm_sqr().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+            (p - (q + d * t)).norm()
+        };
+    from.iter()
+        .all(|&p| (0..to.len()).any(|j| segment(p, to[j], to[(j + 1) % to.len()]) <= tolerance))
+}
+
+/// The resolved modes unstable under load of `st` (`cutoff` choosing).
+fn unstable_resolved(st: &ExactState, cutoff: Cutoff) -> Vec<usize> {
+    st.stability
+        .clone()
+        .under(cutoff)
+        .load
+        .into_iter()
+        .filter(|m| m.resolved)
+        .map(|m| m.n)
+        .collect()
+}
+
+/// Whether `next` is unstable under load to a resolved mode that `held` is
+/// not unstable to.
+fn newly_unstable(held: &ExactState, next: &ExactState, cutoff: Cutoff) -> bool {
+    let before = unstable_resolved(held, cutoff);
+    unstable_resolved(next, cutoff)
+        .iter()
+        .any(|n| !before.contains(n))
 }
 
 /// Whether `b` is the state `a` itself (ā and s to 1e-6): a descent that
@@ -198,7 +242,8 @@ fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, S
 /// [`BRACKET`] loses it (to `force`, where the descent gave `landing`):
 /// the minimum of F̄ over ā on its arm where there is one in the bracket
 /// (the secant method, else the traced arm), from which the descent is
-/// taken again just below; else `held` and that landing.
+/// taken again just below (where that descent does not settle, the
+/// landing from `held` stands); else `held` and that landing.
 fn where_lost(
     ex: &Exact,
     held: &ExactState,
@@ -220,8 +265,16 @@ fn where_lost(
     match fold {
         Some(m) => {
             let below = m.force_bar - PUSH * m.force_bar.abs().max(1.0);
-            let from_fold = descend(ex, &m, below, cutoff);
-            (m, from_fold)
+            match descend(ex, &m, below, cutoff) {
+                // the fold's bottleneck can outlast the descent's steps
+                // (at ρ = 1, 600 steps from the circle's pull-off); the
+                // landing from the state held, within the bracket of the
+                // fold, then says where the contact goes
+                Landing::NotSettled(_) if !matches!(landing, Landing::NotSettled(_)) => {
+                    (m, landing)
+                }
+                from_fold => (m, from_fold),
+            }
         }
         None => (held.clone(), landing),
     }
@@ -234,6 +287,15 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
     let mut held = start;
     let mut ex = ex;
     let mut step: f64 = 0.25;
+    // the state held before the last step, that step and the truncation it
+    // was held in, while the step was longer than the bracket: where the
+    // descent leaves the state the step reached, the path steps back and
+    // halves the step, so that where a state is lost is bracketed to
+    // [`BRACKET`] whichever test finds it
+    let mut before: Option<(ExactState, f64, Truncation)> = None;
+    // whether the state held has passed the descent's test already (a
+    // state stepped back to)
+    let mut judged = false;
     let done = |states, jumps, end| LoadingPath { states, jumps, end };
     loop {
         if let Err(e) = crate::newton::check_stop() {
@@ -243,13 +305,16 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
         // a state unstable under load to a resolved mode is lost where it
         // is: the descent leaves it along that mode (`descend` kicks a
         // saddle)
-        let unstable = held
-            .stability
-            .clone()
-            .under(cutoff)
-            .load
-            .into_iter()
-            .find(|m| m.resolved);
+        let unstable = if std::mem::take(&mut judged) {
+            None
+        } else {
+            held.stability
+                .clone()
+                .under(cutoff)
+                .load
+                .into_iter()
+                .find(|m| m.resolved)
+        };
         // (the verdict counts every mode free; the descent holds the
         // shorter ones at equilibrium: where it stays on the state, the
         // state is a minimum of what moves, and the path goes on)
@@ -264,17 +329,53 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
             );
             (!stays).then_some((landing, words))
         });
+        if shape_loss.is_some() {
+            if let Some((back, taken, truncation)) = before.take() {
+                if truncation != ex.truncation {
+                    match Exact::new(held.rho, truncation) {
+                        Ok(e) => ex = e,
+                        Err(e) => return done(states, jumps, PathEnd::NotSettled(e.to_string())),
+                    }
+                }
+                states.pop();
+                held = back;
+                step = 0.5 * taken;
+                judged = true;
+                continue;
+            }
+        }
         let (lost, landing, shape) = if let Some((landing, words)) = shape_loss {
             (held.clone(), landing, words)
         } else {
             let force = held.force_bar - step;
-            let landing = descend(&ex, &held, force, cutoff);
+            // a step longer than the bracket is probed by Newton's method
+            // at the new force from the state held: on an arm stable under
+            // load the descent is that Newton's method, and near a fold in
+            // F̄ (a minimum) no state lies close below it, so Newton's
+            // method fails or lands far and the step is halved. The
+            // descent, which may run hundreds of steps before it shows
+            // that it goes far, is taken once the step is at the bracket,
+            // the only place its landing is used. A state Newton's method
+            // reaches with a resolved mode unstable under load that the
+            // state held is not unstable to fails the probe too: where that
+            // mode turns unstable is then bracketed as a fold is, and the
+            // descent judges the state at the bracket.
+            let landing = if step > BRACKET * scale {
+                match ex.solve_at(Hold::Force(force), &held.contour, held.delta_bar) {
+                    Ok(st) if !newly_unstable(&held, &st, cutoff) => Landing::Landed(Box::new(st)),
+                    _ => Landing::NotSettled(String::new()),
+                }
+            } else {
+                descend(&ex, &held, force, cutoff)
+            };
             match landing {
                 Landing::Landed(st) if near(&held, &st) => {
+                    let back = (held.clone(), step, ex.truncation);
                     held = match resolved(&mut ex, *st) {
                         Ok(st) => st,
                         Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
                     };
+                    before = (step > BRACKET * scale).then_some(back);
                     states.push(held.clone());
                     step = (step * 1.5).min(MAX_STEP);
                     continue;
@@ -301,6 +402,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                     from: lost,
                     to: (*st).clone(),
                 });
+                before = None;
                 held = match resolved(&mut ex, *st) {
                     Ok(st) => st,
                     Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
@@ -422,6 +524,26 @@ impl LoadingPath {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A contour in the conformal-map form and the same contour in the
+    /// arclength representation are near (their points lie at different
+    /// places along the contour); moved by 3 % of ā it is not. The
+    /// contour is the ρ = 0.5 ellipse's size at F̄ = 7.6 undulated by
+    /// cos 8θ, the loading path's shape there; before the distance was
+    /// taken to the polygon, the two representations of one contour were
+    /// judged apart and every escalation into arclength was refused.
+    #[test]
+    fn a_contour_is_near_itself_in_either_representation() {
+        let mut c = crate::exact::Contour::ellipse(3.4, 2.45, 96);
+        c.b[3] += 0.02;
+        let a = c.in_arclength(96);
+        let tolerance = 0.02 * 3.4;
+        assert!(contours_near(&c, &a, tolerance));
+        assert!(contours_near(&a, &c, tolerance));
+        let mut moved = a.clone();
+        moved.a += 0.03 * 3.4;
+        assert!(!contours_near(&c, &moved, tolerance));
+    }
 
     /// At ρ = 1 the path from F̄ = 10 is the circle all the way (the circle
     /// is stable under load to every mode longer than the cutoff at h/L =
