@@ -575,11 +575,22 @@ mod tests {
     /// (`pull_off_resolved`, the first minimum of F̄ on the arm traced from
     /// near the model's pull-off): two routes, the descent and secant on
     /// one side, the arm's trace on the other. Every state held on the way
-    /// is resolved and stable under load above the cutoff of h/L = 0.5.
+    /// is resolved and stable under load above the cutoff, of h/L = 0.5 and
+    /// of h/L = 1. (With h/L = 1 the modes n ≥ 4 are held: they pass a
+    /// neutral point of the family near F̄ = −2.76, where a path that
+    /// probed each step by the descent lost its state. The unloading
+    /// trace, which judges the stability of every traced point, finds the
+    /// arm stable above any cutoff of h/L above 0.434.)
     #[test]
     fn at_rho_0_8_the_path_first_loses_its_state_at_the_traced_pull_off() {
-        let cutoff = Cutoff::for_thinness(0.5).unwrap();
-        let path = loading_path(&start(0.8).unwrap(), cutoff).unwrap();
+        let s0 = start(0.8).unwrap();
+        for thinness in [0.5, 1.0] {
+            at_rho_0_8_with(&s0, Cutoff::for_thinness(thinness).unwrap());
+        }
+    }
+
+    fn at_rho_0_8_with(s0: &ExactState, cutoff: Cutoff) {
+        let path = loading_path(s0, cutoff).unwrap();
         let lost = path.first_lost().expect("a state is lost");
         let (traced, _) = crate::exact::pull_off_resolved(0.8).unwrap();
         assert!(
