@@ -5,10 +5,12 @@
 //!
 //! At each step in F̄ the contour descends the potential at the new force
 //! from the state at the last one (`descent::descend`): on a stable arm
-//! that is Newton's method with the arm's state as the guess; where the
+//! that is Newton's method with the arm's state as the guess, so a step
+//! longer than the bracket is probed by Newton's method alone; where the
 //! arm folds in F̄ (a load-controlled fold) or a resolved contour mode
 //! turns unstable, the descent carries the contact to another state, or it
-//! comes off. A step whose landing is not near its start is halved until
+//! comes off. A step whose landing is not near its start (or whose state
+//! the descent leaves) is halved until
 //! the state is lost within 1e-3 (relative to max(1, |F̄|)); where it is
 //! lost is then the minimum of F̄ over ā on its arm, by the secant method
 //! on dF̄/dā (`Exact::force_minimum_in_size`), where there is one that
