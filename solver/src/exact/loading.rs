@@ -137,15 +137,14 @@ fn within_polygon(
         .all(|&p| (0..to.len()).any(|j| segment(p, to[j], to[(j + 1) % to.len()]) <= tolerance))
 }
 
-/// The resolved modes unstable under load of `st` (`cutoff` choosing).
-fn unstable_resolved(st: &ExactState, cutoff: Cutoff) -> Vec<usize> {
+/// The modes of `st` unstable under load that `cutoff` resolves.
+fn unstable_resolved(st: &ExactState, cutoff: Cutoff) -> Vec<super::stability::UnstableMode> {
     st.stability
         .clone()
         .under(cutoff)
         .load
         .into_iter()
         .filter(|m| m.resolved)
-        .map(|m| m.n)
         .collect()
 }
 
@@ -155,7 +154,7 @@ fn newly_unstable(held: &ExactState, next: &ExactState, cutoff: Cutoff) -> bool 
     let before = unstable_resolved(held, cutoff);
     unstable_resolved(next, cutoff)
         .iter()
-        .any(|n| !before.contains(n))
+        .any(|m| before.iter().all(|b| b.n != m.n))
 }
 
 /// Whether `b` is the state `a` itself (ā and s to 1e-6): a descent that
@@ -310,12 +309,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
         let unstable = if std::mem::take(&mut judged) {
             None
         } else {
-            held.stability
-                .clone()
-                .under(cutoff)
-                .load
-                .into_iter()
-                .find(|m| m.resolved)
+            unstable_resolved(&held, cutoff).into_iter().next()
         };
         // (the verdict counts every mode free; the descent holds the
         // shorter ones at equilibrium: where it stays on the state, the
