@@ -37,6 +37,10 @@ pub(crate) const ABOVE_MODEL_PULL_OFF: f64 = 0.03;
 /// than 1e-6 where the coarser one is nearly resolved.
 pub(crate) const ABOVE_COARSER_PULL_OFF: f64 = 0.005;
 
+/// How many rays measure a traced contour's departure from its ellipse
+/// ([`Exact::first_crossing_through_folds`]).
+const DEPARTURE_POINTS: usize = 128;
+
 /// Where a trace past a fold ([`Exact::crossings_past_fold`]) ends: the
 /// contour's departure from an ellipse in its coefficients, Σ_{j≥1}|b_j|/ā,
 /// above this. The exact pull-off at ρ = 0.8, past the fold of the mode-4
@@ -988,6 +992,56 @@ impl Exact {
             a_bar: trace.points.last().map_or(start.a_bar, |p| p.a_bar),
         };
         Ok((found, end))
+    }
+
+    /// The first state at `control` on the arm through `start`, traced with
+    /// ā first moving in `direction` (±1) through the arm's folds in ā
+    /// (noted, not stopped at: a fold in ā is no change of stability under
+    /// load or displacement control); `None` where the arm ends first: at a
+    /// minimum of F̄ (asked by force), where the contour departs from the
+    /// ellipse with its half-widths by more than [`PAST_FOLD_DEPARTURE`] ā
+    /// (along rays, [`DEPARTURE_POINTS`] of them: in either representation;
+    /// the arclength representation's coefficients of an ellipse are not
+    /// small), or
+    /// after [`PAST_FOLD_STEPS`] steps of at most `max_step`. The state is of
+    /// this truncation: whether the series resolves it is the caller's to
+    /// decide.
+    pub(crate) fn first_crossing_through_folds(
+        &self,
+        start: &ExactState,
+        direction: f64,
+        control: Hold,
+        max_step: f64,
+    ) -> Result<Option<ExactState>> {
+        let n = self.unknown_count();
+        let watch = Watch {
+            size_fold: On::Note,
+            displacement_fold: On::Ignore,
+            force_minimum: match control {
+                Hold::Force(_) => On::Stop,
+                _ => On::Ignore,
+            },
+            bifurcation: On::Ignore,
+            crossing: Some((Quantity::of(control), control.value(), On::Stop)),
+        };
+        let trace = continuation::trace(
+            self,
+            self.unknowns(start),
+            &(a_bar_gradient(n) * direction),
+            trace_settings(max_step, PAST_FOLD_STEPS),
+            watch,
+            |p| {
+                self.contour_of(&p.u)
+                    .deviation_from_ellipse(DEPARTURE_POINTS)
+                    > PAST_FOLD_DEPARTURE
+            },
+        )?;
+        for e in &trace.events {
+            if let (EventKind::Crossing, Some(u)) = (e.kind, &e.at) {
+                return self.state(u).map(Some);
+            }
+        }
+        Ok(None)
     }
 
     /// The state at `control` started from the richest `conformal:K`'s

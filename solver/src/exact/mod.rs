@@ -48,6 +48,7 @@ pub mod branch;
 pub(crate) mod descent;
 pub(crate) mod energy;
 pub(crate) mod gap;
+pub(crate) mod larger_contacts;
 pub(crate) mod linear;
 pub(crate) mod loading;
 mod resolve;
@@ -609,6 +610,11 @@ pub enum Route {
     /// fold in ā and on along its returning stretch to the control
     /// ([`bands::past_folds_or_band`]), where the other routes find nothing.
     PastFold,
+    /// Below the fold in ρ of the family at the control: on the arm of a
+    /// larger contact, continued in ρ at fixed ā from the state at a larger
+    /// ρ and traced down in ā, through its folds, to the control
+    /// (`exact::larger_contacts`).
+    FromLargerContact,
     /// Newton at the control from a nearby exact state the caller gave
     /// (a sweep's previous point, `registry::Choice::state_near`).
     FromNeighbour,
@@ -629,6 +635,9 @@ impl std::fmt::Display for Route {
             }
             Route::PastFold => {
                 "traced from beside a band through the fold of its arm, on the returning stretch"
+            }
+            Route::FromLargerContact => {
+                "below the fold in rho of its family: on the arm of a larger contact continued in rho at fixed a, traced down in a to the control"
             }
             Route::FromNeighbour => "Newton at the control from a nearby state given by the caller",
         })

@@ -13,7 +13,7 @@
 //! caller's stop flag).
 
 use super::rho_path::Followed;
-use super::{bands, branch, Exact, ExactState, Gap, Route, Truncation};
+use super::{bands, branch, larger_contacts, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
 use crate::error::{Error, Result};
 
@@ -362,15 +362,28 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         // either: the same routes follow)
         Err(e @ (Error::NoState(_) | Error::NoConvergence { .. })) => {
             let why = e.detail();
-            from_larger_rho(gap, rho, control).or_else(|more| {
-                screened(gap, rho, control).map_err(|last| match more {
-                    Error::PastRhoFold { fold, what } => Error::PastRhoFold {
-                        fold,
-                        what: format!("{what}; {why}; {}", last.detail()),
-                    },
-                    more => Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail())),
+            from_larger_rho(gap, rho, control)
+                .or_else(|more| match more {
+                    // below the family's fold in ρ: on the arm of a larger
+                    // contact, which the fold does not bind
+                    Error::PastRhoFold { fold, what } => from_larger_contact(gap, rho, control)
+                        .map_err(|none| Error::PastRhoFold {
+                            fold,
+                            what: format!("{what}; {}", none.detail()),
+                        }),
+                    more => Err(more),
                 })
-            })
+                .or_else(|more| {
+                    screened(gap, rho, control).map_err(|last| match more {
+                        Error::PastRhoFold { fold, what } => Error::PastRhoFold {
+                            fold,
+                            what: format!("{what}; {why}; {}", last.detail()),
+                        },
+                        more => {
+                            Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail()))
+                        }
+                    })
+                })
         }
         other => other,
     }
@@ -471,6 +484,37 @@ fn from_larger_rho(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
                 }
             })
         }
+    })
+}
+
+/// The state at `control` at `rho` on the arm of a larger contact
+/// ([`larger_contacts::from_larger_contacts`], from the state at the control
+/// at the first larger ρ where [`at_with`] finds it), resolved by Newton at
+/// the control with the arclength representation's modes escalated from
+/// the arm's ([`resolved`]); each finer state is accepted only within
+/// 1e-3 in ā of the arm's state (the same state, not a neighbour).
+pub(crate) fn from_larger_contact(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
+    let start =
+        first_above(rho, |r| at_with(gap, r, control, &default_tries())).ok_or_else(|| {
+            Error::NoState(format!(
+                "no state at {control} found at any rho above it in steps of 0.1 to start from"
+            ))
+        })?;
+    let arm = larger_contacts::from_larger_contacts(&start, rho, control)?;
+    let tries: Vec<Truncation> = arclength_tries()
+        .into_iter()
+        .filter(|t| t.modes >= arm.truncation.modes)
+        .collect();
+    resolved(gap, rho, &tries, |ex| {
+        let mut st = ex.solve_at(control, &arm.contour, arm.delta_bar)?;
+        if (st.a_bar / arm.a_bar - 1.0).abs() > 1e-3 {
+            return Err(Error::NoState(format!(
+                "with {} modes Newton at {control} from the arm's state lands at a = {:.4}, not at its a = {:.4}",
+                ex.truncation.modes, st.a_bar, arm.a_bar
+            )));
+        }
+        st.route = Route::FromLargerContact;
+        Ok(st)
     })
 }
 

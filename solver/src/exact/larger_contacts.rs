@@ -1,0 +1,191 @@
+//! A state at a given δ̄ or F̄ below the fold in ρ of its family (issue 32):
+//! from the arms of larger contacts. Continued in ρ at the control, the
+//! near-elliptic family turns back (at F̄ = 10 near ρ = 0.3224, at F̄ = 0
+//! near 0.357: [`super::rho_fold`]), but the contact sizes above the
+//! control's state are not bound to that fold: continued in ρ at fixed ā
+//! (regular where the control is not), they reach smaller ρ, on the pieces
+//! of the family between the bands of its contour modes. At the ρ asked
+//! for, the arm through the first such size where the control's value is
+//! exceeded is traced down in ā, through its folds in ā, to the control:
+//! the state a contact holds when its load or approach is lowered to the
+//! control on the arm of larger contacts.
+//!
+//! Owns: [`from_larger_contacts`]. May use: `exact` (the
+//! problem, `branch`'s trace through folds), `control`, `error`, `newton`
+//! (the stop request).
+
+use super::{Exact, ExactState, Truncation};
+use crate::control::Hold;
+use crate::error::{Error, Result};
+
+/// The spacing in ā of the contact sizes continued in ρ, above the
+/// control's state at the larger ρ: narrower than the pieces between the
+/// bands of neighbouring even modes near ā ≈ 3.5 (about 0.15 at ρ = 0.3).
+const SIZE_STEP: f64 = 0.04;
+
+/// How many contact sizes are tried, the first [`SIZE_STEP`] above the
+/// control's state at the larger ρ.
+const SIZES: usize = 15;
+
+/// The arclength representation's modes of each sign on the way (the
+/// state at the control is then resolved by the caller's escalation):
+/// at ρ = 0.22 and ā = 3.8 they leave a boundary error of 5e-9.
+pub(crate) const PATH_MODES: usize = 96;
+
+/// The largest fine-grid boundary error of a state on the way.
+const ON_THE_WAY: f64 = 1e-6;
+
+/// The largest and smallest step in ρ of the continuation at fixed ā.
+const RHO_STEP: f64 = 0.01;
+const SMALLEST_RHO_STEP: f64 = 1e-4;
+
+/// The state at `control` at `rho` on the arm of the first contact size
+/// above `start` (the state at the control at a larger ρ) that, continued in
+/// ρ at fixed ā, arrives at `rho` beyond the control's value, traced from
+/// there down in ā through its folds to the control
+/// ([`Exact::first_crossing_through_folds`]), with [`PATH_MODES`] modes
+/// (the caller resolves it). Sizes that stop on the way
+/// (a band's edge), or arrive below the control's value, are passed over;
+/// an error says so where none reaches the control.
+pub(crate) fn from_larger_contacts(
+    start: &ExactState,
+    rho: f64,
+    control: Hold,
+) -> Result<ExactState> {
+    let t = Truncation::in_arclength(PATH_MODES);
+    let at_start = Exact::on(start.gap, start.rho, t)?.deferring_stability();
+    let at_rho = Exact::on(start.gap, rho, t)?.deferring_stability();
+    let mut guess = start.clone();
+    let mut tried = Vec::new();
+    for k in 1..=SIZES {
+        crate::newton::check_stop()?;
+        let a_bar = start.a_bar + SIZE_STEP * k as f64;
+        let Ok(here) = at_start.solve_at(Hold::Size(a_bar), &guess.contour, guess.delta_bar) else {
+            tried.push(format!(
+                "a = {a_bar:.2}: none at rho = {}",
+                short(start.rho)
+            ));
+            continue;
+        };
+        guess = here.clone();
+        let arrived = match at_fixed_size(here, rho) {
+            Ok(st) => st,
+            Err(stopped) => {
+                tried.push(format!("a = {a_bar:.2}: stops at rho = {}", short(stopped)));
+                continue;
+            }
+        };
+        let excess = control.excess(arrived.a_bar, arrived.delta_bar, arrived.force_bar);
+        if excess <= 0.0 {
+            tried.push(format!("a = {a_bar:.2}: arrives below the control"));
+            continue;
+        }
+        match at_rho.first_crossing_through_folds(&arrived, -1.0, control, 0.02) {
+            Ok(Some(state)) => return Ok(state),
+            _ => tried.push(format!(
+                "a = {a_bar:.2}: its arm does not reach the control"
+            )),
+        }
+    }
+    Err(Error::NoState(format!(
+        "no arm of a larger contact continued in rho at fixed a from rho = {} reaches {control} at rho = {} ({})",
+        short(start.rho),
+        short(rho),
+        tried.join("; ")
+    )))
+}
+
+/// `st` continued in ρ at its ā down to `rho` (Newton at fixed ā from the
+/// state before, steps of at most [`RHO_STEP`], halved where one fails
+/// down to [`SMALLEST_RHO_STEP`]); where it stops, the smallest ρ reached.
+fn at_fixed_size(mut st: ExactState, rho: f64) -> std::result::Result<ExactState, f64> {
+    let held = Hold::Size(st.a_bar);
+    let mut step = RHO_STEP;
+    while st.rho > rho {
+        if crate::newton::check_stop().is_err() {
+            return Err(st.rho);
+        }
+        let next = (st.rho - step).max(rho);
+        let next_state = Exact::on(st.gap, next, st.truncation).and_then(|ex| {
+            ex.deferring_stability()
+                .solve_at(held, &st.contour, st.delta_bar)
+        });
+        match next_state {
+            Ok(n) if n.bc_error <= ON_THE_WAY => {
+                st = n;
+                step = (step * 1.5).min(RHO_STEP);
+            }
+            _ if step > SMALLEST_RHO_STEP => step *= 0.5,
+            _ => return Err(st.rho),
+        }
+    }
+    Ok(st)
+}
+
+fn short(rho: f64) -> String {
+    crate::error::rounded(rho)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::{Gap, Route, CONVERGED};
+
+    /// Below the fold in ρ of the family at F̄ = 10 (ρ ≈ 0.3224,
+    /// `the_force_10_family_turns_back_in_rho`), a state at F̄ = 10 at
+    /// ρ = 0.3 lies on the arm of a larger contact: resolved (and unchanged
+    /// with more modes), and reached again by a second route that uses no
+    /// continuation in ρ: the arm through the state at F̄ = 14 that
+    /// `conformal:8` starts, traced down in ā through its fold.
+    #[test]
+    fn at_rho_0_3_the_state_at_force_10_lies_on_the_arm_of_a_larger_contact() {
+        let ten = Hold::Force(10.0);
+        let st = super::super::resolve::from_larger_contact(Gap::cylinders(), 0.3, ten).unwrap();
+        assert_eq!(st.route, Route::FromLargerContact);
+        assert!((st.force_bar - 10.0).abs() < 1e-9, "F = {}", st.force_bar);
+        assert!(
+            st.bc_error <= CONVERGED,
+            "boundary error {:.1e}",
+            st.bc_error
+        );
+        // more modes: the same state
+        let finer = Exact::new(0.3, Truncation::in_arclength(st.truncation.modes + 32)).unwrap();
+        let again = finer.solve_at(ten, &st.contour, st.delta_bar).unwrap();
+        assert!(again.bc_error <= CONVERGED);
+        assert!(
+            (again.a_bar - st.a_bar).abs() < 1e-9,
+            "a {} against {}",
+            again.a_bar,
+            st.a_bar
+        );
+        assert!(
+            (again.s - st.s).abs() < 1e-9,
+            "s {} against {}",
+            again.s,
+            st.s
+        );
+        // the second route: from conformal:8's start at F = 14
+        let fourteen = super::super::resolve::at_resolved(0.3, Hold::Force(14.0)).unwrap();
+        assert_eq!(fourteen.route, Route::FromModel);
+        let ex = Exact::new(0.3, Truncation::in_arclength(PATH_MODES)).unwrap();
+        let above = ex
+            .solve_at(Hold::Force(14.0), &fourteen.contour, fourteen.delta_bar)
+            .unwrap();
+        let down = ex
+            .first_crossing_through_folds(&above, -1.0, ten, 0.02)
+            .unwrap()
+            .unwrap();
+        assert!(
+            (down.a_bar - st.a_bar).abs() < 1e-6,
+            "a {} against {}",
+            down.a_bar,
+            st.a_bar
+        );
+        assert!(
+            (down.s - st.s).abs() < 1e-6,
+            "s {} against {}",
+            down.s,
+            st.s
+        );
+    }
+}
