@@ -152,8 +152,9 @@ def test_ctrl_c_interrupts_a_long_array_call_and_the_next_call_works():
 def test_ctrl_c_interrupts_one_slow_exact_solve_and_the_next_call_works():
     """Issue 33, item 6: Ctrl-C one second into a single exact solve that
     runs for more than ten seconds (rho = 0.3, F = 10: every start and
-    every truncation up to 96 modes is tried before it says there is no
-    state; 18 s on the release build, longer under load) raises
+    every truncation up to 96 modes is tried, then the fold in rho of the
+    family is located and the arms of larger contacts are followed; about
+    40 s on the release build, longer under load) raises
     KeyboardInterrupt inside that solve's Newton iterations: the child
     answers within 8 s of the signal, less than half the call's own time;
     no partial result is returned, and the next call answers."""

@@ -243,6 +243,7 @@ pub(crate) fn render_row(r: &Row) -> String {
                 crate::exact::Route::PastFold => ", past a fold",
                 crate::exact::Route::ContinuedInRho => ", continued in ρ",
                 crate::exact::Route::BetweenStored => ", between stored pull-offs",
+                crate::exact::Route::FromLargerContact => ", on a larger contact's arm",
                 _ => "",
             };
             let form = if e.truncation.arclength > 0 {
@@ -324,7 +325,10 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          contour of such a state undulates with the band's mode, as the pull-off's does past the mode-4 band); \
          where that finds none either, and the value lies in no band, it is continued in ρ at that F̄ from the \
          state at the first of ρ + 0.1, ρ + 0.2, … that is found (route `continued_in_rho`, \"continued in ρ\" \
-         in the row); where that fails too, the states the screen of `thinjkr exact solve --all` finds at that \
+         in the row); where that continuation turns back at a fold in ρ, on the arm of a larger contact: sizes \
+         above the state's at that larger ρ continued in ρ at fixed ā, the first that arrives above the value \
+         traced down in ā through its folds to it (route `from_larger_contact`, \"on a larger contact's arm\" \
+         in the row; exact.md, \"Below the fold\"); where that fails too, the states the screen of `thinjkr exact solve --all` finds at that \
          value (ā from 1 to the larger of 4 and 1.2 times the circle's ā), the one nearest an ellipse; a row says where the arm ended, or down to which ρ the continuation converged and why it \
          stopped, when the value is not reached. The contour modes are escalated (",
     );

@@ -295,7 +295,8 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
     // [`BRACKET`] whichever test finds it
     let mut before: Option<(ExactState, f64, Truncation)> = None;
     // whether the state held has passed the descent's test already (a
-    // state stepped back to)
+    // state stepped back to, or one a halved step comes back to): kept
+    // until the state held changes
     let mut judged = false;
     let done = |states, jumps, end| LoadingPath { states, jumps, end };
     loop {
@@ -306,7 +307,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
         // a state unstable under load to a resolved mode is lost where it
         // is: the descent leaves it along that mode (`descend` kicks a
         // saddle)
-        let unstable = if std::mem::take(&mut judged) {
+        let unstable = if judged {
             None
         } else {
             unstable_resolved(&held, cutoff).into_iter().next()
@@ -325,6 +326,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
             );
             (!stays).then_some((landing, words))
         });
+        judged = shape_loss.is_none();
         if shape_loss.is_some() {
             if let Some((back, taken, truncation)) = before.take() {
                 if truncation != ex.truncation {
@@ -371,6 +373,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                         Ok(st) => st,
                         Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
                     };
+                    judged = false;
                     before = (step > BRACKET * scale).then_some(back);
                     states.push(held.clone());
                     step = (step * 1.5).min(MAX_STEP);
@@ -403,6 +406,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                     Ok(st) => st,
                     Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
                 };
+                judged = false;
                 states.push(held.clone());
                 step = 0.25;
             }

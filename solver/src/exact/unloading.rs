@@ -1,10 +1,11 @@
 //! The unloading path to a pull-off (issue 32, milestone (b)): the exact
-//! family traced from its state at F̄ = 10 towards smaller ā up to its
-//! first minimum of F̄, and whether that minimum is the given pull-off;
-//! on the way, the longest contour mode unstable under load control at
-//! every traced point, whose wavelength over 2π is the thinness h/L below
-//! which the path is unstable above the short-wave cutoff (a contact that
-//! thin changes shape before it reaches the minimum).
+//! family traced from its state at F̄ = 10 the way F̄ falls (towards smaller
+//! ā, or larger past a fold in ā) up to its first minimum of F̄, and
+//! whether that minimum is the given pull-off; on the way, the longest
+//! contour mode unstable under load control at every traced point, whose
+//! wavelength over 2π is the thinness h/L below which the path is unstable
+//! above the short-wave cutoff (a contact that thin changes shape before it
+//! reaches the minimum).
 //!
 //! Owns: [`unloading`]. May use: `branch` (the trace), `loading` (its
 //! start force; the start itself comes from the caller, shared with the
@@ -90,9 +91,22 @@ fn path(pull_off: &ExactState, start: &Result<ExactState>) -> std::result::Resul
         .as_ref()
         .map_err(|e| format!("no resolved exact state at force = {START_FORCE}: {e}"))?;
     let ex = Exact::new(rho, start.truncation).map_err(|e| e.to_string())?;
+    let failed =
+        |e: crate::error::Error| format!("the trace from force = {START_FORCE} failed: {e}");
+    // unloading lowers F̄: towards smaller ā, unless F̄ rises that way (a
+    // start on the returning stretch past a fold in ā, as on the arm of a
+    // larger contact at ρ = 0.3), then towards larger ā
+    let first = ex
+        .trace_from(start, -1.0, 0.8, f64::INFINITY, 0.05, 2)
+        .map_err(failed)?;
+    let rises = first
+        .points
+        .get(1)
+        .is_some_and(|p| p.state.force_bar > start.force_bar);
+    let direction = if rises { 1.0 } else { -1.0 };
     let branch = ex
-        .trace(&start, 0.8, 0.05, 600)
-        .map_err(|e| format!("the trace from force = {START_FORCE} failed: {e}"))?;
+        .trace_from(start, direction, 0.8, f64::INFINITY, 0.05, 600)
+        .map_err(failed)?;
     let mut critical = (0.0f64, 0usize);
     let mut size_unstable = false;
     let points = &branch.points;
