@@ -6,9 +6,10 @@
 //! (regular where the control is not), they reach smaller ρ, on the pieces
 //! of the family between the bands of its contour modes. At the ρ asked
 //! for, the arm through the first such size where the control's value is
-//! exceeded is traced down in ā, through its folds in ā, to the control:
-//! the state a contact holds when its load or approach is lowered to the
-//! control on the arm of larger contacts.
+//! exceeded is traced down in ā, through its folds in ā, to the control.
+//! That state is a state of the problem, not the one a contact holds: it
+//! can be unstable (at ρ = 0.3 and F̄ = 10, to n = 2); which state a
+//! contact takes is the loading path's question (`exact::loading`).
 //!
 //! Owns: [`from_larger_contacts`]. May use: `exact` (the
 //! problem, `branch`'s trace through folds), `control`, `error`, `newton`
