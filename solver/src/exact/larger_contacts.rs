@@ -83,8 +83,12 @@ pub(crate) fn from_larger_contacts(
         }
         match at_rho.first_crossing_through_folds(&arrived, -1.0, control, 0.02) {
             Ok(Some(state)) => return Ok(state),
-            _ => tried.push(format!(
-                "a = {a_bar:.2}: its arm does not reach the control"
+            Ok(None) => tried.push(format!(
+                "a = {a_bar:.2}: its arm ends before the control (a minimum of F, or 10 % of a off the ellipse)"
+            )),
+            Err(e) => tried.push(format!(
+                "a = {a_bar:.2}: the trace down its arm fails ({})",
+                e.detail()
             )),
         }
     }
