@@ -944,29 +944,22 @@ impl Exact {
         };
         let mut past = false;
         let mut why = None;
-        let trace = continuation::trace(
-            self,
-            self.unknowns(start),
-            &(a_bar_gradient(n) * direction),
-            trace_settings(max_step, PAST_FOLD_STEPS),
-            watch,
-            |p| {
-                let returning = p.d_a_bar * direction < 0.0;
-                let second_fold = past && !returning;
-                past |= returning;
-                let departure: f64 = p.u.rows(2, n - 3).iter().map(|b| b.abs()).sum();
-                why = if !past && (p.a_bar - a_limit) * direction > 0.0 {
-                    Some(PastFoldStop::CrossesGap)
-                } else if second_fold {
-                    Some(PastFoldStop::SecondFold)
-                } else if departure > PAST_FOLD_DEPARTURE * p.a_bar {
-                    Some(PastFoldStop::Departs)
-                } else {
-                    None
-                };
-                why.is_some()
-            },
-        )?;
+        let trace = self.trace_past_fold(start, direction, max_step, watch, |p| {
+            let returning = p.d_a_bar * direction < 0.0;
+            let second_fold = past && !returning;
+            past |= returning;
+            let departure: f64 = p.u.rows(2, n - 3).iter().map(|b| b.abs()).sum();
+            why = if !past && (p.a_bar - a_limit) * direction > 0.0 {
+                Some(PastFoldStop::CrossesGap)
+            } else if second_fold {
+                Some(PastFoldStop::SecondFold)
+            } else if departure > PAST_FOLD_DEPARTURE * p.a_bar {
+                Some(PastFoldStop::Departs)
+            } else {
+                None
+            };
+            why.is_some()
+        })?;
         // the crossings from the step of the first fold on (one before it
         // lies on the arm the other routes start on)
         let fold_step = trace
@@ -994,6 +987,27 @@ impl Exact {
         Ok((found, end))
     }
 
+    /// The continuation from `start` with ā first moving in `direction`
+    /// (±1), in steps of at most `max_step`, at most [`PAST_FOLD_STEPS`] of
+    /// them, watching `watch`, until `stop`: the traces through folds in ā.
+    fn trace_past_fold(
+        &self,
+        start: &ExactState,
+        direction: f64,
+        max_step: f64,
+        watch: Watch,
+        stop: impl FnMut(&continuation::Point<Dyn>) -> bool,
+    ) -> Result<continuation::Trace<Dyn>> {
+        continuation::trace(
+            self,
+            self.unknowns(start),
+            &(a_bar_gradient(self.unknown_count()) * direction),
+            trace_settings(max_step, PAST_FOLD_STEPS),
+            watch,
+            stop,
+        )
+    }
+
     /// The first state at `control` on the arm through `start`, traced with
     /// ā first moving in `direction` (±1) through the arm's folds in ā
     /// (noted, not stopped at: a fold in ā is no change of stability under
@@ -1013,7 +1027,6 @@ impl Exact {
         control: Hold,
         max_step: f64,
     ) -> Result<Option<ExactState>> {
-        let n = self.unknown_count();
         let watch = Watch {
             size_fold: On::Note,
             displacement_fold: On::Ignore,
@@ -1024,18 +1037,11 @@ impl Exact {
             bifurcation: On::Ignore,
             crossing: Some((Quantity::of(control), control.value(), On::Stop)),
         };
-        let trace = continuation::trace(
-            self,
-            self.unknowns(start),
-            &(a_bar_gradient(n) * direction),
-            trace_settings(max_step, PAST_FOLD_STEPS),
-            watch,
-            |p| {
-                self.contour_of(&p.u)
-                    .deviation_from_ellipse(DEPARTURE_POINTS)
-                    > PAST_FOLD_DEPARTURE
-            },
-        )?;
+        let trace = self.trace_past_fold(start, direction, max_step, watch, |p| {
+            self.contour_of(&p.u)
+                .deviation_from_ellipse(DEPARTURE_POINTS)
+                > PAST_FOLD_DEPARTURE
+        })?;
         for e in &trace.events {
             if let (EventKind::Crossing, Some(u)) = (e.kind, &e.at) {
                 return self.state(u).map(Some);

@@ -153,22 +153,20 @@ mod tests {
             "boundary error {:.1e}",
             st.bc_error
         );
+        // ā and s of `x` within `tol` of the state's
+        let same = |x: &ExactState, tol: f64, what: &str| {
+            for (name, got, want) in [("a", x.a_bar, st.a_bar), ("s", x.s, st.s)] {
+                assert!(
+                    (got - want).abs() < tol,
+                    "{what}: {name} {got} against {want}"
+                );
+            }
+        };
         // more modes: the same state
         let finer = Exact::new(0.3, Truncation::in_arclength(st.truncation.modes + 32)).unwrap();
         let again = finer.solve_at(ten, &st.contour, st.delta_bar).unwrap();
         assert!(again.bc_error <= CONVERGED);
-        assert!(
-            (again.a_bar - st.a_bar).abs() < 1e-9,
-            "a {} against {}",
-            again.a_bar,
-            st.a_bar
-        );
-        assert!(
-            (again.s - st.s).abs() < 1e-9,
-            "s {} against {}",
-            again.s,
-            st.s
-        );
+        same(&again, 1e-9, "32 modes more");
         // the second route: from conformal:8's start at F = 14
         let fourteen = super::super::resolve::at_resolved(0.3, Hold::Force(14.0)).unwrap();
         assert_eq!(fourteen.route, Route::FromModel);
@@ -180,17 +178,6 @@ mod tests {
             .first_crossing_through_folds(&above, -1.0, ten, 0.02)
             .unwrap()
             .unwrap();
-        assert!(
-            (down.a_bar - st.a_bar).abs() < 1e-6,
-            "a {} against {}",
-            down.a_bar,
-            st.a_bar
-        );
-        assert!(
-            (down.s - st.s).abs() < 1e-6,
-            "s {} against {}",
-            down.s,
-            st.s
-        );
+        same(&down, 1e-6, "traced down from F = 14");
     }
 }
