@@ -1016,10 +1016,9 @@ impl Exact {
     /// ellipse with its half-widths by more than [`PAST_FOLD_DEPARTURE`] ā
     /// (along rays, [`DEPARTURE_POINTS`] of them: in either representation;
     /// the arclength representation's coefficients of an ellipse are not
-    /// small), or
-    /// after [`PAST_FOLD_STEPS`] steps of at most `max_step`. The state is of
-    /// this truncation: whether the series resolves it is the caller's to
-    /// decide.
+    /// small), or after [`PAST_FOLD_STEPS`] steps of at most `max_step`.
+    /// The state is of this truncation: whether the series resolves it is
+    /// the caller's to decide.
     pub(crate) fn first_crossing_through_folds(
         &self,
         start: &ExactState,

@@ -15,9 +15,10 @@
 //! problem, `branch`'s trace through folds), `control`, `error`, `newton`
 //! (the stop request).
 
+use super::branch::PAST_FOLD_DEPARTURE;
 use super::{Exact, ExactState, Truncation};
 use crate::control::Hold;
-use crate::error::{Error, Result};
+use crate::error::{rounded, Error, Result};
 
 /// The spacing in ā of the contact sizes continued in ρ, above the
 /// control's state at the larger ρ: narrower than the pieces between the
@@ -64,7 +65,7 @@ pub(crate) fn from_larger_contacts(
         let Ok(here) = at_start.solve_at(Hold::Size(a_bar), &guess.contour, guess.delta_bar) else {
             tried.push(format!(
                 "a = {a_bar:.2}: none at rho = {}",
-                short(start.rho)
+                rounded(start.rho)
             ));
             continue;
         };
@@ -72,7 +73,10 @@ pub(crate) fn from_larger_contacts(
         let arrived = match at_fixed_size(here, rho) {
             Ok(st) => st,
             Err(stopped) => {
-                tried.push(format!("a = {a_bar:.2}: stops at rho = {}", short(stopped)));
+                tried.push(format!(
+                    "a = {a_bar:.2}: stops at rho = {}",
+                    rounded(stopped)
+                ));
                 continue;
             }
         };
@@ -84,7 +88,8 @@ pub(crate) fn from_larger_contacts(
         match at_rho.first_crossing_through_folds(&arrived, -1.0, control, 0.02) {
             Ok(Some(state)) => return Ok(state),
             Ok(None) => tried.push(format!(
-                "a = {a_bar:.2}: its arm ends before the control (a minimum of F, or 10 % of a off the ellipse)"
+                "a = {a_bar:.2}: its arm ends before the control (a minimum of F, or {} % of a off the ellipse)",
+                100.0 * PAST_FOLD_DEPARTURE
             )),
             Err(e) => tried.push(format!(
                 "a = {a_bar:.2}: the trace down its arm fails ({})",
@@ -94,8 +99,8 @@ pub(crate) fn from_larger_contacts(
     }
     Err(Error::NoState(format!(
         "no arm of a larger contact continued in rho at fixed a from rho = {} reaches {control} at rho = {} ({})",
-        short(start.rho),
-        short(rho),
+        rounded(start.rho),
+        rounded(rho),
         tried.join("; ")
     )))
 }
@@ -127,14 +132,10 @@ fn at_fixed_size(mut st: ExactState, rho: f64) -> std::result::Result<ExactState
     Ok(st)
 }
 
-fn short(rho: f64) -> String {
-    crate::error::rounded(rho)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exact::{Gap, Route, CONVERGED};
+    use crate::exact::{Route, CONVERGED};
 
     /// Below the fold in ρ of the family at F̄ = 10 (ρ ≈ 0.3224,
     /// `the_force_10_family_turns_back_in_rho`), a state at F̄ = 10 at
@@ -145,7 +146,8 @@ mod tests {
     #[test]
     fn at_rho_0_3_the_state_at_force_10_lies_on_the_arm_of_a_larger_contact() {
         let ten = Hold::Force(10.0);
-        let st = super::super::resolve::from_larger_contact(Gap::cylinders(), 0.3, ten).unwrap();
+        let at_0_4 = super::super::resolve::at_resolved(0.4, ten).unwrap();
+        let st = super::super::resolve::from_larger_contact(&at_0_4, 0.3, ten).unwrap();
         assert_eq!(st.route, Route::FromLargerContact);
         assert!((st.force_bar - 10.0).abs() < 1e-9, "F = {}", st.force_bar);
         assert!(

@@ -362,16 +362,21 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         // either: the same routes follow)
         Err(e @ (Error::NoState(_) | Error::NoConvergence { .. })) => {
             let why = e.detail();
-            from_larger_rho(gap, rho, control)
-                .or_else(|more| match more {
-                    // below the family's fold in ρ: on the arm of a larger
-                    // contact, which the fold does not bind
-                    Error::PastRhoFold { fold, what } => from_larger_contact(gap, rho, control)
-                        .map_err(|none| Error::PastRhoFold {
-                            fold,
-                            what: format!("{what}; {}", none.detail()),
-                        }),
-                    more => Err(more),
+            state_above(gap, rho, control)
+                .and_then(|start| {
+                    from_larger_rho(&start, rho, control).or_else(|more| match more {
+                        // below the family's fold in ρ: on the arm of a
+                        // larger contact, which the fold does not bind
+                        Error::PastRhoFold { fold, what } => {
+                            from_larger_contact(&start, rho, control).map_err(|none| {
+                                Error::PastRhoFold {
+                                    fold,
+                                    what: format!("{what}; {}", none.detail()),
+                                }
+                            })
+                        }
+                        more => Err(more),
+                    })
                 })
                 .or_else(|more| {
                     screened(gap, rho, control).map_err(|last| match more {
@@ -456,51 +461,52 @@ fn by_delta_or_force(control: Hold) -> Result<Hold> {
     }
 }
 
-/// The state at `control` at `rho` from the first larger ρ where
-/// [`at_with`] finds it ([`first_above`]), continued in ρ
-/// ([`continued_in_rho`]), and where the conformal form's series stops
-/// resolving the family, again in the arclength representation; a fold
-/// in ρ on the way ends it ([`Error::PastRhoFold`]).
-fn from_larger_rho(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
-    let start =
-        first_above(rho, |r| at_with(gap, r, control, &default_tries())).ok_or_else(|| {
-            Error::NoState(format!(
-                "no state at {control} found at any rho above it in steps of 0.1 to continue from"
-            ))
-        })?;
-    continued_in_rho(&start, rho, control).or_else(|conformal| match conformal {
+/// The state at `control` at the first larger ρ where [`at_with`] finds
+/// it ([`first_above`]): the start of the routes from a larger ρ.
+fn state_above(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
+    first_above(rho, |r| at_with(gap, r, control, &default_tries())).ok_or_else(|| {
+        Error::NoState(format!(
+            "no state at {control} found at any rho above it in steps of 0.1 to continue from"
+        ))
+    })
+}
+
+/// The state at `control` at `rho` continued in ρ from `start`, the state
+/// at a larger ρ ([`state_above`]; [`continued_in_rho`]), and where the
+/// conformal form's series stops resolving the family, again in the
+/// arclength representation; a fold in ρ on the way ends it
+/// ([`Error::PastRhoFold`]).
+fn from_larger_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactState> {
+    continued_in_rho(start, rho, control).or_else(|conformal| match conformal {
         Error::PastRhoFold { .. } => Err(conformal),
         // where the conformal form's series no longer resolves the family:
         // again from the start, in the arclength representation
-        _ => {
-            continued_in_rho_along(&start, rho, control, &arclength_tries()).map_err(|arclength| {
-                match arclength {
-                    Error::PastRhoFold { .. } => arclength,
-                    _ => Error::NoState(format!(
-                        "{}; in the arclength representation: {}",
-                        conformal.detail(),
-                        arclength.detail()
-                    )),
-                }
-            })
-        }
+        _ => continued_in_rho_along(start, rho, control, &arclength_tries()).map_err(|arclength| {
+            match arclength {
+                Error::PastRhoFold { .. } => arclength,
+                _ => Error::NoState(format!(
+                    "{}; in the arclength representation: {}",
+                    conformal.detail(),
+                    arclength.detail()
+                )),
+            }
+        }),
     })
 }
 
 /// The state at `control` at `rho` on the arm of a larger contact
-/// ([`larger_contacts::from_larger_contacts`], from the state at the control
-/// at the first larger ρ where [`at_with`] finds it), resolved by Newton at
-/// the control with the arclength representation's modes escalated from
-/// the arm's ([`resolved`]); each finer state is accepted only within
-/// 1e-3 in ā of the arm's state (the same state, not a neighbour).
-pub(crate) fn from_larger_contact(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
-    let start =
-        first_above(rho, |r| at_with(gap, r, control, &default_tries())).ok_or_else(|| {
-            Error::NoState(format!(
-                "no state at {control} found at any rho above it in steps of 0.1 to start from"
-            ))
-        })?;
-    let arm = larger_contacts::from_larger_contacts(&start, rho, control)?;
+/// ([`larger_contacts::from_larger_contacts`], from `start`, the state at
+/// the control at a larger ρ), resolved by Newton at the control with the
+/// arclength representation's modes escalated from the arm's
+/// ([`resolved`]); each finer state is accepted only within 1e-3 in ā of
+/// the arm's state (the same state, not a neighbour).
+pub(crate) fn from_larger_contact(
+    start: &ExactState,
+    rho: f64,
+    control: Hold,
+) -> Result<ExactState> {
+    let gap = start.gap;
+    let arm = larger_contacts::from_larger_contacts(start, rho, control)?;
     let tries: Vec<Truncation> = arclength_tries()
         .into_iter()
         .filter(|t| t.modes >= arm.truncation.modes)
