@@ -53,6 +53,27 @@ pub(crate) const PAST_FOLD_DEPARTURE: f64 = 0.1;
 /// The most steps of a trace past a fold.
 pub(crate) const PAST_FOLD_STEPS: usize = 400;
 
+/// How the trace of an arm towards a control ended
+/// ([`Exact::first_crossing_through_folds`]).
+#[derive(Clone, Debug)]
+pub(crate) enum ArmEnd {
+    /// The state at the control (of the trace's truncation).
+    Reached(ExactState),
+    /// The arm ended before the control: a minimum of F̄, a departure from
+    /// the ellipse beyond [`PAST_FOLD_DEPARTURE`], or the step budget.
+    EndsBefore,
+    /// The series stopped following the arm before the control: at this
+    /// point its fine-grid boundary error exceeds the bound asked for.
+    Unresolved {
+        /// ā there.
+        a_bar: f64,
+        /// F̄ there.
+        force_bar: f64,
+        /// The boundary error there.
+        bc_error: f64,
+    },
+}
+
 /// Why a trace past a band's fold stopped ([`Exact::crossings_past_fold`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum PastFoldStop {
@@ -1011,21 +1032,24 @@ impl Exact {
     /// The first state at `control` on the arm through `start`, traced with
     /// ā first moving in `direction` (±1) through the arm's folds in ā
     /// (noted, not stopped at: a fold in ā is no change of stability under
-    /// load or displacement control); `None` where the arm ends first: at a
-    /// minimum of F̄ (asked by force), where the contour departs from the
-    /// ellipse with its half-widths by more than [`PAST_FOLD_DEPARTURE`] ā
-    /// (along rays, [`DEPARTURE_POINTS`] of them: in either representation;
-    /// the arclength representation's coefficients of an ellipse are not
-    /// small), or after [`PAST_FOLD_STEPS`] steps of at most `max_step`.
-    /// The state is of this truncation: whether the series resolves it is
-    /// the caller's to decide.
+    /// load or displacement control), or how the arm ended first
+    /// ([`ArmEnd`]): at a minimum of F̄ (asked by force), where the contour
+    /// departs from the ellipse with its half-widths by more than
+    /// [`PAST_FOLD_DEPARTURE`] ā (along rays, [`DEPARTURE_POINTS`] of them:
+    /// in either representation; the arclength representation's
+    /// coefficients of an ellipse are not small), after
+    /// [`PAST_FOLD_STEPS`] steps of at most `max_step`, or at a point whose
+    /// fine-grid boundary error exceeds `resolved_within` (the series no
+    /// longer follows the arm). The state found is of this truncation:
+    /// whether the series resolves it is the caller's to decide.
     pub(crate) fn first_crossing_through_folds(
         &self,
         start: &ExactState,
         direction: f64,
         control: Hold,
         max_step: f64,
-    ) -> Result<Option<ExactState>> {
+        resolved_within: f64,
+    ) -> Result<ArmEnd> {
         let watch = Watch {
             size_fold: On::Note,
             displacement_fold: On::Ignore,
@@ -1036,17 +1060,29 @@ impl Exact {
             bifurcation: On::Ignore,
             crossing: Some((Quantity::of(control), control.value(), On::Stop)),
         };
+        let mut unresolved = None;
         let trace = self.trace_past_fold(start, direction, max_step, watch, |p| {
+            if let Some(bc) = self
+                .fine_boundary_error(&p.u)
+                .filter(|bc| *bc > resolved_within)
+            {
+                unresolved = Some(ArmEnd::Unresolved {
+                    a_bar: p.a_bar,
+                    force_bar: p.force,
+                    bc_error: bc,
+                });
+                return true;
+            }
             self.contour_of(&p.u)
                 .deviation_from_ellipse(DEPARTURE_POINTS)
                 > PAST_FOLD_DEPARTURE
         })?;
         for e in &trace.events {
             if let (EventKind::Crossing, Some(u)) = (e.kind, &e.at) {
-                return self.state(u).map(Some);
+                return self.state(u).map(ArmEnd::Reached);
             }
         }
-        Ok(None)
+        Ok(unresolved.unwrap_or(ArmEnd::EndsBefore))
     }
 
     /// The state at `control` started from the richest `conformal:K`'s

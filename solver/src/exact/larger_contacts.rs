@@ -15,7 +15,7 @@
 //! problem, `branch`'s trace through folds), `control`, `error`, `newton`
 //! (the stop request).
 
-use super::branch::PAST_FOLD_DEPARTURE;
+use super::branch::{ArmEnd, PAST_FOLD_DEPARTURE};
 use super::{Exact, ExactState, Truncation};
 use crate::control::Hold;
 use crate::error::{rounded, Error, Result};
@@ -85,11 +85,20 @@ pub(crate) fn from_larger_contacts(
             tried.push(format!("a = {a_bar:.2}: arrives below the control"));
             continue;
         }
-        match at_rho.first_crossing_through_folds(&arrived, -1.0, control, 0.02) {
-            Ok(Some(state)) => return Ok(state),
-            Ok(None) => tried.push(format!(
+        match at_rho.first_crossing_through_folds(&arrived, -1.0, control, 0.02, ON_THE_WAY) {
+            Ok(ArmEnd::Reached(state)) => return Ok(state),
+            Ok(ArmEnd::EndsBefore) => tried.push(format!(
                 "a = {a_bar:.2}: its arm ends before the control (a minimum of F, or {} % of a off the ellipse)",
                 100.0 * PAST_FOLD_DEPARTURE
+            )),
+            Ok(ArmEnd::Unresolved {
+                a_bar: at,
+                force_bar,
+                bc_error,
+            }) => tried.push(format!(
+                "a = {a_bar:.2}: {PATH_MODES} modes no longer resolve its arm at a = {}, F = {} (boundary error {bc_error:.0e})",
+                rounded(at),
+                rounded(force_bar)
             )),
             Err(e) => tried.push(format!(
                 "a = {a_bar:.2}: the trace down its arm fails ({})",
@@ -177,9 +186,78 @@ mod tests {
             .solve_at(Hold::Force(14.0), &fourteen.contour, fourteen.delta_bar)
             .unwrap();
         let down = ex
-            .first_crossing_through_folds(&above, -1.0, ten, 0.02)
-            .unwrap()
+            .first_crossing_through_folds(&above, -1.0, ten, 0.02, ON_THE_WAY)
             .unwrap();
+        let ArmEnd::Reached(down) = down else {
+            panic!("the arm from F = 14 ends before F = 10: {down:?}");
+        };
         same(&down, 1e-6, "traced down from F = 14");
+    }
+
+    /// At ρ = 0.2 the arm of the contact size ā = 4.0843 (arrived from
+    /// ρ = 0.4 at fixed ā, F̄ = 27.16 there) develops a notch at the middle
+    /// of each long flank as F̄ falls (docs/exact.md, "Below the fold"): the
+    /// trace towards F̄ = 10 with [`PATH_MODES`] modes ends where they no
+    /// longer resolve it, typed, not by a failing corrector further down.
+    /// That it is the series and not the arm that ends there is checked by
+    /// more modes at the same ā: the same F̄, the boundary error a hundredth.
+    #[test]
+    fn at_rho_0_2_the_trace_ends_where_its_modes_no_longer_resolve_the_arm() {
+        let a_bar = 4.0843;
+        let at_0_4 = super::super::resolve::at_resolved(0.4, Hold::Force(10.0)).unwrap();
+        let t = Truncation::in_arclength(PATH_MODES);
+        let ex = Exact::new(0.4, t).unwrap().deferring_stability();
+        // up the contact sizes at ρ = 0.4 (past the bands, where there is
+        // none, from the size before), then down in ρ at fixed ā
+        let mut here = at_0_4.clone();
+        for k in 1.. {
+            let next = (at_0_4.a_bar + SIZE_STEP * k as f64).min(a_bar);
+            if let Ok(st) = ex.solve_at(Hold::Size(next), &here.contour, here.delta_bar) {
+                here = st;
+            }
+            if next >= a_bar {
+                break;
+            }
+        }
+        assert!((here.a_bar - a_bar).abs() < 1e-9, "a = {}", here.a_bar);
+        let arrived = at_fixed_size(here, 0.2).unwrap();
+        assert!(
+            (arrived.force_bar - 27.16).abs() < 0.01,
+            "F = {}",
+            arrived.force_bar
+        );
+        let at_rho = Exact::new(0.2, t).unwrap().deferring_stability();
+        let end = at_rho
+            .first_crossing_through_folds(&arrived, -1.0, Hold::Force(10.0), 0.02, ON_THE_WAY)
+            .unwrap();
+        let ArmEnd::Unresolved {
+            a_bar: at,
+            force_bar,
+            bc_error,
+        } = end
+        else {
+            panic!("the trace ends otherwise: {end:?}");
+        };
+        assert!(bc_error > ON_THE_WAY);
+        assert!(
+            force_bar > 22.0 && force_bar < 27.0,
+            "unresolved from F = {force_bar}"
+        );
+        // the same arm at that ā with 64 modes more
+        let finer = Exact::new(0.2, Truncation::in_arclength(PATH_MODES + 64))
+            .unwrap()
+            .deferring_stability()
+            .solve_at(Hold::Size(at), &arrived.contour, arrived.delta_bar)
+            .unwrap();
+        assert!(
+            (finer.force_bar - force_bar).abs() < 1e-4,
+            "F = {} with more modes, {force_bar} with {PATH_MODES}",
+            finer.force_bar
+        );
+        assert!(
+            finer.bc_error < 1e-2 * bc_error,
+            "boundary error {:.1e} with more modes, {bc_error:.1e} with {PATH_MODES}",
+            finer.bc_error
+        );
     }
 }

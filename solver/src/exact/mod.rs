@@ -1232,6 +1232,20 @@ impl Exact {
         self.state(&u)
     }
 
+    /// The largest |∂p̄/∂ν − 1| on the fine grid at `u` (the boundary error
+    /// of [`Exact::state`] alone); `None` where that system is singular.
+    pub(crate) fn fine_boundary_error(&self, u: &DVector<f64>) -> Option<f64> {
+        let contour = self.contour_of(u);
+        let delta_bar = u[self.unknown_count() - 1];
+        let fine = fields(&contour, &self.gap, delta_bar, &self.fine)?;
+        Some(
+            fine.normal_derivative
+                .iter()
+                .map(|v| (v - 1.0).abs())
+                .fold(0.0, f64::max),
+        )
+    }
+
     pub(crate) fn state(&self, u: &DVector<f64>) -> Result<ExactState> {
         let contour = self.contour_of(u);
         let delta_bar = u[self.unknown_count() - 1];
