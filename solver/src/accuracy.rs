@@ -276,8 +276,10 @@ pub(crate) fn render_row(r: &Row) -> String {
             let short = match e {
                 Error::Unresolved { .. } => cell(&why),
                 // the reason in a few words; the story in docs/exact.md
+                // (the route below the fold, on the arms of larger
+                // contacts, has been tried and failed when this comes back)
                 Error::PastRhoFold { fold, .. } => format!(
-                    "no exact value: the near-elliptic family turns back at ρ = {} (a fold in ρ; exact.md)",
+                    "no exact value: the family turns back at ρ = {} (a fold in ρ); no larger contact's arm reaches it (exact.md)",
                     crate::error::rounded(*fold)
                 ),
                 Error::StopsInRho { reached, .. } => format!(
