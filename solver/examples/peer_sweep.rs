@@ -18,7 +18,12 @@
 //! With `layer`: the warm sweep through the model layer, each state a
 //! checked state continued from the one before (`Choice::state_near`).
 //!
-//! usage: peer_sweep generated|static|handwritten|layer|cold|cold-newton OUT_FILE [repeats]
+//! With `checks-after` / `edge-after`: the generated sweep, then every
+//! field and check of a checked state (or the adhesive-edge check alone)
+//! computed over its converged states in a second pass, off the Newton
+//! chain: the least a checked state can cost (docs/performance.md).
+//!
+//! usage: peer_sweep generated|static|handwritten|layer|checks-after|edge-after|cold|cold-newton OUT_FILE [repeats]
 
 #[path = "../benches/peer/handwritten.rs"]
 mod handwritten;
@@ -74,6 +79,27 @@ fn layer_sweep(out: &mut Vec<(f64, f64, f64)>) {
         let (a, b, _, _) = near.size_and_load();
         out.push((delta, a, b / a));
     }
+}
+
+/// What a checked state adds to the Newton iterations, over a sweep's
+/// converged states: with `all`, its pressure parameters, F̄ and the error
+/// (14) beside the adhesive-edge check; else that check alone. The sum of
+/// the fields and whether every state passed (so that none is optimised
+/// away).
+fn checks_after(out: &[(f64, f64, f64)], all: bool) -> (f64, bool) {
+    let mut sum = 0.0;
+    let mut adhesive = true;
+    for &(d, a, s) in out {
+        let x = Vector2::new(a, s);
+        let [g0, g1] = Max.edge_slopes(x, RHO, d);
+        adhesive &= g0.min(g1) > 0.0 && s <= 1.0;
+        if all {
+            let p = Max.pressure_parameters(x, RHO, d);
+            sum += p.xi + p.p0 + p.shape[0] + p.shape[1];
+            sum += Max.force_bar(x, RHO, d) + Max.bc_error(x, RHO, d);
+        }
+    }
+    (sum, adhesive)
 }
 
 /// The hand-written residuals in the model interface's types.
@@ -197,6 +223,14 @@ fn main() {
             // through the model layer: each state a checked `State`
             // continued from the one before (`Choice::state_near`)
             "layer" => layer_sweep(&mut out),
+            // the generated sweep, then what a checked state adds, computed
+            // after it over the converged (ā, s), off the Newton chain:
+            // every field and check of a state, or the adhesive edge alone
+            "checks-after" | "edge-after" => {
+                sweep(|v, d| Max.residuals_and_jacobian(v, RHO, d), x0, &mut out);
+                let all = which == "checks-after";
+                std::hint::black_box(checks_after(&out, all));
+            }
             other => panic!("unknown variant {other}"),
         }
         times.push(t.elapsed().as_secs_f64());
