@@ -443,11 +443,11 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
     o.push_str(&format!(
         "\n## Convergence under doubling\n\n\
          Each resolved pull-off above (N contour modes, 8 N quadrature points) is solved again at its ā with \
-         2N modes and 16 N points (or, where 2N is more than the solver accepts, its most: {}), from its own contour; the relative changes of F̄ and s are the truncation \
+         2N modes and 16 N points (or, where 2N is more than the escalation tries, its most: {}), from its own contour; the relative changes of F̄ and s are the truncation \
          and quadrature error of the pull-off. (At the pull-off F̄ is stationary in ā, so keeping ā fixed \
          does not hide a change of F̄; s is compared at the same ā.)\n\n\
          | ρ | N | F̄ (N) | F̄ (2N) | change of F̄ | change of s | bc (2N) |\n|---|---|---|---|---|---|---|\n",
-        crate::exact::MAX_MODES
+        crate::exact::MAX_ESCALATED_MODES
     ));
     for d in doublings {
         o.push_str(&render_doubling(d));
@@ -691,7 +691,7 @@ pub(crate) struct Doubling {
 pub(crate) fn doubling(coarse: &ExactState) -> Doubling {
     let t = coarse.truncation;
     // twice the modes and points, or as many as the solver accepts
-    let modes = (2 * t.modes).min(crate::exact::MAX_MODES);
+    let modes = (2 * t.modes).min(crate::exact::MAX_ESCALATED_MODES);
     let fine = Exact::new(
         coarse.rho,
         Truncation {

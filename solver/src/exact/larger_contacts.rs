@@ -96,7 +96,7 @@ pub(crate) fn from_larger_contacts(
                 force_bar,
                 bc_error,
             }) => tried.push(format!(
-                "a = {a_bar:.2}: {PATH_MODES} modes no longer resolve its arm at a = {}, F = {} (boundary error {bc_error:.0e})",
+                "a = {a_bar:.2}: {PATH_MODES} modes no longer resolve its arm at a = {}, F = {} (boundary error {bc_error:.1e})",
                 rounded(at),
                 rounded(force_bar)
             )),
@@ -259,5 +259,81 @@ mod tests {
             "boundary error {:.1e} with more modes, {bc_error:.1e} with {PATH_MODES}",
             finer.bc_error
         );
+    }
+
+    /// Zero force at ρ = 0.3, below the fold in ρ of its family (0.357): on
+    /// the arm of the contact size 0.44 above the zero-force state at
+    /// ρ = 0.4, traced down with 256 modes, F̄ passes 0 twice, on either side
+    /// of the arm's minimum of F̄ (docs/exact.md, "Zero force at ρ = 0.3").
+    /// Both states, solved again at F̄ = 0 with 256 to 512 modes of each
+    /// sign, converge geometrically; the table is printed. About 2 min
+    /// (release); run with `--ignored`.
+    #[test]
+    #[ignore]
+    fn zero_force_at_rho_0_3_on_a_notched_arm_converges_with_modes() {
+        let zero = Hold::Force(0.0);
+        let at_0_4 = super::super::resolve::at_resolved(0.4, zero).unwrap();
+        let size = at_0_4.a_bar + 11.0 * SIZE_STEP;
+        let ex = Exact::new(0.4, Truncation::in_arclength(PATH_MODES))
+            .unwrap()
+            .deferring_stability();
+        let mut here = at_0_4.clone();
+        for k in 1..=11 {
+            let next = at_0_4.a_bar + SIZE_STEP * k as f64;
+            if let Ok(st) = ex.solve_at(Hold::Size(next), &here.contour, here.delta_bar) {
+                here = st;
+            }
+        }
+        assert!((here.a_bar - size).abs() < 1e-9, "a = {}", here.a_bar);
+        let arrived = at_fixed_size(here, 0.3).unwrap();
+        let ex = Exact::new(0.3, Truncation::in_arclength(256))
+            .unwrap()
+            .deferring_stability();
+        let start = ex
+            .solve_at(Hold::Size(size), &arrived.contour, arrived.delta_bar)
+            .unwrap();
+        let arm = ex.trace_from(&start, -1.0, 3.1, 3.5, 0.01, 200).unwrap();
+        let force = |i: usize| arm.points[i].state.force_bar;
+        let lowest = (0..arm.points.len())
+            .min_by(|&i, &j| force(i).total_cmp(&force(j)))
+            .unwrap();
+        println!(
+            "arrived at rho = 0.3 with F = {:.4}; the arm's least F on the trace {:.5} at a = {:.5}",
+            arrived.force_bar,
+            force(lowest),
+            arm.points[lowest].state.a_bar
+        );
+        assert!(force(lowest) < -1.0 && force(lowest) > -1.2);
+        let nearest_zero = |from: usize, to: usize| {
+            (from..to)
+                .min_by(|&i, &j| force(i).abs().total_cmp(&force(j).abs()))
+                .map(|i| arm.points[i].state.clone())
+                .unwrap()
+        };
+        for (which, near) in [
+            ("before the minimum", nearest_zero(0, lowest)),
+            ("after it", nearest_zero(lowest, arm.points.len())),
+        ] {
+            let mut finest: Option<ExactState> = None;
+            for modes in [256, 320, 384, 448, 512] {
+                let st = Exact::new(0.3, Truncation::in_arclength(modes))
+                    .unwrap()
+                    .deferring_stability()
+                    .solve_at(zero, &near.contour, near.delta_bar)
+                    .unwrap();
+                println!(
+                    "| {which} | {modes} | {:.10} | {:.10} | {:.10} | {:.1e} |",
+                    st.a_bar, st.s, st.delta_bar, st.bc_error
+                );
+                finest = Some(st);
+            }
+            let finest = finest.unwrap();
+            assert!(finest.force_bar.abs() < 1e-9);
+            assert!(
+                finest.bc_error <= CONVERGED,
+                "{which}: boundary error {:.1e} with 512 modes",
+                finest.bc_error
+            );
+        }
     }
 }

@@ -718,18 +718,24 @@ pub(crate) const CROWDING_TIMES_HALF_WIDTH: f64 = 0.2;
 /// is best or within a factor 1.5 of the best at the three ρ above.
 pub(crate) const GROOVE_WIDTH: f64 = 0.1;
 
-/// The longest contour series accepted ([`Truncation::modes`]): the last
-/// rung of the arclength representation's escalation (320 modes of each
-/// sign, the pull-off followed down to ρ = 0.0141), more than twice
-/// [`MAX_USER_MODES`] (the doubling checks of `thinjkr accuracy`).
-pub(crate) const MAX_MODES: usize =
+/// The most modes of each sign the default escalations try: the last rung
+/// of the arclength representation's escalation (320, the pull-off
+/// followed down to ρ = 0.0141), more than twice [`MAX_USER_MODES`] (the
+/// doubling checks of `thinjkr accuracy` stop here).
+pub(crate) const MAX_ESCALATED_MODES: usize =
     resolve::ARCLENGTH_ESCALATION[resolve::ARCLENGTH_ESCALATION.len() - 1];
+/// The longest contour series accepted ([`Truncation::modes`]): beyond
+/// [`MAX_ESCALATED_MODES`], for the notched arms below the fold in ρ
+/// (docs/exact.md, "Zero force at ρ = 0.3": 448 to 512 modes of each sign
+/// resolve them below 1e-9).
+pub(crate) const MAX_MODES: usize = 512;
 /// The most quadrature points accepted ([`Truncation::points`]): the
 /// boundary integral equation's matrices grow as points², the fine check
 /// uses twice as many. 320 modes of each sign on 2560 points (`thinjkr
-/// exact store-pull-offs`, its last steps) peak at 0.62 GB; an early
-/// version took 0.52 GB and 2 min for 64 modes on 2048 points.
-pub(crate) const MAX_POINTS: usize = 2560;
+/// exact store-pull-offs`, its last steps) peak at 0.62 GB, a solve with
+/// 512 modes on 4096 points at 0.83 GB; an early version took 0.52 GB and
+/// 2 min for 64 modes on 2048 points.
+pub(crate) const MAX_POINTS: usize = 4096;
 
 impl Exact {
     /// The exact problem at `rho` ∈ (0, 1] on the cylinders' gap (1),
@@ -758,7 +764,7 @@ impl Exact {
             return Err(Error::OutOfRange {
                 name: "points",
                 value: truncation.points as f64,
-                range: format!("at most {MAX_POINTS} (memory and time grow as points²: {MAX_POINTS} points with {MAX_MODES} modes take about 0.6 GB)").into(),
+                range: format!("at most {MAX_POINTS} (memory and time grow as points²: {MAX_POINTS} points with {MAX_MODES} modes take about 0.8 GB)").into(),
             });
         }
         if truncation.modes < 1 || truncation.points < 4 * truncation.modes + 8 {

@@ -694,7 +694,7 @@ pub(crate) fn at_with(
 /// ρ ≈ 0.089, 128 to ρ ≈ 0.074, 160 (with the points crowded into the
 /// grooves below ρ ≈ 0.068, [`Contour::crowded_at_groove`](super::Contour::crowded_at_groove))
 /// to 0.0415, 192 to 0.0270, 224 to 0.0243, 256 to 0.0188, 288 to 0.0169
-/// and 320, the most [`MAX_MODES`](super::MAX_MODES) allows, to
+/// and 320 ([`MAX_ESCALATED_MODES`](super::MAX_ESCALATED_MODES)), to
 /// ρ = 0.0141 (θ = 13.5°), where the grooves have narrowed to a half-width
 /// of 0.013.
 pub(crate) const ARCLENGTH_ESCALATION: [usize; 10] =
