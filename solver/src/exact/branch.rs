@@ -58,7 +58,7 @@ pub(crate) const PAST_FOLD_STEPS: usize = 400;
 #[derive(Clone, Debug)]
 pub(crate) enum ArmEnd {
     /// The state at the control (of the trace's truncation).
-    Reached(ExactState),
+    Reached(Box<ExactState>),
     /// The arm ended before the control: a minimum of F̄, a departure from
     /// the ellipse beyond [`PAST_FOLD_DEPARTURE`], or the step budget.
     EndsBefore,
@@ -1079,7 +1079,7 @@ impl Exact {
         })?;
         for e in &trace.events {
             if let (EventKind::Crossing, Some(u)) = (e.kind, &e.at) {
-                return self.state(u).map(ArmEnd::Reached);
+                return self.state(u).map(|st| ArmEnd::Reached(Box::new(st)));
             }
         }
         Ok(unresolved.unwrap_or(ArmEnd::EndsBefore))

@@ -86,7 +86,7 @@ pub(crate) fn from_larger_contacts(
             continue;
         }
         match at_rho.first_crossing_through_folds(&arrived, -1.0, control, 0.02, ON_THE_WAY) {
-            Ok(ArmEnd::Reached(state)) => return Ok(state),
+            Ok(ArmEnd::Reached(state)) => return Ok(*state),
             Ok(ArmEnd::EndsBefore) => tried.push(format!(
                 "a = {a_bar:.2}: its arm ends before the control (a minimum of F, or {} % of a off the ellipse)",
                 100.0 * PAST_FOLD_DEPARTURE
