@@ -59,9 +59,11 @@ pub(crate) const PAST_FOLD_STEPS: usize = 400;
 pub(crate) enum ArmEnd {
     /// The state at the control (of the trace's truncation).
     Reached(Box<ExactState>),
-    /// The arm ended before the control: a minimum of F̄, a departure from
-    /// the ellipse beyond [`PAST_FOLD_DEPARTURE`], or the step budget.
+    /// The arm ended before the control: a minimum of F̄ or a departure
+    /// from the ellipse beyond [`PAST_FOLD_DEPARTURE`].
     EndsBefore,
+    /// [`PAST_FOLD_STEPS`] steps were taken without reaching the control.
+    OutOfSteps,
     /// The series stopped following the arm before the control: at this
     /// point its fine-grid boundary error exceeds the bound asked for.
     Unresolved {
@@ -1082,7 +1084,11 @@ impl Exact {
                 return self.state(u).map(|st| ArmEnd::Reached(Box::new(st)));
             }
         }
-        Ok(unresolved.unwrap_or(ArmEnd::EndsBefore))
+        Ok(match (unresolved, trace.end) {
+            (Some(end), _) => end,
+            (None, continuation::End::Budget) => ArmEnd::OutOfSteps,
+            (None, _) => ArmEnd::EndsBefore,
+        })
     }
 
     /// The state at `control` started from the richest `conformal:K`'s

@@ -15,7 +15,7 @@
 //! problem, `branch`'s trace through folds), `control`, `error`, `newton`
 //! (the stop request).
 
-use super::branch::{ArmEnd, PAST_FOLD_DEPARTURE};
+use super::branch::{ArmEnd, PAST_FOLD_DEPARTURE, PAST_FOLD_STEPS};
 use super::{Exact, ExactState, Truncation};
 use crate::control::Hold;
 use crate::error::{rounded, Error, Result};
@@ -91,6 +91,9 @@ pub(crate) fn from_larger_contacts(
                 "a = {a_bar:.2}: its arm ends before the control (a minimum of F, or {} % of a off the ellipse)",
                 100.0 * PAST_FOLD_DEPARTURE
             )),
+            Ok(ArmEnd::OutOfSteps) => tried.push(format!(
+                "a = {a_bar:.2}: its arm is traced for {PAST_FOLD_STEPS} steps without reaching the control"
+            )),
             Ok(ArmEnd::Unresolved {
                 a_bar: at,
                 force_bar,
@@ -145,6 +148,28 @@ fn at_fixed_size(mut st: ExactState, rho: f64) -> std::result::Result<ExactState
 mod tests {
     use super::*;
     use crate::exact::{Route, CONVERGED};
+
+    /// The state of contact size `a_bar` on `start`'s piece at its ρ, with
+    /// [`PATH_MODES`] modes: up the sizes [`SIZE_STEP`] apart from `start`
+    /// (past a band, where a size has none, from the size before), as the
+    /// route climbs them.
+    fn size_above(start: &ExactState, a_bar: f64) -> ExactState {
+        let ex = Exact::new(start.rho, Truncation::in_arclength(PATH_MODES))
+            .unwrap()
+            .deferring_stability();
+        let mut here = start.clone();
+        for k in 1.. {
+            let next = (start.a_bar + SIZE_STEP * k as f64).min(a_bar);
+            if let Ok(st) = ex.solve_at(Hold::Size(next), &here.contour, here.delta_bar) {
+                here = st;
+            }
+            if next >= a_bar {
+                break;
+            }
+        }
+        assert!((here.a_bar - a_bar).abs() < 1e-9, "a = {}", here.a_bar);
+        here
+    }
 
     /// Below the fold in ρ of the family at F̄ = 10 (ρ ≈ 0.3224,
     /// `the_force_10_family_turns_back_in_rho`), a state at F̄ = 10 at
@@ -206,21 +231,7 @@ mod tests {
         let a_bar = 4.0843;
         let at_0_4 = super::super::resolve::at_resolved(0.4, Hold::Force(10.0)).unwrap();
         let t = Truncation::in_arclength(PATH_MODES);
-        let ex = Exact::new(0.4, t).unwrap().deferring_stability();
-        // up the contact sizes at ρ = 0.4 (past the bands, where there is
-        // none, from the size before), then down in ρ at fixed ā
-        let mut here = at_0_4.clone();
-        for k in 1.. {
-            let next = (at_0_4.a_bar + SIZE_STEP * k as f64).min(a_bar);
-            if let Ok(st) = ex.solve_at(Hold::Size(next), &here.contour, here.delta_bar) {
-                here = st;
-            }
-            if next >= a_bar {
-                break;
-            }
-        }
-        assert!((here.a_bar - a_bar).abs() < 1e-9, "a = {}", here.a_bar);
-        let arrived = at_fixed_size(here, 0.2).unwrap();
+        let arrived = at_fixed_size(size_above(&at_0_4, a_bar), 0.2).unwrap();
         assert!(
             (arrived.force_bar - 27.16).abs() < 0.01,
             "F = {}",
@@ -274,18 +285,7 @@ mod tests {
         let zero = Hold::Force(0.0);
         let at_0_4 = super::super::resolve::at_resolved(0.4, zero).unwrap();
         let size = at_0_4.a_bar + 11.0 * SIZE_STEP;
-        let ex = Exact::new(0.4, Truncation::in_arclength(PATH_MODES))
-            .unwrap()
-            .deferring_stability();
-        let mut here = at_0_4.clone();
-        for k in 1..=11 {
-            let next = at_0_4.a_bar + SIZE_STEP * k as f64;
-            if let Ok(st) = ex.solve_at(Hold::Size(next), &here.contour, here.delta_bar) {
-                here = st;
-            }
-        }
-        assert!((here.a_bar - size).abs() < 1e-9, "a = {}", here.a_bar);
-        let arrived = at_fixed_size(here, 0.3).unwrap();
+        let arrived = at_fixed_size(size_above(&at_0_4, size), 0.3).unwrap();
         let ex = Exact::new(0.3, Truncation::in_arclength(256))
             .unwrap()
             .deferring_stability();

@@ -737,6 +737,12 @@ pub(crate) const MAX_MODES: usize = 512;
 /// 2 min for 64 modes on 2048 points.
 pub(crate) const MAX_POINTS: usize = 4096;
 
+/// max |v − 1| over `values` (∂p̄/∂ν on a grid: the boundary condition
+/// (3)₂ asks for 1 everywhere).
+fn largest_departure_from_one(values: &[f64]) -> f64 {
+    values.iter().map(|v| (v - 1.0).abs()).fold(0.0, f64::max)
+}
+
 impl Exact {
     /// The exact problem at `rho` ∈ (0, 1] on the cylinders' gap (1),
     /// seeded by the registry's family on it (`Gap::cylinders`).
@@ -1238,31 +1244,27 @@ impl Exact {
         self.state(&u)
     }
 
-    /// The largest |∂p̄/∂ν − 1| on the fine grid at `u` (the boundary error
-    /// of [`Exact::state`] alone); `None` where that system is singular.
-    pub(crate) fn fine_boundary_error(&self, u: &DVector<f64>) -> Option<f64> {
+    /// The contour of `u` and its fields on the fine grid (the check of
+    /// every state); `None` where that system is singular.
+    fn fine_fields(&self, u: &DVector<f64>) -> Option<(Contour, f64, Fields)> {
         let contour = self.contour_of(u);
         let delta_bar = u[self.unknown_count() - 1];
         let fine = fields(&contour, &self.gap, delta_bar, &self.fine)?;
-        Some(
-            fine.normal_derivative
-                .iter()
-                .map(|v| (v - 1.0).abs())
-                .fold(0.0, f64::max),
-        )
+        Some((contour, delta_bar, fine))
+    }
+
+    /// The boundary error of [`Exact::state`] at `u` alone: the largest
+    /// |∂p̄/∂ν − 1| on the fine grid; `None` where that system is singular.
+    pub(crate) fn fine_boundary_error(&self, u: &DVector<f64>) -> Option<f64> {
+        self.fine_fields(u)
+            .map(|(_, _, fine)| largest_departure_from_one(&fine.normal_derivative))
     }
 
     pub(crate) fn state(&self, u: &DVector<f64>) -> Result<ExactState> {
-        let contour = self.contour_of(u);
-        let delta_bar = u[self.unknown_count() - 1];
-        let fine = fields(&contour, &self.gap, delta_bar, &self.fine).ok_or_else(|| {
+        let (contour, delta_bar, fine) = self.fine_fields(u).ok_or_else(|| {
             Error::NoState("exact state: the fine-grid check system is singular".into())
         })?;
-        let bc_error = fine
-            .normal_derivative
-            .iter()
-            .map(|v| (v - 1.0).abs())
-            .fold(0.0, f64::max);
+        let bc_error = largest_departure_from_one(&fine.normal_derivative);
         let (a_bar, b_bar) = (contour.a_bar(), contour.b_bar());
         let mut st = ExactState {
             rho: self.rho,
