@@ -183,7 +183,7 @@ def test_force_arrays_and_scalar_broadcast():
         (lambda: thinjkr.curve(0.8, model="exact"), thinjkr.Unavailable, "curve"),
         (lambda: thinjkr.pull_off(0.8, model="energy", control="displacement"), thinjkr.NoState,
          "stays stable"),
-        (lambda: thinjkr.exact.zero_force(0.3), thinjkr.NoState, "rho"),
+        (lambda: thinjkr.exact.solve(0.8, force=-5.0), thinjkr.NoState, "below the pull-off"),
         # the energy closure's displacement fold near the smallest rho
         # supported: Newton on the fold condition does not converge there
         (lambda: thinjkr.pull_off(1e-8, model="energy", control="displacement"),

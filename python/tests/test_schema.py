@@ -36,7 +36,7 @@ COMMANDS = [
     # errors are documents too
     ["solve", "--rho", "1.5", "--delta", "2"],
     ["pull-off", "--rho", "0.8", "--model", "energy", "--control", "displacement"],
-    ["exact", "zero-force", "--rho", "0.3"],
+    ["exact", "solve", "--rho", "0.8", "--force", "-5"],
 ]
 
 

@@ -73,6 +73,12 @@ pub(crate) enum ArmEnd {
         force_bar: f64,
         /// The boundary error there.
         bc_error: f64,
+        /// The trace's modes of each sign.
+        modes: usize,
+        /// The last state traced within the bound, where there is one, and
+        /// the way ā moved into it (±1): where a longer series may take
+        /// the trace on.
+        resolved_before: Option<(Box<ExactState>, f64)>,
     },
 }
 
@@ -1037,7 +1043,7 @@ impl Exact {
     /// load or displacement control), or how the arm ended first
     /// ([`ArmEnd`]): at a minimum of F̄ (asked by force), where the contour
     /// departs from the ellipse with its half-widths by more than
-    /// [`PAST_FOLD_DEPARTURE`] ā (along rays, [`DEPARTURE_POINTS`] of them:
+    /// `departure` ā (along rays, [`DEPARTURE_POINTS`] of them:
     /// in either representation; the arclength representation's
     /// coefficients of an ellipse are not small), after
     /// [`PAST_FOLD_STEPS`] steps of at most `max_step`, or at a point whose
@@ -1051,6 +1057,7 @@ impl Exact {
         control: Hold,
         max_step: f64,
         resolved_within: f64,
+        departure: f64,
     ) -> Result<ArmEnd> {
         let watch = Watch {
             size_fold: On::Note,
@@ -1063,21 +1070,31 @@ impl Exact {
             crossing: Some((Quantity::of(control), control.value(), On::Stop)),
         };
         let mut unresolved = None;
+        // the last point within the bound, and ā at the one before it
+        let mut before: Option<(DVector<f64>, f64, f64)> = None;
         let trace = self.trace_past_fold(start, direction, max_step, watch, |p| {
             if let Some(bc) = self
                 .fine_boundary_error(&p.u)
                 .filter(|bc| *bc > resolved_within)
             {
+                let resolved_before = before.as_ref().and_then(|(u, a_bar, a_before)| {
+                    let st = self.state(u).ok()?;
+                    Some((Box::new(st), if a_bar >= a_before { 1.0 } else { -1.0 }))
+                });
                 unresolved = Some(ArmEnd::Unresolved {
                     a_bar: p.a_bar,
                     force_bar: p.force,
                     bc_error: bc,
+                    modes: self.truncation.modes,
+                    resolved_before,
                 });
                 return true;
             }
+            let a_before = before.as_ref().map_or(start.a_bar, |b| b.1);
+            before = Some((p.u.clone(), p.a_bar, a_before));
             self.contour_of(&p.u)
                 .deviation_from_ellipse(DEPARTURE_POINTS)
-                > PAST_FOLD_DEPARTURE
+                > departure
         })?;
         for e in &trace.events {
             if let (EventKind::Crossing, Some(u)) = (e.kind, &e.at) {
@@ -1192,8 +1209,9 @@ impl Exact {
         let a_circle = circle_a_bar(self.circle(), control);
         if let (Hold::Force(v), true) = (control, a_circle.is_nan()) {
             return Err(Error::NoState(format!(
-                "exact state at rho = {}: F = {v:e} is below the pull-off force of the circle, {}, and so below that of every rho",
+                "exact state at rho = {}: F = {} is below the pull-off force of the circle, {}, and so below that of every rho",
                 crate::error::rounded(self.rho),
+                crate::error::rounded(v),
                 crate::error::rounded(circle_pull_off(self.circle()).1)
             )));
         }

@@ -15,7 +15,7 @@
 //! problem, `branch`'s trace through folds), `control`, `error`, `newton`
 //! (the stop request).
 
-use super::branch::{ArmEnd, PAST_FOLD_DEPARTURE, PAST_FOLD_STEPS};
+use super::branch::{ArmEnd, PAST_FOLD_STEPS};
 use super::{Exact, ExactState, Truncation};
 use crate::control::Hold;
 use crate::error::{rounded, Error, Result};
@@ -33,6 +33,23 @@ const SIZES: usize = 15;
 /// state at the control is then resolved by the caller's escalation):
 /// at ρ = 0.22 and ā = 3.8 they leave a boundary error of 5e-9.
 pub(crate) const PATH_MODES: usize = 96;
+
+/// The longer series a trace down an arm takes on with, in turn, where
+/// [`PATH_MODES`] no longer resolve it ([`traced_with_raised_modes`]): the
+/// notched arm of ā = 3.435 at ρ = 0.3 needs 160 modes below F̄ ≈ 3.5, 256
+/// below F̄ ≈ 2.2 and 320 below F̄ ≈ 0.66, down to F̄ = 0 (boundary error
+/// 4.9e-7 there).
+const RAISED_MODES: [usize; 3] = [160, 256, 320];
+
+/// Where a trace down an arm ends: its contour off the ellipse with its
+/// half-widths by more than this times ā. At ρ = 0.3 the arm of ā = 3.24
+/// reaches F̄ = 0 0.116 ā off its ellipse (a state 128 modes resolve to
+/// 1e-11), the notched arm of ā = 3.435 0.198 ā off (320 modes on the way):
+/// the 10 % at which a trace past a band's fold stops
+/// ([`super::branch::PAST_FOLD_DEPARTURE`]) would miss both. Whether the
+/// series still resolves a contour that far out is checked on the way
+/// ([`ON_THE_WAY`]), not presumed.
+const ARM_DEPARTURE: f64 = 0.3;
 
 /// The largest fine-grid boundary error of a state on the way.
 const ON_THE_WAY: f64 = 1e-6;
@@ -85,11 +102,11 @@ pub(crate) fn from_larger_contacts(
             tried.push(format!("a = {a_bar:.2}: arrives below the control"));
             continue;
         }
-        match at_rho.first_crossing_through_folds(&arrived, -1.0, control, 0.02, ON_THE_WAY) {
+        match traced_with_raised_modes(&at_rho, &arrived, control) {
             Ok(ArmEnd::Reached(state)) => return Ok(*state),
             Ok(ArmEnd::EndsBefore) => tried.push(format!(
                 "a = {a_bar:.2}: its arm ends before the control (a minimum of F, or {} % of a off the ellipse)",
-                100.0 * PAST_FOLD_DEPARTURE
+                100.0 * ARM_DEPARTURE
             )),
             Ok(ArmEnd::OutOfSteps) => tried.push(format!(
                 "a = {a_bar:.2}: its arm is traced for {PAST_FOLD_STEPS} steps without reaching the control"
@@ -98,8 +115,10 @@ pub(crate) fn from_larger_contacts(
                 a_bar: at,
                 force_bar,
                 bc_error,
+                modes,
+                ..
             }) => tried.push(format!(
-                "a = {a_bar:.2}: {PATH_MODES} modes no longer resolve its arm at a = {}, F = {} (boundary error {bc_error:.1e})",
+                "a = {a_bar:.2}: {modes} modes no longer resolve its arm at a = {}, F = {} (boundary error {bc_error:.1e})",
                 rounded(at),
                 rounded(force_bar)
             )),
@@ -115,6 +134,54 @@ pub(crate) fn from_larger_contacts(
         rounded(rho),
         tried.join("; ")
     )))
+}
+
+/// The arm through `arrived` (at ρ of `at_rho`, with [`PATH_MODES`] modes)
+/// traced down in ā through its folds to `control`
+/// ([`Exact::first_crossing_through_folds`]); where the series no longer
+/// resolves the arm (a notch grows on it: docs/exact.md, "Zero force at
+/// ρ = 0.3"), taken on from the last state it resolved with the next of
+/// [`RAISED_MODES`], solved again at that state's ā (and accepted within
+/// 1e-6 in F̄ of it: the same arm), the way ā was moving.
+fn traced_with_raised_modes(at_rho: &Exact, arrived: &ExactState, control: Hold) -> Result<ArmEnd> {
+    let mut end = at_rho.first_crossing_through_folds(
+        arrived,
+        -1.0,
+        control,
+        0.02,
+        ON_THE_WAY,
+        ARM_DEPARTURE,
+    )?;
+    for modes in RAISED_MODES {
+        crate::newton::check_stop()?;
+        let ArmEnd::Unresolved {
+            resolved_before: Some((last, direction)),
+            ..
+        } = &end
+        else {
+            return Ok(end);
+        };
+        let finer = Exact::on(arrived.gap, arrived.rho, Truncation::in_arclength(modes))?
+            .deferring_stability();
+        let from = finer.solve_at(Hold::Size(last.a_bar), &last.contour, last.delta_bar)?;
+        if (from.force_bar - last.force_bar).abs() > 1e-6 * last.force_bar.abs().max(1.0) {
+            return Err(Error::NoState(format!(
+                "with {modes} modes the arm's state at a = {} has F = {}, not its F = {}",
+                rounded(last.a_bar),
+                rounded(from.force_bar),
+                rounded(last.force_bar)
+            )));
+        }
+        end = finer.first_crossing_through_folds(
+            &from,
+            *direction,
+            control,
+            0.02,
+            ON_THE_WAY,
+            ARM_DEPARTURE,
+        )?;
+    }
+    Ok(end)
 }
 
 /// `st` continued in ρ at its ā down to `rho` (Newton at fixed ā from the
@@ -211,12 +278,59 @@ mod tests {
             .solve_at(Hold::Force(14.0), &fourteen.contour, fourteen.delta_bar)
             .unwrap();
         let down = ex
-            .first_crossing_through_folds(&above, -1.0, ten, 0.02, ON_THE_WAY)
+            .first_crossing_through_folds(&above, -1.0, ten, 0.02, ON_THE_WAY, ARM_DEPARTURE)
             .unwrap();
         let ArmEnd::Reached(down) = down else {
             panic!("the arm from F = 14 ends before F = 10: {down:?}");
         };
         same(&down, 1e-6, "traced down from F = 14");
+    }
+
+    /// Zero force at ρ = 0.3, below the fold in ρ of its family (0.357):
+    /// the route of `thinjkr exact zero-force --rho 0.3` finds it on the arm
+    /// of a larger contact, its contour more than 10 % of ā off its ellipse
+    /// (where a trace past a band's fold would have stopped,
+    /// [`super::super::branch::PAST_FOLD_DEPARTURE`]) and yet resolved below
+    /// 1e-9: solved again with 64 and 192 modes more, ā, s and δ̄ stay within
+    /// 1e-9 and the boundary error at most 1e-9.
+    #[test]
+    fn at_rho_0_3_zero_force_lies_on_a_larger_contacts_arm_far_off_its_ellipse() {
+        let zero = Hold::Force(0.0);
+        let st = super::super::resolve::at_resolved(0.3, zero).unwrap();
+        assert_eq!(st.route, Route::FromLargerContact);
+        assert!(st.force_bar.abs() < 1e-9, "F = {}", st.force_bar);
+        assert!(
+            st.bc_error <= CONVERGED,
+            "boundary error {:.1e}",
+            st.bc_error
+        );
+        let off = st.deviation_from_ellipse;
+        assert!(
+            off > super::super::branch::PAST_FOLD_DEPARTURE && off < ARM_DEPARTURE,
+            "{off} a off the ellipse"
+        );
+        for more in [64, 192] {
+            let finer = Exact::new(0.3, Truncation::in_arclength(st.truncation.modes + more))
+                .unwrap()
+                .deferring_stability()
+                .solve_at(zero, &st.contour, st.delta_bar)
+                .unwrap();
+            assert!(
+                finer.bc_error <= CONVERGED,
+                "{more} modes more: {:.1e}",
+                finer.bc_error
+            );
+            for (name, got, want) in [
+                ("a", finer.a_bar, st.a_bar),
+                ("s", finer.s, st.s),
+                ("delta", finer.delta_bar, st.delta_bar),
+            ] {
+                assert!(
+                    (got - want).abs() < 1e-9,
+                    "{more} modes more: {name} {got} against {want}"
+                );
+            }
+        }
     }
 
     /// At ρ = 0.2 the arm of the contact size ā = 4.0843 (arrived from
@@ -239,12 +353,20 @@ mod tests {
         );
         let at_rho = Exact::new(0.2, t).unwrap().deferring_stability();
         let end = at_rho
-            .first_crossing_through_folds(&arrived, -1.0, Hold::Force(10.0), 0.02, ON_THE_WAY)
+            .first_crossing_through_folds(
+                &arrived,
+                -1.0,
+                Hold::Force(10.0),
+                0.02,
+                ON_THE_WAY,
+                ARM_DEPARTURE,
+            )
             .unwrap();
         let ArmEnd::Unresolved {
             a_bar: at,
             force_bar,
             bc_error,
+            ..
         } = end
         else {
             panic!("the trace ends otherwise: {end:?}");
@@ -277,8 +399,10 @@ mod tests {
     /// ρ = 0.4, traced down with 256 modes, F̄ passes 0 twice, on either side
     /// of the arm's minimum of F̄ (docs/exact.md, "Zero force at ρ = 0.3").
     /// Both states, solved again at F̄ = 0 with 256 to 512 modes of each
-    /// sign, converge geometrically; the table is printed. About 2 min
-    /// (release); run with `--ignored`.
+    /// sign, converge geometrically; the table is printed. The route's
+    /// trace, its modes raised on the way ([`traced_with_raised_modes`]),
+    /// reaches the first of them. About 3–4 min (release); run with
+    /// `--ignored`.
     #[test]
     #[ignore]
     fn zero_force_at_rho_0_3_on_a_notched_arm_converges_with_modes() {
@@ -310,6 +434,23 @@ mod tests {
                 .map(|i| arm.points[i].state.clone())
                 .unwrap()
         };
+        // the route's trace, its modes raised on the way (96, then 160, 256
+        // and 320), reaches the first of them
+        let raised = traced_with_raised_modes(
+            &Exact::new(0.3, Truncation::in_arclength(PATH_MODES))
+                .unwrap()
+                .deferring_stability(),
+            &arrived,
+            zero,
+        )
+        .unwrap();
+        let ArmEnd::Reached(raised) = raised else {
+            panic!("the trace with its modes raised ends otherwise: {raised:?}");
+        };
+        println!(
+            "the trace with its modes raised reaches F = 0 with {} modes at a = {:.10}",
+            raised.truncation.modes, raised.a_bar
+        );
         for (which, near) in [
             ("before the minimum", nearest_zero(0, lowest)),
             ("after it", nearest_zero(lowest, arm.points.len())),
@@ -328,6 +469,13 @@ mod tests {
                 finest = Some(st);
             }
             let finest = finest.unwrap();
+            if which == "before the minimum" {
+                assert!(
+                    (raised.a_bar - finest.a_bar).abs() < 1e-8,
+                    "the raised trace's a = {}",
+                    raised.a_bar
+                );
+            }
             assert!(finest.force_bar.abs() < 1e-9);
             assert!(
                 finest.bc_error <= CONVERGED,

@@ -509,6 +509,7 @@ pub(crate) fn from_larger_contact(
     let arm = larger_contacts::from_larger_contacts(start, rho, control)?;
     let tries: Vec<Truncation> = arclength_tries()
         .into_iter()
+        .chain(NOTCHED_ARM_MODES.map(Truncation::in_arclength))
         .filter(|t| t.modes >= arm.truncation.modes)
         .collect();
     resolved(gap, rho, &tries, |ex| {
@@ -523,6 +524,14 @@ pub(crate) fn from_larger_contact(
         Ok(st)
     })
 }
+
+/// The modes of each sign beyond [`ARCLENGTH_ESCALATION`] with which a
+/// state on the arm of a larger contact is resolved where the arm's trace
+/// needed that escalation's last rung (its modes raised on the way,
+/// `larger_contacts`): the notched zero-force state at ρ = 0.3 is left at
+/// 4.9e-7 by 320, 3.6e-8 by 384, 2.6e-9 by 448 and 1.9e-10 by 512
+/// ([`super::MAX_MODES`]; docs/exact.md, "Zero force at ρ = 0.3").
+const NOTCHED_ARM_MODES: [usize; 3] = [384, 448, 512];
 
 /// The arclength representation's truncations, in the order of
 /// [`ARCLENGTH_ESCALATION`].
