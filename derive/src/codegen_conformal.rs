@@ -555,6 +555,7 @@ pub fn registry_outputs(families: &[Family], exact_gap: &[bool]) -> Result<Vec<O
                 "particular_terms": conformal::particular_terms(&f.particular)?,
                 "source": f.source.display().to_string().replace('\\', "/"),
                 "rho_min": f.rho_min,
+                "rho_min_why": f.rho_min_why,
                 "trace_start_a": f.trace_start_a,
                 "on_exact_gap": on_exact_gap,
                 "seeds_exact": f.seeds_exact,
@@ -586,6 +587,7 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
             let source = f.source.display().to_string().replace('\\', "/");
             let module = format_ident!("{}", f.name);
             let rho_min = Literal::f64_unsuffixed(f.rho_min);
+            let rho_min_why = &f.rho_min_why;
             let trace = Literal::f64_unsuffixed(f.trace_start_a);
             let seeds = f.seeds_exact;
             let terms = conformal::particular_terms(&f.particular)?;
@@ -605,6 +607,7 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
                     particular: #particular,
                     source: #source,
                     rho_min: #rho_min,
+                    rho_min_why: #rho_min_why,
                     trace_start_a: #trace,
                     on_exact_gap: #on_exact_gap,
                     seeds_exact: #seeds,

@@ -58,6 +58,8 @@ struct Raw {
     particular: String,
     powers: Vec<u16>,
     rho_min: f64,
+    #[serde(default)]
+    rho_min_why: String,
     trace_start_a: f64,
     #[serde(default)]
     seeds_exact: bool,
@@ -80,6 +82,8 @@ pub struct Family {
     pub powers: Vec<u16>,
     /// The smallest ρ the solver accepts for the family.
     pub rho_min: f64,
+    /// Why a smaller ρ is refused, in one sentence (empty: not said).
+    pub rho_min_why: String,
     /// ā at which the pull-off trace starts.
     pub trace_start_a: f64,
     /// Whether its largest member seeds the exact solver of its gap.
@@ -255,6 +259,12 @@ pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
             raw.rho_min
         ));
     }
+    let why = &raw.rho_min_why;
+    if why.chars().count() > MAX_WHY_CHARS || why.contains('\n') {
+        return Err(format!(
+            "{at}: rho_min_why must be one line of at most {MAX_WHY_CHARS} characters (it is part of an error message)"
+        ));
+    }
     if !(raw.trace_start_a > 0.0 && raw.trace_start_a <= 100.0) {
         return Err(format!(
             "{at}: trace_start_a = {} must lie in (0, 100]",
@@ -274,11 +284,15 @@ pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
         particular: raw.particular,
         powers: raw.powers,
         rho_min: raw.rho_min,
+        rho_min_why: raw.rho_min_why,
         trace_start_a: raw.trace_start_a,
         seeds_exact: raw.seeds_exact,
         source: source.to_path_buf(),
     })
 }
+
+/// The longest `rho_min_why` a family file may give.
+const MAX_WHY_CHARS: usize = 160;
 
 /// At most 40 characters of a value, for messages.
 fn short(s: &str) -> String {

@@ -93,6 +93,7 @@ fn a_particular_solution_that_does_not_solve_2_is_refused() {
 #[test]
 fn a_bad_family_file_is_refused_naming_the_file_and_the_key() {
     let at = Path::new("derive/families/bad.toml");
+    let long_why = format!("rho_min = 0.5\nrho_min_why = \"{}\"", "x".repeat(161));
     let cases: &[(&str, &str, &str)] = &[
         ("kind = \"conformal\"", "kind = \"spline\"", "kind"),
         ("name = \"mine\"", "name = \"Mine\"", "name"),
@@ -107,6 +108,12 @@ fn a_bad_family_file_is_refused_naming_the_file_and_the_key() {
             "1 to 8",
         ),
         ("rho_min = 0.5", "rho_min = 0", "rho_min"),
+        (
+            "rho_min = 0.5",
+            "rho_min = 0.5\nrho_min_why = \"one line\\nand another\"",
+            "rho_min_why",
+        ),
+        ("rho_min = 0.5", &long_why, "rho_min_why"),
         ("trace_start_a = 2.6", "trace_start_a = -1", "trace_start_a"),
         (
             "gap = \"X^2/2 + mu*Y^2/2\"",

@@ -139,9 +139,25 @@ fn member_states(
                 Quantity::ZeroForce => m.zero_force(rho),
                 Quantity::Force10 => m.solve(rho, Hold::Force(10.0)),
             };
-            (m.name(), st.map_err(|e| e.to_string()))
+            (m.name(), st.map_err(|e| refusal_or_words(m.family(), e)))
         })
         .collect()
+}
+
+/// The words of a member's failure for a cell; a ρ below its family's
+/// `rho_min` as the refusal and the family's reason alone, so that the
+/// reason fits the cell (the command line gives the range with it).
+fn refusal_or_words(family: &Family, e: Error) -> String {
+    match e {
+        Error::Unsupported { name: "rho", .. } if !family.rho_min_why.is_empty() => {
+            format!(
+                "refused below ρ = {}: {}",
+                crate::error::short(family.rho_min),
+                family.rho_min_why
+            )
+        }
+        e => e.to_string(),
+    }
 }
 
 /// Compute one row.
@@ -924,6 +940,36 @@ pub fn band_markdown(maps: &[BandMap], pull_offs: &[(f64, f64)]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A member asked below its family's `rho_min` stands in a cell as the
+    /// refusal with the family's reason, whole (within [`MAX_CELL`]);
+    /// other failures as their words.
+    #[cfg(feature = "cli")]
+    #[test]
+    fn a_refused_rho_is_a_cell_with_the_reason_whole() {
+        for m in compared_members() {
+            let f = m.family();
+            let e = m
+                .pull_off(f.rho_min / 2.0, FoldCondition::Load)
+                .unwrap_err();
+            let words = refusal_or_words(f, e);
+            if f.rho_min_why.is_empty() {
+                assert!(words.contains("outside the supported range"), "{words}");
+            } else {
+                assert!(
+                    words.starts_with("refused below ρ = ")
+                        && words.ends_with(f.rho_min_why)
+                        && cell(&words).chars().count() <= MAX_CELL,
+                    "{words}"
+                );
+            }
+        }
+        let f = compared_members()[0].family();
+        assert_eq!(
+            refusal_or_words(f, Error::NoState("x".into())),
+            Error::NoState("x".into()).to_string()
+        );
+    }
 
     /// `docs/accuracy.md` is fresh: the rows ρ = 1 and ρ = 0.9 of its three
     /// tables (pull-off, zero force, F̄ = 10), recomputed here, are the lines

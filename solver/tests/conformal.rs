@@ -236,10 +236,18 @@ fn bad_input_is_a_typed_error() {
             Err(Error::OutOfRange { name: "rho", .. })
         ));
     }
-    assert!(matches!(
-        m.solve(0.1, Hold::Delta(1.0)),
-        Err(Error::Unsupported { name: "rho", .. })
-    ));
+    // below its rho_min, refused with the range and the reason of its data
+    // file, one sentence: the measured folds and misses of (3)₂
+    let refused = m.solve(0.1, Hold::Delta(1.0)).unwrap_err();
+    assert!(matches!(refused, Error::Unsupported { name: "rho", .. }));
+    let words = refused.to_string();
+    assert!(
+        words.contains("[0.3, 1] for conformal:K: its arms")
+            && words.contains("fold in rho")
+            && words.contains("miss (3)2")
+            && !words.contains('\n'),
+        "{words}"
+    );
     assert!(Conformal::parse("conformal:x").unwrap().is_err());
     assert!(Conformal::parse("max").is_none());
 }

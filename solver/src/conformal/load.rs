@@ -47,6 +47,8 @@ struct Entry {
     particular: String,
     source: String,
     rho_min: f64,
+    #[serde(default)]
+    rho_min_why: String,
     trace_start_a: f64,
     on_exact_gap: bool,
     #[serde(default)]
@@ -151,6 +153,9 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     {
         return Err("rho_min or trace_start_a out of range".into());
     }
+    if e.rho_min_why.chars().count() > 160 || e.rho_min_why.contains('\n') {
+        return Err("rho_min_why is not one line of at most 160 characters".into());
+    }
     if e.tables.contains("..") || Path::new(&e.tables).is_absolute() {
         return Err(format!("its tables path {:?} leaves the folder", e.tables));
     }
@@ -168,6 +173,7 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
         particular: leak(e.particular),
         source: leak(e.source),
         rho_min: e.rho_min,
+        rho_min_why: leak(e.rho_min_why),
         trace_start_a: e.trace_start_a,
         on_exact_gap: e.on_exact_gap,
         // whether it seeds the exact solver of its gap: decided by the

@@ -88,6 +88,9 @@ pub struct Family {
     pub source: &'static str,
     /// The smallest ρ its solves accept.
     pub rho_min: f64,
+    /// Why a smaller ρ is refused, in one sentence (empty where its data
+    /// file does not say).
+    pub rho_min_why: &'static str,
     /// ā at which the pull-off trace starts: between the neutral points of
     /// the circle's modes 4 and 6 of its gap, so that the trace follows the
     /// near-elliptic arm that carries the pull-off. Each mode's imperfect
@@ -1593,7 +1596,15 @@ fn check_rho(family: &Family, rho: f64) -> Result<f64> {
         return Err(Error::Unsupported {
             name: "rho",
             value: rho,
-            supported: format!("[{}, 1] for {}:K", short(family.rho_min), family.name).into(),
+            supported: match family.rho_min_why {
+                "" => format!("[{}, 1] for {}:K", short(family.rho_min), family.name),
+                why => format!(
+                    "[{}, 1] for {}:K: {why}",
+                    short(family.rho_min),
+                    family.name
+                ),
+            }
+            .into(),
         });
     }
     Ok(rho)
