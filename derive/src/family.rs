@@ -292,7 +292,10 @@ pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
 }
 
 /// The longest `rho_min_why` a family file may give.
-const MAX_WHY_CHARS: usize = 160;
+///
+/// docs/accuracy.md gives it in a cell, four to a row of at most 400
+/// characters.
+const MAX_WHY_CHARS: usize = 72;
 
 /// At most 40 characters of a value, for messages.
 fn short(s: &str) -> String {

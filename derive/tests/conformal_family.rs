@@ -93,7 +93,7 @@ fn a_particular_solution_that_does_not_solve_2_is_refused() {
 #[test]
 fn a_bad_family_file_is_refused_naming_the_file_and_the_key() {
     let at = Path::new("derive/families/bad.toml");
-    let long_why = format!("rho_min = 0.5\nrho_min_why = \"{}\"", "x".repeat(161));
+    let long_why = format!("rho_min = 0.5\nrho_min_why = \"{}\"", "x".repeat(73));
     let cases: &[(&str, &str, &str)] = &[
         ("kind = \"conformal\"", "kind = \"spline\"", "kind"),
         ("name = \"mine\"", "name = \"Mine\"", "name"),

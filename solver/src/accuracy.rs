@@ -942,7 +942,8 @@ mod tests {
     use super::*;
 
     /// A member asked below its family's `rho_min` stands in a cell as the
-    /// refusal with the family's reason, whole (within [`MAX_CELL`]);
+    /// refusal with the family's reason, whole (within [`MAX_CELL`], and
+    /// four of them within a line of the docs);
     /// other failures as their words.
     #[cfg(feature = "cli")]
     #[test]
@@ -956,10 +957,14 @@ mod tests {
             if f.rho_min_why.is_empty() {
                 assert!(words.contains("outside the supported range"), "{words}");
             } else {
+                // whole in its cell, and a row of four such cells within
+                // the docs' 400 characters a line
+                let row = format!("| 0.02 | {} |", vec![cell(&words); 4].join(" | "));
                 assert!(
                     words.starts_with("refused below ρ = ")
                         && words.ends_with(f.rho_min_why)
-                        && cell(&words).chars().count() <= MAX_CELL,
+                        && cell(&words).chars().count() <= MAX_CELL
+                        && row.chars().count() <= 400,
                     "{words}"
                 );
             }

@@ -242,7 +242,7 @@ fn bad_input_is_a_typed_error() {
     assert!(matches!(refused, Error::Unsupported { name: "rho", .. }));
     let words = refused.to_string();
     assert!(
-        words.contains("[0.3, 1] for conformal:K: its arms")
+        words.contains("[0.3, 1] for conformal:K: its members' arms")
             && words.contains("fold in rho")
             && words.contains("miss (3)2")
             && !words.contains('\n'),

@@ -153,8 +153,8 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     {
         return Err("rho_min or trace_start_a out of range".into());
     }
-    if e.rho_min_why.chars().count() > 160 || e.rho_min_why.contains('\n') {
-        return Err("rho_min_why is not one line of at most 160 characters".into());
+    if e.rho_min_why.chars().count() > 72 || e.rho_min_why.contains('\n') {
+        return Err("rho_min_why is not one line of at most 72 characters".into());
     }
     if e.tables.contains("..") || Path::new(&e.tables).is_absolute() {
         return Err(format!("its tables path {:?} leaves the folder", e.tables));

@@ -13,7 +13,7 @@ pub static CONTOUR_FAMILIES: [crate::conformal::Family; 1] = [
         particular: "X^4/24 + mu*Y^4/24 - dbar*(X^2 + Y^2)/4",
         source: "derive/families/conformal.toml",
         rho_min: 0.3,
-        rho_min_why: "its arms fold in rho (K = 4 near 0.27, K = 8 near 0.18); its states there miss (3)2 by up to 0.76",
+        rho_min_why: "its members' arms fold in rho or their states miss (3)2 by up to 0.76",
         trace_start_a: 2.6,
         on_exact_gap: true,
         seeds_exact: true,
