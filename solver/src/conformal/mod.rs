@@ -1593,16 +1593,13 @@ fn no_circle(a: f64) -> Error {
 fn check_rho(family: &Family, rho: f64) -> Result<f64> {
     let rho = check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     if rho < family.rho_min {
+        let range = format!("[{}, 1] for {}:K", short(family.rho_min), family.name);
         return Err(Error::Unsupported {
             name: "rho",
             value: rho,
             supported: match family.rho_min_why {
-                "" => format!("[{}, 1] for {}:K", short(family.rho_min), family.name),
-                why => format!(
-                    "[{}, 1] for {}:K: {why}",
-                    short(family.rho_min),
-                    family.name
-                ),
+                "" => range,
+                why => format!("{range}: {why}"),
             }
             .into(),
         });
