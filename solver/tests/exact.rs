@@ -801,3 +801,52 @@ fn the_unloading_path_reaches_the_pull_off_at_rho_0_8() {
     assert_eq!(thin["stable_above_cutoff"], false);
     assert_eq!(run("0.5")["stable_above_cutoff"], true);
 }
+
+/// docs/exact.md, "Small contacts are longer across (s > 1)": every row of
+/// its table is the resolved exact state at ρ = 0.8 and that δ̄, to the
+/// printed digits; the states below the circle's mode-2 neutral point
+/// ā³ = 4 have s > 1 and are unstable to n = 2 under both controls, those
+/// above it s < 1.
+#[test]
+fn the_small_contacts_table_of_the_docs_is_the_solvers() {
+    let doc =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md")).unwrap();
+    let from = doc
+        .find("**Small contacts are longer across (s > 1).**")
+        .expect("the section");
+    let rows: Vec<Vec<f64>> = doc[from..]
+        .lines()
+        .skip_while(|l| !l.starts_with("| δ̄ |"))
+        .skip(2)
+        .take_while(|l| l.starts_with("| "))
+        .map(|l| {
+            l.trim_matches(|c| c == '|' || c == ' ')
+                .split(" | ")
+                .map(|v| v.replace('−', "-").parse::<f64>().unwrap())
+                .collect()
+        })
+        .collect();
+    assert_eq!(rows.len(), 5, "the table's rows");
+    for r in &rows {
+        let (delta, a, b, s, f) = (r[0], r[1], r[2], r[3], r[4]);
+        let st = thinjkr::exact::at_resolved(0.8, thinjkr::control::Hold::Delta(delta)).unwrap();
+        for (name, printed, solved) in [
+            ("a", a, st.a_bar),
+            ("b", b, st.b_bar),
+            ("s", s, st.s),
+            ("F", f, st.force_bar),
+        ] {
+            assert!(
+                (printed - solved).abs() <= 5e-8,
+                "delta = {delta}: {name} printed {printed}, solved {solved}"
+            );
+        }
+        let below_mode_2 = st.a_bar.powi(3) < 4.0;
+        assert_eq!(st.s > 1.0, below_mode_2, "delta = {delta}: s = {}", st.s);
+        if below_mode_2 {
+            for modes in [&st.stability.displacement, &st.stability.load] {
+                assert!(modes.iter().any(|m| m.n == 2), "delta = {delta}");
+            }
+        }
+    }
+}
