@@ -77,6 +77,45 @@ impl Cutoff {
     pub(crate) fn resolves(&self, wavelength: f64) -> bool {
         wavelength >= self.wavelength
     }
+
+    /// Why a contour state whose verdict under a control is "unstable"
+    /// above this cutoff is doubtful, in the words every front end shows:
+    /// which modes (2) resolves, the longest (n, wavelength) among the
+    /// contour modes, and the critical thinness (that wavelength over 2π)
+    /// above which none would be. A contact that moves through states
+    /// stable above the cutoff under that control does not come to such a
+    /// state: at the limit of stable states no resolved eigenvalue is
+    /// negative. `size_unstable`: the size (n = 0) is unstable, which no
+    /// thinness changes; `a_bar` gives the critical thinness as h/a too.
+    pub(crate) fn unstable_words(
+        &self,
+        under_load: bool,
+        resolved: usize,
+        size_unstable: bool,
+        longest: Option<(usize, f64)>,
+        a_bar: f64,
+    ) -> String {
+        let control = if under_load { "load" } else { "displacement" };
+        let head = format!(
+            "unstable under {control} control above the short-wave cutoff (2π h/L = {:.3}, h/L = {})",
+            self.wavelength,
+            crate::error::short(self.thinness)
+        );
+        let end = format!(
+            "(2) predicts a change of shape, and no contact moving through stable states under {control} control comes to this state"
+        );
+        match longest {
+            Some((n, wavelength)) if !size_unstable => {
+                let h = wavelength / (2.0 * std::f64::consts::PI);
+                format!(
+                    "{head} to {resolved} contour mode{}, the longest n = {n} ({wavelength:.3} long): {end}; stable above the cutoff for h/L >= {h:.3} (h/a >= {:.3})",
+                    if resolved == 1 { "" } else { "s" },
+                    h / a_bar
+                )
+            }
+            _ => format!("{head} in its size (n = 0), whatever the thinness: {end}"),
+        }
+    }
 }
 
 /// The neutral band: an eigenvalue within this fraction of the largest

@@ -416,6 +416,16 @@ impl Choice {
             crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
             crate::report::AnyState::Exact(_) | crate::report::AnyState::Slender(_) => {}
         }
+        // a contour state unstable under its own control above these
+        // coatings' cutoff (a pull-off and a state at a force are held by
+        // the load, a state at an approach by the displacement): the model
+        // predicts a change of shape, and no stable path comes to it
+        let under_load = delta.is_none();
+        warnings.extend(match &state {
+            crate::report::AnyState::Exact(st) => st.stability.doubt(under_load, st.a_bar),
+            crate::report::AnyState::Conformal(st) => st.doubt(under_load),
+            _ => None,
+        });
         if si.h_over_a > 0.1 {
             warnings.push(format!(
                 "h/a = {}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",

@@ -307,7 +307,8 @@ fn near_circular_aspect_ratio_agrees_with_35_36_to_second_order() {
 /// (dF̄/dā < 0 there). With 6 contour modes (n = 0, 2, …, 12): at ā = 3
 /// (ā³/4 + 1 = 7.75) n = 8, 10, 12 are unstable under both controls; at
 /// ā = 2 (ā³/4 + 1 = 3) n = 4, …, 12, and under load control n = 0 too.
-/// The eigenvalues are the Hessian entries 2π(ā³/4 + 1 − n).
+/// The eigenvalues are the Hessian entries 2π(ā³/4 + 1 − n) in the metric
+/// of the normal motion, ∮ cos² nθ ā dθ = πā: 2(ā³/4 + 1 − n)/ā.
 #[test]
 fn circle_stability_agrees_with_the_second_variation_by_hand() {
     let ex = Exact::new(1.0, trunc(6, 96)).unwrap();
@@ -326,8 +327,8 @@ fn circle_stability_agrees_with_the_second_variation_by_hand() {
         for m in &stab.displacement {
             assert!((m.wavelength - 2.0 * PI * a / m.n as f64).abs() < 1e-12);
             // the Hessian entry of mode n, ∮ 2 (p̄_rr − n/ā) cos² nθ ā dθ
-            // = 2π(ā³/4 + 1 − n)
-            let by_hand = 2.0 * PI * (a.powi(3) / 4.0 + 1.0 - m.n as f64);
+            // = 2π(ā³/4 + 1 − n), over its metric ∮ cos² nθ ā dθ = πā
+            let by_hand = 2.0 * PI * (a.powi(3) / 4.0 + 1.0 - m.n as f64) / (PI * a);
             assert!(
                 (m.eigenvalue - by_hand).abs() < 1e-6 * by_hand.abs().max(1.0),
                 "n = {}: {} vs {by_hand}",
@@ -363,9 +364,35 @@ fn the_circle_at_its_pull_off_is_neutral_in_mode_four_and_in_size() {
     // with h/L = 0.4 (cutoff 2.513) mode 6 (2π·2.289/6 = 2.397) is shorter:
     // nothing resolved is unstable, and the neutral mode 4 (3.596) does not
     // make the verdict false
-    let under = stab.under(thinjkr::cutoff::Cutoff::for_thinness(0.4).unwrap());
+    let under = stab
+        .clone()
+        .under(thinjkr::cutoff::Cutoff::for_thinness(0.4).unwrap());
     assert_eq!(under.stable_displacement, Some(true), "{under:?}");
     assert_eq!(under.stable_load, Some(true), "{under:?}");
+    // the critical thinness in closed form: the longest unstable mode is
+    // n* = 6 (the neutral 4 not counted), 2πā/6 long, so h/L = ā/6; it is
+    // the state's, whatever cutoff judges it
+    for s in [&stab, &under] {
+        for h in [s.critical_thinness_displacement, s.critical_thinness_load] {
+            let h = h.expect("a contour mode is unstable");
+            assert!((h - a / 6.0).abs() < 1e-9 * a, "{h} against {}", a / 6.0);
+        }
+    }
+    // just below it the model resolves mode 6 and the state is unstable;
+    // just above, stable: the critical thinness is where the verdict turns
+    for (h, verdict) in [
+        (0.999 * a / 6.0, Some(false)),
+        (1.001 * a / 6.0, Some(true)),
+    ] {
+        let v = stab
+            .clone()
+            .under(thinjkr::cutoff::Cutoff::for_thinness(h).unwrap());
+        assert_eq!(
+            (v.stable_displacement, v.stable_load),
+            (verdict, verdict),
+            "h/L = {h}"
+        );
+    }
 }
 
 /// The short-wave cutoff (docs/exact.md, "The short-wave cutoff"). The
@@ -760,6 +787,93 @@ fn the_pull_off_at_rho_0_2_is_resolved_in_the_arclength_representation() {
         let d_inward = (4.0 * at(h) - at(2.0 * h)) / (2.0 * h);
         assert!((d_inward + 1.0).abs() < 1e-4, "dp/dnu = {}", -d_inward);
     }
+}
+
+/// Issue 32: `exact pull-off` says whether a contact unloaded under load
+/// control through states stable above the cutoff can come to the pull-off
+/// it reports, from the state's own stability. At ρ = 0.1 the pull-off is
+/// unstable under load to the even modes from n = 6 on (as on the circle
+/// at its pull-off; the modes named by the arclength spectrum of their
+/// normal motion), so with the default h/L = 0.1 it is not reached, and it
+/// is stable above the cutoff only for h/L at least its critical thinness,
+/// n = 6's wavelength over 2π. Just below that thinness the verdict is
+/// still "no", just above it "possibly" (the path decides).
+#[cfg(feature = "cli")]
+#[test]
+fn the_pull_off_at_rho_0_1_is_not_reached_by_unloading_below_its_critical_thinness() {
+    let run = |extra: &[&str]| -> String {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+            .args(["exact", "pull-off", "--rho", "0.1"])
+            .args(extra)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let reached = |text: &str| -> String {
+        text.lines()
+            .find_map(|l| l.strip_prefix("  reached by unloading: "))
+            .unwrap_or_else(|| panic!("no reached line in {text}"))
+            .to_string()
+    };
+    let doc: serde_json::Value = serde_json::from_str(&run(&["--json"])).unwrap();
+    let stab = &doc["state"]["stability"];
+    let h = stab["critical_thinness_load"].as_f64().unwrap();
+    let load = stab["load"].as_array().unwrap();
+    let ns: Vec<u64> = load.iter().map(|m| m["n"].as_u64().unwrap()).collect();
+    assert_eq!(ns[..4], [6, 8, 10, 12], "{ns:?}");
+    let six = &load[0];
+    assert!(six["eigenvalue"].as_f64().unwrap() < 0.0, "{six}");
+    let w6 = six["wavelength"].as_f64().unwrap();
+    assert!(
+        (h - w6 / (2.0 * PI)).abs() < 1e-12,
+        "{h} against n = 6's {w6}"
+    );
+    let default = reached(&run(&[]));
+    assert!(
+        default.starts_with("no at this thinness: unstable under load control"),
+        "{default}"
+    );
+    assert!(default.contains("the longest n = 6 ("), "{default}");
+    assert!(default.contains(&format!("for h/L >= {h:.3}")), "{default}");
+    let below = reached(&run(&["--thinness", &format!("{}", 0.99 * h)]));
+    assert!(below.starts_with("no at this thinness"), "{below}");
+    let above = reached(&run(&["--thinness", &format!("{}", 1.01 * h)]));
+    assert!(
+        above.starts_with("possibly: it is stable under load control"),
+        "{above}"
+    );
+}
+
+/// The unstable directions are named by the modes their normal motion is
+/// made of (the arclength spectrum, in the metric of the normal motion).
+/// At ρ = 0.3 the pull-off (80 modes in the conformal form, 11 % off its
+/// ellipse) is unstable to every even n from 6 to the series' shortest,
+/// each once, and over the longer half their eigenvalues fall with n, as
+/// on the circle (2(ā³/4 + 1 − n)/ā). Named by their largest coefficient,
+/// a direction of the shortest modes had been called n = 2 and n = 6 was
+/// missing, which made the state unstable above the cutoff up to h/L = 1.06.
+#[test]
+fn the_unstable_directions_of_an_elongated_contour_are_named_by_their_motion() {
+    let (st, _) = thinjkr::exact::pull_off_resolved(0.3).unwrap();
+    assert_eq!(st.truncation.arclength, 0, "{:?}", st.truncation);
+    for modes in [&st.stability.load, &st.stability.displacement] {
+        let ns: Vec<usize> = modes.iter().map(|m| m.n).collect();
+        let every: Vec<usize> = (6..=2 * st.truncation.modes).step_by(2).collect();
+        assert_eq!(ns, every);
+        let long: Vec<f64> = modes
+            .iter()
+            .filter(|m| m.n <= st.truncation.modes)
+            .map(|m| m.eigenvalue)
+            .collect();
+        assert!(long.windows(2).all(|w| w[1] < w[0]), "{long:?}");
+    }
+    let h = st.stability.critical_thinness_load.unwrap();
+    assert!((h - st.stability.load[0].wavelength / (2.0 * PI)).abs() < 1e-12);
 }
 
 /// Issue 32 (b): `exact pull-off --unloading` traces the family from F̄ = 10

@@ -225,6 +225,23 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
         );
         let expected = if rho >= 0.4 { "conformal:8" } else { "exact" };
         assert_eq!(answer.model, expected, "theta {theta}");
+        // a pull-off unstable under load above these coatings' cutoff is
+        // said to be so (no stable unloading comes to it), and only then
+        let unstable = match &answer.state {
+            AnyState::Exact(st) => st.stability.stable_load == Some(false),
+            AnyState::Conformal(st) => !st.stable_load,
+            _ => unreachable!("a contour model answers"),
+        };
+        let said = answer
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("unstable under load control above the short-wave cutoff"));
+        assert_eq!(said, unstable, "theta {theta}: {:?}", answer.warnings);
+        // the 30-degree example: h/L = 0.373, below the critical
+        // thinness of its n = 2 mode; at 60 degrees stable above the cutoff
+        if theta == 30.0 || theta == 60.0 {
+            assert_eq!(unstable, theta == 30.0, "theta {theta}");
+        }
         // max beside it exactly where the two differ by more than 1 %
         let max = Choice::Ellipse(ModelId::Max)
             .pull_off(rho, FoldCondition::Load)

@@ -86,6 +86,10 @@ def _state_from(d: Dict[str, Any], model: Optional[str] = None) -> State:
             fields["stable_load"] = stab.get("stable_load")
             fields["cutoff"] = stab.get("cutoff")
             fields["shortest_wavelength"] = stab.get("shortest_wavelength")
+            # the thinness h/L below which a contour mode unstable under
+            # that control is resolved (None: no contour mode is unstable)
+            fields["critical_thinness_displacement"] = stab.get("critical_thinness_displacement")
+            fields["critical_thinness_load"] = stab.get("critical_thinness_load")
         else:
             fields["stable_displacement"] = stab["displacement"]
             fields["stable_load"] = stab["load"]

@@ -63,7 +63,8 @@ class State:
     ``conformal:K``; ``contour``, ``bc_error``, ``truncation``, ``route``,
     ``unstable_modes_displacement``, ``unstable_modes_load``,
     ``neutral_modes_displacement``, ``neutral_modes_load``,
-    ``shortest_wavelength`` for ``exact``; for both, ``stable_displacement``
+    ``shortest_wavelength``, ``critical_thinness_displacement``,
+    ``critical_thinness_load`` for ``exact``; for both, ``stable_displacement``
     and ``stable_load`` count only the contour modes above the short-wave
     cutoff ``cutoff``, 2π h/L, and an exact verdict is None where it is not
     settled). A neutral direction has a zero eigenvalue (within 1e-6 of the

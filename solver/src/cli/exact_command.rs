@@ -525,7 +525,35 @@ fn mode_list(ns: &[usize]) -> String {
     parts.join(", ")
 }
 
-/// The exact load-controlled pull-off and every model's.
+/// Whether a contact unloaded under load control through states stable
+/// above the cutoff can come to the pull-off `po`, from its own stability:
+/// not where it is unstable under load to a resolved mode (at the limit of
+/// stable states no resolved eigenvalue is negative); where it is stable,
+/// the path decides (`--unloading`, whose lines follow).
+fn reached_words(po: &crate::exact::ExactState, unloading: bool) -> String {
+    let stab = &po.stability;
+    let then = if unloading {
+        "; the unloading path from F = 10:"
+    } else {
+        "; --unloading follows the path from F = 10 to say whether it does"
+    };
+    match (stab.stable_load, stab.doubt(true, po.a_bar)) {
+        (Some(false), Some(why)) => format!("no at this thinness: {why}"),
+        (Some(true), _) => format!(
+            "possibly: it is stable under load control above the short-wave cutoff (h/L = {}{}){then}",
+            crate::error::short(stab.cutoff.thinness),
+            match stab.critical_thinness_load {
+                Some(h) => format!(", as for every h/L >= {h:.3}"),
+                None => ", with no contour mode unstable".into(),
+            }
+        ),
+        _ => format!(
+            "not settled: no resolved mode is unstable under load control, but the series stops short of the cutoff 2π h/L = {:.3}{then}",
+            stab.cutoff.wavelength
+        ),
+    }
+}
+
 /// The unloading path in words.
 fn unloading_words(p: &Passed) -> String {
     let Passed::Unloading {
@@ -686,14 +714,8 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
     } else {
         "the first minimum of F on the near-elliptic arm traced towards smaller a from its start (docs/exact.md, \"Which family\")".to_string()
     };
-    outln!(
-        "  which pull-off: {which}; {}",
-        if unloading {
-            "the unloading path from F = 10:"
-        } else {
-            "--unloading says whether the unloading path from F = 10 reaches it"
-        }
-    );
+    outln!("  which pull-off: {which}");
+    outln!("  reached by unloading: {}", reached_words(&po, unloading));
     for p in &passed {
         match p {
             Passed::Unloading { .. } => outln!("    {}", unloading_words(p)),

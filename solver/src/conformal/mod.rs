@@ -271,6 +271,30 @@ impl ConformalState {
         self.cutoff = cutoff;
         self
     }
+
+    /// Why the state is doubtful under a control (load or displacement)
+    /// where its verdict there is unstable above the cutoff
+    /// ([`Cutoff::unstable_words`]); none where it is stable.
+    pub(crate) fn doubt(&self, under_load: bool) -> Option<String> {
+        let (modes, stable) = if under_load {
+            (&self.unstable_modes_load, self.stable_load)
+        } else {
+            (&self.unstable_modes, self.stable_displacement)
+        };
+        let longest = modes.iter().filter(|&&n| n > 0).min();
+        (!stable).then(|| {
+            self.cutoff.unstable_words(
+                under_load,
+                modes
+                    .iter()
+                    .filter(|&&n| n > 0 && self.cutoff.resolves(self.wavelength(n)))
+                    .count(),
+                modes.contains(&0),
+                longest.map(|&n| (n as usize, self.wavelength(n))),
+                self.a_bar,
+            )
+        })
+    }
 }
 
 /// The boundary defect max |∂p̄/∂ν − 1| above which a member's state is

@@ -14,14 +14,20 @@
 //! derivative, from the linearisation of ∂p̄/∂ν (`exact::linear`). Under displacement control (δ̄ fixed) a
 //! state is stable when the Hessian in the coefficients is positive
 //! definite; under load control the potential is Π̄ − 2F̄δ̄ with δ̄ free,
-//! and the Hessian is bordered by 2∂F̄/∂u and 2∂F̄/∂δ̄. Each negative
-//! eigenvalue is reported with the contour mode its eigenvector is made
-//! of: n = 0 for A (the size; under load control also δ̄), n = 2j + 2 for
-//! b_j (the radius perturbed by cos nθ, wavelength 2πā/n along the
-//! contour). The directions are matched to distinct modes by their largest
-//! components, largest first: near the series' shortest modes, where the
-//! eigenvectors of an elongated contour mix neighbouring modes, the
-//! largest component alone can name one mode for two directions.
+//! and the Hessian is bordered by 2∂F̄/∂u and 2∂F̄/∂δ̄. The eigenproblem is
+//! posed in the metric of the contour's normal motion, H v = λ M v with
+//! M = ∮ V_k V_l ds (δ̄ weighted as a uniform motion): a congruence, so the
+//! signs are the Hessian's, and the directions are orthogonal in how they
+//! move the contour, each one undulation. Each negative eigenvalue is
+//! reported with the contour mode its direction is made of, read from the
+//! spectrum of its normal displacement in the arclength σ (e^{−2πinσ/P}, P
+//! the perimeter): n = 0 the size (under load control also δ̄), n the
+//! radius perturbed by cos nθ, wavelength P/n along the contour. The
+//! directions are matched to distinct modes by their largest relative
+//! amplitudes, largest first. Named by its largest coefficient instead, a
+//! short undulation of an elongated contour in the conformal parameter had
+//! been called n = 2 (ρ = 0.3), and in the coefficients' own metric the
+//! directions mix neighbouring modes.
 //!
 //! At ρ = 1 the Hessian is diagonal in the modes with signs those of
 //! ā²/4 + 1/ā − n/ā (see `tests/exact.rs`): modes with n > ā³/4 + 1 are
@@ -55,7 +61,9 @@ pub struct UnstableMode {
     /// of L (∞ for n = 0, null in JSON; 2πā/n on a circle).
     #[cfg_attr(feature = "schema", schemars(with = "Option<f64>"))]
     pub wavelength: f64,
-    /// The eigenvalue: negative beyond the neutral band; in
+    /// The eigenvalue of the second variation in the metric of the normal
+    /// motion ∮ V² ds (per unit normal displacement; on the circle of
+    /// radius ā, 2(ā³/4 + 1 − n)/ā): negative beyond the neutral band; in
     /// [`ExactStability::neutral_load`] and `neutral_displacement`, zero
     /// within it (either sign).
     pub eigenvalue: f64,
@@ -96,6 +104,18 @@ pub struct ExactStability {
     pub stable_displacement: Option<bool>,
     /// The same under load control.
     pub stable_load: Option<bool>,
+    /// The critical thinness under displacement control: the smallest h/L
+    /// at which every contour mode (n ≥ 1) unstable under this control is
+    /// shorter than the cutoff 2π h/L, so that (2) resolves none of them
+    /// (its longest unstable mode's wavelength over 2π). Below it the model
+    /// predicts a change of shape. Null where no contour mode is unstable;
+    /// the size (n = 0) is in `displacement`, and no thinness stabilises it.
+    pub critical_thinness_displacement: Option<f64>,
+    /// The same under load control: with thinner coatings the state is
+    /// unstable under load above the cutoff, so a contact unloaded through
+    /// states stable above the cutoff does not come to it (docs/exact.md,
+    /// "The short-wave cutoff").
+    pub critical_thinness_load: Option<f64>,
 }
 
 impl Default for ExactStability {
@@ -110,6 +130,8 @@ impl Default for ExactStability {
             cutoff: Cutoff::default(),
             stable_displacement: None,
             stable_load: None,
+            critical_thinness_displacement: None,
+            critical_thinness_load: None,
         }
     }
 }
@@ -141,8 +163,47 @@ impl ExactStability {
         self.stable_displacement = verdict(&self.displacement);
         self.stable_load = verdict(&self.load);
         self.cutoff = cutoff;
+        self.critical_thinness_displacement =
+            longest_contour_mode(&self.displacement).map(critical_thinness);
+        self.critical_thinness_load = longest_contour_mode(&self.load).map(critical_thinness);
         self
     }
+}
+
+impl ExactStability {
+    /// Why the state is doubtful under a control (load or displacement):
+    /// the words of [`Cutoff::unstable_words`] where its verdict there is
+    /// unstable above the cutoff; none where it is stable or not settled.
+    pub(crate) fn doubt(&self, under_load: bool, a_bar: f64) -> Option<String> {
+        let (modes, verdict) = if under_load {
+            (&self.load, self.stable_load)
+        } else {
+            (&self.displacement, self.stable_displacement)
+        };
+        (verdict == Some(false)).then(|| {
+            self.cutoff.unstable_words(
+                under_load,
+                modes.iter().filter(|m| m.resolved && m.n > 0).count(),
+                modes.iter().any(|m| m.n == 0),
+                longest_contour_mode(modes).map(|m| (m.n, m.wavelength)),
+                a_bar,
+            )
+        })
+    }
+}
+
+/// The longest contour mode (n ≥ 1) among `modes`: the first a thicker
+/// coating leaves resolved.
+pub(crate) fn longest_contour_mode(modes: &[UnstableMode]) -> Option<&UnstableMode> {
+    modes
+        .iter()
+        .filter(|m| m.n > 0)
+        .max_by(|a, b| a.wavelength.total_cmp(&b.wavelength))
+}
+
+/// The thinness h/L whose cutoff 2π h/L is `m`'s wavelength.
+pub(crate) fn critical_thinness(m: &UnstableMode) -> f64 {
+    m.wavelength / (2.0 * std::f64::consts::PI)
 }
 
 impl Exact {
@@ -175,9 +236,66 @@ impl Exact {
                 gg.eigenvectors[(r, order[c])]
             }))
         };
-        let unstable = |a: DMatrix<f64>,
-                        with_delta: bool|
-         -> (Vec<UnstableMode>, Vec<UnstableMode>) {
+        // Each direction is named by the contour mode its normal motion is
+        // made of, measured along the contour itself: the normal
+        // displacement V = Re(∂z/∂u · ν̄) of a direction, times the arc
+        // element, expanded in e^{−2πi n σ/P} of the arclength σ (P the
+        // perimeter). A coefficient's index names a wavelength only on a
+        // near-circular contour: on an elongated one the conformal
+        // parameter crowds its points onto the ends, and the largest
+        // coefficient of a short undulation can be a long one's (at ρ = 0.3
+        // a direction of eigenvalue −873 had been named n = 2).
+        let i_unit = nalgebra::Complex::new(0.0, 1.0);
+        let normal = DMatrix::from_fn(n, m, |i, k| {
+            (self.grid.basis[k][i] * i_unit * samples.dz[i].conj()).re * h
+        });
+        let speed: Vec<f64> = samples.dz.iter().map(|d| d.norm()).collect();
+        let metric = {
+            let scaled = DMatrix::from_fn(n, m, |i, k| normal[(i, k)] / (speed[i] * h));
+            normal.transpose() * scaled
+        };
+        let mut sigma = vec![0.0; n];
+        for i in 1..n {
+            sigma[i] = sigma[i - 1] + 0.5 * (speed[i - 1] + speed[i]) * h;
+        }
+        let n_max = mult
+            .iter()
+            .map(|&x| (x - 1.0).abs().round() as usize)
+            .max()
+            .unwrap_or(0);
+        // the even modes of the doubly symmetric class, up to the shortest
+        // the series holds and at most half the points
+        let modes: Vec<usize> = (0..=n_max.min(n / 2)).step_by(2).collect();
+        let fourier = DMatrix::from_fn(2 * modes.len(), n, |r, i| {
+            let phase = 2.0 * std::f64::consts::PI * modes[r / 2] as f64 * sigma[i] / perimeter;
+            if r % 2 == 0 {
+                phase.cos()
+            } else {
+                phase.sin()
+            }
+        });
+        // the amplitude of each mode in each direction (columns of `dirs`,
+        // coefficients first; a δ̄ entry beyond them counts as the size)
+        let spectrum = |dirs: &DMatrix<f64>| -> DMatrix<f64> {
+            let v = &normal * dirs.rows(0, m);
+            let f = &fourier * v;
+            DMatrix::from_fn(modes.len(), dirs.ncols(), |r, c| {
+                let amp = f[(2 * r, c)].hypot(f[(2 * r + 1, c)]);
+                if modes[r] == 0 {
+                    // a constant's cosine sum is twice a mode's; δ̄ moves the
+                    // whole contact as the size does
+                    let delta = if dirs.nrows() > m {
+                        dirs[(m, c)].abs() * perimeter
+                    } else {
+                        0.0
+                    };
+                    0.5 * amp.max(delta)
+                } else {
+                    amp
+                }
+            })
+        };
+        let unstable = |a: DMatrix<f64>| -> (Vec<UnstableMode>, Vec<UnstableMode>) {
             // in the reduced coordinates [Z 0; 0 1], and back
             let lift = restriction.as_ref().map(|z| {
                 let k = z.ncols();
@@ -189,14 +307,31 @@ impl Exact {
                 }
                 t
             });
-            let a = match &lift {
-                Some(t) => t.transpose() * a * t,
-                None => a,
-            };
-            let mut eig = SymmetricEigen::new(sym(a));
-            if let Some(t) = &lift {
-                eig.eigenvectors = t * &eig.eigenvectors;
+            let dim = a.nrows();
+            let t = lift.unwrap_or_else(|| DMatrix::identity(dim, dim));
+            let a = t.transpose() * a * &t;
+            // the eigenproblem in the metric of the normal motion, a v = λ M v
+            // (M = ∮ V_k V_l ds, δ̄ weighted as a uniform motion, ∮ 1 ds):
+            // the same signs (a congruence), and directions orthogonal in
+            // their motion of the contour, so that each is one undulation
+            // whose mode the spectrum below can name
+            let mut metric_full = DMatrix::zeros(dim, dim);
+            metric_full.view_mut((0, 0), (m, m)).copy_from(&metric);
+            for e in m..dim {
+                metric_full[(e, e)] = perimeter;
             }
+            let chol = nalgebra::Cholesky::new(sym(t.transpose() * metric_full * &t));
+            let in_metric = || -> Option<SymmetricEigen<f64, nalgebra::Dyn>> {
+                let l = chol.as_ref()?.l();
+                let x = l.solve_lower_triangular(&a)?;
+                let b = l.solve_lower_triangular(&x.transpose())?;
+                let mut e = SymmetricEigen::new(sym(b));
+                e.eigenvectors = l.transpose().solve_upper_triangular(&e.eigenvectors)?;
+                Some(e)
+            };
+            // (where the metric is singular, the coefficients' own)
+            let mut eig = in_metric().unwrap_or_else(|| SymmetricEigen::new(sym(a.clone())));
+            eig.eigenvectors = &t * &eig.eigenvectors;
             let scale = eig.eigenvalues.amax().max(1e-300);
             // the unstable directions and the neutral ones, which take
             // their modes first (the neutral band, `crate::cutoff::Eigen`)
@@ -204,41 +339,38 @@ impl Exact {
             let negative: Vec<usize> = (0..eig.eigenvalues.len())
                 .filter(|&i| sign(i) != Eigen::Stable)
                 .collect();
-            // the mode of the component k of an eigenvector
-            let mode_of = |k: usize| {
-                if k == 0 || (with_delta && k == m) {
-                    0
-                } else {
-                    // e^{i m θ} perturbs the radius of the circle by cos (m − 1)θ
-                    (mult[k] - 1.0).abs().round() as usize
-                }
-            };
-            // each direction a mode of its own: (direction, component)
-            // pairs taken by decreasing |component|, a pair kept when
+            // the modes' amplitudes in each direction, relative to the
+            // direction's largest
+            let dirs = DMatrix::from_fn(eig.eigenvectors.nrows(), negative.len(), |r, c| {
+                eig.eigenvectors[(r, negative[c])]
+            });
+            let mut amp = spectrum(&dirs);
+            for mut col in amp.column_iter_mut() {
+                let top = col.max().max(1e-300);
+                col /= top;
+            }
+            // each direction a mode of its own: (direction, mode) pairs
+            // taken by decreasing relative amplitude, a pair kept when
             // neither its direction nor its mode is taken yet
-            let dim = eig.eigenvectors.nrows();
-            let mut pairs: Vec<(f64, usize, usize)> = negative
-                .iter()
-                .flat_map(|&i| {
-                    let v = eig.eigenvectors.column(i);
-                    (0..dim).map(move |k| (v[k].abs(), i, k))
-                })
+            let mut pairs: Vec<(f64, usize, usize)> = (0..negative.len())
+                .flat_map(|c| (0..modes.len()).map(move |r| (c, r)))
+                .map(|(c, r)| (amp[(r, c)], c, r))
                 .collect();
             pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
-            let mut label: Vec<Option<usize>> = vec![None; eig.eigenvalues.len()];
+            let mut label: Vec<Option<usize>> = vec![None; negative.len()];
             let mut taken = std::collections::HashSet::new();
-            for (_, i, k) in pairs {
-                let n = mode_of(k);
-                if label[i].is_none() && !taken.contains(&n) {
-                    label[i] = Some(n);
-                    taken.insert(n);
+            for (_, c, r) in pairs {
+                if label[c].is_none() && !taken.contains(&r) {
+                    label[c] = Some(modes[r]);
+                    taken.insert(r);
                 }
             }
             let (mut out, mut neutral): (Vec<(usize, UnstableMode)>, Vec<_>) = negative
                 .iter()
-                .map(|&i| {
-                    // (more directions than modes: its largest component)
-                    let n = label[i].unwrap_or_else(|| mode_of(eig.eigenvectors.column(i).iamax()));
+                .enumerate()
+                .map(|(c, &i)| {
+                    // (more directions than modes: its largest amplitude)
+                    let n = label[c].unwrap_or_else(|| modes[amp.column(c).imax()]);
                     (
                         i,
                         UnstableMode {
@@ -260,15 +392,12 @@ impl Exact {
             (strip(out), strip(neutral))
         };
         // the shortest mode the series holds: e^{imθ} is the radius's cos (m − 1)θ
-        let n_max = mult
-            .iter()
-            .map(|&x| (x - 1.0).abs().round())
-            .fold(1.0, f64::max);
+        let n_max = n_max.max(1) as f64;
         // the two controls' eigenproblems, on both cores
         let ((displacement, neutral_displacement), (load, neutral_load)) = super::both(
             n >= super::TWO_CORES_FROM_POINTS,
-            || unstable(hess.view((0, 0), (m, m)).into_owned(), false),
-            || unstable(hess.clone(), true),
+            || unstable(hess.view((0, 0), (m, m)).into_owned()),
+            || unstable(hess.clone()),
         );
         Ok(ExactStability {
             displacement,
