@@ -123,6 +123,10 @@ def test_exact_stability_counts_the_modes_above_the_cutoff(cli):
     assert (thin.stable_displacement, thin.stable_load) == (False, False)
     assert min(m["n"] for m in thin.unstable_modes_load if m["resolved"]) == 10
     assert close(thin.cutoff["wavelength"], 2 * np.pi * 0.1, 1e-12)
+    # the critical thinness: n = 10's wavelength over 2 pi, a / 10 on the
+    # circle; the state is stable above the cutoff from there on
+    assert close(thin.critical_thinness_load, thin.a_bar / 10, 1e-9)
+    assert close(thin.critical_thinness_displacement, thin.a_bar / 10, 1e-9)
     thick = thinjkr.exact.solve(1.0, force=10.0, modes=12, thinness=0.5)
     assert (thick.stable_displacement, thick.stable_load) == (True, True)
     assert not any(m["resolved"] for m in thick.unstable_modes_load)
