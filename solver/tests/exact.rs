@@ -789,6 +789,21 @@ fn the_pull_off_at_rho_0_2_is_resolved_in_the_arclength_representation() {
     }
 }
 
+/// What the command line prints on stdout for `args`, which must succeed.
+#[cfg(feature = "cli")]
+fn cli_stdout(args: &[&str]) -> String {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
 /// Issue 32: `exact pull-off` says whether a contact unloaded under load
 /// control through states stable above the cutoff can come to the pull-off
 /// it reports, from the state's own stability. At ρ = 0.1 the pull-off is
@@ -802,17 +817,7 @@ fn the_pull_off_at_rho_0_2_is_resolved_in_the_arclength_representation() {
 #[test]
 fn the_pull_off_at_rho_0_1_is_not_reached_by_unloading_below_its_critical_thinness() {
     let run = |extra: &[&str]| -> String {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
-            .args(["exact", "pull-off", "--rho", "0.1"])
-            .args(extra)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8(out.stdout).unwrap()
+        cli_stdout(&[&["exact", "pull-off", "--rho", "0.1"], extra].concat())
     };
     let reached = |text: &str| -> String {
         text.lines()
@@ -885,17 +890,17 @@ fn the_unstable_directions_of_an_elongated_contour_are_named_by_their_motion() {
 #[test]
 fn the_unloading_path_reaches_the_pull_off_at_rho_0_8() {
     let run = |thinness: &str| -> serde_json::Value {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
-            .args(["exact", "pull-off", "--rho", "0.8", "--unloading", "--json"])
-            .args(["--thinness", thinness])
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let doc: serde_json::Value = serde_json::from_str(&cli_stdout(&[
+            "exact",
+            "pull-off",
+            "--rho",
+            "0.8",
+            "--unloading",
+            "--json",
+            "--thinness",
+            thinness,
+        ]))
+        .unwrap();
         doc["passed"]
             .as_array()
             .unwrap()
