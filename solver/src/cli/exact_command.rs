@@ -538,7 +538,14 @@ fn reached_words(po: &crate::exact::ExactState, unloading: bool) -> String {
         "; --unloading follows the path from F = 10 to say whether it does"
     };
     match (stab.stable_load, stab.doubt(true, po.a_bar)) {
-        (Some(false), Some(why)) => format!("no at this thinness: {why}"),
+        (Some(false), Some(why)) => format!(
+            "no at this thinness: {why}{}",
+            if unloading {
+                "; the unloading path from F = 10:"
+            } else {
+                ""
+            }
+        ),
         (Some(true), _) => format!(
             "possibly: it is stable under load control above the short-wave cutoff (h/L = {}{}){then}",
             crate::error::short(stab.cutoff.thinness),
