@@ -78,6 +78,13 @@ impl Cutoff {
         wavelength >= self.wavelength
     }
 
+    /// The thinness h/L whose cutoff is `wavelength` (the inverse of
+    /// [`Cutoff::for_thinness`]'s 2π h/L): a state unstable to a mode of
+    /// that wavelength is stable above the cutoff only from there on.
+    pub(crate) fn thinness_for(wavelength: f64) -> f64 {
+        wavelength / (2.0 * std::f64::consts::PI)
+    }
+
     /// Why a contour state whose verdict under a control is "unstable"
     /// above this cutoff is doubtful, in the words every front end shows:
     /// which modes (2) resolves, the longest (n, wavelength) among the
@@ -106,7 +113,7 @@ impl Cutoff {
         );
         match longest {
             Some((n, wavelength)) if !size_unstable => {
-                let h = wavelength / (2.0 * std::f64::consts::PI);
+                let h = Cutoff::thinness_for(wavelength);
                 format!(
                     "{head} to {resolved} contour mode{}, the longest n = {n} ({wavelength:.3} long): {end}; stable above the cutoff for h/L >= {h:.3} (h/a >= {:.3})",
                     if resolved == 1 { "" } else { "s" },

@@ -532,20 +532,19 @@ fn mode_list(ns: &[usize]) -> String {
 /// the path decides (`--unloading`, whose lines follow).
 fn reached_words(po: &crate::exact::ExactState, unloading: bool) -> String {
     let stab = &po.stability;
-    let then = if unloading {
+    let path = if unloading {
         "; the unloading path from F = 10:"
+    } else {
+        ""
+    };
+    // where the path may end here, how to follow it
+    let then = if unloading {
+        path
     } else {
         "; --unloading follows the path from F = 10 to say whether it does"
     };
     match (stab.stable_load, stab.doubt(true, po.a_bar)) {
-        (Some(false), Some(why)) => format!(
-            "no at this thinness: {why}{}",
-            if unloading {
-                "; the unloading path from F = 10:"
-            } else {
-                ""
-            }
-        ),
+        (Some(false), Some(why)) => format!("no at this thinness: {why}{path}"),
         (Some(true), _) => format!(
             "possibly: it is stable under load control above the short-wave cutoff (h/L = {}{}){then}",
             crate::error::short(stab.cutoff.thinness),

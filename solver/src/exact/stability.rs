@@ -163,14 +163,14 @@ impl ExactStability {
         self.stable_displacement = verdict(&self.displacement);
         self.stable_load = verdict(&self.load);
         self.cutoff = cutoff;
-        self.critical_thinness_displacement =
-            longest_contour_mode(&self.displacement).map(critical_thinness);
-        self.critical_thinness_load = longest_contour_mode(&self.load).map(critical_thinness);
+        let critical = |v: &[UnstableMode]| {
+            longest_contour_mode(v).map(|m| Cutoff::thinness_for(m.wavelength))
+        };
+        self.critical_thinness_displacement = critical(&self.displacement);
+        self.critical_thinness_load = critical(&self.load);
         self
     }
-}
 
-impl ExactStability {
     /// Why the state is doubtful under a control (load or displacement):
     /// the words of [`Cutoff::unstable_words`] where its verdict there is
     /// unstable above the cutoff; none where it is stable or not settled.
@@ -194,16 +194,11 @@ impl ExactStability {
 
 /// The longest contour mode (n ≥ 1) among `modes`: the first a thicker
 /// coating leaves resolved.
-pub(crate) fn longest_contour_mode(modes: &[UnstableMode]) -> Option<&UnstableMode> {
+fn longest_contour_mode(modes: &[UnstableMode]) -> Option<&UnstableMode> {
     modes
         .iter()
         .filter(|m| m.n > 0)
         .max_by(|a, b| a.wavelength.total_cmp(&b.wavelength))
-}
-
-/// The thinness h/L whose cutoff 2π h/L is `m`'s wavelength.
-pub(crate) fn critical_thinness(m: &UnstableMode) -> f64 {
-    m.wavelength / (2.0 * std::f64::consts::PI)
 }
 
 impl Exact {
