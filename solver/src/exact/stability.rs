@@ -290,7 +290,8 @@ impl Exact {
                 }
             })
         };
-        let unstable = |a: DMatrix<f64>| -> (Vec<UnstableMode>, Vec<UnstableMode>) {
+        // (none where the metric or its triangular solves are singular)
+        let unstable = |a: DMatrix<f64>| -> Option<(Vec<UnstableMode>, Vec<UnstableMode>)> {
             // in the reduced coordinates [Z 0; 0 1], and back
             let lift = restriction.as_ref().map(|z| {
                 let k = z.ncols();
@@ -324,8 +325,7 @@ impl Exact {
                 e.eigenvectors = l.transpose().solve_upper_triangular(&e.eigenvectors)?;
                 Some(e)
             };
-            // (where the metric is singular, the coefficients' own)
-            let mut eig = in_metric().unwrap_or_else(|| SymmetricEigen::new(sym(a.clone())));
+            let mut eig = in_metric()?;
             eig.eigenvectors = &t * &eig.eigenvectors;
             let scale = eig.eigenvalues.amax().max(1e-300);
             // the unstable directions and the neutral ones, which take
@@ -384,16 +384,23 @@ impl Exact {
             out.sort_by_key(|u| u.1.n);
             neutral.sort_by_key(|u| u.1.n);
             let strip = |v: Vec<(usize, UnstableMode)>| v.into_iter().map(|u| u.1).collect();
-            (strip(out), strip(neutral))
+            Some((strip(out), strip(neutral)))
         };
         // the shortest mode the series holds: e^{imθ} is the radius's cos (m − 1)θ
         let n_max = n_max.max(1) as f64;
         // the two controls' eigenproblems, on both cores
-        let ((displacement, neutral_displacement), (load, neutral_load)) = super::both(
+        let (by_displacement, by_load) = super::both(
             n >= super::TWO_CORES_FROM_POINTS,
             || unstable(hess.view((0, 0), (m, m)).into_owned()),
             || unstable(hess.clone()),
         );
+        let singular = || {
+            Error::NoState(
+                "exact stability: the metric of the contour's normal motion is singular".into(),
+            )
+        };
+        let (displacement, neutral_displacement) = by_displacement.ok_or_else(singular)?;
+        let (load, neutral_load) = by_load.ok_or_else(singular)?;
         Ok(ExactStability {
             displacement,
             load,
