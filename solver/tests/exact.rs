@@ -969,3 +969,56 @@ fn the_small_contacts_table_of_the_docs_is_the_solvers() {
         }
     }
 }
+
+/// docs/exact.md, "A pull-off unstable under load is not where unloading
+/// ends": every entry of its table of the pull-offs' critical thinness is
+/// the solver's `critical_thinness_load` at that ρ to the printed digits,
+/// and its longest unstable mode is n = 6, or n = 4 where the table marks
+/// the name as uncertain ("(n = 4?)").
+#[test]
+fn the_critical_thinness_table_of_the_docs_is_the_solvers() {
+    let doc =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md")).unwrap();
+    let from = doc
+        .find("**A pull-off unstable under load is not where unloading ends.**")
+        .expect("the paragraph");
+    let cells = |prefix: &str| -> Vec<String> {
+        let line = doc[from..]
+            .lines()
+            .find(|l| l.starts_with(prefix))
+            .unwrap_or_else(|| panic!("no row {prefix}"));
+        line.trim_matches(|c| c == '|' || c == ' ')
+            .split(" | ")
+            .skip(1)
+            .map(str::to_string)
+            .collect()
+    };
+    let rhos = cells("| ρ |");
+    let printed = cells("| critical h/L |");
+    assert_eq!((rhos.len(), printed.len()), (12, 12));
+    for (rho, entry) in rhos.iter().zip(&printed) {
+        let rho: f64 = rho.parse().unwrap();
+        let (value, n) = match entry.split_once(" (n = 4?)") {
+            Some((v, _)) => (v, 4),
+            None => (entry.as_str(), 6),
+        };
+        let value: f64 = value.parse().unwrap();
+        let (st, _) = thinjkr::exact::pull_off_resolved(rho).unwrap();
+        let h = st
+            .stability
+            .critical_thinness_load
+            .expect("a contour mode unstable");
+        assert!(
+            (h - value).abs() <= 5e-4,
+            "rho = {rho}: printed {value}, solved {h}"
+        );
+        let longest = st
+            .stability
+            .load
+            .iter()
+            .filter(|m| m.n > 0)
+            .max_by(|a, b| a.wavelength.total_cmp(&b.wavelength))
+            .unwrap();
+        assert_eq!(longest.n, n, "rho = {rho}");
+    }
+}
