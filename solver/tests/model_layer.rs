@@ -205,7 +205,27 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
         g2: 1e6,
         work_of_adhesion: 0.05,
     };
-    for theta in [16.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0] {
+    // docs/exact.md's table of these angles: h/L and the answer's critical
+    // thinness under load ("stable" where a conformal:8 state is)
+    let doc =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md")).unwrap();
+    let row = |prefix: &str| -> Vec<String> {
+        let from = doc.find("| θ | 16° |").expect("the table of angles");
+        let line = doc[from..]
+            .lines()
+            .find(|l| l.starts_with(prefix))
+            .unwrap_or_else(|| panic!("no row {prefix}"));
+        line.trim_matches(|c| c == '|' || c == ' ')
+            .split(" | ")
+            .skip(1)
+            .map(str::to_string)
+            .collect()
+    };
+    let (thinness, critical) = (row("| h/L |"), row("| critical h/L |"));
+    for (k, theta) in [16.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0]
+        .into_iter()
+        .enumerate()
+    {
         let cyl = at(theta);
         let rho = cyl.scales().unwrap().rho;
         let answer = thinjkr::registry::physical(None, &cyl, None, None).unwrap();
@@ -237,6 +257,30 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
             .iter()
             .any(|w| w.starts_with("unstable under load control above the short-wave cutoff"));
         assert_eq!(said, unstable, "theta {theta}: {:?}", answer.warnings);
+        let (cutoff, critical_h) = match &answer.state {
+            AnyState::Exact(st) => (st.stability.cutoff, st.stability.critical_thinness_load),
+            AnyState::Conformal(st) => (st.cutoff, None),
+            _ => unreachable!("a contour model answers"),
+        };
+        let printed: f64 = thinness[k].parse().unwrap();
+        assert!(
+            (cutoff.thinness - printed).abs() <= 5e-4,
+            "theta {theta}: h/L {}",
+            cutoff.thinness
+        );
+        match critical[k].as_str() {
+            "stable" => assert!(!unstable && answer.model == "conformal:8", "theta {theta}"),
+            v => {
+                let (v, h) = (
+                    v.parse::<f64>().unwrap(),
+                    critical_h.expect("a critical thinness"),
+                );
+                assert!(
+                    (h - v).abs() <= 5e-4,
+                    "theta {theta}: printed {v}, solved {h}"
+                );
+            }
+        }
         // the 30-degree example: h/L = 0.373, below the critical
         // thinness of its n = 2 mode; at 60 degrees stable above the cutoff
         if theta == 30.0 || theta == 60.0 {
