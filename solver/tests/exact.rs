@@ -3,6 +3,8 @@
 //! derived by hand, its own convergence in the truncation, and a second,
 //! independent route to F̄ and to the equation Δp̄ = X²/2 + Y²/(2ρ) − δ̄.
 
+mod docs_tables;
+
 use std::f64::consts::PI;
 use thinjkr::exact::branch::Event;
 use thinjkr::exact::{Contour, Exact, Truncation};
@@ -977,24 +979,9 @@ fn the_small_contacts_table_of_the_docs_is_the_solvers() {
 /// the name as uncertain ("(n = 4?)").
 #[test]
 fn the_critical_thinness_table_of_the_docs_is_the_solvers() {
-    let doc =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md")).unwrap();
-    let from = doc
-        .find("**A pull-off unstable under load is not where unloading ends.**")
-        .expect("the paragraph");
-    let cells = |prefix: &str| -> Vec<String> {
-        let line = doc[from..]
-            .lines()
-            .find(|l| l.starts_with(prefix))
-            .unwrap_or_else(|| panic!("no row {prefix}"));
-        line.trim_matches(|c| c == '|' || c == ' ')
-            .split(" | ")
-            .skip(1)
-            .map(str::to_string)
-            .collect()
-    };
-    let rhos = cells("| ρ |");
-    let printed = cells("| critical h/L |");
+    let anchor = "**A pull-off unstable under load is not where unloading ends.**";
+    let rhos = docs_tables::row(anchor, "| ρ |");
+    let printed = docs_tables::row(anchor, "| critical h/L |");
     assert_eq!((rhos.len(), printed.len()), (12, 12));
     for (rho, entry) in rhos.iter().zip(&printed) {
         let rho: f64 = rho.parse().unwrap();

@@ -3,6 +3,8 @@
 //! answers (the same bits), and saying in a typed error what a kind does not
 //! have.
 
+mod docs_tables;
+
 use thinjkr::conformal::Conformal;
 use thinjkr::control::Hold;
 use thinjkr::fold::FoldCondition;
@@ -207,21 +209,10 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
     };
     // docs/exact.md's table of these angles: h/L and the answer's critical
     // thinness under load ("stable" where a conformal:8 state is)
-    let doc =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md")).unwrap();
-    let row = |prefix: &str| -> Vec<String> {
-        let from = doc.find("| θ | 16° |").expect("the table of angles");
-        let line = doc[from..]
-            .lines()
-            .find(|l| l.starts_with(prefix))
-            .unwrap_or_else(|| panic!("no row {prefix}"));
-        line.trim_matches(|c| c == '|' || c == ' ')
-            .split(" | ")
-            .skip(1)
-            .map(str::to_string)
-            .collect()
-    };
-    let (thinness, critical) = (row("| h/L |"), row("| critical h/L |"));
+    let (thinness, critical) = (
+        docs_tables::row("| θ | 16° |", "| h/L |"),
+        docs_tables::row("| θ | 16° |", "| critical h/L |"),
+    );
     for (k, theta) in [16.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0]
         .into_iter()
         .enumerate()
