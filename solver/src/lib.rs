@@ -23,6 +23,7 @@ pub mod cli;
 pub mod conformal;
 pub mod contact;
 pub(crate) mod continuation;
+pub(crate) mod contour_modes;
 pub mod control;
 pub mod curve;
 pub mod cutoff;

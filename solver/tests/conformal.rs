@@ -127,6 +127,29 @@ fn unstable_modes_agree_with_the_exact_solver() {
     assert_eq!(c.unstable_modes, exact_modes(&e), "zero force at rho = 0.8");
 }
 
+/// On an elongated contour the members name an unstable direction by the
+/// mode its normal motion is made of along the contour, as the exact
+/// solver does (`contour_modes`), not by its largest coefficient: at the
+/// pull-off at ρ = 0.3 (b/a = 0.63, 1 % from the exact F̄) conformal:8 had
+/// reported cos 4θ, 6θ, 10θ, 12θ, 14θ, where the exact pull-off is
+/// unstable to every even mode from 6 on. Now both controls give the exact
+/// state's modes up to 14, the highest the member carries.
+#[test]
+fn the_unstable_modes_of_an_elongated_member_are_the_exact_states() {
+    let (e, _) = exact::pull_off_resolved(0.3).unwrap();
+    let (c, _) = Conformal::member("conformal", 8)
+        .unwrap()
+        .pull_off(0.3, FoldCondition::Load)
+        .unwrap();
+    assert!((c.force_bar / e.force_bar - 1.0).abs() < 0.02, "{c:?}");
+    let upto_14 = |v: &[exact::stability::UnstableMode]| -> Vec<u32> {
+        v.iter().map(|u| u.n as u32).filter(|&n| n <= 14).collect()
+    };
+    assert_eq!(c.unstable_modes, upto_14(&e.stability.displacement));
+    assert_eq!(c.unstable_modes_load, upto_14(&e.stability.load));
+    assert_eq!(c.unstable_modes, [6, 8, 10, 12, 14]);
+}
+
 /// Issue 31, item 1: conformal:K's displacement-controlled end moved with K
 /// (F̄ = −3.226, −4.173, −4.185, −3.994, −4.001, −3.672, −3.675 for K =
 /// 2 … 8 at ρ = 0.8), because a member with modes up to n = 2K − 2 loses

@@ -27,7 +27,8 @@
 //! tables), `error`, `equations`, `newton`, `model` (Brent's minimisation),
 //! `curve` (the bound on a curve's points), `batch` (quoting what was
 //! typed), `exact` (a family's gap as the exact solver reads it), `cutoff` (the
-//! short-wave cutoff of the stability verdicts), nalgebra.
+//! short-wave cutoff of the stability verdicts), `contour_modes` (the
+//! stability's eigenproblem and the modes' names), nalgebra.
 
 pub(crate) mod load;
 mod seed;
@@ -36,8 +37,9 @@ pub(crate) use seed::seeding_family;
 pub mod poly;
 mod trace;
 
+use crate::contour_modes::NormalMotion;
 use crate::control::Hold;
-use crate::cutoff::{Cutoff, Eigen};
+use crate::cutoff::Cutoff;
 use crate::equations::held;
 use crate::error::{check_range, short, Error, Result};
 use crate::fold::FoldCondition;
@@ -1430,8 +1432,9 @@ impl Conformal {
         let n = k + 1;
         let h = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
         let hcc = h.view((0, 0), (k, k)).into_owned();
-        let (modes, neutral) = self.modes(&hcc, false);
-        let (modes_load, neutral_load) = self.modes(&h, true);
+        let motion = self.normal_motion(c);
+        let (modes, neutral) = self.modes(&motion, &hcc)?;
+        let (modes_load, neutral_load) = self.modes(&motion, &h)?;
         let force = e.grad[k];
         let bc_defect = self.bc_defect(x, rho);
         let out = ConformalState {
@@ -1450,7 +1453,7 @@ impl Conformal {
             unstable_modes_load: modes_load,
             neutral_modes: neutral,
             neutral_modes_load: neutral_load,
-            perimeter: self.perimeter(c),
+            perimeter: motion.perimeter(),
             cutoff: Cutoff::default(),
             warnings: doubts(rho, a, b, bc_defect),
             folds_crossed: None,
@@ -1470,55 +1473,63 @@ impl Conformal {
     }
 
     /// Stability under displacement control and the contour modes of the
-    /// negative eigenvectors of ∂²Π̄/∂c²: a perturbation δc changes the
-    /// contour's radius by Re(δw(e^{iθ}) e^{−iθ}) = Σ δc_k cos((n_k − 1)θ),
-    /// so the mode of c_k is n_k − 1; each negative eigenvector reports the
-    /// mode of its largest component.
-    /// With `with_delta` the Hessian is bordered by δ̄ (load control),
-    /// whose component counts as the size, n = 0. Returns the unstable
-    /// modes and, apart, the neutral ones (`crate::cutoff::Eigen`).
-    fn modes(&self, h: &DMatrix<f64>, with_delta: bool) -> (Vec<u32>, Vec<u32>) {
-        let eig = h.clone().symmetric_eigen();
-        let top = eig.eigenvalues.amax().max(1e-300);
-        let (mut unstable, mut neutral) = (Vec::new(), Vec::new());
-        for (i, &l) in eig.eigenvalues.iter().enumerate() {
-            let n = || self.mode_of(eig.eigenvectors.column(i).iamax(), with_delta);
-            match Eigen::of(l, top) {
-                Eigen::Unstable => unstable.push(n()),
-                Eigen::Neutral => neutral.push(n()),
-                Eigen::Stable => {}
+    /// negative eigenvectors of ∂²Π̄/∂c²; with `with_delta` the Hessian
+    /// bordered by δ̄ (load control), which counts as the size, n = 0.
+    /// Each direction is named by the contour mode its normal motion is
+    /// made of along the contour (`crate::contour_modes`), not by its
+    /// largest coefficient: c_k moves the radius by cos((n_k − 1)θ) only on
+    /// the circle. Returns the unstable modes and, apart, the neutral ones
+    /// (`crate::cutoff::Eigen`); an error where the metric of the normal
+    /// motion is singular.
+    fn modes(&self, motion: &NormalMotion, h: &DMatrix<f64>) -> Result<(Vec<u32>, Vec<u32>)> {
+        let (unstable, neutral) = motion.directions(h, None).ok_or_else(|| {
+            Error::NoState(format!(
+                "{}: the metric of the contour's normal motion is singular",
+                self.name()
+            ))
+        })?;
+        let n =
+            |v: Vec<crate::contour_modes::NamedDirection>| v.iter().map(|d| d.n as u32).collect();
+        Ok((n(unstable), n(neutral)))
+    }
+
+    /// How the map's coefficients move the contour: the normal
+    /// displacement of c_k, Re(ζ^(n_k) conj(ζ w′(ζ))) / |w′(ζ)|, at
+    /// [`MOTION_ANGLES`] angles (the contour counter-clockwise, its
+    /// outward normal ζ w′/|w′|).
+    fn normal_motion(&self, c: &[f64]) -> NormalMotion {
+        let angles = MOTION_ANGLES;
+        let mut normal_speed = DMatrix::zeros(angles, c.len());
+        let mut speed = vec![0.0; angles];
+        for j in 0..angles {
+            let t = 2.0 * std::f64::consts::PI * j as f64 / angles as f64;
+            let (_, dw) = self.map(c, (t.cos(), t.sin()));
+            speed[j] = dw.0.hypot(dw.1);
+            // ζ w′(ζ), conjugated below
+            let zdw = (
+                t.cos() * dw.0 - t.sin() * dw.1,
+                t.cos() * dw.1 + t.sin() * dw.0,
+            );
+            for (k, &p) in self.tables.powers.iter().enumerate().take(c.len()) {
+                let phase = p as f64 * t;
+                normal_speed[(j, k)] = phase.cos() * zdw.0 + phase.sin() * zdw.1;
             }
         }
-        unstable.sort_unstable();
-        neutral.sort_unstable();
-        (unstable, neutral)
-    }
-
-    /// The contour mode of unknown `k` (c_k moves the radius by
-    /// cos((n_k − 1)θ)); with `with_delta`, δ̄ (k = K) counts as the size.
-    fn mode_of(&self, k: usize, with_delta: bool) -> u32 {
-        if with_delta && k == self.terms() {
-            0
-        } else {
-            self.tables.powers[k] as u32 - 1
-        }
-    }
-
-    /// The perimeter ∮|w′(e^{iθ})| dθ of the contour (the trapezoidal rule
-    /// on 512 angles: spectrally accurate for the periodic integrand).
-    fn perimeter(&self, c: &[f64]) -> f64 {
-        const ANGLES: usize = 512;
-        let h = 2.0 * std::f64::consts::PI / ANGLES as f64;
-        (0..ANGLES)
-            .map(|j| {
-                let t = h * j as f64;
-                let (_, dw) = self.map(c, (t.cos(), t.sin()));
-                dw.0.hypot(dw.1)
-            })
-            .sum::<f64>()
-            * h
+        let n_max = self
+            .tables
+            .powers
+            .iter()
+            .take(c.len())
+            .max()
+            .map_or(0, |&p| p as usize - 1);
+        NormalMotion::new(normal_speed, &speed, n_max)
     }
 }
+
+/// The angles at which a state's contour motion and perimeter are sampled
+/// (the trapezoidal rule, spectrally accurate for the periodic integrands;
+/// the modes read reach n = 2K − 2).
+const MOTION_ANGLES: usize = 512;
 
 /// Steps ρ from `from` down to `to`, each step at most `max_step`: grown by
 /// 1.5 after a step `advance(ρ, ρ_next)` takes (it returns whether it did),

@@ -15,19 +15,12 @@
 //! state is stable when the Hessian in the coefficients is positive
 //! definite; under load control the potential is Π̄ − 2F̄δ̄ with δ̄ free,
 //! and the Hessian is bordered by 2∂F̄/∂u and 2∂F̄/∂δ̄. The eigenproblem is
-//! posed in the metric of the contour's normal motion, H v = λ M v with
-//! M = ∮ V_k V_l ds (δ̄ weighted as a uniform motion): a congruence, so the
-//! signs are the Hessian's, and the directions are orthogonal in how they
-//! move the contour, each one undulation. Each negative eigenvalue is
-//! reported with the contour mode its direction is made of, read from the
-//! spectrum of its normal displacement in the arclength σ (e^{−2πinσ/P}, P
-//! the perimeter): n = 0 the size (under load control also δ̄), n the
-//! radius perturbed by cos nθ, wavelength P/n along the contour. The
-//! directions are matched to distinct modes by their largest relative
-//! amplitudes, largest first. Named by its largest coefficient instead, a
-//! short undulation of an elongated contour in the conformal parameter had
-//! been called n = 2 (ρ = 0.3), and in the coefficients' own metric the
-//! directions mix neighbouring modes.
+//! posed in the metric of the contour's normal motion, and each negative
+//! eigenvalue is reported with the contour mode its direction is made of,
+//! read from the spectrum of its normal displacement along the contour
+//! (`crate::contour_modes`): n = 0 the size (under load control also δ̄),
+//! n the radius perturbed by cos nθ, wavelength P/n along the contour (P
+//! the perimeter).
 //!
 //! At ρ = 1 the Hessian is diagonal in the modes with signs those of
 //! ā²/4 + 1/ā − n/ā (see `tests/exact.rs`): modes with n > ā³/4 + 1 are
@@ -42,10 +35,13 @@
 //! only the resolved modes: [`Cutoff::default`] when the state is solved,
 //! the user's thinness through [`ExactStability::under`].
 //!
-//! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, `error`, `cutoff`, nalgebra.
+//! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, `error`, `cutoff`, `contour_modes` (the
+//! eigenproblem in the metric of the normal motion and the modes' names),
+//! nalgebra.
 
 use super::{Exact, ExactState};
-use crate::cutoff::{Cutoff, Eigen};
+use crate::contour_modes::{NamedDirection, NormalMotion};
+use crate::cutoff::Cutoff;
 use crate::error::{Error, Result};
 use nalgebra::{DMatrix, SymmetricEigen};
 use serde::Serialize;
@@ -211,9 +207,6 @@ impl Exact {
         let hess = self.bordered_hessian(&u).ok_or_else(err)?;
         let samples = st.contour.samples(&self.grid);
         let n = self.grid.len();
-        let h = 2.0 * std::f64::consts::PI / n as f64;
-        let perimeter: f64 = samples.dz.iter().map(|d| d.norm()).sum::<f64>() * h;
-        let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
         // the arclength representation: the Hessian on the directions that
         // keep θ proportional to arclength (the null space Z of the gauge
         // rows' Jacobian; a reparametrisation does not move the contour)
@@ -232,159 +225,32 @@ impl Exact {
             }))
         };
         // Each direction is named by the contour mode its normal motion is
-        // made of, measured along the contour itself: the normal
-        // displacement V = Re(∂z/∂u · ν̄) of a direction, times the arc
-        // element, expanded in e^{−2πi n σ/P} of the arclength σ (P the
-        // perimeter). A coefficient's index names a wavelength only on a
-        // near-circular contour: on an elongated one the conformal
-        // parameter crowds its points onto the ends, and the largest
-        // coefficient of a short undulation can be a long one's (at ρ = 0.3
-        // a direction of eigenvalue −873 had been named n = 2).
+        // made of, measured along the contour itself (`crate::contour_modes`).
         let i_unit = nalgebra::Complex::new(0.0, 1.0);
-        let normal = DMatrix::from_fn(n, m, |i, k| {
-            (self.grid.basis[k][i] * i_unit * samples.dz[i].conj()).re * h
+        let normal_speed = DMatrix::from_fn(n, m, |i, k| {
+            (self.grid.basis[k][i] * i_unit * samples.dz[i].conj()).re
         });
         let speed: Vec<f64> = samples.dz.iter().map(|d| d.norm()).collect();
-        let metric = {
-            let scaled = DMatrix::from_fn(n, m, |i, k| normal[(i, k)] / (speed[i] * h));
-            normal.transpose() * scaled
-        };
-        let mut sigma = vec![0.0; n];
-        for i in 1..n {
-            sigma[i] = sigma[i - 1] + 0.5 * (speed[i - 1] + speed[i]) * h;
-        }
         let n_max = mult
             .iter()
             .map(|&x| (x - 1.0).abs().round() as usize)
             .max()
             .unwrap_or(0);
-        // the even modes of the doubly symmetric class, up to the shortest
-        // the series holds and at most half the points
-        let modes: Vec<usize> = (0..=n_max.min(n / 2)).step_by(2).collect();
-        let fourier = DMatrix::from_fn(2 * modes.len(), n, |r, i| {
-            let phase = 2.0 * std::f64::consts::PI * modes[r / 2] as f64 * sigma[i] / perimeter;
-            if r % 2 == 0 {
-                phase.cos()
-            } else {
-                phase.sin()
-            }
-        });
-        // the amplitude of each mode in each direction (columns of `dirs`,
-        // coefficients first; a δ̄ entry beyond them counts as the size)
-        let spectrum = |dirs: &DMatrix<f64>| -> DMatrix<f64> {
-            let v = &normal * dirs.rows(0, m);
-            let f = &fourier * v;
-            DMatrix::from_fn(modes.len(), dirs.ncols(), |r, c| {
-                let amp = f[(2 * r, c)].hypot(f[(2 * r + 1, c)]);
-                if modes[r] == 0 {
-                    // a constant's cosine sum is twice a mode's; δ̄ moves the
-                    // whole contact as the size does
-                    let delta = if dirs.nrows() > m {
-                        dirs[(m, c)].abs() * perimeter
-                    } else {
-                        0.0
-                    };
-                    0.5 * amp.max(delta)
-                } else {
-                    amp
-                }
-            })
-        };
-        // (none where the metric or its triangular solves are singular)
+        let motion = NormalMotion::new(normal_speed, &speed, n_max);
+        let perimeter = motion.perimeter();
         let unstable = |a: DMatrix<f64>| -> Option<(Vec<UnstableMode>, Vec<UnstableMode>)> {
-            // in the reduced coordinates [Z 0; 0 1], and back
-            let lift = restriction.as_ref().map(|z| {
-                let k = z.ncols();
-                let extra = a.nrows() - m;
-                let mut t = DMatrix::zeros(m + extra, k + extra);
-                t.view_mut((0, 0), (m, k)).copy_from(z);
-                for e in 0..extra {
-                    t[(m + e, k + e)] = 1.0;
-                }
-                t
-            });
-            let dim = a.nrows();
-            let t = lift.unwrap_or_else(|| DMatrix::identity(dim, dim));
-            let a = t.transpose() * a * &t;
-            // the eigenproblem in the metric of the normal motion, a v = λ M v
-            // (M = ∮ V_k V_l ds, δ̄ weighted as a uniform motion, ∮ 1 ds):
-            // the same signs (a congruence), and directions orthogonal in
-            // their motion of the contour, so that each is one undulation
-            // whose mode the spectrum below can name
-            let mut metric_full = DMatrix::zeros(dim, dim);
-            metric_full.view_mut((0, 0), (m, m)).copy_from(&metric);
-            for e in m..dim {
-                metric_full[(e, e)] = perimeter;
-            }
-            let chol = nalgebra::Cholesky::new(sym(t.transpose() * metric_full * &t));
-            let in_metric = || -> Option<SymmetricEigen<f64, nalgebra::Dyn>> {
-                let l = chol.as_ref()?.l();
-                let x = l.solve_lower_triangular(&a)?;
-                let b = l.solve_lower_triangular(&x.transpose())?;
-                let mut e = SymmetricEigen::new(sym(b));
-                e.eigenvectors = l.transpose().solve_upper_triangular(&e.eigenvectors)?;
-                Some(e)
+            let (out, neutral) = motion.directions(&a, restriction.as_ref())?;
+            let named = |v: Vec<NamedDirection>| {
+                v.into_iter()
+                    .map(|d| UnstableMode {
+                        n: d.n,
+                        wavelength: d.wavelength,
+                        eigenvalue: d.eigenvalue,
+                        resolved: true,
+                    })
+                    .collect()
             };
-            let mut eig = in_metric()?;
-            eig.eigenvectors = &t * &eig.eigenvectors;
-            let scale = eig.eigenvalues.amax().max(1e-300);
-            // the unstable directions and the neutral ones, which take
-            // their modes first (the neutral band, `crate::cutoff::Eigen`)
-            let sign = |i: usize| Eigen::of(eig.eigenvalues[i], scale);
-            let negative: Vec<usize> = (0..eig.eigenvalues.len())
-                .filter(|&i| sign(i) != Eigen::Stable)
-                .collect();
-            // the modes' amplitudes in each direction, relative to the
-            // direction's largest
-            let dirs = DMatrix::from_fn(eig.eigenvectors.nrows(), negative.len(), |r, c| {
-                eig.eigenvectors[(r, negative[c])]
-            });
-            let mut amp = spectrum(&dirs);
-            for mut col in amp.column_iter_mut() {
-                let top = col.max().max(1e-300);
-                col /= top;
-            }
-            // each direction a mode of its own: (direction, mode) pairs
-            // taken by decreasing relative amplitude, a pair kept when
-            // neither its direction nor its mode is taken yet
-            let mut pairs: Vec<(f64, usize, usize)> = (0..negative.len())
-                .flat_map(|c| (0..modes.len()).map(move |r| (c, r)))
-                .map(|(c, r)| (amp[(r, c)], c, r))
-                .collect();
-            pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
-            let mut label: Vec<Option<usize>> = vec![None; negative.len()];
-            let mut taken = std::collections::HashSet::new();
-            for (_, c, r) in pairs {
-                if label[c].is_none() && !taken.contains(&r) {
-                    label[c] = Some(modes[r]);
-                    taken.insert(r);
-                }
-            }
-            let (mut out, mut neutral): (Vec<(usize, UnstableMode)>, Vec<_>) = negative
-                .iter()
-                .enumerate()
-                .map(|(c, &i)| {
-                    // (more directions than modes: its largest amplitude)
-                    let n = label[c].unwrap_or_else(|| modes[amp.column(c).imax()]);
-                    (
-                        i,
-                        UnstableMode {
-                            n,
-                            wavelength: if n == 0 {
-                                f64::INFINITY
-                            } else {
-                                perimeter / n as f64
-                            },
-                            eigenvalue: eig.eigenvalues[i],
-                            resolved: true,
-                        },
-                    )
-                })
-                .partition(|&(i, _)| sign(i) == Eigen::Unstable);
-            out.sort_by_key(|u| u.1.n);
-            neutral.sort_by_key(|u| u.1.n);
-            let strip = |v: Vec<(usize, UnstableMode)>| v.into_iter().map(|u| u.1).collect();
-            Some((strip(out), strip(neutral)))
+            Some((named(out), named(neutral)))
         };
         // the shortest mode the series holds: e^{imθ} is the radius's cos (m − 1)θ
         let n_max = n_max.max(1) as f64;

@@ -1,0 +1,222 @@
+//! Which contour mode a direction of a contour state's second variation
+//! is: the eigenproblem in the metric of the contour's normal motion and
+//! the naming of its directions by their spectrum along the contour,
+//! written once for every contour representation (the exact solver's
+//! series and the `conformal:K` maps).
+//!
+//! A representation gives, for each of its contour unknowns u_k, the
+//! normal displacement V_k = Re(∂z/∂u_k · ν̄) it causes at n equally spaced
+//! values of its parameter, and the speed |z′| there. The eigenproblem of
+//! a Hessian H (the contour unknowns first, then any others, such as δ̄
+//! under load control) is posed as H v = λ M v with M = ∮ V_k V_l ds, each
+//! further unknown weighted as a uniform motion of the contour (∮ 1 ds):
+//! a congruence, so the signs and every verdict's count are H's, and the
+//! directions are orthogonal in how they move the contour, each one
+//! undulation. Each is named by the spectrum of its normal displacement in
+//! the arclength σ (e^{−2πinσ/P}, P the perimeter): n = 0 the size (or a
+//! further unknown), n the radius perturbed by cos nθ, wavelength P/n.
+//! The directions are matched to distinct modes by their largest relative
+//! amplitudes, largest first.
+//!
+//! A coefficient's index names a wavelength only on a near-circular
+//! contour: on an elongated one a parameter that crowds its points onto
+//! the ends (the conformal map's) gives a short undulation a large
+//! coefficient of a long mode. Named by its largest coefficient, a
+//! direction of eigenvalue −873 at the exact pull-off at ρ = 0.3 had been
+//! called n = 2, and `conformal:8` there had reported cos 4θ and no cos 8θ.
+//!
+//! Owns: [`NormalMotion`], [`NamedDirection`]. May use: `cutoff` (the
+//! neutral band), nalgebra.
+
+use crate::cutoff::Eigen;
+use nalgebra::{Cholesky, DMatrix, Dyn, SymmetricEigen};
+
+/// One direction of negative or zero eigenvalue, with its contour mode.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct NamedDirection {
+    /// The contour mode: the radius perturbed by cos nθ (0: the size).
+    pub(crate) n: usize,
+    /// The perimeter over n (∞ for n = 0).
+    pub(crate) wavelength: f64,
+    /// The eigenvalue per unit normal displacement (H v = λ M v).
+    pub(crate) eigenvalue: f64,
+}
+
+/// The unstable and the neutral directions of one Hessian, each list in
+/// increasing n (`crate::cutoff::Eigen`).
+pub(crate) type Directions = (Vec<NamedDirection>, Vec<NamedDirection>);
+
+/// How a representation's contour unknowns move its contour.
+pub(crate) struct NormalMotion {
+    /// V_k |z′| h at the n parameter points (n × m): each column the
+    /// normal displacement of one unknown times the arc element.
+    normal: DMatrix<f64>,
+    /// M = ∮ V_k V_l ds (m × m).
+    metric: DMatrix<f64>,
+    perimeter: f64,
+    /// The even modes of the doubly symmetric class the spectrum reads.
+    modes: Vec<usize>,
+    /// cos and sin of 2π n σ/P at the points, two rows per mode.
+    fourier: DMatrix<f64>,
+}
+
+impl NormalMotion {
+    /// From `normal_speed[(i, k)]` = V_k(t_i) |z′(t_i)| = Re(∂z/∂u_k ·
+    /// conj(−i z′)) (z′ = dz/dt, the contour counter-clockwise) of the m
+    /// contour unknowns and the speed |z′(t_i)| at n points t_i = 2πi/n,
+    /// reading the modes up to `n_max` (the shortest the representation
+    /// holds) and at most n/2.
+    pub(crate) fn new(normal_speed: DMatrix<f64>, speed: &[f64], n_max: usize) -> NormalMotion {
+        let n = speed.len();
+        let h = 2.0 * std::f64::consts::PI / n as f64;
+        let normal = normal_speed * h;
+        let scaled = DMatrix::from_fn(n, normal.ncols(), |i, k| normal[(i, k)] / (speed[i] * h));
+        let metric = normal.transpose() * scaled;
+        let perimeter: f64 = speed.iter().sum::<f64>() * h;
+        let mut sigma = vec![0.0; n];
+        for i in 1..n {
+            sigma[i] = sigma[i - 1] + 0.5 * (speed[i - 1] + speed[i]) * h;
+        }
+        let modes: Vec<usize> = (0..=n_max.min(n / 2)).step_by(2).collect();
+        let fourier = DMatrix::from_fn(2 * modes.len(), n, |r, i| {
+            let phase = 2.0 * std::f64::consts::PI * modes[r / 2] as f64 * sigma[i] / perimeter;
+            if r % 2 == 0 {
+                phase.cos()
+            } else {
+                phase.sin()
+            }
+        });
+        NormalMotion {
+            normal,
+            metric,
+            perimeter,
+            modes,
+            fourier,
+        }
+    }
+
+    /// The contour's perimeter ∮ ds.
+    pub(crate) fn perimeter(&self) -> f64 {
+        self.perimeter
+    }
+
+    /// The unstable and neutral directions of `hessian` (the m contour
+    /// unknowns first, then any further ones), restricted where given to
+    /// the directions `restriction` spans (m × k, columns in the contour
+    /// unknowns; the further unknowns are kept as they are). None where
+    /// the metric is singular.
+    pub(crate) fn directions(
+        &self,
+        hessian: &DMatrix<f64>,
+        restriction: Option<&DMatrix<f64>>,
+    ) -> Option<Directions> {
+        let m = self.metric.nrows();
+        let dim = hessian.nrows();
+        let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
+        // in the reduced coordinates [Z 0; 0 1], and back
+        let t = match restriction {
+            Some(z) => {
+                let k = z.ncols();
+                let extra = dim - m;
+                let mut t = DMatrix::zeros(m + extra, k + extra);
+                t.view_mut((0, 0), (m, k)).copy_from(z);
+                for e in 0..extra {
+                    t[(m + e, k + e)] = 1.0;
+                }
+                t
+            }
+            None => DMatrix::identity(dim, dim),
+        };
+        let a = sym(t.transpose() * hessian * &t);
+        let mut metric = DMatrix::zeros(dim, dim);
+        metric.view_mut((0, 0), (m, m)).copy_from(&self.metric);
+        for e in m..dim {
+            metric[(e, e)] = self.perimeter;
+        }
+        let l = Cholesky::new(sym(t.transpose() * metric * &t))?.l();
+        let in_metric = || -> Option<SymmetricEigen<f64, Dyn>> {
+            let x = l.solve_lower_triangular(&a)?;
+            let b = l.solve_lower_triangular(&x.transpose())?;
+            let mut e = SymmetricEigen::new(sym(b));
+            e.eigenvectors = l.transpose().solve_upper_triangular(&e.eigenvectors)?;
+            Some(e)
+        };
+        let mut eig = in_metric()?;
+        eig.eigenvectors = &t * &eig.eigenvectors;
+        let scale = eig.eigenvalues.amax().max(1e-300);
+        let sign = |i: usize| Eigen::of(eig.eigenvalues[i], scale);
+        let negative: Vec<usize> = (0..eig.eigenvalues.len())
+            .filter(|&i| sign(i) != Eigen::Stable)
+            .collect();
+        let dirs = DMatrix::from_fn(eig.eigenvectors.nrows(), negative.len(), |r, c| {
+            eig.eigenvectors[(r, negative[c])]
+        });
+        let mut amp = self.spectrum(&dirs);
+        for mut col in amp.column_iter_mut() {
+            let top = col.max().max(1e-300);
+            col /= top;
+        }
+        // each direction a mode of its own: (direction, mode) pairs taken
+        // by decreasing relative amplitude, a pair kept when neither its
+        // direction nor its mode is taken yet
+        let mut pairs: Vec<(f64, usize, usize)> = (0..negative.len())
+            .flat_map(|c| (0..self.modes.len()).map(move |r| (c, r)))
+            .map(|(c, r)| (amp[(r, c)], c, r))
+            .collect();
+        pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
+        let mut label: Vec<Option<usize>> = vec![None; negative.len()];
+        let mut taken = vec![false; self.modes.len()];
+        for (_, c, r) in pairs {
+            if label[c].is_none() && !taken[r] {
+                label[c] = Some(self.modes[r]);
+                taken[r] = true;
+            }
+        }
+        let (mut unstable, mut neutral): (Vec<(usize, NamedDirection)>, Vec<_>) = negative
+            .iter()
+            .enumerate()
+            .map(|(c, &i)| {
+                // (more directions than modes: its largest amplitude)
+                let n = label[c].unwrap_or_else(|| self.modes[amp.column(c).imax()]);
+                let wavelength = if n == 0 {
+                    f64::INFINITY
+                } else {
+                    self.perimeter / n as f64
+                };
+                (
+                    i,
+                    NamedDirection {
+                        n,
+                        wavelength,
+                        eigenvalue: eig.eigenvalues[i],
+                    },
+                )
+            })
+            .partition(|&(i, _)| sign(i) == Eigen::Unstable);
+        unstable.sort_by_key(|u| u.1.n);
+        neutral.sort_by_key(|u| u.1.n);
+        let strip = |v: Vec<(usize, NamedDirection)>| v.into_iter().map(|u| u.1).collect();
+        Some((strip(unstable), strip(neutral)))
+    }
+
+    /// The amplitude of each mode in each direction (columns of `dirs`,
+    /// contour unknowns first; an entry beyond them counts as the size).
+    fn spectrum(&self, dirs: &DMatrix<f64>) -> DMatrix<f64> {
+        let m = self.metric.nrows();
+        let v = &self.normal * dirs.rows(0, m);
+        let f = &self.fourier * v;
+        DMatrix::from_fn(self.modes.len(), dirs.ncols(), |r, c| {
+            let amp = f[(2 * r, c)].hypot(f[(2 * r + 1, c)]);
+            if self.modes[r] == 0 {
+                // a constant's cosine sum is twice a mode's; a further
+                // unknown (δ̄) moves the whole contact as the size does
+                let extra = (m..dirs.nrows())
+                    .map(|e| dirs[(e, c)].abs() * self.perimeter)
+                    .fold(0.0, f64::max);
+                0.5 * amp.max(extra)
+            } else {
+                amp
+            }
+        })
+    }
+}
