@@ -92,8 +92,12 @@ where
         false
     }
     /// The contour mode of the near-null direction of the bordered
-    /// Jacobian at a bifurcation point, where the family knows it.
-    fn bifurcation_mode(&self, _bordered: &OMatrix<f64, D, D>) -> Option<usize> {
+    /// Jacobian at a bifurcation point near u, where the family knows it.
+    fn bifurcation_mode(
+        &self,
+        _u: &OVector<f64, D>,
+        _bordered: &OMatrix<f64, D, D>,
+    ) -> Option<usize> {
         None
     }
     /// The trace stopped at u for the reason `why`: the error, in the
@@ -740,7 +744,7 @@ where
         note(EventKind::SizeFold, watch.size_fold, at);
     }
     if watch.bifurcation != On::Ignore && p.det_sign != q.det_sign {
-        let mode = family.bifurcation_mode(&engine.bordered(&l.j, &p.t));
+        let mode = family.bifurcation_mode(&p.u, &engine.bordered(&l.j, &p.t));
         note(EventKind::Bifurcation(mode), watch.bifurcation, None);
     }
     if let Some((quantity, target, on)) = watch.crossing {

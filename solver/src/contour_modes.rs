@@ -29,7 +29,7 @@
 //! neutral band), nalgebra.
 
 use crate::cutoff::Eigen;
-use nalgebra::{Cholesky, DMatrix, Dyn, SymmetricEigen};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, SymmetricEigen};
 
 /// One direction of negative or zero eigenvalue, with its contour mode.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -197,6 +197,23 @@ impl NormalMotion {
         neutral.sort_by_key(|u| u.1.n);
         let strip = |v: Vec<(usize, NamedDirection)>| v.into_iter().map(|u| u.1).collect();
         Some((strip(unstable), strip(neutral)))
+    }
+
+    /// The contour mode one direction (contour unknowns first, then any
+    /// further ones) is made of: the largest amplitude of its normal
+    /// motion's spectrum; among n ≥ 2 only with `shape_only` (the size and
+    /// any further unknown moving with the shape are not its name). None
+    /// where the representation reads no such mode.
+    pub(crate) fn mode_of(&self, direction: &DVector<f64>, shape_only: bool) -> Option<usize> {
+        let amp = self.spectrum(&DMatrix::from_column_slice(
+            direction.len(),
+            1,
+            direction.as_slice(),
+        ));
+        (0..self.modes.len())
+            .filter(|&r| !shape_only || self.modes[r] > 0)
+            .max_by(|&a, &b| amp[(a, 0)].total_cmp(&amp[(b, 0)]))
+            .map(|r| self.modes[r])
     }
 
     /// The amplitude of each mode in each direction (columns of `dirs`,

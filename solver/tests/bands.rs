@@ -354,7 +354,7 @@ fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
     assert!((fine.s / st.s - 1.0).abs() < 1e-9, "{} {}", fine.s, st.s);
 }
 
-/// At ρ = 0.4, F̄ = 6 lies between the forces of the mode-8 band's edges
+/// At ρ = 0.4, F̄ = 6 lies between the forces of the mode-10 band's edges
 /// (3.2744 < ā < 3.3835, F̄ = 5.461 and 7.104 there), and no arm beside the
 /// band reaches it converged, even past its fold (the upper arm crosses it
 /// where the series leaves a boundary error of 1.5e-4 with 96 modes): the
@@ -371,7 +371,7 @@ fn a_force_no_arm_reaches_converged_is_said_to_lie_in_its_band() {
             let why = e.detail();
             for words in [
                 "no near-elliptic exact state at force = 6 for rho = 0.4",
-                "lies in the band 3.2744 < a < 3.3835, mode cos 8θ",
+                "lies in the band 3.2744 < a < 3.3835, mode cos 10θ",
                 "the lower arm, traced with",
                 "the upper arm, traced with",
                 "followed past its fold",

@@ -291,43 +291,31 @@ fn linearise(
 }
 
 /// The contour mode of the near-null direction of the bordered Jacobian
-/// [∂r/∂u; tᵀ]: the largest component, among the b_j, of the right
-/// singular vector of its smallest singular value; b_j perturbs the radius
-/// by cos (2j + 2)θ. 0 when A or δ̄ dominates; `None` when the SVD gives
-/// no singular vectors.
-fn null_mode(bordered: &DMatrix<f64>, mult: &[f64]) -> Option<usize> {
-    let n = bordered.nrows();
-    let svd = bordered.clone().svd(false, true);
-    let v_t = svd.v_t.as_ref()?;
-    let k = svd.singular_values.imin();
-    let i = (0..n)
-        .max_by(|&a, &b| v_t[(k, a)].abs().total_cmp(&v_t[(k, b)].abs()))
-        .unwrap_or(0);
-    Some(if i == 0 || i == n - 1 {
-        0
-    } else {
-        radial_mode(mult[i])
-    })
-}
-
-/// The radial mode of the coefficient of e^{imθ}: it perturbs the radius of
-/// the circle by cos (m − 1)θ (b_j: 2j + 2; c_j: 2j + 2 too).
-fn radial_mode(m: f64) -> usize {
-    (m - 1.0).abs().round() as usize
+/// [∂r/∂u; tᵀ] at u: the right singular vector of its smallest singular
+/// value, named by the spectrum of its normal motion along the contour
+/// (`crate::contour_modes`); 0 when the size (A, or δ̄) dominates. `None`
+/// when the SVD gives no singular vectors.
+fn null_mode(ex: &Exact, u: &DVector<f64>, bordered: &DMatrix<f64>) -> Option<usize> {
+    let v = smallest_right_singular_vector(bordered)?;
+    ex.normal_motion(&ex.contour_of(u)).mode_of(&v, false)
 }
 
 /// The contour mode of the null direction of the state equations at fixed
-/// ā (singular at a fold in ā): the largest b_j component of the right
-/// singular vector of the smallest singular value (A and δ̄ move with
-/// it, but the shape change is in the b_j); b_j perturbs the radius by
-/// cos (2j + 2)θ. `None` when the SVD gives no singular vectors.
-fn contour_mode(held: &DMatrix<f64>, mult: &[f64]) -> Option<usize> {
-    let n = held.nrows();
-    let svd = held.clone().svd(false, true);
+/// ā (singular at a fold in ā), held in `held` at u: A and δ̄ move with
+/// it, so it is named by the largest amplitude among the shape's modes
+/// n ≥ 2 of its normal motion along the contour (`crate::contour_modes`).
+/// `None` when the SVD gives no singular vectors.
+fn contour_mode(ex: &Exact, u: &DVector<f64>, held: &DMatrix<f64>) -> Option<usize> {
+    let v = smallest_right_singular_vector(held)?;
+    ex.normal_motion(&ex.contour_of(u)).mode_of(&v, true)
+}
+
+/// The right singular vector of the smallest singular value of `a`.
+fn smallest_right_singular_vector(a: &DMatrix<f64>) -> Option<DVector<f64>> {
+    let svd = a.clone().svd(false, true);
     let v_t = svd.v_t.as_ref()?;
     let k = svd.singular_values.imin();
-    let i = (1..n - 1).max_by(|&a, &b| v_t[(k, a)].abs().total_cmp(&v_t[(k, b)].abs()))?;
-    Some(radial_mode(mult[i]))
+    Some(v_t.row(k).transpose())
 }
 
 /// The exact family's step control: arclength steps in u between 1e-4 and
@@ -421,8 +409,8 @@ impl Family<Dyn> for Exact {
         true
     }
 
-    fn bifurcation_mode(&self, bordered: &DMatrix<f64>) -> Option<usize> {
-        null_mode(bordered, &self.grid.multipliers)
+    fn bifurcation_mode(&self, u: &DVector<f64>, bordered: &DMatrix<f64>) -> Option<usize> {
+        null_mode(self, u, bordered)
     }
 
     fn stuck(&self, u: &DVector<f64>, why: &str) -> Error {
@@ -935,10 +923,7 @@ impl Exact {
         let mut held = DMatrix::zeros(n, n);
         held.rows_mut(0, n - 1).copy_from(&j);
         held.set_row(n - 1, &a_bar_gradient(n).transpose());
-        Ok(Some((
-            self.state(u)?,
-            contour_mode(&held, &self.grid.multipliers),
-        )))
+        Ok(Some((self.state(u)?, contour_mode(self, u, &held))))
     }
 
     /// The states at `control` on the arm through `start`, traced with ā

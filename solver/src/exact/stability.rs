@@ -198,14 +198,36 @@ fn longest_contour_mode(modes: &[UnstableMode]) -> Option<&UnstableMode> {
 }
 
 impl Exact {
+    /// How the coefficients of this problem's series move `contour`: the
+    /// normal displacement of each at the grid's points, and the shortest
+    /// mode the series holds (e^{imθ} moves the radius by cos (m − 1)θ).
+    pub(crate) fn normal_motion(&self, contour: &super::Contour) -> NormalMotion {
+        let samples = contour.samples(&self.grid);
+        let m = self.truncation.coefficients();
+        let i_unit = nalgebra::Complex::new(0.0, 1.0);
+        let normal_speed = DMatrix::from_fn(self.grid.len(), m, |i, k| {
+            (self.grid.basis[k][i] * i_unit * samples.dz[i].conj()).re
+        });
+        let speed: Vec<f64> = samples.dz.iter().map(|d| d.norm()).collect();
+        NormalMotion::new(normal_speed, &speed, self.shortest_mode())
+    }
+
+    /// The shortest contour mode the series holds.
+    fn shortest_mode(&self) -> usize {
+        self.grid
+            .multipliers
+            .iter()
+            .map(|&x| (x - 1.0).abs().round() as usize)
+            .max()
+            .unwrap_or(0)
+    }
+
     /// The linear stability of `st` (a state of this problem's truncation).
     pub fn stability(&self, st: &ExactState) -> Result<ExactStability> {
         let m = self.truncation.coefficients();
-        let mult = &self.grid.multipliers;
         let err = || Error::NoState("exact stability: singular boundary integral equation".into());
         let u = self.unknowns(st);
         let hess = self.bordered_hessian(&u).ok_or_else(err)?;
-        let samples = st.contour.samples(&self.grid);
         let n = self.grid.len();
         // the arclength representation: the Hessian on the directions that
         // keep θ proportional to arclength (the null space Z of the gauge
@@ -226,17 +248,7 @@ impl Exact {
         };
         // Each direction is named by the contour mode its normal motion is
         // made of, measured along the contour itself (`crate::contour_modes`).
-        let i_unit = nalgebra::Complex::new(0.0, 1.0);
-        let normal_speed = DMatrix::from_fn(n, m, |i, k| {
-            (self.grid.basis[k][i] * i_unit * samples.dz[i].conj()).re
-        });
-        let speed: Vec<f64> = samples.dz.iter().map(|d| d.norm()).collect();
-        let n_max = mult
-            .iter()
-            .map(|&x| (x - 1.0).abs().round() as usize)
-            .max()
-            .unwrap_or(0);
-        let motion = NormalMotion::new(normal_speed, &speed, n_max);
+        let motion = self.normal_motion(&st.contour);
         let perimeter = motion.perimeter();
         let unstable = |a: DMatrix<f64>| -> Option<(Vec<UnstableMode>, Vec<UnstableMode>)> {
             let (out, neutral) = motion.directions(&a, restriction.as_ref())?;
@@ -253,7 +265,7 @@ impl Exact {
             Some((named(out), named(neutral)))
         };
         // the shortest mode the series holds: e^{imθ} is the radius's cos (m − 1)θ
-        let n_max = n_max.max(1) as f64;
+        let n_max = self.shortest_mode().max(1) as f64;
         // the two controls' eigenproblems, on both cores
         let (by_displacement, by_load) = super::both(
             n >= super::TWO_CORES_FROM_POINTS,
