@@ -25,11 +25,30 @@
 //! direction of eigenvalue −873 at the exact pull-off at ρ = 0.3 had been
 //! called n = 2, and `conformal:8` there had reported cos 4θ and no cos 8θ.
 //!
-//! Owns: [`NormalMotion`], [`NamedDirection`]. May use: `cutoff` (the
+//! Owns: [`NormalMotion`], [`NamedDirection`], the long-wave second route
+//! ([`NormalMotion::stable_upto`]). May use: `cutoff` (the
 //! neutral band), nalgebra.
 
 use crate::cutoff::Eigen;
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn, SymmetricEigen};
+
+/// How closely the long-wave motions of [`NormalMotion::stable_upto`] must
+/// be represented (relative misfit in ∮ · ds) to be tried.
+const LONG_WAVE_FIT: f64 = 1e-3;
+
+/// One rung of [`NormalMotion::long_wave_ladder`].
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Rung {
+    /// The shortest mode of the motions the variation is restricted to.
+    pub(crate) n: usize,
+    /// Its least eigenvalue (per unit normal displacement).
+    pub(crate) least: f64,
+    /// Its largest eigenvalue in magnitude (the neutral band's scale).
+    pub(crate) scale: f64,
+    /// The relative misfit of mode n's fit in ∮ · ds.
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) miss: f64,
+}
 
 /// One direction of negative or zero eigenvalue, with its contour mode.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -53,6 +72,8 @@ pub(crate) struct NormalMotion {
     normal: DMatrix<f64>,
     /// M = ∮ V_k V_l ds (m × m).
     metric: DMatrix<f64>,
+    /// The arc element |z′| h at the points.
+    ds: Vec<f64>,
     perimeter: f64,
     /// The even modes of the doubly symmetric class the spectrum reads.
     modes: Vec<usize>,
@@ -89,6 +110,7 @@ impl NormalMotion {
         NormalMotion {
             normal,
             metric,
+            ds: speed.iter().map(|v| v * h).collect(),
             perimeter,
             modes,
             fourier,
@@ -103,12 +125,16 @@ impl NormalMotion {
     /// The unstable and neutral directions of `hessian` (the m contour
     /// unknowns first, then any further ones), restricted where given to
     /// the directions `restriction` spans (m × k, columns in the contour
-    /// unknowns; the further unknowns are kept as they are). None where
-    /// the metric is singular.
+    /// unknowns; the further unknowns are kept as they are). No unstable
+    /// direction is named by a contour mode n with 2 ≤ n ≤ `stable_upto`
+    /// ([`NormalMotion::stable_upto`]: on the motions of those modes the
+    /// second variation has no negative direction). None where the metric
+    /// is singular.
     pub(crate) fn directions(
         &self,
         hessian: &DMatrix<f64>,
         restriction: Option<&DMatrix<f64>>,
+        stable_upto: usize,
     ) -> Option<Directions> {
         let m = self.metric.nrows();
         let dim = hessian.nrows();
@@ -159,8 +185,13 @@ impl NormalMotion {
         // each direction a mode of its own: (direction, mode) pairs taken
         // by decreasing relative amplitude, a pair kept when neither its
         // direction nor its mode is taken yet
+        let allowed = |c: usize, r: usize| {
+            let n = self.modes[r];
+            n == 0 || n > stable_upto || sign(negative[c]) != Eigen::Unstable
+        };
         let mut pairs: Vec<(f64, usize, usize)> = (0..negative.len())
             .flat_map(|c| (0..self.modes.len()).map(move |r| (c, r)))
+            .filter(|&(c, r)| allowed(c, r))
             .map(|(c, r)| (amp[(r, c)], c, r))
             .collect();
         pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
@@ -177,7 +208,12 @@ impl NormalMotion {
             .enumerate()
             .map(|(c, &i)| {
                 // (more directions than modes: its largest amplitude)
-                let n = label[c].unwrap_or_else(|| self.modes[amp.column(c).imax()]);
+                let n = label[c].unwrap_or_else(|| {
+                    let best = (0..self.modes.len())
+                        .filter(|&r| allowed(c, r))
+                        .max_by(|&a, &b| amp[(a, c)].total_cmp(&amp[(b, c)]));
+                    self.modes[best.unwrap_or(0)]
+                });
                 let wavelength = if n == 0 {
                     f64::INFINITY
                 } else {
@@ -197,6 +233,94 @@ impl NormalMotion {
         neutral.sort_by_key(|u| u.1.n);
         let strip = |v: Vec<(usize, NamedDirection)>| v.into_iter().map(|u| u.1).collect();
         Some((strip(unstable), strip(neutral)))
+    }
+
+    /// The largest even mode n such that the second variation `h_cc` in
+    /// the contour unknowns (displacement control), restricted to the
+    /// motions made of the modes 0, 2, …, n, has no clearly negative
+    /// direction (0 where already the size alone has one, or none is
+    /// tried). Those motions are the coefficient directions that fit
+    /// cos 2πjσ/P in ∮ · ds (least squares in the metric M, within
+    /// `restriction`), tried while the fit misses by less than
+    /// [`LONG_WAVE_FIT`]. This is the limit of a coating that makes every
+    /// shorter undulation infinitely stiff: a second route to which modes
+    /// a state is unstable to, independent of how its directions mix.
+    pub(crate) fn stable_upto(
+        &self,
+        h_cc: &DMatrix<f64>,
+        restriction: Option<&DMatrix<f64>>,
+    ) -> usize {
+        let ladder = self.long_wave_ladder(h_cc, restriction);
+        ladder
+            .iter()
+            .take_while(|r| Eigen::of(r.least, r.scale) != Eigen::Unstable)
+            .last()
+            .map_or(0, |r| r.n)
+    }
+
+    /// The rungs of [`NormalMotion::stable_upto`]: for n = 0, 2, 4, … the
+    /// restricted variation's least eigenvalue and how far the fit of
+    /// mode n misses, up to the first rung with a clearly negative
+    /// eigenvalue or the last the fit and the metric allow.
+    pub(crate) fn long_wave_ladder(
+        &self,
+        h_cc: &DMatrix<f64>,
+        restriction: Option<&DMatrix<f64>>,
+    ) -> Vec<Rung> {
+        let m = self.metric.nrows();
+        let z = restriction
+            .cloned()
+            .unwrap_or_else(|| DMatrix::identity(m, m));
+        let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
+        let mut rungs = Vec::new();
+        let Some(mz) = Cholesky::new(sym(z.transpose() * &self.metric * &z)) else {
+            return rungs;
+        };
+        let zn = &self.normal * &z;
+        let mut cols: Vec<DVector<f64>> = Vec::new();
+        for (r, &n) in self.modes.iter().enumerate() {
+            // cos 2πnσ/P at the points, its fit and how far it misses
+            let f = DVector::from_fn(self.ds.len(), |i, _| self.fourier[(2 * r, i)]);
+            let norm2: f64 = f.iter().zip(&self.ds).map(|(v, d)| v * v * d).sum();
+            let b = zn.transpose() * &f;
+            let y = mz.solve(&b);
+            // V of the fit at the points: (V ds) y / ds
+            let fit = &zn * &y;
+            let miss = (0..f.len())
+                .map(|i| (fit[i] / self.ds[i] - f[i]).powi(2) * self.ds[i])
+                .sum::<f64>()
+                .sqrt()
+                / norm2.sqrt();
+            if miss > LONG_WAVE_FIT {
+                break;
+            }
+            cols.push(&z * y);
+            let u = DMatrix::from_columns(&cols);
+            let Some(l) = Cholesky::new(sym(u.transpose() * &self.metric * &u)).map(|c| c.l())
+            else {
+                break;
+            };
+            let hr = sym(u.transpose() * h_cc * &u);
+            let Some(x) = l.solve_lower_triangular(&hr) else {
+                break;
+            };
+            let Some(bm) = l.solve_lower_triangular(&x.transpose()) else {
+                break;
+            };
+            let e = SymmetricEigen::new(sym(bm)).eigenvalues;
+            let rung = Rung {
+                n,
+                least: e.min(),
+                scale: e.amax().max(1e-300),
+                miss,
+            };
+            let unstable = Eigen::of(rung.least, rung.scale) == Eigen::Unstable;
+            rungs.push(rung);
+            if unstable {
+                break;
+            }
+        }
+        rungs
     }
 
     /// The contour mode one direction (contour unknowns first, then any

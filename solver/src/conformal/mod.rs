@@ -1433,8 +1433,9 @@ impl Conformal {
         let h = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
         let hcc = h.view((0, 0), (k, k)).into_owned();
         let motion = self.normal_motion(c);
-        let (modes, neutral) = self.modes(&motion, &hcc)?;
-        let (modes_load, neutral_load) = self.modes(&motion, &h)?;
+        let stable_upto = motion.stable_upto(&hcc, None);
+        let (modes, neutral) = self.modes(&motion, &hcc, stable_upto)?;
+        let (modes_load, neutral_load) = self.modes(&motion, &h, stable_upto)?;
         let force = e.grad[k];
         let bc_defect = self.bc_defect(x, rho);
         let out = ConformalState {
@@ -1481,8 +1482,13 @@ impl Conformal {
     /// the circle. Returns the unstable modes and, apart, the neutral ones
     /// (`crate::cutoff::Eigen`); an error where the metric of the normal
     /// motion is singular.
-    fn modes(&self, motion: &NormalMotion, h: &DMatrix<f64>) -> Result<(Vec<u32>, Vec<u32>)> {
-        let (unstable, neutral) = motion.directions(h, None).ok_or_else(|| {
+    fn modes(
+        &self,
+        motion: &NormalMotion,
+        h: &DMatrix<f64>,
+        stable_upto: usize,
+    ) -> Result<(Vec<u32>, Vec<u32>)> {
+        let (unstable, neutral) = motion.directions(h, None, stable_upto).ok_or_else(|| {
             Error::NoState(format!(
                 "{}: the metric of the contour's normal motion is singular",
                 self.name()

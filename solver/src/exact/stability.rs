@@ -20,7 +20,12 @@
 //! read from the spectrum of its normal displacement along the contour
 //! (`crate::contour_modes`): n = 0 the size (under load control also δ̄),
 //! n the radius perturbed by cos nθ, wavelength P/n along the contour (P
-//! the perimeter).
+//! the perimeter). No unstable direction is named by a mode on whose
+//! long-wave motions (the modes up to it) the variation restricted under
+//! displacement control is positive (`NormalMotion::stable_upto`, the
+//! second route): where the directions of a peanut-shaped contour mix
+//! neighbouring modes (ρ ≤ 0.07) the least unstable one had been called
+//! n = 4.
 //!
 //! At ρ = 1 the Hessian is diagonal in the modes with signs those of
 //! ā²/4 + 1/ā − n/ā (see `tests/exact.rs`): modes with n > ā³/4 + 1 are
@@ -212,6 +217,28 @@ impl Exact {
         NormalMotion::new(normal_speed, &speed, self.shortest_mode())
     }
 
+    /// In the arclength representation, the directions that keep θ
+    /// proportional to arclength (the null space Z of the gauge rows'
+    /// Jacobian at u, m × (m − P); a reparametrisation does not move the
+    /// contour): the Hessian is restricted to them. None in the conformal
+    /// form.
+    fn gauge_restriction(&self, u: &nalgebra::DVector<f64>) -> Option<DMatrix<f64>> {
+        if self.truncation.arclength == 0 {
+            return None;
+        }
+        let m = self.truncation.coefficients();
+        // the eigenvectors of GᵀG (m × m) with its m − P smallest
+        // eigenvalues (zero where the P gauge rows are independent)
+        let g = self.gauge_jacobian(u).columns(0, m).into_owned();
+        let gg = SymmetricEigen::new(g.transpose() * &g);
+        let mut order: Vec<usize> = (0..m).collect();
+        order.sort_by(|&a, &b| gg.eigenvalues[a].total_cmp(&gg.eigenvalues[b]));
+        let keep = m - g.nrows();
+        Some(DMatrix::from_fn(m, keep, |r, c| {
+            gg.eigenvectors[(r, order[c])]
+        }))
+    }
+
     /// The shortest contour mode the series holds.
     fn shortest_mode(&self) -> usize {
         self.grid
@@ -229,29 +256,19 @@ impl Exact {
         let u = self.unknowns(st);
         let hess = self.bordered_hessian(&u).ok_or_else(err)?;
         let n = self.grid.len();
-        // the arclength representation: the Hessian on the directions that
-        // keep θ proportional to arclength (the null space Z of the gauge
-        // rows' Jacobian; a reparametrisation does not move the contour)
-        let restriction = if self.truncation.arclength == 0 {
-            None
-        } else {
-            // the eigenvectors of GᵀG (m × m) with its m − P smallest
-            // eigenvalues (zero where the P gauge rows are independent)
-            let g = self.gauge_jacobian(&u).columns(0, m).into_owned();
-            let gg = SymmetricEigen::new(g.transpose() * &g);
-            let mut order: Vec<usize> = (0..m).collect();
-            order.sort_by(|&a, &b| gg.eigenvalues[a].total_cmp(&gg.eigenvalues[b]));
-            let keep = m - g.nrows();
-            Some(DMatrix::from_fn(m, keep, |r, c| {
-                gg.eigenvectors[(r, order[c])]
-            }))
-        };
+        let restriction = self.gauge_restriction(&u);
         // Each direction is named by the contour mode its normal motion is
         // made of, measured along the contour itself (`crate::contour_modes`).
         let motion = self.normal_motion(&st.contour);
         let perimeter = motion.perimeter();
+        // the long-wave motions on which the state is stable: no unstable
+        // direction is named by their modes
+        let stable_upto = motion.stable_upto(
+            &hess.view((0, 0), (m, m)).into_owned(),
+            restriction.as_ref(),
+        );
         let unstable = |a: DMatrix<f64>| -> Option<(Vec<UnstableMode>, Vec<UnstableMode>)> {
-            let (out, neutral) = motion.directions(&a, restriction.as_ref())?;
+            let (out, neutral) = motion.directions(&a, restriction.as_ref(), stable_upto)?;
             let named = |v: Vec<NamedDirection>| {
                 v.into_iter()
                     .map(|d| UnstableMode {
@@ -288,5 +305,68 @@ impl Exact {
             ..ExactStability::default()
         }
         .under(Cutoff::default()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// docs/exact.md's table "A second route: the long-wave motions alone"
+    /// is the solver's: at each pull-off the variation under displacement
+    /// control restricted to the motions of modes up to 4 has the least
+    /// eigenvalue printed and is positive, with modes up to 6 the printed
+    /// negative one (the first unstable rung), each fit missing by less
+    /// than 1e-9; so no unstable direction there is named n = 4 (or 2).
+    #[test]
+    fn the_long_wave_table_of_the_docs_is_the_solvers() {
+        let doc = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact.md"),
+        )
+        .unwrap();
+        let at = doc
+            .find("**A second route: the long-wave motions alone.**")
+            .expect("the section");
+        let row = |head: &str| -> Vec<String> {
+            let line = doc[at..]
+                .lines()
+                .find(|l| l.starts_with(head))
+                .unwrap_or_else(|| panic!("row {head}"));
+            line.split('|')
+                .map(|c| c.trim().replace('−', "-"))
+                .filter(|c| !c.is_empty())
+                .skip(1)
+                .collect()
+        };
+        let (rhos, upto4, upto6) = (row("| ρ |"), row("| modes ≤ 4 |"), row("| modes ≤ 6 |"));
+        assert_eq!((rhos.len(), upto4.len(), upto6.len()), (5, 5, 5));
+        for i in 0..5 {
+            let rho: f64 = rhos[i].parse().unwrap();
+            let (st, _) = crate::exact::pull_off_resolved(rho).unwrap();
+            let ex = Exact::new(rho, st.truncation).unwrap();
+            let u = ex.unknowns(&st);
+            let m = ex.truncation.coefficients();
+            let h_cc = ex
+                .bordered_hessian(&u)
+                .unwrap()
+                .view((0, 0), (m, m))
+                .into_owned();
+            let restriction = ex.gauge_restriction(&u);
+            let motion = ex.normal_motion(&st.contour);
+            let ladder = motion.long_wave_ladder(&h_cc, restriction.as_ref());
+            let ns: Vec<usize> = ladder.iter().map(|r| r.n).collect();
+            assert_eq!(ns, [0, 2, 4, 6], "rho = {rho}: {ladder:?}");
+            assert!(ladder.iter().all(|r| r.miss < 1e-9), "{ladder:?}");
+            for (rung, printed) in [(&ladder[2], &upto4[i]), (&ladder[3], &upto6[i])] {
+                let printed: f64 = printed.parse().unwrap();
+                assert!(
+                    (rung.least - printed).abs() <= 5e-4,
+                    "rho = {rho}, modes up to {}: printed {printed}, solved {}",
+                    rung.n,
+                    rung.least
+                );
+            }
+            assert_eq!(motion.stable_upto(&h_cc, restriction.as_ref()), 4);
+        }
     }
 }
