@@ -276,16 +276,17 @@ impl NormalMotion {
         let Some(mz) = Cholesky::new(sym(z.transpose() * &self.metric * &z)) else {
             return rungs;
         };
-        let zn = &self.normal * &z;
         let mut cols: Vec<DVector<f64>> = Vec::new();
         for (r, &n) in self.modes.iter().enumerate() {
             // cos 2πnσ/P at the points, its fit and how far it misses
             let f = DVector::from_fn(self.ds.len(), |i, _| self.fourier[(2 * r, i)]);
             let norm2: f64 = f.iter().zip(&self.ds).map(|(v, d)| v * v * d).sum();
-            let b = zn.transpose() * &f;
+            // (matrix–vector products only: Zᵀ (V ds)ᵀ f, and V ds (Z y))
+            let b = z.tr_mul(&self.normal.tr_mul(&f));
             let y = mz.solve(&b);
-            // V of the fit at the points: (V ds) y / ds
-            let fit = &zn * &y;
+            let zy = &z * y;
+            // V of the fit at the points: (V ds) Z y / ds
+            let fit = &self.normal * &zy;
             let miss = (0..f.len())
                 .map(|i| (fit[i] / self.ds[i] - f[i]).powi(2) * self.ds[i])
                 .sum::<f64>()
@@ -294,7 +295,7 @@ impl NormalMotion {
             if miss > LONG_WAVE_FIT {
                 break;
             }
-            cols.push(&z * y);
+            cols.push(zy);
             let u = DMatrix::from_columns(&cols);
             let Some(l) = Cholesky::new(sym(u.transpose() * &self.metric * &u)).map(|c| c.l())
             else {
