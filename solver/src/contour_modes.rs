@@ -91,8 +91,9 @@ impl NormalMotion {
         let n = speed.len();
         let h = 2.0 * std::f64::consts::PI / n as f64;
         let normal = normal_speed * h;
-        let scaled = DMatrix::from_fn(n, normal.ncols(), |i, k| normal[(i, k)] / (speed[i] * h));
-        let metric = normal.transpose() * scaled;
+        // ∮ V_k V_l ds = Σ (V_k ds)(V_l ds) / ds
+        let v = DMatrix::from_fn(n, normal.ncols(), |i, k| normal[(i, k)] / (speed[i] * h));
+        let metric = normal.transpose() * v;
         let perimeter: f64 = speed.iter().sum::<f64>() * h;
         let mut sigma = vec![0.0; n];
         for i in 1..n {
@@ -138,7 +139,6 @@ impl NormalMotion {
     ) -> Option<Directions> {
         let m = self.metric.nrows();
         let dim = hessian.nrows();
-        let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
         // in the reduced coordinates [Z 0; 0 1], and back
         let t = match restriction {
             Some(z) => {
@@ -153,21 +153,15 @@ impl NormalMotion {
             }
             None => DMatrix::identity(dim, dim),
         };
-        let a = sym(t.transpose() * hessian * &t);
         let mut metric = DMatrix::zeros(dim, dim);
         metric.view_mut((0, 0), (m, m)).copy_from(&self.metric);
         for e in m..dim {
             metric[(e, e)] = self.perimeter;
         }
-        let l = Cholesky::new(sym(t.transpose() * metric * &t))?.l();
-        let in_metric = || -> Option<SymmetricEigen<f64, Dyn>> {
-            let x = l.solve_lower_triangular(&a)?;
-            let b = l.solve_lower_triangular(&x.transpose())?;
-            let mut e = SymmetricEigen::new(sym(b));
-            e.eigenvectors = l.transpose().solve_upper_triangular(&e.eigenvectors)?;
-            Some(e)
-        };
-        let mut eig = in_metric()?;
+        let mut eig = eigen_in_metric(
+            &(t.transpose() * hessian * &t),
+            &(t.transpose() * metric * &t),
+        )?;
         eig.eigenvectors = &t * &eig.eigenvectors;
         let scale = eig.eigenvalues.amax().max(1e-300);
         let sign = |i: usize| Eigen::of(eig.eigenvalues[i], scale);
@@ -271,9 +265,8 @@ impl NormalMotion {
         let z = restriction
             .cloned()
             .unwrap_or_else(|| DMatrix::identity(m, m));
-        let sym = |a: DMatrix<f64>| (&a + a.transpose()) * 0.5;
         let mut rungs = Vec::new();
-        let Some(mz) = Cholesky::new(sym(z.transpose() * &self.metric * &z)) else {
+        let Some(mz) = Cholesky::new(symmetric(&(z.transpose() * &self.metric * &z))) else {
             return rungs;
         };
         let mut cols: Vec<DVector<f64>> = Vec::new();
@@ -297,18 +290,13 @@ impl NormalMotion {
             }
             cols.push(zy);
             let u = DMatrix::from_columns(&cols);
-            let Some(l) = Cholesky::new(sym(u.transpose() * &self.metric * &u)).map(|c| c.l())
-            else {
+            let Some(eig) = eigen_in_metric(
+                &(u.transpose() * h_cc * &u),
+                &(u.transpose() * &self.metric * &u),
+            ) else {
                 break;
             };
-            let hr = sym(u.transpose() * h_cc * &u);
-            let Some(x) = l.solve_lower_triangular(&hr) else {
-                break;
-            };
-            let Some(bm) = l.solve_lower_triangular(&x.transpose()) else {
-                break;
-            };
-            let e = SymmetricEigen::new(sym(bm)).eigenvalues;
+            let e = eig.eigenvalues;
             let rung = Rung {
                 n,
                 least: e.min(),
@@ -361,4 +349,21 @@ impl NormalMotion {
             }
         })
     }
+}
+
+/// (a + aᵀ)/2.
+fn symmetric(a: &DMatrix<f64>) -> DMatrix<f64> {
+    (a + a.transpose()) * 0.5
+}
+
+/// The eigenproblem a v = λ m v (m positive definite): by the Cholesky
+/// factor L of m, the eigenvalues of L⁻¹ a L⁻ᵀ and the vectors L⁻ᵀ w. None
+/// where m is not positive definite or a triangular solve fails.
+fn eigen_in_metric(a: &DMatrix<f64>, m: &DMatrix<f64>) -> Option<SymmetricEigen<f64, Dyn>> {
+    let l = Cholesky::new(symmetric(m))?.l();
+    let x = l.solve_lower_triangular(&symmetric(a))?;
+    let b = l.solve_lower_triangular(&x.transpose())?;
+    let mut e = SymmetricEigen::new(symmetric(&b));
+    e.eigenvectors = l.transpose().solve_upper_triangular(&e.eigenvectors)?;
+    Some(e)
 }

@@ -263,10 +263,8 @@ impl Exact {
         let perimeter = motion.perimeter();
         // the long-wave motions on which the state is stable: no unstable
         // direction is named by their modes
-        let stable_upto = motion.stable_upto(
-            &hess.view((0, 0), (m, m)).into_owned(),
-            restriction.as_ref(),
-        );
+        let h_cc = hess.view((0, 0), (m, m)).into_owned();
+        let stable_upto = motion.stable_upto(&h_cc, restriction.as_ref());
         let unstable = |a: DMatrix<f64>| -> Option<(Vec<UnstableMode>, Vec<UnstableMode>)> {
             let (out, neutral) = motion.directions(&a, restriction.as_ref(), stable_upto)?;
             let named = |v: Vec<NamedDirection>| {
@@ -286,7 +284,7 @@ impl Exact {
         // the two controls' eigenproblems, on both cores
         let (by_displacement, by_load) = super::both(
             n >= super::TWO_CORES_FROM_POINTS,
-            || unstable(hess.view((0, 0), (m, m)).into_owned()),
+            || unstable(h_cc.clone()),
             || unstable(hess.clone()),
         );
         let singular = || {
