@@ -256,6 +256,12 @@ mod tests {
             "boundary error {:.1e}",
             st.bc_error
         );
+        // docs/exact.md ("F̄ = 10 at ρ = 0.3"): unstable to every even n
+        // from 14 on (the long-wave route rules out 2 … 12), critical 0.213
+        let longest = st.stability.load.iter().map(|m| m.n).min();
+        assert_eq!(longest, Some(14), "{:?}", st.stability.load);
+        let h = st.stability.critical_thinness_load.unwrap();
+        assert!((h - 0.213).abs() <= 5e-4, "critical thinness {h}");
         // ā and s of `x` within `tol` of the state's
         let same = |x: &ExactState, tol: f64, what: &str| {
             for (name, got, want) in [("a", x.a_bar, st.a_bar), ("s", x.s, st.s)] {
