@@ -426,6 +426,21 @@ impl Choice {
             crate::report::AnyState::Conformal(st) => st.doubt(under_load),
             _ => None,
         });
+        // an exact state whose shape owes a visible part to undulations
+        // shorter than these coatings' cutoff: the shape is (2)'s, not the
+        // coating's (`exact::undulations`)
+        let short = match (&state, &model) {
+            (crate::report::AnyState::Exact(st), _) => {
+                Some(crate::exact::undulations::short_waves(&st.contour, cutoff))
+            }
+            (crate::report::AnyState::Conformal(st), Choice::Contour(member)) => {
+                Some(member.short_waves(&st.coefficients, cutoff))
+            }
+            _ => None,
+        };
+        if let Some(short) = short.filter(|s| s.visible()) {
+            warnings.push(format!("the contact's shape: {}", short.words(cutoff)));
+        }
         if si.h_over_a > 0.1 {
             warnings.push(format!(
                 "h/a = {}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",

@@ -209,9 +209,10 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
     };
     // docs/exact.md's table of these angles: h/L and the answer's critical
     // thinness under load ("stable" where a conformal:8 state is)
-    let (thinness, critical) = (
+    let (thinness, critical, unresolved) = (
         docs_tables::row("| θ | 16° |", "| h/L |"),
         docs_tables::row("| θ | 16° |", "| critical h/L |"),
+        docs_tables::row("| θ | 16° |", "| unresolved shape (% of a) |"),
     );
     for (k, theta) in [16.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0]
         .into_iter()
@@ -269,6 +270,29 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
                 assert!(
                     (h - v).abs() <= 5e-4,
                     "theta {theta}: printed {v}, solved {h}"
+                );
+            }
+        }
+        // a shape with a visible part in undulations shorter than these
+        // coatings' cutoff is said to be so, with that part's size (the
+        // docs' row, to its printed digits), and only then
+        let shape = answer
+            .warnings
+            .iter()
+            .find(|w| w.starts_with("the contact's shape:"));
+        match unresolved[k].as_str() {
+            "0" => assert!(shape.is_none(), "theta {theta}: {shape:?}"),
+            v => {
+                let w = shape.unwrap_or_else(|| panic!("theta {theta}: {:?}", answer.warnings));
+                let said = w
+                    .split("; up to ")
+                    .nth(1)
+                    .and_then(|r| r.split(" % of a in undulations").next())
+                    .unwrap_or_else(|| panic!("{w}"));
+                assert_eq!(
+                    said.parse::<f64>().unwrap(),
+                    v.parse::<f64>().unwrap(),
+                    "theta {theta}: {w}"
                 );
             }
         }

@@ -450,7 +450,15 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
         modes(&st.stability.load, st.truncation.modes)
     );
     outln!("  {}", cutoff_words(&st.stability));
+    outln!("  shape: {}", shape_words(st));
     Ok(())
+}
+
+/// How much of the state's shape lies in undulations shorter than the
+/// cutoff of its stability verdicts (`exact::undulations`).
+pub(crate) fn shape_words(st: &ExactState) -> String {
+    let cutoff = st.stability.cutoff;
+    crate::exact::undulations::short_waves(&st.contour, cutoff).words(cutoff)
 }
 
 /// The stability verdicts above the short-wave cutoff, and which unstable

@@ -947,7 +947,10 @@ fn physical(
         sc.force
     );
     match &state {
-        AnyState::Exact(st) => outln!("  {}", exact_command::cutoff_words(&st.stability)),
+        AnyState::Exact(st) => {
+            outln!("  {}", exact_command::cutoff_words(&st.stability));
+            outln!("  shape: {}", exact_command::shape_words(st));
+        }
         AnyState::Conformal(st) => outln!(
             "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",
             contour::verdict(st, st.stable_displacement, &st.neutral_modes),

@@ -520,6 +520,22 @@ impl Conformal {
         (w1.0.hypot(w1.1), wi.0.hypot(wi.1))
     }
 
+    /// How much of the contour of the map `c` lies in undulations shorter
+    /// than `cutoff` (`exact::undulations`).
+    pub(crate) fn short_waves(
+        &self,
+        c: &[f64],
+        cutoff: Cutoff,
+    ) -> crate::exact::undulations::ShortWaves {
+        crate::exact::undulations::short_waves_at(
+            &|t: f64| {
+                let (x, y) = self.map(c, (t.cos(), t.sin())).0;
+                nalgebra::Complex::new(x, y)
+            },
+            cutoff,
+        )
+    }
+
     /// The contour X(θ), Y(θ) at `points` angles over the full turn.
     pub fn contour(&self, c: &[f64], points: usize) -> Vec<(f64, f64)> {
         (0..points)

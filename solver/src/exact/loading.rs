@@ -21,10 +21,14 @@
 //!
 //! Which modes count as resolved (and so move, or are held) is the
 //! short-wave cutoff's choice; the path depends on it, and every path says
-//! which cutoff it used.
+//! which cutoff it used. Where a state held owes a visible part of its
+//! shape to undulations shorter than the cutoff (`exact::undulations`),
+//! the path is not settled from there: its shape is then (2)'s, not a
+//! coating's of that thickness.
 //!
 //! Owns: [`LoadingPath`], [`Jump`], [`PathEnd`], [`loading_path`],
-//! [`start`], [`reported`]. May use: `exact` (the problem, `descent`, `resolve`),
+//! [`start`], [`reported`]. May use: `exact` (the problem, `descent`, `resolve`,
+//! `undulations`),
 //! `control`, `cutoff`, `error`, `newton` (the stop request), `report`
 //! (the outcome's shape).
 
@@ -302,6 +306,23 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
     loop {
         if let Err(e) = crate::newton::check_stop() {
             return done(states, jumps, PathEnd::NotSettled(e.to_string()));
+        }
+        // a state whose shape owes a visible part to undulations shorter
+        // than the cutoff: (2) does not resolve where the contact goes
+        // from there, whatever the verdicts of its directions
+        let short = super::undulations::short_waves(&held.contour, cutoff);
+        if short.visible() {
+            return done(
+                states,
+                jumps,
+                PathEnd::NotSettled(format!(
+                    "at force = {} (a = {:.4}, s = {:.4}) {}",
+                    crate::error::rounded(held.force_bar),
+                    held.a_bar,
+                    held.s,
+                    short.words(cutoff)
+                )),
+            );
         }
         let scale = held.force_bar.abs().max(1.0);
         // a state unstable under load to a resolved mode is lost where it
@@ -584,9 +605,55 @@ mod tests {
     #[test]
     fn at_rho_0_8_the_path_first_loses_its_state_at_the_traced_pull_off() {
         let s0 = start(0.8).unwrap();
-        for thinness in [0.5, 1.0] {
-            at_rho_0_8_with(&s0, Cutoff::for_thinness(thinness).unwrap());
-        }
+        at_rho_0_8_with(&s0, Cutoff::for_thinness(0.5).unwrap());
+        // with coatings twice as thick mode 4 (3.5 long) is shorter than
+        // the cutoff (6.28), and the undulation of that mode with which
+        // the arm nears its pull-off ends the path just before it: every
+        // state held before has its unresolved part below 1 % of ā, the
+        // last above
+        let cutoff = Cutoff::for_thinness(1.0).unwrap();
+        let path = loading_path(&s0, cutoff).unwrap();
+        let PathEnd::NotSettled(why) = &path.end else {
+            panic!("{:?}", path.end)
+        };
+        assert!(
+            why.contains("undulations shorter than the cutoff (the largest n = 4,"),
+            "{why}"
+        );
+        let (last, before) = path.states.split_last().unwrap();
+        let short = |st: &ExactState| super::super::undulations::short_waves(&st.contour, cutoff);
+        assert!(short(last).visible());
+        assert!(before.iter().all(|st| !short(st).visible()));
+        let (traced, _) = crate::exact::pull_off_resolved(0.8).unwrap();
+        let above = last.force_bar - traced.force_bar;
+        assert!(above > 0.0 && above < 0.05, "{above}");
+    }
+
+    /// At ρ = 0.5 the arm the path holds from F̄ = 10 passes the fold of
+    /// the cos 10θ band (its upper edge at F̄ = 8.79, docs/exact.md
+    /// "Bands") and turns ten-lobed on its returning stretch: with
+    /// h/L = 0.5 those lobes (1.86 long) are shorter than the cutoff
+    /// (3.14), and the path ends where they reach 1 % of ā, before the
+    /// force at which its states had been lost when the lobes were
+    /// followed (F̄ ≈ 7.57, 5.7 % off the ellipse).
+    #[test]
+    fn at_rho_0_5_the_path_ends_where_its_lobes_are_shorter_than_the_cutoff() {
+        let cutoff = Cutoff::for_thinness(0.5).unwrap();
+        let path = loading_path(&start(0.5).unwrap(), cutoff).unwrap();
+        let PathEnd::NotSettled(why) = &path.end else {
+            panic!("{:?}", path.end)
+        };
+        assert!(
+            why.contains("undulations shorter than the cutoff (the largest n = 10,"),
+            "{why}"
+        );
+        let last = path.states.last().unwrap();
+        assert!(
+            last.force_bar < 8.79 && last.force_bar > 7.57,
+            "{}",
+            last.force_bar
+        );
+        assert!(path.jumps.is_empty());
     }
 
     fn at_rho_0_8_with(s0: &ExactState, cutoff: Cutoff) {

@@ -57,6 +57,7 @@ pub(crate) mod rho_path;
 pub(crate) mod seed;
 pub mod stability;
 pub(crate) mod stored;
+pub(crate) mod undulations;
 pub(crate) mod unloading;
 
 use crate::control::Hold;
