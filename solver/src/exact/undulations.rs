@@ -55,7 +55,7 @@ impl ShortWaves {
     /// not resolve.
     pub(crate) fn words(&self, cutoff: Cutoff) -> String {
         let part = match self.mode {
-            Some(n) if self.amplitude >= 5e-5 => format!(
+            Some(n) if self.amplitude >= 1e-4 => format!(
                 "up to {} of a in undulations shorter than the cutoff (the largest n = {n}, wavelength {:.3} < 2π h/L = {:.3})",
                 percent(self.amplitude),
                 self.wavelength,
@@ -184,6 +184,73 @@ fn short_waves_of(z: &[Complex<f64>], cutoff: Cutoff) -> ShortWaves {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// docs/exact.md's table "The shape's unresolved part": every cell is
+    /// the exact pull-off's unresolved part at that ρ and h/L, to its
+    /// printed digits, with its largest mode, and the first column the
+    /// whole departure from the ellipse.
+    #[test]
+    fn the_unresolved_shape_table_of_the_docs_is_the_solvers() {
+        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
+            .unwrap();
+        let from = doc
+            .find("**The shape's unresolved part.**")
+            .expect("the section");
+        let mut lines = doc[from..]
+            .lines()
+            .skip_while(|l| !l.starts_with("| ρ (departure) |"));
+        let header: Vec<f64> = lines
+            .next()
+            .unwrap()
+            .trim_matches(|c| c == '|' || c == ' ')
+            .split(" | ")
+            .skip(1)
+            .map(|c| c.trim_start_matches("h/L = ").parse().unwrap())
+            .collect();
+        let rows: Vec<Vec<String>> = lines
+            .skip(1)
+            .take_while(|l| l.starts_with("| "))
+            .map(|l| {
+                l.trim_matches(|c| c == '|' || c == ' ')
+                    .split(" | ")
+                    .map(str::to_string)
+                    .collect()
+            })
+            .collect();
+        assert_eq!(rows.len(), 7, "the table's rows");
+        let share = |p: f64| {
+            if p < 10.0 {
+                format!("{p:.1}")
+            } else {
+                format!("{p:.0}")
+            }
+        };
+        for row in &rows {
+            let (rho, departure) = row[0].split_once(" (").unwrap();
+            let rho: f64 = rho.parse().unwrap();
+            let (st, _) = crate::exact::pull_off_resolved(rho).unwrap();
+            for (k, &thinness) in header.iter().enumerate() {
+                let sw = short_waves(&st.contour, Cutoff::for_thinness(thinness).unwrap());
+                assert_eq!(
+                    format!("{} %)", share(100.0 * sw.departure)),
+                    departure,
+                    "rho {rho}"
+                );
+                let p = 100.0 * sw.amplitude;
+                let cell = if p < 0.01 {
+                    "< 0.01".to_string()
+                } else {
+                    let v = if p < 10.0 {
+                        format!("{p:.2}")
+                    } else {
+                        format!("{p:.0}")
+                    };
+                    format!("{v} (n = {})", sw.mode.unwrap())
+                };
+                assert_eq!(cell, row[k + 1], "rho {rho}, h/L {thinness}");
+            }
+        }
+    }
 
     /// An ellipse has no departure; a circle with a cos 10θ ripple of
     /// amplitude ε has ε in mode 10 when the cutoff is longer than its
