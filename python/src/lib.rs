@@ -441,10 +441,7 @@ fn exact(
         None => thinjkr::cutoff::Cutoff::default(),
         Some(t) => thinjkr::cutoff::Cutoff::for_thinness(t).map_err(raw)?,
     };
-    let judged = move |mut st: thinjkr::exact::ExactState| {
-        st.stability = st.stability.under(cutoff);
-        json(&st)
-    };
+    let judged = move |st: thinjkr::exact::ExactState| json(&st.judged(cutoff));
     use thinjkr::exact::{
         at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, Truncation,
         MAX_USER_MODES,

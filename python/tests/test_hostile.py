@@ -247,6 +247,13 @@ def test_the_exact_pull_off_at_rho_0_3_answers_with_its_default_escalation():
     assert po.bc_error <= 1e-9
     forty_eight = thinjkr.exact.pull_off(0.3, modes=48)
     assert abs(po.force_bar - forty_eight.force_bar) < 1e-8
+    # its shape's part in undulations shorter than the cutoff (docs/exact.md,
+    # "The shape's unresolved part"): below 0.01 % of a with h/L = 0.1, the
+    # default; 3.46 % in mode 6 with h/L = 0.5, where the shape is unresolved
+    assert po.shape["unresolved"] is False and po.shape["amplitude"] < 1e-4
+    thick = thinjkr.exact.pull_off(0.3, thinness=0.5)
+    assert thick.shape["unresolved"] is True and thick.shape["mode"] == 6
+    assert abs(thick.shape["amplitude"] - 0.0346) < 5e-5
 
 
 def test_an_exact_sweep_says_per_point_how_each_state_was_found():

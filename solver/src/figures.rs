@@ -975,6 +975,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
             truncation: ex.truncation(),
             stability: Default::default(),
             route: Default::default(),
+            shape: None,
             gap: crate::exact::Gap::CYLINDERS,
         };
         let exact: Vec<(f64, f64)> = ex

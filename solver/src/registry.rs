@@ -385,9 +385,8 @@ impl Choice {
         // (the thicker one's h over L)
         let cutoff = crate::cutoff::Cutoff::for_thinness(cyl.h1.max(cyl.h2) / sc.length)?;
         let state = match state {
-            crate::report::AnyState::Exact(mut st) => {
-                st.stability = std::mem::take(&mut st.stability).under(cutoff);
-                crate::report::AnyState::Exact(st)
+            crate::report::AnyState::Exact(st) => {
+                crate::report::AnyState::Exact(Box::new((*st).judged(cutoff)))
             }
             crate::report::AnyState::Conformal(st) => {
                 crate::report::AnyState::Conformal(st.under(cutoff))

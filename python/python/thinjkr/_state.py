@@ -64,7 +64,10 @@ class State:
     ``unstable_modes_displacement``, ``unstable_modes_load``,
     ``neutral_modes_displacement``, ``neutral_modes_load``,
     ``shortest_wavelength``, ``critical_thinness_displacement``,
-    ``critical_thinness_load`` for ``exact``; for both, ``stable_displacement``
+    ``critical_thinness_load``, ``shape`` (the part of the contour in
+    undulations shorter than the cutoff: ``amplitude`` and ``departure``
+    over ā, ``mode``, ``wavelength``, and ``unresolved`` where that part is
+    above 1 % of ā) for ``exact``; for both, ``stable_displacement``
     and ``stable_load`` count only the contour modes above the short-wave
     cutoff ``cutoff``, 2π h/L, and an exact verdict is None where it is not
     settled). A neutral direction has a zero eigenvalue (within 1e-6 of the

@@ -44,9 +44,8 @@ impl Discretisation {
     }
 
     /// An exact state's stability judged under this cutoff.
-    fn judged(&self, mut st: ExactState) -> Result<ExactState> {
-        st.stability = st.stability.under(self.cutoff()?);
-        Ok(st)
+    fn judged(&self, st: ExactState) -> Result<ExactState> {
+        Ok(st.judged(self.cutoff()?))
     }
 
     /// The truncations to try, in order.
@@ -768,9 +767,10 @@ pub(crate) fn every_state(
     let cutoff = d.cutoff()?;
     let spin = crate::cli::output::Spinner::start("screening for every exact state");
     let mut all = crate::exact::bands::states_at(rho, control, from, to, &d.tries()?)?;
-    for st in &mut all.states {
-        st.stability = std::mem::take(&mut st.stability).under(cutoff);
-    }
+    all.states = std::mem::take(&mut all.states)
+        .into_iter()
+        .map(|st| st.judged(cutoff))
+        .collect();
     drop(spin);
     if all.states.is_empty() {
         let missed: Vec<String> = all

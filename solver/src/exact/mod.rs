@@ -38,6 +38,7 @@
 //! routes to a state and the continuation in ρ) is `resolve`.
 //!
 //! Owns: [`ExactState`], [`Exact`], [`Truncation`], [`Contour`]. May use: `control`, `error`, `newton` (the shared chord iteration),
+//! `cutoff` (the verdicts' and the shape's, [`ExactState::judged`]),
 //! nalgebra; no model (it is the reference for them): starting guesses come
 //! with the gap from the layer above ([`seed`]), which also defines
 //! `Gap::cylinders()`, the cylinders' gap with its seed.
@@ -571,11 +572,27 @@ pub struct ExactState {
     pub stability: stability::ExactStability,
     /// How the state was found (its start).
     pub route: Route,
+    /// How much of its shape lies in undulations shorter than the cutoff
+    /// of its verdicts ([`undulations`]); set with the verdicts by
+    /// [`ExactState::judged`], absent before.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) shape: Option<undulations::ShortWaves>,
     /// The gap of the problem it solves (the cylinders' (1), or a
     /// family's, [`Gap`]).
     #[serde(skip)]
     #[cfg_attr(feature = "schema", schemars(skip))]
     pub(crate) gap: Gap,
+}
+
+impl ExactState {
+    /// The state with its stability judged under `cutoff` (the verdicts
+    /// count the modes at least its wavelength long) and its shape's
+    /// unresolved part measured against it.
+    pub fn judged(mut self, cutoff: crate::cutoff::Cutoff) -> ExactState {
+        self.stability = std::mem::take(&mut self.stability).under(cutoff);
+        self.shape = Some(undulations::short_waves(&self.contour, cutoff));
+        self
+    }
 }
 
 /// How an exact state was found: the start of its Newton iterations.
@@ -991,11 +1008,6 @@ impl Exact {
         self.truncation
     }
 
-    /// The radii ratio.
-    pub fn rho(&self) -> f64 {
-        self.rho
-    }
-
     /// The unknowns u = (A, b₀..b_{N−1}, δ̄) of a state.
     pub(crate) fn unknowns(&self, st: &ExactState) -> DVector<f64> {
         self.unknowns_of(&st.contour, st.delta_bar)
@@ -1280,6 +1292,7 @@ impl Exact {
             truncation: self.truncation,
             stability: stability::ExactStability::default(),
             route: Route::FromCircle,
+            shape: None,
             gap: self.gap_source,
         };
         if self.with_stability {

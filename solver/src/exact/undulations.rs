@@ -32,23 +32,27 @@ pub(crate) const VISIBLE: f64 = 1e-2;
 const POINTS: usize = 4096;
 
 /// The unresolved part of a contour's departure from its ellipse.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub(crate) struct ShortWaves {
     /// The largest radial excursion of the unresolved part (the modes
     /// shorter than the cutoff) along the contour, over ā.
     pub amplitude: f64,
     /// The largest of those modes, where any is above round-off.
     pub mode: Option<usize>,
-    /// Its wavelength P/n.
-    pub wavelength: f64,
+    /// Its wavelength P/n (in units of L).
+    pub wavelength: Option<f64>,
     /// The whole departure's largest |d| over ā (every mode).
     pub departure: f64,
+    /// Whether the unresolved part is above 1 % of ā: the shape is then
+    /// (2)'s, not a coating's of that thickness.
+    pub unresolved: bool,
 }
 
 impl ShortWaves {
     /// Whether the unresolved part is [`VISIBLE`].
     pub(crate) fn visible(&self) -> bool {
-        self.amplitude > VISIBLE
+        self.unresolved
     }
 
     /// In words, with the cutoff: how much of the contour's shape (2) does
@@ -58,7 +62,7 @@ impl ShortWaves {
             Some(n) if self.amplitude >= 1e-4 => format!(
                 "up to {} of a in undulations shorter than the cutoff (the largest n = {n}, wavelength {:.3} < 2π h/L = {:.3})",
                 percent(self.amplitude),
-                self.wavelength,
+                self.wavelength.unwrap_or(f64::INFINITY),
                 cutoff.wavelength
             ),
             _ => format!(
@@ -176,8 +180,9 @@ fn short_waves_of(z: &[Complex<f64>], cutoff: Cutoff) -> ShortWaves {
     ShortWaves {
         amplitude,
         mode,
-        wavelength: mode.map_or(f64::INFINITY, |n| perimeter / n as f64),
+        wavelength: mode.map(|n| perimeter / n as f64),
         departure: d.iter().fold(0.0, |m: f64, v| m.max(v.abs())),
+        unresolved: amplitude > VISIBLE,
     }
 }
 
@@ -280,7 +285,10 @@ mod tests {
         assert!((coarse.amplitude - eps).abs() < 2e-2 * eps, "{coarse:?}");
         // (the circle's mean radius is a(1 − ε))
         let wavelength = 2.0 * std::f64::consts::PI * a * (1.0 - eps) / 10.0;
-        assert!((coarse.wavelength - wavelength).abs() < 1e-4, "{coarse:?}");
+        assert!(
+            (coarse.wavelength.unwrap() - wavelength).abs() < 1e-4,
+            "{coarse:?}"
+        );
         let fine = short_waves(&ripple, Cutoff::for_thinness(0.2).unwrap());
         assert!(fine.amplitude < 2e-2 * eps, "{fine:?}");
     }
