@@ -429,15 +429,14 @@ impl Choice {
         // shorter than these coatings' cutoff: the shape is (2)'s, not the
         // coating's (`exact::undulations`)
         let short = match (&state, &model) {
-            (crate::report::AnyState::Exact(st), _) => {
-                Some(crate::exact::undulations::short_waves(&st.contour, cutoff))
-            }
+            // (judged under `cutoff` above)
+            (crate::report::AnyState::Exact(st), _) => Some(st.short_waves()),
             (crate::report::AnyState::Conformal(st), Choice::Contour(member)) => {
                 Some(member.short_waves(&st.coefficients, cutoff))
             }
             _ => None,
         };
-        if let Some(short) = short.filter(|s| s.visible()) {
+        if let Some(short) = short.filter(|s| s.unresolved) {
             warnings.push(format!("the contact's shape: {}", short.words(cutoff)));
         }
         if si.h_over_a > 0.1 {

@@ -456,8 +456,7 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
 /// How much of the state's shape lies in undulations shorter than the
 /// cutoff of its stability verdicts (`exact::undulations`).
 pub(crate) fn shape_words(st: &ExactState) -> String {
-    let cutoff = st.stability.cutoff;
-    crate::exact::undulations::short_waves(&st.contour, cutoff).words(cutoff)
+    st.short_waves().words(st.stability.cutoff)
 }
 
 /// The stability verdicts above the short-wave cutoff, and which unstable

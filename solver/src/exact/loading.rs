@@ -311,7 +311,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
         // than the cutoff: (2) does not resolve where the contact goes
         // from there, whatever the verdicts of its directions
         let short = super::undulations::short_waves(&held.contour, cutoff);
-        if short.visible() {
+        if short.unresolved {
             return done(
                 states,
                 jumps,
@@ -622,8 +622,8 @@ mod tests {
         );
         let (last, before) = path.states.split_last().unwrap();
         let short = |st: &ExactState| super::super::undulations::short_waves(&st.contour, cutoff);
-        assert!(short(last).visible());
-        assert!(before.iter().all(|st| !short(st).visible()));
+        assert!(short(last).unresolved);
+        assert!(before.iter().all(|st| !short(st).unresolved));
         let (traced, _) = crate::exact::pull_off_resolved(0.8).unwrap();
         let above = last.force_bar - traced.force_bar;
         assert!(above > 0.0 && above < 0.05, "{above}");

@@ -460,12 +460,16 @@ impl Contour {
         (0..n)
             .map(|k| {
                 let z = self.point_at(2.0 * std::f64::consts::PI * k as f64 / n as f64);
-                let phi = z.im.atan2(z.re);
-                let r_ell = a * b / ((b * phi.cos()).powi(2) + (a * phi.sin()).powi(2)).sqrt();
-                (z.norm() - r_ell).abs() / a
+                (z.norm() - ellipse_radius(a, b, z.im.atan2(z.re))).abs() / a
             })
             .fold(0.0, f64::max)
     }
+}
+
+/// The radius at polar angle φ of the ellipse with semi-axes a (along X)
+/// and b.
+pub(crate) fn ellipse_radius(a: f64, b: f64, phi: f64) -> f64 {
+    a * b / ((b * phi.cos()).powi(2) + (a * phi.sin()).powi(2)).sqrt()
 }
 
 /// ∂p̄/∂ν on the contour and F̄ for a given contour, ρ and δ̄.
@@ -592,6 +596,13 @@ impl ExactState {
         self.stability = std::mem::take(&mut self.stability).under(cutoff);
         self.shape = Some(undulations::short_waves(&self.contour, cutoff));
         self
+    }
+
+    /// Its shape's unresolved part under the cutoff of its verdicts: the
+    /// one [`ExactState::judged`] measured, else measured now.
+    pub(crate) fn short_waves(&self) -> undulations::ShortWaves {
+        self.shape
+            .unwrap_or_else(|| undulations::short_waves(&self.contour, self.stability.cutoff))
     }
 }
 

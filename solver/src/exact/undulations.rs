@@ -44,17 +44,12 @@ pub(crate) struct ShortWaves {
     pub wavelength: Option<f64>,
     /// The whole departure's largest |d| over ā (every mode).
     pub departure: f64,
-    /// Whether the unresolved part is above 1 % of ā: the shape is then
+    /// Whether the unresolved part is above 1 % of ā (`VISIBLE`): the shape is then
     /// (2)'s, not a coating's of that thickness.
     pub unresolved: bool,
 }
 
 impl ShortWaves {
-    /// Whether the unresolved part is [`VISIBLE`].
-    pub(crate) fn visible(&self) -> bool {
-        self.unresolved
-    }
-
     /// In words, with the cutoff: how much of the contour's shape (2) does
     /// not resolve.
     pub(crate) fn words(&self, cutoff: Cutoff) -> String {
@@ -70,7 +65,7 @@ impl ShortWaves {
                 cutoff.wavelength
             ),
         };
-        let verdict = if self.visible() {
+        let verdict = if self.unresolved {
             "(2) does not resolve that part of its shape, and a real coating this thick, stiffer at short waves, would not take it"
         } else {
             "below 1 % of a, the share at which a shape is called unresolved"
@@ -97,11 +92,7 @@ fn percent(share: f64) -> String {
 
 /// The undulations of `contour` shorter than `cutoff`'s wavelength.
 pub(crate) fn short_waves(contour: &Contour, cutoff: Cutoff) -> ShortWaves {
-    let h = 2.0 * std::f64::consts::PI / POINTS as f64;
-    let z: Vec<Complex<f64>> = (0..POINTS)
-        .map(|k| contour.point_at(h * k as f64))
-        .collect();
-    short_waves_of(&z, cutoff)
+    short_waves_at(&|t| contour.point_at(t), cutoff)
 }
 
 /// [`short_waves`] of a doubly symmetric contour given by [`POINTS`]
@@ -125,11 +116,7 @@ fn short_waves_of(z: &[Complex<f64>], cutoff: Cutoff) -> ShortWaves {
     let perimeter = sigma[POINTS];
     let d: Vec<f64> = z
         .iter()
-        .map(|z| {
-            let phi = z.im.atan2(z.re);
-            let r_ell = a * b / ((b * phi.cos()).powi(2) + (a * phi.sin()).powi(2)).sqrt();
-            (z.norm() - r_ell) / a
-        })
+        .map(|z| (z.norm() - super::ellipse_radius(a, b, z.im.atan2(z.re))) / a)
         .collect();
     // d_n = (2/P) ∮ d cos(2πnσ/P) dσ, the midpoint rule on each chord
     let coefficient = |n: usize| -> f64 {
