@@ -251,9 +251,28 @@ def test_the_exact_pull_off_at_rho_0_3_answers_with_its_default_escalation():
     # "The shape's unresolved part"): below 0.01 % of a with h/L = 0.1, the
     # default; 3.46 % in mode 6 with h/L = 0.5, where the shape is unresolved
     assert po.shape["unresolved"] is False and po.shape["amplitude"] < 1e-4
-    thick = thinjkr.exact.pull_off(0.3, thinness=0.5)
+    assert not po.to_dict().get("warnings")
+    with pytest.warns(thinjkr.ThinJkrWarning, match=r"the contact's shape: .* up to 3\.46 % of a"):
+        thick = thinjkr.exact.pull_off(0.3, thinness=0.5)
     assert thick.shape["unresolved"] is True and thick.shape["mode"] == 6
     assert abs(thick.shape["amplitude"] - 0.0346) < 5e-5
+    # the same warning per point in the arrays, the point marked doubtful
+    with pytest.warns(thinjkr.ThinJkrWarning, match=r"1 of 1 states carry warnings"):
+        S = thinjkr.exact.pull_off([0.3], thinness=0.5)
+    assert S.doubtful[0] and S.warning[0] == thick.warnings[0]
+
+
+def test_the_exact_model_s_pull_offs_warn_where_their_shape_is_unresolved():
+    """The model layer judges an exact state with the default thinness
+    h/L = 0.1 (docs/exact.md, "The shape's unresolved part"): the pull-off
+    at rho = 0.05 has 4.35 % of a in undulations shorter than the cutoff
+    (n = 18) and says so, in its warnings and per point in the arrays; the
+    one at rho = 0.8 has less than 0.01 % and does not."""
+    with pytest.warns(thinjkr.ThinJkrWarning, match=r"1 of 2 states carry warnings"):
+        S = thinjkr.pull_off([0.05, 0.8], model="exact")
+    assert list(S.doubtful) == [True, False]
+    assert S.warning[0].startswith("the contact's shape:") and "n = 18" in S.warning[0]
+    assert S.warning[1] == ""
 
 
 def test_an_exact_sweep_says_per_point_how_each_state_was_found():

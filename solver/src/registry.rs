@@ -18,10 +18,12 @@
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
 //! curves), `model`, `control`, `units` (`physical`), `cutoff` (a contour state's
-//! stability judged with the coatings' thinness), `slender`, `error`.
+//! stability judged with the coatings' thinness, an exact state's with the
+//! default one in the dimensionless verbs), `slender`, `error`.
 
 use crate::conformal::{families, Conformal};
 use crate::control::Hold;
+use crate::cutoff::Cutoff;
 pub use crate::slender::Slender;
 use crate::ModelId;
 
@@ -413,7 +415,10 @@ impl Choice {
                 }
             }
             crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
-            crate::report::AnyState::Exact(_) | crate::report::AnyState::Slender(_) => {}
+            crate::report::AnyState::Slender(_) => {}
+            // its warnings (its shape's, judged under `cutoff` above) come
+            // after the stability's doubt, below
+            crate::report::AnyState::Exact(_) => {}
         }
         // a contour state unstable under its own control above these
         // coatings' cutoff (a pull-off and a state at a force are held by
@@ -428,16 +433,16 @@ impl Choice {
         // an exact state whose shape owes a visible part to undulations
         // shorter than these coatings' cutoff: the shape is (2)'s, not the
         // coating's (`exact::undulations`)
-        let short = match (&state, &model) {
-            // (judged under `cutoff` above)
-            (crate::report::AnyState::Exact(st), _) => Some(st.short_waves()),
+        match (&state, &model) {
+            // (judged under `cutoff` above, its warnings with it)
+            (crate::report::AnyState::Exact(st), _) => warnings.extend(st.warnings.iter().cloned()),
             (crate::report::AnyState::Conformal(st), Choice::Contour(member)) => {
-                Some(member.short_waves(&st.coefficients, cutoff))
+                let short = member.short_waves(&st.coefficients, cutoff);
+                if short.unresolved {
+                    warnings.push(format!("the contact's shape: {}", short.words(cutoff)));
+                }
             }
-            _ => None,
-        };
-        if let Some(short) = short.filter(|s| s.unresolved) {
-            warnings.push(format!("the contact's shape: {}", short.words(cutoff)));
+            _ => {}
         }
         if si.h_over_a > 0.1 {
             warnings.push(format!(
@@ -538,11 +543,11 @@ impl Choice {
                     .collect(),
                 other => vec![AnyState::Slender(m.solve(rho, other)?)],
             },
-            Choice::Exact => {
-                vec![AnyState::Exact(Box::new(crate::exact::at_resolved(
-                    rho, hold,
-                )?))]
-            }
+            // judged under the dimensionless commands' default thinness
+            // (its verdicts, its shape's unresolved part and its warnings)
+            Choice::Exact => vec![AnyState::Exact(Box::new(
+                crate::exact::at_resolved(rho, hold)?.judged(Cutoff::default()),
+            ))],
         })
     }
 
@@ -608,7 +613,7 @@ impl Choice {
                 let mut found = ex.solve_at(hold, &st.contour, st.delta_bar)?;
                 found.route = crate::exact::Route::FromNeighbour;
                 let found = ex.accept_resolved(format!("{hold} (from a nearby state)"), found)?;
-                Ok(AnyState::Exact(Box::new(found)))
+                Ok(AnyState::Exact(Box::new(found.judged(Cutoff::default()))))
             }
             _ => Err(other()),
         }
@@ -687,7 +692,7 @@ impl Choice {
             Choice::Exact => {
                 let (st, events) = crate::exact::pull_off_resolved(rho)?;
                 PullOffAnswer {
-                    state: AnyState::Exact(Box::new(st)),
+                    state: AnyState::Exact(Box::new(st.judged(Cutoff::default()))),
                     control,
                     basis: None,
                     passed: Passed::from_exact(&events),
@@ -827,7 +832,7 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
                 xi: None,
                 p0: None,
                 bc_error: s.bc_error,
-                warning: String::new(),
+                warning: s.warnings.join("; "),
                 departure: Some(s.deviation_from_ellipse),
                 route: serde_json::to_value(s.route)
                     .ok()

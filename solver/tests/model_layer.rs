@@ -52,7 +52,9 @@ fn each_kind_answers_through_the_layer_as_through_its_own_api() {
     assert_eq!(
         json(&exact.state(rho, Hold::Force(10.0)).unwrap()),
         json(&AnyState::Exact(Box::new(
-            thinjkr::exact::at_resolved(rho, Hold::Force(10.0)).unwrap()
+            thinjkr::exact::at_resolved(rho, Hold::Force(10.0))
+                .unwrap()
+                .judged(thinjkr::cutoff::Cutoff::default())
         )))
     );
     let ellipse_pull_off = max.pull_off(rho, FoldCondition::Displacement).unwrap();
@@ -61,6 +63,41 @@ fn each_kind_answers_through_the_layer_as_through_its_own_api() {
         json(&AnyState::Ellipse(c.pull_off_displacement().unwrap().state))
     );
     assert!(ellipse_pull_off.basis.is_some());
+}
+
+/// An exact state answered by the layer is judged under the default
+/// thinness (h/L = 0.1): its shape's unresolved part and, where that part
+/// is visible, the warning every front end shows (in its JSON and in a
+/// batch row). docs/exact.md's table "The shape's unresolved part": the
+/// pull-off at ρ = 0.05 has 4.35 % of ā in undulations shorter than
+/// 2π·0.1 (n = 18), the one at ρ = 0.8 less than 0.01 %.
+#[test]
+fn an_exact_state_through_the_layer_carries_its_shape_s_warning() {
+    let exact = parse("exact").unwrap();
+    let row = |st: &AnyState| thinjkr::batch::Row::from(st).warning;
+    let fine = exact.pull_off(0.8, FoldCondition::Load).unwrap().state;
+    let AnyState::Exact(st) = &fine else {
+        panic!("an exact state")
+    };
+    assert!(st.warnings.is_empty(), "{:?}", st.warnings);
+    assert!(row(&fine).is_empty());
+    assert!(!json(&fine).contains("\"warnings\""));
+    let notched = exact.pull_off(0.05, FoldCondition::Load).unwrap().state;
+    let AnyState::Exact(st) = &notched else {
+        panic!("an exact state")
+    };
+    assert_eq!(st.warnings.len(), 1, "{:?}", st.warnings);
+    let w = &st.warnings[0];
+    assert!(
+        w.starts_with("the contact's shape:")
+            && w.contains("up to 4.35 % of a")
+            && w.contains("n = 18"),
+        "{w}"
+    );
+    assert_eq!(&row(&notched), w);
+    let j: serde_json::Value = serde_json::from_str(&json(&notched)).unwrap();
+    assert_eq!(j["warnings"][0].as_str(), Some(w.as_str()));
+    assert_eq!(j["shape"]["unresolved"].as_bool(), Some(true));
 }
 
 #[test]

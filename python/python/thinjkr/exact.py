@@ -10,7 +10,7 @@ import json as _json
 import numpy as _np
 
 from . import _thinjkr
-from . import _call, _control, _many, _number, _state_from, _whole, InvalidInput, PullOff, State
+from . import _call, _control, _many, _number, _state_from, _warn, _whole, InvalidInput, PullOff, State
 
 
 def _with_contour(d, points: int) -> State:
@@ -32,7 +32,9 @@ def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinnes
     below which unstable contour modes are not resolved by (2) (default
     0.1): ``stable_displacement`` and ``stable_load`` count only the longer
     modes (None: not settled, the series stops short of the cutoff), and
-    each unstable mode says whether it is ``resolved``.
+    each unstable mode says whether it is ``resolved``. A state whose shape
+    has more than 1 % of ā in undulations shorter than the cutoff (``shape``)
+    says so in ``warnings``, raised as a :class:`ThinJkrWarning`.
 
     Scalars give a :class:`State`; when ``rho`` or the control is an array
     (broadcast together) the answer is a :class:`States` of that shape,
@@ -45,6 +47,7 @@ def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinnes
         r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
         return _many(r, "exact", lambda a, b: solve(a, points=points, modes=modes, thinness=thinness, **{control: b}), v)
     d = _json.loads(_call(_thinjkr.exact, rho, control, value, modes, _thinness(thinness)))
+    _warn(d)
     return _with_contour(d, points)
 
 
@@ -68,6 +71,7 @@ def pull_off(rho, *, points: int = 256, modes=None, thinness=None):
     if _np.ndim(rho) > 0:
         return _many(_np.asarray(rho, dtype=float), "exact", lambda r: pull_off(r, points=points, modes=modes, thinness=thinness))
     d = _json.loads(_call(_thinjkr.exact, rho, "pull_off", 0.0, modes, _thinness(thinness)))
+    _warn(d)
     return PullOff({**_with_contour(d, points).to_dict(), "control": "load"})
 
 

@@ -581,6 +581,13 @@ pub struct ExactState {
     /// [`ExactState::judged`], absent before.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) shape: Option<undulations::ShortWaves>,
+    /// Why the state is doubtful, in the words every front end shows
+    /// (empty when it is not, and absent from JSON then): its shape owes a
+    /// visible part (above 1 % of ā) to undulations shorter than the
+    /// cutoff of its verdicts. Set with the verdicts by
+    /// [`ExactState::judged`].
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
     /// The gap of the problem it solves (the cylinders' (1), or a
     /// family's, [`Gap`]).
     #[serde(skip)]
@@ -594,7 +601,13 @@ impl ExactState {
     /// unresolved part measured against it.
     pub fn judged(mut self, cutoff: crate::cutoff::Cutoff) -> ExactState {
         self.stability = std::mem::take(&mut self.stability).under(cutoff);
-        self.shape = Some(undulations::short_waves(&self.contour, cutoff));
+        let shape = undulations::short_waves(&self.contour, cutoff);
+        self.warnings = if shape.unresolved {
+            vec![format!("the contact's shape: {}", shape.words(cutoff))]
+        } else {
+            Vec::new()
+        };
+        self.shape = Some(shape);
         self
     }
 
@@ -1304,6 +1317,7 @@ impl Exact {
             stability: stability::ExactStability::default(),
             route: Route::FromCircle,
             shape: None,
+            warnings: Vec::new(),
             gap: self.gap_source,
         };
         if self.with_stability {
