@@ -812,6 +812,88 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
 mod tests {
     use super::*;
 
+    /// Which states lie above the pull-off on its own piece of the family
+    /// (docs/exact.md, "Above the pull-off on its own piece"): at ρ = 0.2,
+    /// traced from the pull-off (64 modes of each sign) towards larger ā,
+    /// F̄ rises to a fold in ā near ā = 2.6015, where F̄ ≈ −1.2, and past it
+    /// ā shrinks while F̄ keeps rising, still below zero. Every traced state
+    /// resolved below 1e-9 has F̄ below −1.1; 128 modes (Newton at the same
+    /// ā, from the 64-mode contour) resolve the last traced state past the
+    /// fold (ā ≈ 2.39, 8e-7 with 64 modes) to 1e-9 with F̄ unchanged to
+    /// 1e-5 (measured: F̄ = −0.70742, boundary error 1.1e-11), still
+    /// tensile.
+    #[test]
+    fn above_the_pull_off_at_rho_0_2_its_piece_folds_before_zero_force() {
+        let rho = 0.2;
+        let (po, _) = pull_off_resolved(rho).unwrap();
+        assert_eq!(po.truncation.modes, 64, "{:?}", po.truncation);
+        let ex = Exact::on(po.gap, rho, po.truncation)
+            .unwrap()
+            .deferring_stability()
+            .keeping_the_speed_of_grooved(&po.contour);
+        let br = ex.trace_from(&po, 1.0, 2.4, 3.0, 0.05, 60).unwrap();
+        let folds: Vec<f64> = br
+            .events
+            .iter()
+            .filter_map(|e| match e {
+                branch::Event::SizeFold { a_bar } => Some(*a_bar),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(folds.len(), 1, "{folds:?}");
+        assert!((folds[0] - 2.6015).abs() < 5e-4, "{folds:?}");
+        let widest = br
+            .points
+            .iter()
+            .max_by(|p, q| p.state.a_bar.total_cmp(&q.state.a_bar))
+            .unwrap();
+        assert!(
+            (widest.state.force_bar + 1.2).abs() < 0.03,
+            "F at the fold {}",
+            widest.state.force_bar
+        );
+        let resolved: Vec<&ExactState> = br
+            .points
+            .iter()
+            .map(|p| &p.state)
+            .filter(|st| st.bc_error <= 1e-9)
+            .collect();
+        assert!(resolved.len() > 10);
+        for st in &resolved {
+            assert!(
+                st.force_bar < -1.1,
+                "a = {}, F = {}",
+                st.a_bar,
+                st.force_bar
+            );
+        }
+        // past the fold: the last traced state, ā below 2.45, solved again
+        // with 128 modes at its ā
+        let past = &br.points.last().unwrap().state;
+        assert!(past.a_bar < 2.45 && past.force_bar > widest.state.force_bar);
+        let fine = Exact::on(po.gap, rho, Truncation::in_arclength(128))
+            .unwrap()
+            .deferring_stability();
+        let st = fine
+            .solve_at(
+                Hold::Size(past.a_bar),
+                &past.contour.in_arclength(128),
+                past.delta_bar,
+            )
+            .unwrap();
+        assert!(st.bc_error <= 1e-9, "{:e}", st.bc_error);
+        assert!(
+            (st.force_bar - past.force_bar).abs() < 1e-5 && st.force_bar < 0.0,
+            "F = {} with 128 modes, {} with 64",
+            st.force_bar,
+            past.force_bar
+        );
+        eprintln!(
+            "rho = 0.2 above the pull-off: fold at a = {:.5} (F = {:.4}); past it a = {:.4}, F = {:.5} (128 modes, bc {:.1e})",
+            folds[0], widest.state.force_bar, st.a_bar, st.force_bar, st.bc_error
+        );
+    }
+
     /// The continuation in ρ at a fixed control (the route for ρ where no
     /// start finds the state directly): from the state at F̄ = 10 and ρ = 0.4,
     /// continued to ρ = 0.38, it is the state found there directly from
