@@ -252,6 +252,11 @@ def test_the_exact_pull_off_at_rho_0_3_answers_with_its_default_escalation():
     # default; 3.46 % in mode 6 with h/L = 0.5, where the shape is unresolved
     assert po.shape["unresolved"] is False and po.shape["amplitude"] < 1e-4
     assert not po.to_dict().get("warnings")
+    # no coating makes it a contact (2) resolves (docs/exact.md, "Coatings
+    # for which a state is resolved and stable"): below h/L = 0.353 it is
+    # unstable to n = 6, from there on its undulations from n = 6 on pass 1 %
+    assert po.coatings == {"load": None, "displacement": None}
+    assert po.shape["critical_mode"] == 6 and abs(po.shape["critical_thinness"] - 0.353) < 5e-4
     with pytest.warns(thinjkr.ThinJkrWarning, match=r"the contact's shape: .* up to 3\.46 % of a"):
         thick = thinjkr.exact.pull_off(0.3, thinness=0.5)
     assert thick.shape["unresolved"] is True and thick.shape["mode"] == 6

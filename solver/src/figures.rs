@@ -976,6 +976,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
             stability: Default::default(),
             route: Default::default(),
             shape: None,
+            coatings: None,
             warnings: Vec::new(),
             gap: crate::exact::Gap::CYLINDERS,
         };

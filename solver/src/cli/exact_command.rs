@@ -450,7 +450,53 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
     );
     outln!("  {}", cutoff_words(&st.stability));
     outln!("  shape: {}", shape_words(st));
+    outln!("  coatings: {}", coatings_words(st));
     Ok(())
+}
+
+/// For which coatings (2) gives the state as a contact it resolves
+/// (`exact::undulations::Coatings`), in words; "none" under a control where
+/// no thinness does, with the modes that set the two bounds.
+pub(crate) fn coatings_words(st: &ExactState) -> String {
+    use crate::exact::undulations::{longest_unstable, Coatings, Thinnesses};
+    let stab = &st.stability;
+    if stab.load.is_empty() && stab.displacement.is_empty() && stab.shortest_wavelength.is_none() {
+        return "not judged (its stability was not computed)".into();
+    }
+    let shape = st.short_waves();
+    let coatings = st.coatings.unwrap_or_else(|| Coatings::of(stab, &shape));
+    let words = |range: Option<Thinnesses>, modes: &[UnstableMode]| -> String {
+        match range {
+            Some(Thinnesses { from, to: Some(to) }) if from > 0.0 => {
+                format!("from {from:.3} to {to:.3}")
+            }
+            Some(Thinnesses { to: Some(to), .. }) => format!("below {to:.3}"),
+            Some(Thinnesses { from, to: None }) if from > 0.0 => format!("from {from:.3} on"),
+            Some(_) => "every h/L".into(),
+            None if modes.iter().any(|m| m.n == 0) => "none (its size is unstable)".into(),
+            None => {
+                let u = longest_unstable(modes);
+                format!(
+                    "none (below {:.3} it is unstable to n = {}, from {:.3} on its undulations from n = {} on pass 1 % of a)",
+                    u.map_or(0.0, |m| crate::cutoff::Cutoff::thinness_for(m.wavelength)),
+                    u.map_or(0, |m| m.n),
+                    shape.critical_thinness.unwrap_or(f64::INFINITY),
+                    shape.critical_mode.unwrap_or(0)
+                )
+            }
+        }
+    };
+    let (load, displacement) = (
+        words(coatings.load, &stab.load),
+        words(coatings.displacement, &stab.displacement),
+    );
+    let head =
+        "the thinness h/L for which (2) resolves its shape and finds it stable above the cutoff:";
+    if load == displacement {
+        format!("{head} {load}, under either control")
+    } else {
+        format!("{head} {load} under load control, {displacement} under displacement control")
+    }
 }
 
 /// How much of the state's shape lies in undulations shorter than the

@@ -950,6 +950,11 @@ fn physical(
         AnyState::Exact(st) => {
             outln!("  {}", exact_command::cutoff_words(&st.stability));
             outln!("  shape: {}", exact_command::shape_words(st));
+            outln!(
+                "  coatings: {} (h the thicker coating, L = {:.6e} m)",
+                exact_command::coatings_words(st),
+                sc.length
+            );
         }
         AnyState::Conformal(st) => outln!(
             "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",

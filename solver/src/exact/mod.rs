@@ -581,6 +581,11 @@ pub struct ExactState {
     /// [`ExactState::judged`], absent before.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) shape: Option<undulations::ShortWaves>,
+    /// For which coatings (2) gives it as a contact it resolves, its shape
+    /// and its stability under each control ([`undulations`]); set with the
+    /// verdicts by [`ExactState::judged`], absent before.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) coatings: Option<undulations::Coatings>,
     /// Why the state is doubtful, in the words every front end shows
     /// (empty when it is not, and absent from JSON then): its shape owes a
     /// visible part (above 1 % of ā) to undulations shorter than the
@@ -607,6 +612,7 @@ impl ExactState {
         } else {
             Vec::new()
         };
+        self.coatings = Some(undulations::Coatings::of(&self.stability, &shape));
         self.shape = Some(shape);
         self
     }
@@ -1317,6 +1323,7 @@ impl Exact {
             stability: stability::ExactStability::default(),
             route: Route::FromCircle,
             shape: None,
+            coatings: None,
             warnings: Vec::new(),
             gap: self.gap_source,
         };

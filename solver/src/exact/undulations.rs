@@ -14,8 +14,13 @@
 //! notches, grooves narrower than 2πh) owes its shape to undulations a
 //! real coating, stiffer than (2) at short waves, would not let it take.
 //!
-//! Owns: [`ShortWaves`], [`short_waves`]. May use: `exact` (the contour),
-//! `cutoff`.
+//! With the stability verdicts' critical thinness it also says for which
+//! coatings (2) gives a state as a contact it resolves ([`Coatings`]): thin
+//! enough that the shape is resolved, thick enough that every unstable
+//! mode is shorter than the cutoff.
+//!
+//! Owns: [`ShortWaves`], [`short_waves`], [`Coatings`], [`Thinnesses`].
+//! May use: `exact` (the contour, the stability's modes), `cutoff`.
 
 use super::Contour;
 use crate::cutoff::Cutoff;
@@ -30,6 +35,79 @@ pub(crate) const VISIBLE: f64 = 1e-2;
 
 /// Points along the contour the spectrum is read from.
 const POINTS: usize = 4096;
+
+/// A range of the thinness h/L, from `from` (0: no lower bound) up to
+/// `to` (not included; null: no upper bound).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct Thinnesses {
+    /// The smallest h/L of the range: the critical thinness of the
+    /// control's stability (0 where no contour mode is unstable).
+    pub from: f64,
+    /// The h/L from which the shape is unresolved
+    /// ([`ShortWaves::critical_thinness`]); null where it never is.
+    pub to: Option<f64>,
+}
+
+/// For which coatings (2) gives a state as a contact it resolves: its shape
+/// resolved (h/L below the shape's critical thinness) and, under each
+/// control, every unstable contour mode shorter than the cutoff (h/L at
+/// least that control's critical thinness). Null under a control where no
+/// thinness does both (or the size itself is unstable there).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct Coatings {
+    /// Under load control.
+    pub load: Option<Thinnesses>,
+    /// Under displacement control.
+    pub displacement: Option<Thinnesses>,
+}
+
+impl Coatings {
+    /// The ranges of a state with these stability verdicts and this shape.
+    pub(crate) fn of(stab: &super::stability::ExactStability, shape: &ShortWaves) -> Coatings {
+        Coatings {
+            load: thinnesses(&stab.load, stab.critical_thinness_load, shape),
+            displacement: thinnesses(
+                &stab.displacement,
+                stab.critical_thinness_displacement,
+                shape,
+            ),
+        }
+    }
+}
+
+/// The longest unstable contour mode (n ≥ 1) of `modes`.
+pub(crate) fn longest_unstable(
+    modes: &[super::stability::UnstableMode],
+) -> Option<&super::stability::UnstableMode> {
+    modes
+        .iter()
+        .filter(|m| m.n > 0)
+        .max_by(|p, q| p.wavelength.total_cmp(&q.wavelength))
+}
+
+fn thinnesses(
+    modes: &[super::stability::UnstableMode],
+    critical: Option<f64>,
+    shape: &ShortWaves,
+) -> Option<Thinnesses> {
+    if modes.iter().any(|m| m.n == 0) {
+        return None;
+    }
+    // both bounds are wavelengths of modes of the same contour over 2π,
+    // P/(2πn): the range is open where the shape's critical mode is
+    // longer (smaller n) than the longest unstable one (compared by n, not
+    // by thinness: the two read the perimeter by different quadratures)
+    let open = match (longest_unstable(modes), shape.critical_mode) {
+        (Some(u), Some(m)) => m < u.n,
+        _ => true,
+    };
+    open.then(|| Thinnesses {
+        from: critical.unwrap_or(0.0),
+        to: shape.critical_thinness,
+    })
+}
 
 /// The unresolved part of a contour's departure from its ellipse.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
@@ -47,6 +125,15 @@ pub(crate) struct ShortWaves {
     /// Whether the unresolved part is above 1 % of ā (`VISIBLE`): the shape is then
     /// (2)'s, not a coating's of that thickness.
     pub unresolved: bool,
+    /// The thinness h/L from which the shape is unresolved: the smallest
+    /// h/L whose cutoff 2π h/L leaves more than 1 % of ā in the shorter
+    /// modes, P/(2π m) for the longest such mode m ([`ShortWaves::critical_mode`]).
+    /// With thinner coatings (2) resolves the shape. Null where even the
+    /// whole departure from the ellipse (every mode n ≥ 2) is below 1 %.
+    pub critical_thinness: Option<f64>,
+    /// The mode m whose wavelength sets [`ShortWaves::critical_thinness`]:
+    /// with it and the shorter modes the unresolved part passes 1 % of ā.
+    pub critical_mode: Option<usize>,
 }
 
 impl ShortWaves {
@@ -70,8 +157,14 @@ impl ShortWaves {
         } else {
             "below 1 % of a, the share at which a shape is called unresolved"
         };
+        let thinner = match (self.critical_thinness, self.critical_mode) {
+            (Some(h), Some(m)) => format!(
+                "; it is resolved for h/L below {h:.3} (above, the modes from n = {m} on, shorter than the cutoff, pass 1 % of a)"
+            ),
+            _ => "; it is resolved at every thinness (its whole departure is below 1 % of a)".into(),
+        };
         format!(
-            "its contour departs from its ellipse by up to {} of a; {part}: {verdict}",
+            "its contour departs from its ellipse by up to {} of a; {part}: {verdict}{thinner}",
             percent(self.departure)
         )
     }
@@ -135,23 +228,36 @@ fn short_waves_of(z: &[Complex<f64>], cutoff: Cutoff) -> ShortWaves {
     // no longer reads them
     let n_max = POINTS / 16;
     let first_short = (perimeter / cutoff.wavelength).floor() as usize + 1;
-    let short: Vec<(usize, f64)> = (first_short.max(2)..=n_max)
-        .filter(|n| n % 2 == 0)
+    let modes: Vec<(usize, f64)> = (2..=n_max)
+        .step_by(2)
         .map(|n| (n, coefficient(n)))
         .collect();
-    // the unresolved part d_short(σ) = Σ d_n cos(2πnσ/P) over the short
-    // modes, its largest excursion along the contour
-    let amplitude = (0..POINTS)
-        .map(|i| {
-            short
-                .iter()
-                .map(|&(n, dn)| {
-                    dn * (2.0 * std::f64::consts::PI * n as f64 * sigma[i] / perimeter).cos()
-                })
-                .sum::<f64>()
-                .abs()
-        })
-        .fold(0.0, f64::max);
+    // the part in the modes from m on, d_m(σ) = Σ_{n ≥ m} d_n cos(2πnσ/P),
+    // summed from the shortest mode down; its largest excursion along the
+    // contour at the cutoff's first short mode is the unresolved part, and
+    // the largest m at which it passes 1 % (the first met from the
+    // shortest mode down) sets the critical thinness
+    let mut partial = vec![0.0; POINTS];
+    let mut amplitude = 0.0;
+    let mut critical_mode = None;
+    for &(n, dn) in modes.iter().rev() {
+        let k = 2.0 * std::f64::consts::PI * n as f64 / perimeter;
+        for (p, s) in partial.iter_mut().zip(&sigma) {
+            *p += dn * (k * s).cos();
+        }
+        let excursion = partial.iter().fold(0.0, |m: f64, v| m.max(v.abs()));
+        if n >= first_short {
+            amplitude = excursion;
+        }
+        if critical_mode.is_none() && excursion > VISIBLE {
+            critical_mode = Some(n);
+        }
+    }
+    let short: Vec<(usize, f64)> = modes
+        .iter()
+        .copied()
+        .filter(|&(n, _)| n >= first_short)
+        .collect();
     let largest = short.iter().map(|&(n, dn)| (n, dn.abs())).fold(
         (None, 0.0),
         |best: (Option<usize>, f64), (n, a)| {
@@ -170,6 +276,8 @@ fn short_waves_of(z: &[Complex<f64>], cutoff: Cutoff) -> ShortWaves {
         wavelength: mode.map(|n| perimeter / n as f64),
         departure: d.iter().fold(0.0, |m: f64, v| m.max(v.abs())),
         unresolved: amplitude > VISIBLE,
+        critical_thinness: critical_mode.map(|m| Cutoff::thinness_for(perimeter / m as f64)),
+        critical_mode,
     }
 }
 
@@ -180,7 +288,11 @@ mod tests {
     /// docs/exact.md's table "The shape's unresolved part": every cell is
     /// the exact pull-off's unresolved part at that ρ and h/L, to its
     /// printed digits, with its largest mode, and the first column the
-    /// whole departure from the ellipse.
+    /// whole departure from the ellipse; and its table "Coatings for which
+    /// a state is resolved and stable": each pull-off's critical thinness
+    /// under load with its longest unstable mode, its shape's critical
+    /// thinness with its mode, and the range of both (`Coatings`), the same
+    /// under displacement control.
     #[test]
     fn the_unresolved_shape_table_of_the_docs_is_the_solvers() {
         let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
@@ -210,6 +322,20 @@ mod tests {
             })
             .collect();
         assert_eq!(rows.len(), 7, "the table's rows");
+        // the pull-offs, judged with the default thinness, by ρ's digits
+        let mut pull_offs: std::collections::HashMap<String, crate::exact::ExactState> =
+            Default::default();
+        let mut pull_off = |rho: &str| -> crate::exact::ExactState {
+            pull_offs
+                .entry(rho.to_string())
+                .or_insert_with(|| {
+                    crate::exact::pull_off_resolved(rho.parse().unwrap())
+                        .unwrap()
+                        .0
+                        .judged(Cutoff::default())
+                })
+                .clone()
+        };
         let share = |p: f64| {
             if p < 10.0 {
                 format!("{p:.1}")
@@ -219,8 +345,8 @@ mod tests {
         };
         for row in &rows {
             let (rho, departure) = row[0].split_once(" (").unwrap();
+            let st = pull_off(rho);
             let rho: f64 = rho.parse().unwrap();
-            let (st, _) = crate::exact::pull_off_resolved(rho).unwrap();
             for (k, &thinness) in header.iter().enumerate() {
                 let sw = short_waves(&st.contour, Cutoff::for_thinness(thinness).unwrap());
                 assert_eq!(
@@ -241,6 +367,42 @@ mod tests {
                 };
                 assert_eq!(cell, row[k + 1], "rho {rho}, h/L {thinness}");
             }
+        }
+        // "Coatings for which a state is resolved and stable": the pull-offs'
+        // bounds, each with its mode, and the range of both
+        let from = doc
+            .find("**Coatings for which a state is resolved and stable.**")
+            .expect("the section");
+        let rows: Vec<Vec<String>> = doc[from..]
+            .lines()
+            .skip_while(|l| !l.starts_with("| ρ | stable under load"))
+            .skip(2)
+            .take_while(|l| l.starts_with("| "))
+            .map(|l| {
+                l.trim_matches(|c| c == '|' || c == ' ')
+                    .split(" | ")
+                    .map(str::to_string)
+                    .collect()
+            })
+            .collect();
+        assert_eq!(rows.len(), 12, "the coatings table's rows");
+        for row in &rows {
+            let st = pull_off(&row[0]);
+            let (stab, shape) = (&st.stability, st.shape.unwrap());
+            let coatings = st.coatings.unwrap();
+            assert_eq!(coatings.load, coatings.displacement, "rho {}", row[0]);
+            let n = longest_unstable(&stab.load).unwrap().n;
+            let stable = format!("{:.3} (n = {n})", stab.critical_thinness_load.unwrap());
+            let resolved = match (shape.critical_thinness, shape.critical_mode) {
+                (Some(h), Some(m)) => format!("{h:.3} (n = {m})"),
+                _ => "every h/L".to_string(),
+            };
+            let both = match coatings.load {
+                None => "none".to_string(),
+                Some(Thinnesses { from, to: None }) => format!("{from:.3} on"),
+                Some(Thinnesses { from, to: Some(to) }) => format!("{from:.3} to {to:.3}"),
+            };
+            assert_eq!([stable, resolved, both], row[1..4], "rho {}", row[0]);
         }
     }
 
