@@ -246,10 +246,14 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
     };
     // docs/exact.md's table of these angles: h/L and the answer's critical
     // thinness under load ("stable" where a conformal:8 state is)
-    let (thinness, critical, unresolved) = (
+    let (thinness, critical, unresolved, coatings) = (
         docs_tables::row("| θ | 16° |", "| h/L |"),
         docs_tables::row("| θ | 16° |", "| critical h/L |"),
         docs_tables::row("| θ | 16° |", "| unresolved shape (% of a) |"),
+        docs_tables::row(
+            "| θ | 16° |",
+            "| exact pull-off resolved and stable for h/L |",
+        ),
     );
     for (k, theta) in [16.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0]
         .into_iter()
@@ -272,6 +276,20 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
             "theta {theta}: {} off by {off:e}",
             answer.model
         );
+        // the thinnesses for which the exact pull-off is a contact (2)
+        // resolves, under load control ("Coatings for which a state is
+        // resolved and stable"; the range does not depend on the cutoff)
+        let judged: serde_json::Value = serde_json::from_str(&json(
+            &exact.clone().judged(thinjkr::cutoff::Cutoff::default()),
+        ))
+        .unwrap();
+        let range = &judged["coatings"]["load"];
+        let words = match (range["from"].as_f64(), range["to"].as_f64()) {
+            (None, _) => "none".to_string(),
+            (Some(from), None) => format!("{from:.3} on"),
+            (Some(from), Some(to)) => format!("{from:.3} to {to:.3}"),
+        };
+        assert_eq!(words, coatings[k], "theta {theta}");
         let expected = if rho >= 0.4 { "conformal:8" } else { "exact" };
         assert_eq!(answer.model, expected, "theta {theta}");
         // a pull-off unstable under load above these coatings' cutoff is
