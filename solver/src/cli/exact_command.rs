@@ -270,6 +270,20 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
     }
 }
 
+/// The map's line when it has no band: that the screen found a
+/// near-elliptic state everywhere only where it has no gap of any kind
+/// (a gap crossed, not settled or at an end of the range is listed after
+/// it); `None` when it has a band.
+fn no_band_words(map: &crate::exact::bands::BandMap) -> Option<&'static str> {
+    if !map.bands.is_empty() {
+        None
+    } else if map.crossed.is_empty() && map.unsettled.is_empty() && map.open_ends.is_empty() {
+        Some("no band: a near-elliptic state at every a screened")
+    } else {
+        Some("no band found: each gap of the screen, listed below, is crossed by the exact family or not settled")
+    }
+}
+
 /// `thinjkr exact bands`.
 pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
     let map = crate::exact::bands::bands(rho, from, to)?;
@@ -285,8 +299,8 @@ pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
         map.screen,
         map.step
     );
-    if map.bands.is_empty() {
-        outln!("  no band: a near-elliptic state at every a screened");
+    if let Some(words) = no_band_words(&map) {
+        outln!("  {words}");
     }
     let mode = |m: Option<usize>| match m {
         Some(0) => "the size".to_string(),
@@ -929,4 +943,39 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A map without bands says "a near-elliptic state at every a
+    /// screened" only where the screen has no gap at all: at ρ = 0.3
+    /// `conformal:8` has no near-elliptic state from ā = 2 to 4 (an open
+    /// end over the whole range), and the map had said both.
+    #[test]
+    fn a_map_without_bands_says_a_state_everywhere_only_without_gaps() {
+        let mut map = crate::exact::bands::BandMap {
+            rho: 0.3,
+            range: [2.0, 4.0],
+            step: 0.01,
+            screen: "conformal:8".into(),
+            bands: Vec::new(),
+            crossed: Vec::new(),
+            unsettled: Vec::new(),
+            open_ends: Vec::new(),
+            probed: Vec::new(),
+            curve: Vec::new(),
+        };
+        assert_eq!(
+            no_band_words(&map),
+            Some("no band: a near-elliptic state at every a screened")
+        );
+        map.open_ends.push([2.0, 4.0]);
+        let words = no_band_words(&map).unwrap();
+        assert!(
+            words.starts_with("no band found") && !words.contains("every a"),
+            "{words}"
+        );
+    }
 }
