@@ -847,11 +847,26 @@ fn the_pull_off_at_rho_0_1_is_not_reached_by_unloading_below_its_critical_thinne
     );
     assert!(default.contains("the longest n = 6 ("), "{default}");
     assert!(default.contains(&format!("for h/L >= {h:.3}")), "{default}");
+    // but a thicker coating is no way out: its shape is unresolved from
+    // h/L = 0.110 on (modes from n = 18), below the critical 0.329
+    // (docs/exact.md, "Coatings for which a state is resolved and stable")
+    assert!(
+        default.ends_with(
+            "but from h/L = 0.110 on its shape is unresolved: no thinness makes it a stable contact (2) resolves"
+        ),
+        "{default}"
+    );
+    assert!(
+        doc["state"]["coatings"]["load"].is_null(),
+        "{}",
+        doc["state"]["coatings"]
+    );
     let below = reached(&run(&["--thinness", &format!("{}", 0.99 * h)]));
     assert!(below.starts_with("no at this thinness"), "{below}");
     let above = reached(&run(&["--thinness", &format!("{}", 1.01 * h)]));
     assert!(
-        above.starts_with("possibly: it is stable under load control"),
+        above.starts_with("possibly: it is stable under load control")
+            && above.contains("but its shape is unresolved at this thinness"),
         "{above}"
     );
 }

@@ -609,10 +609,24 @@ fn reached_words(po: &crate::exact::ExactState, unloading: bool) -> String {
     } else {
         "; --unloading follows the path from F = 10 to say whether it does"
     };
+    // where no thinness makes it a stable contact whose shape (2)
+    // resolves, a thicker coating is no way out (`coatings:`)
+    let shape = po.short_waves();
+    let no_thinness = match (po.coatings, shape.critical_thinness) {
+        (Some(c), Some(h)) if c.load.is_none() => format!(
+            ", but from h/L = {h:.3} on its shape is unresolved: no thinness makes it a stable contact (2) resolves"
+        ),
+        _ => String::new(),
+    };
+    let unresolved = if shape.unresolved {
+        ", but its shape is unresolved at this thinness"
+    } else {
+        ""
+    };
     match (stab.stable_load, stab.doubt(true, po.a_bar)) {
-        (Some(false), Some(why)) => format!("no at this thinness: {why}{path}"),
+        (Some(false), Some(why)) => format!("no at this thinness: {why}{no_thinness}{path}"),
         (Some(true), _) => format!(
-            "possibly: it is stable under load control above the short-wave cutoff (h/L = {}{}){then}",
+            "possibly: it is stable under load control above the short-wave cutoff (h/L = {}{}){unresolved}{then}",
             crate::error::short(stab.cutoff.thinness),
             match stab.critical_thinness_load {
                 Some(h) => format!(", as for every h/L >= {h:.3}"),
