@@ -311,16 +311,20 @@ mod tests {
             .skip(1)
             .map(|c| c.trim_start_matches("h/L = ").parse().unwrap())
             .collect();
-        let rows: Vec<Vec<String>> = lines
-            .skip(1)
-            .take_while(|l| l.starts_with("| "))
-            .map(|l| {
-                l.trim_matches(|c| c == '|' || c == ' ')
-                    .split(" | ")
-                    .map(str::to_string)
-                    .collect()
-            })
-            .collect();
+        // a table's rows after its header line, as cells
+        let cells = |lines: &mut dyn Iterator<Item = &str>| -> Vec<Vec<String>> {
+            lines
+                .skip(1)
+                .take_while(|l| l.starts_with("| "))
+                .map(|l| {
+                    l.trim_matches(|c| c == '|' || c == ' ')
+                        .split(" | ")
+                        .map(str::to_string)
+                        .collect()
+                })
+                .collect()
+        };
+        let rows = cells(&mut lines);
         assert_eq!(rows.len(), 7, "the table's rows");
         // the pull-offs, judged with the default thinness, by ρ's digits
         let mut pull_offs: std::collections::HashMap<String, crate::exact::ExactState> =
@@ -373,18 +377,12 @@ mod tests {
         let from = doc
             .find("**Coatings for which a state is resolved and stable.**")
             .expect("the section");
-        let rows: Vec<Vec<String>> = doc[from..]
-            .lines()
-            .skip_while(|l| !l.starts_with("| ρ | stable under load"))
-            .skip(2)
-            .take_while(|l| l.starts_with("| "))
-            .map(|l| {
-                l.trim_matches(|c| c == '|' || c == ' ')
-                    .split(" | ")
-                    .map(str::to_string)
-                    .collect()
-            })
-            .collect();
+        let rows = cells(
+            &mut doc[from..]
+                .lines()
+                .skip_while(|l| !l.starts_with("| ρ | stable under load"))
+                .skip(1),
+        );
         assert_eq!(rows.len(), 12, "the coatings table's rows");
         for row in &rows {
             let st = pull_off(&row[0]);
