@@ -434,8 +434,28 @@ impl Choice {
         // shorter than these coatings' cutoff: the shape is (2)'s, not the
         // coating's (`exact::undulations`)
         match (&state, &model) {
-            // (judged under `cutoff` above, its warnings with it)
-            (crate::report::AnyState::Exact(st), _) => warnings.extend(st.warnings.iter().cloned()),
+            // (judged under `cutoff` above, its warnings with it); where no
+            // thinness makes it a stable contact (2) resolves under the
+            // control that holds it, a thinner or thicker coating is no
+            // way out, and the warning says so
+            (crate::report::AnyState::Exact(st), _) => {
+                warnings.extend(st.warnings.iter().cloned());
+                if let (Some(c), Some(shape)) = (st.coatings, st.shape) {
+                    let (range, modes) = if under_load {
+                        (c.load, &st.stability.load)
+                    } else {
+                        (c.displacement, &st.stability.displacement)
+                    };
+                    // (an unstable size is the stability's doubt above)
+                    let why = crate::exact::undulations::no_thinness_words(range, modes, &shape)
+                        .filter(|_| !modes.iter().any(|m| m.n == 0));
+                    if let Some(why) = why {
+                        warnings.push(format!(
+                            "no coating thickness makes this state a stable contact whose shape (2) resolves: {why} (docs/exact.md, \"Coatings for which a state is resolved and stable\")"
+                        ));
+                    }
+                }
+            }
             (crate::report::AnyState::Conformal(st), Choice::Contour(member)) => {
                 let short = member.short_waves(&st.coefficients, cutoff);
                 if short.unresolved {

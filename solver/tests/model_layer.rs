@@ -290,6 +290,17 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
             (Some(from), Some(to)) => format!("{from:.3} to {to:.3}"),
         };
         assert_eq!(words, coatings[k], "theta {theta}");
+        // an exact answer for which no thinness works says so
+        let no_thinness = answer
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("no coating thickness makes this state"));
+        assert_eq!(
+            no_thinness,
+            answer.model == "exact" && coatings[k] == "none",
+            "theta {theta}: {:?}",
+            answer.warnings
+        );
         let expected = if rho >= 0.4 { "conformal:8" } else { "exact" };
         assert_eq!(answer.model, expected, "theta {theta}");
         // a pull-off unstable under load above these coatings' cutoff is

@@ -472,7 +472,7 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
 /// (`exact::undulations::Coatings`), in words; "none" under a control where
 /// no thinness does, with the modes that set the two bounds.
 pub(crate) fn coatings_words(st: &ExactState) -> String {
-    use crate::exact::undulations::{longest_unstable, Coatings, Thinnesses};
+    use crate::exact::undulations::{no_thinness_words, Coatings, Thinnesses};
     let stab = &st.stability;
     if stab.load.is_empty() && stab.displacement.is_empty() && stab.shortest_wavelength.is_none() {
         return "not judged (its stability was not computed)".into();
@@ -487,17 +487,10 @@ pub(crate) fn coatings_words(st: &ExactState) -> String {
             Some(Thinnesses { to: Some(to), .. }) => format!("below {to:.3}"),
             Some(Thinnesses { from, to: None }) if from > 0.0 => format!("from {from:.3} on"),
             Some(_) => "every h/L".into(),
-            None if modes.iter().any(|m| m.n == 0) => "none (its size is unstable)".into(),
-            None => {
-                let u = longest_unstable(modes);
-                format!(
-                    "none (below {:.3} it is unstable to n = {}, from {:.3} on its undulations from n = {} on pass 1 % of a)",
-                    u.map_or(0.0, |m| crate::cutoff::Cutoff::thinness_for(m.wavelength)),
-                    u.map_or(0, |m| m.n),
-                    shape.critical_thinness.unwrap_or(f64::INFINITY),
-                    shape.critical_mode.unwrap_or(0)
-                )
-            }
+            None => format!(
+                "none ({})",
+                no_thinness_words(None, modes, &shape).unwrap_or_default()
+            ),
         }
     };
     let (load, displacement) = (

@@ -19,7 +19,8 @@
 //! enough that the shape is resolved, thick enough that every unstable
 //! mode is shorter than the cutoff.
 //!
-//! Owns: [`ShortWaves`], [`short_waves`], [`Coatings`], [`Thinnesses`].
+//! Owns: [`ShortWaves`], [`short_waves`], [`Coatings`], [`Thinnesses`],
+//! [`no_thinness_words`].
 //! May use: `exact` (the contour, the stability's modes), `cutoff`.
 
 use super::Contour;
@@ -75,6 +76,30 @@ impl Coatings {
             ),
         }
     }
+}
+
+/// Why no thinness makes a state a stable contact whose shape (2)
+/// resolves under a control (`range` its [`Coatings`] there, `modes` its
+/// unstable modes there), in words; `None` where a range exists.
+pub(crate) fn no_thinness_words(
+    range: Option<Thinnesses>,
+    modes: &[super::stability::UnstableMode],
+    shape: &ShortWaves,
+) -> Option<String> {
+    if range.is_some() {
+        return None;
+    }
+    if modes.iter().any(|m| m.n == 0) {
+        return Some("its size is unstable".into());
+    }
+    let u = longest_unstable(modes);
+    Some(format!(
+        "below h/L = {:.3} it is unstable to n = {}, from {:.3} on its undulations from n = {} on pass 1 % of a",
+        u.map_or(0.0, |m| Cutoff::thinness_for(m.wavelength)),
+        u.map_or(0, |m| m.n),
+        shape.critical_thinness.unwrap_or(f64::INFINITY),
+        shape.critical_mode.unwrap_or(0)
+    ))
 }
 
 /// The longest unstable contour mode (n ≥ 1) of `modes`.
