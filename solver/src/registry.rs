@@ -415,10 +415,9 @@ impl Choice {
                 }
             }
             crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
-            crate::report::AnyState::Slender(_) => {}
-            // its warnings (its shape's, judged under `cutoff` above) come
-            // after the stability's doubt, below
-            crate::report::AnyState::Exact(_) => {}
+            // (an exact state's warnings, its shape's, come after the
+            // stability's doubt, below)
+            crate::report::AnyState::Exact(_) | crate::report::AnyState::Slender(_) => {}
         }
         // a contour state unstable under its own control above these
         // coatings' cutoff (a pull-off and a state at a force are held by
@@ -447,11 +446,10 @@ impl Choice {
                         (c.displacement, &st.stability.displacement)
                     };
                     // (an unstable size is the stability's doubt above)
-                    let why = crate::exact::undulations::no_thinness_words(range, modes, &shape)
-                        .filter(|_| !modes.iter().any(|m| m.n == 0));
-                    if let Some(why) = why {
+                    if range.is_none() && !crate::exact::undulations::size_unstable(modes) {
                         warnings.push(format!(
-                            "no coating thickness makes this state a stable contact whose shape (2) resolves: {why} (docs/exact.md, \"Coatings for which a state is resolved and stable\")"
+                            "no coating thickness makes this state a stable contact whose shape (2) resolves: {} (docs/exact.md, \"Coatings for which a state is resolved and stable\")",
+                            crate::exact::undulations::no_thinness_words(modes, &shape)
                         ));
                     }
                 }

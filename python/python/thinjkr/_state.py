@@ -66,8 +66,12 @@ class State:
     ``shortest_wavelength``, ``critical_thinness_displacement``,
     ``critical_thinness_load``, ``shape`` (the part of the contour in
     undulations shorter than the cutoff: ``amplitude`` and ``departure``
-    over ā, ``mode``, ``wavelength``, and ``unresolved`` where that part is
-    above 1 % of ā) for ``exact``; for both, ``stable_displacement``
+    over ā, ``mode``, ``wavelength``, ``unresolved`` where that part is
+    above 1 % of ā, and ``critical_thinness``, ``critical_mode``: from which
+    h/L on it is), ``coatings`` (``load``, ``displacement``: the range
+    ``{from, to}`` of h/L for which the state is resolved and stable above
+    the cutoff, None for none) and ``warnings`` for ``exact``; for both,
+    ``stable_displacement``
     and ``stable_load`` count only the contour modes above the short-wave
     cutoff ``cutoff``, 2π h/L, and an exact verdict is None where it is not
     settled). A neutral direction has a zero eigenvalue (within 1e-6 of the

@@ -474,11 +474,10 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
 pub(crate) fn coatings_words(st: &ExactState) -> String {
     use crate::exact::undulations::{no_thinness_words, Coatings, Thinnesses};
     let stab = &st.stability;
-    if stab.load.is_empty() && stab.displacement.is_empty() && stab.shortest_wavelength.is_none() {
-        return "not judged (its stability was not computed)".into();
-    }
     let shape = st.short_waves();
-    let coatings = st.coatings.unwrap_or_else(|| Coatings::of(stab, &shape));
+    let Some(coatings) = st.coatings.or_else(|| Coatings::of(stab, &shape)) else {
+        return "not judged (its stability was not computed)".into();
+    };
     let words = |range: Option<Thinnesses>, modes: &[UnstableMode]| -> String {
         match range {
             Some(Thinnesses { from, to: Some(to) }) if from > 0.0 => {
@@ -487,10 +486,7 @@ pub(crate) fn coatings_words(st: &ExactState) -> String {
             Some(Thinnesses { to: Some(to), .. }) => format!("below {to:.3}"),
             Some(Thinnesses { from, to: None }) if from > 0.0 => format!("from {from:.3} on"),
             Some(_) => "every h/L".into(),
-            None => format!(
-                "none ({})",
-                no_thinness_words(None, modes, &shape).unwrap_or_default()
-            ),
+            None => format!("none ({})", no_thinness_words(modes, &shape)),
         }
     };
     let (load, displacement) = (

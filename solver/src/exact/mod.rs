@@ -583,7 +583,8 @@ pub struct ExactState {
     pub(crate) shape: Option<undulations::ShortWaves>,
     /// For which coatings (2) gives it as a contact it resolves, its shape
     /// and its stability under each control ([`undulations`]); set with the
-    /// verdicts by [`ExactState::judged`], absent before.
+    /// verdicts by [`ExactState::judged`], absent before and where its
+    /// stability was not computed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) coatings: Option<undulations::Coatings>,
     /// Why the state is doubtful, in the words every front end shows
@@ -612,7 +613,7 @@ impl ExactState {
         } else {
             Vec::new()
         };
-        self.coatings = Some(undulations::Coatings::of(&self.stability, &shape));
+        self.coatings = undulations::Coatings::of(&self.stability, &shape);
         self.shape = Some(shape);
         self
     }

@@ -20,7 +20,7 @@
 //! mode is shorter than the cutoff.
 //!
 //! Owns: [`ShortWaves`], [`short_waves`], [`Coatings`], [`Thinnesses`],
-//! [`no_thinness_words`].
+//! [`no_thinness_words`], [`size_unstable`].
 //! May use: `exact` (the contour, the stability's modes), `cutoff`.
 
 use super::Contour;
@@ -65,41 +65,48 @@ pub(crate) struct Coatings {
 }
 
 impl Coatings {
-    /// The ranges of a state with these stability verdicts and this shape.
-    pub(crate) fn of(stab: &super::stability::ExactStability, shape: &ShortWaves) -> Coatings {
-        Coatings {
+    /// The ranges of a state with these stability verdicts and this shape;
+    /// `None` where its stability was not computed (no verdict, no range).
+    pub(crate) fn of(
+        stab: &super::stability::ExactStability,
+        shape: &ShortWaves,
+    ) -> Option<Coatings> {
+        stab.shortest_wavelength?;
+        Some(Coatings {
             load: thinnesses(&stab.load, stab.critical_thinness_load, shape),
             displacement: thinnesses(
                 &stab.displacement,
                 stab.critical_thinness_displacement,
                 shape,
             ),
-        }
+        })
     }
 }
 
 /// Why no thinness makes a state a stable contact whose shape (2)
-/// resolves under a control (`range` its [`Coatings`] there, `modes` its
-/// unstable modes there), in words; `None` where a range exists.
+/// resolves under a control where its [`Coatings`] have no range there
+/// (`modes` its unstable modes there), in words.
 pub(crate) fn no_thinness_words(
-    range: Option<Thinnesses>,
     modes: &[super::stability::UnstableMode],
     shape: &ShortWaves,
-) -> Option<String> {
-    if range.is_some() {
-        return None;
-    }
-    if modes.iter().any(|m| m.n == 0) {
-        return Some("its size is unstable".into());
+) -> String {
+    if size_unstable(modes) {
+        return "its size is unstable".into();
     }
     let u = longest_unstable(modes);
-    Some(format!(
+    format!(
         "below h/L = {:.3} it is unstable to n = {}, from {:.3} on its undulations from n = {} on pass 1 % of a",
         u.map_or(0.0, |m| Cutoff::thinness_for(m.wavelength)),
         u.map_or(0, |m| m.n),
         shape.critical_thinness.unwrap_or(f64::INFINITY),
         shape.critical_mode.unwrap_or(0)
-    ))
+    )
+}
+
+/// Whether the size (n = 0) is among the unstable `modes`: no thinness
+/// stabilises it.
+pub(crate) fn size_unstable(modes: &[super::stability::UnstableMode]) -> bool {
+    modes.iter().any(|m| m.n == 0)
 }
 
 /// The longest unstable contour mode (n ≥ 1) of `modes`.
@@ -117,7 +124,7 @@ fn thinnesses(
     critical: Option<f64>,
     shape: &ShortWaves,
 ) -> Option<Thinnesses> {
-    if modes.iter().any(|m| m.n == 0) {
+    if size_unstable(modes) {
         return None;
     }
     // both bounds are wavelengths of modes of the same contour over 2π,
@@ -412,7 +419,7 @@ mod tests {
         for row in &rows {
             let st = pull_off(&row[0]);
             let (stab, shape) = (&st.stability, st.shape.unwrap());
-            let coatings = st.coatings.unwrap();
+            let coatings = st.coatings.expect("judged with its stability");
             assert_eq!(coatings.load, coatings.displacement, "rho {}", row[0]);
             let n = longest_unstable(&stab.load).unwrap().n;
             let stable = format!("{:.3} (n = {n})", stab.critical_thinness_load.unwrap());
