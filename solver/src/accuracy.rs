@@ -292,10 +292,12 @@ pub(crate) fn render_row(r: &Row) -> String {
             let short = match e {
                 Error::Unresolved { .. } => cell(&why),
                 // the reason in a few words; the story in docs/exact.md
-                // (the route below the fold, on the arms of larger
-                // contacts, has been tried and failed when this comes back)
-                Error::PastRhoFold { fold, .. } => format!(
-                    "no exact value: the family turns back at ρ = {} (a fold in ρ); no larger contact's arm reaches it (exact.md)",
+                // (the routes below the fold, continued from the state at
+                // the tenth below it and on the arms of larger contacts,
+                // have been tried and failed when this comes back)
+                Error::PastRhoFold { fold, from, .. } => format!(
+                    "no exact value: continued in ρ from its state at ρ = {}, the family turns back at ρ = {} (exact.md)",
+                    crate::error::short(*from),
                     crate::error::rounded(*fold)
                 ),
                 Error::StopsInRho { reached, .. } => format!(
@@ -343,7 +345,9 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          contour of such a state undulates with the band's mode, as the pull-off's does past the mode-4 band); \
          where that finds none either, and the value lies in no band, it is continued in ρ at that F̄ from the \
          state at the first of ρ + 0.1, ρ + 0.2, … that is found (route `continued_in_rho`, \"continued in ρ\" \
-         in the row); where that continuation turns back at a fold in ρ, on the arm of a larger contact: sizes \
+         in the row); where that continuation turns back at a fold in ρ, and ρ lies below the tenth under the \
+         fold (ρ = 0.3 for both folds met), the state at that tenth, as found there, continued in ρ at that F̄ \
+         (\"continued in ρ\"); else on the arm of a larger contact: sizes \
          above the state's at that larger ρ continued in ρ at fixed ā, the first that arrives above the value \
          traced down in ā through its folds to it (route `from_larger_contact`, \"on a larger contact's arm\" \
          in the row; exact.md, \"Below the fold\"); where that fails too, the states the screen of `thinjkr exact solve --all` finds at that \

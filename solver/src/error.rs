@@ -60,6 +60,8 @@ pub enum Error {
     PastRhoFold {
         /// The smallest ρ of the family at the control.
         fold: f64,
+        /// The ρ of the state the family was continued from.
+        from: f64,
         /// The whole story: where the family was continued from, the fold's
         /// ā and the two states beside it, and the routes tried before.
         what: String,

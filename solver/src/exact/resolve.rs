@@ -365,14 +365,33 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
             state_above(gap, rho, control)
                 .and_then(|start| {
                     from_larger_rho(&start, rho, control).or_else(|more| match more {
-                        // below the family's fold in ρ: on the arm of a
-                        // larger contact, which the fold does not bind
-                        Error::PastRhoFold { fold, what } => {
-                            from_larger_contact(&start, rho, control).map_err(|none| {
-                                Error::PastRhoFold {
-                                    fold,
-                                    what: format!("{what}; {}", none.detail()),
-                                }
+                        // below the family's fold in ρ: the state at the
+                        // tenth below the fold (on a larger contact's arm)
+                        // continued in ρ, then on the arm of a larger
+                        // contact from here, which the fold does not bind
+                        Error::PastRhoFold { fold, from, what } => {
+                            let chained = below_the_fold(gap, fold, rho, control);
+                            chained.or_else(|chained| {
+                                from_larger_contact(&start, rho, control).map_err(|none| {
+                                    let what = format!("{what}; {}", none.detail());
+                                    match chained {
+                                        Some(Error::PastRhoFold {
+                                            fold: further,
+                                            from: stone,
+                                            what: how,
+                                        }) => Error::PastRhoFold {
+                                            fold: further,
+                                            from: stone,
+                                            what: format!("{how}; before that, {what}"),
+                                        },
+                                        Some(other) => Error::PastRhoFold {
+                                            fold,
+                                            from,
+                                            what: format!("{what}; {}", other.detail()),
+                                        },
+                                        None => Error::PastRhoFold { fold, from, what },
+                                    }
+                                })
                             })
                         }
                         more => Err(more),
@@ -380,8 +399,9 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
                 })
                 .or_else(|more| {
                     screened(gap, rho, control).map_err(|last| match more {
-                        Error::PastRhoFold { fold, what } => Error::PastRhoFold {
+                        Error::PastRhoFold { fold, from, what } => Error::PastRhoFold {
                             fold,
+                            from,
                             what: format!("{what}; {why}; {}", last.detail()),
                         },
                         more => {
@@ -392,6 +412,27 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         }
         other => other,
     }
+}
+
+/// Below a fold in ρ of the family at `control` (at `fold`): the state at
+/// the tenth below the fold (ρ = 0.3 for the folds at 0.357 of zero force
+/// and 0.322 of F̄ = 10), as [`at_resolved_on`] finds it there (on the arm
+/// of a larger contact), continued in ρ at the control down to `rho` in
+/// the arclength representation ([`continued_in_rho_along`]). `Err(None)`
+/// where `rho` is not below that tenth (the route does not apply), else
+/// the continuation's error (a fold in ρ of its own family says where).
+fn below_the_fold(
+    gap: Gap,
+    fold: f64,
+    rho: f64,
+    control: Hold,
+) -> std::result::Result<ExactState, Option<Error>> {
+    let tenth = ((fold * 10.0).floor() / 10.0 * 1e6).round() / 1e6;
+    if tenth <= rho + 1e-9 {
+        return Err(None);
+    }
+    let stone = at_resolved_on(gap, tenth, control).map_err(Some)?;
+    continued_in_rho_along(&stone, rho, control, &arclength_tries()).map_err(Some)
 }
 
 /// The last route to a state at `control`: every near-elliptic state the
@@ -622,6 +663,7 @@ pub(crate) fn continued_in_rho_along(
                     if fold.rho > rho {
                         return Err(Error::PastRhoFold {
                             fold: fold.rho,
+                            from: start.rho,
                             what: format!(
                             "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (a fold in rho at a_bar = {}, resolved with {} modes{}; two states at rho {} above it, a_bar = {} and {}), so it has no state at rho = {}",
                             crate::error::short(start.rho),
@@ -650,6 +692,7 @@ pub(crate) fn continued_in_rho_along(
                     Ok(Followed::TurnedBack { rho: fold, a_bar }) if fold > rho => {
                         return Err(Error::PastRhoFold {
                             fold,
+                            from: start.rho,
                             what: format!(
                                 "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (the path in shape and rho from its last state at rho = {} turns back there, at a_bar = {}, {} modes{}), so it has no state at rho = {}",
                                 crate::error::short(start.rho),
@@ -1014,6 +1057,67 @@ mod tests {
         );
         assert!((followed.a_bar - conformal.a_bar).abs() <= 1e-6);
         assert!((followed.s - conformal.s).abs() <= 1e-6);
+    }
+
+    /// Below the zero-force family's fold in ρ (0.357): the state at
+    /// ρ = 0.3 on a larger contact's arm, continued in ρ at F̄ = 0, is the
+    /// zero-force state at ρ = 0.2 (route `ContinuedInRho`, [`below_the_fold`]).
+    /// It converges: solved again with 192 and 256 modes of each sign, ā, s
+    /// and δ̄ stay within 1e-9 and the boundary error at most 1e-9; and it
+    /// lies on the ρ = 0.3 state's arm: stepped back up in ρ at F̄ = 0
+    /// (Newton in steps of 0.01), it lands on that state (ā = 3.2135147768,
+    /// docs/exact.md) to 1e-8. Continued further down, the family turns
+    /// back between ρ = 0.17 and 0.19 (docs/exact.md, "Below the fold"),
+    /// so zero force at ρ = 0.1 is not on it.
+    #[test]
+    fn below_the_fold_zero_force_at_rho_0_2_is_the_state_at_0_3_continued() {
+        let zero = Hold::Force(0.0);
+        let st = at_resolved(0.2, zero).unwrap();
+        assert_eq!(st.route, Route::ContinuedInRho);
+        assert!(st.force_bar.abs() < 1e-9 && st.bc_error <= CONVERGED);
+        for modes in [192, 256] {
+            let finer = Exact::new(0.2, Truncation::in_arclength(modes))
+                .unwrap()
+                .deferring_stability()
+                .solve_at(zero, &st.contour, st.delta_bar)
+                .unwrap();
+            assert!(
+                finer.bc_error <= CONVERGED,
+                "{modes}: {:.1e}",
+                finer.bc_error
+            );
+            for (name, got, want) in [
+                ("a", finer.a_bar, st.a_bar),
+                ("s", finer.s, st.s),
+                ("delta", finer.delta_bar, st.delta_bar),
+            ] {
+                assert!(
+                    (got - want).abs() < 1e-9,
+                    "{modes}: {name} {got} against {want}"
+                );
+            }
+        }
+        let mut back = st.clone();
+        for k in 1..=10 {
+            let rho = 0.2 + 0.01 * k as f64;
+            back = Exact::on(st.gap, rho, st.truncation)
+                .unwrap()
+                .deferring_stability()
+                .solve_at(zero, &back.contour, back.delta_bar)
+                .unwrap();
+        }
+        assert!(
+            (back.a_bar - 3.2135147768).abs() < 1e-8,
+            "back at rho = 0.3: a = {}",
+            back.a_bar
+        );
+        match continued_in_rho_along(&st, 0.1, zero, &arclength_tries()) {
+            Err(Error::PastRhoFold { fold, from, .. }) => {
+                assert!(fold > 0.17 && fold < 0.19, "fold at {fold}");
+                assert_eq!(from, 0.2);
+            }
+            other => panic!("continued to 0.1: {:?}", other.map(|s| s.a_bar)),
+        }
     }
 
     /// The two ways to the force minimum of one step of the follow in ρ
