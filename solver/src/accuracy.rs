@@ -347,7 +347,9 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
          state at the first of ρ + 0.1, ρ + 0.2, … that is found (route `continued_in_rho`, \"continued in ρ\" \
          in the row); where that continuation turns back at a fold in ρ, and ρ lies below the tenth under the \
          fold (ρ = 0.3 for both folds met), the state at that tenth, as found there, continued in ρ at that F̄ \
-         (\"continued in ρ\"); else on the arm of a larger contact: sizes \
+         (\"continued in ρ\"), and where that turns back too, from its state at the hundredth above that fold \
+         on the arm of a larger contact (below) to ρ, or to the tenth under that fold and on from there (at most \
+         four rungs); else on the arm of a larger contact: sizes \
          above the state's at that larger ρ continued in ρ at fixed ā, the first that arrives above the value \
          traced down in ā through its folds to it (route `from_larger_contact`, \"on a larger contact's arm\" \
          in the row; exact.md, \"Below the fold\"); where that fails too, the states the screen of `thinjkr exact solve --all` finds at that \

@@ -241,7 +241,7 @@ pub(crate) const DEFAULTS: [DefaultRow; 5] = [
         question: Question::AtControl,
         from_rho: 0.0,
         model: "energy",
-        why: "below rho = 0.36 exact states are found only at rho = 0.3 (on larger contacts' arms, one of several states each) and, at zero force, 0.2 (the one at 0.3 continued in rho); no model is near all: energy is within 0.09 % in approach and 2.7 % in size at F = 10 (nearest), 1.4 % and 5.1 % at zero force at 0.3 (max 1.4 % and 6.4 %, apexes 4.5 % and 3.6 %), 0.9 % and 1.8 % at 0.2 (nearest in approach; max 4.0 % and 4.0 %, apexes 6.6 % and 1.2 %)",
+        why: "below rho = 0.36 exact states are found only at rho = 0.3 and 0.2 (on larger contacts' arms or continued in rho from them, one of several states each); no model is near all: energy is within 0.09 % in approach and 2.7 % in size at F = 10 and 0.3 (nearest), 0.15 % and 3.4 % at 0.2 (nearest in approach), 1.4 % and 5.1 % at zero force and 0.3 (max 1.4 % and 6.4 %, apexes 4.5 % and 3.6 %), 0.9 % and 1.8 % at 0.2 (nearest in approach; max 4.0 % and 4.0 %, apexes 6.6 % and 1.2 %)",
     },
 ];
 
@@ -1044,8 +1044,19 @@ mod tests {
                     "{apexes:?}"
                 );
             } else {
-                assert!(r02[2].starts_with("no exact value"), "{}", r02[2]);
+                // energy within 0.15 % in δ̄ and 3.4 % in ā, nearest in δ̄
+                assert!(r02[2].contains("on a larger contact's arm"), "{}", r02[2]);
+                let (d, a) = (first(&r02[5]).unwrap(), second(&r02[5]).unwrap());
+                assert!(
+                    d.abs() <= 0.0015 && a.abs() <= 0.034,
+                    "F = 10 at 0.2: {d} {a}"
+                );
+                for other in [3, 4, 6] {
+                    assert!(d.abs() <= first(&r02[other]).unwrap().abs());
+                }
             }
+            let r01 = rows.iter().find(|r| rho(r) == 0.1).unwrap();
+            assert!(r01[2].starts_with("no exact value"), "{}", r01[2]);
         }
     }
 }
