@@ -735,16 +735,18 @@ fn the_default_points_per_mode_give_the_state_of_twice_as_many() {
 /// implementation), but the first routes miss it (the model's start is
 /// 3.4 % off, the arms through the circle fold, the continuation in ρ at
 /// F̄ = 10 turns back). The default answer finds it instead of saying the
-/// force "is not reached": on the arm of a larger contact, continued in ρ
-/// at fixed ā (the route below a fold in ρ; before that route it was the
-/// screen of `--all`, which now comes after it), converged to 1e-9.
+/// force "is not reached": the first route below a fold in ρ, the state at
+/// the tenth under the fold (ρ = 0.6) continued in ρ at F̄ = 10, converged
+/// to 1e-9. (Before that route the arm of a larger contact found the same
+/// state to 1e-5, and before that the screen of `--all`; both now come
+/// after it.)
 #[test]
-fn a_state_the_first_routes_miss_is_found_on_the_arm_of_a_larger_contact() {
+fn a_state_the_first_routes_miss_is_found_below_the_fold_in_rho() {
     let st = thinjkr::exact::at_resolved(0.515, thinjkr::control::Hold::Force(10.0)).unwrap();
     assert!((st.a_bar - 3.37182).abs() < 1e-5, "{}", st.a_bar);
     assert!((st.s - 0.77552).abs() < 1e-5, "{}", st.s);
     assert!(st.bc_error <= 1e-9, "{}", st.bc_error);
-    assert_eq!(st.route, thinjkr::exact::Route::FromLargerContact);
+    assert_eq!(st.route, thinjkr::exact::Route::ContinuedInRho);
 }
 
 /// Below ρ = 0.3 the conformal form's continuation stops and the pull-off

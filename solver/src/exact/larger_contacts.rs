@@ -315,28 +315,8 @@ mod tests {
             off > super::super::branch::PAST_FOLD_DEPARTURE && off < ARM_DEPARTURE,
             "{off} a off the ellipse"
         );
-        for more in [64, 192] {
-            let finer = Exact::new(0.3, Truncation::in_arclength(st.truncation.modes + more))
-                .unwrap()
-                .deferring_stability()
-                .solve_at(zero, &st.contour, st.delta_bar)
-                .unwrap();
-            assert!(
-                finer.bc_error <= CONVERGED,
-                "{more} modes more: {:.1e}",
-                finer.bc_error
-            );
-            for (name, got, want) in [
-                ("a", finer.a_bar, st.a_bar),
-                ("s", finer.s, st.s),
-                ("delta", finer.delta_bar, st.delta_bar),
-            ] {
-                assert!(
-                    (got - want).abs() < 1e-9,
-                    "{more} modes more: {name} {got} against {want}"
-                );
-            }
-        }
+        let modes = [64, 192].map(|more| st.truncation.modes + more);
+        super::super::resolve::assert_same_with_modes(&st, zero, &modes);
     }
 
     /// At ρ = 0.2 the arm of the contact size ā = 4.0843 (arrived from

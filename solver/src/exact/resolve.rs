@@ -901,6 +901,35 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
         .map(|(st, _)| st)
 }
 
+/// Test support: `st` solved again at `control` from its own contour with
+/// each of `modes` (of each sign) is resolved (boundary error at most
+/// [`CONVERGED`]) and the same state: ā, s and δ̄ within 1e-9.
+#[cfg(test)]
+pub(crate) fn assert_same_with_modes(st: &ExactState, control: Hold, modes: &[usize]) {
+    for &m in modes {
+        let finer = Exact::on(st.gap, st.rho, Truncation::in_arclength(m))
+            .unwrap()
+            .deferring_stability()
+            .solve_at(control, &st.contour, st.delta_bar)
+            .unwrap();
+        assert!(
+            finer.bc_error <= CONVERGED,
+            "{m} modes: {:.1e}",
+            finer.bc_error
+        );
+        for (name, got, want) in [
+            ("a", finer.a_bar, st.a_bar),
+            ("s", finer.s, st.s),
+            ("delta", finer.delta_bar, st.delta_bar),
+        ] {
+            assert!(
+                (got - want).abs() < 1e-9,
+                "{m} modes: {name} {got} against {want}"
+            );
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1125,28 +1154,7 @@ mod tests {
         let st = at_resolved(0.2, zero).unwrap();
         assert_eq!(st.route, Route::ContinuedInRho);
         assert!(st.force_bar.abs() < 1e-9 && st.bc_error <= CONVERGED);
-        for modes in [192, 256] {
-            let finer = Exact::new(0.2, Truncation::in_arclength(modes))
-                .unwrap()
-                .deferring_stability()
-                .solve_at(zero, &st.contour, st.delta_bar)
-                .unwrap();
-            assert!(
-                finer.bc_error <= CONVERGED,
-                "{modes}: {:.1e}",
-                finer.bc_error
-            );
-            for (name, got, want) in [
-                ("a", finer.a_bar, st.a_bar),
-                ("s", finer.s, st.s),
-                ("delta", finer.delta_bar, st.delta_bar),
-            ] {
-                assert!(
-                    (got - want).abs() < 1e-9,
-                    "{modes}: {name} {got} against {want}"
-                );
-            }
-        }
+        assert_same_with_modes(&st, zero, &[192, 256]);
         let mut back = st.clone();
         for k in 1..=10 {
             let rho = 0.2 + 0.01 * k as f64;
@@ -1185,28 +1193,7 @@ mod tests {
         let st = at_resolved(0.2, ten).unwrap();
         assert_eq!(st.route, Route::FromLargerContact);
         assert!((st.force_bar - 10.0).abs() < 1e-9 && st.bc_error <= CONVERGED);
-        for modes in [320, 384] {
-            let finer = Exact::new(0.2, Truncation::in_arclength(modes))
-                .unwrap()
-                .deferring_stability()
-                .solve_at(ten, &st.contour, st.delta_bar)
-                .unwrap();
-            assert!(
-                finer.bc_error <= CONVERGED,
-                "{modes}: {:.1e}",
-                finer.bc_error
-            );
-            for (name, got, want) in [
-                ("a", finer.a_bar, st.a_bar),
-                ("s", finer.s, st.s),
-                ("delta", finer.delta_bar, st.delta_bar),
-            ] {
-                assert!(
-                    (got - want).abs() < 1e-9,
-                    "{modes}: {name} {got} against {want}"
-                );
-            }
-        }
+        assert_same_with_modes(&st, ten, &[320, 384]);
     }
 
     /// The two ways to the force minimum of one step of the follow in ρ
