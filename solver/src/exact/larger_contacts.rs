@@ -299,8 +299,17 @@ mod tests {
     /// [`super::super::branch::PAST_FOLD_DEPARTURE`]) and yet resolved below
     /// 1e-9: solved again with 64 and 192 modes more, ā, s and δ̄ stay within
     /// 1e-9 and the boundary error at most 1e-9.
+    ///
+    /// Below it, the first route below the fold continues that state in ρ
+    /// at F̄ = 0 to the zero-force state at ρ = 0.2 (route
+    /// `ContinuedInRho`, `resolve::below_the_fold`). It converges (192 and
+    /// 256 modes, as above), and it lies on the ρ = 0.3 state's arm: stepped
+    /// back up in ρ at F̄ = 0 (Newton in steps of 0.01), it lands on that
+    /// state to 1e-8. Continued further down, the family turns back between
+    /// ρ = 0.17 and 0.19 (docs/exact.md, "Below ρ = 0.3"), so zero force at
+    /// ρ = 0.1 is not on it.
     #[test]
-    fn at_rho_0_3_zero_force_lies_on_a_larger_contacts_arm_far_off_its_ellipse() {
+    fn zero_force_at_rho_0_3_lies_on_a_larger_contacts_arm_and_continues_in_rho_to_0_2() {
         let zero = Hold::Force(0.0);
         let st = super::super::resolve::at_resolved(0.3, zero).unwrap();
         assert_eq!(st.route, Route::FromLargerContact);
@@ -317,6 +326,34 @@ mod tests {
         );
         let modes = [64, 192].map(|more| st.truncation.modes + more);
         super::super::resolve::assert_same_with_modes(&st, zero, &modes);
+
+        let below = super::super::resolve::at_resolved(0.2, zero).unwrap();
+        assert_eq!(below.route, Route::ContinuedInRho);
+        assert!(below.force_bar.abs() < 1e-9 && below.bc_error <= CONVERGED);
+        super::super::resolve::assert_same_with_modes(&below, zero, &[192, 256]);
+        let mut back = below.clone();
+        for k in 1..=10 {
+            let rho = 0.2 + 0.01 * k as f64;
+            back = Exact::on(below.gap, rho, below.truncation)
+                .unwrap()
+                .deferring_stability()
+                .solve_at(zero, &back.contour, back.delta_bar)
+                .unwrap();
+        }
+        assert!(
+            (back.a_bar - st.a_bar).abs() < 1e-8,
+            "back at rho = 0.3: a = {} against {}",
+            back.a_bar,
+            st.a_bar
+        );
+        let tries = super::super::resolve::arclength_tries();
+        match super::super::resolve::continued_in_rho_along(&below, 0.1, zero, &tries) {
+            Err(Error::PastRhoFold { fold, from, .. }) => {
+                assert!(fold > 0.17 && fold < 0.19, "fold at {fold}");
+                assert_eq!(from, 0.2);
+            }
+            other => panic!("continued to 0.1: {:?}", other.map(|s| s.a_bar)),
+        }
     }
 
     /// At ρ = 0.2 the arm of the contact size ā = 4.0843 (arrived from

@@ -365,34 +365,8 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
             state_above(gap, rho, control)
                 .and_then(|start| {
                     from_larger_rho(&start, rho, control).or_else(|more| match more {
-                        // below the family's fold in ρ: the state at the
-                        // tenth below the fold (on a larger contact's arm)
-                        // continued in ρ, then on the arm of a larger
-                        // contact from here, which the fold does not bind
                         Error::PastRhoFold { fold, from, what } => {
-                            let chained = below_the_fold(gap, fold, rho, control);
-                            chained.or_else(|chained| {
-                                from_larger_contact(&start, rho, control).map_err(|none| {
-                                    let what = format!("{what}; {}", none.detail());
-                                    match chained {
-                                        Some(Error::PastRhoFold {
-                                            fold: further,
-                                            from: stone,
-                                            what: how,
-                                        }) => Error::PastRhoFold {
-                                            fold: further,
-                                            from: stone,
-                                            what: format!("{how}; before that, {what}"),
-                                        },
-                                        Some(other) => Error::PastRhoFold {
-                                            fold,
-                                            from,
-                                            what: format!("{what}; {}", other.detail()),
-                                        },
-                                        None => Error::PastRhoFold { fold, from, what },
-                                    }
-                                })
-                            })
+                            past_the_fold(&start, fold, from, what, rho, control)
                         }
                         more => Err(more),
                     })
@@ -412,6 +386,46 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         }
         other => other,
     }
+}
+
+/// Below the fold in ρ (at `fold`, `from` and `what` its error's) of the
+/// family at `control` continued from `start`: the state at the tenth
+/// under the fold continued in ρ ([`below_the_fold`]), else on the arm of
+/// a larger contact from `start`, which the fold does not bind
+/// ([`from_larger_contact`]). Where both fail, the error of the furthest
+/// fold met, with the routes before it.
+fn past_the_fold(
+    start: &ExactState,
+    fold: f64,
+    from: f64,
+    what: String,
+    rho: f64,
+    control: Hold,
+) -> Result<ExactState> {
+    let chained = match below_the_fold(start.gap, fold, rho, control) {
+        Ok(st) => return Ok(st),
+        Err(chained) => chained,
+    };
+    from_larger_contact(start, rho, control).map_err(|none| {
+        let what = format!("{what}; {}", none.detail());
+        match chained {
+            Some(Error::PastRhoFold {
+                fold: further,
+                from: stone,
+                what: how,
+            }) => Error::PastRhoFold {
+                fold: further,
+                from: stone,
+                what: format!("{how}; before that, {what}"),
+            },
+            Some(other) => Error::PastRhoFold {
+                fold,
+                from,
+                what: format!("{what}; {}", other.detail()),
+            },
+            None => Error::PastRhoFold { fold, from, what },
+        }
+    })
 }
 
 /// Below a fold in ρ of the family at `control` (at `fold`): the state at
@@ -626,7 +640,7 @@ const NOTCHED_ARM_MODES: [usize; 3] = [384, 448, 512];
 
 /// The arclength representation's truncations, in the order of
 /// [`ARCLENGTH_ESCALATION`].
-fn arclength_tries() -> Vec<Truncation> {
+pub(crate) fn arclength_tries() -> Vec<Truncation> {
     ARCLENGTH_ESCALATION
         .iter()
         .map(|&m| Truncation::in_arclength(m))
@@ -1136,46 +1150,6 @@ mod tests {
         );
         assert!((followed.a_bar - conformal.a_bar).abs() <= 1e-6);
         assert!((followed.s - conformal.s).abs() <= 1e-6);
-    }
-
-    /// Below the zero-force family's fold in ρ (0.357): the state at
-    /// ρ = 0.3 on a larger contact's arm, continued in ρ at F̄ = 0, is the
-    /// zero-force state at ρ = 0.2 (route `ContinuedInRho`, [`below_the_fold`]).
-    /// It converges: solved again with 192 and 256 modes of each sign, ā, s
-    /// and δ̄ stay within 1e-9 and the boundary error at most 1e-9; and it
-    /// lies on the ρ = 0.3 state's arm: stepped back up in ρ at F̄ = 0
-    /// (Newton in steps of 0.01), it lands on that state (ā = 3.2135147768,
-    /// docs/exact.md) to 1e-8. Continued further down, the family turns
-    /// back between ρ = 0.17 and 0.19 (docs/exact.md, "Below the fold"),
-    /// so zero force at ρ = 0.1 is not on it.
-    #[test]
-    fn below_the_fold_zero_force_at_rho_0_2_is_the_state_at_0_3_continued() {
-        let zero = Hold::Force(0.0);
-        let st = at_resolved(0.2, zero).unwrap();
-        assert_eq!(st.route, Route::ContinuedInRho);
-        assert!(st.force_bar.abs() < 1e-9 && st.bc_error <= CONVERGED);
-        assert_same_with_modes(&st, zero, &[192, 256]);
-        let mut back = st.clone();
-        for k in 1..=10 {
-            let rho = 0.2 + 0.01 * k as f64;
-            back = Exact::on(st.gap, rho, st.truncation)
-                .unwrap()
-                .deferring_stability()
-                .solve_at(zero, &back.contour, back.delta_bar)
-                .unwrap();
-        }
-        assert!(
-            (back.a_bar - 3.2135147768).abs() < 1e-8,
-            "back at rho = 0.3: a = {}",
-            back.a_bar
-        );
-        match continued_in_rho_along(&st, 0.1, zero, &arclength_tries()) {
-            Err(Error::PastRhoFold { fold, from, .. }) => {
-                assert!(fold > 0.17 && fold < 0.19, "fold at {fold}");
-                assert_eq!(from, 0.2);
-            }
-            other => panic!("continued to 0.1: {:?}", other.map(|s| s.a_bar)),
-        }
     }
 
     /// The second rung below the folds: F̄ = 10 at ρ = 0.3 (a larger
