@@ -615,11 +615,20 @@ fn render(fig: &Figure) -> Result<String> {
 /// the maps `bands` (one per ρ, as `thinjkr exact bands --json` writes
 /// them): each band a bar over its ā-interval at its ρ, coloured by its
 /// contour mode; the circle's neutral points ā³ = 4(n − 1) dashed; the
-/// exact pull-off's ā from `reference`.
+/// reach of each size from `reach`, the lines `thinjkr exact reach --json`
+/// writes (ā and the smallest ρ its state continued from the circle at
+/// fixed ā reaches, in order of ā; a size without one left out, the line
+/// broken there): the same map by a second route at every ρ; the exact
+/// pull-off's ā from `reference`.
 pub fn exact_bands(
     bands: &[crate::exact::bands::BandMap],
+    reach: &str,
     reference: &crate::accuracy::Reference,
 ) -> Result<(&'static str, String)> {
+    let reach: Vec<(f64, Option<f64>)> = crate::exact::reach::from_json_lines(reach)?
+        .iter()
+        .map(|p| (p.a_bar, p.reach()))
+        .collect();
     // one colour per mode n = 2, 4, …, 16
     let colors = [
         RGBColor(120, 120, 120),
@@ -635,10 +644,26 @@ pub fn exact_bands(
     let (lo, hi) = bands
         .iter()
         .map(|m| m.rho)
+        .chain(reach.iter().filter_map(|p| p.1))
+        .chain(reference.pull_off.iter().map(|e| e.rho))
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
             (a.min(r), b.max(r))
         });
     let mut series = Vec::new();
+    // the reach, one line per run of sizes that have one
+    for (k, run) in reach
+        .split(|p| p.1.is_none())
+        .filter(|run| !run.is_empty())
+        .enumerate()
+    {
+        let label = if k == 0 {
+            "the reach of each size ā (fold in ρ at fixed ā, from the circle)"
+        } else {
+            ""
+        };
+        let pts = run.iter().filter_map(|&(a, r)| r.map(|r| (a, r))).collect();
+        series.push(solid(label, pts, GREY));
+    }
     let mut labelled = Vec::new();
     for m in bands {
         for b in &m.bands {
@@ -662,6 +687,7 @@ pub fn exact_bands(
     let range = bands
         .iter()
         .map(|m| (m.range[0], m.range[1]))
+        .chain(reach.iter().map(|p| (p.0, p.0)))
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (c, d)| {
             (a.min(c), b.max(d))
         });
@@ -691,7 +717,7 @@ pub fn exact_bands(
     series.push(solid("exact pull-off", po, BLACK));
     let fig = Figure {
         file: "exact_bands.svg",
-        title: "No near-elliptic exact state: the bands in ā".into(),
+        title: "No near-elliptic exact state: the bands in ā, and the reach of each size".into(),
         x_label: "ā",
         y_label: "ρ = R₁/R₂",
         series,

@@ -377,6 +377,11 @@ pub(crate) enum Document {
         /// The bands at one ρ.
         bands: crate::exact::bands::BandMap,
     },
+    /// The reach in ρ of one contact size (`exact reach --json`).
+    Reach {
+        /// The size and how its path in ρ ended.
+        reach: crate::exact::reach::SizeReach,
+    },
     /// The models (`models --json`).
     Models {
         /// Every model.

@@ -31,7 +31,8 @@ fn figures_are_fresh_and_deterministic() {
 /// solver/tests/accuracy_table.rs checks), and the band map
 /// (exact_bands.svg) and F̄(ā) over the bands (exact_bands_force_*.svg)
 /// what `figures::exact_bands` and `figures::exact_bands_force` draw from
-/// the committed band maps docs/data/exact_bands.jsonl.
+/// the committed band maps docs/data/exact_bands.jsonl (and the reach map
+/// docs/data/exact_reach.jsonl).
 #[test]
 fn exact_figures_are_fresh() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -48,7 +49,14 @@ fn exact_figures_are_fresh() {
             .expect("the committed band maps exist"),
     )
     .expect("band map lines");
-    figs.push(thinjkr::figures::exact_bands(&bands, &reference).expect("the band map draws"));
+    // with the reach of each size, the same map by a second route at every
+    // ρ (docs/data/exact_reach.jsonl, whose ā = 3.8 the lib's
+    // exact::reach tests recompute)
+    let reach = std::fs::read_to_string(root.join("docs/data/exact_reach.jsonl"))
+        .expect("the committed reach map exists");
+    figs.push(
+        thinjkr::figures::exact_bands(&bands, &reach, &reference).expect("the band map draws"),
+    );
     // and F̄(ā) over the bands, one figure per ρ
     let force = thinjkr::figures::exact_bands_force(&bands).expect("the F(a) figures draw");
     // one per ρ of the six that `figures::BANDS_FORCE_FILES` names (each

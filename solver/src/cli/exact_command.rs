@@ -164,6 +164,22 @@ pub(crate) enum ExactCommand {
         #[arg(long)]
         json: bool,
     },
+    /// The reach of each contact size: the near-elliptic exact state of half-width ā followed in ρ at fixed ā from the circle (ρ = 0.98) down to where ρ turns back (located) or to ρ = 0.02; at any ρ the sizes whose reach lies above it are its bands (a map at every ρ, also below 0.4; 128 modes of each sign, a few seconds per size).
+    #[command(after_help = "Example:\n  thinjkr exact reach --from 3 --to 3.2 --step 0.05")]
+    Reach {
+        /// Smallest ā.
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+        from: f64,
+        /// Largest ā (at most 10, and at most 1000 sizes).
+        #[arg(long, default_value_t = 4.0, allow_hyphen_values = true)]
+        to: f64,
+        /// The step in ā.
+        #[arg(long, default_value_t = 0.01, allow_hyphen_values = true)]
+        step: f64,
+        /// Print one JSON document per size.
+        #[arg(long)]
+        json: bool,
+    },
     /// Write the stored pull-offs (solver/data/exact_pull_offs.json): the exact pull-off at rho = 0.3 and at every step of its follow in rho down to where it stops converging, the starts of the exact pull-off below rho = 0.3 (minutes).
     #[command(
         name = "store-pull-offs",
@@ -199,7 +215,8 @@ impl ExactCommand {
             ExactCommand::PullOff { json, .. }
             | ExactCommand::Solve { json, .. }
             | ExactCommand::ZeroForce { json, .. }
-            | ExactCommand::Bands { json, .. } => *json,
+            | ExactCommand::Bands { json, .. }
+            | ExactCommand::Reach { json, .. } => *json,
             ExactCommand::StorePullOffs { .. } => false,
         }
     }
@@ -253,6 +270,12 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             to,
             json,
         } => bands(rho, from, to, json),
+        ExactCommand::Reach {
+            from,
+            to,
+            step,
+            json,
+        } => reach(from, to, step, json),
         ExactCommand::StorePullOffs { out } => {
             super::files::check_file(&out)?;
             let stored = crate::exact::stored::store()?;
@@ -366,6 +389,41 @@ pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
             }
         );
     }
+    Ok(())
+}
+
+/// `thinjkr exact reach`.
+pub(crate) fn reach(from: f64, to: f64, step: f64, json: bool) -> Result<()> {
+    use crate::exact::reach::Reached;
+    let map = crate::exact::reach::reach(from, to, step)?;
+    if json {
+        for size in map {
+            outln!("{}", Document::Reach { reach: size }.to_json());
+        }
+        return Ok(());
+    }
+    outln!(
+        "the near-elliptic exact state of each size a, followed in rho at fixed a from the circle at rho = {} ({} modes of each sign):",
+        crate::exact::reach::TOP,
+        crate::exact::reach::MODES
+    );
+    for p in &map {
+        let what = match &p.reached {
+            Reached::TurnsBack { rho, bc_error } => format!(
+                "turns back at rho = {} (boundary error {})",
+                crate::error::rounded(*rho),
+                bc_error.map_or("not computed: singular".to_string(), |e| format!("{e:.0e}"))
+            ),
+            Reached::Floor { bc_error } => format!(
+                "reaches rho = {} without turning back (boundary error {bc_error:.0e})",
+                crate::exact::reach::FLOOR
+            ),
+            Reached::Stopped { why } => format!("stopped: {why}"),
+        };
+        outln!("  a = {:.4}: {what}", p.a_bar);
+    }
+    outln!("");
+    outln!("{}", crate::exact::reach::markdown(&map).trim_end());
     Ok(())
 }
 

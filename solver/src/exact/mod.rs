@@ -52,6 +52,7 @@ pub(crate) mod gap;
 pub(crate) mod larger_contacts;
 pub(crate) mod linear;
 pub(crate) mod loading;
+pub(crate) mod reach;
 mod resolve;
 pub(crate) mod rho_fold;
 pub(crate) mod rho_path;

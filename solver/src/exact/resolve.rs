@@ -753,7 +753,9 @@ pub(crate) fn continued_in_rho_along(
                         found.route = Route::ContinuedInRho;
                         return Ok(found);
                     }
-                    Ok(Followed::TurnedBack { rho: fold, a_bar }) if fold > rho => {
+                    Ok(Followed::TurnedBack {
+                        rho: fold, a_bar, ..
+                    }) if fold > rho => {
                         return Err(Error::PastRhoFold {
                             fold,
                             from: start.rho,

@@ -1,0 +1,452 @@
+//! The reach in ρ of the near-elliptic family at each contact size (issue
+//! 32): the exact state of half-width ā is followed in ρ at that fixed ā
+//! from the circle (at ρ = [`TOP`]) by the path in (shape, ρ)
+//! ([`super::rho_path::follow_with`], which steps around the folds in ā
+//! close by) until ρ turns back; that fold's ρ, located, is the size's
+//! reach. Below it no state of that size is connected to the circle at
+//! fixed ā. At any ρ the sizes whose reach lies above it are the bands of
+//! [`super::bands`], found here by a second route that needs no model, and
+//! that holds below ρ = 0.4, where the screen of `bands` (`conformal:8`)
+//! fails: a band edge that `bands` located at ρ = 0.5 by a trace in ā is a
+//! size whose reach is 0.5 to 1e-6 (the tests).
+//!
+//! Owns: [`SizeReach`], [`Reached`], [`of_size`], [`reach`], [`from_json_lines`],
+//! [`windows`], [`markdown`]. May use: `exact` (the family, `rho_path`),
+//! `control`, `error`, `newton` (the stop flag, carried to rayon's
+//! threads), rayon.
+
+// computed by the command line, read by the figures
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
+
+use super::rho_path::{follow_with, Followed};
+use super::{Exact, Truncation, CONVERGED};
+use crate::control::Hold;
+use crate::error::{rounded, Result};
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+/// The ρ the paths start from: the circle continued to it at its ā
+/// ([`Exact::from_circle`]); at ρ = 1 itself the path's derivative in ρ
+/// (a central difference) would need ρ > 1.
+pub(crate) const TOP: f64 = 0.98;
+
+/// The smallest ρ a path is followed to: the smallest of docs/accuracy.md.
+pub(crate) const FLOOR: f64 = 0.02;
+
+/// The arclength representation's modes of each sign: at ā = 3.8, where
+/// the reach is 0.2109, 96 modes leave a boundary error of 7e-8 at the
+/// fold and 128 of 6e-10, and both put the fold at the same ρ to 1e-9.
+pub(crate) const MODES: usize = 128;
+
+/// The most sizes of a map.
+pub(crate) const MAX_SIZES: usize = 1000;
+
+/// How a size's path in ρ ended.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub(crate) enum Reached {
+    /// ρ turned back at this located fold; the fine-grid boundary error of
+    /// the path's lowest point (absent where that system is singular).
+    TurnsBack {
+        /// The fold's ρ: the size's reach.
+        rho: f64,
+        /// The boundary error there.
+        bc_error: Option<f64>,
+    },
+    /// The path reached ρ = 0.02, the smallest it is followed to, without
+    /// turning back.
+    Floor {
+        /// The boundary error of the state at the floor.
+        bc_error: f64,
+    },
+    /// The path stopped without turning back (no state of this size near
+    /// the circle, or a step that failed): why, in words.
+    Stopped {
+        /// Why.
+        why: String,
+    },
+}
+
+/// One size's reach.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct SizeReach {
+    /// ā.
+    pub a_bar: f64,
+    /// The modes of each sign of the arclength representation.
+    pub modes: usize,
+    /// How its path in ρ ended.
+    pub reached: Reached,
+}
+
+impl SizeReach {
+    /// The smallest ρ with a state of this size connected to the circle at
+    /// fixed ā; `None` where the path stopped.
+    pub(crate) fn reach(&self) -> Option<f64> {
+        match self.reached {
+            Reached::TurnsBack { rho, .. } => Some(rho),
+            Reached::Floor { .. } => Some(FLOOR),
+            Reached::Stopped { .. } => None,
+        }
+    }
+}
+
+/// The reach of the size `a_bar` with `modes` modes of each sign.
+pub(crate) fn of_size(a_bar: f64, modes: usize) -> Result<SizeReach> {
+    let t = Truncation::in_arclength(modes);
+    let stopped = |why: String| SizeReach {
+        a_bar,
+        modes,
+        reached: Reached::Stopped { why },
+    };
+    let start = match Exact::new(TOP, t)?.deferring_stability().from_circle(a_bar) {
+        Ok(st) => st,
+        Err(e) => {
+            // a stop the caller asked for is not a size's outcome
+            crate::newton::check_stop()?;
+            return Ok(stopped(e.detail()));
+        }
+    };
+    Ok(match follow_with(&start, FLOOR, Hold::Size(a_bar), true) {
+        Ok(Followed::TurnedBack { fold, bc_error, .. }) => SizeReach {
+            a_bar,
+            modes,
+            reached: Reached::TurnsBack {
+                rho: fold,
+                bc_error,
+            },
+        },
+        Ok(Followed::Reached(st)) => SizeReach {
+            a_bar,
+            modes,
+            reached: Reached::Floor {
+                bc_error: st.bc_error,
+            },
+        },
+        Err(e) => {
+            crate::newton::check_stop()?;
+            stopped(e.detail())
+        }
+    })
+}
+
+/// The reach of every size from `from` to `to` in steps of `step`
+/// ([`MODES`] modes), in parallel.
+pub(crate) fn reach(from: f64, to: f64, step: f64) -> Result<Vec<SizeReach>> {
+    crate::error::check_range("from", from, from.is_finite() && from >= 0.5, "[0.5, to)")?;
+    crate::error::check_range(
+        "step",
+        step,
+        step.is_finite() && (1e-3..=1.0).contains(&step),
+        "[0.001, 1]",
+    )?;
+    // the count is bounded before anything is allocated
+    let steps = ((to - from) / step).round();
+    crate::error::check_range(
+        "to",
+        to,
+        to.is_finite() && to > from && to <= 10.0 && steps < MAX_SIZES as f64,
+        "(from, 10], at most 1000 sizes from `from` in steps of `step`",
+    )?;
+    let sizes: Vec<f64> = (0..=steps as usize)
+        .map(|k| from + step * k as f64)
+        .collect();
+    let stop = crate::newton::stop_flag();
+    sizes
+        .par_iter()
+        .map(|&a| crate::newton::carried(stop.clone(), || of_size(a, MODES)))
+        .collect()
+}
+
+/// The runs of consecutive sizes of `map` (in order of ā) whose reach lies
+/// below `rho`: the windows of ā with a state at `rho` connected to the
+/// circle at fixed ā, each as its first and last size.
+pub(crate) fn windows(map: &[SizeReach], rho: f64) -> Vec<[f64; 2]> {
+    let mut out: Vec<[f64; 2]> = Vec::new();
+    let mut open = false;
+    for p in map {
+        let inside = p.reach().is_some_and(|r| r < rho);
+        match (inside, open) {
+            (true, true) => out.last_mut().expect("an open window")[1] = p.a_bar,
+            (true, false) => out.push([p.a_bar, p.a_bar]),
+            _ => {}
+        }
+        open = inside;
+    }
+    out
+}
+
+/// The ρ of docs/accuracy.md, at which [`markdown`] lists the windows.
+pub(crate) const TABLE_RHOS: [f64; 12] =
+    [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.02];
+
+/// The table of docs/exact.md ("The reach of each size"): at each ρ of
+/// [`TABLE_RHOS`] below [`TOP`], the windows of [`windows`]; and the sizes
+/// whose path stopped, and those whose fold is not resolved to
+/// [`CONVERGED`], listed under it.
+pub(crate) fn markdown(map: &[SizeReach]) -> String {
+    let (Some(first), Some(last)) = (map.first(), map.last()) else {
+        return String::new();
+    };
+    let step = map.get(1).map_or(0.0, |p| p.a_bar - first.a_bar);
+    let mut s = format!(
+        "| ρ | windows of ā with a state connected to the circle at fixed ā ({} ≤ ā ≤ {}, step {}) |\n|---|---|\n",
+        rounded(first.a_bar),
+        rounded(last.a_bar),
+        rounded(step)
+    );
+    for rho in TABLE_RHOS.into_iter().filter(|&r| r < TOP) {
+        let w = windows(map, rho);
+        let cell = if w.is_empty() {
+            "none".to_string()
+        } else {
+            w.iter()
+                .map(|[a, b]| {
+                    if a == b {
+                        format!("{a:.2}")
+                    } else {
+                        format!("{a:.2} – {b:.2}")
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        s += &format!("| {rho} | {cell} |\n");
+    }
+    let lowest = map
+        .iter()
+        .filter_map(|p| p.reach().map(|r| (r, p.a_bar)))
+        .min_by(|x, y| x.0.total_cmp(&y.0));
+    if let Some((r, a)) = lowest {
+        s += &format!("\nThe smallest reach: ρ = {} (ā = {:.2}).\n", rounded(r), a);
+    }
+    let stopped: Vec<String> = map
+        .iter()
+        .filter(|p| matches!(p.reached, Reached::Stopped { .. }))
+        .map(|p| format!("{:.2}", p.a_bar))
+        .collect();
+    if !stopped.is_empty() {
+        s += &format!(
+            "Paths that stopped without turning back (no reach): ā = {}.\n",
+            stopped.join(", ")
+        );
+    }
+    let loose: Vec<String> = map
+        .iter()
+        .filter_map(|p| match p.reached {
+            Reached::TurnsBack { bc_error, .. } if bc_error.is_none_or(|e| e > CONVERGED) => {
+                Some(format!(
+                    "{:.2} ({})",
+                    p.a_bar,
+                    bc_error.map_or("singular".to_string(), |e| format!("{e:.0e}"))
+                ))
+            }
+            _ => None,
+        })
+        .collect();
+    if !loose.is_empty() {
+        s += &format!(
+            "Folds whose boundary error is above 1e-9: ā = {}.\n",
+            loose.join(", ")
+        );
+    }
+    s
+}
+
+/// The sizes of the lines `thinjkr exact reach --json` writes (one
+/// `{"reach": …}` document per line, as docs/data/exact_reach.jsonl).
+pub(crate) fn from_json_lines(text: &str) -> Result<Vec<SizeReach>> {
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .enumerate()
+        .map(|(k, l)| {
+            #[derive(Deserialize)]
+            struct Line {
+                reach: SizeReach,
+            }
+            serde_json::from_str::<Line>(l)
+                .map(|d| d.reach)
+                .map_err(|e| {
+                    crate::error::Error::NoState(format!(
+                        "line {} is not a reach document: {e}",
+                        k + 1
+                    ))
+                })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn committed(file: &str) -> String {
+        std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../docs/data")
+                .join(file),
+        )
+        .expect("the committed file exists")
+    }
+
+    /// A second route to the band maps: the edges `bands` located at
+    /// ρ = 0.5 and 0.4 (folds in ā of the family traced in ā at that ρ from
+    /// `conformal:8`'s states beside the gap, docs/data/exact_bands.jsonl)
+    /// are sizes whose path in ρ at fixed ā from the circle, which uses no
+    /// model, turns back at that ρ; and the committed reach of ā = 3.8
+    /// (the lowest of the ten sizes 2.0, 2.2, …, 3.8: 0.2109) is what the
+    /// path finds now.
+    #[test]
+    fn the_band_edges_at_rho_0_5_and_0_4_are_sizes_that_reach_just_that_rho() {
+        let maps = crate::exact::bands::from_json_lines(&committed("exact_bands.jsonl"))
+            .expect("band map lines");
+        for (rho, lower_of, upper_of) in [(0.5, 6, 8), (0.4, 4, 8)] {
+            let map = maps.iter().find(|m| m.rho == rho).expect("the map");
+            let edge = |n: usize, lower: bool| {
+                let b = map
+                    .bands
+                    .iter()
+                    .find(|b| b.lower.mode == Some(n))
+                    .expect("the band");
+                if lower {
+                    b.lower.a_bar
+                } else {
+                    b.upper.a_bar
+                }
+            };
+            for a in [edge(lower_of, true), edge(upper_of, false)] {
+                let r = of_size(a, 96).unwrap();
+                let reach = r.reach().unwrap_or_else(|| panic!("{r:?}"));
+                assert!(
+                    (reach - rho).abs() < 1e-6,
+                    "the edge a = {a} at rho = {rho} reaches {reach}"
+                );
+            }
+        }
+        let map = from_json_lines(&committed("exact_reach.jsonl")).expect("reach lines");
+        let at = map
+            .iter()
+            .find(|p| (p.a_bar - 3.8).abs() < 1e-9)
+            .expect("a = 3.8 in the map");
+        let now = of_size(3.8, MODES).unwrap();
+        let (Some(was), Some(is)) = (at.reach(), now.reach()) else {
+            panic!("{at:?} / {now:?}")
+        };
+        assert!(
+            (was - is).abs() < 1e-8 && (is - 0.2109).abs() < 1e-4,
+            "committed {was}, now {is}: regenerate docs/data/exact_reach.jsonl (docs/exact.md)"
+        );
+    }
+
+    /// The committed reach (docs/data/exact_reach.jsonl) against the
+    /// committed band maps at ρ = 0.9 … 0.4 (docs/data/exact_bands.jsonl),
+    /// two routes that share no step: every size of the grid inside a band
+    /// has no state at that ρ connected to the circle at fixed ā (its reach
+    /// lies above ρ, or its path stopped); every size that does have one
+    /// lies outside every band. Sizes whose path turns back above ρ although
+    /// no band holds them (13 of the 6 × 201) lie within 0.02 of a neutral
+    /// point of the circle (n = 8 … 16): the path met the top of a band's
+    /// tongue in (ā, ρ), which then moved on in ā (docs/exact.md).
+    #[test]
+    fn the_reach_and_the_band_maps_agree_at_rho_0_9_to_0_4() {
+        let maps = crate::exact::bands::from_json_lines(&committed("exact_bands.jsonl"))
+            .expect("band map lines");
+        let map = from_json_lines(&committed("exact_reach.jsonl")).expect("reach lines");
+        let neutral = |n: usize| (4.0 * (n as f64 - 1.0)).cbrt();
+        let mut tongue_tops = 0;
+        for m in &maps {
+            let inside = |a: f64| {
+                m.bands
+                    .iter()
+                    .any(|b| a >= b.lower.a_bar - 1e-9 && a <= b.upper.a_bar + 1e-9)
+            };
+            let unsettled = |a: f64| {
+                m.open_ends
+                    .iter()
+                    .chain(m.crossed.iter().map(|c| &c.screened))
+                    .chain(m.unsettled.iter().map(|c| &c.screened))
+                    .any(|w| a >= w[0] && a <= w[1])
+            };
+            for p in map
+                .iter()
+                .filter(|p| p.a_bar >= m.range[0] && p.a_bar <= m.range[1])
+            {
+                let reaches = p.reach().is_some_and(|r| r < m.rho);
+                if inside(p.a_bar) {
+                    assert!(!reaches, "rho = {}: {p:?} inside a band", m.rho);
+                } else if !reaches && !unsettled(p.a_bar) {
+                    assert!(
+                        (8..=40)
+                            .step_by(2)
+                            .any(|n| (p.a_bar - neutral(n)).abs() < 0.02),
+                        "rho = {}: {p:?} outside every band",
+                        m.rho
+                    );
+                    tongue_tops += 1;
+                }
+            }
+        }
+        assert!(tongue_tops < 15, "{tongue_tops} sizes at tongue tops");
+    }
+
+    /// The windows table in docs/exact.md is what [`markdown`] renders from
+    /// the committed map (docs/data/exact_reach.jsonl).
+    #[test]
+    fn the_reach_table_in_the_docs_is_the_committed_map() {
+        let map = from_json_lines(&committed("exact_reach.jsonl")).expect("reach lines");
+        assert!(map.len() > 300, "{} sizes", map.len());
+        let table = markdown(&map);
+        let doc = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact.md"),
+        )
+        .unwrap();
+        assert!(
+            doc.contains(&table),
+            "docs/exact.md's reach table is stale; it should read:\n{table}"
+        );
+    }
+
+    /// Bad ranges are typed errors that name the parameter, before anything
+    /// is computed or allocated.
+    #[test]
+    fn a_reach_map_checks_its_range_first() {
+        let name = |r: Result<Vec<SizeReach>>| match r {
+            Err(crate::error::Error::OutOfRange { name, .. }) => name,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(name(reach(f64::NAN, 4.0, 0.01)), "from");
+        assert_eq!(name(reach(0.1, 4.0, 0.01)), "from");
+        assert_eq!(name(reach(2.0, 4.0, 0.0)), "step");
+        assert_eq!(name(reach(2.0, 4.0, f64::INFINITY)), "step");
+        assert_eq!(name(reach(2.0, 1.0, 0.01)), "to");
+        assert_eq!(name(reach(2.0, 1e300, 0.01)), "to");
+        assert_eq!(name(reach(2.0, 9.0, 0.001)), "to");
+    }
+
+    /// [`windows`] groups consecutive sizes below ρ; a stopped size breaks
+    /// a window.
+    #[test]
+    fn windows_are_runs_of_sizes_that_reach_below_rho() {
+        let size = |a_bar: f64, reached: Reached| SizeReach {
+            a_bar,
+            modes: 8,
+            reached,
+        };
+        let turns = |rho: f64| Reached::TurnsBack {
+            rho,
+            bc_error: Some(1e-12),
+        };
+        let map = vec![
+            size(2.0, turns(0.5)),
+            size(2.1, turns(0.2)),
+            size(2.2, Reached::Floor { bc_error: 1e-12 }),
+            size(2.3, Reached::Stopped { why: "x".into() }),
+            size(2.4, turns(0.25)),
+            size(2.5, turns(0.35)),
+        ];
+        assert_eq!(windows(&map, 0.3), vec![[2.1, 2.2], [2.4, 2.4]]);
+        assert_eq!(windows(&map, 0.1), vec![[2.2, 2.2]]);
+        assert_eq!(windows(&map, 0.01), Vec::<[f64; 2]>::new());
+    }
+}
