@@ -304,3 +304,22 @@ fn accuracy_computes_only_the_rows_asked_for() {
         .iter()
         .any(|l| l.starts_with("| 0.9 |") || l.starts_with("| 0.02 |")));
 }
+
+/// A `conformal:K` state in words says, as an exact state does, how much
+/// of its shape lies in undulations shorter than the cutoff: at ρ = 0.8
+/// conformal:8's zero-force contour is 0.10 % of ā off its ellipse, as the
+/// exact one (`thinjkr exact zero-force --rho 0.8`).
+#[test]
+fn a_contour_family_state_says_how_much_of_its_shape_is_resolved() {
+    let (ok, out, err) = thinjkr(&["zero-force", "--rho", "0.8", "--model", "conformal:8"]);
+    assert!(ok, "{err}");
+    let shape = out
+        .lines()
+        .find(|l| l.trim_start().starts_with("shape:"))
+        .unwrap_or_else(|| panic!("no shape line:\n{out}"));
+    assert!(
+        shape.contains("departs from its ellipse by up to 0.10 % of a")
+            && shape.contains("resolved at every thinness"),
+        "{shape}"
+    );
+}

@@ -93,6 +93,14 @@ pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
     );
     let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();
     outln!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
+    // how much of its shape the thin-layer model resolves, as for an
+    // exact state (`exact::undulations`)
+    if let Some(m) = crate::conformal::members().find(|m| m.name() == st.model) {
+        outln!(
+            "  shape: {}",
+            m.short_waves(&st.coefficients, st.cutoff).words(st.cutoff)
+        );
+    }
     match st.folds_crossed.as_deref() {
         Some([]) => {
             outln!("  arm: continued in rho from the circle at this control, on the circle's arm")
