@@ -323,3 +323,18 @@ fn a_contour_family_state_says_how_much_of_its_shape_is_resolved() {
         "{shape}"
     );
 }
+
+/// Below ρ = 0.4 `conformal:8`'s screen has no state, and `exact bands`
+/// says where the map by the exact family alone is (`exact reach`).
+#[test]
+fn a_band_map_whose_screen_is_empty_points_to_the_reach() {
+    let (ok, out, err) = thinjkr(&[
+        "exact", "bands", "--rho", "0.3", "--from", "2", "--to", "2.1",
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        out.contains("no near-elliptic state from a = 2.00 to 2.10")
+            && out.contains("`thinjkr exact reach` maps"),
+        "{out}"
+    );
+}

@@ -376,6 +376,15 @@ pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
             o[1]
         );
     }
+    if map
+        .open_ends
+        .iter()
+        .any(|o| o[0] <= map.range[0] && o[1] >= map.range[1])
+    {
+        outln!(
+            "  the screen has no state anywhere here; `thinjkr exact reach` maps the sizes with a state at every rho from the exact family alone (docs/exact.md, \"The reach of each size\")"
+        );
+    }
     for p in &map.probed {
         outln!(
             "  neutral point n = {} (a = {:.4}), passed by the screen, probed in steps of {}: {}",
