@@ -40,7 +40,8 @@
 //! ([`past_folds_or_band`], [`states_at`]).
 //!
 //! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
-//! [`states_at`], [`past_folds_or_band`]. May use: `control`, `exact`
+//! [`states_at`], [`past_folds_or_band`], [`documents_of`] (the maps' JSON
+//! lines). May use: `control`, `exact`
 //! (its family and traces; the screen by the gap's seed, `exact::seed`),
 //! `error`, `newton` (the caller's stop flag, carried to rayon's threads),
 //! rayon.
@@ -446,18 +447,28 @@ fn curve(gap: super::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>]) -> V
 /// The band maps of a file of `thinjkr exact bands --json` lines (one
 /// `{"bands": …}` document per line, as docs/data/exact_bands.jsonl).
 pub fn from_json_lines(text: &str) -> Result<Vec<BandMap>> {
+    documents_of(text, "bands", "band map")
+}
+
+/// The values under `key` of the one-document-per-line JSON `text` (as
+/// `thinjkr exact bands --json` and `exact reach --json` write them);
+/// an error names the first line that is not such a `what` document.
+pub(crate) fn documents_of<T: serde::de::DeserializeOwned>(
+    text: &str,
+    key: &str,
+    what: &str,
+) -> Result<Vec<T>> {
     text.lines()
         .filter(|l| !l.trim().is_empty())
         .enumerate()
         .map(|(k, l)| {
-            #[derive(Deserialize)]
-            struct Line {
-                bands: BandMap,
-            }
-            serde_json::from_str::<Line>(l)
-                .map(|d| d.bands)
+            serde_json::from_str::<serde_json::Value>(l)
+                .ok()
+                .and_then(|mut v| v.get_mut(key).map(serde_json::Value::take))
+                .ok_or_else(|| format!("no \"{key}\" in it"))
+                .and_then(|v| serde_json::from_value(v).map_err(|e| e.to_string()))
                 .map_err(|e| {
-                    Error::NoState(format!("line {} is not a band map document: {e}", k + 1))
+                    Error::NoState(format!("line {} is not a {what} document: {e}", k + 1))
                 })
         })
         .collect()

@@ -257,24 +257,7 @@ pub(crate) fn markdown(map: &[SizeReach]) -> String {
 /// The sizes of the lines `thinjkr exact reach --json` writes (one
 /// `{"reach": …}` document per line, as docs/data/exact_reach.jsonl).
 pub(crate) fn from_json_lines(text: &str) -> Result<Vec<SizeReach>> {
-    text.lines()
-        .filter(|l| !l.trim().is_empty())
-        .enumerate()
-        .map(|(k, l)| {
-            #[derive(Deserialize)]
-            struct Line {
-                reach: SizeReach,
-            }
-            serde_json::from_str::<Line>(l)
-                .map(|d| d.reach)
-                .map_err(|e| {
-                    crate::error::Error::NoState(format!(
-                        "line {} is not a reach document: {e}",
-                        k + 1
-                    ))
-                })
-        })
-        .collect()
+    super::bands::documents_of(text, "reach", "reach")
 }
 
 #[cfg(test)]
