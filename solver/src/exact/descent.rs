@@ -92,16 +92,17 @@ fn unstable_direction(
     Some(l_inv.transpose() * eig.eigenvectors.column(i))
 }
 
-/// Which coefficients the descent moves: A (the size) and the contour
-/// modes at least the cutoff's wavelength long on a contour of `perimeter`.
+/// Which coefficients the descent moves: A (the size: the multiplier 1,
+/// mode n = 0) and the contour modes at least the cutoff's wavelength long
+/// on a contour of `perimeter`; each told by its multiplier m, the mode
+/// n = |m − 1|, not by its place among the coefficients.
 fn resolved_coefficients(ex: &Exact, perimeter: f64, cutoff: Cutoff) -> Vec<bool> {
     ex.grid
         .multipliers
         .iter()
-        .enumerate()
-        .map(|(k, &m)| {
+        .map(|&m| {
             let n = (m - 1.0).abs().round();
-            k == 0 || cutoff.resolves(perimeter / n)
+            n == 0.0 || cutoff.resolves(perimeter / n)
         })
         .collect()
 }
