@@ -11,9 +11,9 @@
 //! size whose reach is 0.5 to 1e-6 (the tests).
 //!
 //! Owns: [`SizeReach`], [`Reached`], [`of_size`], [`reach`], [`from_json_lines`],
-//! [`windows`], [`markdown`]. May use: `exact` (the family, `rho_path`),
-//! `control`, `error`, `newton` (the stop flag, carried to rayon's
-//! threads), rayon.
+//! [`windows`], [`valleys`], [`markdown`]. May use: `exact` (the family,
+//! `rho_path`), `control`, `error`, `accuracy` (the ρ of its table),
+//! `newton` (the stop flag, carried to rayon's threads), rayon.
 
 // computed by the command line, read by the figures
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
@@ -177,14 +177,11 @@ pub(crate) fn windows(map: &[SizeReach], rho: f64) -> Vec<[f64; 2]> {
     out
 }
 
-/// The ρ of docs/accuracy.md, at which [`markdown`] lists the windows.
-pub(crate) const TABLE_RHOS: [f64; 12] =
-    [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.02];
-
 /// The table of docs/exact.md ("The reach of each size"): at each ρ of
-/// [`TABLE_RHOS`] below [`TOP`], the windows of [`windows`]; and the sizes
-/// whose path stopped, and those whose fold is not resolved to
-/// [`CONVERGED`], listed under it.
+/// docs/accuracy.md ([`crate::accuracy::RHOS`]) below [`TOP`], the windows
+/// of [`windows`]; under it the smallest reach, the valleys of the reach
+/// ([`valleys`]), the sizes whose path stopped, and those whose fold is
+/// not resolved to [`CONVERGED`].
 pub(crate) fn markdown(map: &[SizeReach]) -> String {
     let (Some(first), Some(last)) = (map.first(), map.last()) else {
         return String::new();
@@ -196,7 +193,7 @@ pub(crate) fn markdown(map: &[SizeReach]) -> String {
         rounded(last.a_bar),
         rounded(step)
     );
-    for rho in TABLE_RHOS.into_iter().filter(|&r| r < TOP) {
+    for rho in crate::accuracy::RHOS.into_iter().filter(|&r| r < TOP) {
         let w = windows(map, rho);
         let cell = if w.is_empty() {
             "none".to_string()
@@ -220,6 +217,16 @@ pub(crate) fn markdown(map: &[SizeReach]) -> String {
         .min_by(|x, y| x.0.total_cmp(&y.0));
     if let Some((r, a)) = lowest {
         s += &format!("\nThe smallest reach: ρ = {} (ā = {:.2}).\n", rounded(r), a);
+    }
+    let v: Vec<String> = valleys(map)
+        .iter()
+        .map(|(a, r)| format!("{a:.2} ({r:.3})"))
+        .collect();
+    if !v.is_empty() {
+        s += &format!(
+            "The valleys of the reach (its local minima over neighbouring sizes), ā (ρ): {}.\n",
+            v.join(", ")
+        );
     }
     let stopped: Vec<String> = map
         .iter()
@@ -252,6 +259,18 @@ pub(crate) fn markdown(map: &[SizeReach]) -> String {
         );
     }
     s
+}
+
+/// The sizes of `map` (in order of ā) whose reach lies below that of both
+/// neighbours, each with its reach: the bottoms of the sawtooth between
+/// the bands' tongues, where the windows close last as ρ falls.
+pub(crate) fn valleys(map: &[SizeReach]) -> Vec<(f64, f64)> {
+    map.windows(3)
+        .filter_map(|w| match (w[0].reach(), w[1].reach(), w[2].reach()) {
+            (Some(l), Some(r), Some(h)) if r < l && r < h => Some((w[1].a_bar, r)),
+            _ => None,
+        })
+        .collect()
 }
 
 /// The sizes of the lines `thinjkr exact reach --json` writes (one
@@ -336,7 +355,8 @@ mod tests {
         let maps = crate::exact::bands::from_json_lines(&committed("exact_bands.jsonl"))
             .expect("band map lines");
         let map = from_json_lines(&committed("exact_reach.jsonl")).expect("reach lines");
-        let neutral = |n: usize| (4.0 * (n as f64 - 1.0)).cbrt();
+        let circle = crate::exact::Gap::cylinders().at(1.0).unwrap();
+        let neutral = |n: usize| circle.neutral_point(n);
         let mut tongue_tops = 0;
         for m in &maps {
             let inside = |a: f64| {

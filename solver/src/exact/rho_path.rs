@@ -142,9 +142,9 @@ const FARTHEST_CORRECTION: f64 = 0.25;
 /// its point before the turn with an eighth of the step, until the step
 /// is below [`FOLD_STEP`], so that [`Followed::TurnedBack`]'s `fold` is
 /// located, and a step whose corrector moves farther than
-/// [`FARTHEST_CORRECTION`] times the step is halved (at ρ = 0.5 and 0.4, the sizes of the band edges that
-/// [`super::bands`] located by traces in ā turn back at ρ within 1e-5 of
-/// it: `exact::reach`).
+/// [`FARTHEST_CORRECTION`] times the step is halved (at ρ = 0.5 and 0.4,
+/// the sizes of the band edges that [`super::bands`] located by traces in
+/// ā turn back at ρ within 1e-6 of it: `exact::reach`'s tests).
 pub(crate) fn follow_with(
     start: &ExactState,
     rho: f64,
