@@ -142,9 +142,10 @@ const FARTHEST_CORRECTION: f64 = 0.25;
 /// its point before the turn with an eighth of the step, until the step
 /// is below [`FOLD_STEP`], so that [`Followed::TurnedBack`]'s `fold` is
 /// located, and a step whose corrector moves farther than
-/// [`FARTHEST_CORRECTION`] times the step is halved (at ρ = 0.5 and 0.4,
+/// [`FARTHEST_CORRECTION`] times the step is halved (below a step of 1e-5
+/// the path stops with an error rather than take it). At ρ = 0.5 and 0.4
 /// the sizes of the band edges that [`super::bands`] located by traces in
-/// ā turn back at ρ within 1e-6 of it: `exact::reach`'s tests).
+/// ā turn back at ρ within 1e-6 of it (`exact::reach`'s tests).
 pub(crate) fn follow_with(
     start: &ExactState,
     rho: f64,
@@ -198,8 +199,15 @@ pub(crate) fn follow_with(
             .tangent(&j, &t)
             .ok_or_else(|| failed(&next, "no tangent"))?;
         // a corrector that moved far from the prediction may have jumped to
-        // another branch: the step is halved
-        if locate && (&next - &vp).norm() > FARTHEST_CORRECTION * ds && ds >= 1e-5 {
+        // another branch: the step is halved, and below 1e-5 the path
+        // stops rather than take the jump
+        if locate && (&next - &vp).norm() > FARTHEST_CORRECTION * ds {
+            if ds < 1e-5 {
+                return Err(failed(
+                    &v,
+                    "the corrector leaves the path (it moves farther than a quarter of the step) with steps down to 1e-5",
+                ));
+            }
             ds *= 0.5;
             continue;
         }
