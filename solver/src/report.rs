@@ -382,6 +382,12 @@ pub(crate) enum Document {
         /// The size and how its path in ρ ended.
         reach: crate::exact::reach::SizeReach,
     },
+    /// A window of the reach at one ρ settled by the family at that ρ
+    /// (`exact reach --windows-at --json`).
+    Window {
+        /// The window and where the family ends on either side.
+        window: crate::exact::reach::Window,
+    },
     /// The models (`models --json`).
     Models {
         /// Every model.

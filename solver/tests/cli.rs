@@ -338,3 +338,34 @@ fn a_band_map_whose_screen_is_empty_points_to_the_reach() {
         "{out}"
     );
 }
+
+/// `exact reach --windows-at` checks its ρ before it reads or computes
+/// anything, names a file it cannot read, and says so where the map has no
+/// window at that ρ (the committed map at ρ = 0.1, no computation).
+#[test]
+fn the_reach_windows_check_their_input_and_say_when_there_are_none() {
+    let map = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../docs/data/exact_reach.jsonl"
+    );
+    let (ok, _, err) = thinjkr(&["exact", "reach", "--windows-at", "0.01", "--map", map]);
+    assert!(
+        !ok && err.contains("windows-at") && err.contains("(0.02, 0.98)"),
+        "{err}"
+    );
+    let (ok, _, err) = thinjkr(&[
+        "exact",
+        "reach",
+        "--windows-at",
+        "0.3",
+        "--map",
+        "no/such/file.jsonl",
+    ]);
+    assert!(!ok && err.contains("no/such/file.jsonl"), "{err}");
+    let (ok, out, err) = thinjkr(&["exact", "reach", "--windows-at", "0.1", "--map", map]);
+    assert!(ok, "{err}");
+    assert!(
+        out.contains("no size of the map has a state at rho = 0.1 connected to the circle"),
+        "{out}"
+    );
+}

@@ -176,7 +176,13 @@ pub(crate) enum ExactCommand {
         /// The step in ā.
         #[arg(long, default_value_t = 0.01, allow_hyphen_values = true)]
         step: f64,
-        /// Print one JSON document per size.
+        /// Settle the windows at this ρ in (0.02, 0.98): from the state at ρ of each window's size with the smallest reach, the family at ρ traced in ā both ways to its folds (band edges) or to where 128 modes stop resolving it.
+        #[arg(long, allow_hyphen_values = true)]
+        windows_at: Option<f64>,
+        /// With --windows-at: read the reach from this file of `exact reach --json` lines (as docs/data/exact_reach.jsonl) instead of computing it over --from, --to, --step.
+        #[arg(long, requires = "windows_at")]
+        map: Option<std::path::PathBuf>,
+        /// Print one JSON document per size (per window with --windows-at).
         #[arg(long)]
         json: bool,
     },
@@ -274,7 +280,16 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             from,
             to,
             step,
+            windows_at: Some(rho),
+            map,
             json,
+        } => settled_windows(rho, map.as_deref(), from, to, step, json),
+        ExactCommand::Reach {
+            from,
+            to,
+            step,
+            json,
+            ..
         } => reach(from, to, step, json),
         ExactCommand::StorePullOffs { out } => {
             super::files::check_file(&out)?;
@@ -433,6 +448,65 @@ pub(crate) fn reach(from: f64, to: f64, step: f64, json: bool) -> Result<()> {
     }
     outln!("");
     outln!("{}", crate::exact::reach::markdown(&map).trim_end());
+    Ok(())
+}
+
+/// The largest reach map `exact reach --windows-at --map` reads: 1000
+/// sizes of a few hundred bytes each.
+const MAX_REACH_MAP: u64 = 4 << 20;
+
+/// `thinjkr exact reach --windows-at`.
+pub(crate) fn settled_windows(
+    rho: f64,
+    map: Option<&std::path::Path>,
+    from: f64,
+    to: f64,
+    step: f64,
+    json: bool,
+) -> Result<()> {
+    use crate::exact::reach::{self, WindowEnd};
+    crate::error::check_range(
+        "windows-at",
+        rho,
+        rho.is_finite() && rho > reach::FLOOR && rho < reach::TOP,
+        "(0.02, 0.98)",
+    )?;
+    let map = match map {
+        Some(p) => reach::from_json_lines(&super::files::input(p, MAX_REACH_MAP)?)?,
+        None => reach::reach(from, to, step)?,
+    };
+    let windows = reach::settle(&map, rho)?;
+    if json {
+        for window in windows {
+            outln!("{}", Document::Window { window }.to_json());
+        }
+        return Ok(());
+    }
+    if windows.is_empty() {
+        outln!(
+            "no size of the map has a state at rho = {} connected to the circle at fixed a (`thinjkr exact reach` without --windows-at lists each size's reach)",
+            crate::error::rounded(rho)
+        );
+        return Ok(());
+    }
+    outln!(
+        "the windows of the reach at rho = {}, each traced in a at that rho ({} modes of each sign; an end is a fold, a band's edge, or where the boundary error passes {:.0e}):",
+        crate::error::rounded(rho),
+        reach::MODES,
+        reach::WINDOW_RESOLVED
+    );
+    outln!("{}", reach::windows_markdown(&windows).trim_end());
+    for w in &windows {
+        for (side, e) in [("smaller", &w.lower), ("larger", &w.upper)] {
+            if let WindowEnd::Failed { why } = e {
+                outln!(
+                    "the window {:.2} to {:.2}, towards {side} a: {why}",
+                    w.grid[0],
+                    w.grid[1]
+                );
+            }
+        }
+    }
     Ok(())
 }
 

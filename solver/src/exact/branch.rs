@@ -82,6 +82,25 @@ pub(crate) enum ArmEnd {
     },
 }
 
+/// How a trace to a fold in ā ended ([`Exact::to_size_fold_within`]).
+#[derive(Clone, Debug)]
+pub(crate) enum SizeFoldEnd {
+    /// The located fold, with the contour mode of its null direction.
+    Fold(Box<ExactState>, Option<usize>),
+    /// ā passed the limit first.
+    Beyond,
+    /// The series stopped following the family first: at this traced
+    /// point its fine-grid boundary error exceeds the bound.
+    Unresolved {
+        /// ā there.
+        a_bar: f64,
+        /// F̄ there.
+        force_bar: f64,
+        /// The boundary error there.
+        bc_error: f64,
+    },
+}
+
 /// Why a trace past a band's fold stopped ([`Exact::crossings_past_fold`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum PastFoldStop {
@@ -886,6 +905,26 @@ impl Exact {
         a_limit: f64,
         max_step: f64,
     ) -> Result<Option<(ExactState, Option<usize>)>> {
+        Ok(
+            match self.to_size_fold_within(start, direction, a_limit, max_step, f64::INFINITY)? {
+                SizeFoldEnd::Fold(st, mode) => Some((*st, mode)),
+                // no point's boundary error exceeds an infinite bound
+                SizeFoldEnd::Beyond | SizeFoldEnd::Unresolved { .. } => None,
+            },
+        )
+    }
+
+    /// [`Exact::to_size_fold`], ending also where the series stops
+    /// following the family: at the first traced point whose fine-grid
+    /// boundary error exceeds `within` ([`SizeFoldEnd::Unresolved`]).
+    pub(crate) fn to_size_fold_within(
+        &self,
+        start: &ExactState,
+        direction: f64,
+        a_limit: f64,
+        max_step: f64,
+        within: f64,
+    ) -> Result<SizeFoldEnd> {
         let n = self.unknown_count();
         let settings = trace_settings(max_step, 2000);
         let watch = Watch {
@@ -895,15 +934,31 @@ impl Exact {
             bifurcation: On::Ignore,
             crossing: None,
         };
+        let mut unresolved = None;
         let trace = continuation::trace(
             self,
             self.unknowns(start),
             &(a_bar_gradient(n) * direction),
             settings,
             watch,
-            |p| (p.a_bar - a_limit) * direction > 0.0,
+            |p| {
+                if within.is_finite() {
+                    if let Some(bc) = self.fine_boundary_error(&p.u).filter(|bc| *bc > within) {
+                        unresolved = Some(SizeFoldEnd::Unresolved {
+                            a_bar: p.a_bar,
+                            force_bar: p.force,
+                            bc_error: bc,
+                        });
+                        return true;
+                    }
+                }
+                (p.a_bar - a_limit) * direction > 0.0
+            },
         )?;
         let Some(u) = trace.located(EventKind::SizeFold) else {
+            if let Some(end) = unresolved {
+                return Ok(end);
+            }
             // past the limit without a fold; a trace that ran out of steps
             // first says where it stopped
             return match trace.end {
@@ -914,7 +969,7 @@ impl Exact {
                         .map_or_else(|| self.unknowns(start), |p| p.u.clone()),
                     "no fold of the contact size within 2000 steps",
                 )),
-                _ => Ok(None),
+                _ => Ok(SizeFoldEnd::Beyond),
             };
         };
         // the state equations at fixed ā, singular at the fold
@@ -923,7 +978,10 @@ impl Exact {
         let mut held = DMatrix::zeros(n, n);
         held.rows_mut(0, n - 1).copy_from(&j);
         held.set_row(n - 1, &a_bar_gradient(n).transpose());
-        Ok(Some((self.state(u)?, contour_mode(self, u, &held))))
+        Ok(SizeFoldEnd::Fold(
+            Box::new(self.state(u)?),
+            contour_mode(self, u, &held),
+        ))
     }
 
     /// The states at `control` on the arm through `start`, traced with ā

@@ -11,13 +11,15 @@
 //! size whose reach is 0.5 to 1e-6 (the tests).
 //!
 //! Owns: [`SizeReach`], [`Reached`], [`of_size`], [`reach`], [`from_json_lines`],
-//! [`windows`], [`valleys`], [`markdown`]. May use: `exact` (the family,
+//! [`windows`], [`valleys`], [`markdown`], [`Window`], [`WindowEnd`],
+//! [`settle`], [`windows_markdown`], [`windows_from_json_lines`]. May use: `exact` (the family,
 //! `rho_path`), `control`, `error`, `accuracy` (the ρ of its table),
 //! `newton` (the stop flag, carried to rayon's threads), rayon.
 
 // computed by the command line, read by the figures
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
+use super::branch::SizeFoldEnd;
 use super::rho_path::{follow_with, Followed};
 use super::{Exact, Truncation, CONVERGED};
 use crate::control::Hold;
@@ -273,10 +275,234 @@ pub(crate) fn valleys(map: &[SizeReach]) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// The boundary error past which a window's trace in ā ends
+/// ([`WindowEnd::Unresolved`]): the bound of the traces of
+/// `exact::larger_contacts` on the way.
+pub(crate) const WINDOW_RESOLVED: f64 = 1e-6;
+
+/// How far from its start a window's trace in ā looks for a fold.
+pub(crate) const WINDOW_SPAN: f64 = 1.0;
+
+/// One end of a window of [`settle`]: where the family at that ρ, traced
+/// in ā from the window's state, ends on that side.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub(crate) enum WindowEnd {
+    /// The family folds in ā: the edge of the band beyond.
+    Fold {
+        /// ā at the fold.
+        a_bar: f64,
+        /// s there.
+        s: f64,
+        /// F̄ there.
+        force_bar: f64,
+        /// The contour mode n of the fold's null direction, where computed.
+        mode: Option<usize>,
+        /// The fine-grid boundary error there.
+        bc_error: f64,
+    },
+    /// Before any fold the series stopped following the family: at this
+    /// traced point the boundary error passed [`WINDOW_RESOLVED`]. The
+    /// family goes on, with a shape [`MODES`] modes do not resolve.
+    Unresolved {
+        /// ā there.
+        a_bar: f64,
+        /// F̄ there.
+        force_bar: f64,
+        /// The boundary error there.
+        bc_error: f64,
+    },
+    /// ā moved [`WINDOW_SPAN`] from the start without a fold.
+    Beyond {
+        /// The ā passed.
+        a_bar: f64,
+    },
+    /// The trace failed: why, in words.
+    Failed {
+        /// Why.
+        why: String,
+    },
+}
+
+/// A window of the reach at one ρ, settled by the family at that ρ: the
+/// state of the window's size with the smallest reach, followed from the
+/// circle at fixed ā down to ρ, traced in ā both ways to where the family
+/// folds (a band's edge) or stops being resolved.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct Window {
+    /// ρ.
+    pub rho: f64,
+    /// The window of [`windows`]: its first and last size on the grid.
+    pub grid: [f64; 2],
+    /// The size the traces start from.
+    pub a_bar: f64,
+    /// F̄ of its state at ρ (absent where the state was not found).
+    pub force_bar: Option<f64>,
+    /// The boundary error of that state.
+    pub bc_error: Option<f64>,
+    /// Towards smaller ā.
+    pub lower: WindowEnd,
+    /// Towards larger ā.
+    pub upper: WindowEnd,
+}
+
+/// The windows of `map` at `rho`, each settled by the family at `rho`
+/// ([`Window`]; [`MODES`] modes of each sign), in parallel.
+pub(crate) fn settle(map: &[SizeReach], rho: f64) -> Result<Vec<Window>> {
+    crate::error::check_range(
+        "rho",
+        rho,
+        rho.is_finite() && rho > FLOOR && rho < TOP,
+        "(0.02, 0.98)",
+    )?;
+    let stop = crate::newton::stop_flag();
+    windows(map, rho)
+        .par_iter()
+        .map(|&grid| crate::newton::carried(stop.clone(), || settle_one(map, rho, grid)))
+        .collect()
+}
+
+fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
+    // the window's size with the smallest reach: the farthest from a band
+    let a_bar = map
+        .iter()
+        .filter(|p| p.a_bar >= grid[0] && p.a_bar <= grid[1])
+        .filter_map(|p| p.reach().map(|r| (r, p.a_bar)))
+        .min_by(|x, y| x.0.total_cmp(&y.0))
+        .map_or(grid[0], |(_, a)| a);
+    let failed = |why: String| Window {
+        rho,
+        grid,
+        a_bar,
+        force_bar: None,
+        bc_error: None,
+        lower: WindowEnd::Failed { why: why.clone() },
+        upper: WindowEnd::Failed { why },
+    };
+    let t = Truncation::in_arclength(MODES);
+    let start = match Exact::new(TOP, t)?.deferring_stability().from_circle(a_bar) {
+        Ok(st) => st,
+        Err(e) => {
+            crate::newton::check_stop()?;
+            return Ok(failed(e.detail()));
+        }
+    };
+    let state = match follow_with(&start, rho, Hold::Size(a_bar), true) {
+        Ok(Followed::Reached(st)) => st,
+        Ok(Followed::TurnedBack { fold, .. }) => {
+            return Ok(failed(format!(
+                "the path from the circle turned back at rho = {}",
+                rounded(fold)
+            )))
+        }
+        Err(e) => {
+            crate::newton::check_stop()?;
+            return Ok(failed(e.detail()));
+        }
+    };
+    let ex = Exact::on(state.gap, rho, state.truncation)?.deferring_stability();
+    let end = |direction: f64| -> Result<WindowEnd> {
+        let limit = a_bar + direction * WINDOW_SPAN;
+        Ok(
+            match ex.to_size_fold_within(&state, direction, limit, 0.01, WINDOW_RESOLVED) {
+                Ok(SizeFoldEnd::Fold(st, mode)) => WindowEnd::Fold {
+                    a_bar: st.a_bar,
+                    s: st.s,
+                    force_bar: st.force_bar,
+                    mode,
+                    bc_error: st.bc_error,
+                },
+                Ok(SizeFoldEnd::Unresolved {
+                    a_bar,
+                    force_bar,
+                    bc_error,
+                }) => WindowEnd::Unresolved {
+                    a_bar,
+                    force_bar,
+                    bc_error,
+                },
+                Ok(SizeFoldEnd::Beyond) => WindowEnd::Beyond { a_bar: limit },
+                Err(e) => {
+                    crate::newton::check_stop()?;
+                    WindowEnd::Failed { why: e.detail() }
+                }
+            },
+        )
+    };
+    Ok(Window {
+        rho,
+        grid,
+        a_bar,
+        force_bar: Some(state.force_bar),
+        bc_error: Some(state.bc_error),
+        lower: end(-1.0)?,
+        upper: end(1.0)?,
+    })
+}
+
+/// The table of docs/exact.md of the settled windows at each ρ of
+/// `windows` (in their order).
+pub(crate) fn windows_markdown(windows: &[Window]) -> String {
+    // a force with a minus sign, not a hyphen
+    let force = |f: f64| format!("{f:.2}").replace('-', "−");
+    let end = |e: &WindowEnd| match e {
+        WindowEnd::Fold {
+            a_bar,
+            force_bar,
+            mode,
+            bc_error,
+            ..
+        } => format!(
+            "fold at {a_bar:.4} (F̄ = {}{}; {bc_error:.0e})",
+            force(*force_bar),
+            mode.map_or(String::new(), |n| format!(", n = {n}"))
+        ),
+        WindowEnd::Unresolved {
+            a_bar,
+            force_bar,
+            bc_error,
+        } => format!(
+            "unresolved from {a_bar:.3} (F̄ = {}; {bc_error:.0e})",
+            force(*force_bar)
+        ),
+        WindowEnd::Beyond { a_bar } => format!("no fold up to {a_bar:.2}"),
+        WindowEnd::Failed { .. } => "failed".to_string(),
+    };
+    let mut s = String::from(
+        "| ρ | grid window | start: ā, F̄ (boundary error) | towards smaller ā | towards larger ā |\n|---|---|---|---|---|\n",
+    );
+    for w in windows {
+        s += &format!(
+            "| {} | {:.2} – {:.2} | {:.2}, {} | {} | {} |\n",
+            w.rho,
+            w.grid[0],
+            w.grid[1],
+            w.a_bar,
+            match (w.force_bar, w.bc_error) {
+                (Some(f), Some(e)) => format!("{} ({e:.0e})", force(f)),
+                _ => "no state".to_string(),
+            },
+            end(&w.lower),
+            end(&w.upper)
+        );
+    }
+    s
+}
+
 /// The sizes of the lines `thinjkr exact reach --json` writes (one
 /// `{"reach": …}` document per line, as docs/data/exact_reach.jsonl).
 pub(crate) fn from_json_lines(text: &str) -> Result<Vec<SizeReach>> {
     super::bands::documents_of(text, "reach", "reach")
+}
+
+/// The windows of the lines `thinjkr exact reach --windows-at --json`
+/// writes (one `{"window": …}` document per line, as
+/// docs/data/exact_windows.jsonl; the docs' table is checked against it).
+#[cfg(test)]
+pub(crate) fn windows_from_json_lines(text: &str) -> Result<Vec<Window>> {
+    super::bands::documents_of(text, "window", "window")
 }
 
 #[cfg(test)]
@@ -407,6 +633,73 @@ mod tests {
         assert!(
             doc.contains(&table),
             "docs/exact.md's reach table is stale; it should read:\n{table}"
+        );
+    }
+
+    /// A window at ρ = 0.3 settled again: the size 3.62, followed from the
+    /// circle at fixed ā, has a state at ρ = 0.3, and the family at
+    /// ρ = 0.3 traced in ā from it folds on both sides, resolved below
+    /// 1e-9, as committed (docs/data/exact_windows.jsonl). Two second
+    /// routes: the lower fold is the one that the arm carrying the state at
+    /// F̄ = 10 passes (ā = 3.600373, F̄ = 10.951: that state, reached from a
+    /// larger contact at ρ = 0.4, traced down in ā to its fold;
+    /// docs/exact.md, "Below the fold"), and the size of the upper fold,
+    /// followed from the circle at fixed ā, turns back at ρ = 0.3.
+    #[test]
+    fn a_window_at_rho_0_3_is_settled_by_two_folds_that_other_routes_find() {
+        let map = from_json_lines(&committed("exact_reach.jsonl")).expect("reach lines");
+        let committed =
+            windows_from_json_lines(&committed("exact_windows.jsonl")).expect("window lines");
+        let was = committed
+            .iter()
+            .find(|w| w.rho == 0.3 && (w.grid[0] - 3.61).abs() < 1e-9)
+            .expect("the committed window");
+        let is = settle_one(&map, 0.3, was.grid).unwrap();
+        assert_eq!(is.a_bar, was.a_bar);
+        let fold = |e: &WindowEnd| match e {
+            WindowEnd::Fold {
+                a_bar,
+                force_bar,
+                bc_error,
+                ..
+            } => {
+                assert!(*bc_error < CONVERGED, "{e:?}");
+                (*a_bar, *force_bar)
+            }
+            other => panic!("{other:?}"),
+        };
+        for (now, then) in [(&is.lower, &was.lower), (&is.upper, &was.upper)] {
+            let (a, f) = fold(now);
+            let (a0, f0) = fold(then);
+            assert!(
+                (a - a0).abs() < 1e-8 && (f - f0).abs() < 1e-6,
+                "{now:?} against {then:?}"
+            );
+        }
+        let (lower, force) = fold(&is.lower);
+        assert!((lower - 3.600373).abs() < 2e-6 && (force - 10.951).abs() < 1e-3);
+        let (upper, _) = fold(&is.upper);
+        let reach = of_size(upper, MODES).unwrap().reach().expect("a reach");
+        assert!(
+            (reach - 0.3).abs() < 1e-6,
+            "the upper fold's size reaches {reach}"
+        );
+    }
+
+    /// The settled windows' table in docs/exact.md is what
+    /// [`windows_markdown`] renders from docs/data/exact_windows.jsonl.
+    #[test]
+    fn the_windows_table_in_the_docs_is_the_committed_windows() {
+        let w = windows_from_json_lines(&committed("exact_windows.jsonl")).expect("window lines");
+        assert!(w.iter().any(|w| w.rho == 0.3) && w.iter().any(|w| w.rho == 0.2));
+        let table = windows_markdown(&w);
+        let doc = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact.md"),
+        )
+        .unwrap();
+        assert!(
+            doc.contains(&table),
+            "docs/exact.md's windows table is stale; it should read:\n{table}"
         );
     }
 
