@@ -143,7 +143,11 @@ pub(crate) fn from_larger_contacts(
 /// ρ = 0.3"), taken on from the last state it resolved with the next of
 /// [`RAISED_MODES`], solved again at that state's ā (and accepted within
 /// 1e-6 in F̄ of it: the same arm), the way ā was moving.
-fn traced_with_raised_modes(at_rho: &Exact, arrived: &ExactState, control: Hold) -> Result<ArmEnd> {
+pub(crate) fn traced_with_raised_modes(
+    at_rho: &Exact,
+    arrived: &ExactState,
+    control: Hold,
+) -> Result<ArmEnd> {
     let mut end = at_rho.first_crossing_through_folds(
         arrived,
         -1.0,

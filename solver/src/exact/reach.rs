@@ -686,6 +686,43 @@ mod tests {
         );
     }
 
+    /// The lower side of the window 3.78 – 3.79 at ρ = 0.2, which 128
+    /// modes stop resolving at ā = 3.775 (F̄ = 10.38), taken on with more
+    /// modes (the trace of `larger_contacts` with raised modes) reaches
+    /// F̄ = 10 at the state that `exact solve --rho 0.2 --force 10` finds
+    /// by another route, on a larger contact's arm from ρ = 0.22 with 256
+    /// modes (ā = 3.7732982559, δ̄ = 3.3227651249; docs/exact.md, "Below
+    /// ρ = 0.3"): that state lies on a piece connected to the circle.
+    #[test]
+    fn the_state_at_force_10_and_rho_0_2_lies_on_the_piece_of_the_window_3_78() {
+        let (a_bar, rho) = (3.78, 0.2);
+        let start = Exact::new(TOP, Truncation::in_arclength(MODES))
+            .unwrap()
+            .deferring_stability()
+            .from_circle(a_bar)
+            .unwrap();
+        let Followed::Reached(st) = follow_with(&start, rho, Hold::Size(a_bar), true).unwrap()
+        else {
+            panic!("the size 3.78 reaches rho = 0.2");
+        };
+        let ex = Exact::on(st.gap, rho, st.truncation)
+            .unwrap()
+            .deferring_stability();
+        let end =
+            crate::exact::larger_contacts::traced_with_raised_modes(&ex, &st, Hold::Force(10.0))
+                .unwrap();
+        let crate::exact::branch::ArmEnd::Reached(at) = end else {
+            panic!("the piece does not reach F = 10");
+        };
+        assert!(at.bc_error < 1e-6, "boundary error {:e}", at.bc_error);
+        assert!(
+            (at.a_bar - 3.7732982559).abs() < 1e-8 && (at.delta_bar - 3.3227651249).abs() < 1e-8,
+            "a = {}, delta = {}",
+            at.a_bar,
+            at.delta_bar
+        );
+    }
+
     /// The settled windows' table in docs/exact.md is what
     /// [`windows_markdown`] renders from docs/data/exact_windows.jsonl.
     #[test]
