@@ -52,3 +52,14 @@ def test_curve_json_validates(cli):
     run = subprocess.run([cli, "curve", "--rho", "0.8", "--points", "30", "--format", "json"],
                          capture_output=True, text=True, check=True)
     jsonschema.validate(json.loads(run.stdout), SCHEMA)
+
+
+@pytest.mark.parametrize("name", ["exact_windows.jsonl", "exact_reach.jsonl", "exact_bands.jsonl"])
+def test_committed_json_lines_validate(name):
+    """The committed maps (`thinjkr exact reach/bands --json`) are documents of the schema."""
+    path = pathlib.Path(__file__).resolve().parents[2] / "docs/data" / name
+    lines = [line for line in path.read_text().splitlines() if line.strip()]
+    assert lines
+    validator = jsonschema.validators.validator_for(SCHEMA)(SCHEMA)
+    for line in lines:
+        validator.validate(json.loads(line))
