@@ -325,8 +325,9 @@ pub(crate) enum WindowEnd {
     },
     /// The trace ended (at a fold, or where it stopped being resolved, or
     /// at its limit) past another window of the grid, across the band
-    /// between: a band narrower than its step (0.01) that it passed, or
-    /// another arm it left the piece for. Not settled.
+    /// between, in steps of 0.01 and again in the band maps' fine steps
+    /// (a band narrower than those, or another arm it left the piece
+    /// for). Not settled.
     Crossed {
         /// Where it ended.
         a_bar: f64,
@@ -426,10 +427,10 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
         }
     };
     let ex = Exact::on(state.gap, rho, state.truncation)?.deferring_stability();
-    let end = |direction: f64| -> Result<WindowEnd> {
+    let end = |direction: f64, step: f64| -> Result<WindowEnd> {
         let limit = a_bar + direction * WINDOW_SPAN;
         Ok(
-            match ex.to_size_fold_within(&state, direction, limit, 0.01, WINDOW_RESOLVED) {
+            match ex.to_size_fold_within(&state, direction, limit, step, WINDOW_RESOLVED) {
                 Ok(SizeFoldEnd::Fold(st, mode)) => WindowEnd::Fold {
                     a_bar: st.a_bar,
                     s: st.s,
@@ -469,14 +470,25 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
             None => e,
         }
     };
+    // in steps of 0.01, and again in the band maps' fine steps where that
+    // crossed a band
+    let settled = |direction: f64| -> Result<WindowEnd> {
+        match checked(end(direction, 0.01)?, direction) {
+            WindowEnd::Crossed { .. } => Ok(checked(
+                end(direction, super::bands::PROBE_STEP)?,
+                direction,
+            )),
+            e => Ok(e),
+        }
+    };
     Ok(Window {
         rho,
         grid,
         a_bar,
         force_bar: Some(state.force_bar),
         bc_error: Some(state.bc_error),
-        lower: checked(end(-1.0)?, -1.0),
-        upper: checked(end(1.0)?, 1.0),
+        lower: settled(-1.0)?,
+        upper: settled(1.0)?,
     })
 }
 
