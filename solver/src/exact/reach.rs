@@ -21,7 +21,7 @@
 
 use super::branch::SizeFoldEnd;
 use super::rho_path::{follow_with, Followed};
-use super::{Exact, Truncation, CONVERGED};
+use super::{Exact, ExactState, Truncation, CONVERGED};
 use crate::control::Hold;
 use crate::error::{rounded, Result};
 use rayon::prelude::*;
@@ -94,6 +94,19 @@ impl SizeReach {
     }
 }
 
+/// The state of size `a_bar` at ρ = [`TOP`] continued from the circle
+/// with truncation `t`, or why there is none, in words; an error only
+/// where the caller asked to stop (not a size's outcome).
+fn from_the_circle(a_bar: f64, t: Truncation) -> Result<std::result::Result<ExactState, String>> {
+    match Exact::new(TOP, t)?.deferring_stability().from_circle(a_bar) {
+        Ok(st) => Ok(Ok(st)),
+        Err(e) => {
+            crate::newton::check_stop()?;
+            Ok(Err(e.detail()))
+        }
+    }
+}
+
 /// The reach of the size `a_bar` with `modes` modes of each sign.
 pub(crate) fn of_size(a_bar: f64, modes: usize) -> Result<SizeReach> {
     let t = Truncation::in_arclength(modes);
@@ -102,13 +115,9 @@ pub(crate) fn of_size(a_bar: f64, modes: usize) -> Result<SizeReach> {
         modes,
         reached: Reached::Stopped { why },
     };
-    let start = match Exact::new(TOP, t)?.deferring_stability().from_circle(a_bar) {
+    let start = match from_the_circle(a_bar, t)? {
         Ok(st) => st,
-        Err(e) => {
-            // a stop the caller asked for is not a size's outcome
-            crate::newton::check_stop()?;
-            return Ok(stopped(e.detail()));
-        }
+        Err(why) => return Ok(stopped(why)),
     };
     Ok(match follow_with(&start, FLOOR, Hold::Size(a_bar), true) {
         Ok(Followed::TurnedBack { fold, bc_error, .. }) => SizeReach {
@@ -405,13 +414,9 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
         lower: WindowEnd::Failed { why: why.clone() },
         upper: WindowEnd::Failed { why },
     };
-    let t = Truncation::in_arclength(MODES);
-    let start = match Exact::new(TOP, t)?.deferring_stability().from_circle(a_bar) {
+    let start = match from_the_circle(a_bar, Truncation::in_arclength(MODES))? {
         Ok(st) => st,
-        Err(e) => {
-            crate::newton::check_stop()?;
-            return Ok(failed(e.detail()));
-        }
+        Err(why) => return Ok(failed(why)),
     };
     let state = match follow_with(&start, rho, Hold::Size(a_bar), true) {
         Ok(Followed::Reached(st)) => st,
@@ -750,10 +755,8 @@ mod tests {
     #[test]
     fn the_state_at_force_10_and_rho_0_2_lies_on_the_piece_of_the_window_3_78() {
         let (a_bar, rho) = (3.78, 0.2);
-        let start = Exact::new(TOP, Truncation::in_arclength(MODES))
+        let start = from_the_circle(a_bar, Truncation::in_arclength(MODES))
             .unwrap()
-            .deferring_stability()
-            .from_circle(a_bar)
             .unwrap();
         let Followed::Reached(st) = follow_with(&start, rho, Hold::Size(a_bar), true).unwrap()
         else {
