@@ -26,13 +26,13 @@
 //! called n = 2, and `conformal:8` there had reported cos 4θ and no cos 8θ.
 //!
 //! Owns: [`NormalMotion`], [`NamedDirection`], the long-wave second route
-//! ([`NormalMotion::stable_upto`]). May use: `cutoff` (the
+//! ([`NormalMotion::long_wave`]). May use: `cutoff` (the
 //! neutral band), nalgebra.
 
 use crate::cutoff::Eigen;
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn, SymmetricEigen};
 
-/// How closely the long-wave motions of [`NormalMotion::stable_upto`] must
+/// How closely the long-wave motions of [`NormalMotion::long_wave`] must
 /// be represented (relative misfit in ∮ · ds) to be tried.
 const LONG_WAVE_FIT: f64 = 1e-3;
 
@@ -48,6 +48,42 @@ pub(crate) struct Rung {
     /// The relative misfit of mode n's fit in ∮ · ds.
     #[cfg_attr(not(test), allow(dead_code))]
     pub(crate) miss: f64,
+}
+
+/// What the long-wave ladders say of the names of a Hessian's unstable
+/// directions ([`NormalMotion::long_wave`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct LongWave {
+    /// The size alone (with δ̄ under load control, the ladder's rung n = 0)
+    /// is stable: no unstable direction is named n = 0.
+    pub(crate) size_stable: bool,
+    /// The largest mode n on whose motions (modes 0, 2, …, n) the variation
+    /// under displacement control has no clearly negative direction: no
+    /// unstable direction is named by a mode 2 … n (none where the size
+    /// alone has one).
+    pub(crate) stable_upto: Option<usize>,
+    /// The first mode n ≥ 2 whose motions added give the variation under
+    /// displacement control one: some unstable direction is named by a
+    /// mode up to it (none where the ladder reaches no such rung).
+    pub(crate) unstable_at: Option<usize>,
+}
+
+impl LongWave {
+    /// The bounds under load control: the size's verdict from `load`, the
+    /// ladder of the bordered Hessian, and the contour modes' from this,
+    /// the ladder under displacement control. With δ̄ fixed the bordered
+    /// Hessian is the other, so a negative direction on the long waves
+    /// under displacement control is one under load too; but at a fold of
+    /// the load (a pull-off) the size's zero, restricted to the long waves,
+    /// takes a sign from the shorter unstable modes it mixes in (−0.055 at
+    /// the pull-off at ρ = 0.1, −1.5e-3 with modes up to 4 at ρ = 0.5), so
+    /// the load's own ladder names no contour mode.
+    pub(crate) fn under_load(self, load: LongWave) -> LongWave {
+        LongWave {
+            size_stable: load.size_stable,
+            ..self
+        }
+    }
 }
 
 /// One direction of negative or zero eigenvalue, with its contour mode.
@@ -127,16 +163,25 @@ impl NormalMotion {
     /// unknowns first, then any further ones), restricted where given to
     /// the directions `restriction` spans (m × k, columns in the contour
     /// unknowns; the further unknowns are kept as they are). No unstable
-    /// direction is named by a contour mode n with 2 ≤ n ≤ `stable_upto`
-    /// ([`NormalMotion::stable_upto`]: on the motions of those modes the
-    /// second variation has no negative direction). None where the metric
-    /// is singular.
+    /// direction is named by the size where `long_wave` finds it stable
+    /// alone, nor by a mode 2 … `long_wave.stable_upto`, and where no
+    /// direction is named by a mode up to `long_wave.unstable_at` the one
+    /// with the largest amplitude in those modes is named by it
+    /// ([`NormalMotion::long_wave`]: on the motions of those modes the
+    /// variation has a negative direction, on the shorter list none). So
+    /// the longest mode named is the ladder's. None where the metric is
+    /// singular.
     pub(crate) fn directions(
         &self,
         hessian: &DMatrix<f64>,
         restriction: Option<&DMatrix<f64>>,
-        stable_upto: usize,
+        long_wave: LongWave,
     ) -> Option<Directions> {
+        let LongWave {
+            size_stable,
+            stable_upto,
+            unstable_at,
+        } = long_wave;
         let m = self.metric.nrows();
         let dim = hessian.nrows();
         // in the reduced coordinates [Z 0; 0 1], and back
@@ -181,7 +226,12 @@ impl NormalMotion {
         // direction nor its mode is taken yet
         let allowed = |c: usize, r: usize| {
             let n = self.modes[r];
-            n == 0 || n > stable_upto || sign(negative[c]) != Eigen::Unstable
+            let free = if n == 0 {
+                !size_stable
+            } else {
+                stable_upto.is_none_or(|k| n > k)
+            };
+            free || sign(negative[c]) != Eigen::Unstable
         };
         let mut pairs: Vec<(f64, usize, usize)> = (0..negative.len())
             .flat_map(|c| (0..self.modes.len()).map(move |r| (c, r)))
@@ -195,6 +245,27 @@ impl NormalMotion {
             if label[c].is_none() && !taken[r] {
                 label[c] = Some(self.modes[r]);
                 taken[r] = true;
+            }
+        }
+        // the ladder's first unstable rung names a direction
+        if let Some(k) = unstable_at {
+            let unstable: Vec<usize> = (0..negative.len())
+                .filter(|&c| sign(negative[c]) == Eigen::Unstable)
+                .collect();
+            let within = |c: usize| {
+                (0..self.modes.len())
+                    .filter(|&r| self.modes[r] <= k && allowed(c, r))
+                    .map(|r| amp[(r, c)])
+                    .fold(0.0, f64::max)
+            };
+            let named_within = unstable.iter().any(|&c| label[c].is_some_and(|n| n <= k));
+            if !named_within {
+                if let Some(&c) = unstable
+                    .iter()
+                    .max_by(|&&a, &&b| within(a).total_cmp(&within(b)))
+                {
+                    label[c] = Some(k);
+                }
             }
         }
         let (mut unstable, mut neutral): (Vec<(usize, NamedDirection)>, Vec<_>) = negative
@@ -229,30 +300,44 @@ impl NormalMotion {
         Some((strip(unstable), strip(neutral)))
     }
 
-    /// The largest even mode n such that the second variation `h_cc` in
-    /// the contour unknowns (displacement control), restricted to the
-    /// motions made of the modes 0, 2, …, n, has no clearly negative
-    /// direction (0 where already the size alone has one, or none is
-    /// tried). Those motions are the coefficient directions that fit
-    /// cos 2πjσ/P in ∮ · ds (least squares in the metric M, within
-    /// `restriction`), tried while the fit misses by less than
-    /// [`LONG_WAVE_FIT`]. This is the limit of a coating that makes every
-    /// shorter undulation infinitely stiff: a second route to which modes
-    /// a state is unstable to, independent of how its directions mix.
-    pub(crate) fn stable_upto(
+    /// The ladder's verdict on the names of `hessian`'s unstable
+    /// directions (the contour unknowns first, then any further ones, such
+    /// as δ̄ under load control, kept in every rung): its last stable rung,
+    /// the largest even mode n such that the variation restricted to the
+    /// motions made of the modes 0, 2, …, n has no clearly negative
+    /// direction (none where already the size alone has one, or none is
+    /// tried), its first unstable rung from n = 2 on, and whether its
+    /// first rung, the size alone, is stable. Those motions
+    /// are the coefficient directions that fit cos 2πjσ/P in ∮ · ds (least
+    /// squares in the metric M, within `restriction`), tried while the fit
+    /// misses by less than [`LONG_WAVE_FIT`]. This is the limit of a
+    /// coating that makes every shorter undulation infinitely stiff: a
+    /// second route to which modes a state is unstable to, independent of
+    /// how its directions mix.
+    pub(crate) fn long_wave(
         &self,
-        h_cc: &DMatrix<f64>,
+        hessian: &DMatrix<f64>,
         restriction: Option<&DMatrix<f64>>,
-    ) -> usize {
-        let ladder = self.long_wave_ladder(h_cc, restriction);
-        ladder
-            .iter()
-            .take_while(|r| Eigen::of(r.least, r.scale) != Eigen::Unstable)
-            .last()
-            .map_or(0, |r| r.n)
+    ) -> LongWave {
+        let ladder = self.long_wave_ladder(hessian, restriction);
+        let unstable = |r: &Rung| Eigen::of(r.least, r.scale) == Eigen::Unstable;
+        LongWave {
+            size_stable: ladder
+                .first()
+                .is_some_and(|r| Eigen::of(r.least, r.scale) == Eigen::Stable),
+            stable_upto: ladder
+                .iter()
+                .take_while(|r| !unstable(r))
+                .last()
+                .map(|r| r.n),
+            unstable_at: ladder
+                .last()
+                .filter(|r| r.n >= 2 && unstable(r))
+                .map(|r| r.n),
+        }
     }
 
-    /// The rungs of [`NormalMotion::stable_upto`]: for n = 0, 2, 4, … the
+    /// The rungs of [`NormalMotion::long_wave`]: for n = 0, 2, 4, … the
     /// restricted variation's least eigenvalue and how far the fit of
     /// mode n misses, up to the first rung with a clearly negative
     /// eigenvalue or the last the fit and the metric allow.
@@ -262,6 +347,17 @@ impl NormalMotion {
         restriction: Option<&DMatrix<f64>>,
     ) -> Vec<Rung> {
         let m = self.metric.nrows();
+        // the further unknowns (δ̄ under load control), kept in every rung
+        // and weighted as a uniform motion of the contour (∮ 1 ds)
+        let extra = h_cc.nrows() - m;
+        let mut metric = DMatrix::zeros(m + extra, m + extra);
+        metric.view_mut((0, 0), (m, m)).copy_from(&self.metric);
+        for e in m..m + extra {
+            metric[(e, e)] = self.perimeter;
+        }
+        let further: Vec<DVector<f64>> = (m..m + extra)
+            .map(|e| DVector::from_fn(m + extra, |r, _| if r == e { 1.0 } else { 0.0 }))
+            .collect();
         let z = restriction
             .cloned()
             .unwrap_or_else(|| DMatrix::identity(m, m));
@@ -289,10 +385,15 @@ impl NormalMotion {
                 break;
             }
             cols.push(zy);
-            let u = DMatrix::from_columns(&cols);
+            let padded: Vec<DVector<f64>> = cols
+                .iter()
+                .map(|c| DVector::from_fn(m + extra, |r, _| if r < m { c[r] } else { 0.0 }))
+                .chain(further.iter().cloned())
+                .collect();
+            let u = DMatrix::from_columns(&padded);
             let Some(eig) = eigen_in_metric(
                 &(u.transpose() * h_cc * &u),
-                &(u.transpose() * &self.metric * &u),
+                &(u.transpose() * &metric * &u),
             ) else {
                 break;
             };

@@ -1449,9 +1449,12 @@ impl Conformal {
         let h = DMatrix::from_fn(n, n, |i, j| e.hess[i][j]);
         let hcc = h.view((0, 0), (k, k)).into_owned();
         let motion = self.normal_motion(c);
-        let stable_upto = motion.stable_upto(&hcc, None);
-        let (modes, neutral) = self.modes(&motion, &hcc, stable_upto)?;
-        let (modes_load, neutral_load) = self.modes(&motion, &h, stable_upto)?;
+        // no unstable direction named by a mode on whose long-wave motions
+        // the variation is stable (`contour_modes::LongWave`)
+        let by_displacement = motion.long_wave(&hcc, None);
+        let by_load = by_displacement.under_load(motion.long_wave(&h, None));
+        let (modes, neutral) = self.modes(&motion, &hcc, by_displacement)?;
+        let (modes_load, neutral_load) = self.modes(&motion, &h, by_load)?;
         let force = e.grad[k];
         let bc_defect = self.bc_defect(x, rho);
         let out = ConformalState {
@@ -1502,9 +1505,9 @@ impl Conformal {
         &self,
         motion: &NormalMotion,
         h: &DMatrix<f64>,
-        stable_upto: usize,
+        long_wave: crate::contour_modes::LongWave,
     ) -> Result<(Vec<u32>, Vec<u32>)> {
-        let (unstable, neutral) = motion.directions(h, None, stable_upto).ok_or_else(|| {
+        let (unstable, neutral) = motion.directions(h, None, long_wave).ok_or_else(|| {
             Error::NoState(format!(
                 "{}: the metric of the contour's normal motion is singular",
                 self.name()

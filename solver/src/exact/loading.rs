@@ -683,4 +683,67 @@ mod tests {
             );
         }
     }
+
+    /// docs/exact.md ("The loading path by descent", ρ = 0.3 from the
+    /// window): on the piece of the family connected to the circle between
+    /// the folds ā = 3.6004 and 3.6731 at ρ = 0.3, the state of ā = 3.6367
+    /// (F̄ = 13.64) is stable under load above the cutoff of h/L = 0.3 and
+    /// its shape resolved. Unloaded from there, the contact holds resolved
+    /// states stable above the cutoff down to F̄ = 11.61, past the fold in
+    /// ā (a fold in ā is no limit under load), and at the next state held,
+    /// F̄ = 10.61, its undulations from n = 14 on, shorter than the cutoff,
+    /// pass 1 % of ā: the path is not settled there, before F̄ = 10.
+    #[test]
+    fn at_rho_0_3_a_state_of_a_window_unloads_until_its_shape_is_unresolved() {
+        let cutoff = Cutoff::for_thinness(0.3).unwrap();
+        let t = Truncation::in_arclength(crate::exact::reach::MODES);
+        let st = crate::exact::reach::from_the_circle(3.62, t)
+            .unwrap()
+            .unwrap();
+        let Ok(crate::exact::rho_path::Followed::Reached(st)) =
+            crate::exact::rho_path::follow_with(&st, 0.3, Hold::Size(3.62), true)
+        else {
+            panic!("the size 3.62 reaches rho = 0.3");
+        };
+        let ex = Exact::new(0.3, st.truncation).unwrap();
+        let s0 = ex
+            .solve_at(Hold::Size(3.6367), &st.contour, st.delta_bar)
+            .unwrap()
+            .judged(cutoff);
+        assert_eq!(s0.stability.stable_load, Some(true));
+        assert!(s0.shape.is_some_and(|w| !w.unresolved));
+        assert!((s0.force_bar - 13.6418).abs() < 1e-4, "{}", s0.force_bar);
+        let path = loading_path(&s0, cutoff).unwrap();
+        let PathEnd::NotSettled(_) = &path.end else {
+            panic!("{:?}", path.end)
+        };
+        assert!(path.jumps.is_empty());
+        let (last, held) = path.states.split_last().unwrap();
+        assert!(
+            (last.force_bar - 10.6105).abs() < 1e-3,
+            "{}",
+            last.force_bar
+        );
+        let shape = last.clone().judged(cutoff).shape.unwrap();
+        assert!(shape.unresolved && shape.mode == Some(14), "{shape:?}");
+        let before = held.last().unwrap();
+        assert!(
+            (before.force_bar - 11.6105).abs() < 1e-3,
+            "{}",
+            before.force_bar
+        );
+        // on either side of the fold in ā at 3.6004, F̄ = 10.951 (the windows)
+        assert!(before.force_bar > 10.951 && last.force_bar < 10.951);
+        for st in held {
+            let judged = st.clone().judged(cutoff);
+            assert!(st.bc_error <= CONVERGED, "{}", st.bc_error);
+            assert_eq!(
+                judged.stability.stable_load,
+                Some(true),
+                "F = {}",
+                st.force_bar
+            );
+            assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
+        }
+    }
 }

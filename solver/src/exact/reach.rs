@@ -97,7 +97,10 @@ impl SizeReach {
 /// The state of size `a_bar` at ρ = [`TOP`] continued from the circle
 /// with truncation `t`, or why there is none, in words; an error only
 /// where the caller asked to stop (not a size's outcome).
-fn from_the_circle(a_bar: f64, t: Truncation) -> Result<std::result::Result<ExactState, String>> {
+pub(crate) fn from_the_circle(
+    a_bar: f64,
+    t: Truncation,
+) -> Result<std::result::Result<ExactState, String>> {
     match Exact::new(TOP, t)?.deferring_stability().from_circle(a_bar) {
         Ok(st) => Ok(Ok(st)),
         Err(e) => {

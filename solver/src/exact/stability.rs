@@ -20,12 +20,16 @@
 //! read from the spectrum of its normal displacement along the contour
 //! (`crate::contour_modes`): n = 0 the size (under load control also δ̄),
 //! n the radius perturbed by cos nθ, wavelength P/n along the contour (P
-//! the perimeter). No unstable direction is named by a mode on whose
-//! long-wave motions (the modes up to it) the variation restricted under
-//! displacement control is positive (`NormalMotion::stable_upto`, the
-//! second route): where the directions of a peanut-shaped contour mix
-//! neighbouring modes (ρ ≤ 0.07) the least unstable one had been called
-//! n = 4.
+//! the perimeter). The names are bounded by the second route, the
+//! variation of each control restricted to the long-wave motions (the
+//! modes 0, 2, …, n; under load with δ̄), `NormalMotion::long_wave`: no
+//! unstable direction is named by a mode, the size n = 0 among them, on
+//! whose long-wave motions the variation is positive, and one is named by
+//! the first mode whose motions added make it negative. Where the
+//! directions of a peanut-shaped contour mix neighbouring modes (ρ ≤ 0.07)
+//! the least unstable one had been called n = 4; on the pieces at ρ = 0.3
+//! a short direction had been called the size under load, and the
+//! longest unstable mode had been one rung shorter than the ladder's.
 //!
 //! At ρ = 1 the Hessian is diagonal in the modes with signs those of
 //! ā²/4 + 1/ā − n/ā (see `tests/exact.rs`): modes with n > ā³/4 + 1 are
@@ -42,7 +46,7 @@
 //!
 //! Owns: [`ExactStability`], [`UnstableMode`]. May use: `exact`, `error`, `cutoff`, `contour_modes` (the
 //! eigenproblem in the metric of the normal motion and the modes' names),
-//! nalgebra.
+//! nalgebra; in its tests `control` (a size held).
 
 use super::{Exact, ExactState};
 use crate::contour_modes::{NamedDirection, NormalMotion};
@@ -249,6 +253,35 @@ impl Exact {
             .unwrap_or(0)
     }
 
+    /// The long-wave ladders of `st` (a state of this problem's
+    /// truncation) under displacement and under load control
+    /// ([`NormalMotion::long_wave_ladder`]; under load δ̄ is kept in every
+    /// rung), and the contour's perimeter: the second route, by the
+    /// motions' modes rather than the directions' names.
+    #[cfg(test)]
+    pub(crate) fn long_wave_ladders(
+        &self,
+        st: &ExactState,
+    ) -> Result<(
+        Vec<crate::contour_modes::Rung>,
+        Vec<crate::contour_modes::Rung>,
+        f64,
+    )> {
+        let m = self.truncation.coefficients();
+        let u = self.unknowns(st);
+        let hess = self.bordered_hessian(&u).ok_or_else(|| {
+            Error::NoState("exact stability: singular boundary integral equation".into())
+        })?;
+        let restriction = self.gauge_restriction(&u);
+        let motion = self.normal_motion(&st.contour);
+        let h_cc = hess.view((0, 0), (m, m)).into_owned();
+        Ok((
+            motion.long_wave_ladder(&h_cc, restriction.as_ref()),
+            motion.long_wave_ladder(&hess, restriction.as_ref()),
+            motion.perimeter(),
+        ))
+    }
+
     /// The linear stability of `st` (a state of this problem's truncation).
     pub fn stability(&self, st: &ExactState) -> Result<ExactStability> {
         let m = self.truncation.coefficients();
@@ -264,28 +297,30 @@ impl Exact {
         // the long-wave motions on which the state is stable: no unstable
         // direction is named by their modes
         let h_cc = hess.view((0, 0), (m, m)).into_owned();
-        let stable_upto = motion.stable_upto(&h_cc, restriction.as_ref());
-        let unstable = |a: DMatrix<f64>| -> Option<(Vec<UnstableMode>, Vec<UnstableMode>)> {
-            let (out, neutral) = motion.directions(&a, restriction.as_ref(), stable_upto)?;
-            let named = |v: Vec<NamedDirection>| {
-                v.into_iter()
-                    .map(|d| UnstableMode {
-                        n: d.n,
-                        wavelength: d.wavelength,
-                        eigenvalue: d.eigenvalue,
-                        resolved: true,
-                    })
-                    .collect()
+        let by_displacement = motion.long_wave(&h_cc, restriction.as_ref());
+        let by_load = by_displacement.under_load(motion.long_wave(&hess, restriction.as_ref()));
+        let unstable =
+            |a: DMatrix<f64>, long_wave| -> Option<(Vec<UnstableMode>, Vec<UnstableMode>)> {
+                let (out, neutral) = motion.directions(&a, restriction.as_ref(), long_wave)?;
+                let named = |v: Vec<NamedDirection>| {
+                    v.into_iter()
+                        .map(|d| UnstableMode {
+                            n: d.n,
+                            wavelength: d.wavelength,
+                            eigenvalue: d.eigenvalue,
+                            resolved: true,
+                        })
+                        .collect()
+                };
+                Some((named(out), named(neutral)))
             };
-            Some((named(out), named(neutral)))
-        };
         // the shortest mode the series holds: e^{imθ} is the radius's cos (m − 1)θ
         let n_max = self.shortest_mode().max(1) as f64;
         // the two controls' eigenproblems, on both cores
         let (by_displacement, by_load) = super::both(
             n >= super::TWO_CORES_FROM_POINTS,
-            || unstable(h_cc.clone()),
-            || unstable(hess.clone()),
+            || unstable(h_cc.clone(), by_displacement),
+            || unstable(hess.clone(), by_load),
         );
         let singular = || {
             Error::NoState(
@@ -364,7 +399,70 @@ mod tests {
                     rung.least
                 );
             }
-            assert_eq!(motion.stable_upto(&h_cc, restriction.as_ref()), 4);
+            assert_eq!(
+                motion.long_wave(&h_cc, restriction.as_ref()).stable_upto,
+                Some(4)
+            );
         }
+    }
+
+    /// The ladder names the longest unstable direction. At ρ = 0.3 on the
+    /// piece between the folds ā = 3.6004 and 3.6731 (docs/exact.md, "The
+    /// windows settled"), under load control the size with δ̄ alone is
+    /// stable (the rung n = 0 positive) and the first unstable rung is
+    /// n = 12. Named by its largest relative amplitude alone, one unstable
+    /// direction there is called the size, n = 0, at some of the three
+    /// states and the longest unstable mode is 16 or 12 by turns; named
+    /// within the ladder's bounds every state's longest is 12, none is
+    /// called 0, and the critical thinness is mode 12's, P/(2π·12).
+    #[test]
+    fn on_a_window_at_rho_0_3_the_ladder_names_the_longest_unstable_mode() {
+        use crate::control::Hold;
+        use crate::exact::reach;
+        let t = super::super::Truncation::in_arclength(reach::MODES);
+        let st = reach::from_the_circle(3.62, t).unwrap().unwrap();
+        let Ok(super::super::rho_path::Followed::Reached(st)) =
+            super::super::rho_path::follow_with(&st, 0.3, Hold::Size(3.62), true)
+        else {
+            panic!("the size 3.62 reaches rho = 0.3");
+        };
+        let ex = Exact::new(0.3, st.truncation).unwrap();
+        let mut by_amplitude_alone = Vec::new();
+        for a in [3.6185, 3.6367, 3.6549] {
+            let here = ex
+                .solve_at(Hold::Size(a), &st.contour, st.delta_bar)
+                .unwrap();
+            assert!(here.bc_error <= super::super::CONVERGED);
+            let (_, load_ladder, perimeter) = ex.long_wave_ladders(&here).unwrap();
+            let rung = |n: usize| load_ladder.iter().find(|r| r.n == n).unwrap().least;
+            assert!(
+                rung(0) > 1.0 && rung(10) > 0.5 && rung(12) < -0.2,
+                "{load_ladder:?}"
+            );
+            let load = &here.stability.load;
+            assert!(load.iter().all(|m| m.n >= 12), "a = {a}: {load:?}");
+            assert_eq!(load.iter().map(|m| m.n).min(), Some(12), "a = {a}");
+            let h = here.stability.critical_thinness_load.unwrap();
+            let mode_12 = perimeter / 12.0 / (2.0 * std::f64::consts::PI);
+            assert!(
+                (h - mode_12).abs() < 1e-12,
+                "a = {a}: {h} against {mode_12}"
+            );
+            // the same Hessian's directions named without the ladder
+            let u = ex.unknowns(&here);
+            let hess = ex.bordered_hessian(&u).unwrap();
+            let restriction = ex.gauge_restriction(&u);
+            let motion = ex.normal_motion(&here.contour);
+            let unbounded = crate::contour_modes::LongWave {
+                size_stable: false,
+                stable_upto: None,
+                unstable_at: None,
+            };
+            let (named, _) = motion
+                .directions(&hess, restriction.as_ref(), unbounded)
+                .unwrap();
+            by_amplitude_alone.push(named.iter().map(|d| d.n).min().unwrap());
+        }
+        assert!(by_amplitude_alone.contains(&0), "{by_amplitude_alone:?}");
     }
 }
