@@ -13,7 +13,7 @@
 //! Owns: [`SizeReach`], [`Reached`], [`of_size`], [`reach`], [`from_json_lines`],
 //! [`windows`], [`valleys`], [`markdown`], [`Window`], [`WindowEnd`],
 //! [`settle`], [`windows_markdown`], [`windows_from_json_lines`]. May use: `exact` (the family,
-//! `rho_path`), `control`, `error`, `accuracy` (the ρ of its table),
+//! `rho_path`, `stability`, `undulations`), `control`, `cutoff`, `error`, `accuracy` (the ρ of its table),
 //! `newton` (the stop flag, carried to rayon's threads), rayon.
 
 // computed by the command line, read by the figures
@@ -378,6 +378,11 @@ pub(crate) struct Window {
     pub force_bar: Option<f64>,
     /// The boundary error of that state.
     pub bc_error: Option<f64>,
+    /// For which coatings (2) gives that state as a contact it resolves
+    /// (stable above the cutoff under each control, its shape resolved);
+    /// absent where the state or its stability was not found.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coatings: Option<super::undulations::Coatings>,
     /// Towards smaller ā.
     pub lower: WindowEnd,
     /// Towards larger ā.
@@ -414,6 +419,7 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
         a_bar,
         force_bar: None,
         bc_error: None,
+        coatings: None,
         lower: WindowEnd::Failed { why: why.clone() },
         upper: WindowEnd::Failed { why },
     };
@@ -489,12 +495,25 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
             e => Ok(e),
         }
     };
+    // the start's stability and shape (ranges of h/L, so any cutoff)
+    let coatings = Exact::on(state.gap, rho, state.truncation)?
+        .stability(&state)
+        .ok()
+        .and_then(|stability| {
+            ExactState {
+                stability,
+                ..(*state).clone()
+            }
+            .judged(crate::cutoff::Cutoff::default())
+            .coatings
+        });
     Ok(Window {
         rho,
         grid,
         a_bar,
         force_bar: Some(state.force_bar),
         bc_error: Some(state.bc_error),
+        coatings,
         lower: settled(-1.0)?,
         upper: settled(1.0)?,
     })
@@ -532,12 +551,29 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
             window[0], window[1]
         ),
     };
+    // the coatings' range under one control: "0.250 on", "0.248 to 0.744", "none"
+    let range = |t: &Option<super::undulations::Thinnesses>| match t {
+        None => "none".to_string(),
+        Some(t) => match t.to {
+            None => format!("{:.3} on", t.from),
+            Some(to) => format!("{:.3} to {to:.3}", t.from),
+        },
+    };
+    let coatings = |w: &Window| match w.coatings {
+        None => "not computed".to_string(),
+        Some(c) if c.load == c.displacement => range(&c.load),
+        Some(c) => format!(
+            "{} (load); {} (displacement)",
+            range(&c.load),
+            range(&c.displacement)
+        ),
+    };
     let mut s = String::from(
-        "| ρ | grid window | start: ā, F̄ (boundary error) | towards smaller ā | towards larger ā |\n|---|---|---|---|---|\n",
+        "| ρ | grid window | start: ā, F̄ (boundary error) | towards smaller ā | towards larger ā | start a resolved stable contact for h/L |\n|---|---|---|---|---|---|\n",
     );
     for w in windows {
         s += &format!(
-            "| {} | {:.2} – {:.2} | {:.2}, {} | {} | {} |\n",
+            "| {} | {:.2} – {:.2} | {:.2}, {} | {} | {} | {} |\n",
             w.rho,
             w.grid[0],
             w.grid[1],
@@ -547,7 +583,8 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
                 _ => "no state".to_string(),
             },
             end(&w.lower),
-            end(&w.upper)
+            end(&w.upper),
+            coatings(w)
         );
     }
     s

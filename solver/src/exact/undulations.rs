@@ -39,7 +39,7 @@ const POINTS: usize = 4096;
 
 /// A range of the thinness h/L, from `from` (0: no lower bound) up to
 /// `to` (not included; null: no upper bound).
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub(crate) struct Thinnesses {
     /// The smallest h/L of the range: the critical thinness of the
@@ -55,7 +55,7 @@ pub(crate) struct Thinnesses {
 /// control, every unstable contour mode shorter than the cutoff (h/L at
 /// least that control's critical thinness). Null under a control where no
 /// thinness does both (or the size itself is unstable there).
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub(crate) struct Coatings {
     /// Under load control.
