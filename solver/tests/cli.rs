@@ -339,8 +339,9 @@ fn a_band_map_whose_screen_is_empty_points_to_the_reach() {
     );
 }
 
-/// `exact reach --windows-at` checks its ρ before it reads or computes
-/// anything, names a file it cannot read, and says so where the map has no
+/// `exact reach --windows-at` checks its ρ and the thinness of
+/// `--unloading-at` before it reads or computes anything, names a file it
+/// cannot read, and says so where the map has no
 /// window at that ρ (the committed map at ρ = 0.1, no computation).
 #[test]
 fn the_reach_windows_check_their_input_and_say_when_there_are_none() {
@@ -362,6 +363,22 @@ fn the_reach_windows_check_their_input_and_say_when_there_are_none() {
         "no/such/file.jsonl",
     ]);
     assert!(!ok && err.contains("no/such/file.jsonl"), "{err}");
+    for h in ["0", "-0.3", "nan"] {
+        let (ok, _, err) = thinjkr(&[
+            "exact",
+            "reach",
+            "--windows-at",
+            "0.3",
+            "--unloading-at",
+            h,
+            "--map",
+            "no/such/file.jsonl",
+        ]);
+        assert!(
+            !ok && err.contains("unloading-at") && err.contains("(0, ∞)"),
+            "{h}: {err}"
+        );
+    }
     let (ok, out, err) = thinjkr(&["exact", "reach", "--windows-at", "0.1", "--map", map]);
     assert!(ok, "{err}");
     assert!(

@@ -179,6 +179,9 @@ pub(crate) enum ExactCommand {
         /// Settle the windows at this ρ in (0.02, 0.98): from the state at ρ of each window's size with the smallest reach, the family at ρ traced in ā both ways to its folds (band edges) or to where 128 modes stop resolving it.
         #[arg(long, allow_hyphen_values = true)]
         windows_at: Option<f64>,
+        /// With --windows-at: unload each window's start with the short-wave cutoff of this thinness h/L, where the start is a stable contact (2) resolves at that h/L (the loading path of `exact pull-off --unloading`; docs/exact.md, "The loading path by descent").
+        #[arg(long, requires = "windows_at", allow_hyphen_values = true)]
+        unloading_at: Option<f64>,
         /// With --windows-at: read the reach from this file of `exact reach --json` lines (as docs/data/exact_reach.jsonl) instead of computing it over --from, --to, --step.
         #[arg(long, requires = "windows_at")]
         map: Option<std::path::PathBuf>,
@@ -281,9 +284,10 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             to,
             step,
             windows_at: Some(rho),
+            unloading_at,
             map,
             json,
-        } => settled_windows(rho, map.as_deref(), from, to, step, json),
+        } => settled_windows(rho, unloading_at, map.as_deref(), from, to, step, json),
         ExactCommand::Reach {
             from,
             to,
@@ -458,6 +462,7 @@ const MAX_REACH_MAP: u64 = 4 << 20;
 /// `thinjkr exact reach --windows-at`.
 pub(crate) fn settled_windows(
     rho: f64,
+    unloading_at: Option<f64>,
     map: Option<&std::path::Path>,
     from: f64,
     to: f64,
@@ -471,11 +476,18 @@ pub(crate) fn settled_windows(
         rho.is_finite() && rho > reach::FLOOR && rho < reach::TOP,
         "(0.02, 0.98)",
     )?;
+    let unloading = match unloading_at {
+        Some(h) => {
+            crate::error::check_range("unloading-at", h, h > 0.0, "(0, ∞)")?;
+            Some(crate::cutoff::Cutoff::for_thinness(h)?)
+        }
+        None => None,
+    };
     let map = match map {
         Some(p) => reach::from_json_lines(&super::files::input(p, MAX_REACH_MAP)?)?,
         None => reach::reach(from, to, step)?,
     };
-    let windows = reach::settle(&map, rho)?;
+    let windows = reach::settle(&map, rho, unloading)?;
     if json {
         for window in windows {
             outln!("{}", Document::Window { window }.to_json());

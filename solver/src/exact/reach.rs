@@ -383,15 +383,48 @@ pub(crate) struct Window {
     /// absent where the state or its stability was not found.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coatings: Option<super::undulations::Coatings>,
+    /// The loading path from that state (`--unloading-at`), where it is a
+    /// stable contact (2) resolves at that thinness.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unloading: Option<WindowPath>,
     /// Towards smaller ā.
     pub lower: WindowEnd,
     /// Towards larger ā.
     pub upper: WindowEnd,
 }
 
+/// The loading path (`exact::loading`) from a window's start, unloaded
+/// under load control with the cutoff of one thinness.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct WindowPath {
+    /// The thinness h/L of the cutoff.
+    pub thinness: f64,
+    /// How many states it held, the start first.
+    pub states: usize,
+    /// How many jumps it made.
+    pub jumps: usize,
+    /// F̄ of the last state held whose shape the cutoff resolves.
+    pub resolved_force_bar: f64,
+    /// F̄ and ā of the last state held.
+    pub last_force_bar: f64,
+    /// ā of the last state held.
+    pub last_a_bar: f64,
+    /// Where the last state held has undulations shorter than the cutoff
+    /// above 1 % of ā: the largest such mode and their share of ā.
+    pub unresolved: Option<(usize, f64)>,
+    /// How the path ends: it comes off (the path's pull-off), loses its
+    /// state, or is not settled, in words.
+    pub end: String,
+}
+
 /// The windows of `map` at `rho`, each settled by the family at `rho`
 /// ([`Window`]; [`MODES`] modes of each sign), in parallel.
-pub(crate) fn settle(map: &[SizeReach], rho: f64) -> Result<Vec<Window>> {
+pub(crate) fn settle(
+    map: &[SizeReach],
+    rho: f64,
+    unloading: Option<crate::cutoff::Cutoff>,
+) -> Result<Vec<Window>> {
     crate::error::check_range(
         "rho",
         rho,
@@ -401,11 +434,16 @@ pub(crate) fn settle(map: &[SizeReach], rho: f64) -> Result<Vec<Window>> {
     let stop = crate::newton::stop_flag();
     windows(map, rho)
         .par_iter()
-        .map(|&grid| crate::newton::carried(stop.clone(), || settle_one(map, rho, grid)))
+        .map(|&grid| crate::newton::carried(stop.clone(), || settle_one(map, rho, grid, unloading)))
         .collect()
 }
 
-fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
+fn settle_one(
+    map: &[SizeReach],
+    rho: f64,
+    grid: [f64; 2],
+    unloading: Option<crate::cutoff::Cutoff>,
+) -> Result<Window> {
     // the window's size with the smallest reach: the farthest from a band
     let a_bar = map
         .iter()
@@ -420,6 +458,7 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
         force_bar: None,
         bc_error: None,
         coatings: None,
+        unloading: None,
         lower: WindowEnd::Failed { why: why.clone() },
         upper: WindowEnd::Failed { why },
     };
@@ -496,17 +535,26 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
         }
     };
     // the start's stability and shape (ranges of h/L, so any cutoff)
-    let coatings = Exact::on(state.gap, rho, state.truncation)?
+    let judged = Exact::on(state.gap, rho, state.truncation)?
         .stability(&state)
         .ok()
-        .and_then(|stability| {
+        .map(|stability| {
             ExactState {
                 stability,
                 ..(*state).clone()
             }
             .judged(crate::cutoff::Cutoff::default())
-            .coatings
         });
+    let coatings = judged.as_ref().and_then(|st| st.coatings);
+    // unloaded from there where it is a stable contact (2) resolves
+    let unloading = match (unloading, &judged, coatings.and_then(|c| c.load)) {
+        (Some(cutoff), Some(start), Some(range))
+            if cutoff.thinness >= range.from && range.to.is_none_or(|to| cutoff.thinness < to) =>
+        {
+            Some(unloaded(start, cutoff)?)
+        }
+        _ => None,
+    };
     Ok(Window {
         rho,
         grid,
@@ -514,8 +562,47 @@ fn settle_one(map: &[SizeReach], rho: f64, grid: [f64; 2]) -> Result<Window> {
         force_bar: Some(state.force_bar),
         bc_error: Some(state.bc_error),
         coatings,
+        unloading,
         lower: settled(-1.0)?,
         upper: settled(1.0)?,
+    })
+}
+
+/// The loading path from `start` (its stability computed) with `cutoff`.
+fn unloaded(start: &ExactState, cutoff: crate::cutoff::Cutoff) -> Result<WindowPath> {
+    use super::loading::{loading_path, PathEnd};
+    let path = loading_path(start, cutoff)?;
+    let shape = |st: &ExactState| st.clone().judged(cutoff).shape;
+    let last = path.states.last().unwrap_or(start);
+    let unresolved = shape(last)
+        .filter(|w| w.unresolved)
+        .map(|w| (w.mode.unwrap_or(0), w.amplitude));
+    let resolved_force_bar = path
+        .states
+        .iter()
+        .rev()
+        .find(|st| shape(st).is_some_and(|w| !w.unresolved))
+        .map_or(start.force_bar, |st| st.force_bar);
+    let end = match &path.end {
+        PathEnd::PullOff { state } => format!(
+            "comes off at F = {:.6}, a = {:.6}",
+            state.force_bar, state.a_bar
+        ),
+        PathEnd::Lost { state, why } => format!(
+            "loses its state at F = {:.6}, a = {:.6}; {why}",
+            state.force_bar, state.a_bar
+        ),
+        PathEnd::NotSettled(why) => format!("not settled: {why}"),
+    };
+    Ok(WindowPath {
+        thinness: cutoff.thinness,
+        states: path.states.len(),
+        jumps: path.jumps.len(),
+        resolved_force_bar,
+        last_force_bar: last.force_bar,
+        last_a_bar: last.a_bar,
+        unresolved,
+        end,
     })
 }
 
@@ -568,12 +655,41 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
             range(&c.displacement)
         ),
     };
-    let mut s = String::from(
-        "| ρ | grid window | start: ā, F̄ (boundary error) | towards smaller ā | towards larger ā | start a resolved stable contact for h/L |\n|---|---|---|---|---|---|\n",
-    );
+    // the loading path from the start, where any was followed (at a ρ
+    // where none was, none was asked for)
+    let thinness = windows
+        .iter()
+        .find_map(|w| w.unloading.as_ref().map(|p| p.thinness));
+    let asked = |rho: f64| {
+        windows
+            .iter()
+            .any(|w| w.rho == rho && w.unloading.is_some())
+    };
+    let path = |w: &Window| match &w.unloading {
+        None if !asked(w.rho) => "not computed".to_string(),
+        None => "not started (not a resolved stable contact at this h/L)".to_string(),
+        Some(p) => match p.unresolved {
+            Some((n, share)) => format!(
+                "holds to F̄ = {}; at F̄ = {} (ā = {:.4}) n = {n} reaches {:.2} % of ā",
+                force(p.resolved_force_bar),
+                force(p.last_force_bar),
+                p.last_a_bar,
+                100.0 * share
+            ),
+            None => format!("to F̄ = {}: {}", force(p.last_force_bar), p.end),
+        },
+    };
+    let mut s = match thinness {
+        None => String::from(
+            "| ρ | grid window | start: ā, F̄ (boundary error) | towards smaller ā | towards larger ā | start a resolved stable contact for h/L |\n|---|---|---|---|---|---|\n",
+        ),
+        Some(h) => format!(
+            "| ρ | grid window | start: ā, F̄ (boundary error) | towards smaller ā | towards larger ā | start a resolved stable contact for h/L | unloaded from the start, h/L = {h} |\n|---|---|---|---|---|---|---|\n"
+        ),
+    };
     for w in windows {
         s += &format!(
-            "| {} | {:.2} – {:.2} | {:.2}, {} | {} | {} | {} |\n",
+            "| {} | {:.2} – {:.2} | {:.2}, {} | {} | {} | {}{} |\n",
             w.rho,
             w.grid[0],
             w.grid[1],
@@ -584,7 +700,12 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
             },
             end(&w.lower),
             end(&w.upper),
-            coatings(w)
+            coatings(w),
+            if thinness.is_some() {
+                format!(" | {}", path(w))
+            } else {
+                String::new()
+            }
         );
     }
     s
@@ -753,8 +874,20 @@ mod tests {
             .iter()
             .find(|w| w.rho == 0.3 && (w.grid[0] - 3.61).abs() < 1e-9)
             .expect("the committed window");
-        let is = settle_one(&map, 0.3, was.grid).unwrap();
+        let thin = crate::cutoff::Cutoff::for_thinness(0.3).unwrap();
+        let is = settle_one(&map, 0.3, was.grid, Some(thin)).unwrap();
         assert_eq!(is.a_bar, was.a_bar);
+        // the start's coatings and its loading path at h/L = 0.3, as committed
+        let (c, c0) = (
+            is.coatings.unwrap().load.unwrap(),
+            was.coatings.unwrap().load.unwrap(),
+        );
+        assert!((c.from - c0.from).abs() < 1e-9, "{c:?} against {c0:?}");
+        let (p, p0) = (is.unloading.unwrap(), was.unloading.clone().unwrap());
+        assert!((p.last_force_bar - p0.last_force_bar).abs() < 1e-6, "{p:?}");
+        assert!((p.resolved_force_bar - p0.resolved_force_bar).abs() < 1e-6);
+        assert_eq!(p.unresolved.map(|u| u.0), Some(14));
+        assert_eq!(p0.unresolved.map(|u| u.0), Some(14));
         let fold = |e: &WindowEnd| match e {
             WindowEnd::Fold {
                 a_bar,
