@@ -12,7 +12,7 @@
 //!
 //! Owns: [`SizeReach`], [`Reached`], [`of_size`], [`reach`], [`from_json_lines`],
 //! [`windows`], [`valleys`], [`markdown`], [`Window`], [`WindowEnd`],
-//! [`settle`], [`windows_markdown`], [`windows_from_json_lines`]. May use: `exact` (the family,
+//! [`WindowPath`], [`settle`], [`windows_markdown`], [`windows_from_json_lines`]. May use: `exact` (the family,
 //! `rho_path`, `stability`, `undulations`), `control`, `cutoff`, `error`, `accuracy` (the ρ of its table),
 //! `newton` (the stop flag, carried to rayon's threads), rayon.
 
@@ -406,7 +406,7 @@ pub(crate) struct WindowPath {
     pub jumps: usize,
     /// F̄ of the last state held whose shape the cutoff resolves.
     pub resolved_force_bar: f64,
-    /// F̄ and ā of the last state held.
+    /// F̄ of the last state held.
     pub last_force_bar: f64,
     /// ā of the last state held.
     pub last_a_bar: f64,
