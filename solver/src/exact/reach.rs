@@ -576,7 +576,7 @@ fn unloaded(start: &ExactState, cutoff: crate::cutoff::Cutoff) -> Result<WindowP
     let last = path.states.last().unwrap_or(start);
     let unresolved = shape(last)
         .filter(|w| w.unresolved)
-        .map(|w| (w.mode.unwrap_or(0), w.amplitude));
+        .and_then(|w| w.mode.map(|n| (n, w.amplitude)));
     let resolved_force_bar = path
         .states
         .iter()
