@@ -150,6 +150,13 @@ pub enum Passed {
         /// Whether every traced state is stable under load control above
         /// the cutoff (h/L above the critical thinness and the size stable).
         stable_above_cutoff: Option<bool>,
+        /// The contour modes of the bifurcation points the trace meets
+        /// before its minimum, in order: at ρ < 1 the family has none (the
+        /// circle's bifurcations are imperfect), so each is a band the
+        /// trace steps across onto the piece beyond; at ρ = 1 the circle's
+        /// neutral points.
+        #[serde(default)]
+        bands_crossed: Vec<usize>,
         /// Why the path is not settled, in words.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         why_not_settled: Option<String>,
@@ -169,6 +176,16 @@ pub enum Passed {
         jump_forces: Vec<f64>,
         /// ā of the state each jump landed on.
         jump_landing_a_bar: Vec<f64>,
+        /// The contour modes shorter than the cutoff to which the path's
+        /// states turn unstable on the way and stay so (the path does not
+        /// count them): below ρ = 1, on a near-elliptic piece, each is a
+        /// band the path steps over (at ρ = 1 a neutral point of the
+        /// circle); past a fold in ā, the fold's mode.
+        #[serde(default)]
+        unresolved_turned_unstable: Vec<usize>,
+        /// F̄ of the first state from which each stays unstable.
+        #[serde(default)]
+        unresolved_turned_unstable_at: Vec<f64>,
         /// F̄ where the path first loses the state it holds (a fold in F̄
         /// or a resolved mode turning unstable); none where it is not
         /// settled before.

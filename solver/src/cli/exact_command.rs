@@ -793,6 +793,7 @@ fn unloading_words(p: &Passed) -> String {
         critical_mode,
         cutoff_thinness,
         stable_above_cutoff,
+        bands_crossed,
         why_not_settled,
     } = p
     else {
@@ -823,7 +824,16 @@ fn unloading_words(p: &Passed) -> String {
         (_, _, Some(true)) => "; every state on the way is stable under load control".into(),
         _ => "; the size is unstable under load control on the way".into(),
     };
-    format!("{first}{stability}")
+    let bands = if bands_crossed.is_empty() {
+        String::new()
+    } else {
+        let list: Vec<String> = bands_crossed.iter().map(|n| n.to_string()).collect();
+        format!(
+            "; on the way the trace steps across the bands of modes n = {} (below rho = 1 the family has no bifurcation point there: each step lands on the piece beyond its band; at rho = 1 they are the circle's neutral points)",
+            list.join(", ")
+        )
+    };
+    format!("{first}{bands}{stability}")
 }
 
 /// The loading path by descent in words.
@@ -834,6 +844,8 @@ fn loading_words(p: &Passed) -> String {
         states_held,
         jump_forces,
         jump_landing_a_bar,
+        unresolved_turned_unstable,
+        unresolved_turned_unstable_at,
         first_lost_force,
         first_lost_a_bar,
         reaches,
@@ -843,6 +855,7 @@ fn loading_words(p: &Passed) -> String {
     else {
         return String::new();
     };
+    let bands = bands_words(unresolved_turned_unstable, unresolved_turned_unstable_at);
     let why = why_not_settled.as_deref().unwrap_or("no reason given");
     let head = format!(
         "the loading path by descent (modes at least 2 pi h long move, h/L = {}; docs/exact.md, \"The loading path by descent\"):",
@@ -850,7 +863,7 @@ fn loading_words(p: &Passed) -> String {
     );
     let (Some(f), Some(a), Some(reaches)) = (first_lost_force, first_lost_a_bar, reaches) else {
         return format!(
-            "{head} from F = {from_force} not settled after {states_held} states: {why}"
+            "{head} from F = {from_force}{bands} not settled after {states_held} states: {why}"
         );
     };
     let jumps = match jump_forces.len() {
@@ -862,7 +875,7 @@ fn loading_words(p: &Passed) -> String {
         ),
     };
     let lost = format!(
-        "from F = {from_force} it holds its state down to F = {}, a = {}{jumps} ({})",
+        "from F = {from_force}{bands} it holds its state down to F = {}, a = {}{jumps} ({})",
         crate::error::short(*f),
         crate::error::short(*a),
         if *reaches {
@@ -875,6 +888,23 @@ fn loading_words(p: &Passed) -> String {
         Some(true) => format!("{head} {lost}, and the contact comes off there"),
         _ => format!("{head} {lost}; where the contact goes from there is not settled: {why}"),
     }
+}
+
+/// The modes shorter than the cutoff a path's states turn unstable to on
+/// the way, in words (empty where none).
+fn bands_words(modes: &[usize], at: &[f64]) -> String {
+    if modes.is_empty() {
+        return String::new();
+    }
+    let list: Vec<String> = modes
+        .iter()
+        .zip(at)
+        .map(|(n, f)| format!("n = {n} (from F = {})", crate::error::short(*f)))
+        .collect();
+    format!(
+        ", its states turning unstable on the way to modes shorter than the cutoff, which it does not count: {} (below rho = 1 on a near-elliptic piece each is that mode's band stepped over, past a fold in a the fold's mode),",
+        list.join(", ")
+    )
 }
 
 pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool) -> Result<()> {

@@ -404,6 +404,12 @@ pub(crate) struct WindowPath {
     pub states: usize,
     /// How many jumps it made.
     pub jumps: usize,
+    /// The modes shorter than the cutoff its states turned unstable to on
+    /// the way and stayed so (`LoadingPath::unresolved_turned_unstable`), in
+    /// order: below ρ = 1 a band stepped over on a near-elliptic piece, or
+    /// past a fold in ā the fold's mode.
+    #[serde(default)]
+    pub unresolved_turned_unstable: Vec<usize>,
     /// F̄ of the last state held whose shape the cutoff resolves.
     pub resolved_force_bar: f64,
     /// F̄ of the last state held.
@@ -598,6 +604,11 @@ fn unloaded(start: &ExactState, cutoff: crate::cutoff::Cutoff) -> Result<WindowP
         thinness: cutoff.thinness,
         states: path.states.len(),
         jumps: path.jumps.len(),
+        unresolved_turned_unstable: path
+            .unresolved_turned_unstable(cutoff)
+            .into_iter()
+            .map(|(_, n)| n)
+            .collect(),
         resolved_force_bar,
         last_force_bar: last.force_bar,
         last_a_bar: last.a_bar,
@@ -665,19 +676,34 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
             .iter()
             .any(|w| w.rho == rho && w.unloading.is_some())
     };
+    let passed = |p: &WindowPath| {
+        if p.unresolved_turned_unstable.is_empty() {
+            String::new()
+        } else {
+            let list: Vec<String> = p
+                .unresolved_turned_unstable
+                .iter()
+                .map(|n| n.to_string())
+                .collect();
+            format!("turns unstable to n = {} (unresolved); ", list.join(", "))
+        }
+    };
     let path = |w: &Window| match &w.unloading {
         None if !asked(w.rho) => "not computed".to_string(),
         None => "not started (not a resolved stable contact at this h/L)".to_string(),
-        Some(p) => match p.unresolved {
-            Some((n, share)) => format!(
-                "holds to F̄ = {}; at F̄ = {} (ā = {:.4}) n = {n} reaches {:.2} % of ā",
-                force(p.resolved_force_bar),
-                force(p.last_force_bar),
-                p.last_a_bar,
-                100.0 * share
-            ),
-            None => format!("to F̄ = {}: {}", force(p.last_force_bar), p.end),
-        },
+        Some(p) => {
+            passed(p)
+                + &match p.unresolved {
+                    Some((n, share)) => format!(
+                        "holds to F̄ = {}; at F̄ = {} (ā = {:.4}) n = {n} reaches {:.2} % of ā",
+                        force(p.resolved_force_bar),
+                        force(p.last_force_bar),
+                        p.last_a_bar,
+                        100.0 * share
+                    ),
+                    None => format!("to F̄ = {}: {}", force(p.last_force_bar), p.end),
+                }
+        }
     };
     let mut s = match thinness {
         None => String::from(

@@ -50,6 +50,7 @@ pub(crate) fn unloading(
             critical_mode: None,
             cutoff_thinness: cutoff.thinness,
             stable_above_cutoff: None,
+            bands_crossed: Vec::new(),
             why_not_settled: Some(why),
         },
     }
@@ -64,6 +65,11 @@ struct Path {
     /// Whether the size itself (n = 0) is unstable under load somewhere on
     /// the way (then the path is unstable at any thinness).
     size_unstable: bool,
+    /// The modes of the bifurcation points the trace meets before the
+    /// minimum: at ρ < 1 there are none on the family (the circle's are
+    /// imperfect), so each is a band the trace steps across, from one
+    /// piece onto the next (at ρ = 1 the circle's neutral points).
+    bands_crossed: Vec<usize>,
 }
 
 impl Path {
@@ -78,6 +84,7 @@ impl Path {
             critical_mode: (n > 0).then_some(n),
             cutoff_thinness: cutoff.thinness,
             stable_above_cutoff: Some(!self.size_unstable && cutoff.thinness > h),
+            bands_crossed: self.bands_crossed,
             why_not_settled: None,
         }
     }
@@ -124,11 +131,27 @@ fn path(pull_off: &ExactState, start: &Result<ExactState>) -> std::result::Resul
             let reaches = (minimum.force_bar - pull_off.force_bar).abs()
                 <= 1e-6 * pull_off.force_bar.abs()
                 && (minimum.a_bar - pull_off.a_bar).abs() <= 1e-3 * pull_off.a_bar;
+            let bands_crossed = branch
+                .events
+                .iter()
+                .take_while(|e| !matches!(e, super::branch::Event::ForceMinimum { .. }))
+                .filter_map(|e| match e {
+                    super::branch::Event::Bifurcation { between, mode } => {
+                        // one the trace met before this minimum
+                        let before = between
+                            .iter()
+                            .all(|a| (a - minimum.a_bar) * (start.a_bar - minimum.a_bar) >= 0.0);
+                        before.then_some(*mode).flatten()
+                    }
+                    _ => None,
+                })
+                .collect();
             return Ok(Path {
                 minimum,
                 reaches,
                 critical,
                 size_unstable,
+                bands_crossed,
             });
         }
         // a traced point past the minimum (the force rising along the
