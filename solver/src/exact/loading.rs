@@ -148,12 +148,11 @@ fn continues(ex: &Exact, held: &ExactState, st: &ExactState) -> bool {
         return false;
     };
     let along = ex.contour_of(&(u + du * (st.force_bar - held.force_bar)));
-    let points = |c: &super::Contour| -> Vec<nalgebra::Complex<f64>> {
-        (0..NEAR_POINTS)
-            .map(|i| c.point_at(2.0 * std::f64::consts::PI * i as f64 / NEAR_POINTS as f64))
-            .collect()
-    };
-    let (from, to, landed) = (points(&held.contour), points(&along), points(&st.contour));
+    let (from, to, landed) = (
+        contour_points(&held.contour),
+        contour_points(&along),
+        contour_points(&st.contour),
+    );
     let largest = |x: &[nalgebra::Complex<f64>], y: &[nalgebra::Complex<f64>]| {
         x.iter()
             .zip(y)
@@ -175,13 +174,15 @@ const SAME_LANDING: f64 = 1e-7;
 /// Whether every point of each contour lies within `tolerance` of the
 /// other ([`near`]).
 fn contours_near(a: &super::Contour, b: &super::Contour, tolerance: f64) -> bool {
-    let points = |c: &super::Contour| -> Vec<nalgebra::Complex<f64>> {
-        (0..NEAR_POINTS)
-            .map(|i| c.point_at(2.0 * std::f64::consts::PI * i as f64 / NEAR_POINTS as f64))
-            .collect()
-    };
-    let (pa, pb) = (points(a), points(b));
+    let (pa, pb) = (contour_points(a), contour_points(b));
     within_polygon(&pa, &pb, tolerance) && within_polygon(&pb, &pa, tolerance)
+}
+
+/// [`NEAR_POINTS`] points of a contour at equal steps of its parameter.
+fn contour_points(c: &super::Contour) -> Vec<nalgebra::Complex<f64>> {
+    (0..NEAR_POINTS)
+        .map(|i| c.point_at(2.0 * std::f64::consts::PI * i as f64 / NEAR_POINTS as f64))
+        .collect()
 }
 
 /// How many points of each contour [`near`] compares.
@@ -795,6 +796,33 @@ mod tests {
                 assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
             }
         }
+    }
+
+    /// At ρ = 0.5 the arm the path holds from F̄ = 10 passes the fold of
+    /// the cos 10θ band (its upper edge at F̄ = 8.79, docs/exact.md
+    /// "Bands") and turns ten-lobed on its returning stretch: with
+    /// h/L = 0.5 those lobes (1.86 long) are shorter than the cutoff
+    /// (3.14), and the path ends where they reach 1 % of ā, before the
+    /// force at which its states had been lost when the lobes were
+    /// followed (F̄ ≈ 7.57, 5.7 % off the ellipse).
+    #[test]
+    fn at_rho_0_5_the_path_ends_where_its_lobes_are_shorter_than_the_cutoff() {
+        let cutoff = Cutoff::for_thinness(0.5).unwrap();
+        let path = loading_path(&start(0.5).unwrap(), cutoff).unwrap();
+        let PathEnd::NotSettled(why) = &path.end else {
+            panic!("{:?}", path.end)
+        };
+        assert!(
+            why.contains("undulations shorter than the cutoff (the largest n = 10,"),
+            "{why}"
+        );
+        let last = path.states.last().unwrap();
+        assert!(
+            last.force_bar < 8.79 && last.force_bar > 7.57,
+            "{}",
+            last.force_bar
+        );
+        assert!(path.jumps.is_empty());
     }
 
     /// docs/exact.md ("The loading path by descent", ρ = 0.3 from the
