@@ -176,6 +176,24 @@ pub enum Passed {
         jump_forces: Vec<f64>,
         /// ā of the state each jump landed on.
         jump_landing_a_bar: Vec<f64>,
+        /// The modes of the bands the path passed (docs/exact.md, "Bands
+        /// of unresolved modes"): where the arm it holds turns into lobes
+        /// of a mode shorter than the cutoff (above 1 % of ā), the contact
+        /// goes on from the piece beyond the band, found at smaller sizes
+        /// from the contour with those undulations taken off.
+        #[serde(default)]
+        bands_passed: Vec<usize>,
+        /// F̄ of the state of (2) at which each band's lobes pass 1 % of ā.
+        #[serde(default)]
+        bands_passed_unresolved_at: Vec<f64>,
+        /// F̄ of the state beyond each band where the path goes on: where
+        /// that piece's states of a shape the cutoff resolves begin, below
+        /// the force at which the lobes passed 1 % of ā.
+        #[serde(default)]
+        bands_passed_to_force: Vec<f64>,
+        /// ā of that state.
+        #[serde(default)]
+        bands_passed_to_a_bar: Vec<f64>,
         /// The contour modes shorter than the cutoff to which the path's
         /// states turn unstable on the way and stay so (the path does not
         /// count them): below ρ = 1, on a near-elliptic piece, each is a

@@ -844,6 +844,10 @@ fn loading_words(p: &Passed) -> String {
         states_held,
         jump_forces,
         jump_landing_a_bar,
+        bands_passed,
+        bands_passed_unresolved_at,
+        bands_passed_to_force,
+        bands_passed_to_a_bar,
         unresolved_turned_unstable,
         unresolved_turned_unstable_at,
         first_lost_force,
@@ -855,7 +859,25 @@ fn loading_words(p: &Passed) -> String {
     else {
         return String::new();
     };
-    let bands = bands_words(unresolved_turned_unstable, unresolved_turned_unstable_at);
+    // the bands passed and the unresolved modes turned unstable, each a
+    // clause between commas after "from F = 10"
+    let clauses: Vec<String> = [
+        passed_words(
+            bands_passed,
+            bands_passed_unresolved_at,
+            bands_passed_to_force,
+            bands_passed_to_a_bar,
+        ),
+        bands_words(unresolved_turned_unstable, unresolved_turned_unstable_at),
+    ]
+    .into_iter()
+    .filter(|c| !c.is_empty())
+    .collect();
+    let bands = if clauses.is_empty() {
+        String::new()
+    } else {
+        format!(", {},", clauses.join(", "))
+    };
     let why = why_not_settled.as_deref().unwrap_or("no reason given");
     let head = format!(
         "the loading path by descent (modes at least 2 pi h long move, h/L = {}; docs/exact.md, \"The loading path by descent\"):",
@@ -890,6 +912,31 @@ fn loading_words(p: &Passed) -> String {
     }
 }
 
+/// The bands of unresolved modes a path passed, in words (empty where
+/// none).
+fn passed_words(modes: &[usize], unresolved_at: &[f64], to_force: &[f64], to_a: &[f64]) -> String {
+    if modes.is_empty() {
+        return String::new();
+    }
+    let list: Vec<String> = modes
+        .iter()
+        .zip(unresolved_at)
+        .zip(to_force.iter().zip(to_a))
+        .map(|((n, u), (f, a))| {
+            format!(
+                "n = {n} (its lobes pass 1 % of a at F = {}; the path goes on from F = {}, a = {})",
+                crate::error::short(*u),
+                crate::error::short(*f),
+                crate::error::short(*a)
+            )
+        })
+        .collect();
+    format!(
+        "passing the bands of modes shorter than the cutoff (held flat by the coating): {}",
+        list.join("; ")
+    )
+}
+
 /// The modes shorter than the cutoff a path's states turn unstable to on
 /// the way, in words (empty where none).
 fn bands_words(modes: &[usize], at: &[f64]) -> String {
@@ -902,7 +949,7 @@ fn bands_words(modes: &[usize], at: &[f64]) -> String {
         .map(|(n, f)| format!("n = {n} (from F = {})", crate::error::short(*f)))
         .collect();
     format!(
-        ", its states turning unstable on the way to modes shorter than the cutoff, which it does not count: {} (below rho = 1 on a near-elliptic piece each is that mode's band stepped over, past a fold in a the fold's mode),",
+        "its states turning unstable on the way to modes shorter than the cutoff, which it does not count: {} (below rho = 1 on a near-elliptic piece each is that mode's band stepped over, past a fold in a the fold's mode)",
         list.join(", ")
     )
 }

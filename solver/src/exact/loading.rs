@@ -63,6 +63,14 @@ const PUSH: f64 = 1e-4;
 /// The largest step in F̄.
 const MAX_STEP: f64 = 1.0;
 
+/// The steps in ā (relative to the ā of the state whose shape turned
+/// unresolved) at which [`pass_band`] looks for the piece beyond a band,
+/// how many it takes at most (down to 10 % of ā below), and how often the
+/// step that first finds it is halved to locate where it begins.
+const PASS_STEP: f64 = 2e-3;
+const PASS_STEPS: usize = 50;
+const PASS_BISECTIONS: usize = 6;
+
 /// Where the arm turns within a step ([`continues`]), the step is halved
 /// down to this (relative to max(1, |F̄|)) before the descent is asked
 /// where the contact goes: a turn sharper than this is a corner.
@@ -80,6 +88,22 @@ pub(crate) struct Jump {
     pub to: ExactState,
 }
 
+/// A band passed: the state held turns into the lobes of a mode shorter
+/// than the cutoff (its undulations pass 1 % of ā, `undulations::VISIBLE`),
+/// and the contact, whose coating holds those undulations flat, goes on
+/// from the piece beyond the band ([`pass_band`]).
+#[derive(Clone, Debug)]
+pub(crate) struct BandPass {
+    /// The band's mode: the largest of the undulations shorter than the
+    /// cutoff.
+    pub mode: usize,
+    /// The state of (2) on that arm whose undulations pass 1 % of ā.
+    pub at: ExactState,
+    /// The first state beyond, at a lower F̄, whose shape the cutoff
+    /// resolves.
+    pub to: ExactState,
+}
+
 /// How a path ends.
 #[derive(Clone, Debug)]
 pub(crate) enum PathEnd {
@@ -92,6 +116,10 @@ pub(crate) enum PathEnd {
     Lost { state: Box<ExactState>, why: String },
     /// The path stops before a state is lost (in words).
     NotSettled(String),
+    /// The path was asked to stop at its first band passed
+    /// ([`loading_path_to_first_band`]): its last state is where it goes
+    /// on beyond the band, on the piece below.
+    PassedBand,
 }
 
 /// The path from F̄ = 10 down.
@@ -101,6 +129,9 @@ pub(crate) struct LoadingPath {
     pub states: Vec<ExactState>,
     /// The jumps on the way, in order.
     pub jumps: Vec<Jump>,
+    /// The bands of modes shorter than the cutoff passed on the way, in
+    /// order.
+    pub passes: Vec<BandPass>,
     /// Where it ends.
     pub end: PathEnd,
 }
@@ -241,7 +272,19 @@ pub(crate) fn start(rho: f64) -> Result<ExactState> {
 /// ([`start`]), down, with `cutoff` choosing the resolved modes.
 pub(crate) fn loading_path(start: &ExactState, cutoff: Cutoff) -> Result<LoadingPath> {
     let ex = Exact::new(start.rho, start.truncation)?;
-    Ok(follow(ex, start.clone(), cutoff))
+    Ok(follow(ex, start.clone(), cutoff, false))
+}
+
+/// [`loading_path`] up to the first band it passes: where it has passed
+/// one, it ends ([`PathEnd::PassedBand`]) at the state beyond, on the
+/// piece below, from which the path goes on as that piece's (the windows'
+/// rows, `exact::reach`, each the path on its own piece).
+pub(crate) fn loading_path_to_first_band(
+    start: &ExactState,
+    cutoff: Cutoff,
+) -> Result<LoadingPath> {
+    let ex = Exact::new(start.rho, start.truncation)?;
+    Ok(follow(ex, start.clone(), cutoff, true))
 }
 
 /// `st` (a state of `ex`) or, where `ex`'s modes do not resolve it to
@@ -349,8 +392,9 @@ fn where_lost(
     }
 }
 
-/// The path from `start` (a state of `ex`'s truncation) down.
-fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
+/// The path from `start` (a state of `ex`'s truncation) down; with
+/// `to_first_band`, up to the first band it passes.
+fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> LoadingPath {
     let mut states = vec![start.clone()];
     let mut jumps = Vec::new();
     let mut held = start;
@@ -366,19 +410,48 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
     // state stepped back to, or one a halved step comes back to): kept
     // until the state held changes
     let mut judged = false;
-    let done = |states, jumps, end| LoadingPath { states, jumps, end };
+    let mut passes: Vec<BandPass> = Vec::new();
+    let done = |states, jumps, passes, end| LoadingPath {
+        states,
+        jumps,
+        passes,
+        end,
+    };
     loop {
         if let Err(e) = crate::newton::check_stop() {
-            return done(states, jumps, PathEnd::NotSettled(e.to_string()));
+            return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()));
         }
         // a state whose shape owes a visible part to undulations shorter
         // than the cutoff: (2) does not resolve where the contact goes
         // from there, whatever the verdicts of its directions
         let short = super::undulations::short_waves(&held.contour, cutoff);
+        // a coating this thick holds those undulations flat: the contact
+        // passes the band onto the piece beyond it (not from the start,
+        // whose shape no state before resolved)
+        if short.unresolved && states.len() > 1 {
+            if let Some(to) = pass_band(&mut ex, &held, cutoff) {
+                states.pop();
+                passes.push(BandPass {
+                    mode: short.mode.unwrap_or(0),
+                    at: held.clone(),
+                    to: to.clone(),
+                });
+                held = to;
+                states.push(held.clone());
+                if to_first_band {
+                    return done(states, jumps, passes, PathEnd::PassedBand);
+                }
+                before = None;
+                judged = false;
+                step = 0.25;
+                continue;
+            }
+        }
         if short.unresolved {
             return done(
                 states,
                 jumps,
+                passes,
                 PathEnd::NotSettled(format!(
                     "at force = {} (a = {:.4}, s = {:.4}) {}",
                     crate::error::rounded(held.force_bar),
@@ -417,7 +490,9 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                 if truncation != ex.truncation {
                     match Exact::new(held.rho, truncation) {
                         Ok(e) => ex = e,
-                        Err(e) => return done(states, jumps, PathEnd::NotSettled(e.to_string())),
+                        Err(e) => {
+                            return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()))
+                        }
                     }
                 }
                 states.pop();
@@ -460,7 +535,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                 Some(st) if continues(&ex, &held, &st) => {
                     let back = (held.clone(), step, ex.truncation);
                     if let Err(why) = accept(&mut ex, &mut held, st) {
-                        return done(states, jumps, PathEnd::NotSettled(why));
+                        return done(states, jumps, passes, PathEnd::NotSettled(why));
                     }
                     judged = false;
                     before = (step > BRACKET * scale).then_some(back);
@@ -484,7 +559,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
             if let Landing::Landed(st) = &landing {
                 if near(&held, st) {
                     if let Err(why) = accept(&mut ex, &mut held, (**st).clone()) {
-                        return done(states, jumps, PathEnd::NotSettled(why));
+                        return done(states, jumps, passes, PathEnd::NotSettled(why));
                     }
                     judged = false;
                     before = None;
@@ -512,7 +587,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                 before = None;
                 held = match resolved(&mut ex, *st) {
                     Ok(st) => st,
-                    Err(why) => return done(states, jumps, PathEnd::NotSettled(why)),
+                    Err(why) => return done(states, jumps, passes, PathEnd::NotSettled(why)),
                 };
                 judged = false;
                 states.push(held.clone());
@@ -522,6 +597,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                 return done(
                     states,
                     jumps,
+                    passes,
                     PathEnd::NotSettled(format!(
                         "{shape}at force = {} the state is lost for a step of {:.0e} but the descent from it lands beside it",
                         crate::error::rounded(lost.force_bar),
@@ -533,6 +609,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                 return done(
                     states,
                     jumps,
+                    passes,
                     PathEnd::PullOff {
                         state: Box::new(lost),
                     },
@@ -542,6 +619,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
                 return done(
                     states,
                     jumps,
+                    passes,
                     PathEnd::Lost {
                         state: Box::new(lost),
                         why: format!("{shape}{why}"),
@@ -553,10 +631,80 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff) -> LoadingPath {
             return done(
                 states,
                 jumps,
+                passes,
                 PathEnd::NotSettled("more than 50 jumps".into()),
             );
         }
     }
+}
+
+/// Where the state `held` owes a visible part of its shape to undulations
+/// shorter than the cutoff (the lobes of a band whose mode (2) does not
+/// resolve at this thinness), the state the contact goes on from: a
+/// coating that holds those undulations flat does not follow (2)'s arm
+/// into the lobes but passes the band. The piece beyond is sought at sizes
+/// below `held`'s in steps of [`PASS_STEP`] of its ā, at most
+/// [`PASS_STEPS`], by Newton's method at each fixed ā from `held`'s
+/// contour with those undulations taken off
+/// (`undulations::without_short_waves`), scaled to that ā. (At a fixed
+/// force Newton's method from that guess is drawn to the lobed arm beyond
+/// the next piece's fold where the band is wide, at ρ = 0.5 with
+/// h/L = 0.3; at a fixed size the lobes are what the guess lacks.) A state
+/// reached whose force is below `held`'s, whose shape the cutoff resolves
+/// and whose boundary error is resolved is on the piece beyond; the step
+/// that first reaches one is halved [`PASS_BISECTIONS`] times (the larger
+/// ā where the test holds kept) to locate where that piece's resolved
+/// states begin, and the path goes on from the state there. None where no
+/// step reaches one.
+fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactState> {
+    let mut guess = held.clone();
+    guess.contour = super::undulations::without_short_waves(&held.contour, cutoff);
+    // the search's problem, without the states' stability (the state
+    // chosen gets it from `ex`)
+    let search = Exact::new(held.rho, ex.truncation())
+        .ok()?
+        .deferring_stability();
+    // a resolved state beyond at size `a_bar`, by Newton's method
+    let beyond = |ex: &mut Exact, a_bar: f64| -> Option<ExactState> {
+        let st = search.solve_from(a_bar, &guess).ok()?;
+        if st.force_bar >= held.force_bar
+            || super::undulations::short_waves(&st.contour, cutoff).unresolved
+        {
+            return None;
+        }
+        let st = ex
+            .solve_at(Hold::Size(st.a_bar), &st.contour, st.delta_bar)
+            .ok()?;
+        // (a finer truncation that resolves it replaces `ex`, as on the
+        // path)
+        let st = resolved(ex, st).ok()?;
+        (!super::undulations::short_waves(&st.contour, cutoff).unresolved).then_some(st)
+    };
+    let step = PASS_STEP * held.a_bar;
+    let mut above = held.a_bar;
+    for k in 1..=PASS_STEPS {
+        crate::newton::check_stop().ok()?;
+        let a_bar = held.a_bar - k as f64 * step;
+        if let Some(mut found) = beyond(ex, a_bar) {
+            // where between the last size that found none and this one the
+            // piece beyond is first reached, by bisection
+            let mut below = a_bar;
+            for _ in 0..PASS_BISECTIONS {
+                crate::newton::check_stop().ok()?;
+                let mid = 0.5 * (above + below);
+                match beyond(ex, mid) {
+                    Some(st) => {
+                        found = st;
+                        below = mid;
+                    }
+                    None => above = mid,
+                }
+            }
+            return Some(found);
+        }
+        above = a_bar;
+    }
+    None
 }
 
 /// The loading path at `pull_off.rho` judged against `pull_off` (the
@@ -572,6 +720,15 @@ pub(crate) fn reported(
         .as_ref()
         .map(|p| p.unresolved_turned_unstable(cutoff))
         .unwrap_or_default();
+    let bands: Vec<(usize, f64, f64, f64)> = path
+        .as_ref()
+        .map(|p| {
+            p.passes
+                .iter()
+                .map(|b| (b.mode, b.at.force_bar, b.to.force_bar, b.to.a_bar))
+                .collect()
+        })
+        .unwrap_or_default();
     let (held, jumps, lost, comes_off, why): (usize, Vec<(f64, f64)>, _, _, _) = match &path {
         Err(e) => (0, Vec::new(), None, None, Some(e.to_string())),
         Ok(p) => {
@@ -579,6 +736,7 @@ pub(crate) fn reported(
                 PathEnd::PullOff { .. } => (Some(true), None),
                 PathEnd::Lost { why, .. } => (Some(false), Some(why.clone())),
                 PathEnd::NotSettled(why) => (None, Some(why.clone())),
+                PathEnd::PassedBand => (None, Some("stopped at the first band passed".into())),
             };
             (
                 p.states.len(),
@@ -595,6 +753,10 @@ pub(crate) fn reported(
         states_held: held,
         jump_forces: jumps.iter().map(|j| j.0).collect(),
         jump_landing_a_bar: jumps.iter().map(|j| j.1).collect(),
+        bands_passed: bands.iter().map(|b| b.0).collect(),
+        bands_passed_unresolved_at: bands.iter().map(|b| b.1).collect(),
+        bands_passed_to_force: bands.iter().map(|b| b.2).collect(),
+        bands_passed_to_a_bar: bands.iter().map(|b| b.3).collect(),
         unresolved_turned_unstable: passed.iter().map(|p| p.1).collect(),
         unresolved_turned_unstable_at: passed.iter().map(|p| p.0).collect(),
         first_lost_force: lost.map(|s| s.force_bar),
@@ -622,6 +784,9 @@ impl LoadingPath {
             PathEnd::NotSettled(why) => Err(crate::error::Error::NoState(format!(
                 "the loading path from force = {START_FORCE} is not settled: {why}"
             ))),
+            PathEnd::PassedBand => Err(crate::error::Error::NoState(
+                "the loading path was followed to its first band only".into(),
+            )),
         }
     }
 
@@ -630,7 +795,7 @@ impl LoadingPath {
     pub(crate) fn first_lost(&self) -> Option<&ExactState> {
         self.jumps.first().map(|j| &j.from).or(match &self.end {
             PathEnd::PullOff { state, .. } | PathEnd::Lost { state, .. } => Some(&**state),
-            PathEnd::NotSettled(_) => None,
+            PathEnd::NotSettled(_) | PathEnd::PassedBand => None,
         })
     }
 
@@ -658,6 +823,9 @@ impl LoadingPath {
             return Vec::new();
         };
         let at_start = unresolved(first);
+        // a band passed on purpose is reported as passed, not as stepped
+        // over
+        let passed = |n: usize| self.passes.iter().any(|b| b.mode == n);
         // modes the start could show: a truncation grown on the way
         // represents shorter modes, unstable already (the shortest
         // unstable mode at the start bounds them)
@@ -678,6 +846,7 @@ impl LoadingPath {
                     .map_or(0, |k| k + 1);
                 (self.states[from].force_bar, n)
             })
+            .filter(|&(_, n)| !passed(n))
             .collect();
         turned.sort_by(|x, y| y.0.total_cmp(&x.0));
         turned
@@ -737,17 +906,19 @@ mod tests {
     /// of the mode-6 band: a fine arclength trace of the family (steps of
     /// 5e-4 in u) locates the fold at ā = 2.758686 with the null direction
     /// of mode 6, F̄ falling on through it. The loading path follows the
-    /// arm through that fold (its smallest ā is the fold's), every state
-    /// resolved and stable under load above the cutoff, and at h/L = 0.5
-    /// and 1 ends not settled where the band's six lobes, shorter than the
-    /// cutoff, pass 1 % of ā (F̄ ≈ −2.35), far above the pull-off
-    /// `exact pull-off` reports (F̄ = −4.1976, ā = 2.396), which lies on the
-    /// piece below the band. Two routes: the path's steps in F̄, checked
-    /// against the arm's tangent, and the trace by arclength. (Before each
-    /// step was so checked, a unit step hopped the band, 0.1 % of ā wide,
-    /// and the path reached that pull-off.)
+    /// arm through that fold (its smallest ā before the band is the
+    /// fold's), and where the band's six lobes, shorter than the cutoff at
+    /// h/L = 0.5 and 1, pass 1 % of ā (F̄ ≈ −2.35) it passes the band: it
+    /// goes on from the piece below the band (ā about 0.05 smaller), and
+    /// at h/L = 0.5 holds that piece down to the pull-off `exact pull-off`
+    /// reports (F̄ = −4.1976, ā = 2.396), found there by another route (the
+    /// arm traced from `conformal:8`'s pull-off). At h/L = 1 the four-lobed
+    /// undulations of that piece (3.55 long, cutoff 6.28) pass 1 % of ā
+    /// just above it, and no resolved state lies below: not settled.
+    /// Every state held is resolved and stable under load above the
+    /// cutoff, its shape resolved.
     #[test]
-    fn at_rho_0_8_the_path_turns_at_the_mode_6_band_above_the_pull_off() {
+    fn at_rho_0_8_the_path_passes_the_mode_6_band_to_the_pull_off() {
         let s0 = start(0.8).unwrap();
         let ex = Exact::new(0.8, s0.truncation)
             .unwrap()
@@ -765,64 +936,128 @@ mod tests {
         for h in [0.5, 1.0] {
             let cutoff = Cutoff::for_thinness(h).unwrap();
             let path = loading_path(&s0, cutoff).unwrap();
-            let PathEnd::NotSettled(why) = &path.end else {
-                panic!("{:?}", path.end)
-            };
-            assert!(why.contains("(the largest n = 6,"), "{why}");
             assert!(path.jumps.is_empty());
-            let smallest = path
+            let [pass] = &path.passes[..] else {
+                panic!("{} bands passed", path.passes.len())
+            };
+            assert_eq!(pass.mode, 6);
+            assert!(
+                pass.at.force_bar < fold.force_bar && pass.at.force_bar > -2.4,
+                "{}",
+                pass.at.force_bar
+            );
+            assert!(
+                pass.to.force_bar < pass.at.force_bar && pass.to.force_bar > -2.7,
+                "{}",
+                pass.to.force_bar
+            );
+            assert!(pass.to.a_bar < fold.a_bar - 0.03, "{}", pass.to.a_bar);
+            let smallest_before = path
                 .states
                 .iter()
+                .filter(|st| st.force_bar > pass.at.force_bar)
                 .map(|st| st.a_bar)
                 .fold(f64::INFINITY, f64::min);
-            assert!((smallest - fold.a_bar).abs() < 1e-4, "{smallest}");
-            let (last, held) = path.states.split_last().unwrap();
             assert!(
-                last.force_bar < fold.force_bar && last.force_bar > -2.4,
-                "{}",
-                last.force_bar
+                (smallest_before - fold.a_bar).abs() < 1e-4,
+                "{smallest_before}"
             );
-            assert!(last.force_bar > pull_off.force_bar + 1.5);
-            assert!(last.a_bar > fold.a_bar);
+            // (at h/L = 1 the last state is the one whose shape is
+            // unresolved)
+            let held = &path.states[..path.states.len() - usize::from(h == 1.0)];
             for st in held {
                 let judged = st.clone().judged(cutoff);
                 assert!(st.bc_error <= RESOLVED, "{}", st.bc_error);
+                assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
+                // (at h/L = 0.5 the last state is the pull-off, neutral)
                 assert_ne!(
                     judged.stability.stable_load,
                     Some(false),
                     "F = {}",
                     st.force_bar
                 );
-                assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
+            }
+            let last = path.states.last().unwrap();
+            if h == 0.5 {
+                let lost = path.first_lost().expect("a state lost");
+                assert!(
+                    (lost.force_bar - pull_off.force_bar).abs() < 1e-6 * pull_off.force_bar.abs(),
+                    "{} {}",
+                    lost.force_bar,
+                    pull_off.force_bar
+                );
+                assert!((lost.a_bar - pull_off.a_bar).abs() < 1e-3 * pull_off.a_bar);
+            } else {
+                let PathEnd::NotSettled(why) = &path.end else {
+                    panic!("{:?}", path.end)
+                };
+                assert!(why.contains("(the largest n = 4,"), "{why}");
+                assert!(
+                    last.force_bar > pull_off.force_bar
+                        && last.force_bar < pull_off.force_bar + 0.02,
+                    "{}",
+                    last.force_bar
+                );
             }
         }
     }
 
-    /// At ρ = 0.5 the arm the path holds from F̄ = 10 passes the fold of
-    /// the cos 10θ band (its upper edge at F̄ = 8.79, docs/exact.md
-    /// "Bands") and turns ten-lobed on its returning stretch: with
-    /// h/L = 0.5 those lobes (1.86 long) are shorter than the cutoff
-    /// (3.14), and the path ends where they reach 1 % of ā, before the
-    /// force at which its states had been lost when the lobes were
-    /// followed (F̄ ≈ 7.57, 5.7 % off the ellipse).
+    /// At ρ = 0.5 the path from F̄ = 10 (h/L = 0.5) meets three bands whose
+    /// modes are shorter than the cutoff (3.14): n = 10 (its arm's lobes,
+    /// 1.86 long, pass 1 % of ā at F̄ = 8.44 on the returning stretch past
+    /// the band's upper edge at F̄ = 8.79, docs/exact.md "Bands"), n = 8
+    /// (near F̄ = 2) and n = 6 (near F̄ = −1.4, the band between the
+    /// zero-force state and the pull-off). It passes each onto the piece
+    /// beyond and holds that piece's states, resolved and stable above the
+    /// cutoff, down to the pull-off `exact pull-off` reports (F̄ = −3.2408,
+    /// found there from `conformal:8`'s pull-off), where it is lost.
     #[test]
-    fn at_rho_0_5_the_path_ends_where_its_lobes_are_shorter_than_the_cutoff() {
+    fn at_rho_0_5_the_path_passes_three_bands_to_the_pull_off() {
         let cutoff = Cutoff::for_thinness(0.5).unwrap();
         let path = loading_path(&start(0.5).unwrap(), cutoff).unwrap();
-        let PathEnd::NotSettled(why) = &path.end else {
-            panic!("{:?}", path.end)
-        };
+        let modes: Vec<usize> = path.passes.iter().map(|b| b.mode).collect();
+        assert_eq!(modes, [10, 8, 6]);
+        let first = &path.passes[0];
         assert!(
-            why.contains("undulations shorter than the cutoff (the largest n = 10,"),
-            "{why}"
-        );
-        let last = path.states.last().unwrap();
-        assert!(
-            last.force_bar < 8.79 && last.force_bar > 7.57,
+            first.at.force_bar < 8.79 && first.at.force_bar > 7.57,
             "{}",
-            last.force_bar
+            first.at.force_bar
         );
+        // each landing lies below (in F̄) and inside (in ā) the arm it
+        // leaves: the states held since the pass before
+        let mut since = f64::INFINITY;
+        for b in &path.passes {
+            assert!(b.to.force_bar < b.at.force_bar);
+            let arm = path
+                .states
+                .iter()
+                .filter(|st| st.force_bar > b.at.force_bar && st.force_bar <= since)
+                .map(|st| st.a_bar)
+                .fold(f64::INFINITY, f64::min);
+            assert!(b.to.a_bar < arm, "n = {}: {} {arm}", b.mode, b.to.a_bar);
+            since = b.to.force_bar;
+        }
         assert!(path.jumps.is_empty());
+        for st in &path.states {
+            let judged = st.clone().judged(cutoff);
+            assert!(st.bc_error <= RESOLVED, "{}", st.bc_error);
+            assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
+            assert_ne!(
+                judged.stability.stable_load,
+                Some(false),
+                "F = {}",
+                st.force_bar
+            );
+        }
+        let (pull_off, _) = crate::exact::pull_off_resolved(0.5).unwrap();
+        let lost = path.first_lost().expect("a state lost");
+        assert!(
+            (lost.force_bar - pull_off.force_bar).abs() < 1e-6 * pull_off.force_bar.abs(),
+            "{} {}",
+            lost.force_bar,
+            pull_off.force_bar
+        );
+        assert!((lost.a_bar - pull_off.a_bar).abs() < 1e-3 * pull_off.a_bar);
     }
 
     /// docs/exact.md ("The loading path by descent", ρ = 0.3 from the
@@ -833,11 +1068,16 @@ mod tests {
     /// states stable above the cutoff down to F̄ = 11.61, and at the next
     /// state held, F̄ = 11.11 (ā = 3.6006, just above the piece's fold in ā
     /// at 3.6004), its undulations from n = 14 on, shorter than the cutoff,
-    /// pass 1 % of ā: the path is not settled there, before F̄ = 10. (Before
-    /// the arm's tangent checked each step, a unit step landed at F̄ = 10.61,
-    /// past the fold.)
+    /// pass 1 % of ā. The path passes that band onto the next piece below,
+    /// the window between the folds ā = 3.4115 (F̄ = 5.00, n = 12) and
+    /// 3.4702 (F̄ = 8.55, n = 10) located by the windows' own route
+    /// (docs/data/exact_windows.jsonl), holds it down towards its lower
+    /// fold, and is not settled where that fold's n = 12 undulations pass
+    /// 1 % of ā above it: no resolved piece is found within 10 % of ā
+    /// below. (Before the arm's tangent checked each step, a unit step
+    /// landed at F̄ = 10.61, past the fold.)
     #[test]
-    fn at_rho_0_3_a_state_of_a_window_unloads_until_its_shape_is_unresolved() {
+    fn at_rho_0_3_a_state_of_a_window_passes_one_band_and_unloads_until_its_shape_is_unresolved() {
         let cutoff = Cutoff::for_thinness(0.3).unwrap();
         let t = Truncation::in_arclength(crate::exact::reach::MODES);
         let st = crate::exact::reach::from_the_circle(3.62, t)
@@ -861,24 +1101,51 @@ mod tests {
             panic!("{:?}", path.end)
         };
         assert!(path.jumps.is_empty());
-        let (last, held) = path.states.split_last().unwrap();
-        let shape = last.clone().judged(cutoff).shape.unwrap();
-        assert!(shape.unresolved && shape.mode == Some(14), "{shape:?}");
-        let before = held.last().unwrap();
+        let [pass] = &path.passes[..] else {
+            panic!("{} bands passed", path.passes.len())
+        };
+        assert_eq!(pass.mode, 14);
+        // the band's mode passes 1 % of ā as the piece nears its fold in ā
+        // (3.6004, F̄ = 10.951, the windows), followed step by step along
+        // the arm: the state whose shape turns unresolved lies above the
+        // fold; the last state held before it at F̄ = 11.61
+        assert!(
+            pass.at.force_bar > 10.951 && pass.at.force_bar < 11.6,
+            "{}",
+            pass.at.force_bar
+        );
+        let before = path
+            .states
+            .iter()
+            .filter(|st| st.force_bar > pass.at.force_bar)
+            .last()
+            .unwrap();
         assert!(
             (before.force_bar - 11.6105).abs() < 1e-3,
             "{}",
             before.force_bar
         );
-        // the band's mode passes 1 % of ā as the piece nears its fold in ā
-        // (3.6004, F̄ = 10.951, the windows), followed step by step along
-        // the arm: the last state lies above the fold, within 1e-3 of its ā
+        // the landing lies on the window's piece below (between its folds)
+        let (lower, upper) = ((3.411480, 5.000404), (3.470180, 8.552680));
         assert!(
-            last.force_bar > 10.951 && last.force_bar < before.force_bar,
+            pass.to.a_bar > lower.0 && pass.to.a_bar < upper.0,
             "{}",
+            pass.to.a_bar
+        );
+        assert!(
+            pass.to.force_bar > lower.1 && pass.to.force_bar < upper.1,
+            "{}",
+            pass.to.force_bar
+        );
+        let (last, held) = path.states.split_last().unwrap();
+        let shape = last.clone().judged(cutoff).shape.unwrap();
+        assert!(shape.unresolved && shape.mode == Some(12), "{shape:?}");
+        assert!(
+            last.a_bar > lower.0 && last.force_bar > lower.1 && last.force_bar < pass.to.force_bar,
+            "{} {}",
+            last.a_bar,
             last.force_bar
         );
-        assert!(last.a_bar > 3.6004 && last.a_bar < 3.6014, "{}", last.a_bar);
         for st in held {
             let judged = st.clone().judged(cutoff);
             assert!(st.bc_error <= CONVERGED, "{}", st.bc_error);

@@ -400,7 +400,7 @@ pub(crate) struct Window {
 pub(crate) struct WindowPath {
     /// The thinness h/L of the cutoff.
     pub thinness: f64,
-    /// How many states it held, the start first.
+    /// How many states it held on its own piece, the start first.
     pub states: usize,
     /// How many jumps it made.
     pub jumps: usize,
@@ -410,6 +410,14 @@ pub(crate) struct WindowPath {
     /// past a fold in ā the fold's mode.
     #[serde(default)]
     pub unresolved_turned_unstable: Vec<usize>,
+    /// Where the path passed the band whose lobes ended its piece (the
+    /// last state held here), F̄ and ā of the state beyond, on the piece
+    /// below, from which it goes on as that piece's path (followed up to
+    /// that band only: `exact::loading::loading_path_to_first_band`,
+    /// docs/exact.md "Bands of unresolved modes"); none where it found no
+    /// piece beyond, or ended before.
+    #[serde(default)]
+    pub passed_to: Option<[f64; 2]>,
     /// F̄ of the last state held whose shape the cutoff resolves.
     pub resolved_force_bar: f64,
     /// F̄ of the last state held.
@@ -576,15 +584,19 @@ fn settle_one(
 
 /// The loading path from `start` (its stability computed) with `cutoff`.
 fn unloaded(start: &ExactState, cutoff: crate::cutoff::Cutoff) -> Result<WindowPath> {
-    use super::loading::{loading_path, PathEnd};
-    let path = loading_path(start, cutoff)?;
+    use super::loading::{loading_path_to_first_band, PathEnd};
+    let path = loading_path_to_first_band(start, cutoff)?;
     let shape = |st: &ExactState| st.clone().judged(cutoff).shape;
-    let last = path.states.last().unwrap_or(start);
+    // the path on its own piece: up to the state whose shape turned
+    // unresolved, where it passed its band (then the state beyond is
+    // `passed_to`), else its last state
+    let pass = path.passes.first();
+    let on_piece = &path.states[..path.states.len() - usize::from(pass.is_some())];
+    let last = pass.map_or(on_piece.last().unwrap_or(start), |b| &b.at);
     let unresolved = shape(last)
         .filter(|w| w.unresolved)
         .and_then(|w| w.mode.map(|n| (n, w.amplitude)));
-    let resolved_force_bar = path
-        .states
+    let resolved_force_bar = on_piece
         .iter()
         .rev()
         .find(|st| shape(st).is_some_and(|w| !w.unresolved))
@@ -599,16 +611,23 @@ fn unloaded(start: &ExactState, cutoff: crate::cutoff::Cutoff) -> Result<WindowP
             state.force_bar, state.a_bar
         ),
         PathEnd::NotSettled(why) => format!("not settled: {why}"),
+        PathEnd::PassedBand => pass.map_or(String::new(), |b| {
+            format!(
+                "passes the band of n = {} onto the piece below, at F = {:.6}, a = {:.6}",
+                b.mode, b.to.force_bar, b.to.a_bar
+            )
+        }),
     };
     Ok(WindowPath {
         thinness: cutoff.thinness,
-        states: path.states.len(),
+        states: on_piece.len(),
         jumps: path.jumps.len(),
         unresolved_turned_unstable: path
             .unresolved_turned_unstable(cutoff)
             .into_iter()
             .map(|(_, n)| n)
             .collect(),
+        passed_to: pass.map(|b| [b.to.force_bar, b.to.a_bar]),
         resolved_force_bar,
         last_force_bar: last.force_bar,
         last_a_bar: last.a_bar,
@@ -677,15 +696,20 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
             .any(|w| w.rho == rho && w.unloading.is_some())
     };
     let passed = |p: &WindowPath| {
+        let list = |modes: &[usize]| {
+            modes
+                .iter()
+                .map(|n| n.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
         if p.unresolved_turned_unstable.is_empty() {
             String::new()
         } else {
-            let list: Vec<String> = p
-                .unresolved_turned_unstable
-                .iter()
-                .map(|n| n.to_string())
-                .collect();
-            format!("turns unstable to n = {} (unresolved); ", list.join(", "))
+            format!(
+                "turns unstable to n = {} (unresolved); ",
+                list(&p.unresolved_turned_unstable)
+            )
         }
     };
     let path = |w: &Window| match &w.unloading {
@@ -695,11 +719,18 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
             passed(p)
                 + &match p.unresolved {
                     Some((n, share)) => format!(
-                        "holds to F̄ = {}; at F̄ = {} (ā = {:.4}) n = {n} reaches {:.2} % of ā",
+                        "holds to F̄ = {}; at F̄ = {} (ā = {:.4}) n = {n} reaches {:.2} % of ā{}",
                         force(p.resolved_force_bar),
                         force(p.last_force_bar),
                         p.last_a_bar,
-                        100.0 * share
+                        100.0 * share,
+                        match p.passed_to {
+                            Some([f, a]) => format!(
+                                "; passes the band onto the piece below at F̄ = {} (ā = {a:.4})",
+                                force(f)
+                            ),
+                            None => "; no piece beyond found: not settled".to_string(),
+                        }
                     ),
                     None => format!("to F̄ = {}: {}", force(p.last_force_bar), p.end),
                 }
@@ -914,6 +945,14 @@ mod tests {
         assert!((p.resolved_force_bar - p0.resolved_force_bar).abs() < 1e-6);
         assert_eq!(p.unresolved.map(|u| u.0), Some(14));
         assert_eq!(p0.unresolved.map(|u| u.0), Some(14));
+        // where it passes that band onto the piece below, as committed
+        match (p.passed_to, p0.passed_to) {
+            (Some(x), Some(x0)) => assert!(
+                (x[0] - x0[0]).abs() < 1e-6 && (x[1] - x0[1]).abs() < 1e-6,
+                "{x:?} against {x0:?}"
+            ),
+            (x, x0) => assert_eq!(x.is_some(), x0.is_some(), "{x:?} against {x0:?}"),
+        }
         let fold = |e: &WindowEnd| match e {
             WindowEnd::Fold {
                 a_bar,
@@ -1013,6 +1052,55 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// A second route to where a window's path passes its band: the state
+    /// beyond (found by Newton's method at fixed ā from the contour with
+    /// the short undulations taken off, `exact::loading`) lies on the
+    /// piece of another window at the same ρ, between that window's two
+    /// folds in ā and in F̄ (located by traces of the family, `settle`),
+    /// below the window it left (docs/data/exact_windows.jsonl), at
+    /// ρ = 0.5, 0.4 and 0.3, from every window settled by two folds. (At
+    /// ρ = 0.2 the one path's landing, ā = 4.103, lies between two windows
+    /// whose traces end unresolved, on no settled piece; the window of
+    /// ā = 4.5, open above, passes a band inside its own range.)
+    #[test]
+    fn every_band_a_window_path_passes_lands_on_the_piece_of_a_settled_window_below() {
+        let windows =
+            windows_from_json_lines(&committed("exact_windows.jsonl")).expect("window lines");
+        let fold = |e: &WindowEnd| match e {
+            WindowEnd::Fold {
+                a_bar, force_bar, ..
+            } => Some((*a_bar, *force_bar)),
+            _ => None,
+        };
+        let mut passes = 0;
+        for w in windows
+            .iter()
+            .filter(|w| w.rho >= 0.3 && fold(&w.lower).is_some() && fold(&w.upper).is_some())
+        {
+            let Some([force, a_bar]) = w.unloading.as_ref().and_then(|p| p.passed_to) else {
+                continue;
+            };
+            passes += 1;
+            let below = windows.iter().find(|v| {
+                v.rho == w.rho
+                    && v.a_bar < w.a_bar
+                    && match (fold(&v.lower), fold(&v.upper)) {
+                        (Some(lo), Some(up)) => {
+                            lo.0 <= a_bar && a_bar <= up.0 && lo.1 <= force && force <= up.1
+                        }
+                        _ => false,
+                    }
+            });
+            assert!(
+                below.is_some(),
+                "the path from a = {} at rho = {} lands at a = {a_bar}, F = {force}, on no settled piece below",
+                w.a_bar,
+                w.rho
+            );
+        }
+        assert_eq!(passes, 23);
     }
 
     /// The settled windows' table in docs/exact.md is what
