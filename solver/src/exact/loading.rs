@@ -877,6 +877,34 @@ mod tests {
         assert!(!contours_near(&c, &moved, tolerance));
     }
 
+    /// Every state of `held` is resolved, its shape resolved, and not
+    /// unstable under load above `cutoff`.
+    fn held_resolved_and_not_unstable(held: &[ExactState], cutoff: Cutoff) {
+        for st in held {
+            let judged = st.clone().judged(cutoff);
+            assert!(st.bc_error <= RESOLVED, "{}", st.bc_error);
+            assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
+            assert_ne!(
+                judged.stability.stable_load,
+                Some(false),
+                "F = {}",
+                st.force_bar
+            );
+        }
+    }
+
+    /// The first state `path` loses is `pull_off` (F̄ to 1e-6, ā to 1e-3).
+    fn reaches(path: &LoadingPath, pull_off: &ExactState) {
+        let lost = path.first_lost().expect("a state lost");
+        assert!(
+            (lost.force_bar - pull_off.force_bar).abs() < 1e-6 * pull_off.force_bar.abs(),
+            "{} {}",
+            lost.force_bar,
+            pull_off.force_bar
+        );
+        assert!((lost.a_bar - pull_off.a_bar).abs() < 1e-3 * pull_off.a_bar);
+    }
+
     /// At ρ = 1 the path from F̄ = 10 is the circle all the way (the circle
     /// is stable under load to every mode longer than the cutoff at h/L =
     /// 0.5), and it comes off at the closed form's pull-off, ā³ = 12,
@@ -965,28 +993,11 @@ mod tests {
             // (at h/L = 1 the last state is the one whose shape is
             // unresolved)
             let held = &path.states[..path.states.len() - usize::from(h == 1.0)];
-            for st in held {
-                let judged = st.clone().judged(cutoff);
-                assert!(st.bc_error <= RESOLVED, "{}", st.bc_error);
-                assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
-                // (at h/L = 0.5 the last state is the pull-off, neutral)
-                assert_ne!(
-                    judged.stability.stable_load,
-                    Some(false),
-                    "F = {}",
-                    st.force_bar
-                );
-            }
+            // (at h/L = 0.5 the last state is the pull-off, neutral)
+            held_resolved_and_not_unstable(held, cutoff);
             let last = path.states.last().unwrap();
             if h == 0.5 {
-                let lost = path.first_lost().expect("a state lost");
-                assert!(
-                    (lost.force_bar - pull_off.force_bar).abs() < 1e-6 * pull_off.force_bar.abs(),
-                    "{} {}",
-                    lost.force_bar,
-                    pull_off.force_bar
-                );
-                assert!((lost.a_bar - pull_off.a_bar).abs() < 1e-3 * pull_off.a_bar);
+                reaches(&path, &pull_off);
             } else {
                 let PathEnd::NotSettled(why) = &path.end else {
                     panic!("{:?}", path.end)
@@ -1038,26 +1049,9 @@ mod tests {
             since = b.to.force_bar;
         }
         assert!(path.jumps.is_empty());
-        for st in &path.states {
-            let judged = st.clone().judged(cutoff);
-            assert!(st.bc_error <= RESOLVED, "{}", st.bc_error);
-            assert!(!judged.shape.unwrap().unresolved, "F = {}", st.force_bar);
-            assert_ne!(
-                judged.stability.stable_load,
-                Some(false),
-                "F = {}",
-                st.force_bar
-            );
-        }
+        held_resolved_and_not_unstable(&path.states, cutoff);
         let (pull_off, _) = crate::exact::pull_off_resolved(0.5).unwrap();
-        let lost = path.first_lost().expect("a state lost");
-        assert!(
-            (lost.force_bar - pull_off.force_bar).abs() < 1e-6 * pull_off.force_bar.abs(),
-            "{} {}",
-            lost.force_bar,
-            pull_off.force_bar
-        );
-        assert!((lost.a_bar - pull_off.a_bar).abs() < 1e-3 * pull_off.a_bar);
+        reaches(&path, &pull_off);
     }
 
     /// docs/exact.md ("The loading path by descent", ρ = 0.3 from the
