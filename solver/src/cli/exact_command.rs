@@ -179,7 +179,7 @@ pub(crate) enum ExactCommand {
         /// Settle the windows at this ρ in (0.02, 0.98): from the state at ρ of each window's size with the smallest reach, the family at ρ traced in ā both ways to its folds (band edges) or to where 128 modes stop resolving it.
         #[arg(long, allow_hyphen_values = true)]
         windows_at: Option<f64>,
-        /// With --windows-at: unload each window's start with the short-wave cutoff of this thinness h/L, where the start is a stable contact (2) resolves at that h/L (the loading path of `exact pull-off --unloading`; docs/exact.md, "The loading path by descent").
+        /// With --windows-at: unload each window's start with the short-wave cutoff of this thinness h/L, where the start is a stable contact (2) resolves at that h/L (the loading path of `exact pull-off --unloading`, followed up to the first band it passes onto the piece below; docs/exact.md, "The loading path by descent").
         #[arg(long, requires = "windows_at", allow_hyphen_values = true)]
         unloading_at: Option<f64>,
         /// With --windows-at: read the reach from this file of `exact reach --json` lines (as docs/data/exact_reach.jsonl) instead of computing it over --from, --to, --step.

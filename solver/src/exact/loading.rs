@@ -26,11 +26,16 @@
 //! short-wave cutoff's choice; the path depends on it, and every path says
 //! which cutoff it used. Where a state held owes a visible part of its
 //! shape to undulations shorter than the cutoff (`exact::undulations`),
-//! the path is not settled from there: its shape is then (2)'s, not a
-//! coating's of that thickness.
+//! its shape is (2)'s, not a coating's of that thickness: the arm has
+//! turned into the lobes of a band whose mode the cutoff leaves
+//! unresolved, and a coating that holds those lobes flat passes the band
+//! ([`pass_band`]: the path goes on from the piece beyond, an event of
+//! the path, [`BandPass`]); where no piece beyond is found, the path is
+//! not settled from there.
 //!
-//! Owns: [`LoadingPath`], [`Jump`], [`PathEnd`], [`loading_path`],
-//! [`start`], [`reported`]. May use: `exact` (the problem, `descent`, `resolve`,
+//! Owns: [`LoadingPath`], [`Jump`], [`BandPass`], [`PathEnd`],
+//! [`loading_path`], [`loading_path_to_first_band`], [`start`],
+//! [`reported`]. May use: `exact` (the problem, `descent`, `resolve`,
 //! `undulations`),
 //! `control`, `continuation` (the family's linearisation, for the arm's
 //! tangent), `cutoff`, `error`, `newton` (the stop request), `report`
