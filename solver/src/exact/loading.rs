@@ -453,12 +453,21 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> 
             }
         }
         if short.unresolved {
+            // (the start is never passed from: no search was made there)
+            let searched = if states.len() > 1 {
+                format!(
+                    "; no state of a resolved shape was found beyond the band within {} % of a below",
+                    (PASS_STEP * PASS_STEPS as f64 * 100.0).round()
+                )
+            } else {
+                String::new()
+            };
             return done(
                 states,
                 jumps,
                 passes,
                 PathEnd::NotSettled(format!(
-                    "at force = {} (a = {:.4}, s = {:.4}) {}",
+                    "at force = {} (a = {:.4}, s = {:.4}) {}{searched}",
                     crate::error::rounded(held.force_bar),
                     held.a_bar,
                     held.s,
@@ -1008,6 +1017,13 @@ mod tests {
                     panic!("{:?}", path.end)
                 };
                 assert!(why.contains("(the largest n = 4,"), "{why}");
+                // (a piece beyond was looked for, and the words say so)
+                assert!(
+                    why.ends_with(
+                        "no state of a resolved shape was found beyond the band within 10 % of a below"
+                    ),
+                    "{why}"
+                );
                 assert!(
                     last.force_bar > pull_off.force_bar
                         && last.force_bar < pull_off.force_bar + 0.02,
