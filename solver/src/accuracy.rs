@@ -274,6 +274,9 @@ pub(crate) fn render_row(r: &Row) -> String {
                 e.truncation.modes,
                 bc(e.bc_error)
             ));
+            if has_coatings_column(r) {
+                cells.push(load_coatings(e));
+            }
             for (_, m) in &r.models {
                 cells.push(match m {
                     Ok(st) => {
@@ -307,12 +310,61 @@ pub(crate) fn render_row(r: &Row) -> String {
                 _ => format!("no exact value: {}", cell(&why)),
             };
             cells.push(short);
+            if has_coatings_column(r) {
+                cells.push("—".into());
+            }
             for _ in &r.models {
                 cells.push("—".into());
             }
         }
     }
     format!("| {} |", cells.join(" | "))
+}
+
+/// Which pull-off the rows of the pull-off table measure the models
+/// against, and where the loading path's pull-off is the same state (the
+/// loading paths measured with `thinjkr exact pull-off --unloading`, listed
+/// in docs/exact.md, "The loading path by descent").
+#[cfg(feature = "cli")]
+const WHICH_PULL_OFF: &str = "**Which pull-off.** Every row measures the models against today's pull-off: the \
+     first minimum of F̄ on the near-elliptic arm described above, a state of (2) found without asking how a contact \
+     comes to it. The loading path's pull-off is where a contact unloaded under load control from F̄ = 10, through \
+     states that are resolved and stable above the short-wave cutoff 2πh, comes off (exact.md, \"The loading path by \
+     descent\"); it depends on the coatings' thinness h/L. It can be today's pull-off only where that state is \
+     itself resolved and stable under load; the column \"resolved and stable under load for\" says for which h/L it \
+     is (exact.md, \"Coatings for which a state is resolved and stable\"). Measured with h/L = 0.5 (`thinjkr exact pull-off --rho R --unloading \
+     --thinness 0.5`), the loading path reaches today's pull-off at ρ = 1, 0.9, 0.8, 0.7, 0.6 and 0.5, passing the \
+     bands of modes shorter than the cutoff: there the two pull-offs are one state, and the rows measure against \
+     both. Where that column says \"none\" (ρ ≤ 0.4), no contact unloaded through stable states comes to the \
+     state the row measures against, so the row compares the models with (2), not with a contact's path; the \
+     loading paths measured there end not settled before any pull-off (ρ = 0.4 with h/L = 0.4 to 0.6, ρ = 0.3 from \
+     its windows), and below ρ = 0.3 none was followed.\n\n";
+
+/// Whether a row of the models' table has the column of the coatings for
+/// which the exact state is a contact (the pull-off table's rows).
+fn has_coatings_column(r: &Row) -> bool {
+    r.quantity == Quantity::PullOff && r.family.is_none()
+}
+
+/// For which coatings (2) gives the state resolved and stable under load
+/// above the short-wave cutoff (`exact::undulations::Coatings`), as a cell:
+/// only a contact with such coatings can come to it by unloading through
+/// stable states.
+fn load_coatings(e: &ExactState) -> String {
+    use crate::exact::undulations::{Coatings, Thinnesses};
+    let shape = e.short_waves();
+    match e.coatings.or_else(|| Coatings::of(&e.stability, &shape)) {
+        None => "not computed".into(),
+        Some(c) => match c.load {
+            None => "none".into(),
+            Some(Thinnesses { from, to: Some(to) }) if from > 0.0 => {
+                format!("{from:.3} ≤ h/L < {to:.3}")
+            }
+            Some(Thinnesses { to: Some(to), .. }) => format!("h/L < {to:.3}"),
+            Some(Thinnesses { from, to: None }) if from > 0.0 => format!("h/L ≥ {from:.3}"),
+            Some(_) => "every h/L".into(),
+        },
+    }
 }
 
 /// The whole document.
@@ -403,14 +455,22 @@ pub(crate) fn render(rows: &[Row], doublings: &[Doubling]) -> String {
             _ => "δ̄",
         };
         o.push_str(&format!("\n## {}\n\n", q.title()));
+        if q == Quantity::PullOff {
+            o.push_str(WHICH_PULL_OFF);
+        }
+        let coatings = if q == Quantity::PullOff {
+            "resolved and stable under load for | "
+        } else {
+            ""
+        };
         o.push_str(&format!(
-            "| ρ | exact | {} |\n|{}\n",
+            "| ρ | exact | {coatings}{} |\n|{}\n",
             names
                 .iter()
                 .map(|n| format!("{n}: {first} / ā / s"))
                 .collect::<Vec<_>>()
                 .join(" | "),
-            "---|".repeat(2 + names.len())
+            "---|".repeat(2 + usize::from(q == Quantity::PullOff) + names.len())
         ));
         for r in rows
             .iter()

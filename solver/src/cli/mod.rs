@@ -106,7 +106,7 @@ enum Command {
         #[command(subcommand)]
         command: exact_command::ExactCommand,
     },
-    /// The table of docs/accuracy.md: every model against the exact solution for rho from 1 to 0.1 (all cores; minutes).
+    /// The table of docs/accuracy.md: every model against the exact solution for rho from 1 to 0.02 (all cores; about 40 minutes on two).
     #[command(
         after_help = "Example:\n  thinjkr accuracy --out docs/accuracy.md --reference derive/data/exact_reference.json --figures docs/figures"
     )]
