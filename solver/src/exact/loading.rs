@@ -451,6 +451,11 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> 
                 step = 0.25;
                 continue;
             }
+            // (a search stopped by the user found nothing because it
+            // was stopped, not because nothing is there)
+            if let Err(e) = crate::newton::check_stop() {
+                return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()));
+            }
         }
         if short.unresolved {
             // (the start is never passed from: no search was made there)
