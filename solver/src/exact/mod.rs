@@ -621,7 +621,6 @@ impl ExactState {
 
     /// Its shape's unresolved part under the cutoff of its verdicts: the
     /// one [`ExactState::judged`] measured, else measured now.
-    #[cfg(feature = "cli")]
     pub(crate) fn short_waves(&self) -> undulations::ShortWaves {
         self.shape
             .unwrap_or_else(|| undulations::short_waves(&self.contour, self.stability.cutoff))
