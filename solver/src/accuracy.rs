@@ -351,18 +351,14 @@ fn has_coatings_column(r: &Row) -> bool {
 /// only a contact with such coatings can come to it by unloading through
 /// stable states.
 fn load_coatings(e: &ExactState) -> String {
-    use crate::exact::undulations::{Coatings, Thinnesses};
-    let shape = e.short_waves();
-    match e.coatings.or_else(|| Coatings::of(&e.stability, &shape)) {
+    match e.coatings_measured().0 {
         None => "not computed".into(),
-        Some(c) => match c.load {
+        Some(c) => match c.load.map(|t| t.bounds()) {
             None => "none".into(),
-            Some(Thinnesses { from, to: Some(to) }) if from > 0.0 => {
-                format!("{from:.3} ≤ h/L < {to:.3}")
-            }
-            Some(Thinnesses { to: Some(to), .. }) => format!("h/L < {to:.3}"),
-            Some(Thinnesses { from, to: None }) if from > 0.0 => format!("h/L ≥ {from:.3}"),
-            Some(_) => "every h/L".into(),
+            Some((Some(from), Some(to))) => format!("{from:.3} ≤ h/L < {to:.3}"),
+            Some((None, Some(to))) => format!("h/L < {to:.3}"),
+            Some((Some(from), None)) => format!("h/L ≥ {from:.3}"),
+            Some((None, None)) => "every h/L".into(),
         },
     }
 }

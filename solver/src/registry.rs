@@ -881,15 +881,18 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
 mod tests {
     use super::*;
 
+    /// docs/accuracy.md from the line after `heading` on.
+    fn section(heading: &str) -> &'static str {
+        include_str!("../../docs/accuracy.md")
+            .split(&format!("\n{heading}\n"))
+            .nth(1)
+            .unwrap_or_else(|| panic!("docs/accuracy.md has {heading}"))
+    }
+
     /// The rows `| rho | …` of the table under `heading` in
     /// docs/accuracy.md (the generated measurements), as cells.
     fn table(heading: &str) -> Vec<Vec<String>> {
-        let text = include_str!("../../docs/accuracy.md");
-        let section = text
-            .split(&format!("\n{heading}\n"))
-            .nth(1)
-            .unwrap_or_else(|| panic!("docs/accuracy.md has {heading}"));
-        section
+        section(heading)
             .lines()
             .skip_while(|l| !l.starts_with("|---"))
             .skip(1)
@@ -920,12 +923,7 @@ mod tests {
     /// The index (as in [`table`]'s rows) of the column of `heading`'s
     /// table whose header starts with `name`.
     fn column(heading: &str, name: &str) -> usize {
-        let text = include_str!("../../docs/accuracy.md");
-        let section = text
-            .split(&format!("\n{heading}\n"))
-            .nth(1)
-            .unwrap_or_else(|| panic!("docs/accuracy.md has {heading}"));
-        let header = section
+        let header = section(heading)
             .lines()
             .find(|l| l.starts_with("| ρ |"))
             .unwrap_or_else(|| panic!("{heading} has a table"));

@@ -625,20 +625,17 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
 /// (`exact::undulations::Coatings`), in words; "none" under a control where
 /// no thinness does, with the modes that set the two bounds.
 pub(crate) fn coatings_words(st: &ExactState) -> String {
-    use crate::exact::undulations::{no_thinness_words, Coatings, Thinnesses};
+    use crate::exact::undulations::{no_thinness_words, Thinnesses};
     let stab = &st.stability;
-    let shape = st.short_waves();
-    let Some(coatings) = st.coatings.or_else(|| Coatings::of(stab, &shape)) else {
+    let (Some(coatings), shape) = st.coatings_measured() else {
         return "not judged (its stability was not computed)".into();
     };
     let words = |range: Option<Thinnesses>, modes: &[UnstableMode]| -> String {
-        match range {
-            Some(Thinnesses { from, to: Some(to) }) if from > 0.0 => {
-                format!("from {from:.3} to {to:.3}")
-            }
-            Some(Thinnesses { to: Some(to), .. }) => format!("below {to:.3}"),
-            Some(Thinnesses { from, to: None }) if from > 0.0 => format!("from {from:.3} on"),
-            Some(_) => "every h/L".into(),
+        match range.map(|t| t.bounds()) {
+            Some((Some(from), Some(to))) => format!("from {from:.3} to {to:.3}"),
+            Some((None, Some(to))) => format!("below {to:.3}"),
+            Some((Some(from), None)) => format!("from {from:.3} on"),
+            Some((None, None)) => "every h/L".into(),
             None => format!("none ({})", no_thinness_words(modes, &shape)),
         }
     };

@@ -625,6 +625,19 @@ impl ExactState {
         self.shape
             .unwrap_or_else(|| undulations::short_waves(&self.contour, self.stability.cutoff))
     }
+
+    /// Its [`undulations::Coatings`] (the ones [`ExactState::judged`]
+    /// set, else measured now; `None` where its stability was not
+    /// computed) with the shape they were measured from.
+    pub(crate) fn coatings_measured(
+        &self,
+    ) -> (Option<undulations::Coatings>, undulations::ShortWaves) {
+        let shape = self.short_waves();
+        let coatings = self
+            .coatings
+            .or_else(|| undulations::Coatings::of(&self.stability, &shape));
+        (coatings, shape)
+    }
 }
 
 /// How an exact state was found: the start of its Newton iterations.

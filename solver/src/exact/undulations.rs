@@ -50,6 +50,14 @@ pub(crate) struct Thinnesses {
     pub to: Option<f64>,
 }
 
+impl Thinnesses {
+    /// The range's bounds, each `None` where it has none: the least h/L
+    /// (absent where it is 0) and the h/L it stops at.
+    pub(crate) fn bounds(self) -> (Option<f64>, Option<f64>) {
+        ((self.from > 0.0).then_some(self.from), self.to)
+    }
+}
+
 /// For which coatings (2) gives a state as a contact it resolves: its shape
 /// resolved (h/L below the shape's critical thinness) and, under each
 /// control, every unstable contour mode shorter than the cutoff (h/L at
