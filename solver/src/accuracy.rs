@@ -1038,6 +1038,63 @@ mod tests {
         );
     }
 
+    /// The paragraph "Which pull-off" says what the pull-off table's column
+    /// of coatings shows: the rows that say "none" are those at or below the
+    /// ρ it names, and at each ρ where it says the loading path with
+    /// h/L = 0.5 reaches today's pull-off, 0.5 lies in that row's range
+    /// (only a state resolved and stable under load can be reached so).
+    #[test]
+    fn which_pull_off_agrees_with_the_column_of_coatings() {
+        let doc =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/accuracy.md"))
+                .expect("docs/accuracy.md exists");
+        let after = |text: &'static str, from: &str, to: &str| -> &'static str {
+            let start = text.find(from).unwrap_or_else(|| panic!("{from}")) + from.len();
+            &text[start..start + text[start..].find(to).unwrap()]
+        };
+        let none_from: f64 = after(WHICH_PULL_OFF, "(ρ ≤ ", ")").parse().unwrap();
+        let reached: Vec<f64> = after(WHICH_PULL_OFF, "today's pull-off at ρ = ", ", passing")
+            .split([',', ' '])
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        assert_eq!(reached.len(), 6, "{reached:?}");
+        let header = doc
+            .lines()
+            .position(|l| l.starts_with("| ρ | exact | resolved and stable under load for |"))
+            .expect("the pull-off table");
+        let rows: Vec<(f64, String)> = doc
+            .lines()
+            .skip(header + 2)
+            .take_while(|l| l.starts_with('|'))
+            .map(|l| {
+                let c: Vec<&str> = l.split('|').map(str::trim).collect();
+                (c[1].parse().unwrap(), c[3].to_string())
+            })
+            .collect();
+        assert!(rows.len() >= 10, "{rows:?}");
+        // whether h lies in a range "a ≤ h/L < b", "h/L ≥ a" or "h/L < b"
+        let includes = |range: &str, h: f64| -> bool {
+            let num = |w: &str| w.parse::<f64>().ok();
+            let words: Vec<&str> = range.split(' ').collect();
+            let lower = match words.as_slice() {
+                ["h/L", "≥", a] => num(a),
+                [a, "≤", ..] => num(a),
+                _ => None,
+            };
+            let upper = words
+                .iter()
+                .position(|w| *w == "<")
+                .and_then(|i| num(words[i + 1]));
+            range != "none" && lower.is_none_or(|a| a <= h) && upper.is_none_or(|b| h < b)
+        };
+        for (rho, range) in &rows {
+            assert_eq!(range == "none", *rho <= none_from, "ρ = {rho}: {range}");
+            if reached.contains(rho) {
+                assert!(includes(range, 0.5), "ρ = {rho}: {range}");
+            }
+        }
+    }
+
     /// `docs/accuracy.md` is fresh: the rows ρ = 1 and ρ = 0.9 of its three
     /// tables (pull-off, zero force, F̄ = 10), recomputed here, are the lines
     /// the file holds (the full table takes minutes: `thinjkr accuracy`).
