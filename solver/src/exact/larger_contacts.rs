@@ -503,7 +503,9 @@ mod tests {
                 );
                 if modes >= 384 {
                     st.stability = ex().stability(&st).unwrap();
-                    st = st.judged(crate::cutoff::Cutoff::default());
+                    // the default cutoff, the one `stability` judged under
+                    let cutoff = st.stability.cutoff;
+                    st = st.judged(cutoff);
                     let longest = |m: &[super::super::stability::UnstableMode]| {
                         super::super::undulations::longest_unstable(m).map(|m| (m.n, m.eigenvalue))
                     };

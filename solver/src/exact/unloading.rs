@@ -7,7 +7,8 @@
 //! above the short-wave cutoff (a contact that thin changes shape before it
 //! reaches the minimum).
 //!
-//! Owns: [`unloading`]. May use: `branch` (the trace), `loading` (its
+//! Owns: [`unloading`]. May use: its parent `exact` (the problem and its
+//! states), `branch` (the trace), `loading` (its
 //! start force; the start itself comes from the caller, shared with the
 //! loading path), `stability`, `cutoff`, `error`, `report` (the outcome's
 //! shape).
