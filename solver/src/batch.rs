@@ -329,7 +329,9 @@ fn threads_that_fit() -> Option<usize> {
             .unwrap_or(0);
         // SAFETY: sysconf only reads a constant of the system.
         let page = unsafe { libc::sysconf(libc::_SC_PAGESIZE) }.max(4096) as u64;
-        let free = (lim.rlim_cur as u64).saturating_sub(pages * page);
+        // rlim_t is 32 bits wide on 32-bit Linux
+        #[allow(clippy::useless_conversion)]
+        let free = u64::from(lim.rlim_cur).saturating_sub(pages * page);
         // a stack, its guard, the signal stack, and the 64 MiB the C
         // allocator reserves for a thread's own arena
         let per_thread = THREAD_STACK_BYTES as u64 + (65 << 20);

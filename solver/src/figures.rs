@@ -187,9 +187,7 @@ fn conformal_arms() -> Result<Vec<Figure>> {
 
 /// Fig. 2: quantity (14) against s.
 fn fig2_bc_error() -> Result<Vec<Figure>> {
-    let mut out = Vec::new();
-    // Fig. 2: quantity (14) against s.
-    out.push(Figure {
+    Ok(vec![Figure {
         file: "fig2_bc_error.svg",
         title: "Fig. 2: error (14) of the boundary condition (3)₂".into(),
         x_label: "aspect ratio s",
@@ -204,8 +202,7 @@ fn fig2_bc_error() -> Result<Vec<Figure>> {
         shade: Vec::new(),
         shade_label: "",
         equal: false,
-    });
-    Ok(out)
+    }])
 }
 
 /// Fig. 3: the axisymmetric force–displacement curve.

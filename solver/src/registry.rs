@@ -406,8 +406,8 @@ impl Choice {
             crate::report::AnyState::Ellipse(st) => {
                 if st.outside_stated_range {
                     warnings.push(format!(
-                        "rho = R2/R1 = {} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
-                        format!("{:.6}", sc.rho)
+                        "rho = R2/R1 = {:.6} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
+                        sc.rho
                     ));
                 }
                 if st.beyond_size_fold {
@@ -464,8 +464,8 @@ impl Choice {
         }
         if si.h_over_a > 0.1 {
             warnings.push(format!(
-                "h/a = {}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
-                format!("{:.6}", si.h_over_a)
+                "h/a = {:.6}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
+                si.h_over_a
             ));
         }
         Ok(PhysicalAnswer {
@@ -988,8 +988,8 @@ mod tests {
             let e = first(&r03[cell]).unwrap().abs();
             assert!((e - claim).abs() < 0.0005, "{e} against {claim}");
         }
-        for cell in max..=apex45 {
-            assert!(first(&r03[cell]).is_none_or(|e| e.abs() > 0.005));
+        for cell in &r03[max..=apex45] {
+            assert!(first(cell).is_none_or(|e| e.abs() > 0.005));
         }
         let stored = crate::exact::stored::stored().expect("the stored pull-offs");
         assert!(stored.reached <= STORED_REACHED, "{}", stored.reached);
@@ -1009,8 +1009,8 @@ mod tests {
             let row = ellipse.iter().find(|row| rho(row) == r).unwrap();
             let max_off = first(&row[max]).unwrap();
             assert!((max_off - claim).abs() < to, "max at rho {r}: {max_off}");
-            for cell in max + 1..=apex45 {
-                assert!(first(&row[cell]).is_none_or(|e| e.abs() > max_off.abs()));
+            for cell in &row[max + 1..=apex45] {
+                assert!(first(cell).is_none_or(|e| e.abs() > max_off.abs()));
             }
         }
         // energy at zero force and F = 10

@@ -153,9 +153,11 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     if e.kind != "conformal" {
         return Err(format!("kind {:?} is not one this solver knows", e.kind));
     }
-    if !(e.rho_min > 0.0 && e.rho_min <= 1.0)
-        || !(e.trace_start_a > 0.0 && e.trace_start_a <= 100.0)
-    {
+    // written so that a NaN is out of range too
+    #[allow(clippy::nonminimal_bool)]
+    let out_of_range = !(e.rho_min > 0.0 && e.rho_min <= 1.0)
+        || !(e.trace_start_a > 0.0 && e.trace_start_a <= 100.0);
+    if out_of_range {
         return Err("rho_min or trace_start_a out of range".into());
     }
     if e.rho_min_why.chars().count() > MAX_WHY_CHARS || e.rho_min_why.contains('\n') {

@@ -1667,6 +1667,77 @@ fn check_rho(family: &Family, rho: f64) -> Result<f64> {
     Ok(rho)
 }
 
+/// `conformal:K` in the solver's one model interface: x = c₁ … c_K
+/// (dynamic), the residuals ∇_c Π̄ at fixed δ̄, F̄ = ∂Π̄/∂δ̄.
+impl crate::equations::Equations for Conformal {
+    type Dim = nalgebra::Dyn;
+    fn dim(&self) -> nalgebra::Dyn {
+        nalgebra::Dyn(self.terms())
+    }
+    fn label(&self) -> String {
+        self.name()
+    }
+    fn residuals_and_jacobian(
+        &self,
+        c: &DVector<f64>,
+        rho: f64,
+        delta_bar: f64,
+    ) -> (DVector<f64>, DMatrix<f64>) {
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        (
+            DVector::from_fn(k, |i, _| e.grad[i]),
+            DMatrix::from_fn(k, k, |i, j| e.hess[i][j]),
+        )
+    }
+    fn residuals_d_delta(&self, c: &DVector<f64>, rho: f64, delta_bar: f64) -> DVector<f64> {
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        DVector::from_fn(k, |i, _| e.hess[i][k])
+    }
+    fn force_bar(&self, c: &DVector<f64>, rho: f64, delta_bar: f64) -> (f64, DVector<f64>, f64) {
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        (
+            e.grad[k],
+            DVector::from_fn(k, |j, _| e.hess[k][j]),
+            e.hess[k][k],
+        )
+    }
+    fn linearised(
+        &self,
+        c: &DVector<f64>,
+        rho: f64,
+        delta_bar: f64,
+    ) -> crate::equations::Linearised<nalgebra::Dyn> {
+        // one evaluation of Π̄ with its first and second derivatives
+        let k = self.terms();
+        let e = self.potential(&c.clone().push(delta_bar), rho);
+        crate::equations::Linearised {
+            r: DVector::from_fn(k, |i, _| e.grad[i]),
+            j: DMatrix::from_fn(k, k, |i, j| e.hess[i][j]),
+            r_delta: DVector::from_fn(k, |i, _| e.hess[i][k]),
+            force: e.grad[k],
+            force_x: DVector::from_fn(k, |j, _| e.hess[k][j]),
+            force_delta: e.hess[k][k],
+        }
+    }
+    fn a_bar_gradient(&self) -> DVector<f64> {
+        // ā = w(1) = Σ c_k
+        DVector::from_element(self.terms(), 1.0)
+    }
+    fn residual_scale(&self, c: &DVector<f64>, _delta_bar: f64) -> f64 {
+        1.0 + c.amax().powi(7)
+    }
+    fn admissible(&self, c: &DVector<f64>) -> Result<()> {
+        self.univalence(c.as_slice())
+    }
+    fn size_and_shape(&self, c: &DVector<f64>) -> (f64, f64) {
+        let (a, b) = self.semi_axes(c.as_slice());
+        (a, b / a)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1818,76 +1889,5 @@ mod tests {
                 .unwrap_or_else(|e| panic!("K = {k}: {e}"));
             assert!(st.force_bar < 0.0 && st.a_bar > 1.0, "K = {k}: {st:?}");
         }
-    }
-}
-
-/// `conformal:K` in the solver's one model interface: x = c₁ … c_K
-/// (dynamic), the residuals ∇_c Π̄ at fixed δ̄, F̄ = ∂Π̄/∂δ̄.
-impl crate::equations::Equations for Conformal {
-    type Dim = nalgebra::Dyn;
-    fn dim(&self) -> nalgebra::Dyn {
-        nalgebra::Dyn(self.terms())
-    }
-    fn label(&self) -> String {
-        self.name()
-    }
-    fn residuals_and_jacobian(
-        &self,
-        c: &DVector<f64>,
-        rho: f64,
-        delta_bar: f64,
-    ) -> (DVector<f64>, DMatrix<f64>) {
-        let k = self.terms();
-        let e = self.potential(&c.clone().push(delta_bar), rho);
-        (
-            DVector::from_fn(k, |i, _| e.grad[i]),
-            DMatrix::from_fn(k, k, |i, j| e.hess[i][j]),
-        )
-    }
-    fn residuals_d_delta(&self, c: &DVector<f64>, rho: f64, delta_bar: f64) -> DVector<f64> {
-        let k = self.terms();
-        let e = self.potential(&c.clone().push(delta_bar), rho);
-        DVector::from_fn(k, |i, _| e.hess[i][k])
-    }
-    fn force_bar(&self, c: &DVector<f64>, rho: f64, delta_bar: f64) -> (f64, DVector<f64>, f64) {
-        let k = self.terms();
-        let e = self.potential(&c.clone().push(delta_bar), rho);
-        (
-            e.grad[k],
-            DVector::from_fn(k, |j, _| e.hess[k][j]),
-            e.hess[k][k],
-        )
-    }
-    fn linearised(
-        &self,
-        c: &DVector<f64>,
-        rho: f64,
-        delta_bar: f64,
-    ) -> crate::equations::Linearised<nalgebra::Dyn> {
-        // one evaluation of Π̄ with its first and second derivatives
-        let k = self.terms();
-        let e = self.potential(&c.clone().push(delta_bar), rho);
-        crate::equations::Linearised {
-            r: DVector::from_fn(k, |i, _| e.grad[i]),
-            j: DMatrix::from_fn(k, k, |i, j| e.hess[i][j]),
-            r_delta: DVector::from_fn(k, |i, _| e.hess[i][k]),
-            force: e.grad[k],
-            force_x: DVector::from_fn(k, |j, _| e.hess[k][j]),
-            force_delta: e.hess[k][k],
-        }
-    }
-    fn a_bar_gradient(&self) -> DVector<f64> {
-        // ā = w(1) = Σ c_k
-        DVector::from_element(self.terms(), 1.0)
-    }
-    fn residual_scale(&self, c: &DVector<f64>, _delta_bar: f64) -> f64 {
-        1.0 + c.amax().powi(7)
-    }
-    fn admissible(&self, c: &DVector<f64>) -> Result<()> {
-        self.univalence(c.as_slice())
-    }
-    fn size_and_shape(&self, c: &DVector<f64>) -> (f64, f64) {
-        let (a, b) = self.semi_axes(c.as_slice());
-        (a, b / a)
     }
 }

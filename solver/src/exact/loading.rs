@@ -1137,8 +1137,7 @@ mod tests {
         let before = path
             .states
             .iter()
-            .filter(|st| st.force_bar > pass.at.force_bar)
-            .last()
+            .rfind(|st| st.force_bar > pass.at.force_bar)
             .unwrap();
         assert!(
             (before.force_bar - 11.6105).abs() < 1e-3,
