@@ -350,7 +350,10 @@ fn table_source(
         d.ansatz.name(),
         potential.len()
     );
+    // Some coefficients are the rationals 1/2, 1/4, … times π, rounded:
+    // clippy takes them for hand-typed approximations of the constants.
     let file = quote! {
+        #![allow(clippy::approx_constant)]
         #[doc = #doc]
         pub static POTENTIAL: &[(u64, f64)] = #pot;
         /// ∂p̄/∂r at |ζ| = 1 as Σ g_n(c, δ̄; μ) cos(nθ): (n, rows of g_n).

@@ -2,6 +2,7 @@
 //!
 //! The tables of `conformal:8`; every member of the family uses a prefix of them (see each member's module).
 
+#![allow(clippy::approx_constant)]
 /// Π̄(c, δ̄; μ) of `conformal:8`, 14084 monomials, coefficients rounded from the exact rationals times π.
 pub static POTENTIAL: &[(u64, f64)] = &[
     (2, -1.5707963267948966),
