@@ -126,8 +126,10 @@ fn every_module_uses_only_what_its_charter_names() {
             .filter(|l| !l.trim_start().starts_with("//"))
             .collect::<Vec<_>>()
             .join("\n");
+        // a submodule (a file beside its parent's mod.rs)
+        let is_sub = parts.len() == 2 && parts[1] != "mod";
         // a path to the module itself through its parent is the module
-        let code = if parts.len() == 2 && parts[1] != "mod" {
+        let code = if is_sub {
             code.replace(&format!("crate::{name}::{}::", parts[1]), "self::")
         } else {
             code
@@ -136,23 +138,14 @@ fn every_module_uses_only_what_its_charter_names() {
         // a submodule may name its parent's items through `super::` (in
         // its code before the tests, whose `super::` is the file's module)
         let before_tests = code.split("#[cfg(test)]").next().unwrap_or("");
-        if parts.len() == 2
-            && parts[1] != "mod"
-            && !segments(before_tests, "super::").is_empty()
-            && !parent_named
-        {
+        if is_sub && !segments(before_tests, "super::").is_empty() && !parent_named {
             used.insert(name.clone());
         }
-        let own = if parts.len() == 2 && parts[1] != "mod" {
-            &parts[1]
-        } else {
-            &name
-        };
+        let own = if is_sub { &parts[1] } else { &name };
         for u in used {
             let m = module_of(&u);
             // a module may use itself; a submodule its parent only where
             // its charter names the parent
-            let is_sub = parts.len() == 2 && parts[1] != "mod";
             let fine =
                 (m == name && (!is_sub || parent_named)) || &m == own || allowed.contains(&m);
             if !fine {
