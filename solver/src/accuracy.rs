@@ -1043,6 +1043,7 @@ mod tests {
     /// ρ it names, and at each ρ where it says the loading path with
     /// h/L = 0.5 reaches today's pull-off, 0.5 lies in that row's range
     /// (only a state resolved and stable under load can be reached so).
+    #[cfg(feature = "cli")]
     #[test]
     fn which_pull_off_agrees_with_the_column_of_coatings() {
         let doc =
