@@ -106,8 +106,8 @@ pub(crate) enum ExactCommand {
         /// Also trace the unloading path: the family from its state at F̄ = 10 towards smaller ā to its first
         /// minimum of F̄, whether that is this pull-off, and the thinness h/L below which a state on the way is
         /// unstable above the short-wave cutoff; and the loading path by descent: the load lowered from F̄ = 10,
-        /// where the contact loses its state and whether it comes off there (seconds at ρ ≥ 0.8, minutes below;
-        /// at ρ = 0.5 with h/L = 0.28 it had not ended after 57 minutes).
+        /// where the contact loses its state and whether it comes off there (seconds at ρ ≥ 0.8, minutes below:
+        /// up to 7 at ρ = 0.3).
         #[arg(long)]
         unloading: bool,
         /// Print JSON.

@@ -34,6 +34,10 @@
 //! step (the reparametrisations move no contour and would leave M
 //! singular).
 //!
+//! Where the held modes' equilibrium keeps cutting the steps short (a
+//! longer trial finds none, [`STALL_STEPS`] steps in a row), the descent
+//! stalls: it is not settled there, rather than creeping on.
+//!
 //! Owns: [`Landing`], [`descend`]. May use: `exact` (the problem, its
 //! energy and Newton), `control`, `cutoff`, `newton` (the stop request),
 //! nalgebra.
@@ -65,6 +69,14 @@ const MAX_STEPS: usize = 600;
 /// The gradient's norm in the metric (the normal speed's L² norm) below
 /// which the descent has reached a stationary point.
 const STATIONARY: f64 = 1e-9;
+
+/// How many steps in a row the descent may take whose length the held
+/// modes' equilibrium cut (a longer trial step found none) before it is
+/// said to stall there: a descent pinned to such steps creeps (at ρ = 0.5
+/// with h/L = 0.28, from the state at F̄ = 8.21 unstable to n = 10, it
+/// moved ā by 3e-6 a step, one step a second, so 600 steps took 12 min and
+/// the loading path's bracketing repeated them for hours).
+const STALL_STEPS: usize = 20;
 
 /// How far a saddle is left along its unstable direction, relative to ā
 /// (in the metric's unit norm).
@@ -308,6 +320,8 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
     let mut tau: f64 = 1e6;
     // whether the last pass found no step above round-off
     let mut at_rest = false;
+    // the steps in a row whose length the held modes' equilibrium cut
+    let mut cut_by_held = 0;
     for _ in 0..MAX_STEPS {
         if crate::newton::check_stop().is_err() {
             return Landing::NotSettled("stopped at the caller's request".into());
@@ -392,6 +406,19 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
         if stationary {
             at_rest = true;
             continue;
+        }
+        cut_by_held = if moved && unreachable_equilibrium {
+            cut_by_held + 1
+        } else {
+            0
+        };
+        if cut_by_held == STALL_STEPS {
+            let at = ex.contour_of(&p.u);
+            return Landing::NotSettled(format!(
+                "the descent stalls at a = {:.4}, s = {:.4}: for {STALL_STEPS} steps in a row a longer step found no equilibrium of the contour modes shorter than the cutoff",
+                at.a_bar(),
+                at.b_bar() / at.a_bar()
+            ));
         }
         if !moved {
             let at = ex.contour_of(&p.u);

@@ -1048,10 +1048,19 @@ mod tests {
     /// beyond and holds that piece's states, resolved and stable above the
     /// cutoff, down to the pull-off `exact pull-off` reports (F̄ = −3.2408,
     /// found there from `conformal:8`'s pull-off), where it is lost.
+    ///
+    /// With h/L = 0.28 (cutoff 1.76) the path from the same start passes
+    /// the band of n = 12 (1.56 long) instead and is lost on the piece
+    /// beyond, at the state it lands on (F̄ = 7.69), which is unstable
+    /// under load to n = 10 (1.84 long, resolved at this cutoff): the
+    /// descent from it stalls where the modes shorter than the cutoff cut
+    /// its steps short (before the stall was a rule it crept on, one step
+    /// of 3e-6 in ā a second, and the path had not ended after 57 min).
     #[test]
     fn at_rho_0_5_the_path_passes_three_bands_to_the_pull_off() {
         let cutoff = Cutoff::for_thinness(0.5).unwrap();
-        let path = loading_path(&start(0.5).unwrap(), cutoff).unwrap();
+        let from = start(0.5).unwrap();
+        let path = loading_path(&from, cutoff).unwrap();
         let modes: Vec<usize> = path.passes.iter().map(|b| b.mode).collect();
         assert_eq!(modes, [10, 8, 6]);
         let first = &path.passes[0];
@@ -1078,6 +1087,24 @@ mod tests {
         held_resolved_and_not_unstable(&path.states, cutoff);
         let (pull_off, _) = crate::exact::pull_off_resolved(0.5).unwrap();
         reaches(&path, &pull_off);
+
+        let thin = Cutoff::for_thinness(0.28).unwrap();
+        let path = loading_path(&from, thin).unwrap();
+        let modes: Vec<usize> = path.passes.iter().map(|b| b.mode).collect();
+        assert_eq!(modes, [12]);
+        let PathEnd::Lost { state, why } = &path.end else {
+            panic!("not lost: {:?}", path.end);
+        };
+        assert!(
+            state.force_bar > 7.6 && state.force_bar < 7.8,
+            "{}",
+            state.force_bar
+        );
+        assert!((state.force_bar - path.passes[0].to.force_bar).abs() < 1e-9);
+        let unstable: Vec<usize> = unstable_resolved(state, thin).iter().map(|m| m.n).collect();
+        assert!(unstable.contains(&10), "{unstable:?}");
+        assert!(why.contains("the descent stalls"), "{why}");
+        assert!(path.states.iter().all(|st| st.bc_error <= RESOLVED));
     }
 
     /// docs/exact.md ("The loading path by descent", ρ = 0.3 from the
