@@ -1015,6 +1015,33 @@ impl Exact {
         jac
     }
 
+    /// Σ_j λ_j ∂²G_j/∂u_k∂u_l for the arclength representation's rows
+    /// G_j ([`Exact::gauge_rows`]) in the coefficients (coefficients ×
+    /// coefficients): the rows are quadratic in them, |z′|² with
+    /// z′ = Σ_l u_l i m_l e_l, so ∂²|z′(θ_i)|²/∂u_k∂u_l =
+    /// 2 m_k m_l Re(ē_k e_l)(θ_i), summed with the weights
+    /// Σ_j λ_j cos 2jθ_i (the rows' modes) and the gauge weight. With λ the
+    /// gauge's multipliers it is what the curvature of the gauge adds to a
+    /// Hessian in the coefficients that move on it (`exact::descent`).
+    pub(crate) fn gauge_curvature(&self, lambda: &DVector<f64>) -> DMatrix<f64> {
+        let np = self.truncation.arclength;
+        let m = self.truncation.coefficients();
+        let n = self.grid.len();
+        if np == 0 {
+            return DMatrix::zeros(m, m);
+        }
+        let mut weights = self.cos_modes.rows(1, np).transpose() * lambda;
+        if let Some(w) = &self.gauge_weight {
+            weights.component_mul_assign(w);
+        }
+        let mult = &self.grid.multipliers;
+        let basis = &self.grid.basis;
+        let re = DMatrix::from_fn(n, m, |i, k| mult[k] * basis[k][i].re);
+        let im = DMatrix::from_fn(n, m, |i, k| mult[k] * basis[k][i].im);
+        let weighted = |e: &DMatrix<f64>| DMatrix::from_fn(n, m, |i, k| weights[i] * e[(i, k)]);
+        (weighted(&re).transpose() * &re + weighted(&im).transpose() * &im) * 2.0
+    }
+
     /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 from ∂p̄/∂ν at the grid
     /// points `dn`: the equations' residuals besides the held quantity.
     pub(crate) fn cos_modes_of(&self, dn: &[f64]) -> DVector<f64> {
