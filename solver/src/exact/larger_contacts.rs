@@ -422,6 +422,65 @@ mod tests {
         );
     }
 
+    /// The row `which` of docs/exact.md's table of the notched zero-force
+    /// states' stability holds `computed` (n, wavelength, eigenvalue under
+    /// load, under displacement, critical thinness under load, the shape's
+    /// critical thinness and its mode) to its digits: each number within
+    /// one unit of its last printed digit.
+    fn the_docs_stability_row_is(which: &str, computed: &[f64; 7]) {
+        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
+            .unwrap();
+        let row = doc
+            .lines()
+            .find(|l| l.starts_with(&format!("| {which} | n = ")))
+            .unwrap_or_else(|| panic!("no row {which}"));
+        // every number of the row, with the unit of its last digit
+        let mut numbers = Vec::new();
+        let text = row.replace('\u{2212}', "-");
+        let mut chars = text.char_indices().peekable();
+        while let Some((i, c)) = chars.next() {
+            let starts = c.is_ascii_digit()
+                || (c == '-' && chars.peek().is_some_and(|(_, d)| d.is_ascii_digit()));
+            if !starts {
+                continue;
+            }
+            let mut end = i + c.len_utf8();
+            while let Some(&(j, d)) = chars.peek() {
+                if d.is_ascii_digit()
+                    || d == '.'
+                    || d == 'e'
+                    || (d == '-' && text[..j].ends_with('e'))
+                {
+                    end = j + d.len_utf8();
+                    chars.next();
+                } else {
+                    break;
+                }
+            }
+            let s = text[i..end].trim_end_matches('.');
+            let decimals = s.split('.').nth(1).map_or(0, |f| f.len()) as i32;
+            // (a tolerance such as 4e-13 is no value of the state; an
+            // integer, a mode, is held exactly)
+            if !s.contains('e') {
+                let unit = if decimals == 0 {
+                    0.0
+                } else {
+                    10f64.powi(-decimals)
+                };
+                numbers.push((s.parse::<f64>().unwrap(), unit));
+            }
+        }
+        // n, wavelength, under load, under displacement, the two
+        // thinnesses, the shape's mode: the row's first seven numbers
+        let wanted = &numbers[..7];
+        for (k, ((printed, unit), got)) in wanted.iter().zip(computed).enumerate() {
+            assert!(
+                (printed - got).abs() <= *unit,
+                "{which}, column {k}: docs {printed}, computed {got}"
+            );
+        }
+    }
+
     /// Zero force at ρ = 0.3, below the fold in ρ of its family (0.357): on
     /// the arm of the contact size 0.44 above the zero-force state at
     /// ρ = 0.4, traced down with 256 modes, F̄ passes 0 twice, on either side
@@ -431,7 +490,8 @@ mod tests {
     /// their stability is computed too: both are unstable from n = 12 on
     /// under either control, the eigenvalue of n = 12 the same to 1e-6
     /// with 448 and 512 modes, and no thinness makes either a stable
-    /// contact whose shape (2) resolves. The route's
+    /// contact whose shape (2) resolves; docs/exact.md's table of their
+    /// stability holds the 512 modes' numbers to its digits. The route's
     /// trace, its modes raised on the way ([`traced_with_raised_modes`]),
     /// reaches the first of them. About 8 min (release); run with
     /// `--ignored`.
@@ -491,6 +551,11 @@ mod tests {
             // the least eigenvalue of the longest unstable mode under load
             // control, at each truncation from 384 modes on
             let mut longest_eigenvalues = Vec::new();
+            // what docs/exact.md's table of their stability prints, from
+            // the 512 modes: the longest unstable mode under load (n,
+            // wavelength, eigenvalue), its eigenvalue under displacement,
+            // the critical thinness under load, the shape's and its mode
+            let mut printed = None;
             for modes in [256, 320, 384, 448, 512] {
                 let ex = || Exact::new(0.3, Truncation::in_arclength(modes)).unwrap();
                 let mut st = ex()
@@ -541,6 +606,19 @@ mod tests {
                             < st.stability.critical_thinness_load.unwrap()
                     );
                     longest_eigenvalues.push(load.unwrap().1);
+                    let wavelength =
+                        super::super::undulations::longest_unstable(&st.stability.load)
+                            .unwrap()
+                            .wavelength;
+                    printed = Some([
+                        12.0,
+                        wavelength,
+                        load.unwrap().1,
+                        displacement.unwrap().1,
+                        st.stability.critical_thinness_load.unwrap(),
+                        shape.critical_thinness.unwrap(),
+                        shape.critical_mode.unwrap() as f64,
+                    ]);
                 }
                 finest = Some(st);
             }
@@ -550,6 +628,7 @@ mod tests {
                 (at_448 - at_512).abs() <= 1e-6 * at_512.abs(),
                 "{which}: {at_448} with 448 modes, {at_512} with 512"
             );
+            the_docs_stability_row_is(which, &printed.unwrap());
             let finest = finest.unwrap();
             if which == "before the minimum" {
                 assert!(
