@@ -5,12 +5,25 @@
 
 use thinjkr_derive::generate::{outputs, remove_stale, workspace_root, write_all};
 
+/// One test that does both (each derivation takes about a minute in the
+/// test profile): the derivation run twice gives the same files byte for
+/// byte, and those files are the committed ones.
 #[test]
-fn generated_files_are_fresh() {
-    let outputs = outputs().expect("derivation and check run");
+fn generation_is_deterministic_and_the_generated_files_are_fresh() {
+    let first = outputs().expect("derivation and check run");
+    let again = outputs().expect("second run");
+    assert_eq!(first.len(), again.len());
+    for (x, y) in first.iter().zip(&again) {
+        assert_eq!(x.path, y.path);
+        assert!(
+            x.contents == y.contents,
+            "{} differs between two runs",
+            x.path.display()
+        );
+    }
     let root = workspace_root();
-    let changed = write_all(&root, &outputs).expect("can write generated files");
-    let gone = remove_stale(&root, &outputs).expect("can remove stale generated files");
+    let changed = write_all(&root, &first).expect("can write generated files");
+    let gone = remove_stale(&root, &first).expect("can remove stale generated files");
     assert!(
         gone.is_empty(),
         "generated files no family or model writes any more were removed: {gone:?}\n\
@@ -21,19 +34,4 @@ fn generated_files_are_fresh() {
         "generated files were stale and have been rewritten: {changed:?}\n\
          review the diff and commit them (cargo run -p thinjkr-derive -- generate does the same)"
     );
-}
-
-#[test]
-fn generation_is_deterministic() {
-    let a = outputs().expect("first run");
-    let b = outputs().expect("second run");
-    assert_eq!(a.len(), b.len());
-    for (x, y) in a.iter().zip(&b) {
-        assert_eq!(x.path, y.path);
-        assert!(
-            x.contents == y.contents,
-            "{} differs between two runs",
-            x.path.display()
-        );
-    }
 }
