@@ -1039,6 +1039,27 @@ mod tests {
         }
     }
 
+    /// At ρ = 0.9 (h/L = 0.5) the path holds its state down to the pull-off
+    /// `exact pull-off` reports (F̄ = −4.46609, ā = 2.34244), where it is
+    /// lost; the descent from there at the force just below grows ā and
+    /// stalls at ā = 2.5238 (docs/exact.md's row ρ = 0.9): for
+    /// `descent::STALL_STEPS` (20) steps in a row a longer step found no equilibrium of the modes shorter than the
+    /// cutoff, and where the contact goes is not settled (before the stall
+    /// rule the descent crept on to about 2.52 until no step lowered the
+    /// potential).
+    #[test]
+    fn at_rho_0_9_the_path_is_lost_at_the_pull_off_where_the_descent_stalls() {
+        let cutoff = Cutoff::for_thinness(0.5).unwrap();
+        let path = loading_path(&start(0.9).unwrap(), cutoff).unwrap();
+        assert!(path.jumps.is_empty());
+        let (pull_off, _) = crate::exact::pull_off_resolved(0.9).unwrap();
+        reaches(&path, &pull_off);
+        let PathEnd::Lost { why, .. } = &path.end else {
+            panic!("not lost: {:?}", path.end);
+        };
+        assert!(why.contains("the descent stalls at a = 2.52"), "{why}");
+    }
+
     /// At ρ = 0.5 the path from F̄ = 10 (h/L = 0.5) meets three bands whose
     /// modes are shorter than the cutoff (3.14): n = 10 (its arm's lobes,
     /// 1.86 long, pass 1 % of ā at F̄ = 8.44 on the returning stretch past
@@ -1048,14 +1069,7 @@ mod tests {
     /// beyond and holds that piece's states, resolved and stable above the
     /// cutoff, down to the pull-off `exact pull-off` reports (F̄ = −3.2408,
     /// found there from `conformal:8`'s pull-off), where it is lost.
-    ///
-    /// With h/L = 0.28 (cutoff 1.76) the path from the same start passes
-    /// the band of n = 12 (1.56 long) instead and is lost on the piece
-    /// beyond, at the state it lands on (F̄ = 7.69), which is unstable
-    /// under load to n = 10 (1.84 long, resolved at this cutoff): the
-    /// descent from it stalls where the modes shorter than the cutoff cut
-    /// its steps short (before the stall was a rule it crept on, one step
-    /// of 3e-6 in ā a second, and the path had not ended after 57 min).
+    /// (The same start with h/L = 0.28: the ignored test below.)
     #[test]
     fn at_rho_0_5_the_path_passes_three_bands_to_the_pull_off() {
         let cutoff = Cutoff::for_thinness(0.5).unwrap();
@@ -1087,7 +1101,21 @@ mod tests {
         held_resolved_and_not_unstable(&path.states, cutoff);
         let (pull_off, _) = crate::exact::pull_off_resolved(0.5).unwrap();
         reaches(&path, &pull_off);
+    }
 
+    /// With h/L = 0.28 (cutoff 1.76) the path from ρ = 0.5's start passes
+    /// the band of n = 12 (1.56 long) instead of n = 10 and is lost on the
+    /// piece beyond, at the state it lands on (F̄ = 7.69), which is unstable
+    /// under load to n = 10 (1.84 long, resolved at this cutoff): the
+    /// descent from it stalls where the modes shorter than the cutoff cut
+    /// its steps short (before the stall was a rule it crept on, one step
+    /// of 3e-6 in ā a second, and the path had not ended after 57 min).
+    /// docs/exact.md's row ρ = 0.5, h/L = 0.28. Ignored: about 5 minutes
+    /// in the test profile; a stall the tests run is at ρ = 0.9 below.
+    #[test]
+    #[ignore = "about 5 minutes in the test profile: run with --ignored after changing the descent"]
+    fn at_rho_0_5_and_h_0_28_the_path_passes_n_12_and_the_descent_stalls() {
+        let from = start(0.5).unwrap();
         let thin = Cutoff::for_thinness(0.28).unwrap();
         let path = loading_path(&from, thin).unwrap();
         let modes: Vec<usize> = path.passes.iter().map(|b| b.mode).collect();
