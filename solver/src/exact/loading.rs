@@ -1110,10 +1110,10 @@ mod tests {
     /// descent from it stalls where the modes shorter than the cutoff cut
     /// its steps short (before the stall was a rule it crept on, one step
     /// of 3e-6 in ā a second, and the path had not ended after 57 min).
-    /// docs/exact.md's row ρ = 0.5, h/L = 0.28. Ignored: about 5 minutes
-    /// in the test profile; a stall the tests run is at ρ = 0.9 below.
+    /// docs/exact.md's row ρ = 0.5, h/L = 0.28. Ignored: 101 s in the test
+    /// profile (2026-11-30); a stall the tests run is at ρ = 0.9 above.
     #[test]
-    #[ignore = "about 5 minutes in the test profile: run with --ignored after changing the descent"]
+    #[ignore = "about 100 s in the test profile: run with --ignored after changing the descent"]
     fn at_rho_0_5_and_h_0_28_the_path_passes_n_12_and_the_descent_stalls() {
         let from = start(0.5).unwrap();
         let thin = Cutoff::for_thinness(0.28).unwrap();
