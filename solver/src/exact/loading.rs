@@ -1040,13 +1040,14 @@ mod tests {
     }
 
     /// At ρ = 0.9 (h/L = 0.5) the path holds its state down to the pull-off
-    /// `exact pull-off` reports (F̄ = −4.46609, ā = 2.34244), where it is
-    /// lost; the descent from there at the force just below grows ā and
-    /// stalls at ā = 2.5238 (docs/exact.md's row ρ = 0.9): for
-    /// `descent::STALL_STEPS` (20) steps in a row a longer step found no equilibrium of the modes shorter than the
-    /// cutoff, and where the contact goes is not settled (before the stall
-    /// rule the descent crept on to about 2.52 until no step lowered the
-    /// potential).
+    /// `exact pull-off` reports (F̄ = −4.46609, ā = 2.34244, found there by
+    /// another route), where it is lost; the descent from there at the
+    /// force just below grows ā and stalls: for `descent::STALL_STEPS` (20)
+    /// steps in a row a longer step found no equilibrium of the modes
+    /// shorter than the cutoff, and where the contact goes is not settled
+    /// (before the stall rule the descent crept on until no step lowered
+    /// the potential). Where it stalls is the ā docs/exact.md's row ρ = 0.9
+    /// prints.
     #[test]
     fn at_rho_0_9_the_path_is_lost_at_the_pull_off_where_the_descent_stalls() {
         let cutoff = Cutoff::for_thinness(0.5).unwrap();
@@ -1057,7 +1058,26 @@ mod tests {
         let PathEnd::Lost { why, .. } = &path.end else {
             panic!("not lost: {:?}", path.end);
         };
-        assert!(why.contains("the descent stalls at a = 2.52"), "{why}");
+        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
+            .unwrap();
+        let row = doc
+            .lines()
+            .find(|l| l.starts_with("| 0.9 | 0.5 |"))
+            .expect("docs/exact.md has the path's row at rho = 0.9");
+        let printed = row
+            .split("stalls at ā = ")
+            .nth(1)
+            .and_then(|rest| rest.split(' ').next())
+            .expect("the row says where the descent stalls");
+        assert!(
+            why.contains(&format!("the descent stalls at a = {printed},")),
+            "{why} (docs: {printed})"
+        );
+        // the descent grows ā from the pull-off
+        assert!(
+            printed.parse::<f64>().unwrap() > pull_off.a_bar,
+            "{printed}"
+        );
     }
 
     /// At ρ = 0.5 the path from F̄ = 10 (h/L = 0.5) meets three bands whose
