@@ -758,10 +758,31 @@ fn past_folds(
             .iter()
             .position(|t| t.modes >= truncation.modes)
             .unwrap_or(tries.len() - 1);
+        // the rungs from the trace's on; where they are an escalation's,
+        // the arclength representation's above its last too, so that an
+        // escalation's answer is converged (a single rung left of it would
+        // be answered as a user's choice of modes, resolved only: at F̄ = 0
+        // for ρ = 0.36 the conformal form's 96 modes leave 3e-7)
+        let finer: Vec<super::Truncation> = if tries.len() > 1 {
+            let last = tries[tries.len() - 1].modes;
+            tries[from..]
+                .iter()
+                .copied()
+                .chain(
+                    super::resolve::arclength_tries()
+                        .into_iter()
+                        .filter(|t| t.modes > last),
+                )
+                .collect()
+        } else {
+            tries[from..].to_vec()
+        };
         for crossing in found {
-            let again = super::resolved(gap, rho, &tries[from..], |ex| {
+            let again = super::resolved(gap, rho, &finer, |ex| {
                 let mut contour = crossing.contour.clone();
-                contour.b.resize(ex.truncation().modes, 0.0);
+                if ex.truncation().arclength == 0 {
+                    contour.b.resize(ex.truncation().modes, 0.0);
+                }
                 ex.solve_at(control, &contour, crossing.delta_bar)
                     .and_then(|st| ex.accept_resolved(control, st))
             });

@@ -1145,6 +1145,32 @@ mod tests {
         }
     }
 
+    /// The route past a band's folds re-solves each crossing with the rungs
+    /// of the escalation from the trace's on; where the trace took the last
+    /// (96 modes), that one rung had been answered as a user's choice of
+    /// modes, resolved only: zero force at ρ = 0.36 came with a boundary
+    /// error of 3.0e-7. Now the arclength representation's rungs follow, and
+    /// the answer is converged. A second route: the state at ρ = 0.37 (found
+    /// directly) continued to 0.36 in the arclength representation. ā, s and
+    /// δ̄ agree to 1e-9 (measured: 3.1e-14 and less; 15 s in release).
+    #[test]
+    fn a_state_past_a_bands_fold_is_converged_in_the_arclength_representation() {
+        let control = Hold::Force(0.0);
+        let direct = at_resolved(0.36, control).unwrap();
+        assert_eq!(direct.route, Route::PastFold);
+        assert!(direct.bc_error <= CONVERGED, "{:e}", direct.bc_error);
+        let above = at_resolved(0.37, control).unwrap();
+        let continued = continued_in_rho_along(&above, 0.36, control, &arclength_tries()).unwrap();
+        assert!(continued.bc_error <= CONVERGED, "{:e}", continued.bc_error);
+        for (what, d, c) in [
+            ("a", direct.a_bar, continued.a_bar),
+            ("s", direct.s, continued.s),
+            ("delta", direct.delta_bar, continued.delta_bar),
+        ] {
+            assert!((d - c).abs() < 1e-9, "{what}: directly {d}, continued {c}");
+        }
+    }
+
     /// The pull-off continued in ρ (the route below the ρ that the starts from
     /// `conformal:8` and from the circle reach): from the pull-off at ρ = 0.4,
     /// continued to ρ = 0.38, it is the pull-off found there directly (another
