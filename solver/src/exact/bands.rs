@@ -726,6 +726,7 @@ fn past_folds(
     tries: &[super::Truncation],
 ) -> PastFolds {
     let mut out = PastFolds::default();
+    let escalation = tries.len() > 1;
     let tries: Vec<super::Truncation> = match tries {
         [.., last] if tries.len() > 1 => tries
             .iter()
@@ -786,6 +787,16 @@ fn past_folds(
                     .and_then(|st| ex.accept_resolved(control, st))
             });
             match again {
+                // (a trace on the escalation's last rung leaves the
+                // re-solve one rung, answered as resolved only)
+                Ok(st) if escalation && st.bc_error > super::CONVERGED => out.missed.push((
+                    crossing.a_bar,
+                    format!(
+                        "past the fold of the {which} arm: the crossing's boundary error is {:.1e} with {} modes, the most tried",
+                        st.bc_error,
+                        st.truncation.modes
+                    ),
+                )),
                 Ok(mut st)
                     if (st.a_bar - crossing.a_bar).abs() <= 0.01
                         && (st.s / crossing.s - 1.0).abs() <= 0.01 =>
