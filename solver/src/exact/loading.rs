@@ -1105,6 +1105,7 @@ mod tests {
                 .collect()
         };
         let (thinness, ends) = (row("h/L"), row("loading path with this h/L"));
+        assert_eq!((thinness.len(), ends.len()), (10, 10), "one cell an angle");
         let rho = |theta: f64| (theta.to_radians() / 2.0).tan().powi(2);
         let path_at = |k: usize, theta: f64| {
             let cutoff = Cutoff::for_thinness(thinness[k].parse().unwrap()).unwrap();
