@@ -1134,7 +1134,19 @@ mod tests {
         assert!(direct.bc_error <= CONVERGED, "{:e}", direct.bc_error);
         let above = at_resolved(0.34, control).unwrap();
         assert_eq!(above.truncation.arclength, 0, "{:?}", above.truncation);
-        let continued = continued_in_rho_along(&above, 0.33, control, &arclength_tries()).unwrap();
+        is_the_state_above_continued_in_arclength(&direct, &above, control);
+    }
+
+    /// `direct` (at its ρ and `control`) is `above` (the state at
+    /// `control` at a larger ρ) continued to that ρ in the arclength
+    /// representation, converged: ā, s and δ̄ to 1e-9.
+    fn is_the_state_above_continued_in_arclength(
+        direct: &ExactState,
+        above: &ExactState,
+        control: Hold,
+    ) {
+        let continued =
+            continued_in_rho_along(above, direct.rho, control, &arclength_tries()).unwrap();
         assert!(continued.bc_error <= CONVERGED, "{:e}", continued.bc_error);
         for (what, d, c) in [
             ("a", direct.a_bar, continued.a_bar),
@@ -1160,15 +1172,7 @@ mod tests {
         assert_eq!(direct.route, Route::PastFold);
         assert!(direct.bc_error <= CONVERGED, "{:e}", direct.bc_error);
         let above = at_resolved(0.37, control).unwrap();
-        let continued = continued_in_rho_along(&above, 0.36, control, &arclength_tries()).unwrap();
-        assert!(continued.bc_error <= CONVERGED, "{:e}", continued.bc_error);
-        for (what, d, c) in [
-            ("a", direct.a_bar, continued.a_bar),
-            ("s", direct.s, continued.s),
-            ("delta", direct.delta_bar, continued.delta_bar),
-        ] {
-            assert!((d - c).abs() < 1e-9, "{what}: directly {d}, continued {c}");
-        }
+        is_the_state_above_continued_in_arclength(&direct, &above, control);
     }
 
     /// The pull-off continued in ρ (the route below the ρ that the starts from
