@@ -423,16 +423,9 @@ fn again_in_arclength(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
         .into_iter()
         .filter(|t| t.modes >= near.truncation.modes)
         .collect();
+    let of = format!("the state of {} modes", near.truncation.modes);
     resolved(gap, rho, &tries, |ex| {
-        let mut st = ex.solve_at(control, &near.contour, near.delta_bar)?;
-        if (st.a_bar / near.a_bar - 1.0).abs() > 1e-3 {
-            return Err(Error::NoState(format!(
-                "with {} modes Newton at {control} from the state of {} modes lands at a = {:.4}, not at its a = {:.4}",
-                ex.truncation.modes, near.truncation.modes, st.a_bar, near.a_bar
-            )));
-        }
-        st.route = near.route;
-        Ok(st)
+        again_within_its_size(ex, control, &near, &of, near.route)
     })
 }
 
@@ -666,16 +659,35 @@ pub(crate) fn from_larger_contact(
         .filter(|t| t.modes >= arm.truncation.modes)
         .collect();
     resolved(gap, rho, &tries, |ex| {
-        let mut st = ex.solve_at(control, &arm.contour, arm.delta_bar)?;
-        if (st.a_bar / arm.a_bar - 1.0).abs() > 1e-3 {
-            return Err(Error::NoState(format!(
-                "with {} modes Newton at {control} from the arm's state lands at a = {:.4}, not at its a = {:.4}",
-                ex.truncation.modes, st.a_bar, arm.a_bar
-            )));
-        }
-        st.route = Route::FromLargerContact;
-        Ok(st)
+        again_within_its_size(
+            ex,
+            control,
+            &arm,
+            "the arm's state",
+            Route::FromLargerContact,
+        )
     })
+}
+
+/// Newton at `control` with `ex`'s modes from the contour of `from` (named
+/// `of` in the error), accepted only within 1e-3 in ā of it (the same
+/// state, not a neighbour), with `route`.
+fn again_within_its_size(
+    ex: &Exact,
+    control: Hold,
+    from: &ExactState,
+    of: &str,
+    route: Route,
+) -> Result<ExactState> {
+    let mut st = ex.solve_at(control, &from.contour, from.delta_bar)?;
+    if (st.a_bar / from.a_bar - 1.0).abs() > 1e-3 {
+        return Err(Error::NoState(format!(
+            "with {} modes Newton at {control} from {of} lands at a = {:.4}, not at its a = {:.4}",
+            ex.truncation.modes, st.a_bar, from.a_bar
+        )));
+    }
+    st.route = route;
+    Ok(st)
 }
 
 /// The modes of each sign beyond [`ARCLENGTH_ESCALATION`] with which a
