@@ -353,7 +353,14 @@ pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
 /// [`at_resolved`] on `gap`.
 pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
     by_delta_or_force(control)?;
-    match searched_on(gap, rho, control, &default_tries()) {
+    // the escalation's best state, where it resolves one without converging
+    let mut best: Option<ExactState> = None;
+    let mut keep_best = |st: &ExactState| {
+        if best.as_ref().is_none_or(|b| st.bc_error < b.bc_error) {
+            best = Some(st.clone());
+        }
+    };
+    match searched_visiting(gap, rho, control, &default_tries(), &mut keep_best) {
         // not reached, and not in a band: from the state at a larger ρ
         // (a value in a band, Error::InBand, is answered as it is)
         // (a fold in ρ of the family continued from a larger ρ is said
@@ -389,7 +396,7 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         // with its last rung): the same state solved again in the
         // arclength representation
         Err(e @ Error::Unresolved { residual, .. }) if residual <= RESOLVED => {
-            again_in_arclength(gap, rho, control).map_err(|more| Error::Unresolved {
+            again_in_arclength(gap, rho, control, best).map_err(|more| Error::Unresolved {
                 what: format!(
                     "{}; solved again in the arclength representation: {}",
                     e.detail(),
@@ -403,19 +410,17 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
 }
 
 /// The state at `control` at `rho` that the conformal form's escalation
-/// resolves ([`RESOLVED`]) but does not converge (its best), solved again by Newton at
+/// resolves ([`RESOLVED`]) but does not converge (its best, `best`), solved again by Newton at
 /// the control in the arclength representation from its contour, the
 /// modes escalated ([`resolved`], [`arclength_tries`] from as many modes);
 /// each finer state is accepted only within 1e-3 in ā of the conformal
 /// one (the same state, not a neighbour).
-fn again_in_arclength(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
-    // the conformal form's escalation again, keeping its best state
-    let mut best: Option<ExactState> = None;
-    let _ = at_with_visiting(gap, rho, control, &default_tries(), &mut |st| {
-        if best.as_ref().is_none_or(|b| st.bc_error < b.bc_error) {
-            best = Some(st.clone());
-        }
-    });
+fn again_in_arclength(
+    gap: Gap,
+    rho: f64,
+    control: Hold,
+    best: Option<ExactState>,
+) -> Result<ExactState> {
     let near = best.ok_or_else(|| {
         Error::NoState("the conformal form's escalation resolves no state to start from".into())
     })?;
@@ -586,8 +591,20 @@ pub(crate) fn searched_on(
     control: Hold,
     tries: &[Truncation],
 ) -> Result<ExactState> {
+    searched_visiting(gap, rho, control, tries, &mut |_| {})
+}
+
+/// [`searched_on`], handing every state the escalation resolves on the
+/// way to `visit` ([`at_with_visiting`]).
+fn searched_visiting(
+    gap: Gap,
+    rho: f64,
+    control: Hold,
+    tries: &[Truncation],
+    visit: &mut dyn FnMut(&ExactState),
+) -> Result<ExactState> {
     by_delta_or_force(control)?;
-    at_with(gap, rho, control, tries).or_else(|e| {
+    at_with_visiting(gap, rho, control, tries, visit).or_else(|e| {
         let circle_a = branch::circle_a_bar(&gap.at(1.0)?, control);
         bands::past_folds_or_band(gap, rho, control, circle_a, tries, e)
     })
