@@ -399,7 +399,7 @@ fn a_force_past_the_fold_is_resolved_in_arclength_or_said_to_lie_in_its_band() {
         0.4,
         Truncation {
             modes: 320,
-            points: 8 * 320,
+            points: thinjkr::exact::POINTS_PER_MODE * 320,
             arclength: 319,
         },
     )

@@ -872,8 +872,14 @@ impl LoadingPath {
     }
 }
 
+/// The integration tests' reader of docs/exact.md's table rows.
+#[cfg(test)]
+#[path = "../../tests/docs_tables/mod.rs"]
+mod docs_tables;
+
 #[cfg(test)]
 mod tests {
+    use super::docs_tables;
     use super::*;
 
     /// A contour in the conformal-map form and the same contour in the
@@ -1058,13 +1064,8 @@ mod tests {
         let PathEnd::Lost { why, .. } = &path.end else {
             panic!("not lost: {:?}", path.end);
         };
-        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
-            .unwrap();
-        let row = doc
-            .lines()
-            .find(|l| l.starts_with("| 0.9 | 0.5 |"))
-            .expect("docs/exact.md has the path's row at rho = 0.9");
-        let printed = row
+        let row = docs_tables::row("| ρ | h/L | the path | time |", "| 0.9 | 0.5 |");
+        let printed = row[1]
             .split("stalls at ā = ")
             .nth(1)
             .and_then(|rest| rest.split(' ').next())
@@ -1090,21 +1091,10 @@ mod tests {
     /// ends not settled at the force the row prints, above today's pull-off.
     #[test]
     fn at_80_and_90_degrees_the_path_with_the_coatings_own_thinness_ends_where_the_table_says() {
-        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
-            .unwrap();
-        let table = &doc[doc.find("| θ | 16° |").expect("the ten angles' table")..];
-        let row = |name: &str| -> Vec<String> {
-            let line = table
-                .lines()
-                .find(|l| l.starts_with(&format!("| {name} |")))
-                .unwrap_or_else(|| panic!("no row {name}"));
-            line.trim_matches(|c| c == '|' || c == ' ')
-                .split(" | ")
-                .skip(1)
-                .map(str::to_string)
-                .collect()
-        };
-        let (thinness, ends) = (row("h/L"), row("loading path with this h/L"));
+        let (thinness, ends) = (
+            docs_tables::row("| θ | 16° |", "| h/L |"),
+            docs_tables::row("| θ | 16° |", "| loading path with this h/L |"),
+        );
         assert_eq!((thinness.len(), ends.len()), (10, 10), "one cell an angle");
         let rho = |theta: f64| (theta.to_radians() / 2.0).tan().powi(2);
         let path_at = |k: usize, theta: f64| {
