@@ -127,11 +127,15 @@ pub enum Passed {
     },
     /// The unloading path to an exact pull-off (`exact pull-off
     /// --unloading`): the family traced from its state at F̄ = `from_force`
+    /// (10, else the largest stable load on the pull-off's piece)
     /// towards smaller ā to its first minimum of F̄. `None` where the path
     /// is not settled (`why_not_settled` says why).
     Unloading {
         /// The load the path starts from.
         from_force: f64,
+        /// Which state it starts from (none where no start is found).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        start_at: Option<StartAt>,
         /// Whether its first force minimum is this pull-off.
         reaches: Option<bool>,
         /// F̄ at its first force minimum.
@@ -162,12 +166,16 @@ pub enum Passed {
         why_not_settled: Option<String>,
     },
     /// The loading path by descent (`--unloading`; docs/exact.md, "The
-    /// loading path by descent"): the load lowered from F̄ = 10 in steps, each state
+    /// loading path by descent"): the load lowered from F̄ = 10 (else from
+    /// the largest stable load on the pull-off's piece) in steps, each state
     /// the descent of the potential at the new load from the last, modes
     /// shorter than the cutoff held at equilibrium.
     LoadingPath {
         /// The load the path starts from.
         from_force: f64,
+        /// Which state it starts from (none where no start is found).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        start_at: Option<StartAt>,
         /// The thinness h/L whose cutoff chose the moving modes.
         cutoff_thinness: f64,
         /// The number of states held on the way.
@@ -220,6 +228,66 @@ pub enum Passed {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         why_not_settled: Option<String>,
     },
+}
+
+/// Which state a path begins from.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum StartAt {
+    /// The state at the large load F̄ = 10.
+    LargeLoad,
+    /// No state at F̄ = 10 was found (`why_not_large_load`): the largest
+    /// load resolved on the piece that carries the pull-off.
+    PullOffPiece {
+        /// Why the state at F̄ = 10 is not the start, in words.
+        why_not_large_load: String,
+        /// Whether that load is a maximum of F̄ on the piece (true) or not:
+        /// the piece rises further, past states that its modes do not
+        /// resolve or that are unstable under load.
+        maximum: bool,
+        /// The largest F̄ resolved on that side of the piece.
+        top_force: f64,
+        /// F̄ of the start.
+        start_force: f64,
+    },
+}
+
+impl StartAt {
+    /// The start in words, after "from F = …"; `brief`: without the
+    /// reasons (said on the unloading trace's line before).
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))]
+    pub(crate) fn words(&self, brief: bool) -> String {
+        match self {
+            StartAt::LargeLoad => String::new(),
+            StartAt::PullOffPiece { .. } if brief => {
+                " (the largest stable load on the piece that carries the pull-off, as above)".into()
+            }
+            StartAt::PullOffPiece {
+                why_not_large_load,
+                maximum,
+                top_force,
+                start_force,
+            } => {
+                // the reason's first clause (the whole is in the JSON)
+                let why_not_large_load = crate::exact::start::first_clause(why_not_large_load);
+                let top = if *maximum {
+                    "its maximum of F".to_string()
+                } else if *top_force > *start_force {
+                    format!(
+                        "above it, up to F = {} (the last state its modes resolve to 1e-9), unstable under load to a mode the cutoff resolves",
+                        crate::error::short(*top_force)
+                    )
+                } else {
+                    "the last state its modes resolve to 1e-9 (the piece rises further, not resolved by them)".to_string()
+                };
+                format!(
+                    " (no state at F = {}: {why_not_large_load}; the start is the largest load stable under load on the piece that carries the pull-off, {top})",
+                    crate::exact::loading::START_FORCE
+                )
+            }
+        }
+    }
 }
 
 impl Passed {

@@ -904,7 +904,8 @@ fn the_unstable_directions_of_an_elongated_contour_are_named_by_their_motion() {
 /// to its first force minimum. At ρ = 0.8 that minimum is the pull-off, and
 /// the states on the way are unstable above the cutoff below h/L = 0.434
 /// (mode 6; the probe `unloading_probe` gives the same); the verdict at
-/// h/L = 0.1 is unstable and at 0.5 stable.
+/// h/L = 0.1 is unstable and at 0.5 stable. It starts at the large load
+/// (`start_at`), where a state is found.
 #[cfg(feature = "cli")]
 #[test]
 fn the_unloading_path_reaches_the_pull_off_at_rho_0_8() {
@@ -929,6 +930,8 @@ fn the_unloading_path_reaches_the_pull_off_at_rho_0_8() {
             .expect("an unloading entry")
     };
     let thin = run("0.1");
+    assert_eq!(thin["start_at"]["kind"], "large_load", "{thin}");
+    assert!((thin["from_force"].as_f64().unwrap() - 10.0).abs() < 1e-9);
     assert_eq!(thin["reaches"], true);
     assert!((thin["first_minimum_force"].as_f64().unwrap() + 4.197605).abs() < 1e-6);
     assert!(

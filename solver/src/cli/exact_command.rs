@@ -107,7 +107,9 @@ pub(crate) enum ExactCommand {
         /// minimum of F̄, whether that is this pull-off, and the thinness h/L below which a state on the way is
         /// unstable above the short-wave cutoff; and the loading path by descent: the load lowered from F̄ = 10,
         /// where the contact loses its state and whether it comes off there (seconds at ρ ≥ 0.8, minutes below:
-        /// up to 7 at ρ = 0.3).
+        /// up to 7 at ρ = 0.3). Where no state at F̄ = 10 is found (below ρ ≈ 0.165; the search takes about
+        /// 19 min at ρ = 0.1), both start from the largest load on the pull-off's piece at which its state is
+        /// resolved and stable under load above the cutoff, and say so; where there is none, neither starts.
         #[arg(long)]
         unloading: bool,
         /// Print JSON.
@@ -739,7 +741,7 @@ fn mode_list(ns: &[usize]) -> String {
 fn reached_words(po: &crate::exact::ExactState, unloading: bool) -> String {
     let stab = &po.stability;
     let path = if unloading {
-        "; the unloading path from F = 10:"
+        "; the unloading path (from F = 10, else from the largest stable load on the pull-off's piece):"
     } else {
         ""
     };
@@ -784,6 +786,7 @@ fn reached_words(po: &crate::exact::ExactState, unloading: bool) -> String {
 fn unloading_words(p: &Passed) -> String {
     let Passed::Unloading {
         from_force,
+        start_at,
         reaches,
         first_minimum_force,
         first_minimum_a_bar,
@@ -797,6 +800,11 @@ fn unloading_words(p: &Passed) -> String {
     else {
         return String::new();
     };
+    let from = format!(
+        "{}{}",
+        crate::error::short(*from_force),
+        start_at.as_ref().map_or(String::new(), |s| s.words(false))
+    );
     let (Some(reaches), Some(f), Some(a)) = (reaches, first_minimum_force, first_minimum_a_bar)
     else {
         return format!(
@@ -805,10 +813,10 @@ fn unloading_words(p: &Passed) -> String {
         );
     };
     let first = if *reaches {
-        format!("from F = {from_force} its first force minimum is this pull-off")
+        format!("from F = {from} its first force minimum is this pull-off")
     } else {
         format!(
-            "from F = {from_force} its first force minimum is another state, F = {}, a = {} (this pull-off lies on another piece)",
+            "from F = {from} its first force minimum is another state, F = {}, a = {} (this pull-off lies on another piece)",
             crate::error::short(*f),
             crate::error::short(*a)
         )
@@ -838,6 +846,7 @@ fn unloading_words(p: &Passed) -> String {
 fn loading_words(p: &Passed) -> String {
     let Passed::LoadingPath {
         from_force,
+        start_at,
         cutoff_thinness,
         states_held,
         jump_forces,
@@ -877,13 +886,21 @@ fn loading_words(p: &Passed) -> String {
         format!(", {},", clauses.join(", "))
     };
     let why = why_not_settled.as_deref().unwrap_or("no reason given");
+    let from = format!(
+        "{}{}",
+        crate::error::short(*from_force),
+        start_at.as_ref().map_or(String::new(), |s| s.words(true))
+    );
     let head = format!(
         "the loading path by descent (modes at least 2 pi h long move, h/L = {}; docs/exact.md, \"The loading path by descent\"):",
         crate::error::short(*cutoff_thinness)
     );
+    if start_at.is_none() && *states_held == 0 {
+        return format!("{head} no start: {why}");
+    }
     let (Some(f), Some(a), Some(reaches)) = (first_lost_force, first_lost_a_bar, reaches) else {
         return format!(
-            "{head} from F = {from_force}{bands} not settled after {states_held} states: {why}"
+            "{head} from F = {from}{bands} not settled after {states_held} states: {why}"
         );
     };
     let jumps = match jump_forces.len() {
@@ -895,7 +912,7 @@ fn loading_words(p: &Passed) -> String {
         ),
     };
     let lost = format!(
-        "from F = {from_force}{bands} it holds its state down to F = {}, a = {}{jumps} ({})",
+        "from F = {from}{bands} it holds its state down to F = {}, a = {}{jumps} ({})",
         crate::error::short(*f),
         crate::error::short(*a),
         if *reaches {
@@ -963,8 +980,9 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
     if unloading {
-        // the state at F = 10 both paths begin from, found once
-        let start = crate::exact::loading::start(po.rho);
+        // the state both paths begin from (at F = 10, else the largest
+        // load resolved on the pull-off's piece), found once
+        let start = crate::exact::start::start(&po, d.cutoff()?);
         passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?, &start));
         passed.push(crate::exact::loading::reported(&po, d.cutoff()?, &start));
     }

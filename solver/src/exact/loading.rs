@@ -1,6 +1,6 @@
 //! The loading path (issue 32 (b)): the states a contact takes when its
-//! load is lowered quasi-statically from a large load, F̄ = 10, to where it
-//! comes off, under load control, with the jump rule of
+//! load is lowered quasi-statically from a large load, F̄ = 10 (else the
+//! start `exact::start` finds), to where it comes off, under load control, with the jump rule of
 //! `exact::descent` wherever the state it holds is lost.
 //!
 //! At each step in F̄ the contour descends the potential at the new force
@@ -34,8 +34,7 @@
 //! not settled from there.
 //!
 //! Owns: [`LoadingPath`], [`Jump`], [`BandPass`], [`PathEnd`],
-//! [`loading_path`], [`loading_path_to_first_band`], [`start`],
-//! [`reported`]. May use: `exact` (the problem, `descent`, `resolve`,
+//! [`loading_path`], [`loading_path_to_first_band`], [`reported`]. May use: `exact` (the problem, `descent`, `resolve`, `start`,
 //! `undulations`),
 //! `control`, `continuation` (the family's linearisation, for the arm's
 //! tangent), `cutoff`, `error`, `newton` (the stop request), `report`
@@ -267,14 +266,8 @@ fn same_state(a: &ExactState, b: &ExactState) -> bool {
     (b.a_bar - a.a_bar).abs() <= 1e-6 * a.a_bar && (b.s - a.s).abs() <= 1e-6
 }
 
-/// The resolved exact state at F̄ = [`START_FORCE`] at `rho`, where the
-/// loading path and the unloading trace begin (computed once for both).
-pub(crate) fn start(rho: f64) -> Result<ExactState> {
-    super::at_resolved(rho, Hold::Force(START_FORCE))
-}
-
-/// The loading path from `start`, the state at F̄ = [`START_FORCE`]
-/// ([`start`]), down, with `cutoff` choosing the resolved modes.
+/// The loading path from `start` (the state at F̄ = [`START_FORCE`], else
+/// the largest stable load on the pull-off's piece: `exact::start`), down, with `cutoff` choosing the resolved modes.
 pub(crate) fn loading_path(start: &ExactState, cutoff: Cutoff) -> Result<LoadingPath> {
     let ex = Exact::new(start.rho, start.truncation)?;
     Ok(follow(ex, start.clone(), cutoff, false))
@@ -728,13 +721,18 @@ fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactS
 
 /// The loading path at `pull_off.rho` judged against `pull_off` (the
 /// pull-off the trace reports): an entry of its `passed` list. `start` is
-/// the state at F̄ = 10 there ([`start`]), or why there is none.
+/// where it begins ([`super::start::start`]: the state at F̄ = 10 there,
+/// else the largest stable load on the pull-off's piece), or why there
+/// is none.
 pub(crate) fn reported(
     pull_off: &ExactState,
     cutoff: Cutoff,
-    start: &Result<ExactState>,
+    start: &Result<super::start::Start>,
 ) -> crate::report::Passed {
-    let path = start.clone().and_then(|s| loading_path(&s, cutoff));
+    let path = start
+        .as_ref()
+        .map_err(Clone::clone)
+        .and_then(|s| loading_path(&s.state, cutoff));
     let passed = path
         .as_ref()
         .map(|p| p.unresolved_turned_unstable(cutoff))
@@ -749,7 +747,7 @@ pub(crate) fn reported(
         })
         .unwrap_or_default();
     let (held, jumps, lost, comes_off, why): (usize, Vec<(f64, f64)>, _, _, _) = match &path {
-        Err(e) => (0, Vec::new(), None, None, Some(e.to_string())),
+        Err(e) => (0, Vec::new(), None, None, Some(e.detail())),
         Ok(p) => {
             let (comes_off, why) = match &p.end {
                 PathEnd::PullOff { .. } => (Some(true), None),
@@ -767,7 +765,8 @@ pub(crate) fn reported(
         }
     };
     crate::report::Passed::LoadingPath {
-        from_force: START_FORCE,
+        from_force: start.as_ref().map_or(START_FORCE, |s| s.state.force_bar),
+        start_at: start.as_ref().ok().map(|s| s.at.clone()),
         cutoff_thinness: cutoff.thinness,
         states_held: held,
         jump_forces: jumps.iter().map(|j| j.0).collect(),
@@ -879,6 +878,7 @@ mod docs_tables;
 
 #[cfg(test)]
 mod tests {
+    use super::super::start::at_large_load as start;
     use super::docs_tables;
     use super::*;
 

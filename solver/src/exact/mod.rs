@@ -58,6 +58,7 @@ pub(crate) mod rho_fold;
 pub(crate) mod rho_path;
 pub(crate) mod seed;
 pub mod stability;
+pub(crate) mod start;
 pub(crate) mod stored;
 pub(crate) mod undulations;
 pub(crate) mod unloading;
@@ -67,7 +68,6 @@ use crate::error::{Error, Result};
 use bie::{solve_dirichlet, solve_dirichlet_symmetric, ContourSamples, Grid};
 pub(crate) use gap::Gap;
 use gap::GapAt;
-pub use gap::Term;
 use nalgebra::{Complex, DMatrix, DVector};
 #[cfg(feature = "cli")]
 pub(crate) use resolve::ESCALATION;

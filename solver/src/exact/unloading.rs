@@ -1,5 +1,6 @@
 //! The unloading path to a pull-off (issue 32, milestone (b)): the exact
-//! family traced from its state at F̄ = 10 the way F̄ falls (towards smaller
+//! family traced from its state at F̄ = 10 (else the largest stable load
+//! on the pull-off's piece, `start`) the way F̄ falls (towards smaller
 //! ā, or larger past a fold in ā) up to its first minimum of F̄, and
 //! whether that minimum is the given pull-off; on the way, the longest
 //! contour mode unstable under load control at every traced point, whose
@@ -8,21 +9,23 @@
 //! reaches the minimum).
 //!
 //! Owns: [`unloading`]. May use: its parent `exact` (the problem and its
-//! states), `branch` (the trace), `loading` (its
-//! start force; the start itself comes from the caller, shared with the
-//! loading path), `stability`, `cutoff`, `error`, `report` (the outcome's
+//! states), `branch` (the trace), `loading` (the large load), `start`
+//! (where it begins; the start itself comes from the caller, shared with
+//! the loading path), `stability`, `cutoff`, `error`, `report` (the outcome's
 //! shape).
 
 // asked by the command line (`exact pull-off --unloading`)
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
+use super::start::{Start, StartAt};
 use super::{Exact, ExactState};
 use crate::cutoff::Cutoff;
 use crate::error::Result;
 use crate::report::Passed;
 
-/// The load the unloading starts from: the loading path's (a large load,
-/// F̄ = 10, where every table of docs/accuracy.md has a row).
+/// The large load the unloading starts from where a state is found there:
+/// the loading path's (F̄ = 10, where every table of docs/accuracy.md has a
+/// row).
 use super::loading::START_FORCE;
 
 /// The largest boundary error of a traced point that still counts as a
@@ -30,20 +33,22 @@ use super::loading::START_FORCE;
 /// resolve: the path is then not settled).
 const TRACED: f64 = 1e-6;
 
-/// The unloading path from F̄ = 10 to the first minimum of F̄ at
+/// The unloading path from its start to the first minimum of F̄ at
 /// `pull_off.rho`, judged with `cutoff`'s thinness: an entry of the
-/// pull-off's `passed` list. `start` is the state at F̄ = 10 there
-/// ([`super::loading::start`], shared with the loading path), or why
+/// pull-off's `passed` list. `start` is where it begins
+/// ([`super::start::start`], shared with the loading path: the state at
+/// F̄ = 10, else the largest stable load on the pull-off's piece), or why
 /// there is none.
-pub(crate) fn unloading(
-    pull_off: &ExactState,
-    cutoff: Cutoff,
-    start: &Result<ExactState>,
-) -> Passed {
+pub(crate) fn unloading(pull_off: &ExactState, cutoff: Cutoff, start: &Result<Start>) -> Passed {
+    let (from_force, start_at) = match start {
+        Ok(s) => (s.state.force_bar, Some(s.at.clone())),
+        Err(_) => (START_FORCE, None),
+    };
     match path(pull_off, start) {
-        Ok(p) => p.judged(cutoff),
+        Ok(p) => p.judged(cutoff, from_force, start_at),
         Err(why) => Passed::Unloading {
-            from_force: START_FORCE,
+            from_force,
+            start_at,
             reaches: None,
             first_minimum_force: None,
             first_minimum_a_bar: None,
@@ -74,10 +79,11 @@ struct Path {
 }
 
 impl Path {
-    fn judged(self, cutoff: Cutoff) -> Passed {
+    fn judged(self, cutoff: Cutoff, from_force: f64, start_at: Option<StartAt>) -> Passed {
         let (h, n) = self.critical;
         Passed::Unloading {
-            from_force: START_FORCE,
+            from_force,
+            start_at,
             reaches: Some(self.reaches),
             first_minimum_force: Some(self.minimum.force_bar),
             first_minimum_a_bar: Some(self.minimum.a_bar),
@@ -91,16 +97,17 @@ impl Path {
     }
 }
 
-/// The trace from F̄ = 10 to the first minimum, or why it is not settled
-/// (in words, for the report).
-fn path(pull_off: &ExactState, start: &Result<ExactState>) -> std::result::Result<Path, String> {
+/// The trace from the start to the first minimum, or why it is not
+/// settled (in words, for the report).
+fn path(pull_off: &ExactState, start: &Result<Start>) -> std::result::Result<Path, String> {
     let rho = pull_off.rho;
-    let start = start
+    let start = &start
         .as_ref()
-        .map_err(|e| format!("no resolved exact state at force = {START_FORCE}: {e}"))?;
+        .map_err(|e| format!("no start: {}", e.detail()))?
+        .state;
+    let from = crate::error::short(start.force_bar);
     let ex = Exact::new(rho, start.truncation).map_err(|e| e.to_string())?;
-    let failed =
-        |e: crate::error::Error| format!("the trace from force = {START_FORCE} failed: {e}");
+    let failed = |e: crate::error::Error| format!("the trace from force = {from} failed: {e}");
     // unloading lowers F̄: towards smaller ā, unless F̄ rises that way (a
     // start on the returning stretch past a fold in ā, as on the arm of a
     // larger contact at ρ = 0.3), then towards larger ā
@@ -122,7 +129,7 @@ fn path(pull_off: &ExactState, start: &Result<ExactState>) -> std::result::Resul
         let st = &p.state;
         if st.bc_error > TRACED {
             return Err(format!(
-                "the trace from force = {START_FORCE} leaves the states its {} modes resolve at a = {:.4} (boundary error {:.1e}) before a minimum of the force",
+                "the trace from force = {from} leaves the states its {} modes resolve at a = {:.4} (boundary error {:.1e}) before a minimum of the force",
                 start.truncation.modes, st.a_bar, st.bc_error
             ));
         }
@@ -171,7 +178,7 @@ fn path(pull_off: &ExactState, start: &Result<ExactState>) -> std::result::Resul
         }
     }
     Err(format!(
-        "the trace from force = {START_FORCE} meets no minimum of the force within its {} points",
+        "the trace from force = {from} meets no minimum of the force within its {} points",
         points.len()
     ))
 }

@@ -1,0 +1,219 @@
+//! Where the loading path and the unloading trace begin (issue 32, item
+//! 2): the resolved exact state at the large load F̄ = 10 where one is
+//! found, otherwise the largest load on the piece of the family that
+//! carries the pull-off (which the pull-off's continuation in ρ connects
+//! to the circle; below ρ ≈ 0.165 no state at F̄ = 10 is found:
+//! docs/exact.md, "Below ρ = 0.3") at which its state is resolved and
+//! stable under load above the short-wave cutoff.
+//!
+//! That piece is traced from the pull-off on both sides; its stable side
+//! is the one whose first state has fewer directions unstable under load
+//! (the fold of the load at the pull-off turns one eigenvalue's sign).
+//! Along it, up to its first maximum of F̄ and as far as the pull-off's
+//! truncation resolves its states to [`CONVERGED`], the start is the
+//! state of largest F̄ with no resolved mode unstable under load; where
+//! there is none, no path begins and the error says why.
+//!
+//! Owns: [`Start`], [`start`], [`at_large_load`],
+//! [`largest_on_pull_off_piece`]. May use: its parent `exact` (the
+//! problem, its states and `resolve`), `branch` (the trace), `stability`
+//! (the verdicts), `loading` (the large load), `control`, `cutoff`,
+//! `error`, `newton` (the stop request), `report` ([`StartAt`], the
+//! start's shape in the output).
+
+// asked by the command line (`exact pull-off --unloading`)
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
+
+use super::loading::START_FORCE;
+use super::stability::UnstableMode;
+use super::{Exact, ExactState, CONVERGED};
+use crate::control::Hold;
+use crate::cutoff::Cutoff;
+use crate::error::{Error, Result};
+pub(crate) use crate::report::StartAt;
+
+/// How far the piece is traced from the pull-off at most (points of the
+/// trace, arclength steps up to [`STEP`]): at ρ = 0.1 the 96-mode states
+/// pass 1e-9 after 9 to 17.
+const POINTS: usize = 30;
+
+/// The largest arclength step of that trace (in the unknowns).
+const STEP: f64 = 0.05;
+
+/// The state a path begins from, and which it is.
+#[derive(Clone, Debug)]
+pub(crate) struct Start {
+    /// The state (resolved to [`CONVERGED`]).
+    pub state: ExactState,
+    /// Which state it is.
+    pub at: StartAt,
+}
+
+/// Where the paths to `pull_off` begin: the resolved state at F̄ =
+/// [`START_FORCE`] at its ρ, else the largest stable load on the
+/// pull-off's piece ([`largest_on_pull_off_piece`]). An error only where the user asked to stop, or where
+/// neither is found (both reasons said).
+pub(crate) fn start(pull_off: &ExactState, cutoff: Cutoff) -> Result<Start> {
+    let large = at_large_load(pull_off.rho);
+    crate::newton::check_stop()?;
+    match large {
+        Ok(state) => Ok(Start {
+            state,
+            at: StartAt::LargeLoad,
+        }),
+        Err(e) => largest_on_pull_off_piece(pull_off, cutoff, e.detail()),
+    }
+}
+
+/// The first clause of a reason (up to its first "; "): the long story of
+/// why no state at F̄ = 10 is found (every route tried) is in the JSON and
+/// in `thinjkr exact solve --force 10`.
+pub(crate) fn first_clause(why: &str) -> &str {
+    why.split("; ").next().unwrap_or(why)
+}
+
+/// The resolved exact state at F̄ = [`START_FORCE`] at `rho`.
+pub(crate) fn at_large_load(rho: f64) -> Result<ExactState> {
+    super::at_resolved(rho, Hold::Force(START_FORCE))
+}
+
+/// The largest F̄ on the piece through `pull_off` at which its state is
+/// resolved and stable under load above `cutoff`: the piece traced from
+/// the pull-off on its stable side (the side whose first traced state has
+/// fewer directions unstable under load: a fold of the load turns one
+/// eigenvalue's sign there); `why` says why F̄ = 10 is not the start. An
+/// error that says so where no state on that side is.
+pub(crate) fn largest_on_pull_off_piece(
+    pull_off: &ExactState,
+    cutoff: Cutoff,
+    why: String,
+) -> Result<Start> {
+    let ex = Exact::new(pull_off.rho, pull_off.truncation)?;
+    let none = |what: String| {
+        Error::NoState(format!(
+            "no state at F = {START_FORCE} ({}); {what}",
+            first_clause(&why)
+        ))
+    };
+    let side = |direction: f64| -> Result<Vec<(ExactState, Vec<UnstableMode>)>> {
+        let branch = ex.trace_from(pull_off, direction, 0.5, f64::INFINITY, STEP, POINTS)?;
+        let mut out = Vec::new();
+        for p in branch.points.into_iter().skip(1) {
+            crate::newton::check_stop()?;
+            if p.state.bc_error > CONVERGED {
+                break;
+            }
+            let load = ex.stability(&p.state)?.under(cutoff).load;
+            out.push((p.state, load));
+        }
+        Ok(out)
+    };
+    let traced = |e: Error| {
+        none(format!(
+            "the trace up the pull-off's piece failed: {}",
+            e.detail()
+        ))
+    };
+    let grows = side(1.0).map_err(traced)?;
+    let shrinks = side(-1.0).map_err(traced)?;
+    let unstable =
+        |s: &[(ExactState, Vec<UnstableMode>)]| s.first().map_or(usize::MAX, |f| f.1.len());
+    let stable_side = if unstable(&shrinks) < unstable(&grows) {
+        shrinks
+    } else {
+        grows
+    };
+    // up to the first maximum of F̄, the states of no resolved mode
+    // unstable under load, the largest load first
+    let rising: Vec<&(ExactState, Vec<UnstableMode>)> = stable_side
+        .iter()
+        .scan(pull_off.force_bar, |last, s| {
+            (s.0.force_bar > *last).then(|| {
+                *last = s.0.force_bar;
+                s
+            })
+        })
+        .collect();
+    let top = rising.last().ok_or_else(|| {
+        none("the pull-off's piece is not resolved to 1e-9 above it by its modes".into())
+    })?;
+    let maximum = rising.len() < stable_side.len();
+    match rising
+        .iter()
+        .rev()
+        .find(|s| s.1.iter().all(|m| !m.resolved))
+    {
+        Some(s) => Ok(Start {
+            state: s.0.clone(),
+            at: StartAt::PullOffPiece {
+                why_not_large_load: why,
+                maximum: maximum && std::ptr::eq(*s, *top),
+                top_force: top.0.force_bar,
+                start_force: s.0.force_bar,
+            },
+        }),
+        None => {
+            let m = top.1.iter().find(|m| m.resolved).map_or(0, |m| m.n);
+            Err(none(format!(
+                "on the piece that carries the pull-off, every state its modes resolve above it (up to F = {} at a = {}) is unstable under load to a mode the cutoff resolves (at the largest load n = {m}): no stable start",
+                crate::error::short(top.0.force_bar),
+                crate::error::short(top.0.a_bar)
+            )))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Where no state at F̄ = 10 is the start (the reason given here), the
+    /// pull-off's piece is traced: at ρ = 0.3 with h/L = 0.6 (n = 6 and
+    /// shorter not resolved) its last state resolved to 1e-9 above the
+    /// pull-off, on its stable side, is the start; at
+    /// ρ = 0.1 with h/L = 0.1 every resolved state above the pull-off on
+    /// its stable side is unstable under load, and no path begins (an
+    /// error, not a start). The stable side is checked by a second route:
+    /// the first state on the other side has one direction more unstable
+    /// under load (the fold's).
+    #[test]
+    fn where_force_10_has_no_state_the_start_is_the_largest_stable_load_on_the_pull_offs_piece() {
+        let (po, _) = crate::exact::pull_off_resolved(0.3).unwrap();
+        let cutoff = Cutoff::for_thinness(0.6).unwrap();
+        let start = largest_on_pull_off_piece(&po, cutoff, "not asked".into()).unwrap();
+        let StartAt::PullOffPiece {
+            maximum,
+            top_force,
+            start_force,
+            ..
+        } = start.at.clone()
+        else {
+            panic!("not a start on the pull-off's piece: {:?}", start.at)
+        };
+        assert!(!maximum);
+        assert_eq!(top_force, start_force);
+        assert!(start.state.bc_error <= CONVERGED);
+        assert!(start.state.force_bar > po.force_bar + 0.01);
+        let ex = Exact::new(0.3, po.truncation).unwrap();
+        let held = ex.stability(&start.state).unwrap().under(cutoff);
+        assert!(held.load.iter().all(|m| !m.resolved), "{:?}", held.load);
+        let unstable_at = |direction: f64| {
+            let b = ex
+                .trace_from(&po, direction, 0.5, f64::INFINITY, STEP, 2)
+                .unwrap();
+            ex.stability(&b.points[1].state).unwrap().load.len()
+        };
+        let (grows, shrinks) = (unstable_at(1.0), unstable_at(-1.0));
+        assert_eq!(grows.abs_diff(shrinks), 1);
+        let stable_side = if shrinks < grows { -1.0 } else { 1.0 };
+        assert_eq!((start.state.a_bar - po.a_bar).signum(), stable_side);
+        assert!(start.at.words(false).contains("not resolved by them"));
+
+        let (po, _) = crate::exact::pull_off_resolved(0.1).unwrap();
+        let none = largest_on_pull_off_piece(&po, Cutoff::for_thinness(0.1).unwrap(), "x".into());
+        let Err(Error::NoState(why)) = none else {
+            panic!("a start at rho = 0.1: {none:?}")
+        };
+        assert!(why.contains("no stable start"), "{why}");
+    }
+}
