@@ -979,13 +979,6 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
     }?;
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
-    if unloading {
-        // the state both paths begin from (at F = 10, else the largest
-        // load resolved on the pull-off's piece), found once
-        let start = crate::exact::start::start(&po, d.cutoff()?);
-        passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?, &start));
-        passed.push(crate::exact::loading::reported(&po, d.cutoff()?, &start));
-    }
     let models: Vec<_> = ModelId::ALL
         .iter()
         .map(|&m| {
@@ -996,7 +989,22 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
         })
         .collect();
     drop(spin);
+    // the paths from the state both begin from (at F = 10, else the
+    // largest stable load on the pull-off's piece), found once: minutes
+    // below rho = 0.8, so the text prints the pull-off before them
+    let paths = |passed: &mut Vec<Passed>| -> Result<()> {
+        let _spin = crate::cli::output::Spinner::start(
+            "following the unloading and loading paths (the state at F = 10 first)",
+        );
+        let start = crate::exact::start::start(&po, d.cutoff()?);
+        passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?, &start));
+        passed.push(crate::exact::loading::reported(&po, d.cutoff()?, &start));
+        Ok(())
+    };
     if json {
+        if unloading {
+            paths(&mut passed)?;
+        }
         let doc = Document::PullOff {
             state: AnyState::Exact(Box::new(po)),
             control: crate::fold::FoldCondition::Load,
@@ -1037,6 +1045,12 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
     };
     outln!("  which pull-off: {which}");
     outln!("  reached by unloading: {}", reached_words(&po, unloading));
+    if unloading {
+        // the lines so far reach a reader through a pipe before the paths'
+        // minutes (a terminal has them already)
+        crate::cli::output::finish()?;
+        paths(&mut passed)?;
+    }
     for p in &passed {
         match p {
             Passed::Unloading { .. } => outln!("    {}", unloading_words(p)),
