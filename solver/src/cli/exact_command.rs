@@ -996,9 +996,10 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
         let _spin = crate::cli::output::Spinner::start(
             "following the unloading and loading paths (the state at F = 10 first)",
         );
-        let start = crate::exact::start::start(&po, d.cutoff()?);
-        passed.push(crate::exact::unloading::unloading(&po, d.cutoff()?, &start));
-        passed.push(crate::exact::loading::reported(&po, d.cutoff()?, &start));
+        let cutoff = d.cutoff()?;
+        let start = crate::exact::start::start(&po, cutoff);
+        passed.push(crate::exact::unloading::unloading(&po, cutoff, &start));
+        passed.push(crate::exact::loading::reported(&po, cutoff, &start));
         Ok(())
     };
     if json {

@@ -764,9 +764,10 @@ pub(crate) fn reported(
             )
         }
     };
+    let (from_force, start_at) = super::start::reported_from(start);
     crate::report::Passed::LoadingPath {
-        from_force: start.as_ref().map_or(START_FORCE, |s| s.state.force_bar),
-        start_at: start.as_ref().ok().map(|s| s.at.clone()),
+        from_force,
+        start_at,
         cutoff_thinness: cutoff.thinness,
         states_held: held,
         jump_forces: jumps.iter().map(|j| j.0).collect(),

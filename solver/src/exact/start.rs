@@ -14,7 +14,7 @@
 //! state of largest F̄ with no resolved mode unstable under load; where
 //! there is none, no path begins and the error says why.
 //!
-//! Owns: [`Start`], [`start`], [`at_large_load`],
+//! Owns: [`Start`], [`start`], [`reported_from`], [`at_large_load`],
 //! [`largest_on_pull_off_piece`]. May use: its parent `exact` (the
 //! problem, its states and `resolve`), `branch` (the trace), `stability`
 //! (the verdicts), `loading` (the large load), `control`, `cutoff`,
@@ -62,6 +62,15 @@ pub(crate) fn start(pull_off: &ExactState, cutoff: Cutoff) -> Result<Start> {
             at: StartAt::LargeLoad,
         }),
         Err(e) => largest_on_pull_off_piece(pull_off, cutoff, e.detail()),
+    }
+}
+
+/// The load a path reports it started from, and which start that was:
+/// `start`'s, else (no start) the large load it was asked from.
+pub(crate) fn reported_from(start: &Result<Start>) -> (f64, Option<StartAt>) {
+    match start {
+        Ok(s) => (s.state.force_bar, Some(s.at.clone())),
+        Err(_) => (START_FORCE, None),
     }
 }
 

@@ -9,7 +9,7 @@
 //! reaches the minimum).
 //!
 //! Owns: [`unloading`]. May use: its parent `exact` (the problem and its
-//! states), `branch` (the trace), `loading` (the large load), `start`
+//! states), `branch` (the trace), `start`
 //! (where it begins; the start itself comes from the caller, shared with
 //! the loading path), `stability`, `cutoff`, `error`, `report` (the outcome's
 //! shape).
@@ -23,11 +23,6 @@ use crate::cutoff::Cutoff;
 use crate::error::Result;
 use crate::report::Passed;
 
-/// The large load the unloading starts from where a state is found there:
-/// the loading path's (F̄ = 10, where every table of docs/accuracy.md has a
-/// row).
-use super::loading::START_FORCE;
-
 /// The largest boundary error of a traced point that still counts as a
 /// state of the problem (a trace that leaves it leaves the family it can
 /// resolve: the path is then not settled).
@@ -40,10 +35,7 @@ const TRACED: f64 = 1e-6;
 /// F̄ = 10, else the largest stable load on the pull-off's piece), or why
 /// there is none.
 pub(crate) fn unloading(pull_off: &ExactState, cutoff: Cutoff, start: &Result<Start>) -> Passed {
-    let (from_force, start_at) = match start {
-        Ok(s) => (s.state.force_bar, Some(s.at.clone())),
-        Err(_) => (START_FORCE, None),
-    };
+    let (from_force, start_at) = super::start::reported_from(start);
     match path(pull_off, start) {
         Ok(p) => p.judged(cutoff, from_force, start_at),
         Err(why) => Passed::Unloading {
