@@ -184,7 +184,8 @@ mod tests {
     /// its stable side is unstable under load, and no path begins (an
     /// error, not a start). The stable side is checked by a second route:
     /// the first state on the other side has one direction more unstable
-    /// under load (the fold's).
+    /// under load (the fold's). The ρ = 0.3 start is the one docs/exact.md
+    /// prints.
     #[test]
     fn where_force_10_has_no_state_the_start_is_the_largest_stable_load_on_the_pull_offs_piece() {
         let (po, _) = crate::exact::pull_off_resolved(0.3).unwrap();
@@ -217,6 +218,13 @@ mod tests {
         let stable_side = if shrinks < grows { -1.0 } else { 1.0 };
         assert_eq!((start.state.a_bar - po.a_bar).signum(), stable_side);
         assert!(start.at.words(false).contains("not resolved by them"));
+        // docs/exact.md, "Where the path starts", prints this start
+        let doc = include_str!("../../../docs/exact.md");
+        let printed = format!(
+            "F̄ = −{:.4} (ā = {:.4})",
+            -start.state.force_bar, start.state.a_bar
+        );
+        assert!(doc.contains(&printed), "docs/exact.md lacks {printed}");
 
         let (po, _) = crate::exact::pull_off_resolved(0.1).unwrap();
         let none = largest_on_pull_off_piece(&po, Cutoff::for_thinness(0.1).unwrap(), "x".into());
