@@ -245,6 +245,13 @@ pub(crate) const DEFAULTS: [DefaultRow; 5] = [
     },
 ];
 
+/// What the pull-off rows of [`DEFAULTS`] are measured against (issue 32,
+/// item 5: docs/exact.md, "Item 5's reference"), said with each default
+/// pull-off: today's pull-off, which is the loading path's where (2)
+/// follows a contact unloaded from a large load down to a pull-off, and
+/// the only resolved reference elsewhere.
+pub(crate) const PULL_OFF_REFERENCE: &str = "the table measures pull-offs against today's exact pull-off (the minimum of F on the near-elliptic piece that carries it); where (2) follows a contact unloaded from a large load down to a pull-off, it comes off at that state (h/L = 0.5: rho 0.5 to 1); where that path ends before a pull-off, unsettled or without a start, (2) gives no other pull-off to measure against (docs/exact.md, \"Item 5's reference\")";
+
 /// The smallest ρ of the exact pull-off's row in [`DEFAULTS`]: where the
 /// stored pull-offs end (`exact::stored`, 0.0140633), rounded up (the test
 /// holds the stored pull-offs to reach it).
@@ -290,6 +297,12 @@ pub fn physical(
         crate::error::rounded(rho),
         row.why
     ));
+    if question == Question::PullOff {
+        if let Some(why) = answer.chosen_because.as_mut() {
+            why.push_str("; ");
+            why.push_str(PULL_OFF_REFERENCE);
+        }
+    }
     if row.model != "max" {
         let paper = Choice::Ellipse(ModelId::Max).physical(cyl, force, delta);
         match paper {
@@ -991,6 +1004,11 @@ mod tests {
         for cell in &r03[max..=apex45] {
             assert!(first(cell).is_none_or(|e| e.abs() > 0.005));
         }
+        // the reference said with every default pull-off is the one
+        // docs/exact.md defines under that name
+        let doc = include_str!("../../docs/exact.md");
+        assert!(doc.contains("**Item 5's reference.**"));
+        assert!(PULL_OFF_REFERENCE.contains("\"Item 5's reference\""));
         let stored = crate::exact::stored::stored().expect("the stored pull-offs");
         assert!(stored.reached <= STORED_REACHED, "{}", stored.reached);
         // the reason of the row below names where the stored pull-offs end

@@ -267,6 +267,12 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
             "no model named: {} answers the pull-off",
             answer.model
         )));
+        // and says what the table measures it against (docs/exact.md,
+        // "Item 5's reference")
+        assert!(
+            why.contains("the table measures pull-offs against today's exact pull-off"),
+            "{why}"
+        );
         let (.., force_bar) = answer.state.size_and_load();
         let (exact, _) =
             thinjkr::exact::pull_off_resolved(rho).unwrap_or_else(|e| panic!("theta {theta}: {e}"));
@@ -276,6 +282,14 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
             "theta {theta}: {} off by {off:e}",
             answer.model
         );
+        // item 5's reference, the loading path's pull-off with these
+        // coatings' h/L, exists at 90° alone: the circle comes off at
+        // F = −3π/2 (the lib test `at_80_and_90_degrees_the_path_with_the_
+        // coatings_own_thinness_ends_where_the_table_says` holds the path)
+        if theta == 90.0 {
+            let path = -1.5 * std::f64::consts::PI;
+            assert!((force_bar / path - 1.0).abs() <= 0.005, "{force_bar}");
+        }
         // the thinnesses for which the exact pull-off is a contact (2)
         // resolves, under load control ("Coatings for which a state is
         // resolved and stable"; the range does not depend on the cutoff)
