@@ -27,7 +27,10 @@ def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinnes
     its contour sampled at ``points`` angles. ``modes``: the contour series'
     length (1 … 96); by default the modes are escalated from 12 to 96 until
     the fine-grid boundary error is below 1e-9 (where none is,
-    :class:`Unresolved` is raised with the smallest error reached).
+    :class:`Unresolved` is raised with the smallest error reached). A given
+    ``modes`` takes the exterior-map series alone; where it does not resolve
+    the contour (below about ρ = 0.34) the default goes on to the arclength
+    representation, which ``modes`` does not choose.
     ``thinness``: the coatings' h/L, which sets the short-wave cutoff 2π h/L
     below which unstable contour modes are not resolved by (2) (default
     0.1): ``stable_displacement`` and ``stable_load`` count only the longer

@@ -25,7 +25,10 @@ pub(crate) struct Discretisation {
     pub thinness: Option<f64>,
     /// Contour modes N (the contour series' length, 1..=96; the answer is given when its boundary error is
     /// below 1e-5, with that error); default: escalated from 12 to 96 modes until the boundary error is
-    /// below 1e-9, and only such an answer is given.
+    /// below 1e-9, and only such an answer is given. --modes takes the exterior-map series of N modes alone;
+    /// where that series does not resolve the contour (the pull-off below rho = 0.3, states at a force or an
+    /// approach below about 0.34), the default goes on to the
+    /// arclength representation ("N modes of each sign" in its answer), which --modes does not choose.
     #[arg(long)]
     pub modes: Option<usize>,
     /// Quadrature points on the contour (default 8 N; without --modes, the escalation goes as far as these
