@@ -269,8 +269,12 @@ fn same_state(a: &ExactState, b: &ExactState) -> bool {
 /// The loading path from `start` (the state at F̄ = [`START_FORCE`], else
 /// the largest stable load on the pull-off's piece: `exact::start`), down, with `cutoff` choosing the resolved modes.
 pub(crate) fn loading_path(start: &ExactState, cutoff: Cutoff) -> Result<LoadingPath> {
-    let ex = Exact::new(start.rho, start.truncation)?;
-    Ok(follow(ex, start.clone(), cutoff, false))
+    Ok(follow(
+        Exact::of_state(start)?,
+        start.clone(),
+        cutoff,
+        false,
+    ))
 }
 
 /// [`loading_path`] up to the first band it passes: where it has passed
@@ -281,8 +285,7 @@ pub(crate) fn loading_path_to_first_band(
     start: &ExactState,
     cutoff: Cutoff,
 ) -> Result<LoadingPath> {
-    let ex = Exact::new(start.rho, start.truncation)?;
-    Ok(follow(ex, start.clone(), cutoff, true))
+    Ok(follow(Exact::of_state(start)?, start.clone(), cutoff, true))
 }
 
 /// `st` (a state of `ex`) or, where `ex`'s modes do not resolve it to
@@ -313,9 +316,10 @@ fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, S
         .collect();
     for rung in rungs {
         let st = &best.1;
-        let Ok(finer) = Exact::new(ex.rho, rung) else {
+        let Ok(finer) = Exact::on(st.gap, ex.rho, rung) else {
             continue;
         };
+        let finer = finer.keeping_the_speed_of_grooved(&st.contour);
         if let Ok(again) = finer.solve_at(Hold::Force(st.force_bar), &st.contour, st.delta_bar) {
             if again.bc_error < st.bc_error && near(st, &again) {
                 let done = again.bc_error <= CONVERGED;
@@ -500,7 +504,9 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> 
         if shape_loss.is_some() {
             if let Some((back, taken, truncation)) = before.take() {
                 if truncation != ex.truncation {
-                    match Exact::new(held.rho, truncation) {
+                    match Exact::on(back.gap, held.rho, truncation)
+                        .map(|e| e.keeping_the_speed_of_grooved(&back.contour))
+                    {
                         Ok(e) => ex = e,
                         Err(e) => {
                             return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()))
@@ -673,8 +679,9 @@ fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactS
     guess.contour = super::undulations::without_short_waves(&held.contour, cutoff);
     // the search's problem, without the states' stability (the state
     // chosen gets it from `ex`)
-    let search = Exact::new(held.rho, ex.truncation())
+    let search = Exact::on(held.gap, held.rho, ex.truncation())
         .ok()?
+        .keeping_the_speed_of_grooved(&held.contour)
         .deferring_stability();
     // a resolved state beyond at size `a_bar`, by Newton's method
     let beyond = |ex: &mut Exact, a_bar: f64| -> Option<ExactState> {

@@ -945,6 +945,16 @@ impl Exact {
         self
     }
 
+    /// The problem `st` is a state of, to go on from it: its gap, ρ and
+    /// truncation, with the points crowded into its grooves where it has
+    /// narrow ones (the pull-offs below ρ ≈ 0.068 and the states traced
+    /// from them: [`Exact::keeping_the_speed_of_grooved`]), else θ
+    /// proportional to arclength. (A trace from a grooved pull-off in the
+    /// plain gauge fails at its first step.)
+    pub(crate) fn of_state(st: &ExactState) -> Result<Exact> {
+        Ok(Exact::on(st.gap, st.rho, st.truncation)?.keeping_the_speed_of_grooved(&st.contour))
+    }
+
     /// [`Exact::keeping_the_speed_of`] `c` where `c` has a narrow groove
     /// (its points then crowded into it by the follow,
     /// [`Contour::crowded_at_groove`]); else the same problem (θ

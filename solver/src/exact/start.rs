@@ -97,7 +97,7 @@ pub(crate) fn largest_on_pull_off_piece(
     cutoff: Cutoff,
     why: String,
 ) -> Result<Start> {
-    let ex = Exact::new(pull_off.rho, pull_off.truncation)?;
+    let ex = Exact::of_state(pull_off)?;
     let none = |what: String| {
         Error::NoState(format!(
             "no state at F = {START_FORCE} ({}); {what}",
@@ -232,5 +232,25 @@ mod tests {
             panic!("a start at rho = 0.1: {none:?}")
         };
         assert!(why.contains("no stable start"), "{why}");
+    }
+
+    /// Below ρ ≈ 0.068 the pull-off's points are crowded into its grooves;
+    /// the piece above it is traced in that gauge (`Exact::of_state`): at
+    /// ρ = 0.05 both sides' first states are resolved to 1e-9 (in the plain
+    /// gauge the corrector failed at the first step at ρ = 0.0311 and
+    /// 0.0198, so that no start was found at 20° and 16°).
+    #[test]
+    fn the_piece_above_a_grooved_pull_off_is_traced_in_its_own_gauge() {
+        let (po, _) = crate::exact::pull_off_resolved(0.05).unwrap();
+        assert!(po.contour.narrow_groove().is_some());
+        let ex = Exact::of_state(&po).unwrap();
+        for direction in [1.0, -1.0] {
+            let b = ex
+                .trace_from(&po, direction, 0.5, f64::INFINITY, STEP, 2)
+                .unwrap_or_else(|e| panic!("side {direction}: {e}"));
+            let first = &b.points[1].state;
+            assert!(first.bc_error <= CONVERGED, "{:e}", first.bc_error);
+            assert_eq!((first.a_bar - po.a_bar).signum(), direction);
+        }
     }
 }

@@ -98,7 +98,7 @@ fn path(pull_off: &ExactState, start: &Result<Start>) -> std::result::Result<Pat
         .map_err(|e| format!("no start: {}", e.detail()))?
         .state;
     let from = crate::error::short(start.force_bar);
-    let ex = Exact::new(rho, start.truncation).map_err(|e| e.to_string())?;
+    let ex = Exact::of_state(start).map_err(|e| e.to_string())?;
     let failed = |e: crate::error::Error| format!("the trace from force = {from} failed: {e}");
     // unloading lowers F̄: towards smaller ā, unless F̄ rises that way (a
     // start on the returning stretch past a fold in ā, as on the arm of a
