@@ -92,7 +92,6 @@ impl Path {
 /// The trace from the start to the first minimum, or why it is not
 /// settled (in words, for the report).
 fn path(pull_off: &ExactState, start: &Result<Start>) -> std::result::Result<Path, String> {
-    let rho = pull_off.rho;
     let start = &start
         .as_ref()
         .map_err(|e| format!("no start: {}", e.detail()))?
