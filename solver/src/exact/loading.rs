@@ -316,10 +316,9 @@ fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, S
         .collect();
     for rung in rungs {
         let st = &best.1;
-        let Ok(finer) = Exact::on(st.gap, ex.rho, rung) else {
+        let Ok(finer) = Exact::of_state_with(st, rung) else {
             continue;
         };
-        let finer = finer.keeping_the_speed_of_grooved(&st.contour);
         if let Ok(again) = finer.solve_at(Hold::Force(st.force_bar), &st.contour, st.delta_bar) {
             if again.bc_error < st.bc_error && near(st, &again) {
                 let done = again.bc_error <= CONVERGED;
@@ -504,9 +503,7 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> 
         if shape_loss.is_some() {
             if let Some((back, taken, truncation)) = before.take() {
                 if truncation != ex.truncation {
-                    match Exact::on(back.gap, held.rho, truncation)
-                        .map(|e| e.keeping_the_speed_of_grooved(&back.contour))
-                    {
+                    match Exact::of_state_with(&back, truncation) {
                         Ok(e) => ex = e,
                         Err(e) => {
                             return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()))
@@ -679,9 +676,8 @@ fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactS
     guess.contour = super::undulations::without_short_waves(&held.contour, cutoff);
     // the search's problem, without the states' stability (the state
     // chosen gets it from `ex`)
-    let search = Exact::on(held.gap, held.rho, ex.truncation())
+    let search = Exact::of_state_with(held, ex.truncation())
         .ok()?
-        .keeping_the_speed_of_grooved(&held.contour)
         .deferring_stability();
     // a resolved state beyond at size `a_bar`, by Newton's method
     let beyond = |ex: &mut Exact, a_bar: f64| -> Option<ExactState> {

@@ -952,7 +952,13 @@ impl Exact {
     /// proportional to arclength. (A trace from a grooved pull-off in the
     /// plain gauge fails at its first step.)
     pub(crate) fn of_state(st: &ExactState) -> Result<Exact> {
-        Ok(Exact::on(st.gap, st.rho, st.truncation)?.keeping_the_speed_of_grooved(&st.contour))
+        Exact::of_state_with(st, st.truncation)
+    }
+
+    /// [`Exact::of_state`] with another truncation (a finer or coarser
+    /// rung for the same state).
+    pub(crate) fn of_state_with(st: &ExactState, truncation: Truncation) -> Result<Exact> {
+        Ok(Exact::on(st.gap, st.rho, truncation)?.keeping_the_speed_of_grooved(&st.contour))
     }
 
     /// [`Exact::keeping_the_speed_of`] `c` where `c` has a narrow groove
