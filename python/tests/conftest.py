@@ -10,6 +10,12 @@ import pytest
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
+def pytest_configure(config):
+    # .ci/test runs `-m "not slow"`; the slow tier (.ci/slow) runs `-m slow`
+    config.addinivalue_line(
+        "markers", "slow: the slow tier's (.ci/slow), left out of CI for time")
+
+
 @pytest.fixture(scope="session")
 def cli():
     for cand in (os.environ.get("THINJKR_BIN"), ROOT / "target/debug/thinjkr",

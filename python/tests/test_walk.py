@@ -18,6 +18,10 @@ axisymmetric closed form (docs/exact.md, "The gap as data"):
 δ̄ = ā⁴/24 − 2/ā, F̄ = π(ā⁸ − 96ā³)/384.
 
 Runs one symbolica process (the generator) and nothing else at the same time.
+In the slow tier (.ci/slow; about 100 s, most of it the generation): CI keeps
+the Rust side's sample of the same route, a family of one's own derived,
+checked and generated (derive/tests/conformal_family.rs) and family files
+loaded at run time (solver/tests/families.rs).
 """
 
 import json
@@ -31,6 +35,8 @@ import sys
 import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+pytestmark = pytest.mark.slow
 
 SPARSE = """\
 kind = "conformal"

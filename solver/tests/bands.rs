@@ -365,6 +365,7 @@ fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
 /// answer too was the band): a state on the upper arm's returning stretch,
 /// ā past the band's upper edge, unchanged to 1e-9 with 320 modes.
 #[test]
+#[ignore = "slow tier (.ci/slow): about 50 s; the route past a band's fold stays in CI (exact::resolve)"]
 fn a_force_past_the_fold_is_resolved_in_arclength_or_said_to_lie_in_its_band() {
     let control = Hold::Force(6.0);
     // a typed outcome: the band is told apart from a force no start

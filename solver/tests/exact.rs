@@ -999,6 +999,7 @@ fn the_small_contacts_table_of_the_docs_is_the_solvers() {
 /// table had read "(n = 4?)", a direction misnamed before the long-wave
 /// route ruled mode 4 out: `contour_modes::stable_upto`).
 #[test]
+#[ignore = "slow tier (.ci/slow): about 30 s; a docs table regenerated"]
 fn the_critical_thinness_table_of_the_docs_is_the_solvers() {
     let anchor = "**A pull-off unstable under load is not where unloading ends.**";
     let rhos = docs_tables::row(anchor, "| ρ |");

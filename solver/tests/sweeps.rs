@@ -221,11 +221,50 @@ fn the_slender_model_answers_continuously_in_rho_or_report_why() {
 /// The jump at F̄ = 10 between ρ = 0.59 and 0.585 (s 0.849 → 0.808) is such
 /// an event: the Jacobian at the control changes sign at ρ = 0.585.
 #[test]
+#[ignore = "slow tier (.ci/slow): about 280 s; CI runs the window near rho = 0.59 below"]
 fn the_contour_family_answers_continuously_in_rho_or_reports_its_arm() {
     let rho = rho_grid(240);
+    let (report, arm_events) = contour_sweep(&["conformal:4", "conformal:8"], &rho);
+    // ρ ≥ 0.3 is 74 of the grid's 240: at F̄ = 10 conformal:8 answers at
+    // each (the sweep is not vacuous), and its jump near ρ = 0.59 is
+    // reported by the arm
+    assert!(
+        report
+            .iter()
+            .any(|l| l.starts_with("conformal:8 force = 10:") && l.contains("74 of 240")),
+        "{}",
+        report.join("\n")
+    );
+    assert!(arm_events >= 1);
+}
+
+/// CI's sample of the sweep above: conformal:8 on the grid's 22 values of ρ
+/// from 0.50 to 0.70 (indices 196 to 217 of the 240), which hold the
+/// reported jump at F̄ = 10 near ρ = 0.59; every control but the size
+/// answers at each.
+#[test]
+fn the_contour_family_answers_continuously_near_its_arm_jump() {
+    let rho = rho_grid(240)[196..218].to_vec();
+    assert!(rho[0] < 0.5 + 1e-2 && rho[21] > 0.69, "{rho:?}");
+    let (report, arm_events) = contour_sweep(&["conformal:8"], &rho);
+    assert!(
+        report
+            .iter()
+            .filter(|l| !l.contains("a = 3:") && l.contains(" of 22 answered"))
+            .all(|l| l.contains("22 of 22 answered")),
+        "{}",
+        report.join("\n")
+    );
+    assert!(arm_events >= 1, "{}", report.join("\n"));
+}
+
+/// The contour family's sweep over `rho` for each model of `names`: the
+/// report's lines (one per model and control, then the model's time) and
+/// the jumps reported by the arm.
+fn contour_sweep(names: &[&str], rho: &[f64]) -> (Vec<String>, usize) {
     let mut report = Vec::new();
     let mut arm_events = 0;
-    for name in ["conformal:4", "conformal:8"] {
+    for &name in names {
         let model = parse(name).unwrap();
         let began = std::time::Instant::now();
         for hold in CONTROLS {
@@ -262,7 +301,7 @@ fn the_contour_family_answers_continuously_in_rho_or_reports_its_arm() {
             // the same arm: the same count of folds crossed from the circle
             // (a state by another route has no count: always an event)
             let (largest, events) =
-                steps_along(&format!("{name} {hold}"), &rho, &answers, |x, y| {
+                steps_along(&format!("{name} {hold}"), rho, &answers, |x, y| {
                     x.is_some() && x == y
                 });
             arm_events += events;
@@ -279,17 +318,7 @@ fn the_contour_family_answers_continuously_in_rho_or_reports_its_arm() {
         "{}\njumps reported by the arm: {arm_events}",
         report.join("\n")
     );
-    // ρ ≥ 0.3 is 74 of the grid's 240: at F̄ = 10 conformal:8 answers at
-    // each (the sweep is not vacuous), and its jump near ρ = 0.59 is
-    // reported by the arm
-    assert!(
-        report
-            .iter()
-            .any(|l| l.starts_with("conformal:8 force = 10:") && l.contains("74 of 240")),
-        "{}",
-        report.join("\n")
-    );
-    assert!(arm_events >= 1);
+    (report, arm_events)
 }
 
 /// The exact solution over a coarser sweep where it resolves every control
@@ -305,12 +334,33 @@ fn the_contour_family_answers_continuously_in_rho_or_reports_its_arm() {
 /// them shows the change; at F̄ = 10 the state at ρ = 0.609 between the
 /// two arms comes past a fold (s 0.812 → 0.811 → 0.843).
 #[test]
+#[ignore = "slow tier (.ci/slow): about 80 s; CI runs the window near rho = 0.609 below"]
 fn the_exact_solution_answers_continuously_in_rho_or_reports_its_route() {
-    use rayon::prelude::*;
+    exact_sweep(&exact_grid());
+}
+
+/// The exact sweep's 25 values of ρ from 0.4 to 1, equally spaced in ln ρ.
+fn exact_grid() -> Vec<f64> {
     let n = 25;
-    let rho: Vec<f64> = (0..n)
+    (0..n)
         .map(|i| (0.4f64.ln() * (1.0 - i as f64 / (n - 1) as f64)).exp())
-        .collect();
+        .collect()
+}
+
+/// CI's sample of the sweep above: its six values of ρ from 0.564 to 0.683
+/// (indices 9 to 14), which hold the route event at F̄ = 10 (ρ = 0.609,
+/// between its neighbours 0.586 and 0.632).
+#[test]
+fn the_exact_solution_answers_continuously_near_its_route_event() {
+    let rho = exact_grid()[9..15].to_vec();
+    assert!(rho[0] < 0.586 && rho[5] > 0.632, "{rho:?}");
+    exact_sweep(&rho);
+}
+
+/// The exact sweep over `rho` at every control.
+fn exact_sweep(rho: &[f64]) {
+    use rayon::prelude::*;
+    let n = rho.len();
     let model = parse("exact").unwrap();
     let mut report = Vec::new();
     let mut route_events = 0;
@@ -338,8 +388,7 @@ fn the_exact_solution_answers_continuously_in_rho_or_reports_its_route() {
             }
         }
         let answered = answers.iter().flatten().count();
-        let (largest, events) =
-            steps_along(&format!("exact {hold}"), &rho, &answers, |x, y| x == y);
+        let (largest, events) = steps_along(&format!("exact {hold}"), rho, &answers, |x, y| x == y);
         route_events += events;
         report.push(format!(
             "exact {hold}: {answered} of {n} answered, largest step by one route |da|/a = {:.4}, |ds| = {:.4}",

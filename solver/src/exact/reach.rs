@@ -803,6 +803,7 @@ mod tests {
     /// (the lowest of the ten sizes 2.0, 2.2, …, 3.8: 0.2109) is what the
     /// path finds now.
     #[test]
+    #[ignore = "slow tier (.ci/slow): about 45 s; the reach at rho = 0.2 stays in CI"]
     fn the_band_edges_at_rho_0_5_and_0_4_are_sizes_that_reach_just_that_rho() {
         let maps = crate::exact::bands::from_json_lines(&committed("exact_bands.jsonl"))
             .expect("band map lines");
@@ -923,6 +924,7 @@ mod tests {
     /// docs/exact.md, "Below the fold"), and the size of the upper fold,
     /// followed from the circle at fixed ā, turns back at ρ = 0.3.
     #[test]
+    #[ignore = "slow tier (.ci/slow): about 65 s; the reach at rho = 0.2 stays in CI"]
     fn a_window_at_rho_0_3_is_settled_by_two_folds_that_other_routes_find() {
         let map = from_json_lines(&committed("exact_reach.jsonl")).expect("reach lines");
         let committed =

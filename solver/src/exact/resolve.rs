@@ -1311,7 +1311,7 @@ mod tests {
     /// the table from 128 modes). Ignored in CI: about 3 minutes, most of
     /// it the routes tried before this one.
     #[test]
-    #[ignore]
+    #[ignore = "slow tier (.ci/slow)"]
     fn below_the_folds_force_10_at_rho_0_2_is_on_a_larger_contacts_arm_from_0_22() {
         let ten = Hold::Force(10.0);
         let st = at_resolved(0.2, ten).unwrap();
@@ -1379,7 +1379,7 @@ mod convergence {
     /// rung to at most half the one before; crowded, it falls from above
     /// 1e-4 at 32 modes by more than 1e5 at the N used.
     #[test]
-    #[ignore]
+    #[ignore = "slow tier (.ci/slow)"]
     fn convergence_table_of_the_small_rho_pull_offs() {
         let ns = [32, 48, 64, 96, 128, 160, 192, 224, 256, 288, 320];
         println!("| ρ | N = {} |", ns.map(|n| n.to_string()).join(" | "));
