@@ -247,11 +247,14 @@ fn the_contour_family_answers_continuously_near_its_arm_jump() {
     let rho = rho_grid(240)[196..218].to_vec();
     assert!(rho[0] < 0.5 + 1e-2 && rho[21] > 0.69, "{rho:?}");
     let (report, arm_events) = contour_sweep(&["conformal:8"], &rho);
+    // the five controls other than the size (its line says "a = 3:")
+    let others: Vec<&String> = report
+        .iter()
+        .filter(|l| l.contains(" of 22 answered") && !l.contains("a = 3:"))
+        .collect();
+    assert_eq!(others.len(), CONTROLS.len() - 1, "{}", report.join("\n"));
     assert!(
-        report
-            .iter()
-            .filter(|l| !l.contains("a = 3:") && l.contains(" of 22 answered"))
-            .all(|l| l.contains("22 of 22 answered")),
+        others.iter().all(|l| l.contains("22 of 22 answered")),
         "{}",
         report.join("\n")
     );
