@@ -373,7 +373,9 @@ pub(crate) struct ChordStop {
 /// old one; a fresh step is halved (down to 1e-4) until the residual
 /// falls. Converged at the round-off floor, or when the steps stall
 /// (below 1e-13 relative, or below 1e-9 and no longer halving) with the
-/// residual below the tolerance. It begins with the factorised Jacobian
+/// residual below the tolerance, or when no damping of a fresh step
+/// reduces a residual already below the tolerance (the system's own
+/// round-off floor lies above `floor`). It begins with the factorised Jacobian
 /// `first` where one is given (made at a nearby point, such as the
 /// converged state a continuation steps from), kept while it serves and
 /// refreshed as any old one is; `None` factorises at `start`.
@@ -428,6 +430,10 @@ pub(crate) fn chord(
                 Some(rn) if rn.amax() < r0 || r0 < config.floor => break Some((un, rn)),
                 _ if !fresh => break None,
                 _ if lambda > 1e-4 => lambda *= 0.5,
+                // no damping of a fresh step reduces a residual already
+                // within the tolerance: this system's round-off floor lies
+                // above `floor` (more modes, crowded points); converged
+                _ if r0 < config.tolerance => return Ok(u),
                 _ => return Err(stop(&u, r0, it, ChordFailure::LineSearch)),
             }
         };
@@ -459,4 +465,64 @@ pub(crate) fn chord(
         config.max_iterations,
         ChordFailure::Iterations(config.max_iterations),
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// r(u) = u − 1 held at least `noise` in size (its round-off floor: no
+    /// step reduces a residual of that size), with the exact Jacobian 1.
+    struct Noisy {
+        noise: f64,
+    }
+
+    impl ChordSystem for Noisy {
+        fn residuals(&self, u: &DVector<f64>) -> Option<DVector<f64>> {
+            let e = u[0] - 1.0;
+            Some(DVector::from_element(
+                1,
+                e.signum() * e.abs().max(self.noise),
+            ))
+        }
+        fn jacobian(&self, _: &DVector<f64>) -> Option<LU<f64, Dyn, Dyn>> {
+            Some(nalgebra::DMatrix::from_element(1, 1, 1.0).lu())
+        }
+    }
+
+    const CONFIG: ChordConfig = ChordConfig {
+        floor: 1e-13,
+        tolerance: 1e-11,
+        max_iterations: 60,
+    };
+
+    #[test]
+    fn a_round_off_floor_within_the_tolerance_is_converged() {
+        // the floor 1e-12 lies above `floor` and below the tolerance
+        let u = chord(
+            &Noisy { noise: 1e-12 },
+            DVector::from_element(1, 3.0),
+            None,
+            &CONFIG,
+        )
+        .unwrap_or_else(|stop| panic!("{} at residual {:e}", stop.why, stop.residual));
+        assert!((u[0] - 1.0).abs() <= 2e-12, "{}", u[0]);
+    }
+
+    #[test]
+    fn a_round_off_floor_above_the_tolerance_is_a_failure() {
+        let stop = chord(
+            &Noisy { noise: 1e-9 },
+            DVector::from_element(1, 3.0),
+            None,
+            &CONFIG,
+        )
+        .expect_err("a residual of 1e-9 is above the tolerance 1e-11");
+        assert!(stop.residual >= 1e-11, "{:e}", stop.residual);
+        assert!(
+            matches!(stop.why, ChordFailure::LineSearch | ChordFailure::Stalled),
+            "{}",
+            stop.why
+        );
+    }
 }
