@@ -16,8 +16,8 @@
 //! numbers, inequalities or statements.
 //!
 //! Owns: [`ClaimResult`], the engine ([`check_all`]), the keys of the
-//! derived forms ([`derived_form`]). May use: `check`, `model`, `numeric`,
-//! `routes`, `special`, `sym`.
+//! derived forms ([`derived_form`]). May use: `check`, `layer`, `model`,
+//! `numeric`, `routes`, `special`, `sym`.
 
 use crate::check::{approx_printed, compare, describe, seed, Method, Verdict};
 use crate::model::Derivation;
@@ -230,8 +230,14 @@ pub fn derived_form(d: &Derivation, key: &str) -> Result<Atom, String> {
             &l()?.zero_force.dbar,
         )))
     };
+    let layer_m = || -> Result<Atom, String> {
+        crate::layer::thin_layer_m(&crate::layer::kernel()?.compliance)
+    };
     Ok(match key {
         "zero" => Atom::num(0),
+        // the layer's kernel (three-dimensional elasticity): (4) and (2)
+        "layer.m" => layer_m()?,
+        "layer.laplacian" => simplify(&(ex("phi - delta") * layer_m()?)),
         "force" => d.force.clone(),
         "normal_derivative" => d.normal_derivative.value(),
         "normal_derivative_collocated" => d.normal_derivative_collocated.value(),

@@ -26,6 +26,7 @@ pub mod family;
 pub mod force;
 pub mod generate;
 pub mod ir;
+pub mod layer;
 pub mod limits;
 pub mod markdown;
 pub mod model;

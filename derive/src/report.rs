@@ -3,7 +3,7 @@
 //! verdict) and `errata.md` (the claims that differ, with the corrected form
 //! and its consequences). Output is deterministic: no times, no paths.
 //!
-//! Owns: report text. May use: `claims`, `model`, `sym`.
+//! Owns: report text. May use: `claims`, `layer`, `model`, `sym`.
 
 use crate::claims::ClaimResult;
 use crate::model::{Derivation, ModelDerivation};
@@ -29,7 +29,7 @@ fn eq(out: &mut String, label: &str, e: &Atom) {
 /// The symbol names of the code written as the paper's letters in LaTeX
 /// (`eta` → η, `abar` → ā, `dbar` → δ̄, …), whole words only.
 fn greek(tex: &str) -> String {
-    const NAMES: [(&str, &str); 9] = [
+    const NAMES: [(&str, &str); 11] = [
         ("abar0", "\\bar{a}_0"),
         ("abar", "\\bar{a}"),
         ("dbar", "\\bar{\\delta}"),
@@ -39,6 +39,8 @@ fn greek(tex: &str) -> String {
         ("delta", "\\delta"),
         ("mu", "\\mu"),
         ("a0", "a_0"),
+        ("nu", "\\nu"),
+        ("ekh", "E"),
     ];
     let mut out = String::with_capacity(tex.len());
     let mut word = String::new();
@@ -82,6 +84,7 @@ pub fn derivation_md(
     o.push_str("The approximate JKR model of Argatov, Mishuris & Popov (2016), re-derived symbolically with symbolica by the `thinjkr-derive` crate, step by step, from the ansatz alone. Every formula below is printed by symbolica from the derived expression; nothing is copied from the paper. The paper's printed claims are then held against it ([verdicts](#the-paper-s-claims)); those that differ are collected in [errata.md](errata.md).\n\n");
     let _ = writeln!(o, "Ansatz: **{}** (`{}`).\n", d.ansatz.title, d.ansatz.id);
     o.push_str("Notation: `g` = √(2mΔγ) is the right-hand side of (3)₂; `u` = sin²t on the contour x = a cos t, y = b sin t; `abar`, `dbar` are ā, δ̄; `eta` is η(s) of (16), kept as a symbol in the reduced equations.\n\n");
+    layer_section(&mut o);
     o.push_str("## Step 1. Thin-layer equation (2) with gap (1): system (6)\n\n");
     eq(&mut o, "Pressure (5):", &d.pressure);
     for l in &d.laplace {
@@ -221,6 +224,48 @@ pub fn derivation_md(
         );
     }
     o
+}
+
+/// Step 0: the coating's kernel from three-dimensional elasticity, its
+/// checks, and the thin-layer law it gives for (2) and (4).
+fn layer_section(o: &mut String) {
+    o.push_str(
+        "## Step 0. The coating's kernel: (2) and (4) from three-dimensional elasticity\n\n",
+    );
+    o.push_str("Equation (2) is the leading order in h/a of an elastic layer. Here the layer is derived whole: a coating of thickness h, shear modulus G and Poisson's ratio ν, bonded to a rigid base, under a normal pressure p cos(k·x) on its frictionless top, solved by Papkovich–Neuber potentials e^{±kz} (`thinjkr-derive`, module `layer`). Its top moves into it by w = C(k) p cos(k·x). The paper's coatings are transversely isotropic with out-of-plane shear modulus G′; the layer here is isotropic, and G′ is read as its G.\n\n");
+    let kernel = match crate::layer::kernel() {
+        Ok(k) => k,
+        Err(e) => {
+            let _ = writeln!(o, "The derivation failed: {e}\n");
+            return;
+        }
+    };
+    o.push_str("The derivation checked its own steps:\n\n");
+    for s in &kernel.steps {
+        let _ = writeln!(o, "- {s}");
+    }
+    o.push('\n');
+    eq(o, "The compliance, with E = e^{kh}:", &kernel.compliance);
+    o.push_str("Every kernel, this one or a candidate, is held to five checks (a wrong kernel fails them: `derive/tests/layer_kernel.rs`):\n\n| check | claim | verdict | note |\n|---|---|---|---|\n");
+    for c in crate::layer::check_kernel(&kernel.compliance) {
+        let _ = writeln!(
+            o,
+            "| {} | {} | **{}** | {} |",
+            c.name,
+            md_escape(&c.claim),
+            c.verdict.as_str(),
+            md_escape(&c.note)
+        );
+    }
+    o.push_str("\nThe literature's form is that of Carbone & Mangialardi (2008), as implemented by ContactMechanics' `PeriodicFFTElasticHalfSpace` (its finite-thickness surface stiffness, read there); the paper of Carbone & Mangialardi itself was not available to this check. Two coatings under one pressure, with a frictionless interface, each carry that pressure on a shear-free top, so that the approach is w₁ + w₂ and the pair's compliance C₁ + C₂. Its series at ν = ½ begins k²(h₁³/3G₁ + h₂³/3G₂) = k²/m: with −∇² ↔ k² this is (2) with the m of (4), the claims (2) and (4) [below](#the-paper-s-claims), each with the numerical layer as its second route.\n\n");
+    // how far the layer is from the thin-layer law at kh = 0.1: C·3G/(h³k²) − 1
+    if let Ok(c) = crate::layer::kernel_value(&kernel.compliance, 0.1, 0.5) {
+        let _ = writeln!(
+            o,
+            "The next terms, c₂ and c₄ in the check above, say how far (2) is from the layer: at kh = 0.1 (ν = ½) the compliance is {:.2} % below the thin-layer law h³k²/(3G).\n",
+            100.0 * (1.0 - c * 3.0 / 0.1f64.powi(3))
+        );
+    }
 }
 
 /// A model derived by collocation, after the paper's: its own steps.

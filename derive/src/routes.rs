@@ -8,8 +8,12 @@
 //! - (26), (27): the zero-force state found numerically on the solved
 //!   branch (F̄ = 0 by bisection), against the closed forms.
 //!
+//! - (2), (4): the layer of finite thickness carried numerically across
+//!   each coating ([`crate::layer`]), its m extrapolated to long waves.
+//!
 //! Owns: [`SecondRoute`], [`decided_by_two_routes`], the routes. May use:
-//! `claims` (the result type), `model`, `ir`, `numeric`, `sym`.
+//! `claims` (the result type and the derived forms), `layer`, `model`, `ir`,
+//! `numeric`, `sym`.
 
 use crate::check::Verdict;
 use crate::claims::ClaimResult;
@@ -332,6 +336,30 @@ pub fn two_evaluations(form: &Atom, s: (i64, i64)) -> Result<SecondRoute, String
     })
 }
 
+/// Second route for (2) and (4): m from the numerical layer alone (the
+/// state vector carried across each coating, [`crate::layer::propagated_m`],
+/// no symbolic step) at (h₁, G₁) = (0.7, 1.3) and (h₂, G₂) = (1.1, 0.6),
+/// against the derived m at the same point.
+pub fn layer_thin(d: &Derivation) -> Result<SecondRoute, String> {
+    let m = crate::claims::derived_form(d, "layer.m")?;
+    let r = crate::sym::rat;
+    let point = [
+        ("h1", r(7, 10)),
+        ("G1", r(13, 10)),
+        ("h2", r(11, 10)),
+        ("G2", r(3, 5)),
+    ];
+    let derived = crate::sym::eval_prec(&m, &point, 30)?;
+    let route = crate::layer::propagated_m(0.7, 1.3, 1.1, 0.6)
+        .ok_or("the layer's state vector could not be carried across a coating")?;
+    Ok(SecondRoute {
+        text: format!(
+            "m at h₁ = 0.7, G₁ = 1.3, h₂ = 1.1, G₂ = 0.6 is {derived:.12} derived and {route:.12} from the numerical layer (C₁ + C₂ over k² at kh₁ = 0.0025 … 0.02, extrapolated to k → 0)"
+        ),
+        agrees: agree(derived, route),
+    })
+}
+
 /// The second route named `name` in the catalog (`route = …` in
 /// derive/claims.toml).
 pub fn by_name(d: &Derivation, name: &str) -> Result<SecondRoute, String> {
@@ -343,6 +371,7 @@ pub fn by_name(d: &Derivation, name: &str) -> Result<SecondRoute, String> {
     match name {
         "force" => force(d),
         "force_bar" => force_bar(d),
+        "layer.thin" => layer_thin(d),
         "radial.dbar" => axisymmetric(l()?, 0),
         "radial.fbar" => axisymmetric(l()?, 1),
         "radial.critical.a_bar" => axisymmetric_critical(l()?, 0),

@@ -15,6 +15,8 @@ use thinjkr_derive::{ansatz, model::Derivation, sym::ex};
 /// the paper prints, listed here independently of the catalog
 /// derive/claims.toml, which must cover them).
 const REQUIRED_IDS: &[&str] = &[
+    "2",
+    "4",
     "6.1",
     "6.2",
     "6.3",
