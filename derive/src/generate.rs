@@ -73,7 +73,7 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
         .iter()
         .map(|f| f.name.as_str())
         .chain(kinds.slender.iter().map(|f| f.name.as_str()))
-        .chain([crate::slender::REGISTRY_MODULE])
+        .chain([crate::slender::REGISTRY_MODULE, crate::layer::MODULE])
         .collect();
     out.extend(crate::codegen::outputs(&all, &modules)?);
     let mut exact_gap = Vec::new();
@@ -114,6 +114,22 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
             path: format!("solver/src/generated/{}.rs", f.name).into(),
             contents: derived.module_source()?,
         });
+    }
+    // the layer of finite thickness: its kernel's Φ as Rust (issue 70)
+    let (layer_source, layer_worst) = crate::layer::module_source()?;
+    out.push(Output {
+        path: format!("solver/src/generated/{}.rs", crate::layer::MODULE).into(),
+        contents: layer_source,
+    });
+    if let Some(acc) = out
+        .iter_mut()
+        .find(|o| o.path.as_os_str() == "docs/codegen-accuracy.md")
+    {
+        acc.contents.push_str(&format!(
+            "\n## The layer's kernel (`{}`)\n\nΦ(q; ν) of the layer of finite thickness (docs/derivation.md, Step 0), a rational function of q = kh, t = e^{{−2q}} and ν, checked at q and t independently (q from 0 to 40, t from 0 to 1) and ν from 0 to ½.\n\n| function | form | error measured against | worst relative error |\n|---|---|---|---|\n| `base_share` | as derived | the value | {:.1e} |\n",
+            crate::layer::MODULE,
+            layer_worst
+        ));
     }
     // no line of a document longer than 400 characters (issue 32)
     for o in out.iter_mut() {

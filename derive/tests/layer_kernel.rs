@@ -122,3 +122,15 @@ fn the_propagator_reaches_the_limits_by_itself() {
         );
     }
 }
+
+#[test]
+fn the_base_share_is_the_hand_worked_form_without_cancellation() {
+    // 1 − Ψ with sinh, cosh multiplied through by e^{−2q} = t, worked by hand:
+    // Ψ = (f(1 − t²)/2 − 2qt)/(f(1 + t²)/2 + (2q² + o)t), f = 3 − 4ν,
+    // o = 8ν² − 12ν + 5, so 1 − Ψ = (f t² + (2q² + 2q + o)t)/(f(1 + t²)/2 + (2q² + o)t)
+    let k = derive_kernel().unwrap();
+    let phi = thinjkr_derive::layer::base_share(&k.compliance);
+    let hand = ex("((3-4*nu)*t^2 + (2*q^2+2*q+8*nu^2-12*nu+5)*t) \
+                   / ((3-4*nu)*(1+t^2)/2 + (2*q^2+8*nu^2-12*nu+5)*t)");
+    assert!(is_zero(&(phi - hand)));
+}

@@ -187,3 +187,34 @@ fn every_other_model_is_generated_solved_and_matches_its_derivation() {
         }
     }
 }
+
+/// The generated kernel of the layer of finite thickness (Φ = 1 − C·Gk/(1 − ν),
+/// `solver/src/generated/layer_kernel.rs`) against the numerical layer of
+/// thinjkr-derive (the state vector carried across the layer by its matrix
+/// exponential, no symbolic step): equal to round-off (absolute, since Φ is
+/// 1 − a number near 1 on the numerical route).
+#[test]
+fn the_generated_layer_kernel_is_the_numerical_layers() {
+    for (q, nu) in [
+        (0.01, 0.5),
+        (0.3, 0.5),
+        (1.0, 0.5),
+        (2.5, 0.3),
+        (6.0, 0.0),
+        (0.1, 0.45),
+        (4.0, 0.45),
+    ] {
+        let generated = thinjkr::generated::layer_kernel::base_share_at(q, nu);
+        let route =
+            1.0 - thinjkr_derive::layer::propagated_compliance(q, nu).unwrap() / (1.0 - nu);
+        assert!(
+            (generated - route).abs() <= 1e-14,
+            "q = {q}, ν = {nu}: {generated} vs {route}"
+        );
+    }
+    // the limits: long waves meet the rigid base alone, short waves the half-space
+    for nu in [0.0, 0.3, 0.5] {
+        assert_eq!(thinjkr::generated::layer_kernel::base_share_at(0.0, nu), 1.0);
+        assert!(thinjkr::generated::layer_kernel::base_share_at(40.0, nu) < 1e-30);
+    }
+}

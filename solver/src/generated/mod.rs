@@ -10,6 +10,7 @@ pub mod apex45;
 pub mod conformal;
 pub mod slender;
 pub mod slender_registry;
+pub mod layer_kernel;
 pub mod registry;
 /// A generated model, chosen at run time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
