@@ -205,8 +205,7 @@ fn the_generated_layer_kernel_is_the_numerical_layers() {
         (4.0, 0.45),
     ] {
         let generated = thinjkr::generated::layer_kernel::base_share_at(q, nu);
-        let route =
-            1.0 - thinjkr_derive::layer::propagated_compliance(q, nu).unwrap() / (1.0 - nu);
+        let route = 1.0 - thinjkr_derive::layer::propagated_compliance(q, nu).unwrap() / (1.0 - nu);
         assert!(
             (generated - route).abs() <= 1e-14,
             "q = {q}, ν = {nu}: {generated} vs {route}"
@@ -214,7 +213,10 @@ fn the_generated_layer_kernel_is_the_numerical_layers() {
     }
     // the limits: long waves meet the rigid base alone, short waves the half-space
     for nu in [0.0, 0.3, 0.5] {
-        assert_eq!(thinjkr::generated::layer_kernel::base_share_at(0.0, nu), 1.0);
+        assert_eq!(
+            thinjkr::generated::layer_kernel::base_share_at(0.0, nu),
+            1.0
+        );
         assert!(thinjkr::generated::layer_kernel::base_share_at(40.0, nu) < 1e-30);
     }
 }

@@ -309,7 +309,7 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             errln!(
                 "thinjkr: {} stored pull-offs, rho = {} down to {}; {}",
                 stored.pull_offs.len(),
-                crate::exact::stored::TOP,
+                crate::exact::stored::STORED_FROM_RHO,
                 crate::error::rounded(stored.reached),
                 stored.why_stopped
             );
@@ -438,7 +438,7 @@ pub(crate) fn reach(from: f64, to: f64, step: f64, json: bool) -> Result<()> {
     }
     outln!(
         "the near-elliptic exact state of each size a, followed in rho at fixed a from the circle at rho = {} ({} modes of each sign):",
-        crate::exact::reach::TOP,
+        crate::exact::reach::PATHS_START_RHO,
         crate::exact::reach::MODES
     );
     for p in &map {
@@ -479,7 +479,7 @@ pub(crate) fn settled_windows(
     crate::error::check_range(
         "windows-at",
         rho,
-        rho.is_finite() && rho > reach::FLOOR && rho < reach::TOP,
+        rho.is_finite() && rho > reach::FLOOR && rho < reach::PATHS_START_RHO,
         "(0.02, 0.98)",
     )?;
     let unloading = match unloading_at {
@@ -1035,14 +1035,14 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
             outln!("  on the way: {words}")
         }
     }
-    let which = if po.rho < crate::exact::stored::TOP
+    let which = if po.rho < crate::exact::stored::STORED_FROM_RHO
         && matches!(
             po.route,
             crate::exact::Route::ContinuedInRho | crate::exact::Route::BetweenStored
         ) {
         format!(
             "the minimum of F on the piece that carries the pull-off at rho = {}, followed in rho from there (started from the stored pull-offs: between three of one truncation from their interpolation, else from the one nearest above; docs/exact.md, \"The stored pull-offs\")",
-            crate::exact::stored::TOP
+            crate::exact::stored::STORED_FROM_RHO
         )
     } else {
         "the first minimum of F on the near-elliptic arm traced towards smaller a from its start (docs/exact.md, \"Which family\")".to_string()

@@ -1,6 +1,6 @@
 //! The reach in ρ of the near-elliptic family at each contact size (issue
 //! 32): the exact state of half-width ā is followed in ρ at that fixed ā
-//! from the circle (at ρ = [`TOP`]) by the path in (shape, ρ)
+//! from the circle (at ρ = [`PATHS_START_RHO`]) by the path in (shape, ρ)
 //! ([`super::rho_path::follow_with`], which steps around the folds in ā
 //! close by) until ρ turns back; that fold's ρ, located, is the size's
 //! reach. Below it no state of that size is connected to the circle at
@@ -30,7 +30,7 @@ use serde::{Deserialize, Serialize};
 /// The ρ the paths start from: the circle continued to it at its ā
 /// ([`Exact::from_circle`]); at ρ = 1 itself the path's derivative in ρ
 /// (a central difference) would need ρ > 1.
-pub(crate) const TOP: f64 = 0.98;
+pub(crate) const PATHS_START_RHO: f64 = 0.98;
 
 /// The smallest ρ a path is followed to: the smallest of docs/accuracy.md.
 pub(crate) const FLOOR: f64 = 0.02;
@@ -94,14 +94,17 @@ impl SizeReach {
     }
 }
 
-/// The state of size `a_bar` at ρ = [`TOP`] continued from the circle
+/// The state of size `a_bar` at ρ = [`PATHS_START_RHO`] continued from the circle
 /// with truncation `t`, or why there is none, in words; an error only
 /// where the caller asked to stop (not a size's outcome).
 pub(crate) fn from_the_circle(
     a_bar: f64,
     t: Truncation,
 ) -> Result<std::result::Result<ExactState, String>> {
-    match Exact::new(TOP, t)?.deferring_stability().from_circle(a_bar) {
+    match Exact::new(PATHS_START_RHO, t)?
+        .deferring_stability()
+        .from_circle(a_bar)
+    {
         Ok(st) => Ok(Ok(st)),
         Err(e) => {
             crate::newton::check_stop()?;
@@ -192,7 +195,7 @@ pub(crate) fn windows(map: &[SizeReach], rho: f64) -> Vec<[f64; 2]> {
 }
 
 /// The table of docs/exact.md ("The reach of each size"): at each ρ of
-/// docs/accuracy.md ([`crate::accuracy::RHOS`]) below [`TOP`], the windows
+/// docs/accuracy.md ([`crate::accuracy::RHOS`]) below [`PATHS_START_RHO`], the windows
 /// of [`windows`]; under it the smallest reach, the valleys of the reach
 /// ([`valleys`]), the sizes whose path stopped, and those whose fold is
 /// not resolved to [`CONVERGED`].
@@ -207,7 +210,10 @@ pub(crate) fn markdown(map: &[SizeReach]) -> String {
         rounded(last.a_bar),
         rounded(step)
     );
-    for rho in crate::accuracy::RHOS.into_iter().filter(|&r| r < TOP) {
+    for rho in crate::accuracy::RHOS
+        .into_iter()
+        .filter(|&r| r < PATHS_START_RHO)
+    {
         let w = windows(map, rho);
         let cell = if w.is_empty() {
             "none".to_string()
@@ -442,7 +448,7 @@ pub(crate) fn settle(
     crate::error::check_range(
         "rho",
         rho,
-        rho.is_finite() && rho > FLOOR && rho < TOP,
+        rho.is_finite() && rho > FLOOR && rho < PATHS_START_RHO,
         "(0.02, 0.98)",
     )?;
     let stop = crate::newton::stop_flag();

@@ -1,7 +1,7 @@
-//! The stored pull-offs: the resolved exact pull-offs below ρ = [`TOP`]
+//! The stored pull-offs: the resolved exact pull-offs below ρ = [`STORED_FROM_RHO`]
 //! that `thinjkr exact store-pull-offs` writes to
 //! `solver/data/exact_pull_offs.json`, one at every step of the follow in
-//! ρ from the pull-off at [`TOP`] ([`resolve`'s arclength
+//! ρ from the pull-off at [`STORED_FROM_RHO`] ([`resolve`'s arclength
 //! follow](super::resolve)), and the route that starts from them.
 //!
 //! Below ρ = 0.3 the pull-off is the one followed in ρ from the pull-off
@@ -21,7 +21,7 @@
 //! cannot be read, or a stored state fails its check, the route is not
 //! taken and the pull-off is followed from ρ = 0.3 as before.
 //!
-//! Owns: [`TOP`], [`Stored`], [`StoredPullOff`], [`Prediction`],
+//! Owns: [`STORED_FROM_RHO`], [`Stored`], [`StoredPullOff`], [`Prediction`],
 //! [`pull_off`], [`store`]. May use: its parent `exact` (`resolve`'s follow and
 //! escalation), `error`.
 
@@ -33,7 +33,7 @@ use crate::error::{Error, Result};
 /// The ρ below which the pull-off is followed from the stored ones: the
 /// conformal form's escalation resolves the pull-off directly down to
 /// here (docs/accuracy.md's row ρ = 0.3: N = 80).
-pub(crate) const TOP: f64 = 0.3;
+pub(crate) const STORED_FROM_RHO: f64 = 0.3;
 
 /// How far down in ρ [`store`] follows the pull-off (it stops where the
 /// follow stops converging, at ρ = 0.0141 with 320 modes).
@@ -45,7 +45,7 @@ const FLOOR: f64 = 0.01;
 pub(crate) struct Stored {
     /// How the file was made.
     pub generated_by: String,
-    /// The pull-offs, ρ falling, the first at [`TOP`].
+    /// The pull-offs, ρ falling, the first at [`STORED_FROM_RHO`].
     pub pull_offs: Vec<StoredPullOff>,
     /// The smallest ρ the follow converged at (the last entry's).
     pub reached: f64,
@@ -159,7 +159,7 @@ pub(crate) fn stored() -> Option<&'static Stored> {
 /// The pull-off at `rho` from the [`Prediction`] between stored pull-offs
 /// where there is one and it serves, else followed in ρ from the stored
 /// pull-off nearest above it; `None` (the route not taken) for another gap than the
-/// cylinders', for ρ at or above [`TOP`], or where no stored start passes
+/// cylinders', for ρ at or above [`STORED_FROM_RHO`], or where no stored start passes
 /// its check. Below where the stored follow stopped, by more than the
 /// follow's smallest step in ρ, and with its last pull-off already at the
 /// escalation's last rung, the follow is not tried again: the store's own
@@ -167,7 +167,7 @@ pub(crate) fn stored() -> Option<&'static Stored> {
 /// step it tried down to the smallest (a minute's work with 320 modes), so
 /// the store's reason is the answer, typed ([`Error::StopsInRho`]).
 pub(crate) fn pull_off(gap: Gap, rho: f64) -> Option<Result<ExactState>> {
-    if gap != Gap::CYLINDERS || !(rho > 0.0 && rho < TOP) {
+    if gap != Gap::CYLINDERS || !(rho > 0.0 && rho < STORED_FROM_RHO) {
         return None;
     }
     let table = stored()?;
@@ -309,13 +309,13 @@ impl Prediction {
     }
 }
 
-/// What `thinjkr exact store-pull-offs` writes: the pull-off at [`TOP`]
+/// What `thinjkr exact store-pull-offs` writes: the pull-off at [`STORED_FROM_RHO`]
 /// (the conformal form's escalation), then every pull-off the follow in ρ
 /// takes on its way down to where it stops converging (or [`FLOOR`]).
 #[cfg(feature = "cli")]
 pub(crate) fn store() -> Result<Stored> {
     let gap = Gap::cylinders();
-    let (top, _) = pull_off_on(gap, TOP, &default_tries())?;
+    let (top, _) = pull_off_on(gap, STORED_FROM_RHO, &default_tries())?;
     let mut pull_offs = vec![StoredPullOff::of(&top, None)?];
     let mut recorded = Ok(());
     let followed = pull_off_followed_in_arclength_visiting(&top, FLOOR, &mut |st| {
@@ -332,7 +332,7 @@ pub(crate) fn store() -> Result<Stored> {
         Err(Error::StopsInRho { what, .. }) => what,
         Err(e) => return Err(e),
     };
-    let reached = pull_offs.last().map_or(TOP, |p| p.rho);
+    let reached = pull_offs.last().map_or(STORED_FROM_RHO, |p| p.rho);
     Ok(Stored {
         generated_by: "thinjkr exact store-pull-offs --out solver/data/exact_pull_offs.json".into(),
         pull_offs,
@@ -411,7 +411,7 @@ mod tests {
         }
     }
 
-    /// The file parses, its pull-offs fall in ρ from [`TOP`] down to
+    /// The file parses, its pull-offs fall in ρ from [`STORED_FROM_RHO`] down to
     /// `reached`, and three of them (the first, one in the middle, the
     /// last) are rebuilt with a boundary error below 1e-9 and the F̄, ā
     /// and s stored (to 1e-9: the same contour, the same fine grid).
@@ -420,7 +420,7 @@ mod tests {
         let table = stored().expect("solver/data/exact_pull_offs.json parses");
         let p = &table.pull_offs;
         assert!(p.len() >= 10, "{} stored pull-offs", p.len());
-        assert_eq!(p[0].rho, TOP);
+        assert_eq!(p[0].rho, STORED_FROM_RHO);
         assert!(p.windows(2).all(|w| w[1].rho < w[0].rho));
         assert_eq!(p[p.len() - 1].rho, table.reached);
         for q in [&p[0], &p[p.len() / 2], &p[p.len() - 1]] {
