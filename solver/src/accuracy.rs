@@ -10,8 +10,8 @@
 //! pull-off recomputed with twice the contour modes and quadrature points)
 //! and the reference file the checker reads for `sec6.error.exact`.
 //!
-//! Owns: [`Quantity`], [`Row`], [`row`], [`render`], [`RHOS`],
-//! [`Doubling`], [`doubling`], [`Reference`], [`band_markdown`]. May use: `fold`, `control`, `exact`, `contact`,
+//! Owns: [`Quantity`], `Row`, `row`, `render`, `RHOS`,
+//! `Doubling`, `doubling`, [`Reference`], [`band_markdown`]. May use: `fold`, `control`, `exact`, `contact`,
 //! `conformal` (the compared members), `model` (the ellipse models), `slender`
 //! (the slender limit's table), `report` (its state), `error`.
 

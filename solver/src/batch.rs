@@ -6,7 +6,7 @@
 //! of the crate and its front ends runs on ([`thread_pool`]).
 //!
 //! Owns: [`Item`], [`Solves`], [`solve_all`], [`thread_pool`], [`parse_line`],
-//! [`csv_row_values`], [`CSV_HEADER`]. May use: `contact`, `conformal`, `control`, `error`,
+//! `csv_row_values`, `CSV_HEADER`. May use: `contact`, `conformal`, `control`, `error`,
 //! `model`.
 
 use crate::contact::{Contact, State};
@@ -345,7 +345,7 @@ fn threads_that_fit() -> Option<usize> {
 
 /// The thread pool every parallel step of a run (batch, accuracy, the
 /// exact bands) runs on: as many threads as RAYON_NUM_THREADS asks for (up
-/// to [`MAX_THREADS_PER_CORE`] per core), else one per core. Where the system cannot start
+/// to `MAX_THREADS_PER_CORE` per core), else one per core. Where the system cannot start
 /// that many (a memory cap), half as many are tried, down to one, with a
 /// warning; rayon's own global pool would instead panic at the first
 /// parallel step.

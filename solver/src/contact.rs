@@ -22,7 +22,7 @@
 //! folds by Newton on the fold condition ([`crate::fold`]). At ρ = 1 the
 //! model's axisymmetric solution (22)–(25) is used (s = 1).
 //!
-//! Owns: [`Contact`], [`NEAR_CIRCLE`], [`State`], [`Stability`], [`PullOff`], [`Search`]
+//! Owns: [`Contact`], `NEAR_CIRCLE`, [`State`], [`Stability`], [`PullOff`], [`Search`]
 //! and the walk.
 //! May use: `control`, `model`, `newton`, `fold`, `error`, `equations` (the one model
 //! interface its Newton and continuation run on), `cutoff` (the neutral band).

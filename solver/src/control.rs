@@ -5,7 +5,7 @@
 //! package all take it; a kind that cannot hold a state at one of them
 //! says so with a typed error.
 //!
-//! Owns: [`Hold`], [`Quantity`]. May use: `error`.
+//! Owns: [`Hold`], `Quantity`. May use: `error`.
 
 use serde::Serialize;
 

@@ -1,7 +1,7 @@
 //! The whole force–displacement curve of an ellipse model, including its
 //! unstable part, traced by the one continuation engine
-//! ([`crate::continuation`]) through the one model interface's family
-//! ([`crate::equations::Branch`]) in (ā, s, δ̄), static 3-vectors. The
+//! (`crate::continuation`) through the one model interface's family
+//! (`crate::equations::Branch`) in (ā, s, δ̄), static 3-vectors. The
 //! solution set of (19)–(20) folds in δ̄ and in ā, so no single variable
 //! parametrises it everywhere; the arclength does. Jacobian: the generated
 //! [∂r/∂(ā, s) | ∂r/∂δ̄], in variables scaled so that a unit step means a
@@ -45,7 +45,7 @@ pub struct Fold {
     /// Which quantity turns.
     pub kind: FoldKind,
     /// The state at the fold: located by Newton's method on the fold
-    /// condition ([`crate::fold::locate`]) from the nearest traced point.
+    /// condition (`crate::fold::locate`) from the nearest traced point.
     pub state: State,
 }
 

@@ -21,14 +21,14 @@
 //! `physical` knows it (the thicker coating's h over L); the dimensionless
 //! commands take `--thinness` and otherwise h/L = 0.1 ([`Cutoff::default`]).
 //!
-//! A direction whose eigenvalue is zero up to [`NEUTRAL`] of the largest is
+//! A direction whose eigenvalue is zero up to `NEUTRAL` of the largest is
 //! neutral, neither stable nor unstable: the state sits on a fold or a
 //! bifurcation of the control (a pull-off under its own control, or the
 //! circle at a neutral point ā³ = 4(n − 1)), located only as well as
 //! round-off allows. The verdicts count the clearly negative directions;
-//! the neutral ones are shown beside them ([`Eigen`]).
+//! the neutral ones are shown beside them (`Eigen`).
 //!
-//! Owns: [`Cutoff`], the neutral band ([`Eigen`]). May use: `error`.
+//! Owns: [`Cutoff`], the neutral band (`Eigen`). May use: `error`.
 
 use crate::error::{check_range, Result};
 use serde::{Deserialize, Serialize};

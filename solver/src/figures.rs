@@ -726,7 +726,7 @@ pub fn exact_bands(
 }
 
 /// The band maps with the F̄(ā) curves they carry, one figure per ρ of
-/// [`BANDS_FORCE_FILES`] (others are not drawn), for ā in [2, 3.2] (the
+/// `BANDS_FORCE_FILES` (others are not drawn), for ā in [2, 3.2] (the
 /// bands of modes 4, 6 and 8 and the pull-off): the bands shaded, the exact
 /// family's F̄ at its sampled sizes (a line through them, broken where a
 /// sample is missing), `conformal:8`'s at every grid point, and each

@@ -16,7 +16,7 @@
 //! (generated); the row of c is a central difference of the analytic
 //! Jacobian (so second derivatives are not needed from the generator).
 //!
-//! Owns: [`FoldCondition`], [`locate`]. May use: `model`, `error`.
+//! Owns: [`FoldCondition`], `locate`. May use: `model`, `error`.
 
 use crate::error::{Error, Result};
 use crate::model::Model;

@@ -9,7 +9,7 @@
 //!
 //! Owns: [`Model`], [`ModelInfo`], [`ClosureKind`], [`PressureParameters`],
 //! and numeric helpers the generated implementations share
-//! ([`real_roots`], [`contour_spread`], Brent's minimisation). May use:
+//! (`real_roots`, `contour_spread`, Brent's minimisation). May use:
 //! `generated` (for [`ModelId`]), nalgebra.
 
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};

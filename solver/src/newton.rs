@@ -1,26 +1,26 @@
 //! Damped Newton's method, written once for every model and any number of
-//! unknowns ([`damped`]: static nalgebra vectors where the size is known,
+//! unknowns (`damped`: static nalgebra vectors where the size is known,
 //! dynamic otherwise), with a backtracking line search on the scaled
 //! residual norm that also keeps the iterate inside the model's domain.
-//! [`solve`] and [`solve_within`] are its form for the ellipse models'
+//! [`solve`] and `solve_within` are its form for the ellipse models'
 //! two residuals in x = (ā, s) (for the paper's model, (19)–(20)) on the
 //! domain ā > 0, 0 < s ≤ 1; `conformal:K` uses it in x = (c, δ̄).
-//! [`chord`] is Newton's method with the Jacobian kept while it serves,
+//! `chord` is Newton's method with the Jacobian kept while it serves,
 //! for a system whose Jacobian costs far more than its residuals (the
 //! exact solver's).
 //!
 //! A caller may ask a long computation to stop (the Python package's
 //! Ctrl-C): run it [`stoppable`] with a flag, and once the flag is raised
-//! every iteration of [`chord`] (the exact solver's Newton) on that
+//! every iteration of `chord` (the exact solver's Newton) on that
 //! computation's threads fails at once, and so do the escalations and
-//! continuations above it ([`check_stop`]), so the computation unwinds in
-//! moments; the caller discards what it returns. [`damped`] does not look:
+//! continuations above it (`check_stop`), so the computation unwinds in
+//! moments; the caller discards what it returns. `damped` does not look:
 //! its solves take microseconds, and a check in its loop measurably slowed
 //! the energy model's cold solve (about 20 %).
 //!
-//! Owns: [`NewtonConfig`], [`Problem`], [`Iterate`], [`damped`], [`chord`]
-//! ([`ChordSystem`], [`ChordConfig`], [`ChordStop`]), [`solve`],
-//! [`solve_within`], the stop flag ([`stoppable`]). May use: `error`,
+//! Owns: [`NewtonConfig`], `Problem`, `Iterate`, `damped`, `chord`
+//! (`ChordSystem`, `ChordConfig`, `ChordStop`), [`solve`],
+//! `solve_within`, the stop flag ([`stoppable`]). May use: `error`,
 //! nalgebra.
 
 use crate::error::{Error, Result};
@@ -38,7 +38,7 @@ thread_local! {
 /// Run `f` so that raising `stop` (from another thread) makes every
 /// iteration of the exact solver's Newton inside it fail at once: `f` then returns soon, with an
 /// error the caller discards. Work `f` hands to other threads carries the
-/// flag with it ([`carried`]).
+/// flag with it (`carried`).
 pub fn stoppable<T>(
     stop: &std::sync::Arc<std::sync::atomic::AtomicBool>,
     f: impl FnOnce() -> T,

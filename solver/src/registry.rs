@@ -13,8 +13,8 @@
 //! exact solver alike, so that the command line and the Python package do
 //! not dispatch over kinds of model themselves to solve.
 //!
-//! Owns: [`Choice`] (and names [`Slender`], a slender model's handle), [`PhysicalAnswer`], [`physical`] and its table of defaults ([`DEFAULTS`]), [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
-//! [`Entry`], [`parse`], [`entries`], [`help`]. May use: `generated` (the ellipse models),
+//! Owns: [`Choice`] (and names [`Slender`], a slender model's handle), [`PhysicalAnswer`], [`physical`] and its table of defaults (`DEFAULTS`), [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
+//! `Entry`, [`parse`], [`entries`], `help`. May use: `generated` (the ellipse models),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
 //! curves), `model`, `control`, `units` (`physical`), `cutoff` (a contour state's
@@ -178,7 +178,7 @@ pub struct PhysicalAnswer {
     /// The name of the model that answered.
     pub model: String,
     /// Where no model was named: which model the table of defaults chose
-    /// for this ρ and question, and why ([`DEFAULTS`]).
+    /// for this ρ and question, and why (`DEFAULTS`).
     pub chosen_because: Option<String>,
     /// Where no model was named and the chosen one is not the paper's:
     /// the paper's model `max` at the same question, when the two differ

@@ -1,15 +1,15 @@
 //! The one output schema of the command line's `--json` (issue 22): every
-//! subcommand prints one [`Document`]. One state sits under `"state"`,
+//! subcommand prints one `Document`. One state sits under `"state"`,
 //! several under `"states"`, each with the names of the Rust fields (and
 //! of the Python package's `State`): `a_bar`, `b_bar`, `s`, `delta_bar`,
 //! `force_bar`, … ; a state of `conformal:K` and an exact state add their
 //! own keys to the same object. Events and verdicts are tagged objects
 //! (`{"kind": "force_minimum", "state": {…}}`); an error is
 //! `{"error": {"kind": …, "message": …}}`. With the feature `schema` the
-//! JSON Schema of [`Document`] is derived from these types (`thinjkr
+//! JSON Schema of `Document` is derived from these types (`thinjkr
 //! schema`, committed as docs/schema.json).
 //!
-//! Owns: [`Document`] and its parts, and the shape of a slender state
+//! Owns: `Document` and its parts, and the shape of a slender state
 //! ([`SlenderState`]). May use: `contact`, `conformal`,
 //! `exact`, `curve`, `fold`, `units`, `error`, `registry` (the model list).
 

@@ -1,9 +1,9 @@
 //! The command line, `thinjkr` (the binary is [`main`] and nothing else):
 //! the verbs and their arguments (clap), each answered through the model
 //! layer (`crate::registry`) and printed for a person, as CSV or as JSON
-//! (`crate::report`); `thinjkr exact …` in [`exact_command`], the contour
-//! families' printers in [`contour`], every write through [`output`], every
-//! file through [`files`]. With no arguments it prints the paper's ρ = 0.8
+//! (`crate::report`); `thinjkr exact …` in `exact_command`, the contour
+//! families' printers in `contour`, every write through `output`, every
+//! file through `files`. With no arguments it prints the paper's ρ = 0.8
 //! example.
 //!
 //! Owns: the verbs, their parsing and printing, the thread pool of a run.

@@ -108,7 +108,7 @@ pub struct Family {
     /// Its members, by K.
     pub members: &'static [Tables],
     /// The particular solution's monomials, as the exact solver reads the
-    /// gap ([`crate::exact::Gap`]).
+    /// gap (`crate::exact::Gap`).
     pub particular_terms: &'static [crate::exact::gap::Term],
 }
 
@@ -145,7 +145,7 @@ fn registry() -> &'static Registry {
 
 /// Every contour family: those in the generated registry this build was
 /// compiled with, in its order, then those loaded at run time from the
-/// folder named by `THINJKR_FAMILIES` ([`load`]).
+/// folder named by `THINJKR_FAMILIES` (`load`).
 pub fn families() -> &'static [&'static Family] {
     &registry().families
 }

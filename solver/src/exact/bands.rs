@@ -25,7 +25,7 @@
 //! - a band narrower than the screen's step can pass between two grid
 //!   points; bands sit at the circle's neutral points, so each neutral
 //!   point the screen passed without a gap is probed by the exact family
-//!   in the same way, in steps of [`PROBE_STEP`] ([`Probe`]).
+//!   in the same way, in steps of `PROBE_STEP` ([`Probe`]).
 //!
 //! The map also carries F̄(ā) of the model and of the exact family over
 //! the screen ([`CurvePoint`]), for the figure.
@@ -37,10 +37,10 @@
 //! go on changing there (the load-controlled pull-off lies on such a
 //! stretch just past the mode-4 band). So a state at given F̄ or δ̄ is also
 //! looked for on the arms beside a gap traced past their folds
-//! ([`past_folds_or_band`], [`states_at`]).
+//! (`past_folds_or_band`, [`states_at`]).
 //!
 //! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
-//! [`states_at`], [`past_folds_or_band`], [`documents_of`] (the maps' JSON
+//! [`states_at`], `past_folds_or_band`, `documents_of` (the maps' JSON
 //! lines). May use: `control`, `exact`
 //! (its family and traces; the screen by the gap's seed, `exact::seed`),
 //! `error`, `newton` (the caller's stop flag, carried to rayon's threads),
@@ -99,7 +99,7 @@ pub struct Crossed {
 }
 
 /// A neutral point of the circle, ā³ = 4(n − 1), that the screen passed
-/// without a gap, probed by the exact family in fine steps ([`PROBE_STEP`]):
+/// without a gap, probed by the exact family in fine steps (`PROBE_STEP`):
 /// a band narrower than the screen's step would show there.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -123,7 +123,7 @@ pub struct CurvePoint {
     /// where it has none).
     pub model: Option<f64>,
     /// F̄ of the exact state at this ā started from the model's (every
-    /// [`CURVE_EVERY`]th grid point; `None` elsewhere, where the model has
+    /// `CURVE_EVERY`th grid point; `None` elsewhere, where the model has
     /// none, or where no resolved exact state lands near the model's).
     pub exact: Option<f64>,
 }
@@ -479,11 +479,11 @@ pub(crate) fn documents_of<T: serde::de::DeserializeOwned>(
 /// crosses the target between two neighbouring grid points of the screen
 /// (step 0.01), the exact state by Newton with the control held, from the
 /// ellipse of the model's state nearer the target, with the truncations
-/// `tries` escalated as for every exact state ([`super::resolved`]); kept
+/// `tries` escalated as for every exact state (`super::resolved`); kept
 /// when resolved and within one grid step of the bracket. Sorted by ā, one
 /// per state (answers within 1e-6 in ā are one). The states on the arms
 /// beside each gap of the screen, traced through their folds and on along
-/// their returning stretches ([`past_folds`]), are added. Brackets where
+/// their returning stretches (`past_folds`), are added. Brackets where
 /// Newton fails, and crossings past a fold that do not converge, are
 /// reported in `missed` (ā and why).
 pub fn states_at(

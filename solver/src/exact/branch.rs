@@ -1,5 +1,5 @@
 //! The solution family of the exact problem traced by the one continuation
-//! engine ([`crate::continuation`]) in u = (A, b₀..b_{N−1}, δ̄), with ā
+//! engine (`crate::continuation`) in u = (A, b₀..b_{N−1}, δ̄), with ā
 //! free: the family can turn back in ā (a fold of the contact size, where
 //! the contour turns strongly non-elliptical near a bifurcation of the
 //! circle branch), so ā is not a safe parameter. Folds in ā and in F̄ are
@@ -12,7 +12,7 @@
 //! falls fast (the chord method).
 //!
 //! Owns: [`Branch`], [`BranchPoint`], [`Event`], the family's
-//! [`Family`] implementation. May use: `control`, `fold`, `exact`, `continuation`, `error`,
+//! `Family` implementation. May use: `control`, `fold`, `exact`, `continuation`, `error`,
 //! `newton` (its stop check),
 //! `exact::seed` (the gap's seed, the richest member's state, as a start).
 

@@ -23,7 +23,7 @@
 //! c_j e^{(2j+3)iθ} too and θ made proportional to arclength by as many
 //! more equations (docs/exact.md, "The arclength representation"). p̄ = q + P
 //! with the particular solution P = X⁴/24 + Y⁴/(24ρ) − δ̄(X² + Y²)/4 and q
-//! harmonic with q = −P on the contour ([`bie`]: second-kind boundary
+//! harmonic with q = −P on the contour (`bie`: second-kind boundary
 //! integral equation, trapezoid rule on n points). The condition
 //! ∂p̄/∂ν = 1 is imposed on the cosine modes cos 2kθ, k = 0..N, of
 //! ∂p̄/∂ν − 1 (the doubly symmetric part; the rest vanishes by symmetry),
@@ -40,7 +40,7 @@
 //! Owns: [`ExactState`], [`Exact`], [`Truncation`], [`Contour`]. May use: `control`, `error`, `newton` (the shared chord iteration),
 //! `cutoff` (the verdicts' and the shape's, [`ExactState::judged`]),
 //! nalgebra; no model (it is the reference for them): starting guesses come
-//! with the gap from the layer above ([`seed`]), which also defines
+//! with the gap from the layer above (`seed`), which also defines
 //! `Gap::cylinders()`, the cylinders' gap with its seed.
 
 pub mod bands;
@@ -671,7 +671,7 @@ pub enum Route {
     BetweenStored,
     /// On an arm beside a band of the family, traced through the arm's
     /// fold in ā and on along its returning stretch to the control
-    /// ([`bands::past_folds_or_band`]), where the other routes find nothing.
+    /// (`bands::past_folds_or_band`), where the other routes find nothing.
     PastFold,
     /// Below the fold in ρ of the family at the control: on the arm of a
     /// larger contact, continued in ρ at fixed ā from the state at a larger

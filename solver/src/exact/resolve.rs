@@ -23,7 +23,7 @@ use crate::error::{Error, Result};
 /// ρ = 0.8 a fine-grid error of 8e-6 goes with an error of 4e-9 in F̄.)
 pub(crate) const RESOLVED: f64 = 1e-5;
 
-/// The fine-grid boundary error at which [`resolved`] stops escalating:
+/// The fine-grid boundary error at which `resolved` stops escalating:
 /// the aspect ratio s of a pull-off changes by about 0.01–0.07 times the
 /// boundary error when the truncation is doubled (docs/accuracy.md), so
 /// 1e-9 keeps that change near or below 1e-10.
@@ -210,8 +210,8 @@ pub(crate) const ESCALATION: [usize; 12] = [12, 16, 20, 24, 28, 32, 40, 48, 56, 
 pub const MAX_USER_MODES: usize = ESCALATION[ESCALATION.len() - 1];
 
 /// The default escalation: 12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80
-/// and 96 contour modes (of which [`resolved`] skips those predicted not to
-/// converge), each with [`POINTS_PER_MODE`] quadrature points per mode.
+/// and 96 contour modes (of which `resolved` skips those predicted not to
+/// converge), each with `POINTS_PER_MODE` quadrature points per mode.
 pub fn default_tries() -> Vec<Truncation> {
     ESCALATION
         .iter()
@@ -220,13 +220,13 @@ pub fn default_tries() -> Vec<Truncation> {
 }
 
 /// The load-controlled pull-off at `rho` with the default escalation of
-/// truncations ([`resolved`], [`default_tries`]); below ρ = 0.3 on the
+/// truncations (`resolved`, [`default_tries`]); below ρ = 0.3 on the
 /// cylinders' gap, followed in ρ in the arclength representation from the
-/// stored pull-offs ([`super::stored`]); where no start finds
+/// stored pull-offs (`super::stored`); where no start finds
 /// it, followed in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
 /// that is found, in the arclength representation
-/// ([`pull_off_followed_in_arclength`]), else in the conformal form
-/// ([`pull_off_continued_in_rho`]).
+/// (`pull_off_followed_in_arclength`), else in the conformal form
+/// (`pull_off_continued_in_rho`).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     pull_off_resolved_on(Gap::cylinders(), rho)
 }
@@ -345,7 +345,7 @@ pub(crate) fn pull_off_on(
 /// truncations ([`at_searched`] with [`default_tries`]); where none is
 /// found, and the control lies in no band of the near-elliptic family,
 /// continued in ρ at the control from the state at a larger ρ
-/// ([`continued_in_rho`]).
+/// (`continued_in_rho`).
 pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
     at_resolved_on(Gap::cylinders(), rho, control)
 }
@@ -576,10 +576,10 @@ fn screened(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
 }
 
 /// The exact state at `control` with the truncations `tries`: by every
-/// route of [`at_with`], and where these find nothing, on the arms beside
+/// route of `at_with`, and where these find nothing, on the arms beside
 /// a band of the family traced past their folds; where there is none
 /// there either, and the control lies in a band, the error says so
-/// ([`bands::past_folds_or_band`]).
+/// (`bands::past_folds_or_band`).
 pub fn at_searched(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
     searched_on(Gap::cylinders(), rho, control, tries)
 }
