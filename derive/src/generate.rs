@@ -125,11 +125,8 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
         .iter_mut()
         .find(|o| o.path.as_os_str() == "docs/codegen-accuracy.md")
     {
-        acc.contents.push_str(&format!(
-            "\n## The layer's kernel (`{}`)\n\nΦ(q; ν) of the layer of finite thickness (docs/derivation.md, Step 0), a rational function of q = kh, t = e^{{−2q}} and ν, checked at q and t independently (q from 0 to 40, t from 0 to 1) and ν from 0 to ½.\n\n| function | form | error measured against | worst relative error |\n|---|---|---|---|\n| `base_share` | as derived | the value | {:.1e} |\n",
-            crate::layer::MODULE,
-            layer_worst
-        ));
+        acc.contents
+            .push_str(&crate::layer::accuracy_section(layer_worst));
     }
     // no line of a document longer than 400 characters (issue 32)
     for o in out.iter_mut() {
