@@ -9,6 +9,10 @@
 //! the default), `apexes`, `energy` (Ritz, with stability) and `apex45`
 //! (∂p/∂ν equal at t = 0 and t = π/4, a second collocation).
 //!
+//! [`layer`] measures the thin-layer equation (2) itself: the contact of
+//! coatings of finite thickness at ρ = 1, from three-dimensional elasticity,
+//! whose limits are (2) (thin) and JKR's half-space contact (thick).
+//!
 //! The equations are the derived ones: where the paper's printed formulas
 //! differ ((18), (25)₁, (26), (27); see `docs/errata.md`), the derived forms
 //! are used.
@@ -39,6 +43,7 @@ pub mod fold;
 #[allow(missing_docs)]
 #[rustfmt::skip]
 pub mod generated;
+pub mod layer;
 pub mod limits;
 pub mod model;
 pub mod newton;

@@ -174,10 +174,13 @@ fn every_module_uses_only_what_its_charter_names() {
 /// hand-written public items (the lines `pub fn|struct|enum|const|static|
 /// type|trait|mod|use` of solver/src, generated code aside; an item of a
 /// crate-private module is written `pub(crate)` so that the count is what
-/// is reachable). A new public item is then a decision, not a default.
+/// is reachable). A new public item is then a decision, not a default:
+/// 200 until issue 70's layer of finite thickness added ten (`layer`,
+/// `Coating`, `Layers`, `Route`, `LayerState`, `LayerPullOff`, `new`,
+/// `equal`, `state`, `pull_off`).
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 200;
+    const MAX_PUBLIC_ITEMS: usize = 210;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);
