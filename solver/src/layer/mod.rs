@@ -465,10 +465,13 @@ pub(crate) fn minimum(f: impl Fn(f64) -> Result<f64>, guess: f64, what: &str) ->
 mod tests {
     use super::*;
 
-    /// The state at a contact radius moves by less than 1e-11 (relative)
+    /// The state at a contact radius moves by less than 1e-10 (relative)
     /// when the quadrature's panels are halved and the modes raised by half,
     /// and the error of fewer modes falls geometrically (the convergence
-    /// table of the Legendre truncation).
+    /// table of the Legendre truncation). 1e-10 is above the solution's
+    /// round-off, which grows with the system's condition, about (ā/h)³: the
+    /// force scatters by 4e-11 over changes of ā by 1e-9 at h/L = 0.03
+    /// (7e-12 relative), by 1e-9 at h/L = 0.01.
     #[test]
     fn the_discretisation_is_converged_and_converges_geometrically() {
         for (h, a) in [(0.03, 2.2), (0.3, 1.8), (3.0, 0.4)] {
@@ -481,11 +484,11 @@ mod tests {
             let fine = state(n * 3 / 2, 2.0);
             let scale = base.force_bar.abs().max(1.0);
             assert!(
-                (base.force_bar - fine.force_bar).abs() < 1e-11 * scale,
+                (base.force_bar - fine.force_bar).abs() < 1e-10 * scale,
                 "h {h}: {base:?} against {fine:?}"
             );
             assert!(
-                (base.delta_bar - fine.delta_bar).abs() < 1e-11 * base.delta_bar.abs().max(1.0),
+                (base.delta_bar - fine.delta_bar).abs() < 1e-10 * base.delta_bar.abs().max(1.0),
                 "h {h}: {base:?} against {fine:?}"
             );
             // a quarter and a half of the modes: errors falling geometrically
