@@ -161,6 +161,11 @@ fn the_thin_limit_of_the_pull_off_is_the_thin_layer_equation_s() {
             p[i] = (hs[i + k] * p[i] - hs[i] * p[i + 1]) / (hs[i + k] - hs[i]);
         }
     }
+    eprintln!(
+        "pull-offs {forces:?} at h/L {hs:?}: extrapolated {:.10}, −3π/2 = {limit:.10}, relative {:.1e}",
+        p[0],
+        (p[0] - limit) / limit.abs()
+    );
     assert!(
         (p[0] - limit).abs() < 1e-6 * limit.abs(),
         "extrapolated {} against −3π/2 {limit}",
@@ -180,6 +185,10 @@ fn the_two_routes_agree_on_the_pull_off_to_1e_8() {
         let griffith = layers.pull_off(Route::Griffith).unwrap().load;
         let energy = layers.pull_off(Route::Energy).unwrap().load;
         let gap = (griffith.force_bar - energy.force_bar).abs() / griffith.force_bar.abs();
+        eprintln!(
+            "h/L {h}: pull-off {:.12} by Griffith, {:.12} by the energy, relative gap {gap:.1e}",
+            griffith.force_bar, energy.force_bar
+        );
         assert!(
             gap < 1e-8,
             "h/L {h}: pull-off {} by Griffith, {} by the energy ({gap:.1e})",
@@ -318,4 +327,67 @@ fn bad_coatings_and_controls_are_refused_by_name() {
         let e = layers.state(hold, Route::Griffith).unwrap_err();
         assert_eq!(e.kind(), "out_of_range", "{e}");
     }
+}
+
+/// The pull-off F/(πRΔγ) of equal incompressible coatings against h/L, its
+/// radius over h, its approach δ̄, and how far (2)'s pull-off −3πRΔγ is
+/// from it: the table of docs/thickness.md, held here row by row.
+fn table_row(h: f64) -> String {
+    let pull = equal(h, 0.5).pull_off(Route::Griffith).unwrap().load;
+    let force = pull.force_bar * 2.0 / PI;
+    format!(
+        "| {h} | {force:.7} | {} | {} | {:+.2} % |",
+        significant(pull.a_bar / h, 4),
+        significant(pull.delta_bar, 4),
+        100.0 * (-3.0 / force - 1.0)
+    )
+}
+
+/// `x` to `digits` significant digits, without an exponent.
+fn significant(x: f64, digits: i32) -> String {
+    let decimals = (digits - 1 - x.abs().log10().floor() as i32).max(0) as usize;
+    format!("{x:.decimals$}")
+}
+
+/// The h/L at which (2)'s pull-off is `error` (a fraction) off the layer's:
+/// the secant method in ln(h/L) on −3/F − 1 − error.
+fn thinness_at_error(error: f64) -> f64 {
+    let miss = |ln_h: f64| -1.5 * PI / pull_off_force(ln_h.exp()) - 1.0 - error;
+    let (mut x0, mut x1) = ((0.5 * error).ln(), (error).ln());
+    let (mut f0, mut f1) = (miss(x0), miss(x1));
+    for _ in 0..30 {
+        let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+        (x0, f0) = (x1, f1);
+        x1 = x2;
+        f1 = miss(x1);
+        if (x1 - x0).abs() < 1e-10 {
+            break;
+        }
+    }
+    assert!(f1.abs() < 1e-9, "no convergence: {f1}");
+    x1.exp()
+}
+
+#[test]
+fn the_thickness_table_of_the_docs_is_the_solver_s() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/thickness.md"))
+        .unwrap();
+    let mut missing = Vec::new();
+    for h in [0.01, 0.03, 0.1, 0.3, 0.73, 1.0, 3.0, 10.0, 100.0] {
+        let row = table_row(h);
+        if !doc.lines().any(|l| l == row) {
+            missing.push(row);
+        }
+    }
+    for (error, words) in [(0.01, "1 %"), (0.05, "5 %"), (0.2, "20 %")] {
+        let row = format!("| {words} | {:.4} |", thinness_at_error(error));
+        if !doc.lines().any(|l| l == row) {
+            missing.push(row);
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "docs/thickness.md lacks these rows:\n{}",
+        missing.join("\n")
+    );
 }

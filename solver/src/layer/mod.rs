@@ -471,7 +471,7 @@ mod tests {
     /// table of the Legendre truncation). 1e-10 is above the solution's
     /// round-off, which grows with the system's condition, about (ā/h)³: the
     /// force scatters by 4e-11 over changes of ā by 1e-9 at h/L = 0.03
-    /// (7e-12 relative), by 1e-9 at h/L = 0.01.
+    /// (1e-11 relative), by 1e-9 at h/L = 0.01.
     #[test]
     fn the_discretisation_is_converged_and_converges_geometrically() {
         for (h, a) in [(0.03, 2.2), (0.3, 1.8), (3.0, 0.4)] {
