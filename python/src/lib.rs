@@ -575,6 +575,7 @@ fn physical(
             "model": answer.model,
             "chosen_because": answer.chosen_because,
             "paper_model": answer.paper_model,
+            "thin_layer": answer.thin_layer,
         });
         if let thinjkr::report::AnyState::Ellipse(st) = &answer.state {
             let p0 = st.p0 * answer.scales.pressure;

@@ -396,6 +396,27 @@ def test_physical_without_a_model_is_the_command_lines_default(cli):
     assert abs(st.paper_model.force_bar / st.state.force_bar - 1) > 0.01
 
 
+def test_physical_at_ninety_degrees_answers_with_the_layer_and_2_beside_it(cli):
+    """Issue 70: at rho = 1 without a model, physical() answers with the
+    layer of finite thickness where (2) is more than 0.5 % off, with (2)'s
+    answer under thin_layer; the same numbers as the command line, also
+    with nu1 = nu2 = 0.45."""
+    contact = dict(r1=0.01, r2=0.01, theta_deg=90, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6, work_of_adhesion=0.05)
+    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "90", "--h1", "1e-4", "--h2", "1e-4",
+            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    for nu, extra in [(0.5, []), (0.45, ["--nu1", "0.45", "--nu2", "0.45"])]:
+        st = thinjkr.physical(**contact, nu1=nu, nu2=nu)
+        d = run_json(cli, *args, *extra)
+        assert st.model == "layer" and d["model"] == "layer"
+        assert close(st.force, d["si"]["force"], 1e-9)
+        t = st.thin_layer
+        assert t.model == d["thin_layer"]["model"] and close(t.relative_error, d["thin_layer"]["relative_error"], 1e-9)
+        # (2)'s pull-off is -3 pi R dgamma = -4.712389e-3 N, the layer's smaller in size
+        assert close(t.si["force"], -3 * np.pi * 0.01 * 0.05, 1e-6)
+        assert abs(st.force) < abs(t.si["force"]) and t.relative_error > 0.005
+        assert st.state.coatings[0]["nu"] == nu
+
+
 def test_every_function_of_rho_takes_arrays_and_curves_come_as_a_list():
     """Issue 33 item 4: a float rho with an array of forces gives States
     (the Fig. 7 sweep); the exact solver's functions broadcast like the

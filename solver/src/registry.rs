@@ -1,7 +1,7 @@
 //! Every model a user can choose by name, in one place: the generated models
 //! of the ellipse ([`ModelId`]), every member of every contour family in the
 //! generated registry (`crate::generated::registry`, written by `generate`
-//! from `derive/families/*.toml`), and `exact`. The command line's parsing,
+//! from `derive/families/*.toml`), `exact` and `layer`. The command line's parsing,
 //! its help text and `thinjkr models`, and the Python package's model list
 //! are built from here, so that a family added as a data file appears in all
 //! of them without an edit.
@@ -14,7 +14,7 @@
 //! not dispatch over kinds of model themselves to solve.
 //!
 //! Owns: [`Choice`] (and names [`Slender`], a slender model's handle), [`PhysicalAnswer`], [`physical`] and its table of defaults (`DEFAULTS`), [`PullOffAnswer`], [`CurveAnswer`], [`Arms`],
-//! `Entry`, [`parse`], [`entries`], `help`. May use: `generated` (the ellipse models),
+//! `Entry`, [`parse`], [`entries`], `help`. May use: `generated` (the ellipse models), `layer` (coatings of finite thickness),
 //! `conformal` (the families), `contact`, `exact`, `fold`, `report` (the
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
 //! curves), `model`, `control`, `units` (`physical`), `cutoff` (a contour state's
@@ -38,6 +38,53 @@ pub enum Choice {
     Exact,
     /// A slender model (the limit ρ → 0; `slender`).
     Slender(crate::slender::Slender),
+    /// The layer of finite thickness at ρ = 1 (`layer`): two equal coatings
+    /// of a thinness h/L and a Poisson's ratio, or the coatings of a
+    /// `physical` contact.
+    Layer(crate::layer::Layers),
+}
+
+/// The name of the layer of finite thickness.
+pub(crate) const LAYER: &str = "layer";
+
+/// What `layer` is, in a line.
+const LAYER_TITLE: &str = "coatings of finite thickness at rho = 1 (three-dimensional elasticity; measures (2) itself; --thinness h/L, --nu)";
+
+impl Choice {
+    /// The layer model for two equal coatings of thinness h/L and Poisson's
+    /// ratio ν; any other model as it is, where neither is given (a usage
+    /// error names the flags another model does not take).
+    pub(crate) fn with_coatings(
+        self,
+        thinness: Option<f64>,
+        nu: Option<f64>,
+    ) -> crate::Result<Choice> {
+        match self {
+            Choice::Layer(_) => Ok(Choice::Layer(crate::layer::Layers::equal(
+                thinness.unwrap_or(Cutoff::default().thinness),
+                nu.unwrap_or(0.5),
+            )?)),
+            other if nu.is_some() || thinness.is_some() => Err(crate::Error::Usage(format!(
+                "--thinness and --nu are for --model layer (model {} solves the thin-layer equation (2) of incompressible coatings)",
+                other.name()
+            ))),
+            other => Ok(other),
+        }
+    }
+
+    /// The layer's coatings answer at ρ = 1 only: the problem is
+    /// axisymmetric there (every crossing angle is issue 71).
+    fn layer_at(rho: f64) -> crate::Result<()> {
+        if rho == 1.0 {
+            Ok(())
+        } else {
+            Err(crate::Error::Unsupported {
+                name: "rho",
+                value: rho,
+                supported: "1 for the model layer (coatings of finite thickness are solved at rho = 1, the axisymmetric contact of crossed equal cylinders at 90 degrees, so far)".into(),
+            })
+        }
+    }
 }
 
 /// What a model is, for `thinjkr models` and the Python package.
@@ -54,6 +101,11 @@ const EXACT_TITLE: &str =
 pub fn parse(name: &str) -> Result<Choice, String> {
     if name == EXACT {
         return Ok(Choice::Exact);
+    }
+    if name == LAYER {
+        return crate::layer::Layers::equal(Cutoff::default().thinness, 0.5)
+            .map(Choice::Layer)
+            .map_err(|e| e.to_string());
     }
     if let Some(member) = Conformal::parse(name) {
         return member.map(Choice::Contour);
@@ -158,6 +210,14 @@ pub fn entries() -> Vec<Entry> {
         rho_min: crate::contact::RHO_MIN,
         controls: vec!["delta".into(), "force".into()],
     });
+    out.push(Entry {
+        name: LAYER.into(),
+        description: LAYER_TITLE.into(),
+        family: None,
+        unknowns: None,
+        rho_min: 1.0,
+        controls: controls(),
+    });
     out
 }
 
@@ -184,6 +244,52 @@ pub struct PhysicalAnswer {
     /// the paper's model `max` at the same question, when the two differ
     /// by more than 1 % in F̄, δ̄ or ā.
     pub paper_model: Option<crate::report::AnyState>,
+    /// Where the layer of finite thickness answered by default (ρ = 1,
+    /// (2) more than 0.5 % off, `THIN_LAYER_TOLERANCE`): the thin-layer
+    /// equation (2)'s answer beside it, with its relative error.
+    pub thin_layer: Option<crate::report::ThinLayer>,
+}
+
+/// The relative error of (2) on the answered quantity above which
+/// `physical` at ρ = 1 answers with the layer of finite thickness when no
+/// model is named: 0.5 %.
+pub(crate) const THIN_LAYER_TOLERANCE: f64 = 0.005;
+
+/// The layer model of a physical contact: each coating's thickness over
+/// the length unit L of (17), its shear modulus and Poisson's ratio.
+fn layers_of(
+    cyl: &crate::units::Cylinders,
+    sc: &crate::units::Scales,
+) -> crate::Result<crate::layer::Layers> {
+    let coating = |h: f64, g: f64, nu: f64| crate::layer::Coating {
+        thinness: h / sc.length,
+        shear_modulus: g,
+        nu,
+    };
+    crate::layer::Layers::new(
+        coating(cyl.h1, cyl.g1, cyl.nu1),
+        coating(cyl.h2, cyl.g2, cyl.nu2),
+    )
+}
+
+/// The relative error of the thin-layer answer `thin` against the layer's
+/// `layer` on the answered quantity: the force at the pull-off, the size
+/// and approach at a given force, the size and force at a given approach
+/// (the larger of the two).
+fn thin_layer_error(
+    thin: &crate::report::AnyState,
+    layer: &crate::report::AnyState,
+    force: Option<f64>,
+    delta: Option<f64>,
+) -> f64 {
+    let (a0, _, d0, f0) = layer.size_and_load();
+    let (a1, _, d1, f1) = thin.size_and_load();
+    let rel = |x: f64, y: f64| (y - x).abs() / x.abs();
+    match (force, delta) {
+        (Some(_), _) => rel(a0, a1).max(rel(d0, d1)),
+        (_, Some(_)) => rel(a0, a1).max(rel(f0, f1)),
+        _ => rel(f0, f1),
+    }
 }
 
 /// Which questions a row of the table of defaults answers.
@@ -287,6 +393,44 @@ pub fn physical(
     let row = default_row(question, rho);
     let chosen = parse(row.model).map_err(crate::Error::Usage)?;
     let mut answer = chosen.physical(cyl, force, delta)?;
+    if rho == 1.0 {
+        // the layer of finite thickness measures (2): it answers where (2)
+        // is more than THIN_LAYER_TOLERANCE off
+        let sc = cyl.scales()?;
+        let layer = layers_of(cyl, &sc).and_then(|l| Choice::Layer(l).physical(cyl, force, delta));
+        match layer {
+            Ok(mut layered) => {
+                let error = thin_layer_error(&answer.state, &layered.state, force, delta);
+                if error > THIN_LAYER_TOLERANCE {
+                    layered.chosen_because = Some(format!(
+                        "no model named: at rho = 1 the layer of finite thickness answers where the thin-layer equation (2) is more than {} % off it (here {} %; (2)'s answer, by {}, is beside it)",
+                        THIN_LAYER_TOLERANCE * 100.0,
+                        crate::error::short(100.0 * error),
+                        row.model
+                    ));
+                    layered.thin_layer = Some(crate::report::ThinLayer {
+                        model: row.model.to_string(),
+                        state: answer.state,
+                        si: answer.si,
+                        relative_error: error,
+                    });
+                    return Ok(layered);
+                }
+                // (2) holds for these coatings: its answer stands, and the
+                // layer's measure replaces the warning that h/a is not small
+                answer.warnings.retain(|w| !w.starts_with("h/a = "));
+                answer.chosen_because = Some(format!(
+                    "no model named: {} answers at rho = 1, where the layer of finite thickness agrees within {} % (the thin-layer equation (2) holds for these coatings)",
+                    row.model,
+                    crate::error::short(100.0 * error)
+                ));
+                return Ok(answer);
+            }
+            Err(e) => answer.warnings.push(format!(
+                "the layer of finite thickness has no answer to measure (2) against: {e}"
+            )),
+        }
+    }
     answer.chosen_because = Some(format!(
         "no model named: {} answers {} at rho = {} (the table of defaults): {}",
         row.model,
@@ -342,6 +486,10 @@ impl Choice {
             });
         }
         let sc = cyl.scales()?;
+        let model = match model {
+            Choice::Layer(_) => Choice::Layer(layers_of(cyl, &sc)?),
+            other => other,
+        };
         let force_si = force;
         // a value the user typed, scaled: refused in the user's units when it
         // is not finite or its scaled value is not (1e308 N over a millinewton
@@ -430,7 +578,9 @@ impl Choice {
             crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
             // (an exact state's warnings, its shape's, come after the
             // stability's doubt, below)
-            crate::report::AnyState::Exact(_) | crate::report::AnyState::Slender(_) => {}
+            crate::report::AnyState::Exact(_)
+            | crate::report::AnyState::Slender(_)
+            | crate::report::AnyState::Layer(_) => {}
         }
         // a contour state unstable under its own control above these
         // coatings' cutoff (a pull-off and a state at a force are held by
@@ -475,7 +625,15 @@ impl Choice {
             }
             _ => {}
         }
-        if si.h_over_a > 0.1 {
+        if let crate::report::AnyState::Layer(_) = state {
+            // the layer measures h/a itself; its kernel assumes a flat coating
+            let h_over_r = (cyl.h1 / cyl.r1).max(cyl.h2 / cyl.r2);
+            if h_over_r > 0.1 {
+                warnings.push(format!(
+                    "h/r = {h_over_r:.6}: the coatings are not thin against the cylinders (the layer's kernel assumes a flat coating, h << r)"
+                ));
+            }
+        } else if si.h_over_a > 0.1 {
             warnings.push(format!(
                 "h/a = {:.6}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
                 si.h_over_a
@@ -489,6 +647,7 @@ impl Choice {
             model: model.name(),
             chosen_because: None,
             paper_model: None,
+            thin_layer: None,
         })
     }
 }
@@ -516,6 +675,7 @@ impl Choice {
             Choice::Contour(m) => m.name(),
             Choice::Exact => EXACT.into(),
             Choice::Slender(m) => m.name().into(),
+            Choice::Layer(_) => LAYER.into(),
         }
     }
 
@@ -579,6 +739,12 @@ impl Choice {
             Choice::Exact => vec![AnyState::Exact(Box::new(
                 crate::exact::at_resolved(rho, hold)?.judged(Cutoff::default()),
             ))],
+            Choice::Layer(layers) => {
+                Choice::layer_at(rho)?;
+                vec![AnyState::Layer(
+                    layers.state(hold, crate::layer::Route::Griffith)?,
+                )]
+            }
         })
     }
 
@@ -646,6 +812,9 @@ impl Choice {
                 let found = ex.accept_resolved(format!("{hold} (from a nearby state)"), found)?;
                 Ok(AnyState::Exact(Box::new(found.judged(Cutoff::default()))))
             }
+            // the layer's branch is found afresh: it has one stable state at
+            // a force or an approach
+            (Choice::Layer(_), AnyState::Layer(_)) => self.state(rho, hold),
             _ => Err(other()),
         }
     }
@@ -659,7 +828,7 @@ impl Choice {
             )),
             Choice::Contour(m) => Ok(AnyState::Conformal(m.zero_force(rho)?)),
             Choice::Slender(m) => Ok(AnyState::Slender(m.zero_force(rho)?)),
-            Choice::Exact => self.state(rho, Hold::Force(0.0)),
+            Choice::Exact | Choice::Layer(_) => self.state(rho, Hold::Force(0.0)),
         }
     }
 
@@ -719,6 +888,16 @@ impl Choice {
                     what: "pull-off under displacement control".into(),
                     why: "only the load-controlled pull-off of the exact family is located",
                 })
+            }
+            Choice::Layer(layers) => {
+                Choice::layer_at(rho)?;
+                let p = layers.pull_off(crate::layer::Route::Griffith)?;
+                PullOffAnswer {
+                    state: AnyState::Layer(if load { p.load } else { p.displacement }),
+                    control,
+                    basis: None,
+                    passed: Vec::new(),
+                }
             }
             Choice::Exact => {
                 let (st, events) = crate::exact::pull_off_resolved(rho)?;
@@ -795,6 +974,13 @@ impl Choice {
                     why: "use `thinjkr exact solve` at the loads wanted",
                 })
             }
+            Choice::Layer(_) => {
+                return Err(crate::Error::Unavailable {
+                    model: LAYER,
+                    what: "curve command".into(),
+                    why: "its curve is not traced yet; use `thinjkr solve --model layer` at the approaches or forces wanted",
+                })
+            }
             Choice::Slender(m) => {
                 return Err(crate::Error::Unavailable {
                     model: m.name(),
@@ -824,7 +1010,7 @@ impl crate::batch::Solves for Choice {
     fn at_rho(&self, rho: f64) -> crate::Result<AtRho> {
         match self {
             Choice::Ellipse(m) => Ok(AtRho::Ellipse(m.at_rho(rho)?)),
-            Choice::Contour(_) | Choice::Exact => Ok(AtRho::Rho(rho)),
+            Choice::Contour(_) | Choice::Exact | Choice::Layer(_) => Ok(AtRho::Rho(rho)),
             // a batch row carries ā and s, which a slender contact has not
             Choice::Slender(m) => Err(crate::Error::Unavailable {
                 model: m.name(),
@@ -840,7 +1026,9 @@ impl crate::batch::Solves for Choice {
             (Choice::Contour(m), AtRho::Rho(rho)) => {
                 crate::batch::Solves::solve(m, rho, given).map(AnyState::Conformal)
             }
-            (Choice::Exact | Choice::Slender(_), AtRho::Rho(rho)) => self.state(*rho, given),
+            (Choice::Exact | Choice::Slender(_) | Choice::Layer(_), AtRho::Rho(rho)) => {
+                self.state(*rho, given)
+            }
             _ => Err(crate::Error::Usage(
                 "a batch's shared state is of another model".into(),
             )),
@@ -873,6 +1061,20 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
             // row carries ā and s, and a slender contact has no length); a
             // row of one gives b̄ at the centre, ā infinite and s = 0, the
             // limits of its length and aspect
+            // Griffith's condition holds at the layer's edge by construction
+            AnyState::Layer(s) => crate::batch::Row {
+                a_bar: s.a_bar,
+                b_bar: s.a_bar,
+                s: 1.0,
+                delta_bar: s.delta_bar,
+                force_bar: s.force_bar,
+                xi: None,
+                p0: None,
+                bc_error: 0.0,
+                warning: String::new(),
+                departure: None,
+                route: None,
+            },
             AnyState::Slender(s) => crate::batch::Row {
                 a_bar: f64::INFINITY,
                 b_bar: s.b_bar,

@@ -10,7 +10,7 @@
 //! schema`, committed as docs/schema.json).
 //!
 //! Owns: `Document` and its parts, and the shape of a slender state
-//! ([`SlenderState`]). May use: `contact`, `conformal`,
+//! ([`SlenderState`]). May use: `contact`, `conformal`, `layer` (its state),
 //! `exact`, `curve`, `fold`, `units`, `error`, `registry` (the model list).
 
 use crate::conformal::{ConformalState, Extremum};
@@ -23,6 +23,23 @@ use crate::units::{Scales, Si};
 #[cfg(feature = "cli")]
 use crate::{contact::FoldBasis, error::Error, fold::FoldCondition};
 use serde::Serialize;
+
+/// The thin-layer equation (2)'s answer beside the layer of finite
+/// thickness (`physical` at ρ = 1 without a model).
+#[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct ThinLayer {
+    /// The model of (2) that answered (the table of defaults').
+    pub model: String,
+    /// Its dimensionless state.
+    pub state: AnyState,
+    /// Its state in SI units.
+    pub si: crate::units::Si,
+    /// Its relative error against the layer on the answered quantity (the
+    /// force at the pull-off; size and approach at a force; size and force
+    /// at an approach; the larger).
+    pub relative_error: f64,
+}
 
 /// A state of any model: of the ellipse, of the contour family, or exact.
 #[derive(Clone, Debug, Serialize)]
@@ -40,6 +57,8 @@ pub enum AnyState {
     Exact(Box<ExactState>),
     /// The slender limit ρ → 0 (`slender`).
     Slender(SlenderState),
+    /// The layer of finite thickness at ρ = 1 (`layer`).
+    Layer(crate::layer::LayerState),
 }
 
 /// A state of a model of the ellipse as JSON: its fields and, where it is
@@ -73,6 +92,7 @@ impl AnyState {
             AnyState::Conformal(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
             AnyState::Exact(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
             AnyState::Slender(st) => (f64::INFINITY, st.b_bar, st.delta_bar, st.force_bar),
+            AnyState::Layer(st) => (st.a_bar, st.a_bar, st.delta_bar, st.force_bar),
         }
     }
 }
@@ -441,6 +461,10 @@ pub(crate) enum Document {
         /// more than 1 % in F̄, δ̄ or ā.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         paper_model: Option<AnyState>,
+        /// Where the layer of finite thickness answered by default (ρ = 1):
+        /// the thin-layer equation (2)'s answer and its relative error.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        thin_layer: Option<ThinLayer>,
     },
     /// One state (`solve`, `zero-force`, `exact solve`), with the models
     /// of the ellipse at the same control beside an exact one.

@@ -30,6 +30,19 @@ pub struct Cylinders {
     pub g2: f64,
     /// Work of adhesion Δγ (J/m²).
     pub work_of_adhesion: f64,
+    /// Poisson's ratio ν₁ of coating 1, in [0, 0.5] (default 0.5,
+    /// incompressible): the layer of finite thickness reads it; the
+    /// thin-layer equation (2) assumes 0.5.
+    #[serde(default = "incompressible")]
+    pub nu1: f64,
+    /// Poisson's ratio ν₂ of coating 2, as `nu1`.
+    #[serde(default = "incompressible")]
+    pub nu2: f64,
+}
+
+/// The Poisson's ratio of an incompressible coating, the paper's.
+fn incompressible() -> f64 {
+    0.5
 }
 
 /// The derived model parameters of a [`Cylinders`] contact.
@@ -121,6 +134,9 @@ impl Cylinders {
         let g1 = positive("g1", self.g1)?;
         let g2 = positive("g2", self.g2)?;
         let dg = positive("work_of_adhesion", self.work_of_adhesion)?;
+        for (name, nu) in [("nu1", self.nu1), ("nu2", self.nu2)] {
+            check_range(name, nu, (0.0..=0.5).contains(&nu), "[0, 0.5]")?;
+        }
         let sin2 = th.to_radians().sin().powi(2);
         // curvatures k = 1/R are the roots of k² − (1/r1 + 1/r2) k + sin²θ/(r1 r2) = 0
         let sum = 1.0 / r1 + 1.0 / r2;

@@ -175,12 +175,13 @@ fn every_module_uses_only_what_its_charter_names() {
 /// type|trait|mod|use` of solver/src, generated code aside; an item of a
 /// crate-private module is written `pub(crate)` so that the count is what
 /// is reachable). A new public item is then a decision, not a default:
-/// 200 until issue 70's layer of finite thickness added ten (`layer`,
+/// 200 until issue 70's layer of finite thickness added eleven (`layer`,
 /// `Coating`, `Layers`, `Route`, `LayerState`, `LayerPullOff`, `new`,
-/// `equal`, `state`, `pull_off`).
+/// `equal`, `state`, `pull_off`, and `report::ThinLayer`, (2)'s answer
+/// beside the layer's in `physical`).
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 210;
+    const MAX_PUBLIC_ITEMS: usize = 211;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);

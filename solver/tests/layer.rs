@@ -391,3 +391,65 @@ fn the_thickness_table_of_the_docs_is_the_solver_s() {
         missing.join("\n")
     );
 }
+
+/// `physical` at 90° without a model: the layer answers wherever (2) is
+/// more than 0.5 % off, with (2)'s answer beside it, for coatings of 10 µm,
+/// 0.1 mm and 1 mm and with ν = 0.45; (2)'s pull-off is −3πRΔγ.
+#[test]
+fn physical_at_ninety_degrees_answers_with_the_layer_and_2_beside_it() {
+    use thinjkr::units::Cylinders;
+    let contact = |h: f64, nu: f64| Cylinders {
+        r1: 0.01,
+        r2: 0.01,
+        theta_deg: 90.0,
+        h1: h,
+        h2: h,
+        g1: 1e6,
+        g2: 1e6,
+        work_of_adhesion: 0.05,
+        nu1: nu,
+        nu2: nu,
+    };
+    let thin = -3.0 * PI * 0.01 * 0.05;
+    for (h, nu) in [(1e-5, 0.5), (1e-4, 0.5), (1e-3, 0.5), (1e-4, 0.45)] {
+        let answer = thinjkr::registry::physical(None, &contact(h, nu), None, None).unwrap();
+        assert_eq!(
+            answer.model, "layer",
+            "h {h} ν {nu}: {:?}",
+            answer.chosen_because
+        );
+        let t = answer.thin_layer.as_ref().expect("(2) beside the layer");
+        assert!(
+            (t.si.force / thin - 1.0).abs() < 1e-6,
+            "h {h}: (2)'s pull-off {}",
+            t.si.force
+        );
+        let error = (t.si.force - answer.si.force).abs() / answer.si.force.abs();
+        assert!(
+            (t.relative_error - error).abs() < 1e-12 && error > 0.005,
+            "h {h}: {error}"
+        );
+        assert!(
+            answer.si.force < 0.0 && answer.si.force > thin,
+            "h {h}: {}",
+            answer.si.force
+        );
+    }
+    // the layer's own pull-off through the model layer, at the coatings' h/L
+    let named = thinjkr::registry::physical(
+        Some(thinjkr::registry::parse("layer").unwrap()),
+        &contact(1e-4, 0.5),
+        None,
+        None,
+    )
+    .unwrap();
+    assert!(named.thin_layer.is_none() && named.model == "layer");
+    let default = thinjkr::registry::physical(None, &contact(1e-4, 0.5), None, None).unwrap();
+    assert_eq!(named.si.force, default.si.force);
+    // a Poisson's ratio outside [0, 0.5] is refused by name
+    let e = thinjkr::registry::physical(None, &contact(1e-4, 0.6), None, None).unwrap_err();
+    assert!(
+        e.kind() == "out_of_range" && e.to_string().contains("nu1"),
+        "{e}"
+    );
+}

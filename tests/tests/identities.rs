@@ -264,6 +264,8 @@ fn physical_units_agree_with_dimensionless() {
         g1: 1e6,
         g2: 5e5,
         work_of_adhesion: 0.05,
+        nu1: 0.5,
+        nu2: 0.5,
     };
     let sc = cyl.scales().unwrap();
     assert!(sc.big_r2 <= sc.big_r1);
@@ -316,6 +318,8 @@ fn bad_inputs_are_typed_errors() {
         g1: 1e6,
         g2: 1e6,
         work_of_adhesion: 0.05,
+        nu1: 0.5,
+        nu2: 0.5,
     };
     let cases: Vec<(&str, Cylinders)> = vec![
         ("r1", Cylinders { r1: -1.0, ..good }),

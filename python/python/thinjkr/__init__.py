@@ -407,6 +407,8 @@ def physical(
     delta: Optional[float] = None,
     force: Optional[float] = None,
     model: Optional[str] = None,
+    nu1: float = 0.5,
+    nu2: float = 0.5,
 ) -> State:
     """A contact in SI units (the command line's ``physical``, any model as
     with ``--model``; without a model, the one the table of defaults gives
@@ -421,9 +423,13 @@ def physical(
     dimensionless state under ``state``, and ``warnings``: each one is
     also issued as a :class:`ThinJkrWarning` (an input outside the paper's
     stated range, coatings not thin against the contact), the same words
-    as the command line's warnings."""
+    as the command line's warnings. ``nu1``, ``nu2`` are the coatings'
+    Poisson's ratios in [0, 0.5], which the layer of finite thickness reads
+    (model ``layer``; at ρ = 1 without a model it answers wherever (2) is
+    more than 0.5 % off, with (2)'s answer under ``thin_layer``: its
+    ``model``, ``state``, ``si`` and ``relative_error``)."""
     cyl = dict(r1=r1, r2=r2, theta_deg=theta_deg, h1=h1, h2=h2, g1=g1, g2=g2,
-               work_of_adhesion=work_of_adhesion)
+               work_of_adhesion=work_of_adhesion, nu1=nu1, nu2=nu2)
     for k, v in cyl.items():
         if not isinstance(v, (int, float)):
             raise InvalidInput(f"parameter {k} must be a number, got {type(v).__name__}", kind="out_of_range")
@@ -436,6 +442,10 @@ def physical(
     d["state"] = _state_from(d.pop("state"), d["model"])
     if d.get("paper_model") is not None:
         d["paper_model"] = _state_from(d["paper_model"], "max")
+    if d.get("thin_layer") is not None:
+        t = d["thin_layer"]
+        t["state"] = _state_from(t["state"], t["model"])
+        d["thin_layer"] = State(t)
     for w in d["warnings"]:
         _warnings.warn(w, ThinJkrWarning, stacklevel=2)
     return Physical(d)
@@ -444,7 +454,9 @@ def physical(
 class Physical(State):
     """A contact in SI units (:func:`physical`): ``a``, ``b`` (m),
     ``delta`` (m), ``force`` (N), ``p0`` (Pa), ``h_over_a``, the
-    dimensionless ``state`` and the ``warnings`` in words."""
+    dimensionless ``state`` and the ``warnings`` in words; where the layer
+    of finite thickness answered by default, ``thin_layer`` (None
+    otherwise)."""
 
 
 from . import exact  # noqa: E402  (uses the helpers above)

@@ -10,7 +10,7 @@
 //! May use: `accuracy`, `control`, `crate::registry`, `crate::report`, `crate::units`,
 //! `crate::contact`, `crate::model`, `crate::conformal`, `crate::exact`,
 //! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
-//! `crate::limits`, `crate::error`, its own modules.
+//! `crate::limits`, `crate::error`, `crate::layer` (a layer state), its own modules.
 
 use crate::conformal::{self as family};
 use crate::report::{AnyState, Document, ErrorBody};
@@ -61,6 +61,12 @@ enum Command {
         rho: f64,
         #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
         model: ModelChoice,
+        /// With --model layer: the coatings' thinness h/L (two equal coatings; default 0.1).
+        #[arg(long, allow_hyphen_values = true)]
+        thinness: Option<f64>,
+        /// With --model layer: the coatings' Poisson's ratio in [0, 0.5] (default 0.5, incompressible).
+        #[arg(long, allow_hyphen_values = true)]
+        nu: Option<f64>,
         /// Approach δ̄.
         #[arg(long, allow_hyphen_values = true, group = "control")]
         delta: Option<f64>,
@@ -91,6 +97,12 @@ enum Command {
         rho: f64,
         #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
         model: ModelChoice,
+        /// With --model layer: the coatings' thinness h/L (two equal coatings; default 0.1).
+        #[arg(long, allow_hyphen_values = true)]
+        thinness: Option<f64>,
+        /// With --model layer: the coatings' Poisson's ratio in [0, 0.5] (default 0.5, incompressible).
+        #[arg(long, allow_hyphen_values = true)]
+        nu: Option<f64>,
         /// Control.
         #[arg(long, value_enum, default_value_t = FoldCondition::Load)]
         control: FoldCondition,
@@ -135,6 +147,12 @@ enum Command {
         rho: f64,
         #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(true, ""))]
         model: ModelChoice,
+        /// With --model layer: the coatings' thinness h/L (two equal coatings; default 0.1).
+        #[arg(long, allow_hyphen_values = true)]
+        thinness: Option<f64>,
+        /// With --model layer: the coatings' Poisson's ratio in [0, 0.5] (default 0.5, incompressible).
+        #[arg(long, allow_hyphen_values = true)]
+        nu: Option<f64>,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -182,8 +200,8 @@ enum Command {
         after_help = "Example:\n  thinjkr physical --r1 0.01 --r2 0.01 --theta-deg 60 --h1 1e-4 --h2 1e-4 --g1 1e6 --g2 1e6 --work-of-adhesion 0.05 --force 0"
     )]
     Physical {
-        /// TOML file with r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion (and no other keys); not together with those flags.
-        #[arg(long, conflicts_with_all = ["r1", "r2", "theta_deg", "h1", "h2", "g1", "g2", "work_of_adhesion"])]
+        /// TOML file with r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion, and optionally nu1, nu2 (and no other keys); not together with those flags.
+        #[arg(long, conflicts_with_all = ["r1", "r2", "theta_deg", "h1", "h2", "g1", "g2", "work_of_adhesion", "nu1", "nu2"])]
         file: Option<std::path::PathBuf>,
         /// Radius of cylinder 1 [m], > 0.
         #[arg(long, allow_hyphen_values = true)]
@@ -209,6 +227,12 @@ enum Command {
         /// Work of adhesion Δγ [J/m²], > 0.
         #[arg(long, allow_hyphen_values = true)]
         work_of_adhesion: Option<f64>,
+        /// Poisson's ratio ν₁ of coating 1, in [0, 0.5] (default 0.5, incompressible); read by the layer of finite thickness (at rho = 1), which G′₁ is the shear modulus of; (2) assumes 0.5.
+        #[arg(long, allow_hyphen_values = true)]
+        nu1: Option<f64>,
+        /// Poisson's ratio ν₂ of coating 2, as --nu1.
+        #[arg(long, allow_hyphen_values = true)]
+        nu2: Option<f64>,
         /// Force [N] (the stable state); without it and --delta, pull-off under load control.
         #[arg(long, allow_hyphen_values = true, group = "physical_control")]
         force: Option<f64>,
@@ -275,6 +299,35 @@ fn stability(st: &State) -> String {
 
 /// A slender state in a line: its centre's half-width instead of a size
 /// (its contact has no finite length), and its stability.
+/// What a layer state is, in the words every output of the layer gives.
+const LAYER_WORDS: &str = "coatings of finite thickness at rho = 1, from three-dimensional elasticity (docs/thickness.md); G' is read as each coating's isotropic shear modulus G";
+
+fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
+    // a pull-off is neutral under its control: its slope is zero to the
+    // solution's round-off (1e-9 of the scale ā/F̄ or ā/δ̄ at h/L = 0.01)
+    let stable = |slope: f64, of: f64| {
+        if slope.abs() <= 1e-7 * of.abs().max(1.0) / st.a_bar {
+            "neutral (a pull-off)"
+        } else if slope > 0.0 {
+            "stable"
+        } else {
+            "unstable"
+        }
+    };
+    outln!(
+        "{label}: model layer, a = {}, delta = {}, force = {} [h/L = {}, nu = {}; load control: {}, displacement control: {}]",
+        output::num(st.a_bar),
+        output::num(st.delta_bar),
+        output::num(st.force_bar),
+        crate::error::short(st.coatings[0].thinness),
+        crate::error::short(st.coatings[0].nu),
+        stable(st.force_slope, st.force_bar),
+        stable(st.delta_slope, st.delta_bar)
+    );
+    outln!("  {LAYER_WORDS}");
+    Ok(())
+}
+
 fn show_slender(label: &str, st: &crate::report::SlenderState) -> crate::Result<()> {
     outln!(
         "{label}: model {}, rho = {}, half-width at the centre b = {}, delta = {}, force = {}, dF/ddelta = {} [no finite length: the strip thins as 2/xi^2 along X without end; stable under displacement control, {} under load control]",
@@ -322,18 +375,25 @@ fn run(cli: Cli) -> crate::Result<u8> {
         Some(Command::Solve {
             rho,
             model,
+            thinness,
+            nu,
             delta,
             force,
             a,
             all,
             json,
-        }) => solve_command(rho, model, delta, force, a, all, json)?,
+        }) => {
+            let model = model.with_coatings(thinness, nu)?;
+            solve_command(rho, model, delta, force, a, all, json)?
+        }
         Some(Command::PullOff {
             rho,
             model,
+            thinness,
+            nu,
             control,
             json,
-        }) => pull_off_command(rho, model, control, json)?,
+        }) => pull_off_command(rho, model.with_coatings(thinness, nu)?, control, json)?,
         Some(Command::Exact { command }) => exact_command::run(command)?,
         Some(Command::Batch { model }) => return batch_command(model),
         Some(Command::Accuracy {
@@ -342,7 +402,13 @@ fn run(cli: Cli) -> crate::Result<u8> {
             figures,
             rho,
         }) => accuracy_command(out, reference, figures, &rho)?,
-        Some(Command::ZeroForce { rho, model, json }) => zero_force_command(rho, model, json)?,
+        Some(Command::ZeroForce {
+            rho,
+            model,
+            thinness,
+            nu,
+            json,
+        }) => zero_force_command(rho, model.with_coatings(thinness, nu)?, json)?,
         Some(Command::Curve {
             rho,
             model,
@@ -377,13 +443,21 @@ fn run(cli: Cli) -> crate::Result<u8> {
             g1,
             g2,
             work_of_adhesion,
+            nu1,
+            nu2,
             force,
             delta,
             model,
             json,
         }) => {
             let inputs = [r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion];
-            physical(&cylinders(file, inputs)?, model, force, delta, json)?
+            physical(
+                &cylinders(file, inputs, [nu1, nu2])?,
+                model,
+                force,
+                delta,
+                json,
+            )?
         }
     }
     Ok(0)
@@ -526,6 +600,7 @@ fn show_states(label: &str, states: &[AnyState], j: bool) -> crate::Result<()> {
             AnyState::Conformal(st) => contour::show(label, st)?,
             AnyState::Exact(st) => exact_command::show_state(label, st)?,
             AnyState::Slender(st) => show_slender(label, st)?,
+            AnyState::Layer(st) => show_layer(label, st)?,
         }
     }
     Ok(())
@@ -832,10 +907,12 @@ fn completions_command(shell: clap_complete::Shell) -> crate::Result<()> {
 const CONTACT_FILE_MAX_BYTES: u64 = 64 * 1024;
 
 /// The contact of `physical`: from its TOML file, or every input given
-/// (r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion).
+/// (r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion; nu1 and nu2 0.5
+/// unless given).
 fn cylinders(
     file: Option<std::path::PathBuf>,
     inputs: [Option<f64>; 8],
+    poisson: [Option<f64>; 2],
 ) -> crate::Result<Cylinders> {
     let [r1, r2, theta_deg, h1, h2, g1, g2, work_of_adhesion] = inputs;
     Ok(match file {
@@ -876,6 +953,8 @@ fn cylinders(
                 g1: need("g1", g1)?,
                 g2: need("g2", g2)?,
                 work_of_adhesion: need("work_of_adhesion", work_of_adhesion)?,
+                nu1: poisson[0].unwrap_or(0.5),
+                nu2: poisson[1].unwrap_or(0.5),
             }
         }
     })
@@ -909,6 +988,7 @@ fn physical(
         model: model_name,
         chosen_because,
         paper_model,
+        thin_layer,
     } = crate::registry::physical(model, cyl, force, delta)?;
     let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
     for w in &warnings {
@@ -923,6 +1003,7 @@ fn physical(
             model: model_name,
             chosen_because,
             paper_model,
+            thin_layer,
         };
         outln!("{}", doc.to_json());
         return Ok(());
@@ -963,7 +1044,18 @@ fn physical(
             crate::error::short(st.cutoff.thinness),
             contour::verdict(st, st.stable_load, &st.neutral_modes_load)
         ),
+        AnyState::Layer(_) => outln!("  {}", LAYER_WORDS),
         AnyState::Ellipse(_) | AnyState::Slender(_) => {}
+    }
+    if let Some(t) = &thin_layer {
+        outln!(
+            "  the thin-layer equation (2) ({}): a = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, {} % off",
+            t.model,
+            t.si.a,
+            t.si.delta,
+            t.si.force,
+            crate::error::short(100.0 * t.relative_error)
+        );
     }
     if let Some(why) = &chosen_because {
         outln!("  {why}");
@@ -1068,6 +1160,11 @@ fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) ->
                 sl.model.to_string(),
                 false,
                 (Some(sl.stable_displacement), Some(sl.stable_load)),
+            ),
+            AnyState::Layer(l) => (
+                "layer".into(),
+                false,
+                (Some(l.delta_slope > 0.0), Some(l.force_slope > 0.0)),
             ),
         };
         outln!(

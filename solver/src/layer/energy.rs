@@ -73,5 +73,6 @@ pub(crate) fn by_energy(layers: &Layers, a_bar: f64) -> Result<LayerState> {
         delta_slope: f64::NAN,
         modes,
         tail: s.tail(),
+        coatings: layers.coatings(),
     })
 }

@@ -52,6 +52,7 @@ const TAIL_MAX: f64 = 1e-12;
 /// One coating: thinness h/L in the units (17), shear modulus G (any unit,
 /// only the two coatings' ratio enters) and Poisson's ratio ν.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct Coating {
     /// Thickness h over the length unit L of (17).
     pub thinness: f64,
@@ -84,6 +85,7 @@ pub struct Layers {
 
 /// A state of the layer model, in the units (17) at ρ = 1.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct LayerState {
     /// Contact radius ā.
     pub a_bar: f64,
@@ -101,6 +103,8 @@ pub struct LayerState {
     pub modes: usize,
     /// Truncation: the last Legendre coefficients over the largest.
     pub tail: f64,
+    /// The two coatings.
+    pub coatings: [Coating; 2],
 }
 
 /// The pull-offs of the layer model: the minimum of F̄ along the branch
@@ -157,6 +161,11 @@ impl Layers {
             nu,
         };
         Layers::new(c, c)
+    }
+
+    /// The two coatings.
+    pub(crate) fn coatings(&self) -> [Coating; 2] {
+        self.coatings
     }
 
     pub(crate) fn beta(&self) -> f64 {
@@ -293,6 +302,7 @@ impl Layers {
             delta_slope,
             modes: s.g1.len(),
             tail: s.tail(),
+            coatings: self.coatings,
         }
     }
 
