@@ -54,6 +54,7 @@ impl Choice {
     /// The layer model for two equal coatings of thinness h/L and Poisson's
     /// ratio ν; any other model as it is, where neither is given (a usage
     /// error names the flags another model does not take).
+    #[cfg(feature = "cli")]
     pub(crate) fn with_coatings(
         self,
         thinness: Option<f64>,
