@@ -12,7 +12,8 @@
 //! Owns: figure data and rendering. May use: `accuracy`, `fold`, `contact`, `curve`, `limits`,
 //! `exact`, `generated` (the paper's model `max`, whose figures these are),
 //! `model` (every ellipse model beside it), `conformal` (its arms and
-//! convergence), `slender` (its pull-off beside the models'), `error`.
+//! convergence), `slender` (its pull-off beside the models'), `layer` (the
+//! pull-off against the coatings' thickness), `error`.
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
@@ -116,7 +117,37 @@ fn figures() -> Result<Vec<Figure>> {
     out.extend(fig9_comparison()?);
     out.extend(crossing_angle()?);
     out.extend(conformal_arms()?);
+    out.extend(thickness()?);
     Ok(out)
+}
+
+/// The pull-off of two equal incompressible coatings of finite thickness
+/// at ρ = 1 against their thinness h/L (`layer`, docs/thickness.md), with
+/// its two limits: (2)'s −3πRΔγ and JKR's −1.5πRΔγ.
+fn thickness() -> Result<Vec<Figure>> {
+    let (lo, hi) = (-2.3f64, 2.0f64); // h/L from 0.005 to 100
+    let mut layer = Vec::new();
+    for x in grid(lo, hi, 27) {
+        let pull = crate::layer::Layers::equal(10f64.powf(x), 0.5)?
+            .pull_off(crate::layer::Route::Griffith)?
+            .load;
+        layer.push((x, pull.force_bar * 2.0 / std::f64::consts::PI));
+    }
+    let level = |y: f64| vec![(lo, y), (hi, y)];
+    Ok(vec![Figure {
+        file: "thickness_pull_off.svg",
+        title: "Pull-off of coatings of finite thickness at ρ = 1 (ν = ½)".into(),
+        x_label: "log₁₀ h/L",
+        y_label: "pull-off force F / (πRΔγ)",
+        series: vec![
+            solid("the layer of finite thickness", layer, BLUE),
+            dashed("the thin-layer equation (2): −3", level(-3.0), RED),
+            dashed("JKR's half-space: −1.5", level(-1.5), GREEN),
+        ],
+        shade: Vec::new(),
+        shade_label: "",
+        equal: false,
+    }])
 }
 
 /// `conformal:K` at ρ = 0.8: F̄ against ā on each arm of its curve (the
