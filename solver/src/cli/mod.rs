@@ -299,8 +299,6 @@ fn stability(st: &State) -> String {
 
 /// A slender state in a line: its centre's half-width instead of a size
 /// (its contact has no finite length), and its stability.
-/// What a layer state is, in the words every output of the layer gives.
-const LAYER_WORDS: &str = "coatings of finite thickness at rho = 1, from three-dimensional elasticity (docs/thickness.md); G' is read as each coating's isotropic shear modulus G";
 
 fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
     // a pull-off is neutral under its control: its slope is zero to the
@@ -324,7 +322,7 @@ fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
         stable(st.force_slope, st.force_bar),
         stable(st.delta_slope, st.delta_bar)
     );
-    outln!("  {LAYER_WORDS}");
+    outln!("  {}", st.coatings_are);
     Ok(())
 }
 
@@ -1044,7 +1042,7 @@ fn physical(
             crate::error::short(st.cutoff.thinness),
             contour::verdict(st, st.stable_load, &st.neutral_modes_load)
         ),
-        AnyState::Layer(_) => outln!("  {}", LAYER_WORDS),
+        AnyState::Layer(st) => outln!("  {}", st.coatings_are),
         AnyState::Ellipse(_) | AnyState::Slender(_) => {}
     }
     if let Some(t) = &thin_layer {

@@ -74,5 +74,6 @@ pub(crate) fn by_energy(layers: &Layers, a_bar: f64) -> Result<LayerState> {
         modes,
         tail: s.tail(),
         coatings: layers.coatings(),
+        coatings_are: super::COATINGS_ARE,
     })
 }

@@ -84,7 +84,7 @@ pub struct Layers {
 }
 
 /// A state of the layer model, in the units (17) at ρ = 1.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct LayerState {
     /// Contact radius ā.
@@ -105,11 +105,17 @@ pub struct LayerState {
     pub tail: f64,
     /// The two coatings.
     pub coatings: [Coating; 2],
+    /// What the coatings are, in words every output of the layer gives:
+    /// isotropic, the paper's out-of-plane G′ read as their shear modulus.
+    pub coatings_are: &'static str,
 }
+
+/// [`LayerState::coatings_are`].
+pub(crate) const COATINGS_ARE: &str = "coatings of finite thickness at rho = 1, from three-dimensional elasticity (docs/thickness.md); G' is read as each coating's isotropic shear modulus G";
 
 /// The pull-offs of the layer model: the minimum of F̄ along the branch
 /// (load control) and of δ̄ (displacement control).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct LayerPullOff {
     /// Under load control.
     pub load: LayerState,
@@ -303,6 +309,7 @@ impl Layers {
             modes: s.g1.len(),
             tail: s.tail(),
             coatings: self.coatings,
+            coatings_are: COATINGS_ARE,
         }
     }
 
