@@ -50,8 +50,15 @@ const BLOCK: usize = 128;
 const PART: usize = 16 * BLOCK;
 /// The most Legendre modes a state may use.
 pub(crate) const MODES_MAX: usize = 700;
-/// The most quadrature panels a state may use.
-const PANELS_MAX: usize = 400_000;
+/// The most work a state may take, quadrature nodes × modes² (the matrix
+/// products' size): 2e11 is about 20 s on two cores. The table's thinnest
+/// row, h/L = 0.001 at its pull-off, takes 3.5e10.
+const WORK_MAX: f64 = 2e11;
+/// The most quadrature nodes a state may allocate (64 MB).
+const NODES_MAX: f64 = 4e6;
+/// Parts of the assembly summed at a time: the memory held is this many
+/// pairs of matrices, whatever the number of nodes.
+const GROUP: usize = 8;
 
 /// g₁ and g₂ of (L1) at one contact radius, as Legendre coefficients:
 /// g(t) = Σ cₙ P₂ₙ(t/ā).
@@ -156,30 +163,39 @@ pub(crate) fn solve_with(
     let k_max = Q_MAX / layers.thinnest();
     let width = (PERIODS * std::f64::consts::PI / a_bar).min(2.0 / layers.thickest()) / refine;
     let panels = (k_max / width).ceil();
-    if !(panels <= PANELS_MAX as f64) {
+    let work = panels * PANEL_POINTS as f64 * (n * n) as f64;
+    if !(work <= WORK_MAX && panels * PANEL_POINTS as f64 <= NODES_MAX) {
         return Err(Error::Unsupported {
             name: "a_bar",
             value: a_bar,
             supported: format!(
-                "a contact radius whose quadrature needs at most {PANELS_MAX} panels \
-                 (this one needs {} at h/L = {})",
-                short(panels),
+                "a contact radius whose quadrature takes at most {} nodes and nodes times Legendre \
+                 modes squared stay below {} (this one needs {} nodes and {} at h/L = {}; the work grows \
+                 as a_bar² h⁻³)",
+                short(NODES_MAX),
+                short(WORK_MAX),
+                short(panels * PANEL_POINTS as f64),
+                short(work),
                 short(layers.thinnest())
             )
             .into(),
         });
     }
     let nodes = GaussLegendre::new(PANEL_POINTS).composite(0.0, k_max, panels as usize);
-    // G = (1/2π)∫Φ ĝ ĝᵀ dk, and with slopes G′ = (1/2π)∫Φ ∂ĝ/∂ā ĝᵀ dk
-    let parts: Vec<(DMatrix<f64>, DMatrix<f64>)> = nodes
-        .par_chunks(PART)
-        .map(|part| assemble(layers, a_bar, n, part, slopes))
-        .collect();
+    // G = (1/2π)∫Φ ĝ ĝᵀ dk, and with slopes G′ = (1/2π)∫Φ ∂ĝ/∂ā ĝᵀ dk: parts
+    // on rayon's threads, summed in order a group at a time
     let (mut g, mut g_slope) = (DMatrix::<f64>::zeros(n, n), DMatrix::<f64>::zeros(n, n));
-    for (p, p_slope) in parts {
-        g += p;
-        if slopes {
-            g_slope += p_slope;
+    let parts: Vec<&[(f64, f64)]> = nodes.chunks(PART).collect();
+    for group in parts.chunks(GROUP) {
+        let sums: Vec<(DMatrix<f64>, DMatrix<f64>)> = group
+            .par_iter()
+            .map(|part| assemble(layers, a_bar, n, part, slopes))
+            .collect();
+        for (p, p_slope) in sums {
+            g += p;
+            if slopes {
+                g_slope += p_slope;
+            }
         }
     }
     let mut a = -g;
