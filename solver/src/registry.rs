@@ -1062,11 +1062,10 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
             // row carries ā and s, and a slender contact has no length); a
             // row of one gives b̄ at the centre, ā infinite and s = 0, the
             // limits of its length and aspect
-            // Griffith's condition holds at the layer's edge by construction
-            AnyState::Layer(s) => crate::batch::Row {
-                a_bar: s.a_bar,
-                b_bar: s.a_bar,
-                s: 1.0,
+            AnyState::Slender(s) => crate::batch::Row {
+                a_bar: f64::INFINITY,
+                b_bar: s.b_bar,
+                s: 0.0,
                 delta_bar: s.delta_bar,
                 force_bar: s.force_bar,
                 xi: None,
@@ -1076,10 +1075,11 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
                 departure: None,
                 route: None,
             },
-            AnyState::Slender(s) => crate::batch::Row {
-                a_bar: f64::INFINITY,
-                b_bar: s.b_bar,
-                s: 0.0,
+            // Griffith's condition holds at the layer's edge by construction
+            AnyState::Layer(s) => crate::batch::Row {
+                a_bar: s.a_bar,
+                b_bar: s.a_bar,
+                s: 1.0,
                 delta_bar: s.delta_bar,
                 force_bar: s.force_bar,
                 xi: None,

@@ -236,39 +236,31 @@ impl Layers {
                 check_range("a", a_bar, a_bar > 0.0, "(0, ∞)")?;
                 at(a_bar)
             }
-            Hold::Force(force_bar) => {
-                let pull = self.pull_off(route)?.load;
-                if force_bar < pull.force_bar {
-                    return Err(Error::NoState(format!(
-                        "the force {} is below the layer's pull-off force {}",
-                        short(force_bar),
-                        short(pull.force_bar)
-                    )));
-                }
-                at(root(
-                    |a| Ok(at(a)?.force_bar),
-                    pull.a_bar,
-                    force_bar,
-                    "force",
-                )?)
-            }
-            Hold::Delta(delta_bar) => {
-                let pull = self.pull_off(route)?.displacement;
-                if delta_bar < pull.delta_bar {
-                    return Err(Error::NoState(format!(
-                        "the approach {} is below the layer's smallest approach {}",
-                        short(delta_bar),
-                        short(pull.delta_bar)
-                    )));
-                }
-                at(root(
-                    |a| Ok(at(a)?.delta_bar),
-                    pull.a_bar,
-                    delta_bar,
-                    "approach",
-                )?)
-            }
+            Hold::Force(force_bar) => self.beyond(route, true, force_bar),
+            Hold::Delta(delta_bar) => self.beyond(route, false, delta_bar),
         }
+    }
+
+    /// The state on the branch beyond the pull-off under load control
+    /// (`load`, at force `value`) or displacement control (at approach
+    /// `value`), where it is stable under that control; none below the
+    /// pull-off's value.
+    fn beyond(&self, route: Route, load: bool, value: f64) -> Result<LayerState> {
+        let (quantity, of): (&str, fn(&LayerState) -> f64) = if load {
+            ("force", |s| s.force_bar)
+        } else {
+            ("approach", |s| s.delta_bar)
+        };
+        let pull = self.pull_off_under(route, load)?;
+        if value < of(&pull) {
+            return Err(Error::NoState(format!(
+                "the {quantity} {} is below the layer's pull-off {quantity} {}",
+                short(value),
+                short(of(&pull))
+            )));
+        }
+        let at = |a: f64| self.at_radius(a, route);
+        at(root(|a| Ok(of(&at(a)?)), pull.a_bar, value, quantity)?)
     }
 
     /// The state of contact radius ā found by `route`.
@@ -325,34 +317,40 @@ impl Layers {
     /// energy, the minima of F̄ and δ̄ by Brent's method (the force and
     /// approach to round-off, the radius to about 1e-7 of itself).
     pub fn pull_off(&self, route: Route) -> Result<LayerPullOff> {
-        let guess = self.radius_guess();
-        let (load, displacement) = match route {
-            Route::Griffith => (
-                root(
-                    |a| Ok(self.at_radius(a, route)?.force_slope),
-                    guess,
-                    0.0,
-                    "force's slope",
-                )?,
-                root(
-                    |a| Ok(self.at_radius(a, route)?.delta_slope),
-                    guess,
-                    0.0,
-                    "approach's slope",
-                )?,
-            ),
-            Route::Energy => {
-                let at = |a| energy::by_energy(self, a);
-                (
-                    minimum(|a| Ok(at(a)?.force_bar), guess, "force")?,
-                    minimum(|a| Ok(at(a)?.delta_bar), guess, "approach")?,
-                )
-            }
-        };
         Ok(LayerPullOff {
-            load: self.at_radius(load, route)?,
-            displacement: self.at_radius(displacement, route)?,
+            load: self.pull_off_under(route, true)?,
+            displacement: self.pull_off_under(route, false)?,
         })
+    }
+
+    /// The pull-off under load control (`load`) or displacement control.
+    fn pull_off_under(&self, route: Route, load: bool) -> Result<LayerState> {
+        let guess = self.radius_guess();
+        let a = match (route, load) {
+            (Route::Griffith, true) => root(
+                |a| Ok(self.at_radius(a, route)?.force_slope),
+                guess,
+                0.0,
+                "force's slope",
+            )?,
+            (Route::Griffith, false) => root(
+                |a| Ok(self.at_radius(a, route)?.delta_slope),
+                guess,
+                0.0,
+                "approach's slope",
+            )?,
+            (Route::Energy, true) => minimum(
+                |a| Ok(energy::by_energy(self, a)?.force_bar),
+                guess,
+                "force",
+            )?,
+            (Route::Energy, false) => minimum(
+                |a| Ok(energy::by_energy(self, a)?.delta_bar),
+                guess,
+                "approach",
+            )?,
+        };
+        self.at_radius(a, route)
     }
 }
 
@@ -404,12 +402,16 @@ pub(crate) fn root(
         }
     }
     // Illinois: regula falsi, halving the weight of an end kept twice
+    // (bisection where round-off puts the new point on an end)
     let mut side = 0;
     for _ in 0..200 {
         if (hi - lo).abs() <= 1e-14 * hi.abs() {
-            break;
+            return Ok(if f_lo.abs() < f_hi.abs() { lo } else { hi });
         }
-        let a = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        let mut a = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        if !(a > lo.min(hi) && a < lo.max(hi)) {
+            a = 0.5 * (lo + hi);
+        }
         let f_a = g(a)?;
         if f_a == 0.0 {
             return Ok(a);
@@ -428,7 +430,15 @@ pub(crate) fn root(
             side = 1;
         }
     }
-    Ok(if f_lo.abs() < f_hi.abs() { lo } else { hi })
+    Err(Error::Unresolved {
+        what: format!(
+            "the layer's {what} reaches {} somewhere between a_bar = {} and {}, not located to 1e-14 in 200 steps",
+            short(target),
+            rounded(lo.min(hi)),
+            rounded(lo.max(hi))
+        ),
+        residual: (hi - lo).abs() / hi.abs(),
+    })
 }
 
 /// The contact radius of the minimum of `f` along the branch: bracketed
