@@ -248,3 +248,15 @@ fn the_exact_solvers_no_state_has_at_most_six_significant_digits() {
     assert!(!err.contains("panicked"), "{cmd}: {err}");
     assert!(longest_mantissa(&err) <= 6, "{cmd}: {err}");
 }
+
+/// A `registry.json` that is a FIFO (or any file that is not regular) is
+/// refused with its reason, not read: reading it would block forever.
+#[test]
+fn a_families_registry_that_is_a_fifo_is_refused_not_read() {
+    let (code, out, err) = bash(
+        r#"d=$(mktemp -d) && mkfifo "$d/registry.json" && THINJKR_FAMILIES="$d" timeout 20 "$0" models; c=$?; rm -rf "$d"; exit $c"#,
+    );
+    assert_eq!(code, Some(0), "{out}\n{err}");
+    assert!(out.lines().any(|l| l.starts_with("max")), "{out}");
+    assert!(err.contains("not a regular file"), "{err}");
+}

@@ -91,9 +91,12 @@ fn leak(s: String) -> &'static str {
 
 fn read_bounded(path: &Path, max: u64) -> Result<String, String> {
     let at = path.display();
-    let size = std::fs::metadata(path)
-        .map_err(|e| format!("{at}: {e}"))?
-        .len();
+    let meta = std::fs::metadata(path).map_err(|e| format!("{at}: {e}"))?;
+    // a FIFO or a device would block the read (or never end): regular files only
+    if !meta.is_file() {
+        return Err(format!("{at}: not a regular file"));
+    }
+    let size = meta.len();
     if size > max {
         return Err(format!("{at}: {size} bytes, more than the {max} read"));
     }
