@@ -178,10 +178,12 @@ fn every_module_uses_only_what_its_charter_names() {
 /// 200 until issue 70's layer of finite thickness added eleven (`layer`,
 /// `Coating`, `Layers`, `Route`, `LayerState`, `LayerPullOff`, `new`,
 /// `equal`, `state`, `pull_off`, and `report::ThinLayer`, (2)'s answer
-/// beside the layer's in `physical`).
+/// beside the layer's in `physical`), then 217 for the crate root's way in
+/// (issue 69): `solve`, `pull_off` and the four types they take and give,
+/// re-exported there (`Hold`, `FoldCondition`, `AnyState`, `PullOffAnswer`).
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 211;
+    const MAX_PUBLIC_ITEMS: usize = 217;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);
