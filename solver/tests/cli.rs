@@ -311,7 +311,14 @@ fn accuracy_computes_only_the_rows_asked_for() {
 /// exact one (`thinjkr exact zero-force --rho 0.8`).
 #[test]
 fn a_contour_family_state_says_how_much_of_its_shape_is_resolved() {
-    let (ok, out, err) = thinjkr(&["zero-force", "--rho", "0.8", "--model", "conformal:8"]);
+    let (ok, out, err) = thinjkr(&[
+        "zero-force",
+        "--rho",
+        "0.8",
+        "--model",
+        "conformal:8",
+        "--explain",
+    ]);
     assert!(ok, "{err}");
     let shape = out
         .lines()
@@ -385,4 +392,86 @@ fn the_reach_windows_check_their_input_and_say_when_there_are_none() {
         out.contains("no size of the map has a state at rho = 0.1 connected to the circle"),
         "{out}"
     );
+}
+
+/// A person reads the answer on the first line and at most two lines on
+/// how far to trust it (issue 69); `--explain` gives every line, the brief
+/// ones' facts among them. Warnings count: standard error holds at most
+/// one, saying how many more `--explain` shows.
+#[test]
+fn answers_come_in_three_lines_and_explain_gives_the_rest() {
+    let cases: [(&[&str], &str); 6] = [
+        (
+            &["exact", "pull-off", "--rho", "1"],
+            "exact pull-off (load control): rho = 1,",
+        ),
+        (
+            &["exact", "zero-force", "--rho", "0.8"],
+            "exact state: rho = 0.8,",
+        ),
+        (
+            &["pull-off", "--rho", "0.8", "--model", "exact"],
+            "exact pull-off (load control): rho = 0.8,",
+        ),
+        (
+            &["pull-off", "--rho", "0.8", "--model", "conformal:8"],
+            "pull-off: model conformal:8,",
+        ),
+        (
+            &[
+                "solve",
+                "--rho",
+                "0.8",
+                "--force",
+                "-4",
+                "--model",
+                "conformal:4",
+            ],
+            "state: model conformal:4,",
+        ),
+        (
+            &[
+                "physical",
+                "--r1",
+                "0.01",
+                "--r2",
+                "0.01",
+                "--theta-deg",
+                "60",
+                "--h1",
+                "1e-4",
+                "--h2",
+                "1e-4",
+                "--g1",
+                "1e6",
+                "--g2",
+                "1e6",
+                "--work-of-adhesion",
+                "0.05",
+            ],
+            "physical: model exact,",
+        ),
+    ];
+    for (args, first) in cases {
+        let (ok, brief, err) = thinjkr(args);
+        assert!(ok, "{args:?}: {err}");
+        let lines = brief.lines().count() + err.lines().count();
+        assert!(
+            brief.starts_with(first) && (1..=3).contains(&lines),
+            "{args:?} printed {lines} lines:\n{brief}{err}"
+        );
+        let (ok, whole, whole_err) = thinjkr(&[args, &["--explain"]].concat());
+        assert!(ok, "{args:?} --explain: {whole_err}");
+        // the same answer on the first line, and more lines after it
+        assert_eq!(brief.lines().next(), whole.lines().next(), "{args:?}");
+        assert!(
+            whole.lines().count() + whole_err.lines().count() > lines,
+            "{args:?} --explain adds nothing:\n{whole}"
+        );
+        // a warning the brief text gives is among the whole text's
+        if let Some(w) = err.lines().next() {
+            let w = w.split(" (").next().unwrap();
+            assert!(whole_err.contains(w), "{args:?}: {w}");
+        }
+    }
 }

@@ -821,7 +821,7 @@ fn cli_stdout(args: &[&str]) -> String {
 #[test]
 fn the_pull_off_at_rho_0_1_is_not_reached_by_unloading_below_its_critical_thinness() {
     let run = |extra: &[&str]| -> String {
-        cli_stdout(&[&["exact", "pull-off", "--rho", "0.1"], extra].concat())
+        cli_stdout(&[&["exact", "pull-off", "--rho", "0.1", "--explain"], extra].concat())
     };
     let reached = |text: &str| -> String {
         text.lines()

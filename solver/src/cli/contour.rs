@@ -91,6 +91,19 @@ pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
         verdict(st, st.stable_load, &st.neutral_modes_load),
         modes(st)
     );
+    if !crate::cli::output::explain() {
+        // the brief text: one more line at most, its first warning, else the
+        // arm where it is not the circle's
+        match (st.warnings.split_first(), arm_words(st)) {
+            (Some((w, [])), _) => outln!("  warning: {w}"),
+            (Some((w, more)), _) => outln!("  warning: {w} ({} more: --explain)", more.len()),
+            (None, Some(arm)) if !matches!(st.folds_crossed.as_deref(), Some([])) => {
+                outln!("  arm: {arm}")
+            }
+            (None, _) => {}
+        }
+        return Ok(());
+    }
     let c: Vec<String> = st.coefficients.iter().map(|c| format!("{c:.6e}")).collect();
     outln!("  map coefficients c1..c{}: {}", c.len(), c.join(", "));
     // how much of its shape the thin-layer model resolves, as for an
@@ -101,24 +114,29 @@ pub(crate) fn show(label: &str, st: &ConformalState) -> crate::Result<()> {
             m.short_waves(&st.coefficients, st.cutoff).words(st.cutoff)
         );
     }
-    match st.folds_crossed.as_deref() {
-        Some([]) => {
-            outln!("  arm: continued in rho from the circle at this control, on the circle's arm")
-        }
-        Some(folds) => {
-            let at: Vec<String> = folds.iter().map(|r| crate::error::short(*r)).collect();
-            outln!(
-                "  arm: continued in rho from the circle at this control, past {} of its arm (the Jacobian changed sign at rho = {}): another arm than the circle's",
-                if folds.len() == 1 { "a fold" } else { "folds" },
-                at.join(", ")
-            )
-        }
-        None => {}
+    if let Some(arm) = arm_words(st) {
+        outln!("  arm: {arm}");
     }
     for w in &st.warnings {
         outln!("  warning: {w}");
     }
     Ok(())
+}
+
+/// Which arm a state continued in ρ lies on, in words; `None` where it
+/// was not continued in ρ.
+fn arm_words(st: &ConformalState) -> Option<String> {
+    match st.folds_crossed.as_deref()? {
+        [] => Some("continued in rho from the circle at this control, on the circle's arm".into()),
+        folds => {
+            let at: Vec<String> = folds.iter().map(|r| crate::error::short(*r)).collect();
+            Some(format!(
+                "continued in rho from the circle at this control, past {} of its arm (the Jacobian changed sign at rho = {}): another arm than the circle's",
+                if folds.len() == 1 { "a fold" } else { "folds" },
+                at.join(", ")
+            ))
+        }
+    }
 }
 
 /// `pull-off --model family:K` in words: the state, where its branch was
@@ -142,6 +160,9 @@ pub(crate) fn show_pull_off(
         "  end point: {what} along the branch traced from a = {} (pseudo-arclength in (c, delta))",
         m.family().trace_start_a
     );
+    if !crate::cli::output::explain() {
+        return Ok(());
+    }
     for p in passed {
         if let Passed::SizeFold {
             a_bar,

@@ -113,6 +113,7 @@ pub(crate) enum ExactCommand {
         /// up to 7 at ρ = 0.3). Where no state at F̄ = 10 is found (below ρ ≈ 0.165; the search takes about
         /// 19 min at ρ = 0.1), both start from the largest load on the pull-off's piece at which its state is
         /// resolved and stable under load above the cutoff, and say so; where there is none, neither starts.
+        /// Prints every line, as --explain does.
         #[arg(long)]
         unloading: bool,
         /// Print JSON.
@@ -595,7 +596,25 @@ pub(crate) fn show_state(label: &str, st: &ExactState) -> crate::Result<()> {
         st.delta_bar,
         st.force_bar
     );
-    show_quality(st)
+    if crate::cli::output::explain() {
+        show_quality(st)
+    } else {
+        show_trust(st)
+    }
+}
+
+/// How far to trust an exact state, in the brief text's two lines (with
+/// `--explain`, [`show_quality`]'s lines instead): its check and route, then
+/// one stability verdict.
+fn show_trust(st: &ExactState) -> crate::Result<()> {
+    outln!(
+        "  checked: max |dp/dnu - 1| = {:.1e} with {} modes; found: {}",
+        st.bc_error,
+        st.truncation.modes,
+        st.route
+    );
+    outln!("  {} (more with --explain)", verdict_words(st));
+    Ok(())
 }
 
 fn show_quality(st: &ExactState) -> crate::Result<()> {
@@ -631,24 +650,9 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
 /// (`exact::undulations::Coatings`), in words; "none" under a control where
 /// no thinness does, with the modes that set the two bounds.
 pub(crate) fn coatings_words(st: &ExactState) -> String {
-    use crate::exact::undulations::{no_thinness_words, Thinnesses};
-    let stab = &st.stability;
-    let (Some(coatings), shape) = st.coatings_measured() else {
+    let Some((load, displacement)) = coatings_ranges(st) else {
         return "not judged (its stability was not computed)".into();
     };
-    let words = |range: Option<Thinnesses>, modes: &[UnstableMode]| -> String {
-        match range.map(|t| t.bounds()) {
-            Some((Some(from), Some(to))) => format!("from {from:.3} to {to:.3}"),
-            Some((None, Some(to))) => format!("below {to:.3}"),
-            Some((Some(from), None)) => format!("from {from:.3} on"),
-            Some((None, None)) => "every h/L".into(),
-            None => format!("none ({})", no_thinness_words(modes, &shape)),
-        }
-    };
-    let (load, displacement) = (
-        words(coatings.load, &stab.load),
-        words(coatings.displacement, &stab.displacement),
-    );
     let head =
         "the thinness h/L for which (2) resolves its shape and finds it stable above the cutoff:";
     if load == displacement {
@@ -656,6 +660,74 @@ pub(crate) fn coatings_words(st: &ExactState) -> String {
     } else {
         format!("{head} {load} under load control, {displacement} under displacement control")
     }
+}
+
+/// The stability verdict of the brief text, in a line: for which coatings
+/// the state is a stable contact whose shape (2) resolves ([`coatings_words`]
+/// in fewer words).
+pub(crate) fn verdict_words(st: &ExactState) -> String {
+    let Some((load, displacement)) = coatings_ranges(st) else {
+        return "its stability was not judged".into();
+    };
+    let range = |r: &Thinness| match r {
+        Thinness::Range(r) => format!("for coatings of h/L {r}"),
+        Thinness::None(why) => format!("for no coating thickness ({why})"),
+    };
+    if load == displacement {
+        format!(
+            "a stable contact whose shape (2) resolves {}, under either control",
+            range(&load)
+        )
+    } else {
+        format!(
+            "a stable contact whose shape (2) resolves {} under load control, {} under displacement control",
+            range(&load),
+            range(&displacement)
+        )
+    }
+}
+
+/// For which coatings a state is stable above the cutoff with its shape
+/// resolved, in words.
+#[derive(PartialEq)]
+enum Thinness {
+    /// A range of h/L ("from 0.373 to 0.560").
+    Range(String),
+    /// No thinness, and why.
+    None(String),
+}
+
+impl std::fmt::Display for Thinness {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Thinness::Range(r) => f.write_str(r),
+            Thinness::None(why) => write!(f, "none ({why})"),
+        }
+    }
+}
+
+/// The ranges of thinness h/L under load and under displacement control
+/// for which the state is stable above the cutoff with its shape resolved;
+/// `None` where its stability was not computed.
+fn coatings_ranges(st: &ExactState) -> Option<(Thinness, Thinness)> {
+    use crate::exact::undulations::{no_thinness_words, Thinnesses};
+    let stab = &st.stability;
+    let (Some(coatings), shape) = st.coatings_measured() else {
+        return None;
+    };
+    let words = |range: Option<Thinnesses>, modes: &[UnstableMode]| -> Thinness {
+        Thinness::Range(match range.map(|t| t.bounds()) {
+            Some((Some(from), Some(to))) => format!("from {from:.3} to {to:.3}"),
+            Some((None, Some(to))) => format!("below {to:.3}"),
+            Some((Some(from), None)) => format!("from {from:.3} on"),
+            Some((None, None)) => "every h/L".into(),
+            None => return Thinness::None(no_thinness_words(modes, &shape)),
+        })
+    };
+    Some((
+        words(coatings.load, &stab.load),
+        words(coatings.displacement, &stab.displacement),
+    ))
 }
 
 /// How much of the state's shape lies in undulations shorter than the
@@ -1029,6 +1101,11 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
         "exact pull-off (load control): rho = {rho}, a = {:.7}, b = {:.7}, s = {:.7}, delta = {:.7}, force = {:.10}",
         po.a_bar, po.b_bar, po.s, po.delta_bar, po.force_bar
     );
+    // the brief text: how far to trust it in two lines (--unloading asks
+    // for the paths' story, and gets every line)
+    if !(crate::cli::output::explain() || unloading) {
+        return show_trust(&po);
+    }
     show_quality(&po)?;
     for e in &events {
         if let Some(words) = e.describe() {
@@ -1145,7 +1222,9 @@ pub(crate) fn every_state(
             st.delta_bar,
             st.force_bar
         );
-        show_quality(st)?;
+        if crate::cli::output::explain() {
+            show_quality(st)?;
+        }
     }
     for (a, why) in &all.missed {
         outln!("  not accepted near a = {a:.3}: {why}");
@@ -1190,6 +1269,9 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
         return Ok(());
     }
     show_state("exact state", &st)?;
+    if !crate::cli::output::explain() {
+        return Ok(());
+    }
     // counting the others takes the screen of --all (seconds at rho = 0.8,
     // minutes at small rho): said, not done
     outln!(

@@ -47,6 +47,10 @@ mod files;
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Every line of the answer: the checks, the route, each control's stability, the shape, every warning and
+    /// the models beside an exact answer (without it: the answer, and at most two lines on how far to trust it).
+    #[arg(long, global = true)]
+    explain: bool,
 }
 
 #[derive(Subcommand)]
@@ -297,9 +301,9 @@ fn stability(st: &State) -> String {
     }
 }
 
-/// A slender state in a line: its centre's half-width instead of a size
-/// (its contact has no finite length), and its stability.
-
+/// A layer state in two lines: its size, approach and force with its
+/// coatings and its stability under each control (from the slopes along
+/// its branch), then what its coatings are.
 fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
     // a pull-off is neutral under its control: its slope is zero to the
     // solution's round-off (1e-9 of the scale ā/F̄ or ā/δ̄ at h/L = 0.01)
@@ -326,6 +330,8 @@ fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
     Ok(())
 }
 
+/// A slender state in a line: its centre's half-width instead of a size
+/// (its contact has no finite length), and its stability.
 fn show_slender(label: &str, st: &crate::report::SlenderState) -> crate::Result<()> {
     outln!(
         "{label}: model {}, rho = {}, half-width at the centre b = {}, delta = {}, force = {}, dF/ddelta = {} [no finite length: the strip thins as 2/xi^2 along X without end; stable under displacement control, {} under load control]",
@@ -989,8 +995,10 @@ fn physical(
         thin_layer,
     } = crate::registry::physical(model, cyl, force, delta)?;
     let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
-    for w in &warnings {
-        errln!("thinjkr: warning: {w}");
+    if json || output::explain() {
+        for w in &warnings {
+            errln!("thinjkr: warning: {w}");
+        }
     }
     if json {
         let doc = Document::Physical {
@@ -1015,6 +1023,45 @@ fn physical(
         si.force,
         si.h_over_a
     );
+    let thin_layer_line = |t: &crate::report::ThinLayer| {
+        format!(
+            "  the thin-layer equation (2) ({}): a = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, {} % off",
+            t.model,
+            t.si.a,
+            t.si.delta,
+            t.si.force,
+            crate::error::short(100.0 * t.relative_error)
+        )
+    };
+    let conformal_line = |st: &crate::conformal::ConformalState| {
+        format!(
+            "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",
+            contour::verdict(st, st.stable_displacement, &st.neutral_modes),
+            st.cutoff.wavelength,
+            crate::error::short(st.cutoff.thinness),
+            contour::verdict(st, st.stable_load, &st.neutral_modes_load)
+        )
+    };
+    if !output::explain() {
+        // the brief text: the answer, one line on how far to trust it, one
+        // warning (after the answer, which is flushed first)
+        match (&thin_layer, &state) {
+            (Some(t), _) => outln!("{}", thin_layer_line(t)),
+            (None, AnyState::Exact(st)) => {
+                outln!("  {}", exact_command::verdict_words(st))
+            }
+            (None, AnyState::Conformal(st)) => outln!("{}", conformal_line(st)),
+            (None, _) => {}
+        }
+        output::finish()?;
+        if let Some(w) = warnings.first() {
+            match warnings.len() - 1 {
+                0 => errln!("thinjkr: warning: {w}"),
+                more => errln!("thinjkr: warning: {w} ({more} more: --explain)"),
+            }
+        }
+        return Ok(());
+    }
     outln!(
         "  dimensionless (17): a = {}, s = {}, delta = {}, force = {}; scales: L = {:.6e} m, approach {:.6e} m, force {:.6e} N",
         output::num(a_bar),
@@ -1035,25 +1082,12 @@ fn physical(
                 sc.length
             );
         }
-        AnyState::Conformal(st) => outln!(
-            "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",
-            contour::verdict(st, st.stable_displacement, &st.neutral_modes),
-            st.cutoff.wavelength,
-            crate::error::short(st.cutoff.thinness),
-            contour::verdict(st, st.stable_load, &st.neutral_modes_load)
-        ),
+        AnyState::Conformal(st) => outln!("{}", conformal_line(st)),
         AnyState::Layer(st) => outln!("  {}", st.coatings_are),
         AnyState::Ellipse(_) | AnyState::Slender(_) => {}
     }
     if let Some(t) = &thin_layer {
-        outln!(
-            "  the thin-layer equation (2) ({}): a = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, {} % off",
-            t.model,
-            t.si.a,
-            t.si.delta,
-            t.si.force,
-            crate::error::short(100.0 * t.relative_error)
-        );
+        outln!("{}", thin_layer_line(t));
     }
     if let Some(why) = &chosen_because {
         outln!("  {why}");
@@ -1082,6 +1116,7 @@ fn thread_pool() -> rayon::ThreadPool {
 /// that fits the machine, print, and give the exit status.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    output::set_explain(cli.explain);
     let json_mode = wants_json(&cli.command);
     let pool = thread_pool();
     let mut result = output::check_open().and_then(|()| pool.install(|| run(cli)));

@@ -8,7 +8,11 @@
 //! Standard error gets the same care ([`err_line`], `errln!`): a line that
 //! cannot be written there never panics and never stops the output.
 //!
-//! Owns: [`line`], [`text`], [`finish`], [`err_line`], the `outln!`/`out!`/
+//! A person reads the answer on the first line and at most two more lines on
+//! how far to trust it; `--explain` asks for every line ([`explain`]: each
+//! command chooses its brief lines and its whole text by it).
+//!
+//! Owns: [`line`], [`text`], [`finish`], [`err_line`], [`explain`], the `outln!`/`out!`/
 //! `errln!` macros. May use:
 //! `crate::Error`.
 
@@ -16,6 +20,17 @@ use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 static BROKEN_PIPE: AtomicBool = AtomicBool::new(false);
+static EXPLAIN: AtomicBool = AtomicBool::new(false);
+
+/// Whether the run prints every line (`--explain`), not the brief text.
+pub(crate) fn explain() -> bool {
+    EXPLAIN.load(Ordering::Relaxed)
+}
+
+/// Set by `--explain` once, before the command runs.
+pub(crate) fn set_explain(on: bool) {
+    EXPLAIN.store(on, Ordering::Relaxed);
+}
 
 /// The exit status after a closed pipe (128 + SIGPIPE).
 pub(crate) const BROKEN_PIPE_STATUS: u8 = 141;
