@@ -150,7 +150,9 @@ pub(crate) fn help(with_exact: bool, extra: &str) -> String {
         ellipse[0],
         ellipse[1..].join(", ")
     )];
-    for f in families() {
+    // the built-in families only: the help is made for every run, which
+    // reads no family file (`thinjkr models` lists the loaded ones too)
+    for f in crate::conformal::compiled() {
         let exact = if f.on_exact_gap {
             " converging to the exact solution"
         } else {
@@ -168,7 +170,11 @@ pub(crate) fn help(with_exact: bool, extra: &str) -> String {
     if with_exact {
         parts.push("or exact (the free-boundary problem itself)".into());
     }
-    format!("{}{extra}; `thinjkr models` lists them.", parts.join(", "))
+    format!(
+        "{}{extra}; `thinjkr models` lists them, with the families of a folder named by {}.",
+        parts.join(", "),
+        crate::conformal::load::ENV
+    )
 }
 
 /// Every model, in the order `thinjkr models` lists them: the models of the

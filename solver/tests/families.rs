@@ -189,3 +189,113 @@ fn a_family_with_a_wrong_gap_is_left_out_with_its_reason() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 72: a command that needs no family reads no family file. The
+/// families are loaded when a command first needs one, and a family left
+/// out is then said on standard error; `--help`, `--version`, `schema`, a
+/// built-in model and the exact solver (seeded by the built-in
+/// `conformal:8`) say nothing of a broken folder, because they never read
+/// it. `models` reads it and says why.
+#[test]
+fn a_command_that_needs_no_family_reads_no_family_file() {
+    let dir = std::env::temp_dir().join(format!("thinjkr-families-lazy-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("registry.json"), "{\"families\": [").unwrap();
+    for args in [
+        &["--version"][..],
+        &["--help"],
+        &["solve", "--help"],
+        &["schema"],
+        &["pull-off", "--rho", "0.8"],
+        &["pull-off", "--rho", "0.8", "--model", "conformal:8"],
+        &["exact", "zero-force", "--rho", "0.8"],
+    ] {
+        let (ok, _, err) = thinjkr(&dir, args);
+        assert!(ok && err.is_empty(), "{args:?}: {err}");
+    }
+    let (ok, out, err) = thinjkr(&dir, &["models"]);
+    assert!(ok && out.contains("conformal:8"), "{err}");
+    assert!(
+        err.contains("THINJKR_FAMILIES") && err.contains("registry.json"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Issue 72: a loaded family is held to what `generate` holds a family
+/// to. A built-in model's name, a key the generator does not write and a
+/// file reached through a link out of the folder are each refused with
+/// the reason; a title's control characters (an ANSI escape) are printed
+/// escaped, never raw.
+#[test]
+fn a_loaded_family_is_held_to_the_generators_rules() {
+    let tables = builtin_tables();
+    for (tag, name, word) in [
+        ("max", "max", "taken"),
+        ("slender", "slender", "taken"),
+        ("layer", "layer", "taken"),
+    ] {
+        let dir = folder(&format!("name-{tag}"), name, &tables);
+        let (ok, out, err) = thinjkr(&dir, &["models"]);
+        assert!(ok, "{tag}: {err}");
+        assert!(!out.contains(&format!("{name}:")), "{tag}: {out}");
+        assert!(
+            err.contains(&format!("family {name} left out")) && err.contains(word),
+            "{tag}: {err}"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+    // an unknown key: the registry's entry, then the tables' member
+    let dir = folder("key", "keyed", &tables);
+    let path = dir.join("registry.json");
+    let good = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(
+        &path,
+        good.replacen("\"kind\"", "\"seed_exact\":true,\"kind\"", 1),
+    )
+    .unwrap();
+    let (_, out, err) = thinjkr(&dir, &["models"]);
+    assert!(!out.contains("keyed:"), "{out}");
+    assert!(
+        err.contains("unknown field") && err.contains("seed_exact"),
+        "{err}"
+    );
+    std::fs::write(&path, &good).unwrap();
+    std::fs::write(
+        dir.join("keyed/tables.json"),
+        tables.replacen("\"terms\"", "\"weight\": 2, \"terms\"", 1),
+    )
+    .unwrap();
+    let (_, out, err) = thinjkr(&dir, &["models"]);
+    assert!(!out.contains("keyed:"), "{out}");
+    assert!(
+        err.contains("unknown field") && err.contains("weight"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+    // the tables through a link to a file outside the folder
+    let dir = folder("link", "linked", &tables);
+    let outside = std::env::temp_dir().join(format!("thinjkr-outside-{}.json", std::process::id()));
+    std::fs::write(&outside, &tables).unwrap();
+    std::fs::remove_file(dir.join("linked/tables.json")).unwrap();
+    std::os::unix::fs::symlink(&outside, dir.join("linked/tables.json")).unwrap();
+    let (_, out, err) = thinjkr(&dir, &["models"]);
+    assert!(!out.contains("linked:"), "{out}");
+    assert!(err.contains("outside the folder"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+    std::fs::remove_file(&outside).unwrap();
+    // a title with an ANSI escape: the family loads, its title escaped
+    let dir = folder("ansi", "tinted", &tables);
+    let path = dir.join("registry.json");
+    let text = std::fs::read_to_string(&path).unwrap().replacen(
+        "a copy of conformal's tables",
+        "red \\u001b[31mtitle\\u0007",
+        1,
+    );
+    std::fs::write(&path, text).unwrap();
+    let (ok, out, err) = thinjkr(&dir, &["models"]);
+    assert!(ok && err.is_empty(), "{err}");
+    assert!(!out.contains('\u{1b}') && !out.contains('\u{7}'), "{out:?}");
+    assert!(out.contains("red \\u{1b}[31mtitle\\u{7}"), "{out}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

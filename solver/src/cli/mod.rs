@@ -12,7 +12,6 @@
 //! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
 //! `crate::limits`, `crate::error`, `crate::layer` (a layer state), its own modules.
 
-use crate::conformal::{self as family};
 use crate::report::{AnyState, Document, ErrorBody};
 use crate::units::Cylinders;
 use crate::{Contact, ModelId, State};
@@ -879,10 +878,8 @@ fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> crate::Result<()
 
 /// `thinjkr models`.
 fn models_command(j: bool) -> crate::Result<()> {
+    // the families' problems, if any, are said by `main` after the output
     let models = crate::report::models();
-    for p in family::load_problems() {
-        errln!("thinjkr: warning: {p}");
-    }
     if j {
         outln!("{}", Document::Models { models }.to_json());
     } else {
@@ -1130,6 +1127,14 @@ pub fn main() -> ExitCode {
             if let Err(w) = output::line(format_args!("{}", doc.to_json())) {
                 result = Err(w);
             }
+        }
+    }
+    // a family of THINJKR_FAMILIES left out is said wherever the run loaded
+    // the families (a built-in model, --help and --version load none); an
+    // unknown model's error names them itself
+    if result.is_ok() {
+        for p in crate::conformal::problems_if_loaded().unwrap_or_default() {
+            errln!("thinjkr: warning: {p}");
         }
     }
     // what was written before an error is flushed too (its own write

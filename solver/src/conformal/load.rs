@@ -7,8 +7,11 @@
 //! library and the Python package alike). Its members use the table
 //! evaluator; the built-in families keep their compiled tables.
 //!
-//! A file is checked before it is used: its size is bounded before it is
-//! read, the packing must be the solver's, every member's rows must be a
+//! A file is checked before it is used: it must be a regular file inside
+//! the folder once its links are resolved, with no key the generator does
+//! not write; its size is bounded before it is read, a family may not take
+//! a built-in model's name, its texts are printed with their control
+//! characters escaped, the packing must be the solver's, every member's rows must be a
 //! prefix of the family's tables in the generator's order, with no exponent
 //! of a map coefficient the member does not have, and the map's powers must
 //! be odd and distinct. A family that fails is left out, and the reason is
@@ -16,7 +19,8 @@
 //!
 //! Owns: reading `registry.json` and `tables.json`. May use: `conformal`
 //! (`Family`, `Tables`, `poly`'s packing), `exact` (the gap's terms, checked
-//! as the exact solver checks them), serde_json.
+//! as the exact solver checks them), `model` and `slender` (the built-in
+//! models' names), serde_json.
 
 use super::poly::{BITS, DBAR_SHIFT, MAX_UNKNOWNS, MU_SHIFT};
 use super::{Family, Tables};
@@ -33,9 +37,50 @@ const MAX_REGISTRY_BYTES: u64 = 1 << 20;
 /// The largest `tables.json` read (the built-in `conformal`'s is 1.1 MB).
 const MAX_TABLES_BYTES: u64 = 256 << 20;
 
+// every file is read whole by its schema: a key the generator does not
+// write is an error, as in `generate` (a misspelt key would be ignored)
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct Registry {
     families: Vec<Entry>,
+    /// The generator's note (not used).
+    #[serde(default, rename = "generated")]
+    _generated: Option<String>,
+}
+
+/// The names a family may not take: the built-in models', and those of
+/// the generated modules (as `generate` refuses them).
+fn taken(name: &str) -> bool {
+    crate::ModelId::ALL.iter().any(|m| m.name() == name)
+        || crate::slender::Slender::parse(name).is_some()
+        || [
+            "exact",
+            "layer",
+            "slender",
+            "registry",
+            "mod",
+            "table",
+            "families",
+            "slender_registry",
+        ]
+        .contains(&name)
+}
+
+/// A text of the file as it is printed: its control characters (an ANSI
+/// escape, a bell) written as escapes, never reaching a terminal raw.
+fn printable(text: String) -> String {
+    if !text.chars().any(char::is_control) {
+        return text;
+    }
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
 }
 
 /// The longest `rho_min_why` a family may give: the generator's limit
@@ -44,6 +89,7 @@ struct Registry {
 const MAX_WHY_CHARS: usize = 72;
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct Entry {
     name: String,
     kind: String,
@@ -63,6 +109,7 @@ struct Entry {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct Packing {
     bits: u32,
     dbar_shift: u32,
@@ -70,6 +117,7 @@ struct Packing {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct Member {
     terms: usize,
     powers: Vec<u16>,
@@ -78,7 +126,11 @@ struct Member {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct TablesFile {
+    /// The generator's note (not used).
+    #[serde(default, rename = "generated")]
+    _generated: Option<String>,
     packing: Packing,
     members: Vec<Member>,
     potential: Vec<(u64, f64)>,
@@ -89,8 +141,20 @@ fn leak(s: String) -> &'static str {
     Box::leak(s.into_boxed_str())
 }
 
-fn read_bounded(path: &Path, max: u64) -> Result<String, String> {
+/// The file at `path` as text, read only where it is a regular file inside
+/// the folder `dir` once every symbolic link is resolved, and of at most
+/// `max` bytes.
+fn read_bounded(dir: &Path, path: &Path, max: u64) -> Result<String, String> {
     let at = path.display();
+    let inside = std::fs::canonicalize(dir)
+        .and_then(|d| Ok((d, std::fs::canonicalize(path)?)))
+        .map_err(|e| format!("{at}: {e}"))?;
+    if !inside.1.starts_with(&inside.0) {
+        return Err(format!(
+            "{at}: a link to {}, outside the folder",
+            inside.1.display()
+        ));
+    }
     let meta = std::fs::metadata(path).map_err(|e| format!("{at}: {e}"))?;
     // a FIFO or a device would block the read (or never end): regular files only
     if !meta.is_file() {
@@ -100,7 +164,18 @@ fn read_bounded(path: &Path, max: u64) -> Result<String, String> {
     if size > max {
         return Err(format!("{at}: {size} bytes, more than the {max} read"));
     }
-    std::fs::read_to_string(path).map_err(|e| format!("{at}: {e}"))
+    // bounded by the bytes read too: a file that grows while it is read
+    // is cut at one byte over, and refused
+    let mut text = String::new();
+    std::fs::File::open(path)
+        .and_then(|f| {
+            std::io::Read::read_to_string(&mut std::io::Read::take(f, max + 1), &mut text)
+        })
+        .map_err(|e| format!("{at}: {e}"))?;
+    if text.len() as u64 > max {
+        return Err(format!("{at}: more than the {max} bytes read"));
+    }
+    Ok(text)
 }
 
 /// The families in `dir`'s `registry.json` that `compiled` lacks, each
@@ -108,7 +183,7 @@ fn read_bounded(path: &Path, max: u64) -> Result<String, String> {
 pub(crate) fn load(dir: &Path, compiled: &[Family]) -> (Vec<&'static Family>, Vec<String>) {
     let (mut out, mut problems) = (Vec::new(), Vec::new());
     let path = dir.join("registry.json");
-    let registry: Registry = match read_bounded(&path, MAX_REGISTRY_BYTES)
+    let registry: Registry = match read_bounded(dir, &path, MAX_REGISTRY_BYTES)
         .and_then(|t| serde_json::from_str(&t).map_err(|e| format!("{}: {e}", path.display())))
     {
         Ok(r) => r,
@@ -150,8 +225,14 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
         && e.name
             .chars()
             .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
-    if !ident || e.name == "exact" {
+    if !ident {
         return Err("its name is not a lower-case identifier".into());
+    }
+    if taken(&e.name) {
+        return Err("its name is taken (by a built-in model or a generated module)".into());
+    }
+    if e.title.trim().is_empty() || e.title.chars().count() > 200 || e.title.contains('\n') {
+        return Err("its title is not one line of 1 to 200 characters".into());
     }
     if e.kind != "conformal" {
         return Err(format!("kind {:?} is not one this solver knows", e.kind));
@@ -173,19 +254,19 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     }
     let particular_terms = gap_terms(&e.particular_terms)?;
     let path = dir.join(&e.tables);
-    let text = read_bounded(&path, MAX_TABLES_BYTES)?;
+    let text = read_bounded(dir, &path, MAX_TABLES_BYTES)?;
     let t: TablesFile =
         serde_json::from_str(&text).map_err(|err| format!("{}: {err}", path.display()))?;
     let members = tables(t).map_err(|why| format!("{}: {why}", path.display()))?;
     Ok(Box::leak(Box::new(Family {
         name: leak(e.name),
         kind: leak(e.kind),
-        title: leak(e.title),
-        gap: leak(e.gap),
-        particular: leak(e.particular),
-        source: leak(e.source),
+        title: leak(printable(e.title)),
+        gap: leak(printable(e.gap)),
+        particular: leak(printable(e.particular)),
+        source: leak(printable(e.source)),
         rho_min: e.rho_min,
-        rho_min_why: leak(e.rho_min_why),
+        rho_min_why: leak(printable(e.rho_min_why)),
         trace_start_a: e.trace_start_a,
         on_exact_gap: e.on_exact_gap,
         // whether it seeds the exact solver of its gap: decided by the

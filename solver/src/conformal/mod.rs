@@ -129,9 +129,31 @@ struct Registry {
 
 static REGISTRY: std::sync::OnceLock<Registry> = std::sync::OnceLock::new();
 
+/// The families this build was compiled with: the first of
+/// [`families`], in the same order, found without reading a file (a
+/// built-in model, `--help` and `--version` read none).
+pub(crate) fn compiled() -> &'static [Family] {
+    &crate::generated::registry::CONTOUR_FAMILIES
+}
+
+/// The registry's number of the family named `name`: a built-in one's
+/// without reading a file, else a loaded one's.
+fn position(name: &str) -> Option<usize> {
+    compiled()
+        .iter()
+        .position(|f| f.name == name)
+        .or_else(|| families().iter().position(|f| f.name == name))
+}
+
+/// The registry's family number `i` (a built-in one without reading a
+/// file).
+pub(crate) fn family_at(i: usize) -> Option<&'static Family> {
+    compiled().get(i).or_else(|| families().get(i).copied())
+}
+
 fn registry() -> &'static Registry {
     REGISTRY.get_or_init(|| {
-        let compiled = &crate::generated::registry::CONTOUR_FAMILIES;
+        let compiled = compiled();
         let mut families: Vec<&'static Family> = compiled.iter().collect();
         let mut problems = Vec::new();
         if let Some(dir) = std::env::var_os(load::ENV).filter(|d| !d.is_empty()) {
@@ -148,6 +170,12 @@ fn registry() -> &'static Registry {
 /// folder named by `THINJKR_FAMILIES` (`load`).
 pub fn families() -> &'static [&'static Family] {
     &registry().families
+}
+
+/// Why a family named by `THINJKR_FAMILIES` was left out, where this run
+/// loaded the families (`None` where it needed none: no file was read).
+pub(crate) fn problems_if_loaded() -> Option<&'static [String]> {
+    REGISTRY.get().map(|r| r.problems.as_slice())
 }
 
 /// Why a family named by `THINJKR_FAMILIES` was left out, one line each
@@ -180,6 +208,9 @@ struct Decoded {
 type DecodedSlots = Vec<[std::sync::OnceLock<Decoded>; poly::MAX_UNKNOWNS - 1]>;
 
 static DECODED: std::sync::OnceLock<DecodedSlots> = std::sync::OnceLock::new();
+/// The same for the families loaded at run time (numbered in the whole
+/// registry, the built-in ones' slots unused).
+static DECODED_LOADED: std::sync::OnceLock<DecodedSlots> = std::sync::OnceLock::new();
 
 /// A state of a `conformal:K` model.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -356,7 +387,7 @@ pub(crate) fn members() -> impl Iterator<Item = Conformal> {
 impl Conformal {
     /// Member K of the family named `family`, if it was generated.
     pub fn member(family: &str, terms: usize) -> Result<Conformal> {
-        match families().iter().position(|f| f.name == family) {
+        match position(family) {
             Some(i) => Conformal::in_family(i, terms),
             None => Err(Error::Usage(format!(
                 "no contour family {} (the registry has: {})",
@@ -372,9 +403,7 @@ impl Conformal {
 
     /// Member K of the registry's family number `i`.
     fn in_family(i: usize, terms: usize) -> Result<Conformal> {
-        let family: &'static Family = families()
-            .get(i)
-            .copied()
+        let family: &'static Family = family_at(i)
             .ok_or_else(|| Error::Usage(format!("no contour family number {i} in the registry")))?;
         let tables = family
             .members
@@ -385,9 +414,15 @@ impl Conformal {
                 value: terms as f64,
                 range: family.member_range().into(),
             })?;
-        let slots = DECODED.get_or_init(|| {
-            families()
-                .iter()
+        // the built-in families' slots are made without reading a file
+        let (cell, count): (&std::sync::OnceLock<DecodedSlots>, fn() -> usize) =
+            if i < compiled().len() {
+                (&DECODED, || compiled().len())
+            } else {
+                (&DECODED_LOADED, || families().len())
+            };
+        let slots = cell.get_or_init(|| {
+            (0..count())
                 .map(|_| [const { std::sync::OnceLock::new() }; poly::MAX_UNKNOWNS - 1])
                 .collect()
         });
@@ -428,10 +463,8 @@ impl Conformal {
     /// name is no contour family's.
     pub fn parse(name: &str) -> Option<std::result::Result<Conformal, String>> {
         let (family, k) = name.split_once(':')?;
-        let (i, f) = families()
-            .iter()
-            .enumerate()
-            .find(|(_, f)| f.name == family)?;
+        let i = position(family)?;
+        let f = family_at(i)?;
         Some(
             k.parse::<usize>()
                 .ok()

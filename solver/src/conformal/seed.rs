@@ -45,12 +45,13 @@ impl Seed for Conformal {
 }
 
 /// Each family's seed (its largest member, where it seeds the exact solver
-/// of its gap), in the registry's order, made once.
-fn seeds() -> &'static [Option<&'static dyn Seed>] {
-    static SEEDS: OnceLock<Vec<Option<&'static dyn Seed>>> = OnceLock::new();
-    SEEDS.get_or_init(|| {
-        families()
-            .iter()
+/// of its gap), in the registry's order, made once: the built-in families'
+/// (`compiled`, no file read), or every family's.
+fn seeds(built_in: bool) -> &'static [Option<&'static dyn Seed>] {
+    static BUILT_IN: OnceLock<Vec<Option<&'static dyn Seed>>> = OnceLock::new();
+    static ALL: OnceLock<Vec<Option<&'static dyn Seed>>> = OnceLock::new();
+    let make = |fams: Vec<&'static super::Family>| -> Vec<Option<&'static dyn Seed>> {
+        fams.into_iter()
             .enumerate()
             .map(|(i, f)| {
                 let largest = f.members.iter().map(|t| t.terms).max()?;
@@ -60,27 +61,38 @@ fn seeds() -> &'static [Option<&'static dyn Seed>] {
                 Some(&*Box::leak(Box::new(m)) as &'static dyn Seed)
             })
             .collect()
-    })
+    };
+    if built_in {
+        BUILT_IN.get_or_init(|| make(super::compiled().iter().collect()))
+    } else {
+        ALL.get_or_init(|| make(families().to_vec()))
+    }
+}
+
+/// The family on `gap` that seeds its exact solver and its seed: a
+/// built-in one first (no file read; a loaded family does not take a
+/// built-in one's place, `load`), else a loaded one.
+fn seeding(gap: &Gap) -> Option<(&'static super::Family, &'static dyn Seed)> {
+    let find = |fams: Vec<&'static super::Family>, seeds: &'static [Option<&'static dyn Seed>]| {
+        fams.into_iter()
+            .zip(seeds)
+            .find(|(f, s)| s.is_some() && f.unseeded_gap() == *gap)
+            .and_then(|(f, s)| Some((f, (*s)?)))
+    };
+    find(super::compiled().iter().collect(), seeds(true))
+        .or_else(|| find(families().to_vec(), seeds(false)))
 }
 
 /// The seed of the exact solver of `gap`: the largest member of the family
 /// on that gap that seeds it, if the registry has one.
 pub(crate) fn seed_of(gap: &Gap) -> Option<&'static dyn Seed> {
-    families()
-        .iter()
-        .zip(seeds())
-        .find(|(f, s)| s.is_some() && f.unseeded_gap() == *gap)
-        .and_then(|(_, s)| *s)
+    seeding(gap).map(|(_, s)| s)
 }
 
 /// The family whose largest member seeds the exact solver of `gap`.
 #[cfg(feature = "figures")]
 pub(crate) fn seeding_family(gap: &Gap) -> Option<&'static Family> {
-    families()
-        .iter()
-        .zip(seeds())
-        .find(|(f, s)| s.is_some() && f.unseeded_gap() == *gap)
-        .map(|(f, _)| *f)
+    seeding(gap).map(|(f, _)| f)
 }
 
 impl Gap {
