@@ -53,7 +53,17 @@ impl Cutoff {
     /// range (`physical` warns from h/a = 0.2).
     pub(crate) const DEFAULT_THINNESS: f64 = 0.1;
 
-    /// The cutoff of coatings of thinness h/L (positive, finite).
+    /// The thinnest coatings whose verdicts are computed, h/L: an atom's
+    /// size against L of a few tens of micrometres, far below any coating
+    /// (2) describes; thinner, the cutoff's wavelength loses its digits
+    /// against the contour's.
+    pub(crate) const THINNEST: f64 = 1e-6;
+    /// The thickest, h/L: (2) is the limit h/L → 0, and coatings far
+    /// thicker than the contact have nothing of it left (`layer`).
+    pub(crate) const THICKEST: f64 = 1e3;
+
+    /// The cutoff of coatings of thinness h/L (positive, finite, and in
+    /// [`Cutoff::THINNEST`, `Cutoff::THICKEST`]).
     pub fn for_thinness(thinness: f64) -> Result<Cutoff> {
         check_range(
             "thinness",
@@ -61,6 +71,18 @@ impl Cutoff {
             thinness > 0.0 && thinness.is_finite(),
             "(0, ∞)",
         )?;
+        if !(Cutoff::THINNEST..=Cutoff::THICKEST).contains(&thinness) {
+            return Err(crate::error::Error::Unsupported {
+                name: "thinness",
+                value: thinness,
+                supported: format!(
+                    "[{}, {}] (the stability verdicts are computed there)",
+                    Cutoff::THINNEST,
+                    Cutoff::THICKEST
+                )
+                .into(),
+            });
+        }
         Ok(Cutoff::of(thinness))
     }
 

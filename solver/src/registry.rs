@@ -144,6 +144,22 @@ pub(crate) fn names() -> String {
 /// no exact counterpart (`extra` then says so, or adds a word).
 #[cfg(feature = "cli")]
 pub(crate) fn help(with_exact: bool, extra: &str) -> String {
+    help_of(with_exact, true, extra)
+}
+
+/// The help text of `batch --model`: the models whose states are rows
+/// (neither `exact` nor a slender model).
+#[cfg(feature = "cli")]
+pub(crate) fn batch_help() -> String {
+    help_of(
+        false,
+        false,
+        " (a contour family's bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty; exact and slender have no batch)",
+    )
+}
+
+#[cfg(feature = "cli")]
+fn help_of(with_exact: bool, with_slender: bool, extra: &str) -> String {
     let ellipse: Vec<&str> = ModelId::ALL.iter().map(|m| m.name()).collect();
     let mut parts = vec![format!(
         "Model: {} (the paper's, default), {}",
@@ -164,7 +180,7 @@ pub(crate) fn help(with_exact: bool, extra: &str) -> String {
             f.member_range()
         ));
     }
-    for m in crate::slender::Slender::all() {
+    for m in crate::slender::Slender::all().filter(|_| with_slender) {
         parts.push(format!("{} (the limit rho -> 0)", m.name()));
     }
     if with_exact {
@@ -553,7 +569,17 @@ impl Choice {
         .map_err(in_si)?;
         // a contour state's stability judged with these coatings' thinness
         // (the thicker one's h over L)
-        let cutoff = crate::cutoff::Cutoff::for_thinness(cyl.h1.max(cyl.h2) / sc.length)?;
+        let cutoff = crate::cutoff::Cutoff::for_thinness(cyl.h1.max(cyl.h2) / sc.length)
+            .map_err(|e| match e {
+                crate::Error::Unsupported {
+                    value, supported, ..
+                } => crate::Error::Unsupported {
+                    name: "h/L (the thicker coating's h over the length L of (17), from h1, h2, g1, g2, r1, r2 and the work of adhesion)",
+                    value,
+                    supported,
+                },
+                other => other,
+            })?;
         let state = match state {
             crate::report::AnyState::Exact(st) => {
                 crate::report::AnyState::Exact(Box::new((*st).judged(cutoff)))

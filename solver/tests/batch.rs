@@ -206,13 +206,38 @@ fn conformal_batch_rows_are_its_states() {
         assert_eq!((f[9], f[10]), ("", ""), "{row}");
         assert_eq!(f[11].parse::<f64>().unwrap(), st.bc_defect, "{row}");
     }
-    let out = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
-        .args(["batch", "--model", "exact"])
-        .stdin(Stdio::null())
+    // the models batch does not take are usage errors (status 2, as an
+    // unknown model is), refused before a line is read, and its help does
+    // not list them (issue 72)
+    for (model, word) in [
+        ("exact", "exact solve"),
+        ("slender", "per state"),
+        ("nosuch", "unknown model"),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+            .args(["batch", "--model", model])
+            .stdin(Stdio::null())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{model}: {err}");
+        assert!(
+            err.contains(word) && out.stdout.is_empty(),
+            "{model}: {err}"
+        );
+    }
+    let help = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(["batch", "--help"])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("exact solve"));
+    let help = String::from_utf8_lossy(&help.stdout);
+    let models = help.lines().find(|l| l.contains("--model")).unwrap();
+    assert!(
+        models.contains("conformal:K")
+            && !models.contains("slender (")
+            && !models.contains("or exact"),
+        "{models}"
+    );
 }
 
 /// Issue 31: a doubtful state in a batch has why in the column `warning`

@@ -475,3 +475,74 @@ fn answers_come_in_three_lines_and_explain_gives_the_rest() {
         }
     }
 }
+
+/// Issue 72: a thinness whose cutoff the verdicts cannot compute is
+/// refused, naming it and the supported range: --thinness 1e-20 overflowed
+/// the count of the contour's short modes (a panic in a debug build, an
+/// inverted shape verdict in release), 1e300 printed a 300-digit
+/// wavelength, and `physical`'s moduli reach the same h/L.
+#[test]
+fn a_thinness_beyond_the_verdicts_is_refused_naming_it() {
+    for t in ["1e-20", "1e300"] {
+        let (ok, out, err) = thinjkr(&["exact", "zero-force", "--rho", "0.8", "--thinness", t]);
+        assert!(!ok && out.is_empty(), "{t}: {out}");
+        assert!(
+            err.contains("thinness") && err.contains("supported range [0.000001, 1000]"),
+            "{t}: {err}"
+        );
+        assert!(
+            !err.contains("panicked") && err.lines().count() == 1,
+            "{t}: {err}"
+        );
+    }
+    let (ok, _, err) = thinjkr(&[
+        "physical",
+        "--r1",
+        "0.01",
+        "--r2",
+        "0.01",
+        "--theta-deg",
+        "60",
+        "--h1",
+        "1e-4",
+        "--h2",
+        "1e-4",
+        "--g1",
+        "1e300",
+        "--g2",
+        "1e-300",
+        "--work-of-adhesion",
+        "0.05",
+    ]);
+    assert!(
+        !ok && err.contains("h/L") && err.contains("[0.000001, 1000]"),
+        "{err}"
+    );
+    // inside the range the verdicts stand, down to its thinnest end
+    let (ok, out, err) = thinjkr(&[
+        "exact",
+        "zero-force",
+        "--rho",
+        "0.8",
+        "--thinness",
+        "1e-6",
+        "--explain",
+    ]);
+    assert!(ok, "{err}");
+    assert!(out.contains("h/L = 1e-6"), "{out}");
+}
+
+/// Issue 72: a force that rounds to zero in six decimals is printed with
+/// six significant digits: the pull-off at rho = 1e-8 (about -1.2e-7 in
+/// its JSON) is not "force = 0.000000".
+#[test]
+fn a_small_force_is_printed_with_its_digits() {
+    let (ok, json, err) = thinjkr(&["pull-off", "--rho", "1e-8", "--json"]);
+    assert!(ok, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let f = doc["state"]["force_bar"].as_f64().unwrap();
+    assert!(f < 0.0 && f.abs() < 1e-6, "{f}");
+    let (ok, out, err) = thinjkr(&["pull-off", "--rho", "1e-8"]);
+    assert!(ok, "{err}");
+    assert!(out.contains(&format!("force = {f:.5e},")), "{f}: {out}");
+}

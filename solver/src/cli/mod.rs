@@ -22,6 +22,22 @@ fn parse_model(s: &str) -> Result<ModelChoice, String> {
     crate::registry::parse(s)
 }
 
+/// `--model` of `batch`: the models whose states are rows (not `exact`,
+/// seconds a state, nor a slender model, whose contact has no size a
+/// row could carry); another is a usage error, as an unknown name is.
+fn parse_batch_model(s: &str) -> Result<ModelChoice, String> {
+    match crate::registry::parse(s)? {
+        ModelChoice::Exact => Err(
+            "model exact has no batch (an exact state takes up to seconds: use `thinjkr exact solve` per state)"
+                .into(),
+        ),
+        ModelChoice::Slender(_) => Err(format!(
+            "model {s} has no batch rows (a row carries a and s, and a slender contact has no finite length: use `thinjkr solve --model {s}` per state)"
+        )),
+        other => Ok(other),
+    }
+}
+
 use crate::fold::FoldCondition;
 /// A model of the ellipse, a member of a contour family, or the exact
 /// solution of (2)-(3) (`crate::registry`).
@@ -182,7 +198,7 @@ enum Command {
         after_help = "Example:\n  printf 'rho,control,value\\n0.8,delta,2\\n0.5,force,-1\\n' | thinjkr batch --model max > out.csv\n\nOutput columns: line,rho,control,value,a,b,s,delta,force,xi,p0,bc_error,error,warning. A line that cannot be read or solved gets an empty state and the error (naming the line) in the column error; the other lines are still written. A doubtful state (a contour member's closure missing (3)2 by more than 0.1, or b > a; a model of the ellipse below the paper's range rho >= 0.8 or beyond its contact-size fold) has why in the column warning. A progress count is shown on stderr when it is a terminal."
     )]
     Batch {
-        #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(false, " (a contour family's bc_error column is max |dp/dnu - 1| on the contour, xi and p0 are empty)"))]
+        #[arg(long, default_value = "max", value_parser = parse_batch_model, help = crate::registry::batch_help())]
         model: ModelChoice,
     },
     /// The models the solver has, one line each.
@@ -654,13 +670,6 @@ fn batch_command(model: ModelChoice) -> crate::Result<u8> {
     output::check_input_open()?;
     use crate::batch::{csv_row_values, decode_line, parse_line, solve_all, Row, CSV_HEADER};
     use std::io::{BufRead, IsTerminal};
-    if matches!(model, ModelChoice::Exact) {
-        return Err(crate::Error::Unavailable {
-            model: "exact",
-            what: "batch".into(),
-            why: "an exact state takes up to seconds: use `thinjkr exact solve` per state",
-        });
-    }
     let stdin = std::io::stdin();
     outln!("{CSV_HEADER}");
     let bar = std::io::stderr().is_terminal().then(|| {

@@ -215,13 +215,17 @@ impl Drop for Spinner {
     }
 }
 
-/// A number for a person: six decimals (a round-off residue such as the
-/// force 1e-15 of a zero-force state reads 0.000000, without a sign), six
-/// significant digits in scientific notation from 1e7 up (no
-/// `100000000000000016384.000000`). `--json` carries every digit.
+/// A number for a person: six decimals (a round-off residue below 1e-10,
+/// such as the force 1e-15 of a zero-force state, reads 0.000000, without a
+/// sign), six significant digits in scientific notation from 1e7 up (no
+/// `100000000000000016384.000000`) and below 1e-3 (a pull-off force of
+/// -1.2e-7 at rho = 1e-8 is not 0.000000). `--json` carries every digit.
 pub(crate) fn num(x: f64) -> String {
+    /// Below this a quantity of the units (17), of order one, is zero to
+    /// the solvers' round-off.
+    const ROUND_OFF: f64 = 1e-10;
     let a = x.abs();
-    let s = if a >= 1e7 {
+    let s = if a >= 1e7 || (ROUND_OFF..1e-3).contains(&a) {
         format!("{x:.5e}")
     } else {
         format!("{x:.6}")
@@ -239,7 +243,10 @@ mod tests {
         assert_eq!(super::num(-1e-12), "0.000000");
         assert_eq!(super::num(-0.0), "0.000000");
         assert_eq!(super::num(1.76806e-15), "0.000000");
-        assert_eq!(super::num(-0.0000016), "-0.000002");
+        assert_eq!(super::num(-0.0000016), "-1.60000e-6");
+        assert_eq!(super::num(-1.193028736578389e-7), "-1.19303e-7");
+        assert_eq!(super::num(0.000999), "9.99000e-4");
+        assert_eq!(super::num(0.001), "0.001000");
         assert_eq!(super::num(1e20), "1.00000e20");
         assert_eq!(super::num(2.5), "2.500000");
         assert_eq!(super::num(-4.1976054), "-4.197605");

@@ -243,8 +243,13 @@ pub(crate) fn without_short_waves(contour: &Contour, cutoff: Cutoff) -> Contour 
     let perimeter: f64 = (0..POINTS)
         .map(|k| (z[(k + 1) % POINTS] - z[k]).norm())
         .sum();
-    let first_short = (perimeter / cutoff.wavelength).floor() as usize + 1;
     let modes = contour.b.len();
+    // (beyond the modes held, none is short: capped before the cast, so a
+    // cutoff far below the contour's scale cannot overflow it)
+    let first_short = (perimeter / cutoff.wavelength)
+        .floor()
+        .min(2.0 * modes as f64 + 2.0) as usize
+        + 1;
     let ellipse = Contour::ellipse(contour.a_bar(), contour.b_bar(), modes);
     let ellipse = if contour.c.is_empty() {
         ellipse
@@ -300,7 +305,9 @@ fn short_waves_of(z: &[Complex<f64>], cutoff: Cutoff) -> ShortWaves {
     // modes up to a sixteenth of the points: beyond, the chords' rule
     // no longer reads them
     let n_max = POINTS / 16;
-    let first_short = (perimeter / cutoff.wavelength).floor() as usize + 1;
+    // (beyond the modes read, none is short: capped before the cast, so a
+    // cutoff far below the contour's scale cannot overflow it)
+    let first_short = (perimeter / cutoff.wavelength).floor().min(n_max as f64) as usize + 1;
     let modes: Vec<(usize, f64)> = (2..=n_max)
         .step_by(2)
         .map(|n| (n, coefficient(n)))
