@@ -221,7 +221,15 @@ def test_state_reads_and_prints():
     st = thinjkr.solve(0.8, delta=2.0)
     assert close(st.s, st.b_bar / st.a_bar)
     text = repr(st)
-    assert text.startswith("State(model='max', rho=0.8, a_bar=3.21") and "xi=" in text
+    # the answer first, then at most two lines on how far to trust it
+    # (issue 69); every field is an attribute and in to_dict()
+    assert text.startswith("State(model='max', rho=0.8, a_bar=3.21") and "force_bar=8.20631)" in text
+    assert len(text.splitlines()) <= 3 and "bc_error=2.7e-03" in text.splitlines()[1]
+    assert "xi" in st.to_dict() and "xi=" not in text
+    for other in [thinjkr.exact.pull_off(0.8), thinjkr.solve(0.8, force=0.0, model="conformal:8"),
+                  thinjkr.pull_off(1.0, model="layer"), thinjkr.solve(0.3, force=0.0)]:
+        lines = repr(other).splitlines()
+        assert 1 <= len(lines) <= 3 and lines[0].startswith(type(other).__name__ + "(model="), lines
     assert st.to_dict()["delta_bar"] == 2.0
     with pytest.raises(AttributeError):
         st.nosuch

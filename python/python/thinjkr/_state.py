@@ -15,6 +15,10 @@ import numpy as _np
 
 # the order a person reads a state in
 _FIRST = ("model", "rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar")
+# how a state is checked, by model: the boundary condition's error (the
+# ellipse's models, exact), the closure's defect (conformal:K), the Legendre
+# tail (layer)
+_CHECKS = ("bc_error", "bc_defect", "tail")
 
 
 def _plain(v: Any) -> Any:
@@ -126,18 +130,28 @@ class State:
         return (type(self), (self._fields,))
 
     def __repr__(self) -> str:
-        parts = []
-        for k in _FIRST + tuple(k for k in self._fields if k not in _FIRST):
-            if k not in self._fields:
-                continue
-            v = self._fields[k]
-            if isinstance(v, float):
-                parts.append(f"{k}={v:.6g}")
-            elif isinstance(v, (list, dict, State, _np.ndarray)):
-                continue  # contours, arrays and coefficient lists: see to_dict()
-            else:
-                parts.append(f"{k}={v!r}")
-        return f"{type(self).__name__}({', '.join(parts)})"
+        """The answer on the first line (the model, rho, the size, the
+        approach and the force, and the control of a pull-off); on the next
+        at most two, how far to trust it: the check, the route and the
+        stability verdicts, then its first warning. Every field is an
+        attribute, and ``to_dict()`` has them all."""
+        f = self._fields
+
+        def shown(k):
+            v = f[k]
+            return f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v!r}"
+
+        head = [shown(k) for k in _FIRST + ("control",) if k in f]
+        lines = [f"{type(self).__name__}({', '.join(head)})"]
+        trust = [f"{k}={f[k]:.1e}" for k in _CHECKS if isinstance(f.get(k), float)]
+        trust += [shown(k) for k in ("route", "stable_load", "stable_displacement") if f.get(k) is not None]
+        if trust:
+            lines.append("  " + ", ".join(trust))
+        warnings = [w for w in f.get("warnings") or [] if isinstance(w, str)]
+        if warnings:
+            more = f" ({len(warnings) - 1} more: .warnings)" if len(warnings) > 1 else ""
+            lines.append(f"  warning: {warnings[0]}{more}")
+        return "\n".join(lines)
 
 
 # the arrays of a States, in the order its dict and DataFrame give them
