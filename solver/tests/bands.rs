@@ -150,7 +150,7 @@ fn band_map_input_is_a_typed_error() {
     assert_eq!(name(bands(0.8, 2.0, 40.0)), "to");
 }
 
-/// The band table and its notes in docs/exact.md are what
+/// The band table and its notes in docs/exact-record.md are what
 /// `exact::bands::markdown` renders from the committed maps
 /// (docs/data/exact_bands.jsonl) and the exact pull-offs
 /// (derive/data/exact_reference.json).
@@ -173,14 +173,15 @@ fn the_band_table_in_the_docs_is_the_committed_maps() {
         .map(|e| (e.rho, e.a_bar))
         .collect();
     let table = thinjkr::accuracy::band_markdown(&maps, &pull_offs);
-    let doc = std::fs::read_to_string(root.join("docs/exact.md")).expect("docs/exact.md exists");
+    let doc = std::fs::read_to_string(root.join("docs/exact-record.md"))
+        .expect("docs/exact-record.md exists");
     assert!(
         table.lines().filter(|l| !l.is_empty()).count() > 30,
         "a table of every band and its notes:\n{table}"
     );
     assert!(
         doc.contains(&table),
-        "docs/exact.md's band table is stale; it should read:\n{table}"
+        "docs/exact-record.md's band table is stale; it should read:\n{table}"
     );
 }
 

@@ -950,8 +950,11 @@ fn the_unloading_path_reaches_the_pull_off_at_rho_0_8() {
 /// above it s < 1.
 #[test]
 fn the_small_contacts_table_of_the_docs_is_the_solvers() {
-    let doc =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md")).unwrap();
+    let doc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../docs/exact-record.md"
+    ))
+    .unwrap();
     let from = doc
         .find("**Small contacts are longer across (s > 1).**")
         .expect("the section");

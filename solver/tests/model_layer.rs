@@ -265,7 +265,7 @@ fn defaults_at(angles: &[f64]) {
         nu1: 0.5,
         nu2: 0.5,
     };
-    // docs/exact.md's table of these angles: h/L and the answer's critical
+    // docs/exact-record.md's table of these angles: h/L and the answer's critical
     // thinness under load ("stable" where a conformal:8 state is)
     let (thinness, critical, unresolved, coatings) = (
         docs_tables::row("| θ | 16° |", "| h/L |"),
