@@ -503,3 +503,20 @@ fn the_end_of_displacement_control_at_rho_one_is_the_limit_of_the_folds() {
         }
     }
 }
+
+/// Issue 72: a contour member's "no state" speaks of the ρ asked for. At
+/// ρ = 0.8, F̄ = −100 (below every pull-off) and F̄ = 1e308 had answered
+/// "no adhesive circular state at that control for rho = 1".
+#[test]
+fn no_state_names_the_rho_asked_for() {
+    let m = thinjkr::conformal::Conformal::member("conformal", 8).unwrap();
+    for f in [-100.0, 1e308] {
+        let e = m.solve(0.8, thinjkr::Hold::Force(f)).unwrap_err();
+        let text = e.to_string();
+        assert_eq!(e.kind(), "no_state", "{text}");
+        assert!(
+            text.contains("for rho = 0.8") && !text.contains("for rho = 1"),
+            "{text}"
+        );
+    }
+}

@@ -941,7 +941,7 @@ impl Conformal {
             a *= 0.9;
         }
         Err(Error::NoState(format!(
-            "{} has no adhesive circular state at that control for rho = 1",
+            "{} has no circular state at that control for rho = 1 (its circles with a from 0.2 to 16 scanned)",
             self.name()
         )))
     }
@@ -1015,7 +1015,16 @@ impl Conformal {
             Hold::Force(f) => check_range("force", f, true, "finite").map(|_| ())?,
             Hold::Size(a) => check_range("a", a, a > 0.0, "(0, inf)").map(|_| ())?,
         }
-        let (x1, j1) = self.circle(control)?;
+        // a state at ρ < 1 is continued from the circle's: where the circle
+        // has none, the message speaks of the ρ asked for
+        let (x1, j1) = self.circle(control).map_err(|e| match e {
+            Error::NoState(_) if rho != 1.0 => Error::NoState(format!(
+                "{} has no state at {control} for rho = {}: its states are continued in rho from the circle (rho = 1), and its circles with a from 0.2 to 16 have none at that control",
+                self.name(),
+                crate::error::short(rho)
+            )),
+            other => other,
+        })?;
         let j1 = j1.unwrap_or_else(|| self.controlled(&x1, 1.0, control).1);
         let a_circle = x1[0];
         let (x, folds_crossed) = match self.continue_in_rho(x1, j1, rho, control) {
