@@ -544,11 +544,21 @@ pub fn derive_family(family: &Family) -> Result<Vec<ConformalDerivation>, String
 /// Beside it, `registry.json`: the same entries as data, which the solver
 /// reads at run time to load the families it was not built with
 /// (`THINJKR_FAMILIES`).
-pub fn registry_outputs(families: &[Family], exact_gap: &[bool]) -> Result<Vec<Output>, String> {
+///
+/// Each entry carries the digest of its family's `tables.json`
+/// (`tables_digests`, in the families' order), and the registry the digest
+/// of its entries, so that the solver refuses a file edited by hand
+/// ([`digest`]).
+pub fn registry_outputs(
+    families: &[Family],
+    exact_gap: &[bool],
+    tables_digests: &[String],
+) -> Result<Vec<Output>, String> {
     let entries: Vec<serde_json::Value> = families
         .iter()
         .zip(exact_gap)
-        .map(|(f, &on_exact_gap)| {
+        .zip(tables_digests)
+        .map(|((f, &on_exact_gap), tables_digest)| {
             Ok(serde_json::json!({
                 "name": f.name,
                 "kind": f.kind,
@@ -563,11 +573,21 @@ pub fn registry_outputs(families: &[Family], exact_gap: &[bool]) -> Result<Vec<O
                 "on_exact_gap": on_exact_gap,
                 "seeds_exact": f.seeds_exact,
                 "tables": format!("{}/tables.json", f.name),
+                "tables_digest": tables_digest,
             }))
         })
         .collect::<Result<_, String>>()?;
+    // the entries' digest, over their compact JSON (as the solver reads it
+    // back from this file)
+    let entries = serde_json::Value::Array(entries);
+    let entries_digest = digest(
+        serde_json::to_string(&entries)
+            .map_err(|e| e.to_string())?
+            .as_bytes(),
+    );
     let json = serde_json::to_string_pretty(&serde_json::json!({
         "generated": "by `cargo run -p thinjkr-derive -- generate` from derive/families/*.toml; do not edit",
+        "digest": entries_digest,
         "families": entries,
     }))
     .map_err(|e| e.to_string())?;
@@ -578,6 +598,18 @@ pub fn registry_outputs(families: &[Family], exact_gap: &[bool]) -> Result<Vec<O
             contents: json + "\n",
         },
     ])
+}
+
+/// The digest of a generated file's bytes that the solver checks before it
+/// loads the file: 64-bit FNV-1a in 16 hexadecimal digits. It catches a file
+/// edited by hand or damaged (it is not a defence against a forger).
+pub fn digest(bytes: &[u8]) -> String {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    format!("{h:016x}")
 }
 
 fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, String> {
@@ -809,4 +841,16 @@ fn accuracy_prose(all: &[ConformalDerivation], outputs: &[Output]) -> String {
         unrolled.join(", ")
     ));
     o
+}
+
+#[cfg(test)]
+mod tests {
+    /// The digest is FNV-1a 64: the reference implementation's vectors
+    /// (Fowler, Noll and Vo's test suite).
+    #[test]
+    fn the_digest_is_fnv_1a_64() {
+        assert_eq!(super::digest(b""), "cbf29ce484222325");
+        assert_eq!(super::digest(b"a"), "af63dc4c8601ec8c");
+        assert_eq!(super::digest(b"foobar"), "85944171f73967e8");
+    }
 }

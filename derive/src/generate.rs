@@ -77,9 +77,15 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
         .collect();
     out.extend(crate::codegen::outputs(&all, &modules)?);
     let mut exact_gap = Vec::new();
+    let mut tables_digests = Vec::new();
     for f in &families {
         let members = crate::codegen_conformal::derive_family(f)?;
         let generated = crate::codegen_conformal::outputs(&members)?;
+        let tables = generated
+            .iter()
+            .find(|o| o.path.ends_with("tables.json"))
+            .ok_or_else(|| format!("{}: no tables.json was generated", f.name))?;
+        tables_digests.push(crate::codegen_conformal::digest(tables.contents.as_bytes()));
         out[0]
             .contents
             .push_str(&crate::codegen_conformal::derivation_section(f, &members));
@@ -96,7 +102,9 @@ pub fn outputs_in(root: &Path) -> Result<Vec<Output>, String> {
         exact_gap.push(crate::family::same_gap(&f.gap, crate::family::EXACT_GAP));
     }
     out.extend(crate::codegen_conformal::registry_outputs(
-        &families, &exact_gap,
+        &families,
+        &exact_gap,
+        &tables_digests,
     )?);
     // the slender models (issue 32, milestone (c)) and their registry
     out.push(Output {

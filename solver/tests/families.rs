@@ -35,7 +35,38 @@ fn folder(tag: &str, name: &str, tables: &str) -> PathBuf {
         }]
     });
     std::fs::write(dir.join("registry.json"), registry.to_string()).unwrap();
+    seal(&dir);
     dir
+}
+
+/// 64-bit FNV-1a in 16 hexadecimal digits, written here from its
+/// definition (the digest `generate` writes and the loader checks).
+fn fnv(bytes: &[u8]) -> String {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    format!("{h:016x}")
+}
+
+/// Write the digests of the folder's files into its registry as `generate`
+/// does: each family's `tables_digest` of its tables' bytes, then the
+/// registry's `digest` of its entries as compact JSON. A case that tests
+/// a check behind the digests seals its files, as a generator that wrote
+/// them wrong would.
+fn seal(dir: &Path) {
+    let path = dir.join("registry.json");
+    let mut registry: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    for entry in registry["families"].as_array_mut().unwrap() {
+        let tables = dir.join(entry["tables"].as_str().unwrap());
+        if let Ok(bytes) = std::fs::read(&tables) {
+            entry["tables_digest"] = fnv(&bytes).into();
+        }
+    }
+    registry["digest"] = fnv(registry["families"].to_string().as_bytes()).into();
+    std::fs::write(&path, registry.to_string()).unwrap();
 }
 
 fn builtin_tables() -> String {
@@ -179,6 +210,7 @@ fn a_family_with_a_wrong_gap_is_left_out_with_its_reason() {
         let bad = registry.replacen(&good.replace(' ', ""), &terms.replace(' ', ""), 1);
         assert_ne!(bad, registry, "{tag}: the case changes the file");
         std::fs::write(&path, bad).unwrap();
+        seal(&dir);
         let (ok, out, err) = thinjkr(&dir, &["models"]);
         assert!(ok, "{tag}: the built-in models still list: {err}");
         assert!(!out.contains("badgap:"), "{tag}: {out}");
@@ -254,6 +286,7 @@ fn a_loaded_family_is_held_to_the_generators_rules() {
         good.replacen("\"kind\"", "\"seed_exact\":true,\"kind\"", 1),
     )
     .unwrap();
+    seal(&dir);
     let (_, out, err) = thinjkr(&dir, &["models"]);
     assert!(!out.contains("keyed:"), "{out}");
     assert!(
@@ -266,6 +299,7 @@ fn a_loaded_family_is_held_to_the_generators_rules() {
         tables.replacen("\"terms\"", "\"weight\": 2, \"terms\"", 1),
     )
     .unwrap();
+    seal(&dir);
     let (_, out, err) = thinjkr(&dir, &["models"]);
     assert!(!out.contains("keyed:"), "{out}");
     assert!(
@@ -293,9 +327,63 @@ fn a_loaded_family_is_held_to_the_generators_rules() {
         1,
     );
     std::fs::write(&path, text).unwrap();
+    seal(&dir);
     let (ok, out, err) = thinjkr(&dir, &["models"]);
     assert!(ok && err.is_empty(), "{err}");
     assert!(!out.contains('\u{1b}') && !out.contains('\u{7}'), "{out:?}");
     assert!(out.contains("red \\u{1b}[31mtitle\\u{7}"), "{out}");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Issue 72: a file edited by hand without regenerating is refused by the
+/// digest `generate` wrote, whatever it changed: a member's rows cut from
+/// 38 to 20 (it answered F̄ = −4.205189 for −4.207876, with no warning), a
+/// coefficient of the tables changed, the registry's rho_min raised. The
+/// built-in models answer as before.
+#[test]
+fn a_file_edited_by_hand_is_refused_by_its_digest() {
+    let tables = builtin_tables();
+    for (tag, edit_tables, edit_registry) in [
+        (
+            "rows",
+            Some(("\"potential_rows\": 38,", "\"potential_rows\": 20,")),
+            None,
+        ),
+        (
+            "coefficient",
+            Some(("[2, -1.5707963267948966]", "[2, -1.5865042900628455]")),
+            None,
+        ),
+        (
+            "rho_min",
+            None,
+            Some(("\"rho_min\":0.3", "\"rho_min\":0.5")),
+        ),
+    ] {
+        let dir = folder(&format!("digest-{tag}"), "edited", &tables);
+        if let Some((from, to)) = edit_tables {
+            let edited = tables.replacen(from, to, 1);
+            assert_ne!(edited, tables, "{tag}: the case changes the file");
+            std::fs::write(dir.join("edited/tables.json"), edited).unwrap();
+        }
+        if let Some((from, to)) = edit_registry {
+            let path = dir.join("registry.json");
+            let text = std::fs::read_to_string(&path).unwrap();
+            let edited = text.replacen(from, to, 1);
+            assert_ne!(edited, text, "{tag}: the case changes the file");
+            std::fs::write(&path, edited).unwrap();
+        }
+        let (ok, out, err) = thinjkr(&dir, &["models"]);
+        assert!(
+            ok && out.contains("conformal:8") && !out.contains("edited:"),
+            "{tag}: {out}"
+        );
+        assert!(err.contains("does not match the digest"), "{tag}: {err}");
+        let (ok, _, err) = thinjkr(&dir, &["pull-off", "--rho", "0.8", "--model", "edited:8"]);
+        assert!(
+            !ok && err.contains("does not match the digest"),
+            "{tag}: {err}"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }

@@ -7,7 +7,9 @@
 //! library and the Python package alike). Its members use the table
 //! evaluator; the built-in families keep their compiled tables.
 //!
-//! A file is checked before it is used: it must be a regular file inside
+//! A file is checked before it is used: it must match the digest
+//! `generate` wrote of it (the registry's entries, each family's tables), be
+//! a regular file inside
 //! the folder once its links are resolved, with no key the generator does
 //! not write; its size is bounded before it is read, a family may not take
 //! a built-in model's name, its texts are printed with their control
@@ -43,10 +45,29 @@ const MAX_TABLES_BYTES: u64 = 256 << 20;
 #[serde(deny_unknown_fields)]
 struct Registry {
     families: Vec<Entry>,
+    /// The digest of `families` as compact JSON ([`digest`], checked on
+    /// the text before the entries are read).
+    #[serde(rename = "digest")]
+    _digest: String,
     /// The generator's note (not used).
     #[serde(default, rename = "generated")]
     _generated: Option<String>,
 }
+
+/// The digest `generate` writes of a file's bytes (derive's
+/// `codegen_conformal::digest`): 64-bit FNV-1a in 16 hexadecimal digits. A
+/// file whose digest differs was edited by hand or damaged, and is refused.
+fn digest(bytes: &[u8]) -> String {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    format!("{h:016x}")
+}
+
+/// What a file that does not match its digest is told.
+const EDITED: &str = "does not match the digest `generate` wrote (edited by hand or damaged: regenerate it with `cargo run -p thinjkr-derive -- generate`)";
 
 /// The names a family may not take: the built-in models', and those of
 /// the generated modules (as `generate` refuses them).
@@ -106,6 +127,8 @@ struct Entry {
     seeds_exact: bool,
     particular_terms: Vec<[i64; 6]>,
     tables: String,
+    /// The digest of the bytes of `tables`.
+    tables_digest: String,
 }
 
 #[derive(Deserialize)]
@@ -183,9 +206,18 @@ fn read_bounded(dir: &Path, path: &Path, max: u64) -> Result<String, String> {
 pub(crate) fn load(dir: &Path, compiled: &[Family]) -> (Vec<&'static Family>, Vec<String>) {
     let (mut out, mut problems) = (Vec::new(), Vec::new());
     let path = dir.join("registry.json");
-    let registry: Registry = match read_bounded(dir, &path, MAX_REGISTRY_BYTES)
-        .and_then(|t| serde_json::from_str(&t).map_err(|e| format!("{}: {e}", path.display())))
-    {
+    let registry: Registry = match read_bounded(dir, &path, MAX_REGISTRY_BYTES).and_then(|t| {
+        let at = path.display();
+        let value: serde_json::Value =
+            serde_json::from_str(&t).map_err(|e| format!("{at}: {e}"))?;
+        // the entries' digest over their compact JSON, as written
+        let entries =
+            serde_json::to_string(&value["families"]).map_err(|e| format!("{at}: {e}"))?;
+        if value["digest"].as_str() != Some(digest(entries.as_bytes()).as_str()) {
+            return Err(format!("{at}: its families {EDITED}"));
+        }
+        serde_json::from_value(value).map_err(|e| format!("{at}: {e}"))
+    }) {
         Ok(r) => r,
         Err(why) => {
             problems.push(format!("{ENV}: {why}"));
@@ -255,6 +287,9 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     let particular_terms = gap_terms(&e.particular_terms)?;
     let path = dir.join(&e.tables);
     let text = read_bounded(dir, &path, MAX_TABLES_BYTES)?;
+    if digest(text.as_bytes()) != e.tables_digest {
+        return Err(format!("{}: {EDITED}", path.display()));
+    }
     let t: TablesFile =
         serde_json::from_str(&text).map_err(|err| format!("{}: {err}", path.display()))?;
     let members = tables(t).map_err(|why| format!("{}: {why}", path.display()))?;
@@ -415,4 +450,114 @@ fn tables(t: TablesFile) -> Result<&'static [Tables], String> {
         })
         .collect();
     Ok(Box::leak(members.into_boxed_slice()))
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+    use std::path::{Path, PathBuf};
+
+    /// The digest is FNV-1a 64, as `generate` writes it: the reference
+    /// implementation's vectors (Fowler, Noll and Vo's test suite).
+    #[test]
+    fn the_digest_is_fnv_1a_64() {
+        assert_eq!(super::digest(b""), "cbf29ce484222325");
+        assert_eq!(super::digest(b"a"), "af63dc4c8601ec8c");
+        assert_eq!(super::digest(b"foobar"), "85944171f73967e8");
+    }
+
+    fn generated(name: &str) -> String {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/generated");
+        std::fs::read_to_string(root.join(name)).unwrap()
+    }
+
+    /// A folder holding the committed registry and tables of `conformal`,
+    /// with `registry` and `tables` in their place.
+    fn folder(tag: &str, registry: &str, tables: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("thinjkr-load-{tag}-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("conformal")).unwrap();
+        std::fs::write(dir.join("registry.json"), registry).unwrap();
+        std::fs::write(dir.join("conformal/tables.json"), tables).unwrap();
+        dir
+    }
+
+    /// The families loaded from a folder (none compiled in, so that
+    /// `conformal` is read from the files), each in full as Debug prints
+    /// it, and the problems.
+    fn loaded(dir: &Path) -> (Vec<String>, Vec<String>) {
+        let (families, problems) = super::load(dir, &[]);
+        (
+            families.iter().map(|f| format!("{f:?}")).collect(),
+            problems,
+        )
+    }
+
+    /// One corruption of a file's bytes: cut at a point, a digit turned
+    /// into another, or two lines swapped.
+    #[derive(Clone, Debug)]
+    enum Corruption {
+        Truncate(f64),
+        Digit(f64, u8),
+        Swap(f64, f64),
+    }
+
+    fn corrupt(text: &str, c: &Corruption) -> String {
+        let at = |x: f64, n: usize| ((x * n as f64) as usize).min(n.saturating_sub(1));
+        match *c {
+            Corruption::Truncate(x) => text[..at(x, text.len())].to_string(),
+            Corruption::Digit(x, d) => {
+                let digits: Vec<usize> = text
+                    .bytes()
+                    .enumerate()
+                    .filter(|(_, b)| b.is_ascii_digit())
+                    .map(|(i, _)| i)
+                    .collect();
+                let i = digits[at(x, digits.len())];
+                let mut bytes = text.as_bytes().to_vec();
+                let old = bytes[i] - b'0';
+                bytes[i] = b'0' + (old + 1 + d % 9) % 10;
+                String::from_utf8(bytes).unwrap()
+            }
+            Corruption::Swap(x, y) => {
+                let mut lines: Vec<&str> = text.lines().collect();
+                let (i, j) = (at(x, lines.len()), at(y, lines.len()));
+                lines.swap(i, j);
+                lines.join("\n") + "\n"
+            }
+        }
+    }
+
+    fn corruption() -> impl Strategy<Value = Corruption> {
+        prop_oneof![
+            (0.0..1.0f64).prop_map(Corruption::Truncate),
+            (0.0..1.0f64, any::<u8>()).prop_map(|(x, d)| Corruption::Digit(x, d)),
+            (0.0..1.0f64, 0.0..1.0f64).prop_map(|(x, y)| Corruption::Swap(x, y)),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 24, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// Issue 72: a corrupted tables.json or registry.json (cut, a digit
+        /// changed, two lines swapped) is refused with its reason, or gives
+        /// the family exactly as the clean files do; never another family.
+        #[test]
+        fn a_corrupted_file_is_refused_or_changes_nothing(c in corruption(), registry_file in any::<bool>()) {
+            let (registry, tables) = (generated("registry.json"), generated("conformal/tables.json"));
+            let clean = loaded(&folder("clean", &registry, &tables));
+            prop_assert!(clean.1.is_empty() && clean.0.len() == 1, "{:?}", clean.1);
+            let dir = if registry_file {
+                folder("bad-registry", &corrupt(&registry, &c), &tables)
+            } else {
+                folder("bad-tables", &registry, &corrupt(&tables, &c))
+            };
+            let (families, problems) = loaded(&dir);
+            prop_assert!(
+                (families.is_empty() && !problems.is_empty()) || (families == clean.0 && problems.is_empty()),
+                "{c:?} in {}: loaded {} families, problems {problems:?}",
+                if registry_file { "registry.json" } else { "tables.json" },
+                families.len()
+            );
+        }
+    }
 }
