@@ -1029,44 +1029,8 @@ fn physical(
         si.force,
         si.h_over_a
     );
-    let thin_layer_line = |t: &crate::report::ThinLayer| {
-        format!(
-            "  the thin-layer equation (2) ({}): a = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, {} % off",
-            t.model,
-            t.si.a,
-            t.si.delta,
-            t.si.force,
-            crate::error::short(100.0 * t.relative_error)
-        )
-    };
-    let conformal_line = |st: &crate::conformal::ConformalState| {
-        format!(
-            "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",
-            contour::verdict(st, st.stable_displacement, &st.neutral_modes),
-            st.cutoff.wavelength,
-            crate::error::short(st.cutoff.thinness),
-            contour::verdict(st, st.stable_load, &st.neutral_modes_load)
-        )
-    };
     if !output::explain() {
-        // the brief text: the answer, one line on how far to trust it, one
-        // warning (after the answer, which is flushed first)
-        match (&thin_layer, &state) {
-            (Some(t), _) => outln!("{}", thin_layer_line(t)),
-            (None, AnyState::Exact(st)) => {
-                outln!("  {}", exact_command::verdict_words(st))
-            }
-            (None, AnyState::Conformal(st)) => outln!("{}", conformal_line(st)),
-            (None, _) => {}
-        }
-        output::finish()?;
-        if let Some(w) = warnings.first() {
-            match warnings.len() - 1 {
-                0 => errln!("thinjkr: warning: {w}"),
-                more => errln!("thinjkr: warning: {w} ({more} more: --explain)"),
-            }
-        }
-        return Ok(());
+        return physical_brief(&state, thin_layer.as_ref(), &warnings);
     }
     outln!(
         "  dimensionless (17): a = {}, s = {}, delta = {}, force = {}; scales: L = {:.6e} m, approach {:.6e} m, force {:.6e} N",
@@ -1108,6 +1072,53 @@ fn physical(
             p_si.delta,
             p_si.force
         );
+    }
+    Ok(())
+}
+
+/// (2)'s answer beside the layer's in `physical`, in a line.
+fn thin_layer_line(t: &crate::report::ThinLayer) -> String {
+    format!(
+        "  the thin-layer equation (2) ({}): a = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, {} % off",
+        t.model,
+        t.si.a,
+        t.si.delta,
+        t.si.force,
+        crate::error::short(100.0 * t.relative_error)
+    )
+}
+
+/// A contour member's verdicts above the coatings' cutoff, in a line.
+fn conformal_line(st: &crate::conformal::ConformalState) -> String {
+    format!(
+        "  {} above the short-wave cutoff 2π h/L = {:.3} (h/L = {}) under displacement control, {} under load control",
+        contour::verdict(st, st.stable_displacement, &st.neutral_modes),
+        st.cutoff.wavelength,
+        crate::error::short(st.cutoff.thinness),
+        contour::verdict(st, st.stable_load, &st.neutral_modes_load)
+    )
+}
+
+/// `physical`'s brief text after its answer's line: one line on how far to
+/// trust it, then one warning with how many more (after the answer, which
+/// is flushed first).
+fn physical_brief(
+    state: &AnyState,
+    thin_layer: Option<&crate::report::ThinLayer>,
+    warnings: &[String],
+) -> crate::Result<()> {
+    match (thin_layer, state) {
+        (Some(t), _) => outln!("{}", thin_layer_line(t)),
+        (None, AnyState::Exact(st)) => outln!("  {}", exact_command::verdict_words(st)),
+        (None, AnyState::Conformal(st)) => outln!("{}", conformal_line(st)),
+        (None, _) => {}
+    }
+    output::finish()?;
+    if let Some(w) = warnings.first() {
+        match warnings.len() - 1 {
+            0 => errln!("thinjkr: warning: {w}"),
+            more => errln!("thinjkr: warning: {w} ({more} more: --explain)"),
+        }
     }
     Ok(())
 }
