@@ -68,7 +68,7 @@ fn each_kind_answers_through_the_layer_as_through_its_own_api() {
 /// An exact state answered by the layer is judged under the default
 /// thinness (h/L = 0.1): its shape's unresolved part and, where that part
 /// is visible, the warning every front end shows (in its JSON and in a
-/// batch row). docs/exact.md's table "The shape's unresolved part": the
+/// batch row). docs/exact-record.md's table "The shape's unresolved part": the
 /// pull-off at ρ = 0.05 has 4.35 % of ā in undulations shorter than
 /// 2π·0.1 (n = 18), the one at ρ = 0.8 less than 0.01 %.
 #[test]
@@ -237,7 +237,7 @@ fn physical_without_a_model_answers_from_the_table_of_defaults() {
     defaults_at(&TEN_ANGLES);
 }
 
-/// The crossing angles of docs/exact.md's table, in degrees, in its order.
+/// The crossing angles of docs/exact-record.md's table, in degrees, in its order.
 const TEN_ANGLES: [f64; 10] = [16.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0];
 
 /// CI's sample of the test above: 30° (the exact pull-off answers), 70°
@@ -249,7 +249,7 @@ fn physical_without_a_model_answers_from_the_table_of_defaults_at_three_angles()
 }
 
 /// The default `physical` answer at each of `angles` (a subset of
-/// [`TEN_ANGLES`]) against docs/exact.md's ten-angle table, then a state at
+/// [`TEN_ANGLES`]) against docs/exact-record.md's ten-angle table, then a state at
 /// a force and a named model.
 fn defaults_at(angles: &[f64]) {
     use thinjkr::units::Cylinders;

@@ -423,14 +423,17 @@ mod tests {
         );
     }
 
-    /// The row `which` of docs/exact.md's table of the notched zero-force
+    /// The row `which` of docs/exact-record.md's table of the notched zero-force
     /// states' stability holds `computed` (n, wavelength, eigenvalue under
     /// load, under displacement, critical thinness under load, the shape's
     /// critical thinness and its mode) to its digits: each number within
     /// one unit of its last printed digit.
     fn the_docs_stability_row_is(which: &str, computed: &[f64; 7]) {
-        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
-            .unwrap();
+        let doc = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../docs/exact-record.md"
+        ))
+        .unwrap();
         let row = doc
             .lines()
             .find(|l| l.starts_with(&format!("| {which} | n = ")))
@@ -491,7 +494,7 @@ mod tests {
     /// their stability is computed too: both are unstable from n = 12 on
     /// under either control, the eigenvalue of n = 12 the same to 1e-6
     /// with 448 and 512 modes, and no thinness makes either a stable
-    /// contact whose shape (2) resolves; docs/exact.md's table of their
+    /// contact whose shape (2) resolves; docs/exact-record.md's table of their
     /// stability holds the 512 modes' numbers to its digits. The route's
     /// trace, its modes raised on the way ([`traced_with_raised_modes`]),
     /// reaches the first of them. About 8 min (release); run with
@@ -552,7 +555,7 @@ mod tests {
             // the least eigenvalue of the longest unstable mode under load
             // control, at each truncation from 384 modes on
             let mut longest_eigenvalues = Vec::new();
-            // what docs/exact.md's table of their stability prints, from
+            // what docs/exact-record.md's table of their stability prints, from
             // the 512 modes: the longest unstable mode under load (n,
             // wavelength, eigenvalue), its eigenvalue under displacement,
             // the critical thinness under load, the shape's and its mode

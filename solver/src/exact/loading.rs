@@ -875,7 +875,7 @@ impl LoadingPath {
     }
 }
 
-/// The integration tests' reader of docs/exact.md's table rows.
+/// The integration tests' reader of docs/exact-record.md's table rows.
 #[cfg(test)]
 #[path = "../../tests/docs_tables/mod.rs"]
 mod docs_tables;
@@ -1056,7 +1056,7 @@ mod tests {
     /// steps in a row a longer step found no equilibrium of the modes
     /// shorter than the cutoff, and where the contact goes is not settled
     /// (before the stall rule the descent crept on until no step lowered
-    /// the potential). Where it stalls is the ā docs/exact.md's row ρ = 0.9
+    /// the potential). Where it stalls is the ā docs/exact-record.md's row ρ = 0.9
     /// prints.
     #[test]
     fn at_rho_0_9_the_path_is_lost_at_the_pull_off_where_the_descent_stalls() {
@@ -1085,7 +1085,7 @@ mod tests {
         );
     }
 
-    /// docs/exact.md's ten crossing angles (two equal cylinders, r = 10 mm,
+    /// docs/exact-record.md's ten crossing angles (two equal cylinders, r = 10 mm,
     /// h = 0.1 mm, G′ = 1 MPa, Δγ = 0.05 J/m², ρ = tan²(θ/2)), each with its
     /// coatings' own thinness (the table's row "h/L"): the table's row
     /// "loading path with this h/L" says where the path ends, which is the
@@ -1194,7 +1194,7 @@ mod tests {
     /// descent from it stalls where the modes shorter than the cutoff cut
     /// its steps short (before the stall was a rule it crept on, one step
     /// of 3e-6 in ā a second, and the path had not ended after 57 min).
-    /// docs/exact.md's row ρ = 0.5, h/L = 0.28. Ignored: 101 s in the test
+    /// docs/exact-record.md's row ρ = 0.5, h/L = 0.28. Ignored: 101 s in the test
     /// profile (2026-11-30); a stall the tests run is at ρ = 0.9 above.
     #[test]
     #[ignore = "slow tier (.ci/slow): about 100 s; run it after changing the descent"]

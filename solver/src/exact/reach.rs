@@ -911,12 +911,12 @@ mod tests {
         assert!(map.len() > 300, "{} sizes", map.len());
         let table = markdown(&map);
         let doc = std::fs::read_to_string(
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact.md"),
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact-record.md"),
         )
         .unwrap();
         assert!(
             doc.contains(&table),
-            "docs/exact.md's reach table is stale; it should read:\n{table}"
+            "docs/exact-record.md's reach table is stale; it should read:\n{table}"
         );
     }
 
@@ -1121,12 +1121,12 @@ mod tests {
             .all(|&rho| w.iter().any(|w| w.rho == rho)));
         let table = windows_markdown(&w);
         let doc = std::fs::read_to_string(
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact.md"),
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact-record.md"),
         )
         .unwrap();
         assert!(
             doc.contains(&table),
-            "docs/exact.md's windows table is stale; it should read:\n{table}"
+            "docs/exact-record.md's windows table is stale; it should read:\n{table}"
         );
     }
 

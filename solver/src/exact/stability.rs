@@ -345,7 +345,7 @@ impl Exact {
 mod tests {
     use super::*;
 
-    /// docs/exact.md's table "A second route: the long-wave motions alone"
+    /// docs/exact-record.md's table "A second route: the long-wave motions alone"
     /// is the solver's: at each pull-off the variation under displacement
     /// control restricted to the motions of modes up to 4 has the least
     /// eigenvalue printed and is positive, with modes up to 6 the printed
@@ -355,7 +355,7 @@ mod tests {
     #[ignore = "slow tier (.ci/slow): about 30 s; a docs table regenerated"]
     fn the_long_wave_table_of_the_docs_is_the_solvers() {
         let doc = std::fs::read_to_string(
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact.md"),
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/exact-record.md"),
         )
         .unwrap();
         let at = doc

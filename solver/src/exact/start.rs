@@ -219,12 +219,15 @@ mod tests {
         assert_eq!((start.state.a_bar - po.a_bar).signum(), stable_side);
         assert!(start.at.words(false).contains("not resolved by them"));
         // docs/exact.md, "Where the path starts", prints this start
-        let doc = include_str!("../../../docs/exact.md");
+        let doc = include_str!("../../../docs/exact-record.md");
         let printed = format!(
             "F̄ = −{:.4} (ā = {:.4})",
             -start.state.force_bar, start.state.a_bar
         );
-        assert!(doc.contains(&printed), "docs/exact.md lacks {printed}");
+        assert!(
+            doc.contains(&printed),
+            "docs/exact-record.md lacks {printed}"
+        );
 
         let (po, _) = crate::exact::pull_off_resolved(0.1).unwrap();
         let none = largest_on_pull_off_piece(&po, Cutoff::for_thinness(0.1).unwrap(), "x".into());

@@ -402,7 +402,7 @@ mod tests {
         }
     }
 
-    /// docs/exact.md's table "The shape's unresolved part": every cell is
+    /// docs/exact-record.md's table "The shape's unresolved part": every cell is
     /// the exact pull-off's unresolved part at that ρ and h/L, to its
     /// printed digits, with its largest mode, and the first column the
     /// whole departure from the ellipse; and its table "Coatings for which
@@ -413,8 +413,11 @@ mod tests {
     #[test]
     #[ignore = "slow tier (.ci/slow): about 30 s; a docs table regenerated"]
     fn the_unresolved_shape_table_of_the_docs_is_the_solvers() {
-        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/exact.md"))
-            .unwrap();
+        let doc = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../docs/exact-record.md"
+        ))
+        .unwrap();
         let from = doc
             .find("**The shape's unresolved part.**")
             .expect("the section");
