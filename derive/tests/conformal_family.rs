@@ -65,7 +65,12 @@ fn a_family_of_ones_own_derives_checks_and_generates() {
         .expect("the family's tables as data");
     let parsed: serde_json::Value = serde_json::from_str(&tables.contents).unwrap();
     assert_eq!(parsed["members"][2]["potential_rows"], 149);
-    let registry = codegen_conformal::registry_outputs(&[builtin(), mine], &[true, true]).unwrap();
+    let digests = [
+        "0123456789abcdef".to_string(),
+        codegen_conformal::digest(tables.contents.as_bytes()),
+    ];
+    let registry =
+        codegen_conformal::registry_outputs(&[builtin(), mine], &[true, true], &digests).unwrap();
     assert!(registry[0].contents.contains("name: \"mine\""));
     assert!(registry[0]
         .contents
@@ -73,6 +78,13 @@ fn a_family_of_ones_own_derives_checks_and_generates() {
     let json: serde_json::Value = serde_json::from_str(&registry[1].contents).unwrap();
     assert_eq!(json["families"][1]["name"], "mine");
     assert_eq!(json["families"][1]["tables"], "mine/tables.json");
+    // each entry carries its tables' digest, and the registry its entries'
+    // (as the solver's loader checks them)
+    assert_eq!(json["families"][1]["tables_digest"], digests[1].as_str());
+    assert_eq!(
+        json["digest"],
+        codegen_conformal::digest(json["families"].to_string().as_bytes()).as_str()
+    );
 }
 
 #[test]
