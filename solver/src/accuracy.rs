@@ -328,7 +328,8 @@ pub(crate) fn render_row(r: &Row) -> String {
 #[cfg(feature = "cli")]
 const WHICH_PULL_OFF: &str = "**Which pull-off.** Every row measures the models against today's pull-off: the \
      first minimum of F̄ on the near-elliptic arm described above, a state of (2) found without asking how a contact \
-     comes to it. The loading path's pull-off is where a contact unloaded under load control from F̄ = 10, through \
+     comes to it. The loading path's pull-off is where a contact unloaded under load control from F̄ = 10 (below \
+     ρ ≈ 0.165, where no state at F̄ = 10 is found, from the largest stable load on the pull-off's piece), through \
      states that are resolved and stable above the short-wave cutoff 2πh, comes off (exact.md, \"The loading path by \
      descent\"); it depends on the coatings' thinness h/L. It can be today's pull-off only where that state is \
      itself resolved and stable under load; the column \"resolved and stable under load for\" says for which h/L it \
