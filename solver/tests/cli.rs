@@ -546,3 +546,31 @@ fn a_small_force_is_printed_with_its_digits() {
     assert!(ok, "{err}");
     assert!(out.contains(&format!("force = {f:.5e},")), "{f}: {out}");
 }
+
+/// docs/accuracy.md is generated (`thinjkr accuracy --out …`, about 40
+/// minutes, which the slow tier runs): its prose is the generator's, word
+/// for word and as wrapped, so that a hand edit is found here, in seconds,
+/// and not by the slow tier (its first whole run found one). The rows'
+/// part (`--rho 1`) writes the same prose; only the paragraph that names
+/// the rows' range says otherwise.
+#[test]
+fn the_accuracy_pages_prose_is_the_generators() {
+    let (ok, out, err) = thinjkr(&["accuracy", "--rho", "1"]);
+    assert!(ok, "{err}");
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/accuracy.md"))
+        .unwrap();
+    let prose: Vec<&str> = out
+        .split("\n\n")
+        .filter(|p| !p.trim().is_empty() && !p.trim_start().starts_with(['|', '<', '#']))
+        .filter(|p| {
+            !p.starts_with("The exact pull-off on this family is resolved at every ρ of the table")
+        })
+        .collect();
+    assert!(prose.len() >= 5, "{out}");
+    for p in prose {
+        assert!(
+            doc.contains(p),
+            "docs/accuracy.md lacks the generator's paragraph (regenerate it, or change the generator):\n{p}"
+        );
+    }
+}
