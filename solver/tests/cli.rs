@@ -400,6 +400,7 @@ fn the_reach_windows_check_their_input_and_say_when_there_are_none() {
 /// one, saying how many more `--explain` shows.
 #[test]
 fn answers_come_in_three_lines_and_explain_gives_the_rest() {
+    let sixty = guide_physical(["1e6", "1e6"]);
     let cases: [(&[&str], &str); 6] = [
         (
             &["exact", "pull-off", "--rho", "1"],
@@ -429,28 +430,7 @@ fn answers_come_in_three_lines_and_explain_gives_the_rest() {
             ],
             "state: model conformal:4,",
         ),
-        (
-            &[
-                "physical",
-                "--r1",
-                "0.01",
-                "--r2",
-                "0.01",
-                "--theta-deg",
-                "60",
-                "--h1",
-                "1e-4",
-                "--h2",
-                "1e-4",
-                "--g1",
-                "1e6",
-                "--g2",
-                "1e6",
-                "--work-of-adhesion",
-                "0.05",
-            ],
-            "physical: model exact,",
-        ),
+        (&sixty, "physical: model exact,"),
     ];
     for (args, first) in cases {
         let (ok, brief, err) = thinjkr(args);
@@ -495,25 +475,7 @@ fn a_thinness_beyond_the_verdicts_is_refused_naming_it() {
             "{t}: {err}"
         );
     }
-    let (ok, _, err) = thinjkr(&[
-        "physical",
-        "--r1",
-        "0.01",
-        "--r2",
-        "0.01",
-        "--theta-deg",
-        "60",
-        "--h1",
-        "1e-4",
-        "--h2",
-        "1e-4",
-        "--g1",
-        "1e300",
-        "--g2",
-        "1e-300",
-        "--work-of-adhesion",
-        "0.05",
-    ]);
+    let (ok, _, err) = thinjkr(&guide_physical(["1e300", "1e-300"]));
     assert!(
         !ok && err.contains("h/L") && err.contains("[0.000001, 1000]"),
         "{err}"
@@ -573,4 +535,28 @@ fn the_accuracy_pages_prose_is_the_generators() {
             "docs/accuracy.md lacks the generator's paragraph (regenerate it, or change the generator):\n{p}"
         );
     }
+}
+
+/// `physical` with the guide's coatings (r1 = r2 = 10 mm at 60°, h1 = h2 =
+/// 0.1 mm, work of adhesion 0.05 J/m²) and the shear moduli `g` (Pa).
+fn guide_physical(g: [&'static str; 2]) -> Vec<&'static str> {
+    vec![
+        "physical",
+        "--r1",
+        "0.01",
+        "--r2",
+        "0.01",
+        "--theta-deg",
+        "60",
+        "--h1",
+        "1e-4",
+        "--h2",
+        "1e-4",
+        "--g1",
+        g[0],
+        "--g2",
+        g[1],
+        "--work-of-adhesion",
+        "0.05",
+    ]
 }
