@@ -113,6 +113,18 @@ fn finite_si(name: &str, v: f64) -> Result<f64> {
     }
 }
 
+/// `limit` where `v` lies beyond it by less than the six significant
+/// digits a message prints: a limit is checked after the rounding that
+/// prints it (theta_deg = 90.0000001 had been refused as "theta_deg = 90
+/// is outside its allowed range (0, 90]").
+fn at_limit(v: f64, limit: f64) -> f64 {
+    if v != limit && crate::error::short(v) == crate::error::short(limit) {
+        limit
+    } else {
+        v
+    }
+}
+
 fn positive(name: &'static str, v: f64) -> Result<f64> {
     check_range(name, v, v > 0.0, "finite and > 0")
 }
@@ -123,10 +135,11 @@ impl Cylinders {
     pub fn scales(&self) -> Result<Scales> {
         let r1 = positive("r1", self.r1)?;
         let r2 = positive("r2", self.r2)?;
+        let theta = at_limit(self.theta_deg, 90.0);
         let th = check_range(
             "theta_deg",
-            self.theta_deg,
-            self.theta_deg > 0.0 && self.theta_deg <= 90.0,
+            theta,
+            theta > 0.0 && theta <= 90.0,
             "(0, 90] degrees",
         )?;
         let h1 = positive("h1", self.h1)?;

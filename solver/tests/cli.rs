@@ -560,3 +560,24 @@ fn guide_physical(g: [&'static str; 2]) -> Vec<&'static str> {
         "0.05",
     ]
 }
+
+/// Issue 72: a limit is checked after the rounding that prints it. A
+/// crossing angle of 90.0000001° prints as 90 and is 90 (it had been
+/// refused as "theta_deg = 90 is outside its allowed range (0, 90]");
+/// 90.001 prints as itself and is refused.
+#[test]
+fn an_angle_that_prints_as_its_limit_is_its_limit() {
+    let at = |theta: &'static str| {
+        let mut args = guide_physical(["1e6", "1e6"]);
+        args[6] = theta;
+        args.push("--json");
+        thinjkr(&args)
+    };
+    let (ok, ninety, err) = at("90");
+    assert!(ok, "{err}");
+    let (ok, above, err) = at("90.0000001");
+    assert!(ok, "{err}");
+    assert_eq!(above, ninety);
+    let (ok, _, err) = at("90.001");
+    assert!(!ok && err.contains("theta_deg = 90.001"), "{err}");
+}
