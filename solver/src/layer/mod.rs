@@ -22,7 +22,7 @@
 //! elastic energy instead (∂Ū/∂ā = πā at fixed δ̄) and is held against the
 //! first in the tests.
 //!
-//! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`]. May use:
+//! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`], `Controlled`. May use:
 //! `control` (what a state is held at), `error`, `generated` (the layer's kernel), `model` (Brent's minimum).
 
 mod bessel;
@@ -246,11 +246,7 @@ impl Layers {
     /// `value`), where it is stable under that control; none below the
     /// pull-off's value.
     fn beyond(&self, route: Route, load: bool, value: f64) -> Result<LayerState> {
-        let (quantity, of): (&str, fn(&LayerState) -> f64) = if load {
-            ("force", |s| s.force_bar)
-        } else {
-            ("approach", |s| s.delta_bar)
-        };
+        let Controlled { quantity, of, .. } = Controlled::under(load);
         let pull = self.pull_off_under(route, load)?;
         if value < of(&pull) {
             return Err(Error::NoState(format!(
@@ -326,31 +322,48 @@ impl Layers {
     /// The pull-off under load control (`load`) or displacement control.
     fn pull_off_under(&self, route: Route, load: bool) -> Result<LayerState> {
         let guess = self.radius_guess();
-        let a = match (route, load) {
-            (Route::Griffith, true) => root(
-                |a| Ok(self.at_radius(a, route)?.force_slope),
+        let Controlled {
+            quantity,
+            of,
+            slope,
+        } = Controlled::under(load);
+        let a = match route {
+            Route::Griffith => root(
+                |a| Ok(slope(&self.at_radius(a, route)?)),
                 guess,
                 0.0,
-                "force's slope",
+                &format!("{quantity}'s slope"),
             )?,
-            (Route::Griffith, false) => root(
-                |a| Ok(self.at_radius(a, route)?.delta_slope),
-                guess,
-                0.0,
-                "approach's slope",
-            )?,
-            (Route::Energy, true) => minimum(
-                |a| Ok(energy::by_energy(self, a)?.force_bar),
-                guess,
-                "force",
-            )?,
-            (Route::Energy, false) => minimum(
-                |a| Ok(energy::by_energy(self, a)?.delta_bar),
-                guess,
-                "approach",
-            )?,
+            Route::Energy => minimum(|a| Ok(of(&energy::by_energy(self, a)?)), guess, quantity)?,
         };
         self.at_radius(a, route)
+    }
+}
+
+/// The quantity a control holds, read from a state: its name, its value
+/// and its slope along the branch.
+struct Controlled {
+    quantity: &'static str,
+    of: fn(&LayerState) -> f64,
+    slope: fn(&LayerState) -> f64,
+}
+
+impl Controlled {
+    /// The force under load control (`load`), else the approach.
+    fn under(load: bool) -> Controlled {
+        if load {
+            Controlled {
+                quantity: "force",
+                of: |s| s.force_bar,
+                slope: |s| s.force_slope,
+            }
+        } else {
+            Controlled {
+                quantity: "approach",
+                of: |s| s.delta_bar,
+                slope: |s| s.delta_slope,
+            }
+        }
     }
 }
 
