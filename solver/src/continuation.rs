@@ -28,7 +28,8 @@
 //!   at ρ = 1 the minimum sits on the bifurcation point of mode 4).
 //!
 //! Owns: [`Family`], [`Linear`], [`Settings`], [`Watch`], [`On`],
-//! [`Quantity`], [`Point`], [`EventKind`], [`Event`], [`Trace`], [`trace`].
+//! [`Quantity`], [`Point`], [`EventKind`], [`Event`], [`Trace`], [`trace`],
+//! [`at_arclength`], [`past_size_fold`], [`spaced`].
 //! May use: `error`, `control`, `newton` (the caller's stop flag), nalgebra.
 
 use crate::control::Quantity;
@@ -601,6 +602,93 @@ where
             "the event's location did not converge in 100 Illinois steps",
         ))
     }
+}
+
+/// The state of `family` at arclength `sigma` past the traced point `p`
+/// towards the traced point `next`: the corrector from `p.u + σ t` on the
+/// plane normal to p's tangent t (oriented towards `next`; a trace read
+/// backwards has it the other way), or a little beside it, as an event is
+/// located, with the budgets of `settings`. A curve's output finer than
+/// its trace (`crate::curve`, `crate::conformal`) is made of these, so its
+/// memory does not grow with the points asked for.
+pub(crate) fn at_arclength<D: Size, F: Family<D>>(
+    family: &F,
+    settings: Settings,
+    p: &Point<D>,
+    next: &Point<D>,
+    sigma: f64,
+) -> Result<OVector<f64, D>>
+where
+    DefaultAllocator: Allocator<D> + Allocator<D, D>,
+{
+    let engine = Engine {
+        family,
+        settings,
+        ga: family.a_bar_gradient(),
+        gd: family.delta_bar_gradient(),
+    };
+    let mut p = p.clone();
+    if p.t.dot(&(&next.u - &p.u)) < 0.0 {
+        p.t = -p.t;
+    }
+    let lu = engine.factored(&p)?;
+    engine.beside(&p, sigma, &lu).map(|(u, _)| u)
+}
+
+/// Whether the point at arclength `sigma` past the traced point `p`
+/// towards the next traced point `q` lies past the fold in ā between
+/// them: dā/dσ (along p → q) taken as linear in σ over the chord, the fold
+/// where it vanishes. False where dā/dσ keeps its sign from `p` to `q`.
+pub(crate) fn past_size_fold<D: Dim>(p: &Point<D>, q: &Point<D>, sigma: f64) -> bool
+where
+    DefaultAllocator: Allocator<D>,
+{
+    let chord = &q.u - &p.u;
+    let along = |x: &Point<D>| x.d_a_bar * x.t.dot(&chord).signum();
+    let (dp, dq) = (along(p), along(q));
+    if dp.signum() == dq.signum() {
+        return false;
+    }
+    sigma > chord.norm() * dp / (dp - dq)
+}
+
+/// Where `count` points spaced evenly in arclength lie on a trace of
+/// `trail` (its points' unknowns, in order; the arclength is the sum of
+/// the chords): for each, the index of the traced point at or before it
+/// and the arclength from that point to it (0 for the first and the last
+/// traced point; below the chord to the next one). Lazily, so
+/// nothing of the size of `count` is allocated.
+pub(crate) fn spaced<'a, D: Dim>(
+    trail: &'a [OVector<f64, D>],
+    count: usize,
+) -> impl Iterator<Item = (usize, f64)> + 'a
+where
+    DefaultAllocator: Allocator<D>,
+{
+    let mut arc = Vec::with_capacity(trail.len());
+    arc.push(0.0);
+    for k in 1..trail.len() {
+        arc.push(arc[k - 1] + (&trail[k] - &trail[k - 1]).norm());
+    }
+    let total = arc.last().copied().unwrap_or(0.0);
+    let mut j = 0;
+    (0..count).map(move |i| {
+        let target = if count > 1 {
+            total * i as f64 / (count - 1) as f64
+        } else {
+            0.0
+        };
+        while j + 1 < arc.len() && arc[j + 1] < target {
+            j += 1;
+        }
+        // the last traced point is taken as it is
+        let sigma = if j + 1 < arc.len() {
+            (target - arc[j]).max(0.0)
+        } else {
+            0.0
+        };
+        (j, sigma)
+    })
 }
 
 /// Trace the family from the state `start` with the first tangent oriented

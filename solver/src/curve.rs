@@ -13,7 +13,12 @@
 //! of degree d in (ā³, δ̄ā); the corrector's convergence test is on the
 //! step, which is scale-free.
 //!
-//! Owns: [`Curve`], [`Fold`], [`trace`]. May use: `contact`, `equations`,
+//! Output finer than the trace: past [`TRACED_FOR`] points each state is
+//! corrected onto its own arclength from the traced point before it, and
+//! the states are handed out one at a time ([`trace_each`]), so a curve's
+//! memory does not grow with its points.
+//!
+//! Owns: [`Curve`], [`Fold`], [`trace`], [`trace_each`], [`TRACED_FOR`]. May use: `contact`, `equations`,
 //! `fold`, `continuation`, `error`.
 
 use crate::contact::{Contact, State};
@@ -68,10 +73,37 @@ pub const MAX_POINTS: usize = 100_000;
 /// (`apex45`) and 1e-11 (`energy`).
 pub(crate) const CURVE_NEAR_CIRCLE: f64 = 1e-9;
 
+/// The most output points a curve's trace is made fine enough for: it is
+/// traced at least four times finer than this many points (or than
+/// `points`, where fewer), and each output point is the traced point at or
+/// before it; past it each is corrected onto its own arclength from that
+/// traced point ([`crate::continuation::at_arclength`]), so the memory a
+/// curve takes does not grow with its points.
+pub(crate) const TRACED_FOR: usize = 2000;
+
 /// Trace the curve of `contact` from δ̄ = `delta_start` (on the stable
 /// branch) past pull-off and the folds, and return `points` states spaced
 /// evenly in arclength.
 pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve> {
+    let mut states = Vec::new();
+    let folds = trace_each(contact, points, delta_start, &mut |st| {
+        states.push(st);
+        Ok(())
+    })?;
+    Ok(Curve { states, folds })
+}
+
+/// [`trace`], handing each state to `each` in order as it is made and
+/// returning the folds: the curve is traced and its folds located first,
+/// then the states are made one at a time, so nothing of the size of
+/// `points` is kept (the command line streams them). An error of `each`
+/// ends the curve with it.
+pub(crate) fn trace_each(
+    contact: &Contact,
+    points: usize,
+    delta_start: f64,
+    each: &mut dyn FnMut(State) -> Result<()>,
+) -> Result<Vec<Fold>> {
     check_range(
         "points",
         points as f64,
@@ -90,17 +122,15 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
     let start = contact.at_displacement(delta_start)?;
     if rho >= 1.0 {
         // s ≡ 1: the exact axisymmetric curve, parametrised by ā.
-        let states: Vec<State> = (0..points)
-            .map(|k| {
-                let a = start.a_bar * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
-                contact.at_contact_size(a).map(|v| v[0])
-            })
-            .collect::<Result<_>>()?;
         let folds = vec![Fold {
             kind: FoldKind::Load,
             state: contact.pull_off_load()?.state,
         }];
-        return Ok(Curve { states, folds });
+        for k in 0..points {
+            let a = start.a_bar * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
+            each(contact.at_contact_size(a)?[0])?;
+        }
+        return Ok(folds);
     }
     // variables scaled so that a unit step means a comparable change
     let family = Branch {
@@ -110,8 +140,10 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         strict: true,
     };
     let w0 = family.join(&Vector2::new(start.a_bar, start.s), start.delta_bar);
-    // the trace is at least four times finer than the output
-    let h_max = (0.5 / points as f64).min(0.05);
+    // the trace is at least four times finer than the output, up to
+    // TRACED_FOR points
+    let traced_for = points.min(TRACED_FOR);
+    let h_max = (0.5 / traced_for as f64).min(0.05);
     let settings = Settings {
         step: h_max.min(0.01),
         min_step: h_max * 1e-9,
@@ -122,7 +154,7 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
         corrector_iterations: 20,
         step_tolerance: 1e-12,
         // the step is at most 0.5/points, so the budget grows with the points
-        max_steps: 20_000.max(50 * points),
+        max_steps: 20_000.max(50 * traced_for),
     };
     let watch = Watch {
         size_fold: On::Note,
@@ -149,11 +181,13 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
             p.u[1] * family.scale[1] < s_end || (passed_fold && p.a_bar > start.a_bar)
         },
     )?;
+    let from_z = |w: &Vector3<f64>| {
+        let (x, d) = family.split(w);
+        Vector3::new(x[0], x[1], d)
+    };
     if traced.end != End::Until {
         // never a silently shortened curve: say where it stopped
-        let w = traced.points.last().expect("one point").u;
-        let (x, d) = family.split(&w);
-        let z = Vector3::new(x[0], x[1], d);
+        let z = from_z(&traced.points.last().expect("one point").u);
         return Err(Error::NoState(format!(
             "curve at rho = {}: the trace did not reach its end (s < {}, a twentieth of its start, or ā back above its start past the contact-size fold) within {} steps; it stopped at a_bar = {}, s = {}, delta_bar = {}",
             short(rho),
@@ -164,42 +198,37 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
             short(z[2])
         )));
     }
-    let trail: Vec<(Vector3<f64>, Vector3<f64>)> =
-        traced.points.iter().map(|p| (p.u, p.t)).collect();
-    let from_z = |w: &Vector3<f64>| {
-        let (x, d) = family.split(w);
-        Vector3::new(x[0], x[1], d)
-    };
-    // states (flagged beyond the first contact-size fold) and folds
-    let size_fold = trail
+    let trail: Vec<Vector3<f64>> = traced.points.iter().map(|p| p.u).collect();
+    // the first fold in ā lies between the traced points f and f + 1;
+    // the states after it are flagged beyond it
+    let size_fold = traced
+        .points
         .windows(2)
-        .position(|p| p[0].1[0].signum() != p[1].1[0].signum());
-    let states_all: Vec<State> = trail
-        .iter()
-        .enumerate()
-        .map(|(k, (w, _))| {
-            let z = from_z(w);
-            let mut st = contact.state_from(z[0], z[1], z[2]);
-            st.beyond_size_fold = size_fold.is_some_and(|f| k > f);
-            st
-        })
-        .collect();
+        .position(|p| p[0].t[0].signum() != p[1].t[0].signum());
+    let state_at = |w: &Vector3<f64>, beyond: bool| {
+        let z = from_z(w);
+        let mut st = contact.state_from(z[0], z[1], z[2]);
+        st.beyond_size_fold = beyond;
+        st
+    };
+    let traced_state = |k: usize| state_at(&trail[k], size_fold.is_some_and(|f| k > f));
     let mut folds = Vec::new();
     for e in &traced.events {
         let [i, k] = e.between;
         match e.kind {
             EventKind::SizeFold => {
-                folds.push(refine(contact, FoldKind::ContactSize, &states_all[k])?)
+                folds.push(refine(contact, FoldKind::ContactSize, &traced_state(k))?)
             }
             EventKind::DisplacementFold => {
-                folds.push(refine(contact, FoldKind::Displacement, &states_all[k])?)
+                folds.push(refine(contact, FoldKind::Displacement, &traced_state(k))?)
             }
             EventKind::ForceMinimum => {
                 // from the traced point with the lower force
-                let near = if states_all[i].force_bar < states_all[k].force_bar {
-                    &states_all[i]
+                let (si, sk) = (traced_state(i), traced_state(k));
+                let near = if si.force_bar < sk.force_bar {
+                    &si
                 } else {
-                    &states_all[k]
+                    &sk
                 };
                 folds.push(refine(contact, FoldKind::Load, near)?)
             }
@@ -212,28 +241,38 @@ pub fn trace(contact: &Contact, points: usize, delta_start: f64) -> Result<Curve
             return Err(Error::NoState(format!(
                 "curve at rho = {}: the trace ended at s = {} without reaching the pull-off (force {} at s = {})",
                 short(rho),
-                crate::error::rounded(states_all.last().map(|st| st.s).unwrap_or(f64::NAN)),
+                crate::error::rounded(traced_state(trail.len() - 1).s),
                 crate::error::rounded(p.state.force_bar),
                 crate::error::rounded(p.state.s)
             )));
         }
     }
-    // resample evenly in arclength
-    let mut arc = vec![0.0];
-    for k in 1..trail.len() {
-        arc.push(arc[k - 1] + (trail[k].0 - trail[k - 1].0).norm());
+    // the states, spaced evenly in arclength
+    for (j, sigma) in continuation::spaced(&trail, points) {
+        let st = if points <= TRACED_FOR || sigma == 0.0 {
+            traced_state(j)
+        } else {
+            let w = continuation::at_arclength(
+                &family,
+                settings,
+                &traced.points[j],
+                &traced.points[j + 1],
+                sigma,
+            )?;
+            let beyond = size_fold.is_some_and(|f| {
+                j > f
+                    || (j == f
+                        && continuation::past_size_fold(
+                            &traced.points[j],
+                            &traced.points[j + 1],
+                            sigma,
+                        ))
+            });
+            state_at(&w, beyond)
+        };
+        each(st)?;
     }
-    let total = *arc.last().unwrap_or(&0.0);
-    let mut states = Vec::with_capacity(points);
-    let mut j = 0;
-    for i in 0..points {
-        let target = total * i as f64 / (points - 1) as f64;
-        while j + 1 < arc.len() && arc[j + 1] < target {
-            j += 1;
-        }
-        states.push(states_all[j.min(states_all.len() - 1)]);
-    }
-    Ok(Curve { states, folds })
+    Ok(folds)
 }
 
 /// The fold of `kind` near the traced state `near`, by Newton's method on
@@ -255,4 +294,66 @@ fn refine(contact: &Contact, kind: FoldKind, near: &State) -> Result<Fold> {
     // the size fold itself is where the branch turns, not beyond it
     state.beyond_size_fold = near.beyond_size_fold && kind != FoldKind::ContactSize;
     Ok(Fold { kind, state })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Past the points its trace is made for ([`TRACED_FOR`]), a curve's
+    /// states are corrected onto their own arclength from the traced point
+    /// before: each solves (19)–(20), the largest jump in F̄ halves when
+    /// the points double (they are spaced, not repeated), and the states
+    /// beyond the fold in ā are flagged from the fold on: one switch, with
+    /// the located fold between the two states on either side of it.
+    #[test]
+    fn a_curve_finer_than_its_trace_is_made_of_states() {
+        for rho in [0.8, 0.3] {
+            let c = Contact::new(rho).unwrap();
+            let jump = |cv: &Curve| {
+                cv.states
+                    .windows(2)
+                    .map(|w| (w[1].force_bar - w[0].force_bar).abs())
+                    .fold(0.0, f64::max)
+            };
+            let coarse = trace(&c, 2 * TRACED_FOR, 20.0).unwrap();
+            let fine = trace(&c, 4 * TRACED_FOR, 20.0).unwrap();
+            assert_eq!(fine.states.len(), 4 * TRACED_FOR);
+            let (j1, j2) = (jump(&coarse), jump(&fine));
+            assert!(j2 < 0.55 * j1, "rho {rho}: largest jump {j1} → {j2}");
+            for st in &fine.states {
+                let (r, _) = crate::ModelId::Max.model().residuals_and_jacobian(
+                    Vector2::new(st.a_bar, st.s),
+                    rho,
+                    st.delta_bar,
+                );
+                assert!(
+                    r.norm() < 1e-8 * (1.0 + st.a_bar.powi(3)),
+                    "rho {rho}: residual {} at {st:?}",
+                    r.norm()
+                );
+            }
+            let switch = fine
+                .states
+                .iter()
+                .position(|st| st.beyond_size_fold)
+                .expect("a fold in a");
+            assert!(fine.states[switch..].iter().all(|st| st.beyond_size_fold));
+            let fold = fine
+                .folds
+                .iter()
+                .find(|f| f.kind == FoldKind::ContactSize)
+                .expect("the fold in a located");
+            let at = |st: &State| Vector3::new(st.a_bar, st.s, st.delta_bar);
+            let (before, after, f) = (
+                at(&fine.states[switch - 1]),
+                at(&fine.states[switch]),
+                at(&fold.state),
+            );
+            assert!(
+                (f - before).norm() + (after - f).norm() < 1.01 * (after - before).norm() + 1e-9,
+                "rho {rho}: the fold {f:?} is not between {before:?} and {after:?}"
+            );
+        }
+    }
 }

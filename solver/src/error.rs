@@ -1,7 +1,7 @@
 //! Typed errors of the solver: bad input names the parameter and its allowed
 //! range; non-convergence says where.
 //!
-//! Owns: [`Error`]. May use: nothing else in the crate.
+//! Owns: [`Error`], [`BRIEF`] (a message as a person reads it). May use: nothing else in the crate.
 
 /// Everything that can go wrong in thinjkr.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -143,6 +143,103 @@ impl Error {
     }
 }
 
+/// The most characters of an error's message as a person reads it
+/// ([`Error::brief`]); the whole record is its `Display` text.
+pub(crate) const BRIEF: usize = 300;
+
+/// What a shortened message ends with.
+const MORE: &str = " … (--explain: the whole record)";
+
+impl Error {
+    /// The message in at most [`BRIEF`] characters: as it is where it
+    /// fits; else its clauses (separated by "; " outside parentheses) from
+    /// the first while they fit, the first without its parenthesised
+    /// asides where it alone does not, and [`MORE`] after them. An exact
+    /// request's routes each add their record to the message (2,500
+    /// characters at ρ = 1e-300 before its floor); the first clause says
+    /// what decided.
+    pub(crate) fn brief(&self) -> String {
+        fitted(&self.to_string(), BRIEF)
+    }
+}
+
+/// `text` in at most `limit` characters, as [`Error::brief`] shortens it.
+pub(crate) fn fitted(text: &str, limit: usize) -> String {
+    let count = |s: &str| s.chars().count();
+    if count(text) <= limit {
+        return text.to_string();
+    }
+    let budget = limit.saturating_sub(count(MORE));
+    let clauses = top_level_clauses(text);
+    let mut out = String::new();
+    for (i, c) in clauses.iter().enumerate() {
+        let c = if i == 0 && count(c) > budget {
+            without_asides(c)
+        } else {
+            c.to_string()
+        };
+        let joined = if out.is_empty() {
+            c
+        } else {
+            format!("{out}; {c}")
+        };
+        if count(&joined) > budget {
+            break;
+        }
+        out = joined;
+    }
+    if out.is_empty() {
+        // one clause too long even without its asides: cut at a word
+        let bare = without_asides(clauses[0]);
+        let mut cut: String = bare.chars().take(budget).collect();
+        if let Some(space) = cut.rfind(' ') {
+            cut.truncate(space);
+        }
+        out = cut;
+    }
+    out + MORE
+}
+
+/// The clauses of `text`: its pieces between "; " outside parentheses.
+fn top_level_clauses(text: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    let bytes = text.as_bytes();
+    for (i, &b) in bytes.iter().enumerate() {
+        match b {
+            b'(' => depth += 1,
+            b')' => depth -= 1,
+            b';' if depth == 0 && bytes.get(i + 1) == Some(&b' ') => {
+                out.push(&text[start..i]);
+                start = i + 2;
+            }
+            _ => {}
+        }
+    }
+    out.push(&text[start..]);
+    out
+}
+
+/// `text` without its parenthesised asides (and the space before each).
+fn without_asides(text: &str) -> String {
+    let mut out = String::new();
+    let mut depth = 0;
+    for ch in text.chars() {
+        match ch {
+            '(' => {
+                if depth == 0 && out.ends_with(' ') {
+                    out.pop();
+                }
+                depth += 1;
+            }
+            ')' if depth > 0 => depth -= 1,
+            _ if depth == 0 => out.push(ch),
+            _ => {}
+        }
+    }
+    out
+}
+
 /// Shorthand.
 pub type Result<T> = std::result::Result<T, Error>;
 
@@ -208,5 +305,43 @@ pub(crate) fn quote_start(s: &str) -> String {
     } else {
         let head: String = s.chars().take(40).collect();
         format!("{head:?}… ({} more characters)", n - 40)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A message that fits is left as it is; a longer one keeps its
+    /// clauses from the first while they fit, drops the first clause's
+    /// asides where it alone is too long, never splits inside
+    /// parentheses, and says the record is longer.
+    #[test]
+    fn a_long_message_keeps_its_first_clauses_within_the_limit() {
+        assert_eq!(fitted("short; and more", 300), "short; and more");
+        let aside = format!("({})", "x; ".repeat(60));
+        let text = format!(
+            "no contact state: the family turns back at rho = 0.19 {aside}, so it has no state at rho = 0.1; then the arms: {}; the screen finds none",
+            "a = 3.2: stops, ".repeat(40)
+        );
+        let brief = fitted(&text, BRIEF);
+        assert!(brief.chars().count() <= BRIEF, "{brief}");
+        assert_eq!(
+            brief,
+            format!(
+                "no contact state: the family turns back at rho = 0.19, so it has no state at rho = 0.1{MORE}"
+            )
+        );
+        // clauses that fit are kept whole, the first with its aside
+        let text = format!("first (a; b); second; {}", "third ".repeat(60));
+        assert_eq!(fitted(&text, BRIEF), format!("first (a; b); second{MORE}"));
+        // one clause too long even without asides is cut at a word
+        let text = "word ".repeat(100);
+        let brief = fitted(&text, BRIEF);
+        assert!(
+            brief.chars().count() <= BRIEF && brief.ends_with(MORE),
+            "{brief}"
+        );
+        assert!(brief.starts_with("word word"), "{brief}");
     }
 }

@@ -972,32 +972,87 @@ pub struct CurveAnswer {
     pub arms: Option<Arms>,
 }
 
+/// One state of a curve as [`Choice::curve_each`] makes it.
+pub(crate) struct CurvePoint {
+    /// The state.
+    pub state: crate::report::AnyState,
+    /// Its arm, for a contour family.
+    pub arm: Option<usize>,
+    /// Whether it lies beyond its arm's first fold in ā.
+    pub beyond_size_fold: bool,
+}
+
+/// What a curve ends with once its states are made
+/// ([`Choice::curve_each`]).
+pub(crate) struct CurveEnd {
+    /// The folds met.
+    pub folds: Vec<crate::report::AnyFold>,
+    /// How the arms end, for a contour family.
+    pub end: Option<String>,
+}
+
 impl Choice {
     /// The curve of `points` states from δ̄ = `delta_start` past the
     /// pull-off (the paper's Figs. 6–8); the exact solution gives states at
     /// given loads instead.
     pub fn curve(&self, rho: f64, points: usize, delta_start: f64) -> crate::Result<CurveAnswer> {
+        let (mut states, mut arm, mut beyond_size_fold) = (Vec::new(), Vec::new(), Vec::new());
+        let end = self.curve_each(rho, points, delta_start, &mut |p| {
+            states.push(p.state);
+            arm.extend(p.arm);
+            beyond_size_fold.push(p.beyond_size_fold);
+            Ok(())
+        })?;
+        let arms = end.end.map(|end| Arms {
+            arm,
+            beyond_size_fold,
+            end,
+        });
+        Ok(CurveAnswer {
+            states,
+            folds: end.folds,
+            arms,
+        })
+    }
+
+    /// [`Choice::curve`], handing each state to `each` in order as it is
+    /// made: the curve is traced and its folds located first, then its
+    /// states are made one at a time, so nothing of the size of `points`
+    /// is kept (the command line streams them).
+    pub(crate) fn curve_each(
+        &self,
+        rho: f64,
+        points: usize,
+        delta_start: f64,
+        each: &mut dyn FnMut(CurvePoint) -> crate::Result<()>,
+    ) -> crate::Result<CurveEnd> {
         use crate::report::{AnyFold, AnyState};
         Ok(match *self {
             Choice::Ellipse(m) => {
                 let c = crate::Contact::with_model(m, rho)?;
-                let cv = crate::curve::trace(&c, points, delta_start)?;
-                CurveAnswer {
-                    states: cv.states.into_iter().map(AnyState::Ellipse).collect(),
-                    folds: cv.folds.into_iter().map(AnyFold::from).collect(),
-                    arms: None,
+                let folds = crate::curve::trace_each(&c, points, delta_start, &mut |st| {
+                    each(CurvePoint {
+                        beyond_size_fold: st.beyond_size_fold,
+                        state: AnyState::Ellipse(st),
+                        arm: None,
+                    })
+                })?;
+                CurveEnd {
+                    folds: folds.into_iter().map(AnyFold::from).collect(),
+                    end: None,
                 }
             }
             Choice::Contour(m) => {
-                let cv = m.curve(rho, points, delta_start)?;
-                CurveAnswer {
-                    states: cv.states.into_iter().map(AnyState::Conformal).collect(),
-                    folds: cv.folds.into_iter().map(AnyFold::from).collect(),
-                    arms: Some(Arms {
-                        arm: cv.arm,
-                        beyond_size_fold: cv.beyond_size_fold,
-                        end: cv.end,
-                    }),
+                let (folds, end) = m.curve_each(rho, points, delta_start, &mut |st, arm, beyond| {
+                    each(CurvePoint {
+                        state: AnyState::Conformal(st),
+                        arm: Some(arm),
+                        beyond_size_fold: beyond,
+                    })
+                })?;
+                CurveEnd {
+                    folds: folds.into_iter().map(AnyFold::from).collect(),
+                    end: Some(end),
                 }
             }
             Choice::Exact => {

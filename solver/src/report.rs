@@ -350,16 +350,23 @@ pub(crate) struct ErrorBody {
     /// `out_of_range`, `no_convergence`, `unresolved`, `no_state`, `usage`,
     /// `unsupported`, `io` or `unavailable`.
     pub kind: String,
-    /// The message, as the command line prints it.
+    /// The message, as the command line prints it: at most 300
+    /// characters.
     pub message: String,
+    /// The whole record, where the message is shortened from it (an
+    /// exact request's routes each add theirs); `--explain` prints it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub record: Option<String>,
 }
 
 #[cfg(feature = "cli")]
 impl From<&Error> for ErrorBody {
     fn from(e: &Error) -> Self {
+        let (message, whole) = (e.brief(), e.to_string());
         ErrorBody {
             kind: e.kind().into(),
-            message: e.to_string(),
+            record: (message != whole).then_some(whole),
+            message,
         }
     }
 }

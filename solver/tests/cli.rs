@@ -581,3 +581,100 @@ fn an_angle_that_prints_as_its_limit_is_its_limit() {
     let (ok, _, err) = at("90.001");
     assert!(!ok && err.contains("theta_deg = 90.001"), "{err}");
 }
+
+/// `curve` writes each state as it is made (issue 72): its JSON, written
+/// in pieces, is the document the library's curve makes (states, folds
+/// and, for a contour family, how its arms end), for a model of the
+/// ellipse and a contour family.
+#[test]
+fn a_streamed_curve_is_the_librarys_curve() {
+    for model in ["max", "conformal:8"] {
+        let (ok, out, err) = thinjkr(&[
+            "curve", "--rho", "0.8", "--points", "30", "--model", model, "--format", "json",
+        ]);
+        assert!(ok, "{model}: {err}");
+        assert_eq!(out.lines().count(), 1, "{model}: one line of JSON");
+        let got: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let cv = thinjkr::registry::parse(model)
+            .unwrap()
+            .curve(0.8, 30, 20.0)
+            .unwrap();
+        let mut want = serde_json::json!({ "states": cv.states, "folds": cv.folds });
+        if let Some(arms) = cv.arms {
+            want["end"] = serde_json::Value::String(arms.end);
+        }
+        assert_eq!(got, want, "{model}");
+    }
+}
+
+/// `curve --points 100000` (the most) keeps its peak memory under 100 MB
+/// (it took 511 MB for `max` when the curve was held whole before it was
+/// written), and writes every state: a header and 100,000 lines.
+#[test]
+// the child is reaped by wait4, which gives its own peak memory
+#[allow(clippy::zombie_processes)]
+fn a_curve_of_the_most_points_streams_in_bounded_memory() {
+    use std::io::BufRead;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(["curve", "--rho", "0.8", "--points", "100000"])
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("runs");
+    let lines = std::io::BufReader::new(child.stdout.take().expect("piped"))
+        .lines()
+        .count();
+    // the child's own peak (not every child's of this process)
+    let mut status = 0;
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    let pid = child.id() as libc::pid_t;
+    let waited = unsafe { libc::wait4(pid, &mut status, 0, &mut usage) };
+    assert_eq!(waited, pid);
+    assert!(libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0);
+    assert_eq!(lines, 100_001);
+    // ru_maxrss is in kilobytes on Linux
+    let peak_mb = usage.ru_maxrss as f64 / 1024.0;
+    assert!(peak_mb < 100.0, "peak memory {peak_mb:.0} MB");
+}
+
+/// Below the exact solver's floor (ρ = 0.0141, where its pull-off's follow
+/// in ρ stops converging) a state at any control is refused at once as
+/// `no_state`, naming the floor and the slender limit, in one line of at
+/// most 300 characters; `--explain` gives the whole record (issue 72:
+/// these took 121 s and 78 s, with messages of 2,563 characters).
+#[test]
+fn below_the_exact_floor_a_state_is_refused_at_once_in_one_short_line() {
+    for args in [
+        &["exact", "solve", "--rho", "1e-300", "--delta", "2"][..],
+        &["exact", "zero-force", "--rho", "5e-324"][..],
+        &[
+            "solve", "--model", "exact", "--rho", "0.001", "--force", "0",
+        ][..],
+    ] {
+        let (ok, out, err) = thinjkr(args);
+        assert!(!ok && out.is_empty(), "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let line = err.trim_end().strip_prefix("thinjkr: error: ").unwrap();
+        assert!(line.chars().count() <= 300, "{args:?}: {line}");
+        for words in ["below rho = 0.0140633", "--model slender", "--explain"] {
+            assert!(line.contains(words), "{args:?}: {line}");
+        }
+        let mut explained = vec!["--explain"];
+        explained.extend_from_slice(args);
+        let (_, _, whole) = thinjkr(&explained);
+        assert!(
+            whole.contains("solver/data/exact_pull_offs.json") && whole.len() > err.len(),
+            "{whole}"
+        );
+        // JSON: the brief message and the whole record beside it
+        let mut json = args.to_vec();
+        json.push("--json");
+        let (_, out, _) = thinjkr(&json);
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["error"]["kind"], "no_state");
+        assert_eq!(v["error"]["message"].as_str().unwrap(), line);
+        assert!(v["error"]["record"]
+            .as_str()
+            .unwrap()
+            .contains("exact_pull_offs.json"));
+    }
+}

@@ -1168,74 +1168,126 @@ pub fn main() -> ExitCode {
         // a closed pipe: the reader has what it wanted; end quietly
         Err(_) if output::broken_pipe() => ExitCode::from(output::BROKEN_PIPE_STATUS),
         Err(e) => {
-            errln!("thinjkr: error: {e}");
+            // in at most 300 characters; --explain: the whole record
+            let words = if output::explain() {
+                e.to_string()
+            } else {
+                e.brief()
+            };
+            errln!("thinjkr: error: {words}");
             ExitCode::FAILURE
         }
     }
 }
 
-/// `thinjkr curve`: the branch from δ̄ = 20 past pull-off, as CSV or JSON.
+/// `thinjkr curve`: the branch from δ̄ = 20 past pull-off, as CSV or JSON,
+/// written state by state as each is made (its memory does not grow with
+/// `--points`), with a count of the states on a terminal.
 fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) -> crate::Result<()> {
     const DELTA_START: f64 = 20.0;
-    let cv = model.curve(rho, points, DELTA_START)?;
-    if let Format::Json = format {
-        let doc = Document::Curve {
-            states: cv.states,
-            folds: cv.folds,
-            end: cv.arms.map(|a| a.end),
-        };
-        outln!("{}", doc.to_json());
-        return Ok(());
+    let json = matches!(format, Format::Json);
+    let spinner = output::Spinner::start("tracing the curve");
+    let bar = {
+        use std::io::IsTerminal;
+        std::io::stderr().is_terminal().then(|| {
+            let b = indicatif::ProgressBar::hidden();
+            b.set_length(points as u64);
+            b.set_style(
+                indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} states, {elapsed}")
+                    .expect("template"),
+            );
+            b
+        })
+    };
+    let mut first = true;
+    let mut spinner = Some(spinner);
+    let end = model.curve_each(rho, points, DELTA_START, &mut |p| {
+        if first {
+            // the trace is done: the states follow
+            drop(spinner.take());
+            if let Some(b) = &bar {
+                b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            }
+            if json {
+                out!("{CURVE_JSON_HEAD}");
+            } else {
+                outln!("model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load,warning");
+            }
+        }
+        if json {
+            let st = serde_json::to_string(&p.state).expect("the output types serialise");
+            out!("{}{st}", if first { "" } else { "," });
+        } else {
+            outln!("{}", curve_row(&p));
+        }
+        first = false;
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+        Ok(())
+    })?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
     }
-    outln!(
-        "model,delta,force,a,s,bc_error,beyond_size_fold,stable_displacement,stable_load,warning"
-    );
-    let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
-    for (i, st) in cv.states.iter().enumerate() {
-        // the numbers as a batch row has them (bc_error: (14) for the
-        // ellipse, max |dp/dnu - 1| on the contour otherwise)
-        let r = crate::batch::Row::from(st);
-        let (name, beyond, stable) = match st {
-            AnyState::Ellipse(e) => (
-                e.model.name().to_string(),
-                e.beyond_size_fold,
-                (e.stability.stable_displacement, e.stability.stable_load),
-            ),
-            AnyState::Conformal(c) => (
-                c.model.clone(),
-                cv.arms
-                    .as_ref()
-                    .and_then(|a| a.beyond_size_fold.get(i).copied())
-                    .unwrap_or(false),
-                (Some(c.stable_displacement), Some(c.stable_load)),
-            ),
-            AnyState::Exact(e) => (
-                "exact".into(),
-                false,
-                (e.stability.stable_displacement, e.stability.stable_load),
-            ),
-            AnyState::Slender(sl) => (
-                sl.model.to_string(),
-                false,
-                (Some(sl.stable_displacement), Some(sl.stable_load)),
-            ),
-            AnyState::Layer(l) => (
-                "layer".into(),
-                false,
-                (Some(l.delta_slope > 0.0), Some(l.force_slope > 0.0)),
-            ),
-        };
-        outln!(
-            "{name},{},{},{},{},{},{beyond},{},{},{}",
-            r.delta_bar,
-            r.force_bar,
-            r.a_bar,
-            r.s,
-            r.bc_error,
-            flag(stable.0),
-            flag(stable.1),
-            crate::batch::quoted(&r.warning)
-        );
+    if json {
+        // the document's own JSON with its states left out, after the
+        // states written: the same text as the whole document's
+        let doc = Document::Curve {
+            states: Vec::new(),
+            folds: end.folds,
+            end: end.end,
+        }
+        .to_json();
+        let rest = doc
+            .strip_prefix(CURVE_JSON_HEAD)
+            .expect("a curve's JSON opens with its states");
+        outln!("{rest}");
     }
     Ok(())
+}
+
+/// How a curve's JSON opens: its states first ([`Document::Curve`]).
+const CURVE_JSON_HEAD: &str = "{\"states\":[";
+
+/// One line of `thinjkr curve`'s CSV: the numbers as a batch row has them
+/// (bc_error: (14) for the ellipse, max |dp/dnu - 1| on the contour
+/// otherwise), the state's stability and its warning.
+fn curve_row(p: &crate::registry::CurvePoint) -> String {
+    let st = &p.state;
+    let r = crate::batch::Row::from(st);
+    let flag = |v: Option<bool>| v.map(|b| b.to_string()).unwrap_or_default();
+    let (name, stable) = match st {
+        AnyState::Ellipse(e) => (
+            e.model.name().to_string(),
+            (e.stability.stable_displacement, e.stability.stable_load),
+        ),
+        AnyState::Conformal(c) => (
+            c.model.clone(),
+            (Some(c.stable_displacement), Some(c.stable_load)),
+        ),
+        AnyState::Exact(e) => (
+            "exact".into(),
+            (e.stability.stable_displacement, e.stability.stable_load),
+        ),
+        AnyState::Slender(sl) => (
+            sl.model.to_string(),
+            (Some(sl.stable_displacement), Some(sl.stable_load)),
+        ),
+        AnyState::Layer(l) => (
+            "layer".into(),
+            (Some(l.delta_slope > 0.0), Some(l.force_slope > 0.0)),
+        ),
+    };
+    format!(
+        "{name},{},{},{},{},{},{},{},{},{}",
+        r.delta_bar,
+        r.force_bar,
+        r.a_bar,
+        r.s,
+        r.bc_error,
+        p.beyond_size_fold,
+        flag(stable.0),
+        flag(stable.1),
+        crate::batch::quoted(&r.warning)
+    )
 }

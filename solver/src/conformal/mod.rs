@@ -1480,6 +1480,26 @@ impl Conformal {
         trace::curve(self, rho, points, delta_start)
     }
 
+    /// [`Conformal::curve`], handing each state to `each` as it is made
+    /// (with its arm and whether it lies beyond its arm's first fold in ā);
+    /// returns the folds and how the arms end.
+    pub(crate) fn curve_each(
+        &self,
+        rho: f64,
+        points: usize,
+        delta_start: f64,
+        each: &mut dyn FnMut(ConformalState, usize, bool) -> Result<()>,
+    ) -> Result<(Vec<CurveFold>, String)> {
+        let rho = check_rho(self.family, rho)?;
+        check_range(
+            "points",
+            points as f64,
+            (2..=crate::curve::MAX_POINTS).contains(&points),
+            "2 ..= 100000",
+        )?;
+        trace::curve_each(self, rho, points, delta_start, each)
+    }
+
     /// The state record at x, with its checks.
     pub(crate) fn state(&self, x: &DVector<f64>, rho: f64) -> Result<ConformalState> {
         let k = self.terms();

@@ -12,7 +12,7 @@
 //! dδ̄/dσ). Folds in ā passed on the way are reported.
 //!
 //! Owns: [`Extremum`], [`to_extremum`], [`to_nearby_extremum`],
-//! [`to_force_on_the_pull_off_arm`], [`Curve`], [`CurveFold`], [`curve`].
+//! [`to_force_on_the_pull_off_arm`], [`Curve`], [`CurveFold`], [`curve`], [`curve_each`].
 //! May use: `fold`, `control` (the quantity a crossing watches),
 //! the parent module,
 //! `equations` (the family of the one model interface), `continuation`,
@@ -347,6 +347,38 @@ fn arm(
 /// from. `points` states in all, spaced evenly
 /// in arclength and shared among the arms by length.
 pub(crate) fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
+    let (mut states, mut arm, mut beyond_size_fold) = (Vec::new(), Vec::new(), Vec::new());
+    let (folds, end) = curve_each(m, rho, points, delta_start, &mut |st, a, beyond| {
+        states.push(st);
+        arm.push(a);
+        beyond_size_fold.push(beyond);
+        Ok(())
+    })?;
+    Ok(Curve {
+        states,
+        arm,
+        beyond_size_fold,
+        folds,
+        end,
+    })
+}
+
+/// [`curve`], handing each state to `each` in order as it is made, with
+/// its arm and whether it lies beyond its arm's first fold in ā; returns
+/// the folds and how the arms end. The arms are traced and their folds
+/// located first, then the states are made one at a time, so nothing of
+/// the size of `points` is kept (the command line streams them). Where
+/// more points are asked for than the trace was made for (its step is at
+/// least 1e-3), each is corrected onto its own arclength from the traced
+/// point before it ([`continuation::at_arclength`]). An error of `each`
+/// ends the curve with it.
+pub(crate) fn curve_each(
+    m: &Conformal,
+    rho: f64,
+    points: usize,
+    delta_start: f64,
+    each: &mut dyn FnMut(super::ConformalState, usize, bool) -> Result<()>,
+) -> Result<(Vec<CurveFold>, String)> {
     let start = m.solve(rho, super::Hold::Delta(delta_start))?;
     let mut x0 = DVector::from_vec(start.coefficients.clone());
     x0 = x0.push(start.delta_bar);
@@ -356,6 +388,8 @@ pub(crate) fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) ->
     down[n - 1] = -1.0;
     // at least four traced points per output point
     let max_step = (0.25 * (start.a_bar + delta_start.abs()) / points as f64).clamp(1e-3, 0.1);
+    // the most points the trace is made fine enough for
+    let traced_for = (0.25 * (start.a_bar + delta_start.abs()) / 1e-3).floor() as usize;
     let settings = Settings {
         step: max_step.min(0.02),
         min_step: 1e-10,
@@ -414,50 +448,6 @@ pub(crate) fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) ->
             )),
         }
     }
-    // resample each arm evenly in arclength, the points shared by length
-    let lengths: Vec<Vec<f64>> = arms
-        .iter()
-        .map(|(pts, _)| {
-            let mut arc = vec![0.0];
-            for k in 1..pts.len() {
-                arc.push(arc[k - 1] + (&pts[k].u - &pts[k - 1].u).norm());
-            }
-            arc
-        })
-        .collect();
-    let total: f64 = lengths
-        .iter()
-        .map(|a| a.last().copied().unwrap_or(0.0))
-        .sum();
-    let mut states = Vec::with_capacity(points);
-    let mut arm_of = Vec::with_capacity(points);
-    let mut beyond_of = Vec::with_capacity(points);
-    let mut left = points;
-    for (i, ((pts, beyond), arc)) in arms.iter().zip(&lengths).enumerate() {
-        let len = arc.last().copied().unwrap_or(0.0);
-        let share = if i + 1 == arms.len() {
-            left
-        } else {
-            (((points as f64) * len / total.max(f64::MIN_POSITIVE)).round() as usize)
-                .clamp(2.min(left), left)
-        };
-        left -= share;
-        let mut j = 0;
-        for p in 0..share {
-            let target = if share > 1 {
-                len * p as f64 / (share - 1) as f64
-            } else {
-                0.0
-            };
-            while j + 1 < arc.len() && arc[j + 1] < target {
-                j += 1;
-            }
-            let k = j.min(pts.len() - 1);
-            states.push(m.state(&pts[k].u, rho)?);
-            arm_of.push(i);
-            beyond_of.push(beyond[k]);
-        }
-    }
     let folds = folds
         .into_iter()
         .map(|(kind, x)| {
@@ -466,12 +456,35 @@ pub(crate) fn curve(m: &Conformal, rho: f64, points: usize, delta_start: f64) ->
                 state: m.state(&x, rho)?,
             })
         })
-        .collect::<Result<_>>()?;
-    Ok(Curve {
-        states,
-        arm: arm_of,
-        beyond_size_fold: beyond_of,
-        folds,
-        end: ends.join("; "),
-    })
+        .collect::<Result<Vec<_>>>()?;
+    // each arm spaced evenly in arclength, the points shared by length
+    let trails: Vec<Vec<DVector<f64>>> = arms
+        .iter()
+        .map(|(pts, _)| pts.iter().map(|p| p.u.clone()).collect())
+        .collect();
+    let length = |t: &[DVector<f64>]| t.windows(2).map(|w| (&w[1] - &w[0]).norm()).sum::<f64>();
+    let total: f64 = trails.iter().map(|t| length(t)).sum();
+    let family = branch(m, rho, false);
+    let mut left = points;
+    for (i, ((pts, beyond), trail)) in arms.iter().zip(&trails).enumerate() {
+        let share = if i + 1 == arms.len() {
+            left
+        } else {
+            (((points as f64) * length(trail) / total.max(f64::MIN_POSITIVE)).round() as usize)
+                .clamp(2.min(left), left)
+        };
+        left -= share;
+        for (j, sigma) in continuation::spaced(trail, share) {
+            if points <= traced_for || sigma == 0.0 {
+                each(m.state(&pts[j].u, rho)?, i, beyond[j])?;
+            } else {
+                let (p, q) = (&pts[j], &pts[j + 1]);
+                let x = continuation::at_arclength(&family, settings, p, q, sigma)?;
+                let past =
+                    beyond[j] || (beyond[j + 1] && continuation::past_size_fold(p, q, sigma));
+                each(m.state(&x, rho)?, i, past)?;
+            }
+        }
+    }
+    Ok((folds, ends.join("; ")))
 }

@@ -353,6 +353,10 @@ pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
 /// [`at_resolved`] on `gap`.
 pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
     by_delta_or_force(control)?;
+    let asked = format!("state at {control}");
+    if let Some(below) = super::stored::below_the_floor(gap, rho, &asked) {
+        return Err(below);
+    }
     // the escalation's best state, where it resolves one without converging
     let mut best: Option<ExactState> = None;
     let mut keep_best = |st: &ExactState| {

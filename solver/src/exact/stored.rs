@@ -22,7 +22,7 @@
 //! taken and the pull-off is followed from ρ = 0.3 as before.
 //!
 //! Owns: [`STORED_FROM_RHO`], [`Stored`], [`StoredPullOff`], [`Prediction`],
-//! [`pull_off`], [`store`]. May use: its parent `exact` (`resolve`'s follow and
+//! [`pull_off`], [`below_the_floor`], [`store`]. May use: its parent `exact` (`resolve`'s follow and
 //! escalation), `error`.
 
 #[cfg(feature = "cli")]
@@ -170,21 +170,10 @@ pub(crate) fn pull_off(gap: Gap, rho: f64) -> Option<Result<ExactState>> {
     if gap != Gap::CYLINDERS || !(rho > 0.0 && rho < STORED_FROM_RHO) {
         return None;
     }
-    let table = stored()?;
-    let last_rung = super::resolve::ARCLENGTH_ESCALATION.last().copied();
-    let at_last_rung = table
-        .pull_offs
-        .last()
-        .is_some_and(|p| Some(p.truncation.modes) == last_rung);
-    if at_last_rung && rho < table.reached - super::resolve::SMALLEST_RHO_STEP {
-        return Some(Err(Error::StopsInRho {
-            reached: table.reached,
-            what: format!(
-                "{} (as `thinjkr exact store-pull-offs` followed it, with the most modes the solver accepts; solver/data/exact_pull_offs.json)",
-                table.why_stopped
-            ),
-        }));
+    if let Some(below) = below_the_floor(gap, rho, "pull-off") {
+        return Some(Err(below));
     }
+    let table = stored()?;
     if let Some(found) = predicted(table, rho).and_then(|p| p.pull_off(gap, rho).ok()) {
         return Some(Ok(found));
     }
@@ -195,6 +184,43 @@ pub(crate) fn pull_off(gap: Gap, rho: f64) -> Option<Result<ExactState>> {
         .min_by(|p, q| p.rho.total_cmp(&q.rho))?;
     let start = nearest.state(gap).ok()?;
     Some(super::resolve::pull_off_followed_in_arclength(&start, rho))
+}
+
+/// Where `rho` lies below the floor of the cylinders' exact solver: below
+/// where the stored follow of the pull-off stopped converging (by more
+/// than the follow's smallest step in ρ), with its last pull-off already
+/// at the escalation's last rung, the follow is not tried again: the
+/// store's own follow, from that pull-off with the same escalation, failed
+/// at every step it tried down to the smallest (a minute's work with 320
+/// modes). No state at any control is sought there either: below
+/// ρ = 0.18 the states the routes find lie on the pull-off's own piece
+/// (docs/exact.md, "Where it stops"), and the routes took minutes to say
+/// they found none (`exact solve --rho 1e-300 --delta 2`: 121 s; `exact
+/// zero-force --rho 5e-324`: 78 s).
+/// The store's reason is the answer, typed ([`Error::StopsInRho`]), for
+/// `asked` (the pull-off, or a state at a control); `None` above the
+/// floor, for another gap, or where the file cannot be read.
+pub(crate) fn below_the_floor(gap: Gap, rho: f64, asked: &str) -> Option<Error> {
+    if gap != Gap::CYLINDERS {
+        return None;
+    }
+    let table = stored()?;
+    let last_rung = super::resolve::ARCLENGTH_ESCALATION.last().copied();
+    let at_last_rung = table
+        .pull_offs
+        .last()
+        .is_some_and(|p| Some(p.truncation.modes) == last_rung);
+    (at_last_rung && rho < table.reached - super::resolve::SMALLEST_RHO_STEP).then(|| {
+        Error::StopsInRho {
+            reached: table.reached,
+            what: format!(
+                "no exact {asked} is sought at rho = {}: below rho = {} the exact solver seeks none (its pull-off, followed down in rho with the most modes the solver accepts by `thinjkr exact store-pull-offs`, stops there: {}; solver/data/exact_pull_offs.json); the slender limit (--model slender) is the model for rho → 0",
+                crate::error::short(rho),
+                crate::error::short(table.reached),
+                table.why_stopped
+            ),
+        }
+    })
 }
 
 /// How far in ā from a [`Prediction`] the minimum found from it may lie
@@ -404,7 +430,7 @@ mod tests {
         match pull_off(Gap::cylinders(), 0.01) {
             Some(Err(Error::StopsInRho { reached, what })) => {
                 assert_eq!(reached, table.reached);
-                assert!(what.starts_with(&table.why_stopped), "{what}");
+                assert!(what.contains(&table.why_stopped), "{what}");
                 assert!(what.contains("solver/data/exact_pull_offs.json"), "{what}");
             }
             other => panic!("{:?}", other.map(|r| r.map(|st| st.rho))),
