@@ -572,6 +572,7 @@ pub fn registry_outputs(
                 "trace_start_a": f.trace_start_a,
                 "on_exact_gap": on_exact_gap,
                 "seeds_exact": f.seeds_exact,
+                "doubtful_defects": f.doubtful_defects,
                 "tables": format!("{}/tables.json", f.name),
                 "tables_digest": tables_digest,
             }))
@@ -625,6 +626,7 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
             let rho_min_why = &f.rho_min_why;
             let trace = Literal::f64_unsuffixed(f.trace_start_a);
             let seeds = f.seeds_exact;
+            let lines = f.doubtful_defects.iter().map(|v| Literal::f64_unsuffixed(*v));
             let terms = conformal::particular_terms(&f.particular)?;
             let terms = terms.iter().map(|[x, y, mu, dbar, num, den]| {
                 let [x, y, mu, dbar] = [x, y, mu, dbar].map(|v| Literal::u8_unsuffixed(*v as u8));
@@ -646,6 +648,7 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
                     trace_start_a: #trace,
                     on_exact_gap: #on_exact_gap,
                     seeds_exact: #seeds,
+                    doubtful_defects: &[#(#lines),*],
                     members: &super::#module::MEMBERS,
                     particular_terms: &[#(#terms),*],
                 }

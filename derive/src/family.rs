@@ -63,6 +63,8 @@ struct Raw {
     trace_start_a: f64,
     #[serde(default)]
     seeds_exact: bool,
+    #[serde(default)]
+    doubtful_defects: Vec<f64>,
 }
 
 /// One family, read and checked.
@@ -88,6 +90,11 @@ pub struct Family {
     pub trace_start_a: f64,
     /// Whether its largest member seeds the exact solver of its gap.
     pub seeds_exact: bool,
+    /// For each member K (in order), the boundary defect max |∂p̄/∂ν − 1|
+    /// above which its state is warned as doubtful, measured against the
+    /// exact solution (docs/accuracy.md); empty: not measured (the
+    /// solver's default line).
+    pub doubtful_defects: Vec<f64>,
     /// The data file, relative to the workspace root.
     pub source: PathBuf,
 }
@@ -271,6 +278,23 @@ pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
             raw.trace_start_a
         ));
     }
+    let lines = &raw.doubtful_defects;
+    if !lines.is_empty() && lines.len() != raw.powers.len() {
+        return Err(format!(
+            "{at}: doubtful_defects gives {} lines; it must give one per member ({}), or none",
+            lines.len(),
+            raw.powers.len()
+        ));
+    }
+    if let Some((k, v)) = lines
+        .iter()
+        .enumerate()
+        .find(|(_, v)| !(**v > 0.0 && **v <= 1.0))
+    {
+        return Err(format!(
+            "{at}: doubtful_defects[{k}] = {v} must lie in (0, 1] (a boundary defect max |dp/dnu - 1|)"
+        ));
+    }
     for (key, e) in [("gap", &raw.gap), ("particular", &raw.particular)] {
         crate::sym::try_ex(e)
             .map(drop)
@@ -287,6 +311,7 @@ pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
         rho_min_why: raw.rho_min_why,
         trace_start_a: raw.trace_start_a,
         seeds_exact: raw.seeds_exact,
+        doubtful_defects: raw.doubtful_defects,
         source: source.to_path_buf(),
     })
 }

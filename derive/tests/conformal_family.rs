@@ -133,6 +133,16 @@ fn a_bad_family_file_is_refused_naming_the_file_and_the_key() {
             "gap does not parse",
         ),
         ("rho_min = 0.5", "rho_min = 0.5\nspeed = 3", "speed"),
+        (
+            "rho_min = 0.5",
+            "rho_min = 0.5\ndoubtful_defects = [0.1]",
+            "one per member (3)",
+        ),
+        (
+            "rho_min = 0.5",
+            "rho_min = 0.5\ndoubtful_defects = [0.1, 0, 0.2]",
+            "doubtful_defects[1]",
+        ),
         ("rho_min = 0.5", "", "rho_min"),
     ];
     for (from, to, word) in cases {

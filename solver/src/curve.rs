@@ -19,7 +19,7 @@
 //! memory does not grow with its points.
 //!
 //! Owns: [`Curve`], [`Fold`], [`trace`], [`trace_each`], [`TRACED_FOR`]. May use: `contact`, `equations`,
-//! `fold`, `continuation`, `error`.
+//! `fold`, `continuation`, `error`, `model` (its tests: the residuals a state solves).
 
 use crate::contact::{Contact, State};
 use crate::continuation::{self, End, EventKind, On, Settings, Watch};

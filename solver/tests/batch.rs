@@ -283,11 +283,11 @@ fn a_doubtful_batch_row_says_why_in_its_warning_column() {
         assert_eq!(fields(row), 14, "{row}");
     }
     assert!(
-        lines[1].ends_with("(compare `thinjkr exact solve`)\""),
+        lines[1].ends_with(": compare `thinjkr exact solve`\""),
         "{}",
         lines[1]
     );
-    assert!(lines[1].contains(",,\"the state misses the boundary condition (3)2 by up to 0.21"));
+    assert!(lines[1].contains(",,\"the state misses the boundary condition (3)2 by up to 0.20667"));
     assert!(lines[2].ends_with(",,"), "{}", lines[2]);
     assert!(
         lines[3].starts_with("4,,,") && lines[3].ends_with("\","),

@@ -125,6 +125,8 @@ struct Entry {
     on_exact_gap: bool,
     #[serde(default)]
     seeds_exact: bool,
+    #[serde(default)]
+    doubtful_defects: Vec<f64>,
     particular_terms: Vec<[i64; 6]>,
     tables: String,
     /// The digest of the bytes of `tables`.
@@ -293,6 +295,15 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     let t: TablesFile =
         serde_json::from_str(&text).map_err(|err| format!("{}: {err}", path.display()))?;
     let members = tables(t).map_err(|why| format!("{}: {why}", path.display()))?;
+    let lines = &e.doubtful_defects;
+    if !(lines.is_empty() || lines.len() == members.len())
+        || lines.iter().any(|v| !(*v > 0.0 && *v <= 1.0))
+    {
+        return Err(format!(
+            "doubtful_defects must give one boundary defect in (0, 1] per member ({}), or none",
+            members.len()
+        ));
+    }
     Ok(Box::leak(Box::new(Family {
         name: leak(e.name),
         kind: leak(e.kind),
@@ -307,6 +318,7 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
         // whether it seeds the exact solver of its gap: decided by the
         // caller against the families already there
         seeds_exact: e.seeds_exact,
+        doubtful_defects: Box::leak(e.doubtful_defects.into_boxed_slice()),
         members,
         particular_terms,
     })))

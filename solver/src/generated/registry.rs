@@ -17,6 +17,16 @@ pub static CONTOUR_FAMILIES: [crate::conformal::Family; 1] = [
         trace_start_a: 2.6,
         on_exact_gap: true,
         seeds_exact: true,
+        doubtful_defects: &[
+            0.053,
+            0.00065,
+            0.01,
+            0.0042,
+            0.00042,
+            0.00046,
+            0.0015,
+            0.011,
+        ],
         members: &super::conformal::MEMBERS,
         particular_terms: &[
             crate::exact::gap::Term {
