@@ -51,6 +51,7 @@ pub mod layer;
 pub mod limits;
 pub mod model;
 pub mod newton;
+pub(crate) mod progress;
 pub mod registry;
 pub mod report;
 pub(crate) mod slender;

@@ -13,8 +13,8 @@
 //! command chooses its brief lines and its whole text by it).
 //!
 //! Owns: [`line`], [`text`], [`finish`], [`err_line`], [`explain`], the `outln!`/`out!`/
-//! `errln!` macros. May use:
-//! `crate::Error`.
+//! `errln!` macros, `Spinner`. May use:
+//! `crate::Error`, `progress` (the stage a spinner shows).
 
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -187,7 +187,9 @@ macro_rules! out {
 }
 
 /// A spinner on standard error while long work runs, when that is a
-/// terminal; cleared when dropped (before the results are printed).
+/// terminal, with the stage the computation says it is in
+/// (`crate::progress`); cleared when dropped (before the results are
+/// printed).
 pub(crate) struct Spinner(Option<indicatif::ProgressBar>);
 
 impl Spinner {
@@ -196,9 +198,17 @@ impl Spinner {
         use std::io::IsTerminal;
         Spinner(std::io::stderr().is_terminal().then(|| {
             let b = indicatif::ProgressBar::new_spinner();
+            // the computation's own stage and count, read at each tick
+            let stage = |_: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+                let now = crate::progress::now();
+                if !now.is_empty() {
+                    let _ = write!(w, ": {now}");
+                }
+            };
             b.set_style(
-                indicatif::ProgressStyle::with_template("{spinner} {msg}, {elapsed}")
-                    .expect("template"),
+                indicatif::ProgressStyle::with_template("{spinner} {msg}{stage}, {elapsed}")
+                    .expect("template")
+                    .with_key("stage", stage),
             );
             b.set_message(what.to_string());
             b.enable_steady_tick(std::time::Duration::from_millis(200));

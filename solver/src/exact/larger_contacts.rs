@@ -13,7 +13,7 @@
 //!
 //! Owns: [`from_larger_contacts`]. May use: `exact` (the
 //! problem, `branch`'s trace through folds), `control`, `error`, `newton`
-//! (the stop request).
+//! (the stop request), `progress` (the stage a spinner shows).
 
 use super::branch::{ArmEnd, PAST_FOLD_STEPS};
 use super::{Exact, ExactState, Truncation};
@@ -79,6 +79,10 @@ pub(crate) fn from_larger_contacts(
     for k in 1..=SIZES {
         crate::newton::check_stop()?;
         let a_bar = start.a_bar + SIZE_STEP * k as f64;
+        crate::progress::stage(format!(
+            "the arm of the larger contact a = {a_bar:.2} from rho = {} ({k} of {SIZES})",
+            rounded(start.rho)
+        ));
         let Ok(here) = at_start.solve_at(Hold::Size(a_bar), &guess.contour, guess.delta_bar) else {
             tried.push(format!(
                 "a = {a_bar:.2}: none at rho = {}",

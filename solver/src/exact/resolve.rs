@@ -9,7 +9,8 @@
 //!
 //! Owns: [`CONVERGED`], [`RESOLVED`], [`default_tries`], [`resolved`],
 //! [`pull_off_resolved`], [`at_resolved`], [`at_searched`],
-//! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`, `newton` (the
+//! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`, `progress` (the
+//! stage a spinner shows), `newton` (the
 //! caller's stop flag).
 
 use super::rho_path::Followed;
@@ -357,6 +358,7 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
     if let Some(below) = super::stored::below_the_floor(gap, rho, &asked) {
         return Err(below);
     }
+    crate::progress::stage(format!("the seed's state at {control} and its family"));
     // the escalation's best state, where it resolves one without converging
     let mut best: Option<ExactState> = None;
     let mut keep_best = |st: &ExactState| {
@@ -373,6 +375,7 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         // either: the same routes follow)
         Err(e @ (Error::NoState(_) | Error::NoConvergence { .. })) => {
             let why = e.detail();
+            crate::progress::stage("a state at a larger rho to continue from");
             state_above(gap, rho, control)
                 .and_then(|start| {
                     from_larger_rho(&start, rho, control).or_else(|more| match more {
@@ -383,6 +386,7 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
                     })
                 })
                 .or_else(|more| {
+                    crate::progress::stage("the seed's screen for every near-elliptic state");
                     screened(gap, rho, control).map_err(|last| match more {
                         Error::PastRhoFold { fold, from, what } => Error::PastRhoFold {
                             fold,
@@ -501,7 +505,12 @@ fn below_the_fold(
     }
     let tries = arclength_tries();
     let mut stone = at_resolved_on(gap, tenth(fold), control).map_err(Some)?;
-    for _ in 0..RUNGS {
+    for rung in 1..=RUNGS {
+        crate::progress::stage(format!(
+            "below the fold in rho at {}: rung {rung} of {RUNGS}, from rho = {}",
+            crate::error::rounded(fold),
+            crate::error::short(stone.rho)
+        ));
         let (fold, from, what) = match continued_in_rho_along(&stone, rho, control, &tries) {
             Ok(st) => return Ok(st),
             Err(Error::PastRhoFold { fold, from, what }) => (fold, from, what),
@@ -673,6 +682,11 @@ pub(crate) fn from_larger_contact(
     control: Hold,
 ) -> Result<ExactState> {
     let gap = start.gap;
+    crate::progress::stage(format!(
+        "the arms of contacts larger than a = {} from rho = {}",
+        crate::error::rounded(start.a_bar),
+        crate::error::short(start.rho)
+    ));
     let arm = larger_contacts::from_larger_contacts(start, rho, control)?;
     let tries: Vec<Truncation> = arclength_tries()
         .into_iter()
@@ -734,7 +748,13 @@ fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
     (1..)
         .map(|k| ((rho + 0.1 * k as f64) * 1e6).round() / 1e6)
         .take_while(|&above| above < 1.0)
-        .find_map(|above| solve(above).ok())
+        .find_map(|above| {
+            crate::progress::stage(format!(
+                "a state at rho = {} to continue from",
+                crate::error::short(above)
+            ));
+            solve(above).ok()
+        })
 }
 
 /// The state at `control` at `rho`, continued in ρ at that control from
@@ -776,6 +796,12 @@ pub(crate) fn continued_in_rho_along(
     while st.rho > rho {
         crate::newton::check_stop()?;
         let next = (st.rho - step).max(rho);
+        crate::progress::stage(format!(
+            "continued in rho at {control} from rho = {}: at rho = {}, {} modes",
+            crate::error::short(start.rho),
+            crate::error::rounded(next),
+            tries[k].modes
+        ));
         let ex = Exact::on(start.gap, next, tries[k])?.deferring_stability();
         match ex.solve_at(control, &st.contour, st.delta_bar) {
             Ok(n) if n.bc_error <= CONVERGED => {
@@ -960,6 +986,12 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
         crate::newton::check_stop()?;
         let next = (at.rho - step).max(rho);
         let t = Truncation::in_arclength(ARCLENGTH_ESCALATION[k]);
+        crate::progress::stage(format!(
+            "the pull-off followed in rho from rho = {}: at rho = {}, {} modes of each sign",
+            crate::error::short(start.rho),
+            crate::error::rounded(next),
+            t.modes
+        ));
         // where the previous pull-off has narrow grooves, its points
         // crowded into them, and the gauge that keeps them there
         let crowded = at.contour.crowded_at_groove(t.modes);
