@@ -13,12 +13,12 @@
 //! of degree d in (ā³, δ̄ā); the corrector's convergence test is on the
 //! step, which is scale-free.
 //!
-//! Output finer than the trace: past [`TRACED_FOR`] points each state is
+//! Output finer than the trace: past `TRACED_FOR` points each state is
 //! corrected onto its own arclength from the traced point before it, and
-//! the states are handed out one at a time ([`trace_each`]), so a curve's
+//! the states are handed out one at a time (`trace_each`), so a curve's
 //! memory does not grow with its points.
 //!
-//! Owns: [`Curve`], [`Fold`], [`trace`], [`trace_each`], [`TRACED_FOR`]. May use: `contact`, `equations`,
+//! Owns: [`Curve`], [`Fold`], [`trace`], `trace_each`, `TRACED_FOR`. May use: `contact`, `equations`,
 //! `fold`, `continuation`, `error`, `model` (its tests: the residuals a state solves).
 
 use crate::contact::{Contact, State};

@@ -1,7 +1,11 @@
 //! Typed errors of the solver: bad input names the parameter and its allowed
 //! range; non-convergence says where.
 //!
-//! Owns: [`Error`], [`BRIEF`] (a message as a person reads it). May use: nothing else in the crate.
+//! Owns: [`Error`], `BRIEF` (a message as a person reads it). May use: nothing else in the crate.
+
+// the brief form of a message is the command line's (a library user reads
+// the whole `Display` text)
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
 
 /// Everything that can go wrong in thinjkr.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -164,7 +168,7 @@ impl Error {
 }
 
 /// `text` in at most `limit` characters, as [`Error::brief`] shortens it.
-pub(crate) fn fitted(text: &str, limit: usize) -> String {
+fn fitted(text: &str, limit: usize) -> String {
     let count = |s: &str| s.chars().count();
     if count(text) <= limit {
         return text.to_string();

@@ -7,6 +7,9 @@
 //!
 //! Owns: [`stage`], [`now`]. May use: nothing else in the crate.
 
+// read by the command line's spinner
+#![cfg_attr(not(feature = "cli"), allow(dead_code))]
+
 use std::sync::Mutex;
 
 static STAGE: Mutex<String> = Mutex::new(String::new());

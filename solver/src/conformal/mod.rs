@@ -109,7 +109,7 @@ pub struct Family {
     /// state is warned as doubtful: the smallest defect at which a state of
     /// docs/accuracy.md's rows is more than 0.5 % off in ā against the
     /// exact solution. Empty where its data file does not say: then
-    /// [`DOUBTFUL_DEFECT`] for every member.
+    /// `DOUBTFUL_DEFECT` (0.1) for every member.
     pub doubtful_defects: &'static [f64],
     /// Its members, by K.
     pub members: &'static [Tables],
@@ -180,6 +180,8 @@ pub fn families() -> &'static [&'static Family] {
 
 /// Why a family named by `THINJKR_FAMILIES` was left out, where this run
 /// loaded the families (`None` where it needed none: no file was read).
+// (read by the command line's main)
+#[cfg_attr(not(feature = "cli"), allow(dead_code))]
 pub(crate) fn problems_if_loaded() -> Option<&'static [String]> {
     REGISTRY.get().map(|r| r.problems.as_slice())
 }
