@@ -413,7 +413,9 @@ fn exact_sweep(rho: &[f64]) {
 /// grid (25 values of ρ from 0.4 to 1, the controls but the size): where
 /// both answer and a member's ā is more than 1 % off the exact state's, the
 /// member's state carries the boundary-defect warning (issue 72, item 5:
-/// its line, measured on docs/accuracy.md's rows, holds over the sweep).
+/// its line, measured on docs/accuracy.md's rows, holds over the sweep),
+/// or it lies within 0.5 % of another exact state at its control (it is
+/// that state, on another arm than the exact solver's answer).
 #[test]
 #[ignore = "slow tier (.ci/slow): the exact sweep's solves, about 80 s"]
 fn every_member_state_of_the_sweep_more_than_one_per_cent_off_the_exact_one_is_warned() {
@@ -421,7 +423,8 @@ fn every_member_state_of_the_sweep_more_than_one_per_cent_off_the_exact_one_is_w
     let rho = exact_grid();
     let exact = parse("exact").unwrap();
     let mut compared = 0;
-    let mut off = Vec::new();
+    // (what, |error in a|, defect, warned) of every member state compared
+    let mut seen = Vec::new();
     for hold in CONTROLS.into_iter().filter(|h| !matches!(h, Hold::Size(_))) {
         let solved: Vec<_> = rho.par_iter().map(|&r| exact.state(r, hold)).collect();
         for (&r, answer) in rho.iter().zip(solved) {
@@ -433,27 +436,60 @@ fn every_member_state_of_the_sweep_more_than_one_per_cent_off_the_exact_one_is_w
                     continue;
                 };
                 compared += 1;
-                let error = st.a_bar / ex.a_bar - 1.0;
-                if error.abs() > 1e-2 {
-                    off.push(format!(
-                        "{name} {hold} rho {r:.4}: a off by {error:.3e}, defect {:.2e}",
-                        st.bc_defect
-                    ));
-                    assert!(
-                        st.warnings.iter().any(|w| w.contains("misses the boundary condition (3)2")),
-                        "{name} at {hold}, rho = {r}: a = {} against the exact {}, {error:.2e} off, defect {:.2e}, no warning: {:?}",
+                let warned = st
+                    .warnings
+                    .iter()
+                    .any(|w| w.contains("misses the boundary condition (3)2"));
+                seen.push((
+                    (
+                        format!(
+                            "{name} {hold} rho {r:.4}: a = {} against the exact {}",
+                            st.a_bar, ex.a_bar
+                        ),
+                        r,
+                        hold,
                         st.a_bar,
-                        ex.a_bar,
-                        st.bc_defect,
-                        st.warnings
-                    );
-                }
+                    ),
+                    (st.a_bar / ex.a_bar - 1.0).abs(),
+                    st.bc_defect,
+                    warned,
+                ));
             }
         }
     }
-    println!(
-        "{compared} states compared; more than 1 % off, each warned:\n{}",
-        off.join("\n")
-    );
+    for (what, error, defect, warned) in seen.iter().filter(|x| x.1 > 5e-3) {
+        println!(
+            "{}: {error:.2e} off, defect {defect:.2e}, warned {warned}",
+            what.0
+        );
+    }
+    // a state more than 1 % off the exact solver's answer and not warned
+    // must lie near another exact state at its control (the family has
+    // several at some controls: the exact answer at F̄ = 10, ρ = 0.609 lies
+    // on another arm, its route "past a fold", the sweep above); every
+    // near-elliptic exact state there, screened for ā from 1 to 4
+    // (`exact solve --all`), is asked for one within 0.5 % in ā
+    let silent: Vec<_> = seen.iter().filter(|x| x.1 > 1e-2 && !x.3).collect();
+    for (what, error, defect, _) in silent {
+        let (r, hold, a_bar) = (what.1, what.2, what.3);
+        let all =
+            thinjkr::exact::bands::states_at(r, hold, 1.0, 4.0, &thinjkr::exact::default_tries())
+                .unwrap_or_else(|e| panic!("{}: the exact states at its control: {e}", what.0));
+        let nearest = all
+            .states
+            .iter()
+            .map(|ex| (ex.a_bar / a_bar - 1.0).abs())
+            .fold(f64::INFINITY, f64::min);
+        println!(
+            "{}: {error:.2e} off the exact answer, defect {defect:.2e}, not warned; the nearest of the {} exact states at its control is {nearest:.2e} off",
+            what.0,
+            all.states.len()
+        );
+        assert!(
+            nearest <= 5e-3,
+            "{}: more than 1 % off the exact answer without a warning, and {nearest:.2e} off the nearest exact state at its control",
+            what.0
+        );
+    }
     assert!(compared >= 200, "{compared} states compared");
 }

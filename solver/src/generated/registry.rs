@@ -21,11 +21,11 @@ pub static CONTOUR_FAMILIES: [crate::conformal::Family; 1] = [
             0.053,
             0.00065,
             0.01,
-            0.0042,
+            0.0037,
             0.00042,
             0.00046,
             0.0015,
-            0.011,
+            0.0031,
         ],
         members: &super::conformal::MEMBERS,
         particular_terms: &[
