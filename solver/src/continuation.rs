@@ -312,10 +312,19 @@ where
     gd: OVector<f64, D>,
 }
 
-impl<D: Size, F: Family<D>> Engine<'_, D, F>
+impl<'a, D: Size, F: Family<D>> Engine<'a, D, F>
 where
     DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
+    fn new(family: &'a F, settings: Settings) -> Self {
+        Engine {
+            family,
+            settings,
+            ga: family.a_bar_gradient(),
+            gd: family.delta_bar_gradient(),
+        }
+    }
+
     fn bordered(&self, j: &OMatrix<f64, D, D>, t: &OVector<f64, D>) -> OMatrix<f64, D, D> {
         let mut m = j.clone();
         let n = t.len();
@@ -621,12 +630,7 @@ pub(crate) fn at_arclength<D: Size, F: Family<D>>(
 where
     DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
-    let engine = Engine {
-        family,
-        settings,
-        ga: family.a_bar_gradient(),
-        gd: family.delta_bar_gradient(),
-    };
+    let engine = Engine::new(family, settings);
     let mut p = p.clone();
     if p.t.dot(&(&next.u - &p.u)) < 0.0 {
         p.t = -p.t;
@@ -705,12 +709,7 @@ pub(crate) fn trace<D: Size, F: Family<D>>(
 where
     DefaultAllocator: Allocator<D> + Allocator<D, D>,
 {
-    let engine = Engine {
-        family,
-        settings,
-        ga: family.a_bar_gradient(),
-        gd: family.delta_bar_gradient(),
-    };
+    let engine = Engine::new(family, settings);
     let l0 = family
         .linearise(&start)
         .ok_or_else(|| family.stuck(&start, "the equations are not defined at its start"))?;

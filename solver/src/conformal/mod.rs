@@ -1504,6 +1504,11 @@ impl Conformal {
     /// The curve at `rho` from δ̄ = `delta_start` through the pull-off and
     /// the folds of every mode (the arms of `trace`), `points` states.
     pub fn curve(&self, rho: f64, points: usize, delta_start: f64) -> Result<Curve> {
+        trace::curve(self, self.curve_rho(rho, points)?, points, delta_start)
+    }
+
+    /// ρ and the points of a curve, checked (ρ as the family accepts it).
+    fn curve_rho(&self, rho: f64, points: usize) -> Result<f64> {
         let rho = check_rho(self.family, rho)?;
         check_range(
             "points",
@@ -1511,7 +1516,7 @@ impl Conformal {
             (2..=crate::curve::MAX_POINTS).contains(&points),
             "2 ..= 100000",
         )?;
-        trace::curve(self, rho, points, delta_start)
+        Ok(rho)
     }
 
     /// [`Conformal::curve`], handing each state to `each` as it is made
@@ -1524,14 +1529,13 @@ impl Conformal {
         delta_start: f64,
         each: &mut dyn FnMut(ConformalState, usize, bool) -> Result<()>,
     ) -> Result<(Vec<CurveFold>, String)> {
-        let rho = check_rho(self.family, rho)?;
-        check_range(
-            "points",
-            points as f64,
-            (2..=crate::curve::MAX_POINTS).contains(&points),
-            "2 ..= 100000",
-        )?;
-        trace::curve_each(self, rho, points, delta_start, each)
+        trace::curve_each(
+            self,
+            self.curve_rho(rho, points)?,
+            points,
+            delta_start,
+            each,
+        )
     }
 
     /// The state record at x, with its checks.
