@@ -208,9 +208,12 @@ def test_a_doubtful_state_is_answered_with_a_warning_not_in_silence():
     assert "by up to 0.20667" in many.warning[0] and many.warning[1] == ""
     assert many[0].warning == many.warning[0]
     assert "warning" in many.to_pandas().columns if _has_pandas() else True
+    # pull-offs whose defect lies under conformal:8's line (0.0031,
+    # derive/families/conformal.toml): 1e-4 at rho = 0.8 and 8e-4 at 0.7
+    # (at 0.5 its 0.012 is above the line: warned, though 0.11 % off)
     with warnings.catch_warnings():
         warnings.simplefilter("error", thinjkr.ThinJkrWarning)
-        thinjkr.pull_off([0.8, 0.5], model="conformal:8")
+        thinjkr.pull_off([0.8, 0.7], model="conformal:8")
 
 
 def _has_pandas():
