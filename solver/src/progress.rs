@@ -24,14 +24,3 @@ pub(crate) fn stage(words: impl Into<String>) {
 pub(crate) fn now() -> String {
     STAGE.lock().unwrap_or_else(|p| p.into_inner()).clone()
 }
-
-#[cfg(test)]
-mod tests {
-    /// The newest stage is the one read.
-    #[test]
-    fn the_newest_stage_is_read() {
-        super::stage("first");
-        super::stage(format!("continued in rho: at rho = {}", 0.21));
-        assert_eq!(super::now(), "continued in rho: at rho = 0.21");
-    }
-}

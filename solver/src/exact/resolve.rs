@@ -375,7 +375,6 @@ pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactS
         // either: the same routes follow)
         Err(e @ (Error::NoState(_) | Error::NoConvergence { .. })) => {
             let why = e.detail();
-            crate::progress::stage("a state at a larger rho to continue from");
             state_above(gap, rho, control)
                 .and_then(|start| {
                     from_larger_rho(&start, rho, control).or_else(|more| match more {
