@@ -52,6 +52,7 @@ pub mod limits;
 pub mod model;
 pub mod newton;
 pub(crate) mod progress;
+pub(crate) mod quadrature;
 pub mod registry;
 pub mod report;
 pub(crate) mod slender;

@@ -387,3 +387,78 @@ fn a_file_edited_by_hand_is_refused_by_its_digest() {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+/// Issue 72: a file edited by hand and sealed again (its digests
+/// recomputed, as another tool might write it) is refused by the loader's
+/// check of its algebra, which names the check that failed: a member's
+/// rows cut from 38 to 20, every coefficient of the potential scaled by
+/// 1.01, the gap's text made quartic under the quadratic's particular
+/// solution, and a numerator of i64::MAX. Never reported as "no state".
+#[test]
+fn a_file_edited_and_sealed_again_is_refused_by_its_algebra() {
+    let tables = builtin_tables();
+    let scaled = {
+        let mut t: serde_json::Value = serde_json::from_str(&tables).unwrap();
+        for row in t["potential"].as_array_mut().unwrap() {
+            row[1] = (1.01 * row[1].as_f64().unwrap()).into();
+        }
+        t.to_string()
+    };
+    type Edit = fn(&mut serde_json::Value);
+    let cases: [(&str, Option<String>, Option<Edit>, &str); 4] = [
+        (
+            "rows",
+            Some(tables.replacen("\"potential_rows\": 38,", "\"potential_rows\": 20,", 1)),
+            None,
+            "member 2: its table of the potential is not its algebra",
+        ),
+        (
+            "scaled",
+            Some(scaled),
+            None,
+            "member 1: its table of the potential is not its algebra",
+        ),
+        (
+            "quartic-text",
+            None,
+            Some(|e| e["gap"] = "X^2/2 + mu*Y^2/2 + X^4/24".into()),
+            "its particular solution does not solve ΔP = φ − dbar for its gap",
+        ),
+        (
+            "huge-numerator",
+            None,
+            Some(|e| e["particular_terms"][3][4] = i64::MAX.into()),
+            "its particular solution does not solve ΔP = φ − dbar for its gap",
+        ),
+    ];
+    for (tag, edited_tables, edit_entry, says) in cases {
+        let dir = folder(&format!("algebra-{tag}"), "edited", &tables);
+        if let Some(t) = edited_tables {
+            assert_ne!(t, tables, "{tag}: the case changes the file");
+            std::fs::write(dir.join("edited/tables.json"), t).unwrap();
+        }
+        if let Some(edit) = edit_entry {
+            let path = dir.join("registry.json");
+            let mut r: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+            edit(&mut r["families"][0]);
+            std::fs::write(&path, r.to_string()).unwrap();
+        }
+        seal(&dir);
+        let (ok, out, err) = thinjkr(&dir, &["models"]);
+        assert!(
+            ok && out.contains("conformal:8") && !out.contains("edited:"),
+            "{tag}: {out}"
+        );
+        assert!(
+            !err.contains("digest") && err.contains(says),
+            "{tag}: {err}"
+        );
+        let (ok, _, err) = thinjkr(&dir, &["pull-off", "--rho", "0.8", "--model", "edited:2"]);
+        assert!(
+            !ok && err.contains(says) && !err.contains("no "),
+            "{tag}: {err}"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

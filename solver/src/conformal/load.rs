@@ -16,11 +16,13 @@
 //! characters escaped, the packing must be the solver's, every member's rows must be a
 //! prefix of the family's tables in the generator's order, with no exponent
 //! of a map coefficient the member does not have, and the map's powers must
-//! be odd and distinct. A family that fails is left out, and the reason is
+//! be odd and distinct; then its algebra is checked by numbers
+//! ([`super::algebra`]: the gap's text against the particular solution,
+//! each member's tables against a quadrature). A family that fails is left out, and the reason is
 //! kept ([`super::load_problems`]) for every front end to show.
 //!
 //! Owns: reading `registry.json` and `tables.json`. May use: `conformal`
-//! (`Family`, `Tables`, `poly`'s packing), `exact` (the gap's terms, checked
+//! (`Family`, `Tables`, `poly`'s packing, `algebra`'s check), `exact` (the gap's terms, checked
 //! as the exact solver checks them), `model` and `slender` (the built-in
 //! models' names), serde_json.
 
@@ -295,6 +297,9 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     let t: TablesFile =
         serde_json::from_str(&text).map_err(|err| format!("{}: {err}", path.display()))?;
     let members = tables(t).map_err(|why| format!("{}: {why}", path.display()))?;
+    // the algebra, whatever the digest says (a table sealed again after an
+    // edit, or written by another tool)
+    super::algebra::check(&e.gap, &e.particular, particular_terms, members)?;
     let lines = &e.doubtful_defects;
     if !(lines.is_empty() || lines.len() == members.len())
         || lines.iter().any(|v| !(*v > 0.0 && *v <= 1.0))

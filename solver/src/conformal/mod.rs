@@ -30,6 +30,7 @@
 //! short-wave cutoff of the stability verdicts), `contour_modes` (the
 //! stability's eigenproblem and the modes' names), nalgebra.
 
+mod algebra;
 pub(crate) mod load;
 mod seed;
 #[cfg(feature = "figures")]

@@ -136,14 +136,24 @@ impl Gap {
         keys.dedup();
         for k in keys {
             let (mut num, mut den) = (0i128, 1i128);
+            // exact where it fits in i128; a sum that overflows is refused
+            // (no family's coefficients come near: a hostile file's may)
+            let mut fits = true;
             for t in lap_p1.iter().filter(|t| (t.0, t.1, t.2) == k) {
-                num = num * t.4 + t.3 * den;
-                den *= t.4;
-                let g = gcd(num, den);
-                (num, den) = (num / g, den / g);
+                let next = num
+                    .checked_mul(t.4)
+                    .zip(t.3.checked_mul(den))
+                    .and_then(|(a, b)| a.checked_add(b))
+                    .zip(den.checked_mul(t.4));
+                let Some((n, d)) = next else {
+                    fits = false;
+                    break;
+                };
+                let g = gcd(n, d);
+                (num, den) = (n / g, d / g);
             }
             let want = if k == (0, 0, 0) { -1 } else { 0 };
-            if num != want * den {
+            if !fits || num != want * den {
                 return Err(bad(
                     "its dbar part P1 does not satisfy ΔP1 = −1 (P must solve ΔP = φ − dbar)"
                         .into(),
@@ -457,6 +467,23 @@ impl GapAt {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 72: coefficients near i64::MAX, whose exact sum of ΔP₁'s terms
+    /// overflows i128, are refused (they panicked in a debug build and
+    /// wrapped in a release one).
+    #[test]
+    fn coefficients_whose_exact_sum_overflows_are_refused() {
+        const M: i64 = i64::MAX;
+        const TERMS: &[Term] = &[term(2, 0, 0, 1, M - 1, M), term(0, 2, 0, 1, M - 3, M - 2)];
+        let terms = TERMS;
+        let gap = Gap {
+            name: "huge",
+            particular: terms,
+            seed: None,
+        };
+        let e = gap.at(1.0).expect_err("refused");
+        assert!(e.to_string().contains("ΔP1 = −1"), "{e}");
+    }
 
     /// The cylinders' gap gives (22)–(25) and the neutral points
     /// ā³ = 4(n − 1), and its polynomials are those of the paper's gap.

@@ -27,12 +27,12 @@
 //! measure the truncation.
 //!
 //! Owns: `Solution`, `solve_with`, `modes_for`. May use: the parent (`layer`: the
-//! coatings), `generated` (the layer's kernel), `error`.
+//! coatings), `generated` (the layer's kernel), `error`, `quadrature` (Gauss–Legendre).
 
 use super::bessel::orders;
-use super::quadrature::GaussLegendre;
 use super::Layers;
 use crate::error::{rounded, short, Error, Result};
+use crate::quadrature::GaussLegendre;
 use nalgebra::{DMatrix, DVector};
 use rayon::prelude::*;
 

@@ -23,12 +23,11 @@
 //! first in the tests.
 //!
 //! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`], `Controlled`. May use:
-//! `control` (what a state is held at), `error`, `generated` (the layer's kernel), `model` (Brent's minimum).
+//! `control` (what a state is held at), `error`, `quadrature` (Gauss–Legendre), `generated` (the layer's kernel), `model` (Brent's minimum).
 
 mod bessel;
 mod energy;
 mod galerkin;
-mod quadrature;
 
 use crate::control::Hold;
 use crate::error::{check_range, rounded, short, Error, Result};
