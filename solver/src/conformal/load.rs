@@ -576,5 +576,48 @@ mod tests {
                 families.len()
             );
         }
+
+        /// Issue 72, without the digest: a corrupted tables.json sealed
+        /// again (its digests recomputed, as a tool that rewrites it
+        /// might) is refused by the loader's other checks, its algebra's
+        /// among them, or its members answer as the clean file's do: Π̄
+        /// and its gradient at a contact's point to 1e-8 of their terms'
+        /// sizes (a digit changed far down a coefficient moves them by
+        /// less; anything the check lets through can move them by no more
+        /// than its tolerance, 1e-9).
+        #[test]
+        fn a_corrupted_file_sealed_again_is_refused_or_answers_alike(c in corruption()) {
+            let (registry, tables) = (generated("registry.json"), generated("conformal/tables.json"));
+            let bad = corrupt(&tables, &c);
+            let mut r: serde_json::Value = serde_json::from_str(&registry).unwrap();
+            r["families"][0]["tables_digest"] = super::digest(bad.as_bytes()).into();
+            r["digest"] = super::digest(r["families"].to_string().as_bytes()).into();
+            let dir = folder("resealed", &r.to_string(), &bad);
+            let (families, problems) = super::load(&dir, &[]);
+            static CLEAN: std::sync::OnceLock<Vec<&'static crate::conformal::Family>> = std::sync::OnceLock::new();
+            let clean = CLEAN.get_or_init(|| super::load(&folder("clean-for-reseal", &registry, &tables), &[]).0);
+            if families.is_empty() {
+                prop_assert!(!problems.is_empty());
+            } else {
+                prop_assert!(problems.is_empty() && families.len() == 1, "{problems:?}");
+                for (got, want) in families[0].members.iter().zip(clean[0].members) {
+                    let k = want.terms;
+                    prop_assert_eq!(got.terms, k);
+                    let cs: Vec<f64> = (0..k).map(|j| if j == 0 { 2.4 } else { 0.05 / j as f64 }).collect();
+                    let at = |t: &crate::conformal::Tables, abs: bool| {
+                        let rows: Vec<(u64, f64)> = t.potential[..t.potential_rows]
+                            .iter()
+                            .map(|&(p, v)| (p, if abs { v.abs() } else { v }))
+                            .collect();
+                        crate::conformal::poly::evaluate(&crate::conformal::poly::Decoded::new(&rows, k), &cs, 0.5, 1.25, 1)
+                    };
+                    let (g, w, size) = (at(got, false), at(want, false), at(want, true));
+                    prop_assert!((g.value - w.value).abs() <= 1e-8 * size.value, "{c:?}: K = {k}, {} vs {}", g.value, w.value);
+                    for i in 0..=k {
+                        prop_assert!((g.grad[i] - w.grad[i]).abs() <= 1e-8 * size.grad[i].abs().max(size.value), "{c:?}: K = {k}, gradient {i}");
+                    }
+                }
+            }
+        }
     }
 }
