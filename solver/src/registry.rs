@@ -289,10 +289,8 @@ fn layers_of(
         shear_modulus: g,
         nu,
     };
-    crate::layer::Layers::new(
-        coating(cyl.h1, cyl.g1, cyl.nu1),
-        coating(cyl.h2, cyl.g2, cyl.nu2),
-    )
+    let (nu1, nu2) = cyl.poisson()?;
+    crate::layer::Layers::new(coating(cyl.h1, cyl.g1, nu1), coating(cyl.h2, cyl.g2, nu2))
 }
 
 /// The relative error of the thin-layer answer `thin` against the layer's

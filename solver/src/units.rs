@@ -130,6 +130,17 @@ fn positive(name: &'static str, v: f64) -> Result<f64> {
 }
 
 impl Cylinders {
+    /// Poisson's ratios (ν₁, ν₂), each in [0, 0.5] after the rounding that
+    /// prints it (ν = 0.5000001 is 0.5: it had been refused as "nu1 = 0.5 is
+    /// outside its allowed range [0, 0.5]").
+    pub(crate) fn poisson(&self) -> Result<(f64, f64)> {
+        let nu = |name: &'static str, v: f64| {
+            let v = at_limit(v, 0.5);
+            check_range(name, v, (0.0..=0.5).contains(&v), "[0, 0.5]")
+        };
+        Ok((nu("nu1", self.nu1)?, nu("nu2", self.nu2)?))
+    }
+
     /// Validate the inputs and compute R₁, R₂, ρ, m and the scales of (17).
     /// 1/R₁ + 1/R₂ = 1/r₁ + 1/r₂ and R₁R₂ = r₁r₂/sin²θ, with R₂ ≤ R₁.
     pub fn scales(&self) -> Result<Scales> {
@@ -147,9 +158,7 @@ impl Cylinders {
         let g1 = positive("g1", self.g1)?;
         let g2 = positive("g2", self.g2)?;
         let dg = positive("work_of_adhesion", self.work_of_adhesion)?;
-        for (name, nu) in [("nu1", self.nu1), ("nu2", self.nu2)] {
-            check_range(name, nu, (0.0..=0.5).contains(&nu), "[0, 0.5]")?;
-        }
+        self.poisson()?;
         let sin2 = th.to_radians().sin().powi(2);
         // curvatures k = 1/R are the roots of k² − (1/r1 + 1/r2) k + sin²θ/(r1 r2) = 0
         let sum = 1.0 / r1 + 1.0 / r2;

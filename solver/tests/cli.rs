@@ -582,6 +582,25 @@ fn an_angle_that_prints_as_its_limit_is_its_limit() {
     assert!(!ok && err.contains("theta_deg = 90.001"), "{err}");
 }
 
+/// Issue 72, the same for Poisson's ratio: ν = 0.5000001 prints as 0.5
+/// and is 0.5 (it had been refused as "nu1 = 0.5 is outside its allowed
+/// range [0, 0.5]"); 0.5001 prints as itself and is refused.
+#[test]
+fn a_poisson_ratio_that_prints_as_its_limit_is_its_limit() {
+    let at = |nu: &'static str| {
+        let mut args = guide_physical(["1e6", "1e6"]);
+        args.extend(["--nu1", nu, "--json"]);
+        thinjkr(&args)
+    };
+    let (ok, half, err) = at("0.5");
+    assert!(ok, "{err}");
+    let (ok, above, err) = at("0.5000001");
+    assert!(ok, "{err}");
+    assert_eq!(above, half);
+    let (ok, _, err) = at("0.5001");
+    assert!(!ok && err.contains("nu1 = 0.5001"), "{err}");
+}
+
 /// `curve` writes each state as it is made (issue 72): its JSON, written
 /// in pieces, is the document the library's curve makes (states, folds
 /// and, for a contour family, how its arms end), for a model of the
