@@ -22,7 +22,7 @@ use crate::conformal::{Conformal, ConformalState, Family};
 use crate::control::Hold;
 use crate::exact::bands::{Band, BandEdge, BandMap, PROBE_STEP};
 use crate::exact::{
-    at_resolved, at_resolved_on, pull_off_resolved, pull_off_resolved_on, Exact, ExactState, Gap,
+    at_resolved_searching, pull_off_resolved, pull_off_resolved_on, Exact, ExactState, Gap,
     Truncation,
 };
 use crate::fold::FoldCondition;
@@ -113,8 +113,8 @@ pub(crate) fn row_on(family: &'static Family, rho: f64, quantity: Quantity) -> R
     let gap = family.exact_gap();
     let exact = match quantity {
         Quantity::PullOff => pull_off_resolved_on(gap, rho).map(|(s, _)| s),
-        Quantity::ZeroForce => at_resolved_on(gap, rho, Hold::Force(0.0)),
-        Quantity::Force10 => at_resolved_on(gap, rho, Hold::Force(10.0)),
+        Quantity::ZeroForce => at_resolved_searching(gap, rho, Hold::Force(0.0)),
+        Quantity::Force10 => at_resolved_searching(gap, rho, Hold::Force(10.0)),
     };
     Row {
         rho,
@@ -164,8 +164,10 @@ fn refusal_or_words(family: &Family, e: Error) -> String {
 pub(crate) fn row(rho: f64, quantity: Quantity) -> Row {
     let exact = match quantity {
         Quantity::PullOff => pull_off_resolved(rho).map(|(s, _)| s),
-        Quantity::ZeroForce => at_resolved(rho, Hold::Force(0.0)),
-        Quantity::Force10 => at_resolved(rho, Hold::Force(10.0)),
+        // searched, not refused by the map of where the search finds
+        // none: the table says why the search found none
+        Quantity::ZeroForce => at_resolved_searching(Gap::cylinders(), rho, Hold::Force(0.0)),
+        Quantity::Force10 => at_resolved_searching(Gap::cylinders(), rho, Hold::Force(10.0)),
     };
     let models = ModelId::ALL
         .iter()

@@ -152,7 +152,7 @@ impl Error {
 pub(crate) const BRIEF: usize = 300;
 
 /// What a shortened message ends with.
-const MORE: &str = " … (--explain: the whole record)";
+pub(crate) const MORE: &str = " … (--explain: the whole record)";
 
 impl Error {
     /// The message in at most [`BRIEF`] characters: as it is where it

@@ -561,6 +561,43 @@ fn guide_physical(g: [&'static str; 2]) -> Vec<&'static str> {
     ]
 }
 
+/// Issue 72: where the map of where the exact search finds no state
+/// (solver/data/exact_no_state.json) found none at every corner of a
+/// request's cell, the request is refused by the map, without a search:
+/// one line of at most 300 characters that names the map and `--search`
+/// (searched, the first two took 94 s and 84 s). JSON gives the kind
+/// `no_state` and the whole record.
+#[test]
+fn where_the_map_found_none_a_state_is_refused_without_a_search() {
+    for args in [
+        &["exact", "zero-force", "--rho", "0.15"][..],
+        &["solve", "--rho", "0.1", "--force", "0", "--model", "exact"][..],
+        &["exact", "solve", "--rho", "0.13", "--force", "0"][..],
+    ] {
+        let (ok, out, err) = thinjkr(args);
+        assert!(!ok && out.is_empty(), "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let line = err.trim_end().strip_prefix("thinjkr: error: ").unwrap();
+        assert!(line.chars().count() <= 300, "{args:?}: {line}");
+        for words in [
+            "the exact search finds no state",
+            "exact_no_state.json",
+            "--search",
+        ] {
+            assert!(line.contains(words), "{args:?}: {line}");
+        }
+        let mut json = args.to_vec();
+        json.push("--json");
+        let (_, out, _) = thinjkr(&json);
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["error"]["kind"], "no_state");
+        assert!(v["error"]["record"]
+            .as_str()
+            .unwrap()
+            .contains("thinjkr exact store-no-state"));
+    }
+}
+
 /// Issue 72: a limit is checked after the rounding that prints it. A
 /// crossing angle of 90.0000001° prints as 90 and is 90 (it had been
 /// refused as "theta_deg = 90 is outside its allowed range (0, 90]");

@@ -206,6 +206,31 @@ pub(crate) enum ExactCommand {
         #[arg(long)]
         out: std::path::PathBuf,
     },
+    /// Write the map of where the exact search finds no state (solver/data/exact_no_state.json): the search of
+    /// `exact solve` at each force and approach given, at each rho of 0.25, 0.2, 0.175, 0.15, 0.125, 0.1, 0.075
+    /// and 0.05, each stopped after --minutes (hours); a request in a cell of the map that found none at every
+    /// corner is then refused at once. The file is written after each force or approach; a map already there
+    /// (with the same --minutes) is extended: its other lines and its settled cells are kept, its unsettled
+    /// ones searched again.
+    #[command(
+        name = "store-no-state",
+        after_help = "Example:\n  thinjkr exact store-no-state --forces 0,10 --minutes 30 --out solver/data/exact_no_state.json"
+    )]
+    StoreNoState {
+        /// The forces F̄ (comma-separated, at most 50).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        forces: Vec<f64>,
+        /// The approaches δ̄ (comma-separated, at most 50).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        deltas: Vec<f64>,
+        /// The time limit of one search, in minutes (0 < minutes ≤ 1440); a search stopped by it leaves its cell
+        /// unsettled.
+        #[arg(long, default_value_t = 30.0)]
+        minutes: f64,
+        /// Write the JSON here (a new or existing file in an existing folder).
+        #[arg(long)]
+        out: std::path::PathBuf,
+    },
     /// The exact zero-force state.
     #[command(
         name = "zero-force",
@@ -233,7 +258,7 @@ impl ExactCommand {
             | ExactCommand::ZeroForce { json, .. }
             | ExactCommand::Bands { json, .. }
             | ExactCommand::Reach { json, .. } => *json,
-            ExactCommand::StorePullOffs { .. } => false,
+            ExactCommand::StorePullOffs { .. } | ExactCommand::StoreNoState { .. } => false,
         }
     }
 }
@@ -302,6 +327,12 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             json,
             ..
         } => reach(from, to, step, json),
+        ExactCommand::StoreNoState {
+            forces,
+            deltas,
+            minutes,
+            out,
+        } => store_no_state(&forces, &deltas, minutes, &out),
         ExactCommand::StorePullOffs { out } => {
             super::files::check_file(&out)?;
             let stored = crate::exact::stored::store()?;
@@ -1291,6 +1322,68 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
             Err(e) => outln!("  model {m}: {e}"),
         }
     }
+    Ok(())
+}
+
+/// `thinjkr exact store-no-state`: the map computed and written whole.
+fn store_no_state(
+    forces: &[f64],
+    deltas: &[f64],
+    minutes: f64,
+    out: &std::path::Path,
+) -> Result<()> {
+    const MAX_VALUES: usize = 50;
+    for (name, values) in [("forces", forces), ("deltas", deltas)] {
+        if values.len() > MAX_VALUES {
+            return Err(Error::OutOfRange {
+                name,
+                value: values.len() as f64,
+                range: format!("at most {MAX_VALUES} values").into(),
+            });
+        }
+        if let Some(&v) = values.iter().find(|v| !(v.abs() <= 1e6)) {
+            return Err(Error::OutOfRange {
+                name,
+                value: v,
+                range: "[-1e6, 1e6]".into(),
+            });
+        }
+    }
+    if forces.is_empty() && deltas.is_empty() {
+        return Err(Error::Usage("give --forces, --deltas or both".into()));
+    }
+    if !(minutes > 0.0 && minutes <= 1440.0) {
+        return Err(Error::OutOfRange {
+            name: "minutes",
+            value: minutes,
+            range: "(0, 1440]".into(),
+        });
+    }
+    super::files::check_file(out)?;
+    // a map already there is extended, its settled cells kept
+    let previous = std::fs::read_to_string(out)
+        .ok()
+        .and_then(|t| serde_json::from_str::<crate::exact::no_state::NoStateMap>(&t).ok());
+    let mut write = |map: &crate::exact::no_state::NoStateMap| -> Result<()> {
+        let json = serde_json::to_string_pretty(map).expect("plain data serialises");
+        super::files::write_whole(out, (json + "\n").as_bytes())
+    };
+    let map = crate::exact::no_state::store(forces, deltas, minutes, previous, &mut write)?;
+    let count = |f: fn(&crate::exact::no_state::Cell) -> bool| {
+        map.lines
+            .iter()
+            .flat_map(|l| &l.cells)
+            .filter(|c| f(c))
+            .count()
+    };
+    use crate::exact::no_state::Cell;
+    errln!(
+        "thinjkr: {} cells: {} found a state, {} none, {} unsettled",
+        count(|_| true),
+        count(|c| matches!(c, Cell::Found { .. })),
+        count(|c| matches!(c, Cell::None { .. })),
+        count(|c| matches!(c, Cell::Unsettled { .. }))
+    );
     Ok(())
 }
 

@@ -66,6 +66,10 @@ struct Cli {
     /// the models beside an exact answer (without it: the answer, and at most two lines on how far to trust it).
     #[arg(long, global = true)]
     explain: bool,
+    /// An exact state at a force or an approach: search even where the map of where the exact search finds
+    /// none (solver/data/exact_no_state.json, `thinjkr exact store-no-state`) refuses it at once (minutes).
+    #[arg(long, global = true)]
+    search: bool,
 }
 
 #[derive(Subcommand)]
@@ -1134,6 +1138,7 @@ fn thread_pool() -> rayon::ThreadPool {
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     output::set_explain(cli.explain);
+    crate::exact::no_state::SEARCH_ANYWAY.store(cli.search, std::sync::atomic::Ordering::Relaxed);
     let json_mode = wants_json(&cli.command);
     let pool = thread_pool();
     let mut result = output::check_open().and_then(|()| pool.install(|| run(cli)));

@@ -52,6 +52,7 @@ pub(crate) mod gap;
 pub(crate) mod larger_contacts;
 pub(crate) mod linear;
 pub(crate) mod loading;
+pub(crate) mod no_state;
 pub(crate) mod reach;
 mod resolve;
 pub(crate) mod rho_fold;
@@ -75,7 +76,9 @@ pub use resolve::{
     at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
     MAX_USER_MODES,
 };
-pub(crate) use resolve::{at_resolved_on, next_try, pull_off_resolved_on, resolved, RESOLVED};
+pub(crate) use resolve::{
+    at_resolved_searching, next_try, pull_off_resolved_on, resolved, RESOLVED,
+};
 use serde::Serialize;
 
 /// The largest cosine mode of ∂p̄/∂ν − 1 accepted at convergence (the

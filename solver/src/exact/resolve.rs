@@ -351,8 +351,23 @@ pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
     at_resolved_on(Gap::cylinders(), rho, control)
 }
 
-/// [`at_resolved`] on `gap`.
+/// [`at_resolved`] on `gap`: refused at once where the map of where the
+/// search finds no state says so ([`super::no_state`]), else searched.
 pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
+    by_delta_or_force(control)?;
+    let asked = format!("state at {control}");
+    if let Some(below) = super::stored::below_the_floor(gap, rho, &asked) {
+        return Err(below);
+    }
+    if let Some(none) = super::no_state::refusal(gap, rho, control) {
+        return Err(none);
+    }
+    at_resolved_searching(gap, rho, control)
+}
+
+/// [`at_resolved_on`] without the map: every route searched (the map's
+/// own search, and the routes that start from a state at another ρ).
+pub(crate) fn at_resolved_searching(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
     by_delta_or_force(control)?;
     let asked = format!("state at {control}");
     if let Some(below) = super::stored::below_the_floor(gap, rho, &asked) {
@@ -503,7 +518,7 @@ fn below_the_fold(
         return Err(None);
     }
     let tries = arclength_tries();
-    let mut stone = at_resolved_on(gap, tenth(fold), control).map_err(Some)?;
+    let mut stone = at_resolved_searching(gap, tenth(fold), control).map_err(Some)?;
     for rung in 1..=RUNGS {
         crate::progress::stage(format!(
             "below the fold in rho at {}: rung {rung} of {RUNGS}, from rho = {}",

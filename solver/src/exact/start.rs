@@ -83,7 +83,8 @@ pub(crate) fn first_clause(why: &str) -> &str {
 
 /// The resolved exact state at F̄ = [`START_FORCE`] at `rho`.
 pub(crate) fn at_large_load(rho: f64) -> Result<ExactState> {
-    super::at_resolved(rho, Hold::Force(START_FORCE))
+    // searched, not refused by the map (the path's start says why none)
+    super::at_resolved_searching(super::Gap::cylinders(), rho, Hold::Force(START_FORCE))
 }
 
 /// The largest F̄ on the piece through `pull_off` at which its state is
