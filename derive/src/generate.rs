@@ -153,6 +153,19 @@ pub fn workspace_root() -> PathBuf {
         .to_path_buf()
 }
 
+/// The thinjkr checkout that holds `dir`: the nearest of `dir` and its
+/// parents with `derive/families/`, `solver/` and a `Cargo.toml`; `None`
+/// outside one.
+pub fn repository_of(dir: &Path) -> Option<PathBuf> {
+    dir.ancestors()
+        .find(|d| {
+            d.join("derive/families").is_dir()
+                && d.join("solver").is_dir()
+                && d.join("Cargo.toml").is_file()
+        })
+        .map(Path::to_path_buf)
+}
+
 /// Write every output under `root`; returns the paths that changed.
 pub fn write_all(root: &Path, outputs: &[Output]) -> std::io::Result<Vec<PathBuf>> {
     let mut changed = Vec::new();

@@ -1,20 +1,108 @@
-//! `thinjkr-derive`: `check [--json]` holds the paper's printed claims
-//! against the derivation; `generate` writes the generated Rust code and the
-//! reports in `docs/`.
+//! `thinjkr-derive`: `check [--json] [--model NAME]` holds the paper's
+//! printed claims against the derivation; `generate [--root DIR]` writes the
+//! generated Rust code and the reports in `docs/`; `timings` times the
+//! symbolic stages. `--help` (on its own or after a verb) prints help and
+//! does nothing else.
 
 use std::process::ExitCode;
 use thinjkr_derive::model::{Derivation, ModelDerivation};
 use thinjkr_derive::{ansatz, claims};
 
-fn usage() -> ExitCode {
-    eprintln!("usage: thinjkr-derive check [--json] | generate [--root DIR] | timings");
+const HELP: &str = "thinjkr-derive: the derivation of thinjkr's models with symbolica, its checker and its code generator
+
+Usage: thinjkr-derive <VERB> [OPTIONS]
+
+Verbs:
+  check [--json] [--model NAME]  hold the paper's printed claims against the derivation (default model: max)
+  generate [--root DIR]          derive every model and every family of derive/families/, check them, and write
+                                 solver/src/generated/ and the reports in docs/ (tens of seconds)
+  timings                        time each symbolic stage (medians of 5 runs)
+
+Options:
+  -h, --help  this help (after a verb: that verb's); nothing else is done
+
+Example (from the repository's top, reusing the workspace's release build):
+  cargo run --release -p thinjkr-derive -- generate
+";
+
+const GENERATE_HELP: &str = "thinjkr-derive generate: derive every model and every family of derive/families/, check each step, and
+write the generated Rust (solver/src/generated/), the registry and the reports in docs/
+
+Usage: thinjkr-derive generate [--root DIR]
+
+Options:
+  --root DIR  the repository to read derive/families/ from and write into (default: the thinjkr checkout
+              that holds the working directory)
+  -h, --help  this help; nothing is generated
+
+Each file is reported as created, updated, unchanged or removed (a generated file no family writes any more).
+";
+
+const CHECK_HELP: &str =
+    "thinjkr-derive check: hold the paper's printed claims against the derivation
+
+Usage: thinjkr-derive check [--json] [--model NAME]
+
+Options:
+  --json        one JSON document
+  --model NAME  the closure whose derivation the claims are held against (default: max, the paper's)
+  -h, --help    this help; nothing is checked
+";
+
+const TIMINGS_HELP: &str =
+    "thinjkr-derive timings: time each symbolic stage per ansatz (medians of 5 runs)
+
+Usage: thinjkr-derive timings
+";
+
+fn usage(why: &str) -> ExitCode {
+    eprintln!("thinjkr-derive: {why}\nusage: thinjkr-derive check [--json] [--model NAME] | generate [--root DIR] | timings (--help for more)");
     ExitCode::from(2)
+}
+
+/// Whether `args` (after the verb) ask for help.
+fn wants_help(args: &[String]) -> bool {
+    args.iter().skip(1).any(|a| a == "--help" || a == "-h")
+}
+
+/// Every argument after the verb is one `allowed` (a flag) or the value of
+/// one of `with_value`; else the usage error naming it.
+fn known(args: &[String], allowed: &[&str], with_value: &[&str]) -> Result<(), ExitCode> {
+    let mut rest = args.iter().skip(1);
+    while let Some(a) = rest.next() {
+        if with_value.contains(&a.as_str()) {
+            if rest.next().is_none() {
+                return Err(usage(&format!("{a} needs a value")));
+            }
+        } else if !allowed.contains(&a.as_str()) {
+            return Err(usage(&format!("unexpected argument {a:?}")));
+        }
+    }
+    Ok(())
 }
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(String::as_str) {
+        None | Some("--help" | "-h" | "help") => {
+            print!("{HELP}");
+            ExitCode::SUCCESS
+        }
+        Some(verb @ ("check" | "generate" | "timings")) if wants_help(&args) => {
+            print!(
+                "{}",
+                match verb {
+                    "check" => CHECK_HELP,
+                    "generate" => GENERATE_HELP,
+                    _ => TIMINGS_HELP,
+                }
+            );
+            ExitCode::SUCCESS
+        }
         Some("check") => {
+            if let Err(code) = known(&args, &["--json"], &["--model"]) {
+                return code;
+            }
             let json = args.iter().any(|a| a == "--json");
             // `--model NAME`: hold the paper's claims against another
             // closure's derivation (default: the paper's, `max`)
@@ -69,15 +157,26 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Some("generate") => {
+            if let Err(code) = known(&args, &[], &["--root"]) {
+                return code;
+            }
             let t = std::time::Instant::now();
-            // `--root DIR`: the workspace to read families from and write
-            // into (default: this one)
+            // `--root DIR`: the repository to read families from and write
+            // into (default: the checkout that holds the working directory)
             let root = match args.iter().position(|a| a == "--root") {
-                Some(i) => match args.get(i + 1) {
-                    Some(dir) => std::path::PathBuf::from(dir),
-                    None => return usage(),
-                },
-                None => thinjkr_derive::generate::workspace_root(),
+                Some(i) => std::path::PathBuf::from(&args[i + 1]),
+                None => {
+                    let here = std::env::current_dir().unwrap_or_default();
+                    match thinjkr_derive::generate::repository_of(&here) {
+                        Some(root) => root,
+                        None => {
+                            return usage(&format!(
+                                "{} is not inside a thinjkr checkout (no derive/families/ and solver/ above it): run it in one, or give --root DIR",
+                                here.display()
+                            ))
+                        }
+                    }
+                }
             };
             let outputs = match thinjkr_derive::generate::outputs_in(&root) {
                 Ok(o) => o,
@@ -86,6 +185,11 @@ fn main() -> ExitCode {
                     return ExitCode::FAILURE;
                 }
             };
+            // which files were there before: a new one is reported as created
+            let existed: Vec<bool> = outputs
+                .iter()
+                .map(|o| root.join(&o.path).exists())
+                .collect();
             let written =
                 thinjkr_derive::generate::write_all(&root, &outputs).and_then(|changed| {
                     thinjkr_derive::generate::remove_stale(&root, &outputs)
@@ -96,11 +200,11 @@ fn main() -> ExitCode {
                     for p in &gone {
                         println!("{:>9} {}", "removed", p.display());
                     }
-                    for o in &outputs {
-                        let mark = if changed.contains(&o.path) {
-                            "updated"
-                        } else {
-                            "unchanged"
+                    for (o, existed) in outputs.iter().zip(&existed) {
+                        let mark = match (changed.contains(&o.path), *existed) {
+                            (true, false) => "created",
+                            (true, true) => "updated",
+                            (false, _) => "unchanged",
                         };
                         println!("{mark:>9} {}", o.path.display());
                     }
@@ -118,6 +222,9 @@ fn main() -> ExitCode {
             }
         }
         Some("timings") => {
+            if let Err(code) = known(&args, &[], &[]) {
+                return code;
+            }
             // medians of 5 runs of each symbolic stage, per ansatz
             let median = |f: &dyn Fn() -> bool| {
                 let mut v: Vec<f64> = (0..5)
@@ -150,6 +257,6 @@ fn main() -> ExitCode {
             );
             ExitCode::SUCCESS
         }
-        _ => usage(),
+        Some(other) => usage(&format!("unknown verb {other:?}")),
     }
 }
