@@ -734,3 +734,43 @@ fn below_the_exact_floor_a_state_is_refused_at_once_in_one_short_line() {
             .contains("exact_pull_offs.json"));
     }
 }
+
+/// `exact store-no-state` extends a map at --out, and refuses before any
+/// search, leaving the file as it was, where the file there is not a map
+/// or was written with another --minutes (its lines would have been
+/// dropped).
+#[test]
+fn the_no_state_store_never_overwrites_what_it_cannot_extend() {
+    let dir = std::env::temp_dir().join(format!("thinjkr-no-state-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let committed = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/data/exact_no_state.json"
+    ))
+    .unwrap();
+    for (name, text, minutes, says) in [
+        ("notes.json", "my notes\n".to_string(), "25", "is not a map"),
+        ("map.json", committed, "3", "written with --minutes 25"),
+    ] {
+        let path = dir.join(name);
+        std::fs::write(&path, &text).unwrap();
+        let out = path.to_str().unwrap();
+        let (ok, _, err) = thinjkr(&[
+            "exact",
+            "store-no-state",
+            "--forces",
+            "0",
+            "--minutes",
+            minutes,
+            "--out",
+            out,
+        ]);
+        assert!(!ok && err.contains(says), "{name}: {err}");
+        assert_eq!(
+            std::fs::read_to_string(&path).unwrap(),
+            text,
+            "{name} unchanged"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

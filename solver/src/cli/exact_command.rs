@@ -1360,10 +1360,20 @@ fn store_no_state(
         });
     }
     super::files::check_file(out)?;
-    // a map already there is extended, its settled cells kept
-    let previous = std::fs::read_to_string(out)
-        .ok()
-        .and_then(|t| serde_json::from_str::<crate::exact::no_state::NoStateMap>(&t).ok());
+    // a map already there is extended, its settled cells kept; a file there
+    // that is not one is not overwritten
+    let previous = match std::fs::read_to_string(out) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+        Err(e) => return Err(Error::Io(format!("{}: {e}", out.display()))),
+        Ok(t) => Some(
+            serde_json::from_str::<crate::exact::no_state::NoStateMap>(&t).map_err(|e| {
+                Error::Usage(format!(
+                    "{} is there and is not a map of `thinjkr exact store-no-state` ({e}): give another --out",
+                    out.display()
+                ))
+            })?,
+        ),
+    };
     let mut write = |map: &crate::exact::no_state::NoStateMap| -> Result<()> {
         let json = serde_json::to_string_pretty(map).expect("plain data serialises");
         super::files::write_whole(out, (json + "\n").as_bytes())

@@ -132,6 +132,9 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
     let below = lines.iter().rev().find(|l| l.value <= value)?;
     let above = lines.iter().find(|l| l.value >= value)?;
     let mut corners = Vec::new();
+    // the cell of the line at or below the value at or below ρ: what the
+    // search said there
+    let mut nearest: Option<(f64, &str)> = None;
     for line in [below, above] {
         // the cells at or either side of ρ on this line
         let upper = line
@@ -150,7 +153,11 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
                 _ => return None,
             }
         }
+        if let (None, Cell::None { rho, why }) = (nearest, lower) {
+            nearest = Some((*rho, why.as_str()));
+        }
     }
+    let (nearest_rho, first) = nearest?;
     corners.dedup();
     let span = |a: f64, b: f64| {
         if a == b {
@@ -159,16 +166,6 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
             format!("{} … {}", short(a), short(b))
         }
     };
-    let first = match &below.cells.iter().find(|c| c.rho() <= rho) {
-        Some(Cell::None { why, .. }) => why.clone(),
-        _ => String::new(),
-    };
-    let nearest_rho = below
-        .cells
-        .iter()
-        .map(Cell::rho)
-        .filter(|r| *r <= rho)
-        .fold(f64::NEG_INFINITY, f64::max);
     Some(Error::NoState(format!(
         "the exact search finds no state at {name} = {}, rho = {}{} (the map {PATH}; --search searches anyway, for minutes); the map was written by `{}`; at {name} = {}, rho = {} the search said: {first}",
         span(below.value, above.value),
@@ -209,13 +206,18 @@ pub(crate) fn store(
         .map(|&v| Hold::Force(v))
         .chain(deltas.iter().map(|&v| Hold::Delta(v)))
         .collect();
-    let mut map = previous
-        .filter(|p| p.minutes == minutes)
-        .unwrap_or(NoStateMap {
-            generated_by: String::new(),
-            minutes,
-            lines: Vec::new(),
-        });
+    if let Some(p) = previous.as_ref().filter(|p| p.minutes != minutes) {
+        // its lines would be dropped, or kept beside cells of another limit
+        return Err(Error::Usage(format!(
+            "the map being extended was written with --minutes {}: give the same, or write another file",
+            short(p.minutes)
+        )));
+    }
+    let mut map = previous.unwrap_or(NoStateMap {
+        generated_by: String::new(),
+        minutes,
+        lines: Vec::new(),
+    });
     let stop = crate::newton::stop_flag();
     for &control in &asked {
         let (name, value) = key(control).expect("force or delta");
