@@ -189,6 +189,11 @@ fn member(p: &Particular, t: &Tables) -> Result<(), String> {
             )
         })
         .collect();
+    if let Some((n, _, _)) = slopes.iter().find(|(n, _, _)| *n > modes) {
+        return Err(format!(
+            "its boundary slope lists mode {n}, above the {modes} its gap and map can have"
+        ));
+    }
     let thetas: Vec<f64> = (0..n_theta)
         .map(|j| 2.0 * PI * j as f64 / n_theta as f64)
         .collect();
@@ -252,13 +257,16 @@ fn member(p: &Particular, t: &Tables) -> Result<(), String> {
                 rounded(force)
             ));
         }
-        // ∂p̄/∂r at r = 1: ∇P·∂w/∂r, less the harmonic part's m·(a, b)
+        // ∂p̄/∂r at r = 1: ∇P·∂w/∂r, less the harmonic part's m·(a, b);
+        // its size: the largest |∇P|·|∂w/∂r| and the harmonic part's terms
+        let mut gradient_size = 0.0f64;
         let slope: Vec<f64> = thetas
             .iter()
             .map(|&th| {
                 let ((x, y), _) = w(1.0, th);
-                let ((gx, gy), _) = p.gradient(x, y, mu, dbar);
+                let ((gx, gy), size) = p.gradient(x, y, mu, dbar);
                 let (wx, wy) = radial_derivative(&c, t.powers, th);
+                gradient_size = gradient_size.max(size * wx.hypot(wy));
                 let harmonic: f64 = fourier
                     .iter()
                     .enumerate()
@@ -269,14 +277,7 @@ fn member(p: &Particular, t: &Tables) -> Result<(), String> {
                 gx * wx + gy * wy - harmonic
             })
             .collect();
-        let slope_size: f64 = thetas
-            .iter()
-            .map(|&th| {
-                let ((x, y), _) = w(1.0, th);
-                let (wx, wy) = radial_derivative(&c, t.powers, th);
-                p.gradient(x, y, mu, dbar).1 * wx.hypot(wy)
-            })
-            .fold(0.0, f64::max)
+        let slope_size = gradient_size
             + fourier
                 .iter()
                 .enumerate()
@@ -299,11 +300,6 @@ fn member(p: &Particular, t: &Tables) -> Result<(), String> {
                     rounded(a)
                 ));
             }
-        }
-        if let Some((n, _, _)) = slopes.iter().find(|(n, _, _)| *n > modes) {
-            return Err(format!(
-                "its boundary slope lists mode {n}, above the {modes} its gap and map can have"
-            ));
         }
     }
     Ok(())

@@ -354,11 +354,7 @@ pub fn at_resolved(rho: f64, control: Hold) -> Result<ExactState> {
 /// [`at_resolved`] on `gap`: refused at once where the map of where the
 /// search finds no state says so ([`super::no_state`]), else searched.
 pub(crate) fn at_resolved_on(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
-    by_delta_or_force(control)?;
-    let asked = format!("state at {control}");
-    if let Some(below) = super::stored::below_the_floor(gap, rho, &asked) {
-        return Err(below);
-    }
+    // (the map's ρ lie above the floor, which the search checks first)
     if let Some(none) = super::no_state::refusal(gap, rho, control) {
         return Err(none);
     }
