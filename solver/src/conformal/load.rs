@@ -11,7 +11,9 @@
 //! `generate` wrote of it (the registry's entries, each family's tables), be
 //! a regular file inside
 //! the folder once its links are resolved, with no key the generator does
-//! not write; its size is bounded before it is read, a family may not take
+//! not write; its size is bounded before it is read, and so is the folder's
+//! in all ([`MAX_FAMILIES`] families, [`MAX_FOLDER_BYTES`] bytes read,
+//! [`MAX_MEMBERS`] members: each limit named when it refuses), a family may not take
 //! a built-in model's name, its texts are printed with their control
 //! characters escaped, the packing must be the solver's, every member's rows must be a
 //! prefix of the family's tables in the generator's order, with no exponent
@@ -38,8 +40,22 @@ pub(crate) const ENV: &str = "THINJKR_FAMILIES";
 /// The largest `registry.json` read.
 const MAX_REGISTRY_BYTES: u64 = 1 << 20;
 
-/// The largest `tables.json` read (the built-in `conformal`'s is 1.1 MB).
-const MAX_TABLES_BYTES: u64 = 256 << 20;
+/// The largest `tables.json` read (the built-in `conformal`'s is 0.6 MB).
+const MAX_TABLES_BYTES: u64 = 64 << 20;
+
+/// The folder's budget, whatever its files say: the most families its
+/// registry may list (each one file read), the bytes read in all (a table
+/// named by several families counts each time), and the members in all.
+const MAX_FAMILIES: usize = 32;
+const MAX_FOLDER_BYTES: u64 = 128 << 20;
+const MAX_MEMBERS: usize = 128;
+
+/// What the folder has spent of its budget so far.
+#[derive(Default)]
+struct Spent {
+    bytes: u64,
+    members: usize,
+}
 
 // every file is read whole by its schema: a key the generator does not
 // write is an error, as in `generate` (a misspelt key would be ignored)
@@ -228,13 +244,22 @@ pub(crate) fn load(dir: &Path, compiled: &[Family]) -> (Vec<&'static Family>, Ve
             return (out, problems);
         }
     };
+    if registry.families.len() > MAX_FAMILIES {
+        problems.push(format!(
+            "{ENV}: {} lists {} families, more than the {MAX_FAMILIES} a folder may hold; none was read",
+            path.display(),
+            registry.families.len()
+        ));
+        return (out, problems);
+    }
+    let mut spent = Spent::default();
     for entry in registry.families {
         if compiled.iter().any(|f| f.name == entry.name) {
             // a built-in family: this build's tables serve
             continue;
         }
         let name = entry.name.clone();
-        match family(dir, entry) {
+        match family(dir, entry, &mut spent) {
             Ok(f) if out.iter().any(|g: &&Family| g.name == f.name) => {
                 problems.push(format!("{ENV}: family {name} is listed twice"))
             }
@@ -255,7 +280,7 @@ pub(crate) fn load(dir: &Path, compiled: &[Family]) -> (Vec<&'static Family>, Ve
     (out, problems)
 }
 
-fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
+fn family(dir: &Path, e: Entry, spent: &mut Spent) -> Result<&'static Family, String> {
     let ident = !e.name.is_empty()
         && e.name.len() <= 32
         && e.name
@@ -290,13 +315,28 @@ fn family(dir: &Path, e: Entry) -> Result<&'static Family, String> {
     }
     let particular_terms = gap_terms(&e.particular_terms)?;
     let path = dir.join(&e.tables);
-    let text = read_bounded(dir, &path, MAX_TABLES_BYTES)?;
+    let left = MAX_FOLDER_BYTES - spent.bytes;
+    let text = read_bounded(dir, &path, MAX_TABLES_BYTES.min(left)).map_err(|why| {
+        if left < MAX_TABLES_BYTES {
+            format!("{why} (the folder's families may read {MAX_FOLDER_BYTES} bytes in all, and {} were read)", spent.bytes)
+        } else {
+            why
+        }
+    })?;
+    spent.bytes += text.len() as u64;
     if digest(text.as_bytes()) != e.tables_digest {
         return Err(format!("{}: {EDITED}", path.display()));
     }
     let t: TablesFile =
         serde_json::from_str(&text).map_err(|err| format!("{}: {err}", path.display()))?;
     let members = tables(t).map_err(|why| format!("{}: {why}", path.display()))?;
+    if spent.members + members.len() > MAX_MEMBERS {
+        return Err(format!(
+            "its {} members would make more than the {MAX_MEMBERS} a folder's families may have in all",
+            members.len()
+        ));
+    }
+    spent.members += members.len();
     // the algebra, whatever the digest says (a table sealed again after an
     // edit, or written by another tool)
     super::algebra::check(&e.gap, &e.particular, particular_terms, members)?;
