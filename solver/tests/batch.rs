@@ -226,6 +226,24 @@ fn conformal_batch_rows_are_its_states() {
             "{model}: {err}"
         );
     }
+    // one status for a usage error, whether clap or thinjkr finds it (a
+    // request that contradicts itself had status 1); a value out of its
+    // range is a failed request, status 1
+    for (args, code) in [
+        (
+            &["solve", "--rho", "0.8", "--force", "0", "--thinness", "0.1"][..],
+            2,
+        ),
+        (&["solve", "--rho", "0.8", "--force", "0", "--nosuch"], 2),
+        (&["solve", "--rho", "2", "--force", "0"], 1),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+            .args(args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(code), "{args:?}: {err}");
+    }
     let help = Command::new(env!("CARGO_BIN_EXE_thinjkr"))
         .args(["batch", "--help"])
         .output()

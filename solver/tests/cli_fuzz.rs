@@ -39,7 +39,7 @@ fn run(args: &[String]) -> Result<(), TestCaseError> {
                 prop_assert!(!stdout.contains(bad), "{args:?} printed {bad}: {stdout}");
             }
         }
-        // clap's own usage errors exit with 2
+        // usage errors (clap's and thinjkr's) exit with 2
         Some(1) => prop_assert!(stderr.contains("thinjkr: error:"), "{args:?}: {stderr}"),
         Some(2) => prop_assert!(stderr.contains("error:"), "{args:?}: {stderr}"),
         other => prop_assert!(false, "{args:?} ended with {other:?}: {stderr}"),

@@ -89,7 +89,9 @@ fn physical_inputs_at_the_ends_of_f64_are_errors() {
     ] {
         let args = base.replace(from, to);
         let (status, out, err) = bash(&format!("\"$0\" physical {args}"));
-        assert_eq!(status, Some(1), "{args}: {out}{err}");
+        // inputs that cannot be computed together are refused as given:
+        // a usage error, status 2
+        assert_eq!(status, Some(2), "{args}: {out}{err}");
         assert!(
             !out.contains("null") && err.contains("not a finite positive number"),
             "{args}: {err}"
@@ -106,7 +108,11 @@ fn physical_inputs_at_the_ends_of_f64_are_errors() {
     let file = dir.join("c.toml");
     std::fs::write(&file, "r1=0.01\nr2=0.01\ntheta_deg=60\nh1=1e-4\nh2=1e-4\ng1=1e6\ng2=1e6\nwork_of_adhesion=0.05\ncolour=1\n").unwrap();
     let (status, _, err) = bash(&format!("\"$0\" physical --file {}", file.display()));
-    assert_eq!(status, Some(1));
+    assert_eq!(
+        status,
+        Some(2),
+        "a file that is not a contact: a usage error"
+    );
     assert!(
         err.contains("unknown field `colour`") && !err.contains("no contact state"),
         "{err}"
@@ -214,8 +220,10 @@ fn model_and_missing_input_errors_name_what_is_accepted() {
         err.contains("conformal:K") && err.contains("exact"),
         "{err}"
     );
+    // a missing input is a usage error: status 2, as clap's missing
+    // argument is (issue 72: one status for usage errors)
     let (code, _, err) = bash("\"$0\" physical --h1 1e300");
-    assert_eq!(code, Some(1));
+    assert_eq!(code, Some(2));
     assert!(err.contains("--r1") && !err.contains("NaN"), "{err}");
 }
 

@@ -158,7 +158,8 @@ fn an_input_file_is_bounded_and_quoted_briefly() {
             "\"$0\" physical --file {} --force 0{json}",
             file.display()
         ));
-        assert_eq!(status, Some(1));
+        // a file that is not a contact is a usage error (status 2)
+        assert_eq!(status, Some(2));
         assert!(
             err.contains("not a valid contact file") && err.contains("line 9"),
             "{}",

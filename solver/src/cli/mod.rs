@@ -1180,10 +1180,19 @@ pub fn main() -> ExitCode {
                 e.brief()
             };
             errln!("thinjkr: error: {words}");
-            ExitCode::FAILURE
+            // a request that is incomplete or contradictory is a usage
+            // error, with the status clap gives one it cannot parse
+            if matches!(e, crate::Error::Usage(_)) {
+                ExitCode::from(USAGE_STATUS)
+            } else {
+                ExitCode::FAILURE
+            }
         }
     }
 }
+
+/// The exit status of a usage error, ours or clap's.
+const USAGE_STATUS: u8 = 2;
 
 /// `thinjkr curve`: the branch from δ̄ = 20 past pull-off, as CSV or JSON,
 /// written state by state as each is made (its memory does not grow with
