@@ -95,11 +95,16 @@ pyo3::create_exception!(
     _thinjkr,
     RawError,
     PyException,
-    "A solver error: args (kind, message)."
+    "A solver error: args (kind, message, record)."
 );
 
+/// What a shortened message ends with in Python: where the whole is.
+const MORE: &str = " … (its .record: the whole)";
+
+/// A solver error as Python receives it: its kind, the message in at most
+/// 300 characters and the whole record.
 fn raw(e: Error) -> PyErr {
-    RawError::new_err((e.kind(), e.to_string()))
+    RawError::new_err((e.kind(), e.brief_ending(MORE), e.to_string()))
 }
 
 fn usage(message: String) -> PyErr {
@@ -328,7 +333,7 @@ fn solve_many<'py>(
         )));
     }
     let control = control.to_string();
-    let err = |e: Error| (e.kind().to_string(), e.to_string());
+    let err = |e: Error| (e.kind().to_string(), e.brief_ending(MORE));
     // in chunks: between them the call takes the GIL back and checks for
     // signals, so that Ctrl-C raises KeyboardInterrupt within a chunk's
     // time (no partial result); a chunk of the ellipse models is about

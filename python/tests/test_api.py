@@ -212,9 +212,25 @@ def test_pickling_round_trips():
                 thinjkr.solve(0.8, delta=2.0, model="conformal:4"), thinjkr.exact.solve(0.8, force=10.0)]:
         back = pickle.loads(pickle.dumps(obj))
         assert back == obj and type(back) is type(obj)
-    e = thinjkr.NoState("no contact state: x", "no_state")
+    e = thinjkr.NoState("no contact state: x", "no_state", "no contact state: x; the whole")
     back = pickle.loads(pickle.dumps(e))
     assert type(back) is thinjkr.NoState and str(back) == str(e) and back.kind == "no_state"
+    assert back.record == "no contact state: x; the whole"
+
+
+def test_an_error_says_itself_in_300_characters_and_keeps_its_record():
+    """Issue 72: an exception's message is at most 300 characters, as the
+    command line's error is; the whole record (an exact request's every
+    route, 2,563 characters at rho = 1e-300 before its floor) is its
+    ``record``. A message that fits is its own record."""
+    with pytest.raises(thinjkr.NoState) as info:
+        thinjkr.exact.solve(1e-300, delta=2.0)
+    e = info.value
+    assert len(str(e)) <= 300 and str(e).endswith("(its .record: the whole)"), str(e)
+    assert len(e.record) > 300 and e.record.startswith("no contact state: no exact state at delta = 2"), e.record
+    with pytest.raises(thinjkr.InvalidInput) as info:
+        thinjkr.solve(2.0, delta=2.0)
+    assert info.value.record == str(info.value)
 
 
 def test_state_reads_and_prints():

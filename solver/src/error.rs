@@ -163,17 +163,29 @@ impl Error {
     /// characters at ρ = 1e-300 before its floor); the first clause says
     /// what decided.
     pub(crate) fn brief(&self) -> String {
-        fitted(&self.to_string(), BRIEF)
+        self.brief_ending(MORE)
+    }
+
+    /// The message in at most 300 characters, shortened as the command
+    /// line shortens it and then ending with `more` (which says where the
+    /// whole record is in the caller's words: the Python package's
+    /// exception attribute, say). The whole record is the `Display` text.
+    pub fn brief_ending(&self, more: &str) -> String {
+        fitted(&self.to_string(), BRIEF, more)
     }
 }
 
-/// `text` in at most `limit` characters, as [`Error::brief`] shortens it.
-fn fitted(text: &str, limit: usize) -> String {
+/// `text` in at most `limit` characters, as [`Error::brief`] shortens it,
+/// ending with `more` where it is shortened.
+fn fitted(text: &str, limit: usize, more: &str) -> String {
     let count = |s: &str| s.chars().count();
     if count(text) <= limit {
         return text.to_string();
     }
-    let budget = limit.saturating_sub(count(MORE));
+    // the ending is at most a third of the limit, so that the message
+    // keeps room for its first words
+    let more: String = more.chars().take(limit / 3).collect();
+    let budget = limit.saturating_sub(count(&more));
     let clauses = top_level_clauses(text);
     let mut out = String::new();
     for (i, c) in clauses.iter().enumerate() {
@@ -201,7 +213,7 @@ fn fitted(text: &str, limit: usize) -> String {
         }
         out = cut;
     }
-    out + MORE
+    out + &more
 }
 
 /// The clauses of `text`: its pieces between "; " outside parentheses.
@@ -322,13 +334,13 @@ mod tests {
     /// parentheses, and says the record is longer.
     #[test]
     fn a_long_message_keeps_its_first_clauses_within_the_limit() {
-        assert_eq!(fitted("short; and more", 300), "short; and more");
+        assert_eq!(fitted("short; and more", 300, MORE), "short; and more");
         let aside = format!("({})", "x; ".repeat(60));
         let text = format!(
             "no contact state: the family turns back at rho = 0.19 {aside}, so it has no state at rho = 0.1; then the arms: {}; the screen finds none",
             "a = 3.2: stops, ".repeat(40)
         );
-        let brief = fitted(&text, BRIEF);
+        let brief = fitted(&text, BRIEF, MORE);
         assert!(brief.chars().count() <= BRIEF, "{brief}");
         assert_eq!(
             brief,
@@ -338,14 +350,29 @@ mod tests {
         );
         // clauses that fit are kept whole, the first with its aside
         let text = format!("first (a; b); second; {}", "third ".repeat(60));
-        assert_eq!(fitted(&text, BRIEF), format!("first (a; b); second{MORE}"));
+        assert_eq!(
+            fitted(&text, BRIEF, MORE),
+            format!("first (a; b); second{MORE}")
+        );
         // one clause too long even without asides is cut at a word
         let text = "word ".repeat(100);
-        let brief = fitted(&text, BRIEF);
+        let brief = fitted(&text, BRIEF, MORE);
         assert!(
             brief.chars().count() <= BRIEF && brief.ends_with(MORE),
             "{brief}"
         );
         assert!(brief.starts_with("word word"), "{brief}");
+        // another front end's ending, and one too long, still in the limit
+        let e = Error::NoState("word ".repeat(100));
+        let brief = e.brief_ending(" … (e.record: the whole)");
+        assert!(
+            brief.chars().count() <= BRIEF && brief.ends_with("(e.record: the whole)"),
+            "{brief}"
+        );
+        let brief = e.brief_ending(&"!".repeat(400));
+        assert!(
+            brief.chars().count() <= BRIEF && brief.starts_with("no contact state: word"),
+            "{brief}"
+        );
     }
 }

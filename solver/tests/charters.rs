@@ -180,10 +180,12 @@ fn every_module_uses_only_what_its_charter_names() {
 /// `equal`, `state`, `pull_off`, and `report::ThinLayer`, (2)'s answer
 /// beside the layer's in `physical`), then 217 for the crate root's way in
 /// (issue 69): `solve`, `pull_off` and the four types they take and give,
-/// re-exported there (`Hold`, `FoldCondition`, `AnyState`, `PullOffAnswer`).
+/// re-exported there (`Hold`, `FoldCondition`, `AnyState`, `PullOffAnswer`),
+/// then 218 for `Error::brief_ending` (issue 72: the Python package's
+/// messages in 300 characters, as the command line's are).
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 217;
+    const MAX_PUBLIC_ITEMS: usize = 218;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);

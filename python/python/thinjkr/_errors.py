@@ -4,17 +4,23 @@ range, as the command line's do)."""
 
 from __future__ import annotations
 
+from typing import Optional
+
 
 class ThinJkrError(Exception):
     """Base class of every thinjkr error. ``kind`` is the solver's name for
-    the failure (``out_of_range``, ``no_state``, ``no_convergence``, …)."""
+    the failure (``out_of_range``, ``no_state``, ``no_convergence``, …).
+    The message is at most 300 characters, as the command line's; where it
+    is shortened, ``record`` holds the whole (an exact search's every
+    route), else it is the message."""
 
-    def __init__(self, message: str, kind: str = "error"):
+    def __init__(self, message: str, kind: str = "error", record: Optional[str] = None):
         super().__init__(message)
         self.kind = kind
+        self.record = message if record is None else record
 
     def __reduce__(self):
-        return (type(self), (str(self), self.kind))
+        return (type(self), (str(self), self.kind, self.record))
 
 
 class InvalidInput(ThinJkrError, ValueError):
@@ -70,5 +76,5 @@ def error_class(kind: str):
 
 
 def _raise(raw) -> None:
-    kind, message = raw.args
-    raise error_class(kind)(message, kind) from None
+    kind, message, record = raw.args
+    raise error_class(kind)(message, kind, record) from None
