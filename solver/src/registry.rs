@@ -128,8 +128,9 @@ pub fn parse(name: &str) -> Result<Choice, String> {
     })
 }
 
-/// Every model's name in a line: `max, apexes, energy, apex45,
-/// conformal:K with K = 1 ..= 8, exact`.
+/// Every model's name in a line, in the order `thinjkr models` lists
+/// them: `max, apexes, energy, apex45, conformal:K with K = 1 ..= 8,
+/// slender, exact, layer`.
 pub(crate) fn names() -> String {
     let mut out: Vec<String> = ModelId::ALL.iter().map(|m| m.name().to_string()).collect();
     for f in families() {
@@ -137,6 +138,7 @@ pub(crate) fn names() -> String {
     }
     out.extend(crate::slender::Slender::all().map(|m| m.name().to_string()));
     out.push(EXACT.into());
+    out.push(LAYER.into());
     out.join(", ")
 }
 
@@ -184,7 +186,10 @@ fn help_of(with_exact: bool, with_slender: bool, extra: &str) -> String {
         parts.push(format!("{} (the limit rho -> 0)", m.name()));
     }
     if with_exact {
-        parts.push("or exact (the free-boundary problem itself)".into());
+        parts.push("exact (the free-boundary problem itself)".into());
+        parts.push(format!(
+            "or {LAYER} (coatings of finite thickness at rho = 1, with --thinness and --nu)"
+        ));
     }
     format!(
         "{}{extra}; `thinjkr models` lists them, with the families of a folder named by {}.",
@@ -194,8 +199,9 @@ fn help_of(with_exact: bool, with_slender: bool, extra: &str) -> String {
 }
 
 /// Every model, in the order `thinjkr models` lists them: the models of the
-/// ellipse, the members of each contour family in the registry's order,
-/// and `exact`.
+/// ellipse, the members of each contour family in the registry's order
+/// (the built-in families, then those loaded), the slender limit, `exact`
+/// and `layer`.
 pub fn entries() -> Vec<Entry> {
     let controls = || vec!["delta".to_string(), "force".into(), "a".into()];
     let mut out: Vec<Entry> = ModelId::ALL
@@ -1181,6 +1187,27 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 73, item 4: one order of models. The list an unknown model's
+    /// error gives names every model `thinjkr models` lists (`layer` was
+    /// missing), a family once for its members, in the same order.
+    #[test]
+    fn an_unknown_models_list_is_the_model_list_in_its_order() {
+        let listed = names();
+        let mut at = 0;
+        for e in entries() {
+            let name = match &e.family {
+                Some(f) => format!("{f}:K"),
+                None => e.name.clone(),
+            };
+            let found = listed
+                .split(", ")
+                .position(|n| n == name || n.starts_with(&format!("{name} ")))
+                .unwrap_or_else(|| panic!("{name} is not in {listed}"));
+            assert!(found >= at, "{name} out of order in {listed}");
+            at = found;
+        }
+    }
 
     /// docs/accuracy.md from the line after `heading` on.
     fn section(heading: &str) -> &'static str {
