@@ -21,7 +21,7 @@
 //! stability judged with the coatings' thinness, an exact state's with the
 //! default one in the dimensionless verbs), `slender`, `error`.
 
-use crate::conformal::{families, Conformal};
+use crate::conformal::Conformal;
 use crate::control::Hold;
 use crate::cutoff::Cutoff;
 pub use crate::slender::Slender;
@@ -133,7 +133,7 @@ pub fn parse(name: &str) -> Result<Choice, String> {
 /// slender, exact, layer`.
 pub(crate) fn names() -> String {
     let mut out: Vec<String> = ModelId::ALL.iter().map(|m| m.name().to_string()).collect();
-    for f in families() {
+    for (_, f) in crate::conformal::listed() {
         out.push(format!("{}:K with K = {}", f.name, f.member_range()));
     }
     out.extend(crate::slender::Slender::all().map(|m| m.name().to_string()));
@@ -170,7 +170,10 @@ fn help_of(with_exact: bool, with_slender: bool, extra: &str) -> String {
     )];
     // the built-in families only: the help is made for every run, which
     // reads no family file (`thinjkr models` lists the loaded ones too)
-    for f in crate::conformal::compiled() {
+    let mut compiled: Vec<&crate::conformal::Family> =
+        crate::conformal::compiled().iter().collect();
+    compiled.sort_by_key(|f| f.name);
+    for f in compiled {
         let exact = if f.on_exact_gap {
             " converging to the exact solution"
         } else {
@@ -199,9 +202,8 @@ fn help_of(with_exact: bool, with_slender: bool, extra: &str) -> String {
 }
 
 /// Every model, in the order `thinjkr models` lists them: the models of the
-/// ellipse, the members of each contour family in the registry's order
-/// (the built-in families, then those loaded), the slender limit, `exact`
-/// and `layer`.
+/// ellipse, the members of each contour family (the families by name,
+/// whether built in or loaded), the slender limit, `exact` and `layer`.
 pub fn entries() -> Vec<Entry> {
     let controls = || vec!["delta".to_string(), "force".into(), "a".into()];
     let mut out: Vec<Entry> = ModelId::ALL

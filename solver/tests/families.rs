@@ -529,3 +529,30 @@ fn a_family_folder_is_read_within_a_budget_its_limits_named() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 73, item 4: one order of models, whether a family is built in or
+/// loaded. Families are listed by name (a family built in is listed where
+/// the same family loaded is), so `aaa`, loaded, comes before the
+/// built-in `conformal` in `models` and in an unknown model's list (it had
+/// come after every built-in family).
+#[test]
+fn a_loaded_family_is_listed_where_a_built_in_one_of_its_name_would_be() {
+    let dir = folder("order", "aaa", &builtin_tables());
+    let (ok, out, err) = thinjkr(&dir, &["models"]);
+    assert!(ok && err.is_empty(), "{err}");
+    let at = |name: &str| out.find(name).unwrap_or_else(|| panic!("{name}: {out}"));
+    assert!(
+        at("apex45") < at("aaa:1") && at("aaa:8") < at("conformal:1"),
+        "{out}"
+    );
+    let (_, _, err) = thinjkr(
+        &dir,
+        &["solve", "--rho", "0.8", "--delta", "2", "--model", "nosuch"],
+    );
+    let at = |name: &str| err.find(name).unwrap_or_else(|| panic!("{name}: {err}"));
+    assert!(
+        at("apex45") < at("aaa:K") && at("aaa:K") < at("conformal:K"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

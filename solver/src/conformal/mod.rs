@@ -158,6 +158,16 @@ pub(crate) fn family_at(i: usize) -> Option<&'static Family> {
     compiled().get(i).or_else(|| families().get(i).copied())
 }
 
+/// The families in the order every list shows them, by name, whether a
+/// family is built in or loaded (the registry numbers them built-in
+/// first, so that a built-in one is found without reading a file), each
+/// with its number in the registry.
+pub(crate) fn listed() -> Vec<(usize, &'static Family)> {
+    let mut out: Vec<(usize, &'static Family)> = families().iter().copied().enumerate().collect();
+    out.sort_by_key(|(_, f)| f.name);
+    out
+}
+
 fn registry() -> &'static Registry {
     REGISTRY.get_or_init(|| {
         let compiled = compiled();
@@ -401,10 +411,10 @@ fn doubts(rho: f64, a_bar: f64, b_bar: f64, bc_defect: f64, line: Line) -> Vec<S
     out
 }
 
-/// Every generated member of every family, by family (in registry order)
-/// and K.
+/// Every generated member of every family, by family (in the order of
+/// [`listed`]) and K.
 pub(crate) fn members() -> impl Iterator<Item = Conformal> {
-    families().iter().enumerate().flat_map(|(i, f)| {
+    listed().into_iter().flat_map(|(i, f)| {
         f.members
             .iter()
             .filter_map(move |t| Conformal::in_family(i, t.terms).ok())
