@@ -78,7 +78,7 @@ def test_all_states_equal_the_command_line(cli, model, args, kwargs):
         thinjkr.solve([0.8, 0.9], model=model, all=True, **kwargs)
 
 
-def test_a_pull_off_is_neutral_under_its_own_control_not_unstable():
+def test_a_pull_off_is_neutral_under_its_own_control_not_unstable(cli):
     """Issue 31: a pull-off sits on the fold that ends its control, where
     one eigenvalue is zero; it was counted as negative, and every pull-off
     read "unstable" under its own control. It is now neutral, apart from
@@ -90,6 +90,16 @@ def test_a_pull_off_is_neutral_under_its_own_control_not_unstable():
     assert c.stable_displacement and c.unstable_modes == [] and c.neutral_modes == [2]
     z = thinjkr.zero_force(0.8, model="conformal:2")
     assert z.neutral_modes == [] and z.neutral_modes_load == []
+    # issue 73, item 4: the command line's three verdicts, which it prints
+    # ("load control: neutral"); stable_load alone read True there
+    assert (e.stability_load, e.stability_displacement) == ("neutral", "stable")
+    assert c.stability_displacement == "neutral"
+    assert (z.stability_load, z.stability_displacement) == ("stable", "stable")
+    assert "stability_load='neutral'" in repr(e)
+    for st in (e, z):
+        text = subprocess.run([cli, "pull-off" if st is e else "zero-force", "--rho", "0.8",
+                               "--model", st.model], capture_output=True, text=True, check=True).stdout
+        assert f"load control: {st.stability_load}" in text, text
 
 
 def test_slender_refuses_what_it_lacks_with_the_reason():

@@ -100,7 +100,26 @@ def _state_from(d: Dict[str, Any], model: Optional[str] = None) -> State:
     elif "xi" in fields and "stable_load" in fields:
         fields.setdefault("neutral_displacement", False)
         fields.setdefault("neutral_load", False)
+    # the command line's verdict under each control, one of three
+    for control, neutral in (("load", ("neutral_load", "neutral_modes_load")),
+                             ("displacement", ("neutral_displacement", "neutral_modes",
+                                               "neutral_modes_displacement"))):
+        if f"stable_{control}" in fields:
+            fields[f"stability_{control}"] = _verdict(fields[f"stable_{control}"],
+                                                      any(fields.get(k) for k in neutral))
     return State(fields)
+
+
+def _verdict(stable: Optional[bool], neutral: bool) -> Optional[str]:
+    """"stable", "neutral" (no unstable direction, and a zero eigenvalue: a
+    fold or bifurcation of that control, as a pull-off under its own
+    control is), "unstable", or None where the model judges none or the
+    verdict is not settled: the three the command line prints."""
+    if stable is None:
+        return None
+    if not stable:
+        return "unstable"
+    return "neutral" if neutral else "stable"
 
 
 def _warn(d: Dict[str, Any], stacklevel: int = 3) -> None:

@@ -81,6 +81,9 @@ class State:
     settled). A neutral direction has a zero eigenvalue (within 1e-6 of the
     largest): the state is on a fold or bifurcation of that control, such
     as a pull-off under its own control; it does not count as unstable.
+    ``stability_load`` and ``stability_displacement`` give the command
+    line's verdict: ``"stable"``, ``"neutral"`` (stable but for a zero
+    eigenvalue; ``stable_load`` is then True), ``"unstable"``, or None.
     Equal when every field is equal; picklable."""
 
     __slots__ = ("_fields",)
@@ -144,7 +147,7 @@ class State:
         head = [shown(k) for k in _FIRST + ("control",) if k in f]
         lines = [f"{type(self).__name__}({', '.join(head)})"]
         trust = [f"{k}={f[k]:.1e}" for k in _CHECKS if isinstance(f.get(k), float)]
-        trust += [shown(k) for k in ("route", "stable_load", "stable_displacement") if f.get(k) is not None]
+        trust += [shown(k) for k in ("route", "stability_load", "stability_displacement") if f.get(k) is not None]
         if trust:
             lines.append("  " + ", ".join(trust))
         warnings = [w for w in f.get("warnings") or [] if isinstance(w, str)]
