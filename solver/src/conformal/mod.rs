@@ -126,6 +126,62 @@ impl Family {
         let (lo, hi) = (ks.clone().min().unwrap_or(0), ks.max().unwrap_or(0));
         format!("{lo} ..= {hi}")
     }
+
+    /// s = b̄/ā where a state of this family at `rho` with semi-axes ā, b̄
+    /// is wider across than along though its gap makes the near-elliptic
+    /// states longer along: the one rule of the "b > a" warning and of the
+    /// end of a member's trace (issue 73, item 4). The gap makes them
+    /// longer along where it rises at least as fast across as along at
+    /// every distance: every coefficient of φ̄(0, t) − φ̄(t, 0) in t is at
+    /// least 0 and one is above (the cylinders' (μ − 1)t²/2 at ρ < 1, the
+    /// quartic gap's (μ² − 1)t⁴/8). On any other gap nothing is judged: a
+    /// quartic term in X alone makes even the states at ρ = 1 wider across.
+    pub(crate) fn wider_than_its_gap_allows(
+        &self,
+        rho: f64,
+        a_bar: f64,
+        b_bar: f64,
+    ) -> Option<f64> {
+        let wider = b_bar > a_bar * (1.0 + 1e-9);
+        (wider && longer_along(self.particular_terms, rho)).then_some(b_bar / a_bar)
+    }
+}
+
+/// Whether the gap whose particular solution has the monomials `terms`
+/// rises at least as fast across as along at `rho`, and faster somewhere
+/// ([`Family::wider_than_its_gap_allows`]).
+fn longer_along(terms: &[crate::exact::gap::Term], rho: f64) -> bool {
+    // φ̄ = ΔP at δ̄ = 0, on either axis: X^x Y^y gives x(x−1) t^(x−2) on
+    // the X axis where y = 0 and 2 t^x where y = 2 (and so across)
+    let mu = 1.0 / rho;
+    let mut across_minus_along = [0.0f64; 256];
+    for t in terms.iter().filter(|t| t.dbar == 0) {
+        let v = t.num as f64 / t.den as f64 * mu.powi(i32::from(t.mu));
+        let (x, y) = (usize::from(t.x), usize::from(t.y));
+        let mut add = |power: usize, by: f64| {
+            if let Some(c) = across_minus_along.get_mut(power) {
+                *c += by;
+            }
+        };
+        if y == 0 && x >= 2 {
+            add(x - 2, -((x * (x - 1)) as f64) * v);
+        }
+        if y == 2 {
+            add(x, -2.0 * v);
+        }
+        if x == 0 && y >= 2 {
+            add(y - 2, (y * (y - 1)) as f64 * v);
+        }
+        if x == 2 {
+            add(y, 2.0 * v);
+        }
+    }
+    let size = across_minus_along
+        .iter()
+        .fold(0.0f64, |m, c| m.max(c.abs()));
+    size > 0.0
+        && across_minus_along.iter().all(|&c| c >= -1e-12 * size)
+        && across_minus_along.iter().any(|&c| c > 1e-12 * size)
 }
 
 /// The families: the built-in ones, then those loaded at run time.
@@ -389,7 +445,7 @@ enum Line {
 /// The warnings of a member's state ([`ConformalState::warnings`]), its
 /// line of doubt `line` (the family's own for the member, else
 /// [`DOUBTFUL_DEFECT`]).
-fn doubts(rho: f64, a_bar: f64, b_bar: f64, bc_defect: f64, line: Line) -> Vec<String> {
+fn doubts(wider: Option<f64>, bc_defect: f64, line: Line) -> Vec<String> {
     let mut out = Vec::new();
     match line {
         Line::Measured(line) if bc_defect > line => out.push(format!(
@@ -402,10 +458,10 @@ fn doubts(rho: f64, a_bar: f64, b_bar: f64, bc_defect: f64, line: Line) -> Vec<S
         )),
         _ => {}
     }
-    if rho < 1.0 && b_bar > a_bar * (1.0 + 1e-9) {
+    if let Some(s) = wider {
         out.push(format!(
             "b > a (s = {}): the contour is wider across than along, not the near-elliptic state the family approximates",
-            crate::error::rounded(b_bar / a_bar)
+            crate::error::rounded(s)
         ));
     }
     out
@@ -1586,7 +1642,11 @@ impl Conformal {
             neutral_modes_load: neutral_load,
             perimeter: motion.perimeter(),
             cutoff: Cutoff::default(),
-            warnings: doubts(rho, a, b, bc_defect, self.line_of_doubt()),
+            warnings: doubts(
+                self.family.wider_than_its_gap_allows(rho, a, b),
+                bc_defect,
+                self.line_of_doubt(),
+            ),
             folds_crossed: None,
         }
         .under(Cutoff::default());
@@ -1851,6 +1911,52 @@ impl crate::equations::Equations for Conformal {
 
 #[cfg(test)]
 mod tests {
+
+    /// Issue 73, item 4: one rule for "b > a". It is judged where the gap
+    /// rises at least as fast across as along, and faster somewhere: the
+    /// cylinders' at ρ < 1 (not at ρ = 1, the circle) and the quartic gap
+    /// (X² + μY²)²/8 of the guide's walk; never on a gap with a quartic
+    /// term in X alone (X²/2 + μY²/2 + X⁴/24, issue 73's `bumpy`), whose
+    /// states at ρ = 1 are wider across.
+    #[test]
+    fn b_above_a_is_judged_only_where_the_gap_makes_states_longer_along() {
+        use crate::exact::gap::Term;
+        let t = |x, y, mu, dbar, num, den| Term {
+            x,
+            y,
+            mu,
+            dbar,
+            num,
+            den,
+        };
+        let cylinders = crate::exact::gap::Gap::CYLINDERS.particular;
+        let bumpy = [
+            t(4, 0, 0, 0, 1, 24),
+            t(0, 4, 1, 0, 1, 24),
+            t(6, 0, 0, 0, 1, 720),
+            t(2, 0, 0, 1, -1, 4),
+            t(0, 2, 0, 1, -1, 4),
+        ];
+        let quartic = [
+            t(6, 0, 0, 0, 3, 720),
+            t(6, 0, 1, 0, -1, 720),
+            t(4, 2, 1, 0, 1, 48),
+            t(0, 6, 2, 0, 1, 240),
+            t(2, 0, 0, 1, -1, 4),
+            t(0, 2, 0, 1, -1, 4),
+        ];
+        assert!(longer_along(cylinders, 0.8) && longer_along(cylinders, 0.02));
+        assert!(!longer_along(cylinders, 1.0));
+        assert!(longer_along(&quartic, 0.8) && !longer_along(&quartic, 1.0));
+        for rho in [1.0, 0.9, 0.5] {
+            assert!(!longer_along(&bumpy, rho), "{rho}");
+        }
+        // the built-in family: on the cylinders' gap
+        let f = &compiled()[0];
+        assert_eq!(f.wider_than_its_gap_allows(0.8, 2.0, 2.1), Some(1.05));
+        assert_eq!(f.wider_than_its_gap_allows(0.8, 2.0, 1.9), None);
+        assert_eq!(f.wider_than_its_gap_allows(1.0, 2.0, 2.1), None);
+    }
     use super::*;
     use proptest::prelude::*;
 

@@ -250,7 +250,8 @@ struct Arm {
 /// [`CURVE_A_MIN`] or above `a_max` or the first state whose map is not
 /// one-to-one (not returned: past its folds in ā the contour grows
 /// undulated until it is no contact), or whose contour is wider across
-/// than along at ρ < 1 (not returned either).
+/// than along where its gap makes the states longer along
+/// ([`super::Family::wider_than_its_gap_allows`]; not returned either).
 fn arm(
     m: &Conformal,
     rho: f64,
@@ -276,11 +277,12 @@ fn arm(
             broke = Some(e);
             return true;
         }
-        // b̄ > ā at ρ < 1: not the near-elliptic state the family
-        // approximates (the check every state's warnings make)
+        // b̄ > ā where the gap makes the near-elliptic states longer
+        // along: not the state the family approximates (the rule every
+        // state's warnings apply)
         let (a, b) = m.semi_axes(c);
-        if rho < 1.0 && b > a * (1.0 + 1e-9) {
-            wider = Some(b / a);
+        if let Some(s) = m.family().wider_than_its_gap_allows(rho, a, b) {
+            wider = Some(s);
             return true;
         }
         p.a_bar < CURVE_A_MIN || p.a_bar > a_max
