@@ -194,96 +194,56 @@ fn member(p: &Particular, t: &Tables) -> Result<(), String> {
             "its boundary slope lists mode {n}, above the {modes} its gap and map can have"
         ));
     }
-    let thetas: Vec<f64> = (0..n_theta)
-        .map(|j| 2.0 * PI * j as f64 / n_theta as f64)
-        .collect();
-    let rule = GaussLegendre::new(n_r);
+    let grid = Grid {
+        thetas: (0..n_theta)
+            .map(|j| 2.0 * PI * j as f64 / n_theta as f64)
+            .collect(),
+        rule: GaussLegendre::new(n_r),
+        modes,
+    };
     for (c, dbar, mu) in points(k) {
-        let w = |r: f64, theta: f64| map(&c, t.powers, r, theta);
-        // P on the circle and its Fourier coefficients up to `modes`
-        let boundary: Vec<f64> = thetas
-            .iter()
-            .map(|&th| {
-                let ((x, y), _) = w(1.0, th);
-                p.value(x, y, mu, dbar).0
-            })
-            .collect();
-        let fourier = transform(&boundary, &thetas, modes);
-        let h = |r: f64, th: f64| -> f64 {
-            -fourier
-                .iter()
-                .enumerate()
-                .map(|(m, &(a, b))| {
-                    r.powi(m as i32) * (a * (m as f64 * th).cos() + b * (m as f64 * th).sin())
-                })
-                .sum::<f64>()
+        let at = Point {
+            c: &c,
+            powers: t.powers,
+            dbar,
+            mu,
         };
-        let (mut pi_bar, mut pi_size, mut force, mut force_size) = (0.0, 0.0, 0.0, 0.0);
-        for (&u, &wu) in rule.nodes.iter().zip(&rule.weights) {
-            let r = 0.5 * (u + 1.0);
-            for &th in &thetas {
-                let ((x, y), jac) = w(r, th);
-                let (pv, psize) = p.value(x, y, mu, dbar);
-                let hv = h(r, th);
-                let pbar = pv + hv;
-                let gap = p.laplacian_of_p0(x, y, mu).0;
-                let weight = 0.5 * wu * r * (2.0 * PI / n_theta as f64) * jac;
-                pi_bar += weight * (0.5 * pbar * (dbar - gap) - 0.5);
-                pi_size += weight * (0.5 * (psize + hv.abs()) * (dbar.abs() + gap.abs()) + 0.5);
-                force += weight * pbar;
-                force_size += weight * (psize + hv.abs());
-            }
-        }
-        let at = format!(
+        let said = format!(
             "at c = [{}], dbar = {}, mu = {}",
             c.iter().map(|&v| rounded(v)).collect::<Vec<_>>().join(", "),
             rounded(dbar),
             rounded(mu)
         );
+        // P on the circle and its Fourier coefficients: p̄ = P + h, h
+        // harmonic, vanishes on the contour
+        let boundary: Vec<f64> = grid
+            .thetas
+            .iter()
+            .map(|&th| {
+                let ((x, y), _) = at.w(1.0, th);
+                p.value(x, y, mu, dbar).0
+            })
+            .collect();
+        let fourier = transform(&boundary, &grid.thetas, modes);
+        let q = potential_and_force(p, &grid, &at, &fourier);
         let table = evaluate(&potential, &c, dbar, mu, 1);
         let abs_c: Vec<f64> = c.iter().map(|v| v.abs()).collect();
         let size = evaluate(&potential_size, &abs_c, dbar.abs(), mu, 1);
-        if !agrees(table.value, pi_bar, size.value.max(pi_size)) {
+        if !agrees(table.value, q.pi_bar, size.value.max(q.pi_size)) {
             return Err(format!(
-                "its table of the potential is not its algebra: {at} it gives {} and the quadrature {}",
+                "its table of the potential is not its algebra: {said} it gives {} and the quadrature {}",
                 rounded(table.value),
-                rounded(pi_bar)
+                rounded(q.pi_bar)
             ));
         }
-        if !agrees(table.grad[k], force, size.grad[k].max(force_size)) {
+        if !agrees(table.grad[k], q.force, size.grad[k].max(q.force_size)) {
             return Err(format!(
-                "its table's force dΠ/d(dbar) is not the integral of its pressure: {at} it gives {} and the quadrature {}",
+                "its table's force dΠ/d(dbar) is not the integral of its pressure: {said} it gives {} and the quadrature {}",
                 rounded(table.grad[k]),
-                rounded(force)
+                rounded(q.force)
             ));
         }
-        // ∂p̄/∂r at r = 1: ∇P·∂w/∂r, less the harmonic part's m·(a, b);
-        // its size: the largest |∇P|·|∂w/∂r| and the harmonic part's terms
-        let mut gradient_size = 0.0f64;
-        let slope: Vec<f64> = thetas
-            .iter()
-            .map(|&th| {
-                let ((x, y), _) = w(1.0, th);
-                let ((gx, gy), size) = p.gradient(x, y, mu, dbar);
-                let (wx, wy) = radial_derivative(&c, t.powers, th);
-                gradient_size = gradient_size.max(size * wx.hypot(wy));
-                let harmonic: f64 = fourier
-                    .iter()
-                    .enumerate()
-                    .map(|(m, &(a, b))| {
-                        m as f64 * (a * (m as f64 * th).cos() + b * (m as f64 * th).sin())
-                    })
-                    .sum();
-                gx * wx + gy * wy - harmonic
-            })
-            .collect();
-        let slope_size = gradient_size
-            + fourier
-                .iter()
-                .enumerate()
-                .map(|(m, &(a, b))| m as f64 * (a.abs() + b.abs()))
-                .sum::<f64>();
-        let numeric = transform(&slope, &thetas, modes);
+        let (numeric, slope_size) = slope_modes(p, &grid, &at, &fourier);
         for (m, &(a, b)) in numeric.iter().enumerate() {
             let listed = slopes.iter().find(|(n, _, _)| *n == m);
             let (want, size) = listed.map_or((0.0, 0.0), |(_, d, s)| {
@@ -295,7 +255,7 @@ fn member(p: &Particular, t: &Tables) -> Result<(), String> {
             let size = size.max(slope_size);
             if !agrees(want, a, size) || !agrees(b, 0.0, size) {
                 return Err(format!(
-                    "its boundary slope's mode {m} is not its algebra: {at} the table gives {} and the quadrature {}",
+                    "its boundary slope's mode {m} is not its algebra: {said} the table gives {} and the quadrature {}",
                     rounded(want),
                     rounded(a)
                 ));
@@ -303,6 +263,119 @@ fn member(p: &Particular, t: &Tables) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The quadrature's nodes: trapezoid in θ, Gauss–Legendre in r, and the
+/// highest mode a member's functions have on the circle.
+struct Grid {
+    thetas: Vec<f64>,
+    rule: GaussLegendre,
+    modes: usize,
+}
+
+/// One point of a member's unknowns: its map's coefficients and powers, δ̄
+/// and μ.
+struct Point<'a> {
+    c: &'a [f64],
+    powers: &'a [u16],
+    dbar: f64,
+    mu: f64,
+}
+
+impl Point<'_> {
+    /// The map at (r, θ) and its Jacobian.
+    fn w(&self, r: f64, theta: f64) -> ((f64, f64), f64) {
+        map(self.c, self.powers, r, theta)
+    }
+}
+
+/// Π̄, F̄ = ∫p̄ dA and their sizes (the same sums over the magnitudes).
+struct Quadrature {
+    pi_bar: f64,
+    pi_size: f64,
+    force: f64,
+    force_size: f64,
+}
+
+/// The harmonic part h = −Σ r^m (a cos mθ + b sin mθ) of p̄ at (r, θ).
+fn harmonic(fourier: &[(f64, f64)], r: f64, th: f64) -> f64 {
+    -fourier
+        .iter()
+        .enumerate()
+        .map(|(m, &(a, b))| {
+            r.powi(m as i32) * (a * (m as f64 * th).cos() + b * (m as f64 * th).sin())
+        })
+        .sum::<f64>()
+}
+
+/// Π̄ = ∫ (p̄(δ̄ − φ̄)/2 − 1/2) dA and F̄ = ∫p̄ dA over the unit disk mapped
+/// by w, p̄ = P + h.
+fn potential_and_force(
+    p: &Particular,
+    grid: &Grid,
+    at: &Point,
+    fourier: &[(f64, f64)],
+) -> Quadrature {
+    let n_theta = grid.thetas.len();
+    let mut q = Quadrature {
+        pi_bar: 0.0,
+        pi_size: 0.0,
+        force: 0.0,
+        force_size: 0.0,
+    };
+    for (&u, &wu) in grid.rule.nodes.iter().zip(&grid.rule.weights) {
+        let r = 0.5 * (u + 1.0);
+        for &th in &grid.thetas {
+            let ((x, y), jac) = at.w(r, th);
+            let (pv, psize) = p.value(x, y, at.mu, at.dbar);
+            let hv = harmonic(fourier, r, th);
+            let pbar = pv + hv;
+            let gap = p.laplacian_of_p0(x, y, at.mu).0;
+            let weight = 0.5 * wu * r * (2.0 * PI / n_theta as f64) * jac;
+            q.pi_bar += weight * (0.5 * pbar * (at.dbar - gap) - 0.5);
+            q.pi_size += weight * (0.5 * (psize + hv.abs()) * (at.dbar.abs() + gap.abs()) + 0.5);
+            q.force += weight * pbar;
+            q.force_size += weight * (psize + hv.abs());
+        }
+    }
+    q
+}
+
+/// The cosine and sine modes of ∂p̄/∂r at r = 1 (∇P·∂w/∂r, less the
+/// harmonic part's m·(a, b)) up to the grid's modes, and their size: the
+/// largest |∇P|·|∂w/∂r| and the harmonic part's terms.
+fn slope_modes(
+    p: &Particular,
+    grid: &Grid,
+    at: &Point,
+    fourier: &[(f64, f64)],
+) -> (Vec<(f64, f64)>, f64) {
+    let mut gradient_size = 0.0f64;
+    let slope: Vec<f64> = grid
+        .thetas
+        .iter()
+        .map(|&th| {
+            let ((x, y), _) = at.w(1.0, th);
+            let ((gx, gy), size) = p.gradient(x, y, at.mu, at.dbar);
+            let (wx, wy) = radial_derivative(at.c, at.powers, th);
+            gradient_size = gradient_size.max(size * wx.hypot(wy));
+            let harmonic: f64 = fourier
+                .iter()
+                .enumerate()
+                .map(|(m, &(a, b))| {
+                    m as f64 * (a * (m as f64 * th).cos() + b * (m as f64 * th).sin())
+                })
+                .sum();
+            gx * wx + gy * wy - harmonic
+        })
+        .collect();
+    let size = gradient_size
+        + fourier
+            .iter()
+            .enumerate()
+            .map(|(m, &(a, b))| m as f64 * (a.abs() + b.abs()))
+            .sum::<f64>();
+    (transform(&slope, &grid.thetas, grid.modes), size)
 }
 
 /// The rows with their coefficients' magnitudes.
