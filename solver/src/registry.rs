@@ -597,87 +597,7 @@ impl Choice {
         };
         let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
         let si = cyl.si(&sc, a_bar, b_bar, delta_bar, force_bar)?;
-        // the model's own doubts about its state (an ellipse model below
-        // the paper's range or beyond its size fold, a contour member
-        // missing (3)2), the range said with this contact's ρ; the exact
-        // solution has no stated range
-        let mut warnings = Vec::new();
-        match &state {
-            crate::report::AnyState::Ellipse(st) => {
-                if st.outside_stated_range {
-                    warnings.push(format!(
-                        "rho = R2/R1 = {:.6} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
-                        sc.rho
-                    ));
-                }
-                if st.beyond_size_fold {
-                    warnings.push(crate::contact::BEYOND_SIZE_FOLD.to_string());
-                }
-            }
-            crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
-            // (an exact state's warnings, its shape's, come after the
-            // stability's doubt, below)
-            crate::report::AnyState::Exact(_)
-            | crate::report::AnyState::Slender(_)
-            | crate::report::AnyState::Layer(_) => {}
-        }
-        // a contour state unstable under its own control above these
-        // coatings' cutoff (a pull-off and a state at a force are held by
-        // the load, a state at an approach by the displacement): the model
-        // predicts a change of shape, and no stable path comes to it
-        let under_load = delta.is_none();
-        warnings.extend(match &state {
-            crate::report::AnyState::Exact(st) => st.stability.doubt(under_load, st.a_bar),
-            crate::report::AnyState::Conformal(st) => st.doubt(under_load),
-            _ => None,
-        });
-        // an exact state whose shape owes a visible part to undulations
-        // shorter than these coatings' cutoff: the shape is (2)'s, not the
-        // coating's (`exact::undulations`)
-        match (&state, &model) {
-            // (judged under `cutoff` above, its warnings with it); where no
-            // thinness makes it a stable contact (2) resolves under the
-            // control that holds it, a thinner or thicker coating is no
-            // way out, and the warning says so
-            (crate::report::AnyState::Exact(st), _) => {
-                warnings.extend(st.warnings.iter().cloned());
-                if let (Some(c), Some(shape)) = (st.coatings, st.shape) {
-                    let (range, modes) = if under_load {
-                        (c.load, &st.stability.load)
-                    } else {
-                        (c.displacement, &st.stability.displacement)
-                    };
-                    // (an unstable size is the stability's doubt above)
-                    if range.is_none() && !crate::exact::undulations::size_unstable(modes) {
-                        warnings.push(format!(
-                            "no coating thickness makes this state a stable contact whose shape (2) resolves: {} (docs/exact.md, \"Coatings for which a state is resolved and stable\")",
-                            crate::exact::undulations::no_thinness_words(modes, &shape)
-                        ));
-                    }
-                }
-            }
-            (crate::report::AnyState::Conformal(st), Choice::Contour(member)) => {
-                let short = member.short_waves(&st.coefficients, cutoff);
-                if short.unresolved {
-                    warnings.push(format!("the contact's shape: {}", short.words(cutoff)));
-                }
-            }
-            _ => {}
-        }
-        if let crate::report::AnyState::Layer(_) = state {
-            // the layer measures h/a itself; its kernel assumes a flat coating
-            let h_over_r = (cyl.h1 / cyl.r1).max(cyl.h2 / cyl.r2);
-            if h_over_r > 0.1 {
-                warnings.push(format!(
-                    "h/r = {h_over_r:.6}: the coatings are not thin against the cylinders (the layer's kernel assumes a flat coating, h << r)"
-                ));
-            }
-        } else if si.h_over_a > 0.1 {
-            warnings.push(format!(
-                "h/a = {:.6}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
-                si.h_over_a
-            ));
-        }
+        let warnings = physical_warnings(&state, &model, cyl, &sc, &si, delta.is_none(), cutoff);
         Ok(PhysicalAnswer {
             state,
             si,
@@ -689,6 +609,106 @@ impl Choice {
             thin_layer: None,
         })
     }
+}
+
+/// What every front end warns of beside a physical answer: the model's own
+/// doubts about its state (an ellipse model below the paper's range or
+/// beyond its size fold, a contour member missing (3)2), the range said with
+/// this contact's ρ; a contour or exact state unstable under its own control
+/// above these coatings' cutoff; an exact state's shape owing a visible
+/// part to undulations shorter than the cutoff; coatings not thin against
+/// the contact (or, for the layer, against the cylinders). `under_load`: the
+/// state is held by the load (a pull-off or a state at a force).
+fn physical_warnings(
+    state: &crate::report::AnyState,
+    model: &Choice,
+    cyl: &crate::units::Cylinders,
+    sc: &crate::units::Scales,
+    si: &crate::units::Si,
+    under_load: bool,
+    cutoff: crate::cutoff::Cutoff,
+) -> Vec<String> {
+    // the model's own doubts about its state (an ellipse model below
+    // the paper's range or beyond its size fold, a contour member
+    // missing (3)2), the range said with this contact's ρ; the exact
+    // solution has no stated range
+    let mut warnings = Vec::new();
+    match state {
+        crate::report::AnyState::Ellipse(st) => {
+            if st.outside_stated_range {
+                warnings.push(format!(
+                    "rho = R2/R1 = {:.6} is below the paper's stated range 0.8 <= rho <= 1: the ellipse models' error grows (see docs/accuracy.md)",
+                    sc.rho
+                ));
+            }
+            if st.beyond_size_fold {
+                warnings.push(crate::contact::BEYOND_SIZE_FOLD.to_string());
+            }
+        }
+        crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
+        // (an exact state's warnings, its shape's, come after the
+        // stability's doubt, below)
+        crate::report::AnyState::Exact(_)
+        | crate::report::AnyState::Slender(_)
+        | crate::report::AnyState::Layer(_) => {}
+    }
+    // a contour state unstable under its own control above these
+    // coatings' cutoff (a pull-off and a state at a force are held by
+    // the load, a state at an approach by the displacement): the model
+    // predicts a change of shape, and no stable path comes to it
+    warnings.extend(match state {
+        crate::report::AnyState::Exact(st) => st.stability.doubt(under_load, st.a_bar),
+        crate::report::AnyState::Conformal(st) => st.doubt(under_load),
+        _ => None,
+    });
+    // an exact state whose shape owes a visible part to undulations
+    // shorter than these coatings' cutoff: the shape is (2)'s, not the
+    // coating's (`exact::undulations`)
+    match (state, model) {
+        // (judged under `cutoff` above, its warnings with it); where no
+        // thinness makes it a stable contact (2) resolves under the
+        // control that holds it, a thinner or thicker coating is no
+        // way out, and the warning says so
+        (crate::report::AnyState::Exact(st), _) => {
+            warnings.extend(st.warnings.iter().cloned());
+            if let (Some(c), Some(shape)) = (st.coatings, st.shape) {
+                let (range, modes) = if under_load {
+                    (c.load, &st.stability.load)
+                } else {
+                    (c.displacement, &st.stability.displacement)
+                };
+                // (an unstable size is the stability's doubt above)
+                if range.is_none() && !crate::exact::undulations::size_unstable(modes) {
+                    warnings.push(format!(
+                        "no coating thickness makes this state a stable contact whose shape (2) resolves: {} (docs/exact.md, \"Coatings for which a state is resolved and stable\")",
+                        crate::exact::undulations::no_thinness_words(modes, &shape)
+                    ));
+                }
+            }
+        }
+        (crate::report::AnyState::Conformal(st), Choice::Contour(member)) => {
+            let short = member.short_waves(&st.coefficients, cutoff);
+            if short.unresolved {
+                warnings.push(format!("the contact's shape: {}", short.words(cutoff)));
+            }
+        }
+        _ => {}
+    }
+    if let crate::report::AnyState::Layer(_) = state {
+        // the layer measures h/a itself; its kernel assumes a flat coating
+        let h_over_r = (cyl.h1 / cyl.r1).max(cyl.h2 / cyl.r2);
+        if h_over_r > 0.1 {
+            warnings.push(format!(
+                "h/r = {h_over_r:.6}: the coatings are not thin against the cylinders (the layer's kernel assumes a flat coating, h << r)"
+            ));
+        }
+    } else if si.h_over_a > 0.1 {
+        warnings.push(format!(
+            "h/a = {:.6}: the coatings are not thin against the contact (the thin-layer equation (2) assumes h << a)",
+            si.h_over_a
+        ));
+    }
+    warnings
 }
 
 /// A pull-off of any model: the state, the control whose branch it ends,
