@@ -121,16 +121,7 @@ pub(crate) fn trace_each(
     }
     let start = contact.at_displacement(delta_start)?;
     if rho >= 1.0 {
-        // s ≡ 1: the exact axisymmetric curve, parametrised by ā.
-        let folds = vec![Fold {
-            kind: FoldKind::Load,
-            state: contact.pull_off_load()?.state,
-        }];
-        for k in 0..points {
-            let a = start.a_bar * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
-            each(contact.at_contact_size(a)?[0])?;
-        }
-        return Ok(folds);
+        return circle_each(contact, start.a_bar, points, each);
     }
     // variables scaled so that a unit step means a comparable change
     let family = Branch {
@@ -140,22 +131,7 @@ pub(crate) fn trace_each(
         strict: true,
     };
     let w0 = family.join(&Vector2::new(start.a_bar, start.s), start.delta_bar);
-    // the trace is at least four times finer than the output, up to
-    // TRACED_FOR points
-    let traced_for = points.min(TRACED_FOR);
-    let h_max = (0.5 / traced_for as f64).min(0.05);
-    let settings = Settings {
-        step: h_max.min(0.01),
-        min_step: h_max * 1e-9,
-        max_step: h_max,
-        grow: 1.3,
-        fast_iterations: usize::MAX,
-        turn: -1.0,
-        corrector_iterations: 20,
-        step_tolerance: 1e-12,
-        // the step is at most 0.5/points, so the budget grows with the points
-        max_steps: 20_000.max(50 * traced_for),
-    };
+    let settings = settings_for(points);
     let watch = Watch {
         size_fold: On::Note,
         displacement_fold: On::Note,
@@ -212,29 +188,7 @@ pub(crate) fn trace_each(
         st
     };
     let traced_state = |k: usize| state_at(&trail[k], size_fold.is_some_and(|f| k > f));
-    let mut folds = Vec::new();
-    for e in &traced.events {
-        let [i, k] = e.between;
-        match e.kind {
-            EventKind::SizeFold => {
-                folds.push(refine(contact, FoldKind::ContactSize, &traced_state(k))?)
-            }
-            EventKind::DisplacementFold => {
-                folds.push(refine(contact, FoldKind::Displacement, &traced_state(k))?)
-            }
-            EventKind::ForceMinimum => {
-                // from the traced point with the lower force
-                let (si, sk) = (traced_state(i), traced_state(k));
-                let near = if si.force_bar < sk.force_bar {
-                    &si
-                } else {
-                    &sk
-                };
-                folds.push(refine(contact, FoldKind::Load, near)?)
-            }
-            _ => {}
-        }
-    }
+    let folds = folds_on(contact, &traced.events, &traced_state)?;
     // a curve reaches the pull-off of its model, or says why not
     if !folds.iter().any(|f| f.kind == FoldKind::Load) {
         if let Ok(p) = contact.pull_off_load() {
@@ -247,30 +201,125 @@ pub(crate) fn trace_each(
             )));
         }
     }
-    // the states, spaced evenly in arclength
-    for (j, sigma) in continuation::spaced(&trail, points) {
+    let trace = Traced {
+        family: &family,
+        settings,
+        points: &traced.points,
+        trail: &trail,
+        size_fold,
+    };
+    spaced_each(&trace, points, &state_at, each)?;
+    Ok(folds)
+}
+
+/// A traced branch: its family and settings, its points, and the point
+/// after which it is past its first fold in ā.
+struct Traced<'a> {
+    family: &'a Branch<'a, dyn crate::model::Model>,
+    settings: Settings,
+    points: &'a [continuation::Point<nalgebra::U3>],
+    /// The points' scaled unknowns.
+    trail: &'a [Vector3<f64>],
+    size_fold: Option<usize>,
+}
+
+/// `points` states of the trace spaced evenly in arclength, each handed
+/// to `each`: a traced point where the trace is finer than the output,
+/// else corrected onto its own arclength from the traced point before it
+/// (`state_at(w, beyond)`: the state at the scaled point w, flagged beyond
+/// the size fold or not).
+fn spaced_each(
+    trace: &Traced,
+    points: usize,
+    state_at: &dyn Fn(&Vector3<f64>, bool) -> State,
+    each: &mut dyn FnMut(State) -> Result<()>,
+) -> Result<()> {
+    let trail = trace.trail;
+    let past = |j: usize| trace.size_fold.is_some_and(|f| j > f);
+    for (j, sigma) in continuation::spaced(trail, points) {
         let st = if points <= TRACED_FOR || sigma == 0.0 {
-            traced_state(j)
+            state_at(&trail[j], past(j))
         } else {
-            let w = continuation::at_arclength(
-                &family,
-                settings,
-                &traced.points[j],
-                &traced.points[j + 1],
-                sigma,
-            )?;
-            let beyond = size_fold.is_some_and(|f| {
-                j > f
-                    || (j == f
-                        && continuation::past_size_fold(
-                            &traced.points[j],
-                            &traced.points[j + 1],
-                            sigma,
-                        ))
-            });
+            let (here, next) = (&trace.points[j], &trace.points[j + 1]);
+            let w = continuation::at_arclength(trace.family, trace.settings, here, next, sigma)?;
+            let beyond = past(j)
+                || (trace.size_fold == Some(j) && continuation::past_size_fold(here, next, sigma));
             state_at(&w, beyond)
         };
         each(st)?;
+    }
+    Ok(())
+}
+
+/// The curve at ρ = 1 (s ≡ 1): the exact axisymmetric curve, `points`
+/// states parametrised by ā from its start `a_start` down to 3 % of it,
+/// each handed to `each`, and its one fold, the pull-off.
+fn circle_each(
+    contact: &Contact,
+    a_start: f64,
+    points: usize,
+    each: &mut dyn FnMut(State) -> Result<()>,
+) -> Result<Vec<Fold>> {
+    let folds = vec![Fold {
+        kind: FoldKind::Load,
+        state: contact.pull_off_load()?.state,
+    }];
+    for k in 0..points {
+        let a = a_start * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
+        each(contact.at_contact_size(a)?[0])?;
+    }
+    Ok(folds)
+}
+
+/// The trace's settings for a curve of `points` states: the trace is at
+/// least four times finer than the output, up to [`TRACED_FOR`] points.
+fn settings_for(points: usize) -> Settings {
+    let traced_for = points.min(TRACED_FOR);
+    let h_max = (0.5 / traced_for as f64).min(0.05);
+    Settings {
+        step: h_max.min(0.01),
+        min_step: h_max * 1e-9,
+        max_step: h_max,
+        grow: 1.3,
+        fast_iterations: usize::MAX,
+        turn: -1.0,
+        corrector_iterations: 20,
+        step_tolerance: 1e-12,
+        // the step is at most 0.5/points, so the budget grows with the points
+        max_steps: 20_000.max(50 * traced_for),
+    }
+}
+
+/// The folds the trace passed (`events`), each located by Newton's method
+/// from the traced state next to it (`traced_state(k)`: the state at the
+/// trace's point k); the force minimum from the one of its two points with
+/// the lower force.
+fn folds_on(
+    contact: &Contact,
+    events: &[continuation::Event<nalgebra::U3>],
+    traced_state: &dyn Fn(usize) -> State,
+) -> Result<Vec<Fold>> {
+    let mut folds = Vec::new();
+    for e in events {
+        let [i, k] = e.between;
+        match e.kind {
+            EventKind::SizeFold => {
+                folds.push(refine(contact, FoldKind::ContactSize, &traced_state(k))?)
+            }
+            EventKind::DisplacementFold => {
+                folds.push(refine(contact, FoldKind::Displacement, &traced_state(k))?)
+            }
+            EventKind::ForceMinimum => {
+                let (si, sk) = (traced_state(i), traced_state(k));
+                let near = if si.force_bar < sk.force_bar {
+                    &si
+                } else {
+                    &sk
+                };
+                folds.push(refine(contact, FoldKind::Load, near)?)
+            }
+            _ => {}
+        }
     }
     Ok(folds)
 }
