@@ -185,19 +185,7 @@ impl NormalMotion {
         let m = self.metric.nrows();
         let dim = hessian.nrows();
         // in the reduced coordinates [Z 0; 0 1], and back
-        let t = match restriction {
-            Some(z) => {
-                let k = z.ncols();
-                let extra = dim - m;
-                let mut t = DMatrix::zeros(m + extra, k + extra);
-                t.view_mut((0, 0), (m, k)).copy_from(z);
-                for e in 0..extra {
-                    t[(m + e, k + e)] = 1.0;
-                }
-                t
-            }
-            None => DMatrix::identity(dim, dim),
-        };
+        let t = embedding(restriction, m, dim);
         let mut metric = DMatrix::zeros(dim, dim);
         metric.view_mut((0, 0), (m, m)).copy_from(&self.metric);
         for e in m..dim {
@@ -259,13 +247,11 @@ impl NormalMotion {
                     .fold(0.0, f64::max)
             };
             let named_within = unstable.iter().any(|&c| label[c].is_some_and(|n| n <= k));
-            if !named_within {
-                if let Some(&c) = unstable
-                    .iter()
-                    .max_by(|&&a, &&b| within(a).total_cmp(&within(b)))
-                {
-                    label[c] = Some(k);
-                }
+            let widest = unstable
+                .iter()
+                .max_by(|&&a, &&b| within(a).total_cmp(&within(b)));
+            if let (false, Some(&c)) = (named_within, widest) {
+                label[c] = Some(k);
             }
         }
         let (mut unstable, mut neutral): (Vec<(usize, NamedDirection)>, Vec<_>) = negative
@@ -467,4 +453,23 @@ fn eigen_in_metric(a: &DMatrix<f64>, m: &DMatrix<f64>) -> Option<SymmetricEigen<
     let mut e = SymmetricEigen::new(symmetric(&b));
     e.eigenvectors = l.transpose().solve_upper_triangular(&e.eigenvectors)?;
     Some(e)
+}
+
+/// The embedding T = [Z 0; 0 1] of the reduced coordinates (the columns
+/// of `restriction` Z over the first `m` unknowns, the further ones kept)
+/// into all `dim`; the identity without a restriction.
+fn embedding(restriction: Option<&DMatrix<f64>>, m: usize, dim: usize) -> DMatrix<f64> {
+    match restriction {
+        Some(z) => {
+            let k = z.ncols();
+            let extra = dim - m;
+            let mut t = DMatrix::zeros(m + extra, k + extra);
+            t.view_mut((0, 0), (m, k)).copy_from(z);
+            for e in 0..extra {
+                t[(m + e, k + e)] = 1.0;
+            }
+            t
+        }
+        None => DMatrix::identity(dim, dim),
+    }
 }
