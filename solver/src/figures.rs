@@ -893,7 +893,6 @@ fn slender_pull_offs(xs: &[(f64, f64)]) -> Vec<Series> {
 }
 
 fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> {
-    use crate::exact::{Exact, ExactState, Truncation};
     let po = &reference.pull_off;
     let entry = |rho: f64| {
         po.iter().find(|e| e.rho == rho).ok_or_else(|| {
@@ -917,10 +916,23 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         );
     }
     exact_curve.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut out = pull_off_figures(&exact_curve, lowest);
+    out.push(contours_figure(&entry, lowest)?);
+    out.push(bc_error_figure(&entry)?);
+    out.push(conformal_convergence_figure(po));
+    Ok(out)
+}
+
+/// An entry of the exact reference at ρ, or why there is none.
+type Entry<'a> = &'a dyn Fn(f64) -> Result<&'a crate::accuracy::ReferenceState>;
+
+/// 1. The load-controlled pull-off against ρ and against the crossing
+/// angle θ: the exact curve and every model's.
+fn pull_off_figures(exact_curve: &[(f64, f64)], lowest: f64) -> Vec<Figure> {
     let mut out = Vec::new();
     // 1. pull-off force against ρ
     let colors = [BLUE, RED, GREEN, ORANGE];
-    let mut series = vec![solid("exact (2)–(3)", exact_curve.clone(), BLACK)];
+    let mut series = vec![solid("exact (2)–(3)", exact_curve.to_vec(), BLACK)];
     let xs: Vec<(f64, f64)> = grid(lowest, 1.0, 31).map(|rho| (rho, rho)).collect();
     for (m, &c) in ModelId::ALL.iter().zip(&colors) {
         series.push(model_pull_offs(*m, &xs, "ρ", c));
@@ -967,6 +979,12 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         shade_label: "paper's range ρ ≥ 0.8",
         equal: false,
     });
+    out
+}
+
+/// 2. The exact contours at pull-off beside the paper's ellipses.
+fn contours_figure(entry: Entry, lowest: f64) -> Result<Figure> {
+    let colors = [BLUE, RED, GREEN, ORANGE];
     // 2. contours at pull-off
     let mut series = Vec::new();
     let mut rhos = vec![0.8, 0.5];
@@ -988,7 +1006,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
             .collect();
         series.push(dashed(&format!("paper's ellipse, ρ = {rho}"), ell, c));
     }
-    out.push(Figure {
+    Ok(Figure {
         file: "exact_contours.svg",
         title: format!(
             "Contact at pull-off: exact contour and the paper's ellipse (ρ < {lowest}: not resolved)"
@@ -999,7 +1017,14 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         shade: Vec::new(),
         shade_label: "",
         equal: true,
-    });
+    })
+}
+
+/// 3. The boundary condition (3)₂ along the contour at pull-off: the
+/// exact solution's and the paper's model's.
+fn bc_error_figure(entry: Entry) -> Result<Figure> {
+    use crate::exact::{Exact, ExactState, Truncation};
+    let colors = [BLUE, RED, GREEN, ORANGE];
     // 3. |∂p̄/∂ν − 1| along the contour; the exact solution's is at the
     // round-off level of its boundary integral (below 1e-9 at every point,
     // docs/accuracy.md), whose digits differ between builds: both curves
@@ -1052,7 +1077,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         series.push(solid(&format!("exact, ρ = {rho}"), exact, c));
         series.push(dashed(&format!("paper's model, ρ = {rho}"), model, c));
     }
-    out.push(Figure {
+    Ok(Figure {
         file: "exact_bc_error.svg",
         title: "Boundary condition (3)₂ along the contour at pull-off".into(),
         x_label: "polar angle of the contour point [degrees]",
@@ -1061,7 +1086,12 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         shade: Vec::new(),
         shade_label: "",
         equal: false,
-    });
+    })
+}
+
+/// 4. The conformal family's pull-off error against K, per ρ of the
+/// reference.
+fn conformal_convergence_figure(po: &[crate::accuracy::ReferenceState]) -> Figure {
     // 4. the conformal family's pull-off error against K, per ρ
     let mut series = Vec::new();
     let colors = [BLUE, RED, GREEN, ORANGE, GREY, BLACK];
@@ -1091,7 +1121,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         };
         series.push(solid(&label, pts, c));
     }
-    out.push(Figure {
+    Figure {
         file: "conformal_convergence.svg",
         title: "conformal:K against the exact pull-off".into(),
         x_label: "K (terms of the map)",
@@ -1100,8 +1130,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
         shade: Vec::new(),
         shade_label: "",
         equal: false,
-    });
-    Ok(out)
+    }
 }
 
 /// Every figure as (file name, SVG text).
