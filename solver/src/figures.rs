@@ -926,7 +926,7 @@ fn exact_figures(reference: &crate::accuracy::Reference) -> Result<Vec<Figure>> 
 /// An entry of the exact reference at ρ, or why there is none.
 type Entry<'a> = &'a dyn Fn(f64) -> Result<&'a crate::accuracy::ReferenceState>;
 
-/// 1. The load-controlled pull-off against ρ and against the crossing
+/// The load-controlled pull-off against ρ and against the crossing
 /// angle θ: the exact curve and every model's.
 fn pull_off_figures(exact_curve: &[(f64, f64)], lowest: f64) -> Vec<Figure> {
     let mut out = Vec::new();
@@ -982,7 +982,7 @@ fn pull_off_figures(exact_curve: &[(f64, f64)], lowest: f64) -> Vec<Figure> {
     out
 }
 
-/// 2. The exact contours at pull-off beside the paper's ellipses.
+/// The exact contours at pull-off beside the paper's ellipses.
 fn contours_figure(entry: Entry, lowest: f64) -> Result<Figure> {
     let colors = [BLUE, RED, GREEN, ORANGE];
     // 2. contours at pull-off
@@ -1020,7 +1020,7 @@ fn contours_figure(entry: Entry, lowest: f64) -> Result<Figure> {
     })
 }
 
-/// 3. The boundary condition (3)₂ along the contour at pull-off: the
+/// The boundary condition (3)₂ along the contour at pull-off: the
 /// exact solution's and the paper's model's.
 fn bc_error_figure(entry: Entry) -> Result<Figure> {
     use crate::exact::{Exact, ExactState, Truncation};
@@ -1089,7 +1089,7 @@ fn bc_error_figure(entry: Entry) -> Result<Figure> {
     })
 }
 
-/// 4. The conformal family's pull-off error against K, per ρ of the
+/// The conformal family's pull-off error against K, per ρ of the
 /// reference.
 fn conformal_convergence_figure(po: &[crate::accuracy::ReferenceState]) -> Figure {
     // 4. the conformal family's pull-off error against K, per ρ

@@ -794,15 +794,7 @@ pub(crate) fn continued_in_rho_along(
         .unwrap_or(tries.len() - 1);
     let mut st = start.clone();
     let mut step: f64 = 0.01;
-    let stop = |st: &ExactState, why: String| {
-        Error::NoState(format!(
-            "continued in rho at {control} from its state at rho = {} ({} modes), the family converges (boundary error below {:.0e}) down to rho = {} only: {why}",
-            crate::error::short(start.rho),
-            start.truncation.modes,
-            CONVERGED,
-            crate::error::rounded(st.rho)
-        ))
-    };
+    let stop = |st: &ExactState, why: String| converged_only_to(start, st, control, &why);
     while st.rho > rho {
         crate::newton::check_stop()?;
         let next = (st.rho - step).max(rho);
@@ -837,73 +829,102 @@ pub(crate) fn continued_in_rho_along(
                     ),
                 ));
             }
-            Err(e) => {
-                // a fold in ρ of the family at the control, located, or
-                // Newton stopped for another reason
-                if let Some(fold) = super::rho_fold::rho_fold(&st, control, tries) {
-                    if fold.rho > rho {
-                        return Err(Error::PastRhoFold {
-                            fold: fold.rho,
-                            from: start.rho,
-                            what: format!(
-                            "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (a fold in rho at a_bar = {}, resolved with {} modes{}; two states at rho {} above it, a_bar = {} and {}), so it has no state at rho = {}",
-                            crate::error::short(start.rho),
-                            crate::error::rounded(fold.rho),
-                            crate::error::rounded(fold.a_bar),
-                            fold.truncation.modes,
-                            if fold.truncation.arclength > 0 { " of each sign" } else { "" },
-                            crate::error::rounded(fold.above - fold.rho),
-                            crate::error::rounded(fold.beside[0]),
-                            crate::error::rounded(fold.beside[1]),
-                            crate::error::short(rho)
-                        ),
-                        });
-                    }
-                }
-                // else the path in (u, ρ), which steps around a fold in ā
-                // (a band's edge) and shows a fold in ρ as ρ turning back
-                match super::rho_path::follow(&st, rho, control) {
-                    Ok(Followed::Reached(found)) if found.bc_error <= CONVERGED => {
-                        let mut found = *found;
-                        found.stability =
-                            Exact::on(start.gap, rho, found.truncation)?.stability(&found)?;
-                        found.route = Route::ContinuedInRho;
-                        return Ok(found);
-                    }
-                    Ok(Followed::TurnedBack {
-                        rho: fold, a_bar, ..
-                    }) if fold > rho => {
-                        return Err(Error::PastRhoFold {
-                            fold,
-                            from: start.rho,
-                            what: format!(
-                                "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (the path in shape and rho from its last state at rho = {} turns back there, at a_bar = {}, {} modes{}), so it has no state at rho = {}",
-                                crate::error::short(start.rho),
-                                crate::error::rounded(fold),
-                                crate::error::rounded(st.rho),
-                                crate::error::rounded(a_bar),
-                                st.truncation.modes,
-                                if st.truncation.arclength > 0 { " of each sign" } else { "" },
-                                crate::error::short(rho)
-                            ),
-                        });
-                    }
-                    _ => {}
-                }
-                return Err(stop(
-                    &st,
-                    format!(
-                        "Newton fails below it with steps in rho down to 1e-3 (the contour is {:.1e} a off the ellipse there; {})",
-                        st.deviation_from_ellipse,
-                        e.to_string().chars().take(120).collect::<String>()
-                    ),
-                ));
-            }
+            Err(e) => return past_newtons_end(&st, start, rho, control, tries, &e),
         }
     }
     st.stability = Exact::on(start.gap, rho, st.truncation)?.stability(&st)?;
     st.route = Route::ContinuedInRho;
     Ok(st)
+}
+
+/// Where Newton failed below `st` (the last converged state of
+/// [`continued_in_rho_along`], continued from `start` towards `rho`) with
+/// `e`: a fold in ρ of the family at the control, located, is an error
+/// that says so; else the path in (u, ρ), which steps around a fold in ā
+/// (a band's edge), reaches `rho` (the answer) or shows a fold in ρ as ρ
+/// turning back; else an error that says down to which ρ the family
+/// converged.
+fn past_newtons_end(
+    st: &ExactState,
+    start: &ExactState,
+    rho: f64,
+    control: Hold,
+    tries: &[Truncation],
+    e: &Error,
+) -> Result<ExactState> {
+    // a fold in ρ of the family at the control, located, or
+    // Newton stopped for another reason
+    if let Some(fold) = super::rho_fold::rho_fold(st, control, tries) {
+        if fold.rho > rho {
+            return Err(Error::PastRhoFold {
+                fold: fold.rho,
+                from: start.rho,
+                what: format!(
+                "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (a fold in rho at a_bar = {}, resolved with {} modes{}; two states at rho {} above it, a_bar = {} and {}), so it has no state at rho = {}",
+                crate::error::short(start.rho),
+                crate::error::rounded(fold.rho),
+                crate::error::rounded(fold.a_bar),
+                fold.truncation.modes,
+                if fold.truncation.arclength > 0 { " of each sign" } else { "" },
+                crate::error::rounded(fold.above - fold.rho),
+                crate::error::rounded(fold.beside[0]),
+                crate::error::rounded(fold.beside[1]),
+                crate::error::short(rho)
+            ),
+            });
+        }
+    }
+    // else the path in (u, ρ), which steps around a fold in ā
+    // (a band's edge) and shows a fold in ρ as ρ turning back
+    match super::rho_path::follow(st, rho, control) {
+        Ok(Followed::Reached(found)) if found.bc_error <= CONVERGED => {
+            let mut found = *found;
+            found.stability = Exact::on(start.gap, rho, found.truncation)?.stability(&found)?;
+            found.route = Route::ContinuedInRho;
+            return Ok(found);
+        }
+        Ok(Followed::TurnedBack {
+            rho: fold, a_bar, ..
+        }) if fold > rho => {
+            return Err(Error::PastRhoFold {
+                fold,
+                from: start.rho,
+                what: format!(
+                    "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (the path in shape and rho from its last state at rho = {} turns back there, at a_bar = {}, {} modes{}), so it has no state at rho = {}",
+                    crate::error::short(start.rho),
+                    crate::error::rounded(fold),
+                    crate::error::rounded(st.rho),
+                    crate::error::rounded(a_bar),
+                    st.truncation.modes,
+                    if st.truncation.arclength > 0 { " of each sign" } else { "" },
+                    crate::error::short(rho)
+                ),
+            });
+        }
+        _ => {}
+    }
+    Err(converged_only_to(
+        start,
+        st,
+        control,
+        &format!(
+            "Newton fails below it with steps in rho down to 1e-3 (the contour is {:.1e} a off the ellipse there; {})",
+            st.deviation_from_ellipse,
+            e.to_string().chars().take(120).collect::<String>()
+        ),
+    ))
+}
+
+/// The family continued in ρ at `control` from `start` converged down to
+/// `st` only, and `why`.
+fn converged_only_to(start: &ExactState, st: &ExactState, control: Hold, why: &str) -> Error {
+    Error::NoState(format!(
+        "continued in rho at {control} from its state at rho = {} ({} modes), the family converges (boundary error below {:.0e}) down to rho = {} only: {why}",
+        crate::error::short(start.rho),
+        start.truncation.modes,
+        CONVERGED,
+        crate::error::rounded(st.rho)
+    ))
 }
 
 /// The exact state at `control` with the truncations `tries`
