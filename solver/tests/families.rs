@@ -556,3 +556,32 @@ fn a_loaded_family_is_listed_where_a_built_in_one_of_its_name_would_be() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 72: a registry or tables file that is a link to /dev/zero (every
+/// command had read it until memory ran out: its length reads as 0, so a
+/// size check alone passed it) is refused at once, unread: its target is
+/// outside the folder, and no device is a regular file.
+#[test]
+fn a_family_file_linked_to_dev_zero_is_refused_unread() {
+    let tables = builtin_tables();
+    let dir = folder("zero-tables", "zeroed", &tables);
+    std::fs::remove_file(dir.join("zeroed/tables.json")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", dir.join("zeroed/tables.json")).unwrap();
+    let started = std::time::Instant::now();
+    let (ok, out, err) = thinjkr(&dir, &["models"]);
+    assert!(ok && !out.contains("zeroed:"), "{out}");
+    assert!(
+        err.contains("family zeroed left out") && err.contains("/dev/zero"),
+        "{err}"
+    );
+    std::fs::remove_file(dir.join("registry.json")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", dir.join("registry.json")).unwrap();
+    let (ok, out, err) = thinjkr(&dir, &["models"]);
+    assert!(ok && out.contains("conformal:8"), "{err}");
+    assert!(
+        err.contains("registry.json") && err.contains("/dev/zero"),
+        "{err}"
+    );
+    assert!(started.elapsed().as_secs() < 10, "{:?}", started.elapsed());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
