@@ -461,7 +461,9 @@ pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
 /// `thinjkr exact reach`.
 pub(crate) fn reach(from: f64, to: f64, step: f64, json: bool) -> Result<()> {
     use crate::exact::reach::Reached;
+    let spin = crate::cli::output::Spinner::start("the reach of each size");
     let map = crate::exact::reach::reach(from, to, step)?;
+    drop(spin);
     if json {
         for size in map {
             outln!("{}", Document::Reach { reach: size }.to_json());
@@ -521,11 +523,13 @@ pub(crate) fn settled_windows(
         }
         None => None,
     };
+    let spin = crate::cli::output::Spinner::start("the windows at this rho");
     let map = match map {
         Some(p) => reach::from_json_lines(&super::files::input(p, MAX_REACH_MAP)?)?,
         None => reach::reach(from, to, step)?,
     };
     let windows = reach::settle(&map, rho, unloading)?;
+    drop(spin);
     if json {
         for window in windows {
             outln!("{}", Document::Window { window }.to_json());

@@ -14,7 +14,7 @@
 //! [`windows`], [`valleys`], [`markdown`], [`Window`], [`WindowEnd`],
 //! [`WindowPath`], [`settle`], [`windows_markdown`], [`windows_from_json_lines`]. May use: `exact` (the family,
 //! `rho_path`, `stability`, `undulations`), `control`, `cutoff`, `error`, `accuracy` (the ρ of its table),
-//! `newton` (the stop flag, carried to rayon's threads), rayon.
+//! `newton` (the stop flag, carried to rayon's threads), `progress` (the sizes followed), rayon.
 
 // computed by the command line, read by the figures
 #![cfg_attr(not(feature = "cli"), allow(dead_code))]
@@ -170,9 +170,17 @@ pub(crate) fn reach(from: f64, to: f64, step: f64) -> Result<Vec<SizeReach>> {
         .map(|k| from + step * k as f64)
         .collect();
     let stop = crate::newton::stop_flag();
+    // the count done, for a person waiting (a size takes seconds)
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    crate::progress::stage(format!("0 of {} sizes followed in rho", sizes.len()));
     sizes
         .par_iter()
-        .map(|&a| crate::newton::carried(stop.clone(), || of_size(a, MODES)))
+        .map(|&a| {
+            let reached = crate::newton::carried(stop.clone(), || of_size(a, MODES));
+            let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            crate::progress::stage(format!("{k} of {} sizes followed in rho", sizes.len()));
+            reached
+        })
         .collect()
 }
 
