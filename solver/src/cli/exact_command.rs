@@ -335,7 +335,9 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
         } => store_no_state(&forces, &deltas, minutes, &out),
         ExactCommand::StorePullOffs { out } => {
             super::files::check_file(&out)?;
+            let spin = crate::cli::output::Spinner::start("following the pull-off down in rho");
             let stored = crate::exact::stored::store()?;
+            drop(spin);
             let json = serde_json::to_string_pretty(&stored).expect("plain data serialises");
             super::files::write_whole(&out, (json + "\n").as_bytes())?;
             errln!(
@@ -366,7 +368,9 @@ fn no_band_words(map: &crate::exact::bands::BandMap) -> Option<&'static str> {
 
 /// `thinjkr exact bands`.
 pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
+    let spin = crate::cli::output::Spinner::start("screening for the bands");
     let map = crate::exact::bands::bands(rho, from, to)?;
+    drop(spin);
     if json {
         outln!("{}", Document::Bands { bands: map }.to_json());
         return Ok(());
@@ -1382,7 +1386,15 @@ fn store_no_state(
         let json = serde_json::to_string_pretty(map).expect("plain data serialises");
         super::files::write_whole(out, (json + "\n").as_bytes())
     };
+    // each line's eight searches run side by side; the spinner says the
+    // newest stage one of them reached
+    let spin = crate::cli::output::Spinner::start(&format!(
+        "the map of no state, {} lines of 8 cells, each at most {} min",
+        forces.len() + deltas.len(),
+        crate::error::short(minutes)
+    ));
     let map = crate::exact::no_state::store(forces, deltas, minutes, previous, &mut write)?;
+    drop(spin);
     let count = |f: fn(&crate::exact::no_state::Cell) -> bool| {
         map.lines
             .iter()

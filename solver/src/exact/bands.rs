@@ -44,7 +44,7 @@
 //! lines). May use: `control`, `exact`
 //! (its family and traces; the screen by the gap's seed, `exact::seed`),
 //! `error`, `newton` (the caller's stop flag, carried to rayon's threads),
-//! rayon.
+//! `progress` (the gap being settled), rayon.
 
 use super::seed::Guess;
 use super::{Contour, Exact};
@@ -279,7 +279,11 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
     crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
+    crate::progress::stage(format!(
+        "the screen by the seed's family, a from {from} to {to}"
+    ));
     let (model, grid, states) = screen(gap, rho, from, to)?;
+    let holes = gaps(&states);
     let mut map = BandMap {
         rho,
         range: [from, to],
@@ -292,7 +296,12 @@ pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
         probed: Vec::new(),
         curve: curve(gap, rho, &grid, &states),
     };
-    for hole in gaps(&states) {
+    let count = holes.len();
+    for (k, hole) in holes.into_iter().enumerate() {
+        crate::progress::stage(format!(
+            "gap {} of {count} the screen found, settled by the exact family's folds",
+            k + 1
+        ));
         match hole {
             Gap::Inside(lo, hi) => {
                 let (left, right) = beside(&states, lo, hi);
