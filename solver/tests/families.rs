@@ -463,6 +463,25 @@ fn a_file_edited_and_sealed_again_is_refused_by_its_algebra() {
     }
 }
 
+/// The folder's registry listing `n` copies of its one family, copy i
+/// changed by `edit(entry, i)`, sealed.
+fn copies(dir: &Path, n: usize, edit: impl Fn(&mut serde_json::Value, usize)) {
+    let path = dir.join("registry.json");
+    let mut registry: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let one = registry["families"][0].clone();
+    registry["families"] = (0..n)
+        .map(|i| {
+            let mut e = one.clone();
+            edit(&mut e, i);
+            e
+        })
+        .collect::<Vec<_>>()
+        .into();
+    std::fs::write(&path, registry.to_string()).unwrap();
+    seal(dir);
+}
+
 /// Issue 72: the folder has a budget, whatever its files say. A registry
 /// under 1 MB listing 2,500 families on one table (3,400 such made
 /// `models` abort out of memory at 4.1 GB) is refused whole, naming the
@@ -474,22 +493,11 @@ fn a_file_edited_and_sealed_again_is_refused_by_its_algebra() {
 fn a_family_folder_is_read_within_a_budget_its_limits_named() {
     let tables = builtin_tables();
     let dir = folder("many", "many", &tables);
-    let path = dir.join("registry.json");
-    let mut registry: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-    let one = registry["families"][0].clone();
-    registry["families"] = (0..2500)
-        .map(|i| {
-            let mut e = one.clone();
-            e["name"] = format!("many{i}").into();
-            e["title"] = "t".into();
-            e["source"] = "s".into();
-            e
-        })
-        .collect::<Vec<_>>()
-        .into();
-    std::fs::write(&path, registry.to_string()).unwrap();
-    seal(&dir);
+    copies(&dir, 2500, |e, i| {
+        e["name"] = format!("many{i}").into();
+        e["title"] = "t".into();
+        e["source"] = "s".into();
+    });
     let started = std::time::Instant::now();
     let (ok, out, err) = thinjkr(&dir, &["models"]);
     assert!(ok && out.contains("conformal:8"), "{err}");
@@ -505,20 +513,7 @@ fn a_family_folder_is_read_within_a_budget_its_limits_named() {
     // three families: 150 MB to read, over the folder's 128 MB
     let padded = format!("{}{}", tables, " ".repeat(50 << 20));
     let dir = folder("bytes", "big", &padded);
-    let path = dir.join("registry.json");
-    let mut registry: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-    let one = registry["families"][0].clone();
-    registry["families"] = (0..3)
-        .map(|i| {
-            let mut e = one.clone();
-            e["name"] = format!("big{i}").into();
-            e
-        })
-        .collect::<Vec<_>>()
-        .into();
-    std::fs::write(&path, registry.to_string()).unwrap();
-    seal(&dir);
+    copies(&dir, 3, |e, i| e["name"] = format!("big{i}").into());
     let (ok, out, err) = thinjkr(&dir, &["models"]);
     assert!(ok, "{err}");
     assert!(out.contains("big0:") && out.contains("big1:"), "{out}");

@@ -464,6 +464,18 @@ impl GapAt {
     }
 }
 
+/// The quartic gap φ̄ = (X² + μY²)²/8 (docs/exact.md, "The gap as data"):
+/// P = (3 − μ)X⁶/720 + μX⁴Y²/48 + μ²Y⁶/240 − δ̄(X² + Y²)/4; for tests.
+#[cfg(test)]
+pub(crate) static QUARTIC: [Term; 6] = [
+    term(6, 0, 0, 0, 3, 720),
+    term(6, 0, 1, 0, -1, 720),
+    term(4, 2, 1, 0, 1, 48),
+    term(0, 6, 2, 0, 1, 240),
+    term(2, 0, 0, 1, -1, 4),
+    term(0, 2, 0, 1, -1, 4),
+];
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -522,16 +534,7 @@ mod tests {
         assert!((wx - (x * x + y * y) / 4.0 * (phi - d)).abs() < 1e-14);
     }
 
-    /// The quartic gap φ̄ = (X² + μY²)²/8 (docs/exact.md, "The gap as
-    /// data"): P = (3 − μ)X⁶/720 + μX⁴Y²/48 + μ²Y⁶/240 − δ̄(X² + Y²)/4.
-    static QUARTIC: [Term; 6] = [
-        term(6, 0, 0, 0, 3, 720),
-        term(6, 0, 1, 0, -1, 720),
-        term(4, 2, 1, 0, 1, 48),
-        term(0, 6, 2, 0, 1, 240),
-        term(2, 0, 0, 1, -1, 4),
-        term(0, 2, 0, 1, -1, 4),
-    ];
+    use super::QUARTIC;
 
     /// At ρ = 1 the quartic gap is r⁴/8, and the axisymmetric problem
     /// (1/r)(r p′)′ = r⁴/8 − δ̄, p(ā) = 0, p′(ā) = 1 has
