@@ -596,6 +596,24 @@ fn where_the_map_found_none_a_state_is_refused_without_a_search() {
             .unwrap()
             .contains("thinjkr exact store-no-state"));
     }
+    // where the map's search ran its whole time limit without an answer
+    // (F̄ = 10 at ρ = 0.1; the issue timed more than 300 s, the store 25
+    // min): not resolved, at once, in one line that says so
+    let started = std::time::Instant::now();
+    let (ok, out, err) = thinjkr(&["exact", "solve", "--rho", "0.1", "--force", "10", "--json"]);
+    assert!(started.elapsed().as_secs() < 10, "{:?}", started.elapsed());
+    assert!(!ok, "{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["error"]["kind"], "unresolved", "{err}");
+    let message = v["error"]["message"].as_str().unwrap();
+    assert!(message.chars().count() <= 300, "{message}");
+    for words in [
+        "ran 25 min without finding a state",
+        "exact_no_state.json",
+        "--search",
+    ] {
+        assert!(message.contains(words), "{message}");
+    }
 }
 
 /// Issue 72: a limit is checked after the rounding that prints it. A

@@ -209,9 +209,9 @@ pub(crate) enum ExactCommand {
     /// Write the map of where the exact search finds no state (solver/data/exact_no_state.json): the search of
     /// `exact solve` at each force and approach given, at each rho of 0.25, 0.2, 0.175, 0.15, 0.125, 0.1, 0.075
     /// and 0.05, each stopped after --minutes (hours); a request in a cell of the map that found none at every
-    /// corner is then refused at once. The file is written after each force or approach; a map already there
-    /// (with the same --minutes) is extended: its other lines and its settled cells are kept, its unsettled
-    /// ones searched again.
+    /// corner is then refused at once (as not resolved where some corners ran out of the time limit instead).
+    /// The file is written after each force or approach; a map already there (with the same --minutes) is
+    /// extended: its other lines and the cells that found a state or none are kept, the others searched again.
     #[command(
         name = "store-no-state",
         after_help = "Example:\n  thinjkr exact store-no-state --forces 0,10 --minutes 30 --out solver/data/exact_no_state.json"
@@ -223,8 +223,8 @@ pub(crate) enum ExactCommand {
         /// The approaches δ̄ (comma-separated, at most 50).
         #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
         deltas: Vec<f64>,
-        /// The time limit of one search, in minutes (0 < minutes ≤ 1440); a search stopped by it leaves its cell
-        /// unsettled.
+        /// The time limit of one search, in minutes (0 < minutes ≤ 1440); a search stopped by it marks its cell
+        /// stopped.
         #[arg(long, default_value_t = 30.0)]
         minutes: f64,
         /// Write the JSON here (a new or existing file in an existing folder).
@@ -1404,10 +1404,11 @@ fn store_no_state(
     };
     use crate::exact::no_state::Cell;
     errln!(
-        "thinjkr: {} cells: {} found a state, {} none, {} unsettled",
+        "thinjkr: {} cells: {} found a state, {} none, {} stopped at the time limit, {} unsettled",
         count(|_| true),
         count(|c| matches!(c, Cell::Found { .. })),
         count(|c| matches!(c, Cell::None { .. })),
+        count(|c| matches!(c, Cell::Stopped { .. })),
         count(|c| matches!(c, Cell::Unsettled { .. }))
     );
     Ok(())

@@ -4,12 +4,15 @@
 //! `thinjkr exact store-no-state` in `solver/data/exact_no_state.json`.
 //! Below the fold in ρ of the family at a control the search tries arms of
 //! larger contacts, rung after rung, and takes minutes to say it found
-//! none (zero force at ρ = 0.15: 94 s; F̄ = 10 at ρ = 0.1: about 19 min).
+//! none (zero force at ρ = 0.15: 94 s; F̄ = 10 at ρ = 0.1: more than 25 min).
 //! A request inside a cell of the map (between two of its controls and
 //! two of its ρ, or on one of them) whose every corner found none is
-//! refused at once, citing the map; `--search` (the command line) searches
-//! anyway. A cell with a corner where a state was found, or where the
-//! search was stopped by the store's time limit, is searched as before.
+//! refused at once, citing the map; one whose every corner found none or
+//! ran out of the store's time limit without an answer (F̄ = 10 at ρ = 0.1
+//! did, at 25 min) is refused at once as not resolved, saying so; `--search`
+//! (the command line) searches anyway, without a limit. A cell with a
+//! corner where a state was found, or where the search failed otherwise,
+//! is searched as before.
 //!
 //! The map holds the cylinders' gap only; where the file cannot be read,
 //! nothing is refused.
@@ -55,8 +58,17 @@ pub(crate) enum Cell {
         /// What it said.
         why: String,
     },
-    /// The search was stopped at the store's time limit (or failed
-    /// otherwise than by finding no state): nothing is refused near it.
+    /// The search ran the store's whole time limit without an answer:
+    /// near it a request is refused as not resolved, unless a corner found
+    /// a state.
+    Stopped {
+        /// ρ.
+        rho: f64,
+        /// The time limit, in minutes.
+        minutes: f64,
+    },
+    /// The search failed otherwise than by finding no state: nothing is
+    /// refused near it.
     Unsettled {
         /// ρ.
         rho: f64,
@@ -68,7 +80,10 @@ pub(crate) enum Cell {
 impl Cell {
     fn rho(&self) -> f64 {
         match self {
-            Cell::Found { rho, .. } | Cell::None { rho, .. } | Cell::Unsettled { rho, .. } => *rho,
+            Cell::Found { rho, .. }
+            | Cell::None { rho, .. }
+            | Cell::Stopped { rho, .. }
+            | Cell::Unsettled { rho, .. } => *rho,
         }
     }
 }
@@ -131,7 +146,7 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
     // the lines at or either side of the value
     let below = lines.iter().rev().find(|l| l.value <= value)?;
     let above = lines.iter().find(|l| l.value >= value)?;
-    let mut corners = Vec::new();
+    let (mut corners, mut stopped) = (Vec::new(), Vec::new());
     // the cell of the line at or below the value at or below ρ: what the
     // search said there
     let mut nearest: Option<(f64, &str)> = None;
@@ -150,15 +165,14 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
         for cell in [upper, lower] {
             match cell {
                 Cell::None { .. } => corners.push((line.value, cell.rho())),
-                _ => return None,
+                Cell::Stopped { .. } => stopped.push((line.value, cell.rho())),
+                Cell::Found { .. } | Cell::Unsettled { .. } => return None,
             }
         }
         if let (None, Cell::None { rho, why }) = (nearest, lower) {
             nearest = Some((*rho, why.as_str()));
         }
     }
-    let (nearest_rho, first) = nearest?;
-    corners.dedup();
     let span = |a: f64, b: f64| {
         if a == b {
             short(a)
@@ -166,6 +180,39 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
             format!("{} … {}", short(a), short(b))
         }
     };
+    if !stopped.is_empty() {
+        // every corner found none or ran out of time: not resolved
+        stopped.dedup();
+        corners.dedup();
+        let rhos = stopped.iter().chain(&corners).map(|c| c.1);
+        let (hi, lo) = (
+            rhos.clone().fold(f64::NEG_INFINITY, f64::max),
+            rhos.fold(f64::INFINITY, f64::min),
+        );
+        let at = if stopped.len() + corners.len() == 1 {
+            String::new()
+        } else if corners.is_empty() {
+            format!(" at each of the cell's {} corners", stopped.len())
+        } else {
+            format!(
+                " at {} of the cell's corners, and found none at the other {}",
+                stopped.len(),
+                corners.len()
+            )
+        };
+        return Some(Error::Unresolved {
+            what: format!(
+                "the exact search at {name} = {}, rho = {} ran {} min without finding a state{at} (the map {PATH}; --search searches anyway, without a limit); the map was written by `{}`",
+                span(below.value, above.value),
+                span(hi, lo),
+                short(map.minutes),
+                map.generated_by,
+            ),
+            residual: f64::INFINITY,
+        });
+    }
+    let (nearest_rho, first) = nearest?;
+    corners.dedup();
     Some(Error::NoState(format!(
         "the exact search finds no state at {name} = {}, rho = {}{} (the map {PATH}; --search searches anyway, for minutes); the map was written by `{}`; at {name} = {}, rho = {} the search said: {first}",
         span(below.value, above.value),
@@ -186,11 +233,11 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
 
 /// The map at the forces and approaches given: the search of
 /// [`super::at_resolved`] at each ρ of [`LADDER`], each stopped after
-/// `minutes` (then [`Cell::Unsettled`]), the cells of a line side by side.
+/// `minutes` (then [`Cell::Stopped`]), the cells of a line side by side.
 /// A line of `previous` (the file being rewritten) at a value asked for
 /// keeps its settled cells (found or none, with the same time limit):
-/// only its unsettled cells are searched again, and its other lines are
-/// kept. `written` is given the map after each line, so that a long run
+/// only its stopped and unsettled cells are searched again, and its other
+/// lines are kept. `written` is given the map after each line, so that a long run
 /// stopped part way keeps what it settled.
 #[cfg(feature = "cli")]
 pub(crate) fn store(
@@ -230,7 +277,7 @@ pub(crate) fn store(
             kept.as_ref().and_then(|l| {
                 l.cells
                     .iter()
-                    .find(|c| c.rho() == rho && !matches!(c, Cell::Unsettled { .. }))
+                    .find(|c| c.rho() == rho && matches!(c, Cell::Found { .. } | Cell::None { .. }))
                     .cloned()
             })
         };
@@ -322,13 +369,7 @@ fn searched_within(rho: f64, control: Hold, minutes: f64) -> Cell {
             rho,
             a_bar: st.a_bar,
         },
-        Err(_) if flag.load(Ordering::Relaxed) => Cell::Unsettled {
-            rho,
-            why: format!(
-                "the search was stopped at the store's limit of {} min",
-                short(minutes)
-            ),
-        },
+        Err(_) if flag.load(Ordering::Relaxed) => Cell::Stopped { rho, minutes },
         Err(e @ (Error::NoState(_) | Error::PastRhoFold { .. } | Error::StopsInRho { .. })) => {
             Cell::None {
                 rho,
@@ -400,6 +441,54 @@ mod tests {
         let words = e.to_string();
         assert!(words.contains("--search"), "{words}");
         assert!(words.contains("rho = 0.15 … 0.1"), "{words}");
+    }
+
+    /// A cell whose corners found none or ran out of the store's time
+    /// limit (F̄ = 10 at ρ = 0.1 did, at 25 min) is refused as not resolved,
+    /// saying so; a corner that found a state, or failed otherwise, leaves
+    /// it to the search.
+    #[test]
+    fn a_cell_that_ran_out_of_time_is_refused_as_not_resolved() {
+        let stopped = |rho: f64| Cell::Stopped { rho, minutes: 1.0 };
+        let m = NoStateMap {
+            generated_by: "a test".into(),
+            minutes: 1.0,
+            lines: vec![
+                Line {
+                    control: "force".into(),
+                    value: 0.0,
+                    cells: vec![found(0.2), none(0.15), none(0.1)],
+                },
+                Line {
+                    control: "force".into(),
+                    value: 10.0,
+                    cells: vec![
+                        found(0.2),
+                        stopped(0.15),
+                        Cell::Unsettled {
+                            rho: 0.1,
+                            why: "a failure".into(),
+                        },
+                    ],
+                },
+            ],
+        };
+        let e = refusal_in(&m, 0.15, Hold::Force(10.0)).expect("refused");
+        assert_eq!(e.kind(), "unresolved");
+        let words = e.to_string();
+        assert!(
+            words.contains("ran 1 min without finding a state (") && words.contains("--search"),
+            "{words}"
+        );
+        let e = refusal_in(&m, 0.15, Hold::Force(5.0)).expect("refused");
+        assert!(
+            e.to_string()
+                .contains("at 1 of the cell's corners, and found none at the other 1"),
+            "{e}"
+        );
+        // a corner that failed otherwise, or found a state
+        assert!(refusal_in(&m, 0.12, Hold::Force(10.0)).is_none());
+        assert!(refusal_in(&m, 0.17, Hold::Force(10.0)).is_none());
     }
 
     /// Slow tier: the committed map's cells at zero force, ρ = 0.2 and 0.15,
