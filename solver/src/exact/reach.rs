@@ -653,52 +653,6 @@ fn unloaded(start: &ExactState, cutoff: crate::cutoff::Cutoff) -> Result<WindowP
 /// The table of docs/exact.md of the settled windows at each ρ of
 /// `windows` (in their order).
 pub(crate) fn windows_markdown(windows: &[Window]) -> String {
-    // a force with a minus sign, not a hyphen
-    let force = |f: f64| format!("{f:.2}").replace('-', "−");
-    let end = |e: &WindowEnd| match e {
-        WindowEnd::Fold {
-            a_bar,
-            force_bar,
-            mode,
-            bc_error,
-            ..
-        } => format!(
-            "fold at {a_bar:.4} (F̄ = {}{}; {bc_error:.0e})",
-            force(*force_bar),
-            mode.map_or(String::new(), |n| format!(", n = {n}"))
-        ),
-        WindowEnd::Unresolved {
-            a_bar,
-            force_bar,
-            bc_error,
-        } => format!(
-            "unresolved from {a_bar:.3} (F̄ = {}; {bc_error:.0e})",
-            force(*force_bar)
-        ),
-        WindowEnd::Beyond { a_bar } => format!("no fold up to {a_bar:.2}"),
-        WindowEnd::Failed { .. } => "failed".to_string(),
-        WindowEnd::Crossed { a_bar, window } => format!(
-            "not settled: ended at {a_bar:.4}, past the window {:.2} – {:.2}",
-            window[0], window[1]
-        ),
-    };
-    // the coatings' range under one control: "0.250 on", "0.248 to 0.744", "none"
-    let range = |t: &Option<super::undulations::Thinnesses>| match t {
-        None => "none".to_string(),
-        Some(t) => match t.to {
-            None => format!("{:.3} on", t.from),
-            Some(to) => format!("{:.3} to {to:.3}", t.from),
-        },
-    };
-    let coatings = |w: &Window| match w.coatings {
-        None => "not computed".to_string(),
-        Some(c) if c.load == c.displacement => range(&c.load),
-        Some(c) => format!(
-            "{} (load); {} (displacement)",
-            range(&c.load),
-            range(&c.displacement)
-        ),
-    };
     // the loading path from the start, where any was followed (at a ρ
     // where none was, none was asked for)
     let thinness = windows
@@ -708,47 +662,6 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
         windows
             .iter()
             .any(|w| w.rho == rho && w.unloading.is_some())
-    };
-    let passed = |p: &WindowPath| {
-        let list = |modes: &[usize]| {
-            modes
-                .iter()
-                .map(|n| n.to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        if p.unresolved_turned_unstable.is_empty() {
-            String::new()
-        } else {
-            format!(
-                "turns unstable to n = {} (unresolved); ",
-                list(&p.unresolved_turned_unstable)
-            )
-        }
-    };
-    let path = |w: &Window| match &w.unloading {
-        None if !asked(w.rho) => "not computed".to_string(),
-        None => "not started (not a resolved stable contact at this h/L)".to_string(),
-        Some(p) => {
-            passed(p)
-                + &match p.unresolved {
-                    Some((n, share)) => format!(
-                        "holds to F̄ = {}; at F̄ = {} (ā = {:.4}) n = {n} reaches {:.2} % of ā{}",
-                        force(p.resolved_force_bar),
-                        force(p.last_force_bar),
-                        p.last_a_bar,
-                        100.0 * share,
-                        match p.passed_to {
-                            Some([f, a]) => format!(
-                                "; passes the band onto the piece below at F̄ = {} (ā = {a:.4})",
-                                force(f)
-                            ),
-                            None => "; no piece beyond found: not settled".to_string(),
-                        }
-                    ),
-                    None => format!("to F̄ = {}: {}", force(p.last_force_bar), p.end),
-                }
-        }
     };
     let mut s = match thinness {
         None => String::from(
@@ -766,20 +679,116 @@ pub(crate) fn windows_markdown(windows: &[Window]) -> String {
             w.grid[1],
             w.a_bar,
             match (w.force_bar, w.bc_error) {
-                (Some(f), Some(e)) => format!("{} ({e:.0e})", force(f)),
+                (Some(f), Some(e)) => format!("{} ({e:.0e})", signed_force(f)),
                 _ => "no state".to_string(),
             },
-            end(&w.lower),
-            end(&w.upper),
-            coatings(w),
+            end_words(&w.lower),
+            end_words(&w.upper),
+            coatings_words(w),
             if thinness.is_some() {
-                format!(" | {}", path(w))
+                format!(" | {}", path_words(w, asked(w.rho)))
             } else {
                 String::new()
             }
         );
     }
     s
+}
+
+/// A force with a minus sign, not a hyphen, to two decimals.
+fn signed_force(f: f64) -> String {
+    format!("{f:.2}").replace('-', "−")
+}
+
+/// How a window ends on one side, in the table's words.
+fn end_words(e: &WindowEnd) -> String {
+    match e {
+        WindowEnd::Fold {
+            a_bar,
+            force_bar,
+            mode,
+            bc_error,
+            ..
+        } => format!(
+            "fold at {a_bar:.4} (F̄ = {}{}; {bc_error:.0e})",
+            signed_force(*force_bar),
+            mode.map_or(String::new(), |n| format!(", n = {n}"))
+        ),
+        WindowEnd::Unresolved {
+            a_bar,
+            force_bar,
+            bc_error,
+        } => format!(
+            "unresolved from {a_bar:.3} (F̄ = {}; {bc_error:.0e})",
+            signed_force(*force_bar)
+        ),
+        WindowEnd::Beyond { a_bar } => format!("no fold up to {a_bar:.2}"),
+        WindowEnd::Failed { .. } => "failed".to_string(),
+        WindowEnd::Crossed { a_bar, window } => format!(
+            "not settled: ended at {a_bar:.4}, past the window {:.2} – {:.2}",
+            window[0], window[1]
+        ),
+    }
+}
+
+/// The coatings for which a window's start is a resolved stable contact:
+/// under both controls, or each ("0.250 on", "0.248 to 0.744", "none").
+fn coatings_words(w: &Window) -> String {
+    let range = |t: &Option<super::undulations::Thinnesses>| match t {
+        None => "none".to_string(),
+        Some(t) => match t.to {
+            None => format!("{:.3} on", t.from),
+            Some(to) => format!("{:.3} to {to:.3}", t.from),
+        },
+    };
+    match w.coatings {
+        None => "not computed".to_string(),
+        Some(c) if c.load == c.displacement => range(&c.load),
+        Some(c) => format!(
+            "{} (load); {} (displacement)",
+            range(&c.load),
+            range(&c.displacement)
+        ),
+    }
+}
+
+/// The loading path unloaded from a window's start, in the table's words
+/// (`asked`: a path was asked for at the window's ρ).
+fn path_words(w: &Window, asked: bool) -> String {
+    match &w.unloading {
+        None if !asked => "not computed".to_string(),
+        None => "not started (not a resolved stable contact at this h/L)".to_string(),
+        Some(p) => {
+            let turned = if p.unresolved_turned_unstable.is_empty() {
+                String::new()
+            } else {
+                let list: Vec<String> = p
+                    .unresolved_turned_unstable
+                    .iter()
+                    .map(|n| n.to_string())
+                    .collect();
+                format!("turns unstable to n = {} (unresolved); ", list.join(", "))
+            };
+            turned
+                + &match p.unresolved {
+                    Some((n, share)) => format!(
+                        "holds to F̄ = {}; at F̄ = {} (ā = {:.4}) n = {n} reaches {:.2} % of ā{}",
+                        signed_force(p.resolved_force_bar),
+                        signed_force(p.last_force_bar),
+                        p.last_a_bar,
+                        100.0 * share,
+                        match p.passed_to {
+                            Some([f, a]) => format!(
+                                "; passes the band onto the piece below at F̄ = {} (ā = {a:.4})",
+                                signed_force(f)
+                            ),
+                            None => "; no piece beyond found: not settled".to_string(),
+                        }
+                    ),
+                    None => format!("to F̄ = {}: {}", signed_force(p.last_force_bar), p.end),
+                }
+        }
+    }
 }
 
 /// The sizes of the lines `thinjkr exact reach --json` writes (one
