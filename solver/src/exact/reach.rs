@@ -508,34 +508,7 @@ fn settle_one(
         }
     };
     let ex = Exact::on(state.gap, rho, state.truncation)?.deferring_stability();
-    let end = |direction: f64, step: f64| -> Result<WindowEnd> {
-        let limit = a_bar + direction * WINDOW_SPAN;
-        Ok(
-            match ex.to_size_fold_within(&state, direction, limit, step, WINDOW_RESOLVED) {
-                Ok(SizeFoldEnd::Fold(st, mode)) => WindowEnd::Fold {
-                    a_bar: st.a_bar,
-                    s: st.s,
-                    force_bar: st.force_bar,
-                    mode,
-                    bc_error: st.bc_error,
-                },
-                Ok(SizeFoldEnd::Unresolved {
-                    a_bar,
-                    force_bar,
-                    bc_error,
-                }) => WindowEnd::Unresolved {
-                    a_bar,
-                    force_bar,
-                    bc_error,
-                },
-                Ok(SizeFoldEnd::Beyond) => WindowEnd::Beyond { a_bar: limit },
-                Err(e) => {
-                    crate::newton::check_stop()?;
-                    WindowEnd::Failed { why: e.detail() }
-                }
-            },
-        )
-    };
+    let end = |direction: f64, step: f64| window_end(&ex, &state, a_bar, direction, step);
     // an end past the next window of the grid crossed the band between
     let others = windows(map, rho);
     let checked = |e: WindowEnd, direction: f64| {
@@ -594,6 +567,45 @@ fn settle_one(
         lower: settled(-1.0)?,
         upper: settled(1.0)?,
     })
+}
+
+/// Where the family at fixed ρ traced from `state`, the window's state of
+/// size `a_bar`, in ā (`direction` ±1, steps of `step`, at most
+/// [`WINDOW_SPAN`]) ends: at a fold in ā, where it stops being resolved,
+/// beyond the span, or failed (a stop asked for is an error).
+fn window_end(
+    ex: &Exact,
+    state: &ExactState,
+    a_bar: f64,
+    direction: f64,
+    step: f64,
+) -> Result<WindowEnd> {
+    let limit = a_bar + direction * WINDOW_SPAN;
+    Ok(
+        match ex.to_size_fold_within(state, direction, limit, step, WINDOW_RESOLVED) {
+            Ok(SizeFoldEnd::Fold(st, mode)) => WindowEnd::Fold {
+                a_bar: st.a_bar,
+                s: st.s,
+                force_bar: st.force_bar,
+                mode,
+                bc_error: st.bc_error,
+            },
+            Ok(SizeFoldEnd::Unresolved {
+                a_bar,
+                force_bar,
+                bc_error,
+            }) => WindowEnd::Unresolved {
+                a_bar,
+                force_bar,
+                bc_error,
+            },
+            Ok(SizeFoldEnd::Beyond) => WindowEnd::Beyond { a_bar: limit },
+            Err(e) => {
+                crate::newton::check_stop()?;
+                WindowEnd::Failed { why: e.detail() }
+            }
+        },
+    )
 }
 
 /// The loading path from `start` (its stability computed) with `cutoff`.
