@@ -121,6 +121,39 @@ pub(crate) fn rho_fold(last: &ExactState, control: Hold, tries: &[Truncation]) -
     })
 }
 
+/// The two sizes ā either side of the fold (ā = `a`, ρ = `r`, ρ*(ā) ≈
+/// r + c (ā − a)² near it) where ρ*(ā) = `above`, by the secant method from
+/// the fold outwards (`eval`: ρ*(ā)); `None` where either is not found to
+/// 1e-10 on its own side.
+fn beside_the_fold(
+    eval: &mut dyn FnMut(f64) -> f64,
+    a: f64,
+    r: f64,
+    c: f64,
+    above: f64,
+) -> Option<[f64; 2]> {
+    let mut beside = [f64::NAN; 2];
+    for (k, dir) in [-1.0, 1.0].into_iter().enumerate() {
+        let (mut x0, mut f0) = (a, r - above);
+        let mut x1 = a + dir * ((above - r) / c).sqrt();
+        let mut f1 = eval(x1) - above;
+        for _ in 0..30 {
+            if f1.abs() <= 1e-10 {
+                break;
+            }
+            let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+            (x0, f0) = (x1, f1);
+            x1 = x2;
+            f1 = eval(x1) - above;
+        }
+        if f1.abs() > 1e-10 || (x1 - a) * dir <= 0.0 {
+            return None;
+        }
+        beside[k] = x1;
+    }
+    Some(beside)
+}
+
 /// [`rho_fold`] with the truncation `t`, and the fine-grid boundary error
 /// of the state at the fold.
 fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f64)> {
@@ -210,26 +243,7 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
     let c = ((rl - 2.0 * r + rr) / (2.0 * h * h)).max(1e-6);
     // the two states at the control a little above the fold
     let above = r + (0.002 * (last.rho - r)).max(1e-4);
-    let mut beside = [f64::NAN; 2];
-    for (k, dir) in [-1.0, 1.0].into_iter().enumerate() {
-        // ā where ρ*(ā) = above, by the secant method from the fold outwards
-        let (mut x0, mut f0) = (a, r - above);
-        let mut x1 = a + dir * ((above - r) / c).sqrt();
-        let mut f1 = eval(x1) - above;
-        for _ in 0..30 {
-            if f1.abs() <= 1e-10 {
-                break;
-            }
-            let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
-            (x0, f0) = (x1, f1);
-            x1 = x2;
-            f1 = eval(x1) - above;
-        }
-        if f1.abs() > 1e-10 || (x1 - a) * dir <= 0.0 {
-            return None;
-        }
-        beside[k] = x1;
-    }
+    let beside = beside_the_fold(&mut eval, a, r, c, above)?;
     // the state at the fold, on the fine grid
     let at_fold = rho_at(
         &ex,
