@@ -353,6 +353,16 @@ impl GapAt {
     }
 
     /// ∂P/∂δ̄ = P₁ at (X, Y).
+    /// ∇P = P_X + i P_Y at the point z, as a complex number.
+    pub(crate) fn grad_complex(
+        &self,
+        z: nalgebra::Complex<f64>,
+        delta_bar: f64,
+    ) -> nalgebra::Complex<f64> {
+        let (px, py) = self.grad(z.re, z.im, delta_bar);
+        nalgebra::Complex::new(px, py)
+    }
+
     pub(crate) fn p_delta(&self, x: f64, y: f64) -> f64 {
         self.p1.eval(x, y)
     }

@@ -28,8 +28,9 @@
 //! Owns: [`Linear`], [`Exact::linear`]. May use: `exact`, `exact::bie`,
 //! nalgebra, rayon (through `exact::both`).
 
-use super::bie::{orbits, Grid};
+use super::bie::{orbits, ContourSamples, Grid};
 use super::Exact;
+use super::GapAt;
 use nalgebra::{Complex, DMatrix, DVector};
 
 /// ∂p̄/∂ν at the grid points and F̄, with their derivatives in u.
@@ -82,38 +83,11 @@ impl Exact {
         // the contour basis: e_l(θ_j) = grid.basis[l][j]
         let e = &grid.basis;
 
-        // the forward solve, as bie::solve_dirichlet_symmetric, keeping
-        // ι_ij = 1/(z_j − z_i) beside the kernel w_ij = z′_j ι_ij (sharing
-        // bie's kernel, w = z′_j/(z_j − z_i), rounds differently, and moved
-        // the ρ = 1 pull-off, located by values of F̄ where F̄ is flat, by
-        // 4e-8 in ā)
-        let mut inv = DMatrix::<C>::zeros(m, n);
-        let mut w = DMatrix::<C>::zeros(m, n);
-        let mut a = DMatrix::<f64>::zeros(m, m);
-        for (r, &i) in reps.iter().enumerate() {
-            let mut row = 0.0;
-            for j in 0..n {
-                if j != i {
-                    let v = C::new(1.0, 0.0) / (s.z[j] - s.z[i]);
-                    inv[(r, j)] = v;
-                    let wij = s.dz[j] * v;
-                    w[(r, j)] = wij;
-                    let k = wij.im / nf;
-                    a[(r, orbit[j])] += k;
-                    row += k;
-                }
-            }
-            a[(r, r)] += 1.0 - row;
-        }
+        // the forward solve, as bie::solve_dirichlet_symmetric
+        let (inv, w, a) = forward_system(&s, &reps, &orbit);
         // the gap's particular solution P and its gradient P_X + i P_Y
         let gap = &self.gap;
-        let grad_p: Vec<C> =
-            s.z.iter()
-                .map(|z| {
-                    let (px, py) = gap.grad(z.re, z.im, delta);
-                    C::new(px, py)
-                })
-                .collect();
+        let grad_p: Vec<C> = s.z.iter().map(|z| gap.grad_complex(*z, delta)).collect();
         let g =
             DVector::from_iterator(m, reps.iter().map(|&i| -gap.p(s.z[i].re, s.z[i].im, delta)));
         let lu = a.lu();
@@ -127,48 +101,25 @@ impl Exact {
         let psi: Vec<C> = (0..n).map(|j| d_mu[j] / s.dz[j]).collect();
         let speed: Vec<f64> = s.dz.iter().map(|d| d.norm()).collect();
         let nu_of = |i: usize| -i_unit * s.dz[i] / speed[i];
-        // at the representatives: ψ′, F′, ν and ∂p̄/∂ν
-        let mut d_psi = vec![C::new(0.0, 0.0); m];
-        let mut f_prime = vec![C::new(0.0, 0.0); m];
-        let mut dn_rep = vec![0.0; m];
-        for (r, &i) in reps.iter().enumerate() {
-            let dz = s.dz[i];
-            d_psi[r] = (dz * dd_mu[i] - s.ddz[i] * d_mu[i]) / (dz * dz);
-            let mut sum = d_psi[r];
-            for j in 0..n {
-                if j != i {
-                    sum += (psi[j] - psi[i]) * w[(r, j)];
-                }
-            }
-            f_prime[r] = psi[i] + sum / (i_unit * nf);
-            let nu_i = nu_of(i);
-            dn_rep[r] = (f_prime[r] * nu_i).re + (grad_p[i].conj() * nu_i).re;
-        }
+        let (d_psi, f_prime, dn_rep) =
+            at_representatives(&s, &reps, &w, &psi, &d_mu, &dd_mu, &grad_p);
         let dn: Vec<f64> = orbit.iter().map(|&k| dn_rep[k]).collect();
 
         // δz, δz′, δz″ of each unknown at each point (δ̄ moves none)
-        let dz_of = |j: usize, l: usize| if l < nc { e[l][j] } else { C::new(0.0, 0.0) };
-        let ddz_of =
-            |j: usize, l: usize| i_unit * mult.get(l).copied().unwrap_or(0.0) * dz_of(j, l);
-        let dddz_of =
-            |j: usize, l: usize| -(mult.get(l).copied().unwrap_or(0.0).powi(2)) * dz_of(j, l);
+        let moves = Moves { e, mult: &mult, nc };
+        let (dz_of, ddz_of) = (|j, l| moves.dz(j, l), |j, l| moves.ddz(j, l));
 
-        // δg at the representatives
-        let mut rhs = DMatrix::<f64>::zeros(m, nu);
-        for (r, &i) in reps.iter().enumerate() {
-            for l in 0..nc {
-                rhs[(r, l)] = -(grad_p[i].conj() * e[l][i]).re;
-            }
-            rhs[(r, nc)] = -gap.p_delta(s.z[i].re, s.z[i].im);
-        }
-        // minus Σ_j Im(δw_ij)(μ_j − μ_i)/n
+        // δg at the representatives, minus Σ_j Im(δw_ij)(μ_j − μ_i)/n
         let mu_c: Vec<C> = mu.iter().map(|&v| C::new(v, 0.0)).collect();
         let q = moving_kernel_sums(grid, &reps, &inv, &w, &mult, &mu_c);
-        for r in 0..m {
-            for l in 0..nc {
-                rhs[(r, l)] -= q[(r, l)].im / nf;
+        let rhs = DMatrix::<f64>::from_fn(m, nu, |r, l| {
+            let i = reps[r];
+            if l < nc {
+                -(grad_p[i].conj() * e[l][i]).re - q[(r, l)].im / nf
+            } else {
+                -gap.p_delta(s.z[i].re, s.z[i].im)
             }
-        }
+        });
         let d_mu_red = lu.solve(&rhs)?;
         // δμ′ and δμ″ at the representatives (the sums below need δψ there
         // only)
@@ -201,7 +152,7 @@ impl Exact {
             let (x, y) = (s.z[i].re, s.z[i].im);
             let nu_i = nu_of(i);
             for l in 0..nu {
-                let (dz1, dz2, dz3) = (dz_of(i, l), ddz_of(i, l), dddz_of(i, l));
+                let (dz1, dz2, dz3) = (dz_of(i, l), ddz_of(i, l), moves.dddz(i, l));
                 let d_d_psi = (dz2 * dd_mu[i] + dz * ddd_mu_rep[(r, l)]
                     - dz3 * d_mu[i]
                     - s.ddz[i] * dd_mu_rep[(r, l)])
@@ -214,46 +165,16 @@ impl Exact {
                 let d_f_prime = d_psi_rep[(r, l)] + d_sum / (i_unit * nf);
                 let d_nu =
                     -i_unit * (dz2 / speed[i] - dz * ((dz.conj() * dz2).re / speed[i].powi(3)));
-                let d_grad_p = if l < nc {
-                    let h = &hess[r];
-                    C::new(
-                        h.p_xx * dz1.re + h.p_xy * dz1.im,
-                        h.p_xy * dz1.re + h.p_yy * dz1.im,
-                    )
-                } else {
-                    let (gx, gy) = gap.grad_delta(x, y);
-                    C::new(gx, gy)
-                };
+                let d_grad_p = moved_gradient(gap, &hess[r], (x, y), dz1, l < nc);
                 d_dn_rep[(r, l)] = (d_f_prime * nu_i + f_prime[r] * d_nu).re
                     + (d_grad_p.conj() * nu_i + grad_p[i].conj() * d_nu).re;
             }
         }
         let d_dn = DMatrix::<f64>::from_fn(n, nu, |j, l| d_dn_rep[(orbit[j], l)]);
 
-        // F̄ = Σ_i (−w ∂p̄/∂ν |z′| + W Im z′) h (`fields`), and its derivatives
-        let h = 2.0 * std::f64::consts::PI / nf;
-        let mut force = 0.0;
-        let mut d_force = DVector::<f64>::zeros(nu);
-        for i in 0..n {
-            let (z, dz) = (s.z[i], s.dz[i]);
-            let (x, y) = (z.re, z.im);
-            let ww = (x * x + y * y) / 4.0;
-            // W = ∫ w(φ̄ − δ̄) dX, ∂W/∂X, ∂W/∂Y, ∂W/∂δ̄
-            let [big_w, w_x, w_y, w_delta] = gap.force_potential(x, y, delta);
-            force += (-ww * dn[i] * speed[i] + big_w * dz.im) * h;
-            for l in 0..nu {
-                let (dz1, dz2) = (dz_of(i, l), ddz_of(i, l));
-                let d_ww = (x * dz1.re + y * dz1.im) / 2.0;
-                let d_speed = (dz.conj() * dz2).re / speed[i];
-                let d_big_w = w_x * dz1.re + w_y * dz1.im + if l < nc { 0.0 } else { w_delta };
-                d_force[l] += (-d_ww * dn[i] * speed[i]
-                    - ww * d_dn[(i, l)] * speed[i]
-                    - ww * dn[i] * d_speed
-                    + d_big_w * dz.im
-                    + big_w * dz2.im)
-                    * h;
-            }
-        }
+        let (force, d_force) = force_and_slope(gap, &s, delta, &dn, &d_dn, nc, &|i, l| {
+            (dz_of(i, l), ddz_of(i, l))
+        });
         Some(Linear {
             dn,
             force,
@@ -261,6 +182,164 @@ impl Exact {
             d_force,
         })
     }
+}
+
+/// δz, δz′ and δz″ at point j of unknown l: the contour basis e_l(θ_j)
+/// and its multiplier m_l for the `nc` contour coefficients (δz′ = i m_l
+/// δz, δz″ = −m_l² δz); δ̄ moves no point.
+struct Moves<'a> {
+    e: &'a [Vec<C>],
+    mult: &'a [f64],
+    nc: usize,
+}
+
+impl Moves<'_> {
+    fn dz(&self, j: usize, l: usize) -> C {
+        if l < self.nc {
+            self.e[l][j]
+        } else {
+            C::new(0.0, 0.0)
+        }
+    }
+
+    fn ddz(&self, j: usize, l: usize) -> C {
+        C::new(0.0, 1.0) * self.mult.get(l).copied().unwrap_or(0.0) * self.dz(j, l)
+    }
+
+    fn dddz(&self, j: usize, l: usize) -> C {
+        -(self.mult.get(l).copied().unwrap_or(0.0).powi(2)) * self.dz(j, l)
+    }
+}
+
+/// δ(∇P) at the point (x, y) = (P_XX δx + P_XY δy) + i (P_XY δx + P_YY δy)
+/// for a contour coefficient that moves the point by δz (`by_contour`),
+/// else ∂∇P/∂δ̄.
+fn moved_gradient(
+    gap: &GapAt,
+    h: &super::gap::Hessian,
+    (x, y): (f64, f64),
+    dz: C,
+    by_contour: bool,
+) -> C {
+    if by_contour {
+        C::new(
+            h.p_xx * dz.re + h.p_xy * dz.im,
+            h.p_xy * dz.re + h.p_yy * dz.im,
+        )
+    } else {
+        let (gx, gy) = gap.grad_delta(x, y);
+        C::new(gx, gy)
+    }
+}
+
+/// The forward solve's tables, as [`super::bie`]'s symmetric Dirichlet
+/// solve builds them, at the orbits' representatives `reps` (row r) and
+/// every point j: ι_ij = 1/(z_j − z_i), the kernel w_ij = z′_j ι_ij (bie's
+/// w = z′_j/(z_j − z_i) rounds differently, and moved the ρ = 1 pull-off,
+/// located by values of F̄ where F̄ is flat, by 4e-8 in ā), and the reduced
+/// system A of μ_i + Σ_j Im(w_ij)(μ_j − μ_i)/n (columns by `orbit`).
+fn forward_system(
+    s: &ContourSamples,
+    reps: &[usize],
+    orbit: &[usize],
+) -> (DMatrix<C>, DMatrix<C>, DMatrix<f64>) {
+    let (m, n) = (reps.len(), s.z.len());
+    let nf = n as f64;
+    let mut inv = DMatrix::<C>::zeros(m, n);
+    let mut w = DMatrix::<C>::zeros(m, n);
+    let mut a = DMatrix::<f64>::zeros(m, m);
+    for (r, &i) in reps.iter().enumerate() {
+        let mut row = 0.0;
+        for j in 0..n {
+            if j != i {
+                let v = C::new(1.0, 0.0) / (s.z[j] - s.z[i]);
+                inv[(r, j)] = v;
+                let wij = s.dz[j] * v;
+                w[(r, j)] = wij;
+                let k = wij.im / nf;
+                a[(r, orbit[j])] += k;
+                row += k;
+            }
+        }
+        a[(r, r)] += 1.0 - row;
+    }
+    (inv, w, a)
+}
+
+/// At the orbits' representatives (row r, point i = `reps[r]`): ψ′, F′
+/// and ∂p̄/∂ν = Re(F′ν) + Re(conj(∇P) ν), ν = −i z′/|z′|, as
+/// [`super::bie`]'s normal derivative, from ψ = μ′/z′, μ′, μ″, the kernel
+/// `w` and ∇P = P_X + i P_Y at every point.
+fn at_representatives(
+    s: &ContourSamples,
+    reps: &[usize],
+    w: &DMatrix<C>,
+    psi: &[C],
+    d_mu: &DVector<f64>,
+    dd_mu: &DVector<f64>,
+    grad_p: &[C],
+) -> (Vec<C>, Vec<C>, Vec<f64>) {
+    let (m, n) = (reps.len(), s.z.len());
+    let nf = n as f64;
+    let i_unit = C::new(0.0, 1.0);
+    let mut d_psi = vec![C::new(0.0, 0.0); m];
+    let mut f_prime = vec![C::new(0.0, 0.0); m];
+    let mut dn_rep = vec![0.0; m];
+    for (r, &i) in reps.iter().enumerate() {
+        let dz = s.dz[i];
+        d_psi[r] = (dz * dd_mu[i] - s.ddz[i] * d_mu[i]) / (dz * dz);
+        let mut sum = d_psi[r];
+        for j in 0..n {
+            if j != i {
+                sum += (psi[j] - psi[i]) * w[(r, j)];
+            }
+        }
+        f_prime[r] = psi[i] + sum / (i_unit * nf);
+        let nu_i = -i_unit * dz / dz.norm();
+        dn_rep[r] = (f_prime[r] * nu_i).re + (grad_p[i].conj() * nu_i).re;
+    }
+    (d_psi, f_prime, dn_rep)
+}
+
+/// F̄ = Σ_i (−w ∂p̄/∂ν |z′| + W Im z′) h (as [`super::fields`]) and its
+/// derivatives in the unknowns, from ∂p̄/∂ν `dn` and its derivatives
+/// `d_dn` (columns: the `nc` contour coefficients, then δ̄); `moved(i, l)`:
+/// δz and δz′ at point i for unknown l.
+fn force_and_slope(
+    gap: &GapAt,
+    s: &ContourSamples,
+    delta: f64,
+    dn: &[f64],
+    d_dn: &DMatrix<f64>,
+    nc: usize,
+    moved: &dyn Fn(usize, usize) -> (C, C),
+) -> (f64, DVector<f64>) {
+    let n = s.z.len();
+    let nu = d_dn.ncols();
+    let h = 2.0 * std::f64::consts::PI / n as f64;
+    let mut force = 0.0;
+    let mut d_force = DVector::<f64>::zeros(nu);
+    for i in 0..n {
+        let (z, dz) = (s.z[i], s.dz[i]);
+        let (x, y) = (z.re, z.im);
+        let speed = dz.norm();
+        let ww = (x * x + y * y) / 4.0;
+        // W = ∫ w(φ̄ − δ̄) dX, ∂W/∂X, ∂W/∂Y, ∂W/∂δ̄
+        let [big_w, w_x, w_y, w_delta] = gap.force_potential(x, y, delta);
+        force += (-ww * dn[i] * speed + big_w * dz.im) * h;
+        for l in 0..nu {
+            let (dz1, dz2) = moved(i, l);
+            let d_ww = (x * dz1.re + y * dz1.im) / 2.0;
+            let d_speed = (dz.conj() * dz2).re / speed;
+            let d_big_w = w_x * dz1.re + w_y * dz1.im + if l < nc { 0.0 } else { w_delta };
+            d_force[l] +=
+                (-d_ww * dn[i] * speed - ww * d_dn[(i, l)] * speed - ww * dn[i] * d_speed
+                    + d_big_w * dz.im
+                    + big_w * dz2.im)
+                    * h;
+        }
+    }
+    (force, d_force)
 }
 
 /// Σ_j δw_ij (x_j − x_i) for every representative i (row r) and contour
