@@ -302,6 +302,64 @@ impl Descent<'_> {
         None
     }
 
+    /// One step of the descent from `p`: Newton's step regularised by the
+    /// metric over `tau` (shortened, tau / 4, until the potential falls
+    /// enough; lengthened, tau × 4, after a step taken).
+    fn trial(&self, p: &Point, tau: &mut f64) -> Trial {
+        let mut out = Trial {
+            next: None,
+            stationary: false,
+            unreachable_equilibrium: false,
+        };
+        while *tau > 1e-12 {
+            let Some(ch) = (&p.hessian + &p.metric / *tau).cholesky() else {
+                *tau /= 4.0;
+                continue;
+            };
+            let step = ch.solve(&(-&p.gradient));
+            let predicted = p.gradient.dot(&step);
+            // a decrease below the potential's round-off cannot be seen:
+            // the point is stationary to working precision
+            if *tau >= 1.0 && -predicted < 1e-13 * p.potential.abs().max(1.0) {
+                out.stationary = true;
+                break;
+            }
+            let u = self.moved(&p.u, &p.lift, &self.with_held(p, &step));
+            match self.point(u) {
+                Some(next) if next.potential <= p.potential + 1e-4 * predicted => {
+                    out.next = Some(next);
+                    *tau = (*tau * 4.0).min(1e12);
+                    break;
+                }
+                other => {
+                    out.unreachable_equilibrium |= other.is_none();
+                    *tau /= 4.0
+                }
+            }
+        }
+        out
+    }
+
+    /// The point a kick of KICK ā along the unstable direction `v` leads
+    /// to from the saddle `p`, on the side the descent came from (from
+    /// `start_u`: the path's imperfection picks it); `None` where the short
+    /// modes have no equilibrium there.
+    fn kicked(
+        &self,
+        p: &Point,
+        v: DVector<f64>,
+        start_u: &DVector<f64>,
+        a_bar: f64,
+    ) -> Option<Point> {
+        let came = DVector::from_iterator(
+            self.free.len(),
+            self.free.iter().map(|&k| p.u[k] - start_u[k]),
+        );
+        let sign = if came.dot(&v) < 0.0 { -1.0 } else { 1.0 };
+        let kick = v * (sign * KICK * a_bar);
+        self.point(self.moved(&p.u, &p.lift, &self.with_held(p, &kick)))
+    }
+
     /// The shape coordinates' step of a step `d` in the free ones, the held
     /// ones following their equilibrium to first order.
     fn with_held(&self, p: &Point, d: &DVector<f64>) -> DVector<f64> {
@@ -315,6 +373,16 @@ impl Descent<'_> {
         }
         full
     }
+}
+
+/// What one step of the descent found: the next point (none where no
+/// step lowered the potential), whether the point is stationary to
+/// working precision, and whether a trial step failed for want of the
+/// held modes' equilibrium (rather than for the potential).
+struct Trial {
+    next: Option<Point>,
+    stationary: bool,
+    unreachable_equilibrium: bool,
 }
 
 /// The descent of the potential at the held `force` from the contour and
@@ -378,14 +446,7 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
                 }
                 Some(v) => {
                     kicks += 1;
-                    let came = DVector::from_iterator(
-                        d.free.len(),
-                        d.free.iter().map(|&k| p.u[k] - start_u[k]),
-                    );
-                    let sign = if came.dot(&v) < 0.0 { -1.0 } else { 1.0 };
-                    let kick = v * (sign * KICK * a_bar);
-                    let u = d.moved(&p.u, &p.lift, &d.with_held(&p, &kick));
-                    match d.point(u) {
+                    match d.kicked(&p, v, &start_u, a_bar) {
                         Some(next) => {
                             p = next;
                             tau = 1e-2;
@@ -400,41 +461,15 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
                 }
             }
         }
-        let mut moved = false;
-        let mut stationary = false;
-        // whether a trial step failed for want of the held modes'
-        // equilibrium (rather than for the potential)
-        let mut unreachable_equilibrium = false;
-        while tau > 1e-12 {
-            let Some(ch) = (&p.hessian + &p.metric / tau).cholesky() else {
-                tau /= 4.0;
-                continue;
-            };
-            let step = ch.solve(&(-&p.gradient));
-            let predicted = p.gradient.dot(&step);
-            // a decrease below the potential's round-off cannot be seen:
-            // the point is stationary to working precision
-            if tau >= 1.0 && -predicted < 1e-13 * p.potential.abs().max(1.0) {
-                stationary = true;
-                break;
-            }
-            let u = d.moved(&p.u, &p.lift, &d.with_held(&p, &step));
-            match d.point(u) {
-                Some(next) if next.potential <= p.potential + 1e-4 * predicted => {
-                    p = next;
-                    tau = (tau * 4.0).min(1e12);
-                    moved = true;
-                    break;
-                }
-                other => {
-                    unreachable_equilibrium |= other.is_none();
-                    tau /= 4.0
-                }
-            }
-        }
-        if stationary {
+        let trial = d.trial(&p, &mut tau);
+        if trial.stationary {
             at_rest = true;
             continue;
+        }
+        let (moved, unreachable_equilibrium) =
+            (trial.next.is_some(), trial.unreachable_equilibrium);
+        if let Some(next) = trial.next {
+            p = next;
         }
         cut_by_held = if moved && unreachable_equilibrium {
             cut_by_held + 1
