@@ -396,101 +396,173 @@ fn where_lost(
 /// The path from `start` (a state of `ex`'s truncation) down; with
 /// `to_first_band`, up to the first band it passes.
 fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> LoadingPath {
-    let mut states = vec![start.clone()];
-    let mut jumps = Vec::new();
-    let mut held = start;
-    let mut ex = ex;
-    let mut step: f64 = 0.25;
-    // the state held before the last step, that step and the truncation it
-    // was held in, while the step was longer than the bracket: where the
-    // descent leaves the state the step reached, the path steps back and
-    // halves the step, so that where a state is lost is bracketed to
-    // [`BRACKET`] whichever test finds it
-    let mut before: Option<(ExactState, f64, Truncation)> = None;
-    // whether the state held has passed the descent's test already (a
-    // state stepped back to, or one a halved step comes back to): kept
-    // until the state held changes
-    let mut judged = false;
-    let mut passes: Vec<BandPass> = Vec::new();
-    let done = |states, jumps, passes, end| LoadingPath {
-        states,
-        jumps,
-        passes,
-        end,
+    let mut walk = Walk {
+        ex,
+        states: vec![start.clone()],
+        jumps: Vec::new(),
+        passes: Vec::new(),
+        held: start,
+        step: 0.25,
+        before: None,
+        judged: false,
+        cutoff,
+        to_first_band,
     };
     loop {
-        if let Err(e) = crate::newton::check_stop() {
-            return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()));
+        if let Some(end) = walk.advance() {
+            return LoadingPath {
+                states: walk.states,
+                jumps: walk.jumps,
+                passes: walk.passes,
+                end,
+            };
         }
-        // a state whose shape owes a visible part to undulations shorter
-        // than the cutoff: (2) does not resolve where the contact goes
-        // from there, whatever the verdicts of its directions
+    }
+}
+
+/// The loading path as it is followed: the states, jumps and band passes
+/// so far, the state held, the step in F̄ and what the last step left.
+struct Walk {
+    ex: Exact,
+    states: Vec<ExactState>,
+    jumps: Vec<Jump>,
+    passes: Vec<BandPass>,
+    held: ExactState,
+    step: f64,
+    /// The state held before the last step, that step and the truncation
+    /// it was held in, while the step was longer than the bracket: where
+    /// the descent leaves the state the step reached, the path steps back
+    /// and halves the step, so that where a state is lost is bracketed to
+    /// [`BRACKET`] whichever test finds it.
+    before: Option<(ExactState, f64, Truncation)>,
+    /// Whether the state held has passed the descent's test already (a
+    /// state stepped back to, or one a halved step comes back to): kept
+    /// until the state held changes.
+    judged: bool,
+    cutoff: Cutoff,
+    to_first_band: bool,
+}
+
+/// What a part of a step of the walk decided.
+enum Flow {
+    /// Go on with the step.
+    On,
+    /// The step is done: take the next.
+    Next,
+    /// The path ends.
+    End(PathEnd),
+}
+
+impl Walk {
+    /// One step of the path; its end where it ends.
+    fn advance(&mut self) -> Option<PathEnd> {
+        if let Err(e) = crate::newton::check_stop() {
+            return Some(PathEnd::NotSettled(e.to_string()));
+        }
+        match self.past_short_waves() {
+            Flow::On => {}
+            Flow::Next => return None,
+            Flow::End(end) => return Some(end),
+        }
+        let scale = self.held.force_bar.abs().max(1.0);
+        let shape_loss = self.shape_loss();
+        self.judged = shape_loss.is_none();
+        if shape_loss.is_some() {
+            if let Some((back, taken, truncation)) = self.before.take() {
+                if truncation != self.ex.truncation {
+                    match Exact::of_state_with(&back, truncation) {
+                        Ok(e) => self.ex = e,
+                        Err(e) => return Some(PathEnd::NotSettled(e.to_string())),
+                    }
+                }
+                self.states.pop();
+                self.held = back;
+                self.step = 0.5 * taken;
+                self.judged = true;
+                return None;
+            }
+        }
+        let (lost, landing, shape) = match shape_loss {
+            Some((landing, words)) => (self.held.clone(), landing, words),
+            None => match self.step_down(scale) {
+                Ok(Some((lost, landing))) => (lost, landing, String::new()),
+                Ok(None) => return None,
+                Err(end) => return Some(end),
+            },
+        };
+        self.after_loss(lost, landing, &shape, scale)
+    }
+
+    /// Where the state held owes a visible part of its shape to
+    /// undulations shorter than the cutoff, (2) does not resolve where the
+    /// contact goes from there, whatever the verdicts of its directions: a
+    /// coating this thick holds those undulations flat, and the contact
+    /// passes the band onto the piece beyond it (not from the start, whose
+    /// shape no state before resolved); else the path ends there.
+    fn past_short_waves(&mut self) -> Flow {
+        let (held, cutoff) = (&self.held, self.cutoff);
         let short = super::undulations::short_waves(&held.contour, cutoff);
-        // a coating this thick holds those undulations flat: the contact
-        // passes the band onto the piece beyond it (not from the start,
-        // whose shape no state before resolved)
-        if short.unresolved && states.len() > 1 {
-            if let Some(to) = pass_band(&mut ex, &held, cutoff) {
-                states.pop();
-                passes.push(BandPass {
+        if short.unresolved && self.states.len() > 1 {
+            if let Some(to) = pass_band(&mut self.ex, held, cutoff) {
+                self.states.pop();
+                self.passes.push(BandPass {
                     mode: short.mode.unwrap_or(0),
                     at: held.clone(),
                     to: to.clone(),
                 });
-                held = to;
-                states.push(held.clone());
-                if to_first_band {
-                    return done(states, jumps, passes, PathEnd::PassedBand);
+                self.held = to;
+                self.states.push(self.held.clone());
+                if self.to_first_band {
+                    return Flow::End(PathEnd::PassedBand);
                 }
-                before = None;
-                judged = false;
-                step = 0.25;
-                continue;
+                self.before = None;
+                self.judged = false;
+                self.step = 0.25;
+                return Flow::Next;
             }
             // (a search stopped by the user found nothing because it
             // was stopped, not because nothing is there)
             if let Err(e) = crate::newton::check_stop() {
-                return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()));
+                return Flow::End(PathEnd::NotSettled(e.to_string()));
             }
         }
-        if short.unresolved {
-            // (the start is never passed from: no search was made there)
-            let searched = if states.len() > 1 {
-                format!(
-                    "; no state of a resolved shape was found beyond the band within {} % of a below",
-                    (PASS_STEP * PASS_STEPS as f64 * 100.0).round()
-                )
-            } else {
-                String::new()
-            };
-            return done(
-                states,
-                jumps,
-                passes,
-                PathEnd::NotSettled(format!(
-                    "at force = {} (a = {:.4}, s = {:.4}) {}{searched}",
-                    crate::error::rounded(held.force_bar),
-                    held.a_bar,
-                    held.s,
-                    short.words(cutoff)
-                )),
-            );
+        if !short.unresolved {
+            return Flow::On;
         }
-        let scale = held.force_bar.abs().max(1.0);
-        // a state unstable under load to a resolved mode is lost where it
-        // is: the descent leaves it along that mode (`descend` kicks a
-        // saddle)
-        let unstable = if judged {
+        // (the start is never passed from: no search was made there)
+        let searched = if self.states.len() > 1 {
+            format!(
+                "; no state of a resolved shape was found beyond the band within {} % of a below",
+                (PASS_STEP * PASS_STEPS as f64 * 100.0).round()
+            )
+        } else {
+            String::new()
+        };
+        Flow::End(PathEnd::NotSettled(format!(
+            "at force = {} (a = {:.4}, s = {:.4}) {}{searched}",
+            crate::error::rounded(held.force_bar),
+            held.a_bar,
+            held.s,
+            short.words(cutoff)
+        )))
+    }
+
+    /// A state unstable under load to a resolved mode is lost where it
+    /// is: the descent leaves it along that mode (`descend` kicks a
+    /// saddle); the landing and the words that say so. (The verdict counts
+    /// every mode free; the descent holds the shorter ones at equilibrium:
+    /// where it stays on the state, the state is a minimum of what moves,
+    /// and the path goes on.)
+    fn shape_loss(&self) -> Option<(Landing, String)> {
+        let (held, cutoff) = (&self.held, self.cutoff);
+        let unstable = if self.judged {
             None
         } else {
-            unstable_resolved(&held, cutoff).into_iter().next()
+            unstable_resolved(held, cutoff).into_iter().next()
         };
-        // (the verdict counts every mode free; the descent holds the
-        // shorter ones at equilibrium: where it stays on the state, the
-        // state is a minimum of what moves, and the path goes on)
-        let shape_loss = unstable.and_then(|m| {
-            let landing = descend(&ex, &held, held.force_bar, cutoff);
-            let stays = matches!(&landing, Landing::Landed(st) if same_state(&held, st));
+        unstable.and_then(|m| {
+            let landing = descend(&self.ex, held, held.force_bar, cutoff);
+            let stays = matches!(&landing, Landing::Landed(st) if same_state(held, st));
             let words = format!(
                 "the state at force = {} is unstable under load to the resolved mode n = {} (wavelength {:.3}); from there: ",
                 crate::error::rounded(held.force_bar),
@@ -498,95 +570,92 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> 
                 m.wavelength
             );
             (!stays).then_some((landing, words))
-        });
-        judged = shape_loss.is_none();
-        if shape_loss.is_some() {
-            if let Some((back, taken, truncation)) = before.take() {
-                if truncation != ex.truncation {
-                    match Exact::of_state_with(&back, truncation) {
-                        Ok(e) => ex = e,
-                        Err(e) => {
-                            return done(states, jumps, passes, PathEnd::NotSettled(e.to_string()))
-                        }
-                    }
+        })
+    }
+
+    /// A step down in F̄ from the state held: taken where it continues the
+    /// arm (`Ok(None)`: the next step), else the state held is lost below
+    /// it, and where, with the descent's landing.
+    ///
+    /// A step longer than the bracket is probed by Newton's method at the
+    /// new force from the state held: on an arm stable under load the
+    /// descent is that Newton's method, and near a fold in F̄ (a minimum) no
+    /// state lies close below it, so Newton's method fails or lands far and
+    /// the step is halved. The descent, which may run hundreds of steps
+    /// before it shows that it goes far, is taken once the step is at the
+    /// bracket, the only place its landing is used. A state Newton's method
+    /// reaches with a resolved mode unstable under load that the state held
+    /// is not unstable to fails the probe too: where that mode turns
+    /// unstable is then bracketed as a fold is, and the descent judges the
+    /// state at the bracket.
+    fn step_down(
+        &mut self,
+        scale: f64,
+    ) -> std::result::Result<Option<(ExactState, Landing)>, PathEnd> {
+        let (cutoff, step) = (self.cutoff, self.step);
+        let force = self.held.force_bar - step;
+        let probed = if step > TURN_FLOOR * scale {
+            match self
+                .ex
+                .solve_at(Hold::Force(force), &self.held.contour, self.held.delta_bar)
+            {
+                Ok(st) if !newly_unstable(&self.held, &st, cutoff) && near(&self.held, &st) => {
+                    Some(st)
                 }
-                states.pop();
-                held = back;
-                step = 0.5 * taken;
-                judged = true;
-                continue;
+                _ => None,
+            }
+        } else {
+            None
+        };
+        match probed {
+            Some(st) if continues(&self.ex, &self.held, &st) => {
+                let back = (self.held.clone(), step, self.ex.truncation);
+                self.held = resolved(&mut self.ex, st).map_err(PathEnd::NotSettled)?;
+                self.judged = false;
+                self.before = (step > BRACKET * scale).then_some(back);
+                self.states.push(self.held.clone());
+                self.step = (step * 1.5).min(MAX_STEP);
+                return Ok(None);
+            }
+            // the arm turns within the step (or the landing lies on
+            // another piece): a shorter step, below the bracket too
+            Some(_) => {
+                self.step *= 0.5;
+                return Ok(None);
+            }
+            None if step > BRACKET * scale => {
+                self.step *= 0.5;
+                return Ok(None);
+            }
+            None => {}
+        }
+        let landing = descend(&self.ex, &self.held, force, cutoff);
+        if let Landing::Landed(st) = &landing {
+            if near(&self.held, st) {
+                self.held = resolved(&mut self.ex, (**st).clone()).map_err(PathEnd::NotSettled)?;
+                self.judged = false;
+                self.before = None;
+                self.states.push(self.held.clone());
+                self.step = (step * 1.5).min(MAX_STEP);
+                return Ok(None);
             }
         }
-        let (lost, landing, shape) = if let Some((landing, words)) = shape_loss {
-            (held.clone(), landing, words)
-        } else {
-            let force = held.force_bar - step;
-            // a step longer than the bracket is probed by Newton's method
-            // at the new force from the state held: on an arm stable under
-            // load the descent is that Newton's method, and near a fold in
-            // F̄ (a minimum) no state lies close below it, so Newton's
-            // method fails or lands far and the step is halved. The
-            // descent, which may run hundreds of steps before it shows
-            // that it goes far, is taken once the step is at the bracket,
-            // the only place its landing is used. A state Newton's method
-            // reaches with a resolved mode unstable under load that the
-            // state held is not unstable to fails the probe too: where that
-            // mode turns unstable is then bracketed as a fold is, and the
-            // descent judges the state at the bracket.
-            let accept = |ex: &mut Exact, held: &mut ExactState, st: ExactState| {
-                resolved(ex, st).map(|st| {
-                    *held = st;
-                })
-            };
-            let probed = if step > TURN_FLOOR * scale {
-                match ex.solve_at(Hold::Force(force), &held.contour, held.delta_bar) {
-                    Ok(st) if !newly_unstable(&held, &st, cutoff) && near(&held, &st) => Some(st),
-                    _ => None,
-                }
-            } else {
-                None
-            };
-            match probed {
-                Some(st) if continues(&ex, &held, &st) => {
-                    let back = (held.clone(), step, ex.truncation);
-                    if let Err(why) = accept(&mut ex, &mut held, st) {
-                        return done(states, jumps, passes, PathEnd::NotSettled(why));
-                    }
-                    judged = false;
-                    before = (step > BRACKET * scale).then_some(back);
-                    states.push(held.clone());
-                    step = (step * 1.5).min(MAX_STEP);
-                    continue;
-                }
-                // the arm turns within the step (or the landing lies on
-                // another piece): a shorter step, below the bracket too
-                Some(_) => {
-                    step *= 0.5;
-                    continue;
-                }
-                None if step > BRACKET * scale => {
-                    step *= 0.5;
-                    continue;
-                }
-                None => {}
-            }
-            let landing = descend(&ex, &held, force, cutoff);
-            if let Landing::Landed(st) = &landing {
-                if near(&held, st) {
-                    if let Err(why) = accept(&mut ex, &mut held, (**st).clone()) {
-                        return done(states, jumps, passes, PathEnd::NotSettled(why));
-                    }
-                    judged = false;
-                    before = None;
-                    states.push(held.clone());
-                    step = (step * 1.5).min(MAX_STEP);
-                    continue;
-                }
-            }
-            // the state held is lost within BRACKET below its force
-            let (lost, landing) = where_lost(&ex, &held, force, landing, cutoff);
-            (lost, landing, String::new())
-        };
+        // the state held is lost within BRACKET below its force
+        Ok(Some(where_lost(
+            &self.ex, &self.held, force, landing, cutoff,
+        )))
+    }
+
+    /// Where the contact goes from the state `lost` (`shape`: the words of
+    /// a loss of shape, empty for a loss of the arm): a jump to the
+    /// landing, which the path goes on from, or the path's end.
+    fn after_loss(
+        &mut self,
+        lost: ExactState,
+        landing: Landing,
+        shape: &str,
+        scale: f64,
+    ) -> Option<PathEnd> {
         // (from a state unstable to a resolved mode the landing may lie
         // close by: the contact changes shape a little, still a jump from
         // one arm to another at the same force)
@@ -594,62 +663,40 @@ fn follow(ex: Exact, start: ExactState, cutoff: Cutoff, to_first_band: bool) -> 
             |st: &ExactState| !near(&lost, st) || (!shape.is_empty() && !same_state(&lost, st));
         match landing {
             Landing::Landed(st) if moved(&st) => {
-                jumps.push(Jump {
+                self.jumps.push(Jump {
                     force: lost.force_bar,
                     from: lost,
                     to: (*st).clone(),
                 });
-                before = None;
-                held = match resolved(&mut ex, *st) {
+                self.before = None;
+                self.held = match resolved(&mut self.ex, *st) {
                     Ok(st) => st,
-                    Err(why) => return done(states, jumps, passes, PathEnd::NotSettled(why)),
+                    Err(why) => return Some(PathEnd::NotSettled(why)),
                 };
-                judged = false;
-                states.push(held.clone());
-                step = 0.25;
+                self.judged = false;
+                self.states.push(self.held.clone());
+                self.step = 0.25;
             }
             Landing::Landed(_) => {
-                return done(
-                    states,
-                    jumps,
-                    passes,
-                    PathEnd::NotSettled(format!(
-                        "{shape}at force = {} the state is lost for a step of {:.0e} but the descent from it lands beside it",
-                        crate::error::rounded(lost.force_bar),
-                        BRACKET * scale,
-                    )),
-                )
+                return Some(PathEnd::NotSettled(format!(
+                    "{shape}at force = {} the state is lost for a step of {:.0e} but the descent from it lands beside it",
+                    crate::error::rounded(lost.force_bar),
+                    BRACKET * scale,
+                )))
             }
             Landing::Detached => {
-                return done(
-                    states,
-                    jumps,
-                    passes,
-                    PathEnd::PullOff {
-                        state: Box::new(lost),
-                    },
-                );
+                return Some(PathEnd::PullOff {
+                    state: Box::new(lost),
+                })
             }
             Landing::NotSettled(why) => {
-                return done(
-                    states,
-                    jumps,
-                    passes,
-                    PathEnd::Lost {
-                        state: Box::new(lost),
-                        why: format!("{shape}{why}"),
-                    },
-                )
+                return Some(PathEnd::Lost {
+                    state: Box::new(lost),
+                    why: format!("{shape}{why}"),
+                })
             }
         }
-        if jumps.len() > 50 {
-            return done(
-                states,
-                jumps,
-                passes,
-                PathEnd::NotSettled("more than 50 jumps".into()),
-            );
-        }
+        (self.jumps.len() > 50).then(|| PathEnd::NotSettled("more than 50 jumps".into()))
     }
 }
 
