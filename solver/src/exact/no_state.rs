@@ -400,23 +400,27 @@ mod tests {
         Cell::Found { rho, a_bar: 3.0 }
     }
 
-    fn a_map() -> NoStateMap {
+    /// A map of one minute's searches with lines of force (value, cells).
+    fn map_of(lines: Vec<(f64, Vec<Cell>)>) -> NoStateMap {
         NoStateMap {
             generated_by: "a test".into(),
             minutes: 1.0,
-            lines: vec![
-                Line {
+            lines: lines
+                .into_iter()
+                .map(|(value, cells)| Line {
                     control: "force".into(),
-                    value: 0.0,
-                    cells: vec![found(0.2), none(0.15), none(0.1)],
-                },
-                Line {
-                    control: "force".into(),
-                    value: 2.0,
-                    cells: vec![found(0.2), found(0.15), none(0.1)],
-                },
-            ],
+                    value,
+                    cells,
+                })
+                .collect(),
         }
+    }
+
+    fn a_map() -> NoStateMap {
+        map_of(vec![
+            (0.0, vec![found(0.2), none(0.15), none(0.1)]),
+            (2.0, vec![found(0.2), found(0.15), none(0.1)]),
+        ])
     }
 
     /// A request is refused only inside a cell whose every corner found
@@ -450,29 +454,14 @@ mod tests {
     #[test]
     fn a_cell_that_ran_out_of_time_is_refused_as_not_resolved() {
         let stopped = |rho: f64| Cell::Stopped { rho, minutes: 1.0 };
-        let m = NoStateMap {
-            generated_by: "a test".into(),
-            minutes: 1.0,
-            lines: vec![
-                Line {
-                    control: "force".into(),
-                    value: 0.0,
-                    cells: vec![found(0.2), none(0.15), none(0.1)],
-                },
-                Line {
-                    control: "force".into(),
-                    value: 10.0,
-                    cells: vec![
-                        found(0.2),
-                        stopped(0.15),
-                        Cell::Unsettled {
-                            rho: 0.1,
-                            why: "a failure".into(),
-                        },
-                    ],
-                },
-            ],
+        let failed = Cell::Unsettled {
+            rho: 0.1,
+            why: "a failure".into(),
         };
+        let m = map_of(vec![
+            (0.0, vec![found(0.2), none(0.15), none(0.1)]),
+            (10.0, vec![found(0.2), stopped(0.15), failed]),
+        ]);
         let e = refusal_in(&m, 0.15, Hold::Force(10.0)).expect("refused");
         assert_eq!(e.kind(), "unresolved");
         let words = e.to_string();
