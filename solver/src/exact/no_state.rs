@@ -180,15 +180,19 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
             format!("{} … {}", short(a), short(b))
         }
     };
+    // each corner once (on a line or a ρ of the ladder, the cell's sides
+    // coincide), and the cell's range in ρ
+    for c in [&mut corners, &mut stopped] {
+        c.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+        c.dedup();
+    }
+    let rhos = stopped.iter().chain(&corners).map(|c| c.1);
+    let (hi, lo) = (
+        rhos.clone().fold(f64::NEG_INFINITY, f64::max),
+        rhos.fold(f64::INFINITY, f64::min),
+    );
     if !stopped.is_empty() {
         // every corner found none or ran out of time: not resolved
-        stopped.dedup();
-        corners.dedup();
-        let rhos = stopped.iter().chain(&corners).map(|c| c.1);
-        let (hi, lo) = (
-            rhos.clone().fold(f64::NEG_INFINITY, f64::max),
-            rhos.fold(f64::INFINITY, f64::min),
-        );
         let at = if stopped.len() + corners.len() == 1 {
             String::new()
         } else if corners.is_empty() {
@@ -212,14 +216,10 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
         });
     }
     let (nearest_rho, first) = nearest?;
-    corners.dedup();
     Some(Error::NoState(format!(
         "the exact search finds no state at {name} = {}, rho = {}{} (the map {PATH}; --search searches anyway, for minutes); the map was written by `{}`; at {name} = {}, rho = {} the search said: {first}",
         span(below.value, above.value),
-        span(
-            corners.iter().map(|c| c.1).fold(f64::NEG_INFINITY, f64::max),
-            corners.iter().map(|c| c.1).fold(f64::INFINITY, f64::min)
-        ),
+        span(hi, lo),
         if corners.len() == 1 {
             String::new()
         } else {
@@ -473,6 +473,13 @@ mod tests {
         assert!(
             e.to_string()
                 .contains("at 1 of the cell's corners, and found none at the other 1"),
+            "{e}"
+        );
+        // on a line between two ρ: its two corners, each counted once
+        let m2 = map_of(vec![(10.0, vec![found(0.2), stopped(0.15), stopped(0.1)])]);
+        let e = refusal_in(&m2, 0.12, Hold::Force(10.0)).expect("refused");
+        assert!(
+            e.to_string().contains("at each of the cell's 2 corners"),
             "{e}"
         );
         // a corner that failed otherwise, or found a state
