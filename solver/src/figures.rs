@@ -13,7 +13,8 @@
 //! `exact`, `generated` (the paper's model `max`, whose figures these are),
 //! `model` (every ellipse model beside it), `conformal` (its arms and
 //! convergence), `slender` (its pull-off beside the models'), `layer` (the
-//! pull-off against the coatings' thickness), `error`.
+//! pull-off against the coatings' thickness), `studies` (the reach map's
+//! lines, with the feature `cli`), `error`.
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
@@ -647,15 +648,17 @@ fn render(fig: &Figure) -> Result<String> {
 /// writes (ā and the smallest ρ its state continued from the circle at
 /// fixed ā reaches, in order of ā; a size without one left out, the line
 /// broken there): the same map by a second route at every ρ; the exact
-/// pull-off's ā from `reference`.
+/// pull-off's ā from `reference`. With the feature `cli`, whose study
+/// (`thinjkr exact reach`) the reach map is.
+#[cfg(feature = "cli")]
 pub fn exact_bands(
     bands: &[crate::exact::bands::BandMap],
     reach: &str,
     reference: &crate::accuracy::Reference,
 ) -> Result<(&'static str, String)> {
-    let reach: Vec<(f64, Option<f64>)> = crate::exact::reach::from_json_lines(reach)?
+    let reach: Vec<(f64, Option<f64>)> = crate::studies::reach::from_json_lines(reach)?
         .iter()
-        .map(|p| (p.a_bar, p.reach()))
+        .map(|p| (p.a_bar, crate::studies::reach::reach_of(p)))
         .collect();
     // one colour per mode n = 2, 4, …, 16
     let colors = [

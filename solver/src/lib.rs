@@ -56,6 +56,8 @@ pub(crate) mod quadrature;
 pub mod registry;
 pub mod report;
 pub(crate) mod slender;
+#[cfg(feature = "cli")]
+pub(crate) mod studies;
 pub mod units;
 
 /// The user's guide.

@@ -9,9 +9,10 @@
 //! JSON Schema of `Document` is derived from these types (`thinjkr
 //! schema`, committed as docs/schema.json).
 //!
-//! Owns: `Document` and its parts, and the shape of a slender state
-//! ([`SlenderState`]). May use: `contact`, `conformal`, `layer` (its state),
-//! `exact`, `curve`, `fold`, `units`, `error`, `registry` (the model list).
+//! Owns: `Document` and its parts, the shape of a slender state
+//! ([`SlenderState`]) and of the command line's studies' outcomes (the
+//! reach map's [`SizeReach`], its [`Window`]s, the paths' [`Passed`]). May use: `contact`, `conformal`, `layer` (its state),
+//! `exact`, `curve`, `fold`, `units`, `error`.
 
 use crate::conformal::{ConformalState, Extremum};
 use crate::contact::State;
@@ -22,6 +23,8 @@ use crate::exact::ExactState;
 use crate::units::{Scales, Si};
 #[cfg(feature = "cli")]
 use crate::{contact::FoldBasis, error::Error, fold::FoldCondition};
+#[cfg(feature = "cli")]
+use serde::Deserialize;
 use serde::Serialize;
 
 /// The thin-layer equation (2)'s answer beside the layer of finite
@@ -290,7 +293,7 @@ impl StartAt {
                 start_force,
             } => {
                 // the reason's first clause (the whole is in the JSON)
-                let why_not_large_load = crate::exact::start::first_clause(why_not_large_load);
+                let why_not_large_load = first_clause(why_not_large_load);
                 let top = if *maximum {
                     "its maximum of F".to_string()
                 } else if *top_force > *start_force {
@@ -303,11 +306,200 @@ impl StartAt {
                 };
                 format!(
                     " (no state at F = {}: {why_not_large_load}; the start is the largest load stable under load on the piece that carries the pull-off, {top})",
-                    crate::exact::loading::START_FORCE
+                    crate::exact::START_FORCE
                 )
             }
         }
     }
+}
+
+#[cfg(feature = "cli")]
+/// How a size's path in ρ ended.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub(crate) enum Reached {
+    /// ρ turned back at this located fold; the fine-grid boundary error of
+    /// the path's lowest point (absent where that system is singular).
+    TurnsBack {
+        /// The fold's ρ: the size's reach.
+        rho: f64,
+        /// The boundary error there.
+        bc_error: Option<f64>,
+    },
+    /// The path reached ρ = 0.02, the smallest it is followed to, without
+    /// turning back.
+    Floor {
+        /// The boundary error of the state at the floor.
+        bc_error: f64,
+    },
+    /// The path stopped without turning back (no state of this size near
+    /// the circle, or a step that failed): why, in words.
+    Stopped {
+        /// Why.
+        why: String,
+    },
+}
+
+#[cfg(feature = "cli")]
+/// One size's reach.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct SizeReach {
+    /// ā.
+    pub a_bar: f64,
+    /// The modes of each sign of the arclength representation.
+    pub modes: usize,
+    /// How its path in ρ ended.
+    pub reached: Reached,
+}
+
+#[cfg(feature = "cli")]
+/// One end of a window of `studies::reach::settle`: where the family at that ρ, traced
+/// in ā from the window's state, ends on that side.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub(crate) enum WindowEnd {
+    /// The family folds in ā: the edge of the band beyond.
+    Fold {
+        /// ā at the fold.
+        a_bar: f64,
+        /// s there.
+        s: f64,
+        /// F̄ there.
+        force_bar: f64,
+        /// The contour mode n of the fold's null direction, where computed.
+        mode: Option<usize>,
+        /// The fine-grid boundary error there.
+        bc_error: f64,
+    },
+    /// Before any fold the series stopped following the family: at this
+    /// traced point the boundary error passed `studies::reach::WINDOW_RESOLVED`. The
+    /// family goes on, with a shape `studies::reach::MODES` modes do not resolve.
+    Unresolved {
+        /// ā there.
+        a_bar: f64,
+        /// F̄ there.
+        force_bar: f64,
+        /// The boundary error there.
+        bc_error: f64,
+    },
+    /// ā moved `studies::reach::WINDOW_SPAN` from the start without a fold.
+    Beyond {
+        /// The ā passed.
+        a_bar: f64,
+    },
+    /// The trace failed: why, in words.
+    Failed {
+        /// Why.
+        why: String,
+    },
+    /// The trace ended (at a fold, or where it stopped being resolved, or
+    /// at its limit) past another window of the grid, across the band
+    /// between, in steps of 0.01 and again in the band maps' fine steps
+    /// (a band narrower than those, or another arm it left the piece
+    /// for). Not settled.
+    Crossed {
+        /// Where it ended.
+        a_bar: f64,
+        /// The window it passed: its first and last size on the grid.
+        window: [f64; 2],
+    },
+}
+
+#[cfg(feature = "cli")]
+impl WindowEnd {
+    /// Where the trace ended; `None` where it failed.
+    pub(crate) fn a_bar(&self) -> Option<f64> {
+        match self {
+            WindowEnd::Fold { a_bar, .. }
+            | WindowEnd::Unresolved { a_bar, .. }
+            | WindowEnd::Beyond { a_bar }
+            | WindowEnd::Crossed { a_bar, .. } => Some(*a_bar),
+            WindowEnd::Failed { .. } => None,
+        }
+    }
+}
+
+#[cfg(feature = "cli")]
+/// A window of the reach at one ρ, settled by the family at that ρ: the
+/// state of the window's size with the smallest reach, followed from the
+/// circle at fixed ā down to ρ, traced in ā both ways to where the family
+/// folds (a band's edge) or stops being resolved.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct Window {
+    /// ρ.
+    pub rho: f64,
+    /// The window of `studies::reach::windows`: its first and last size on the grid.
+    pub grid: [f64; 2],
+    /// The size the traces start from.
+    pub a_bar: f64,
+    /// F̄ of its state at ρ (absent where the state was not found).
+    pub force_bar: Option<f64>,
+    /// The boundary error of that state.
+    pub bc_error: Option<f64>,
+    /// For which coatings (2) gives that state as a contact it resolves
+    /// (stable above the cutoff under each control, its shape resolved);
+    /// absent where the state or its stability was not found.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coatings: Option<crate::exact::undulations::Coatings>,
+    /// The loading path from that state (`--unloading-at`), where it is a
+    /// stable contact (2) resolves at that thinness.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unloading: Option<WindowPath>,
+    /// Towards smaller ā.
+    pub lower: WindowEnd,
+    /// Towards larger ā.
+    pub upper: WindowEnd,
+}
+
+#[cfg(feature = "cli")]
+/// The loading path (`studies::loading`) from a window's start, unloaded
+/// under load control with the cutoff of one thinness.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct WindowPath {
+    /// The thinness h/L of the cutoff.
+    pub thinness: f64,
+    /// How many states it held on its own piece, the start first.
+    pub states: usize,
+    /// How many jumps it made.
+    pub jumps: usize,
+    /// The modes shorter than the cutoff its states turned unstable to on
+    /// the way and stayed so (`LoadingPath::unresolved_turned_unstable`), in
+    /// order: below ρ = 1 a band stepped over on a near-elliptic piece, or
+    /// past a fold in ā the fold's mode.
+    #[serde(default)]
+    pub unresolved_turned_unstable: Vec<usize>,
+    /// Where the path passed the band whose lobes ended its piece (the
+    /// last state held here), F̄ and ā of the state beyond, on the piece
+    /// below, from which it goes on as that piece's path (followed up to
+    /// that band only: `studies::loading::loading_path_to_first_band`,
+    /// docs/exact.md "Bands of unresolved modes"); none where it found no
+    /// piece beyond, or ended before.
+    #[serde(default)]
+    pub passed_to: Option<[f64; 2]>,
+    /// F̄ of the last state held whose shape the cutoff resolves.
+    pub resolved_force_bar: f64,
+    /// F̄ of the last state held.
+    pub last_force_bar: f64,
+    /// ā of the last state held.
+    pub last_a_bar: f64,
+    /// Where the last state held has undulations shorter than the cutoff
+    /// above 1 % of ā: the largest such mode and their share of ā.
+    pub unresolved: Option<(usize, f64)>,
+    /// How the path ends: it comes off (the path's pull-off), loses its
+    /// state, or is not settled, in words.
+    pub end: String,
+}
+
+/// The first clause of a reason (up to its first "; "): the long story of
+/// why no state at F̄ = 10 is found (every route tried) is in the JSON and
+/// in `thinjkr exact solve --force 10`.
+pub(crate) fn first_clause(why: &str) -> &str {
+    why.split("; ").next().unwrap_or(why)
 }
 
 impl Passed {
@@ -417,13 +609,6 @@ pub struct ModelEntry {
     pub controls: Vec<String>,
 }
 
-/// Every model the solver has, in the order `thinjkr models` lists them
-/// (`crate::registry::entries`).
-#[cfg(feature = "cli")]
-pub(crate) fn models() -> Vec<ModelEntry> {
-    crate::registry::entries()
-}
-
 /// Everything `--json` prints: exactly one of these objects.
 #[cfg(feature = "cli")]
 #[derive(Clone, Debug, Serialize)]
@@ -511,16 +696,18 @@ pub(crate) enum Document {
         /// The bands at one ρ.
         bands: crate::exact::bands::BandMap,
     },
+    #[cfg(feature = "cli")]
     /// The reach in ρ of one contact size (`exact reach --json`).
     Reach {
         /// The size and how its path in ρ ended.
-        reach: crate::exact::reach::SizeReach,
+        reach: SizeReach,
     },
+    #[cfg(feature = "cli")]
     /// A window of the reach at one ρ settled by the family at that ρ
     /// (`exact reach --windows-at --json`).
     Window {
         /// The window and where the family ends on either side.
-        window: crate::exact::reach::Window,
+        window: Window,
     },
     /// The models (`models --json`).
     Models {

@@ -51,7 +51,7 @@ fn exact_figures_are_fresh() {
     .expect("band map lines");
     // with the reach of each size, the same map by a second route at every
     // ρ (docs/data/exact_reach.jsonl, whose ā = 3.8 the lib's
-    // exact::reach tests recompute)
+    // studies::reach tests recompute)
     let reach = std::fs::read_to_string(root.join("docs/data/exact_reach.jsonl"))
         .expect("the committed reach map exists");
     figs.push(

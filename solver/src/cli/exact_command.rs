@@ -5,7 +5,7 @@
 //! Owns: [`ExactCommand`], the exact printers. May use: `batch` (an ellipse model at a control), `control`, `crate::exact`,
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
 //! state), `crate::report`, `crate::fold`, `crate::error`, `crate::cutoff`,
-//! `crate::cli` (`output`, `files`).
+//! `crate::studies` (the loading path, the unloading trace, the reach), `crate::cli` (`output`, `files`).
 
 use crate::control::Hold;
 use crate::exact::stability::UnstableMode;
@@ -464,9 +464,9 @@ pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
 
 /// `thinjkr exact reach`.
 pub(crate) fn reach(from: f64, to: f64, step: f64, json: bool) -> Result<()> {
-    use crate::exact::reach::Reached;
+    use crate::studies::reach::Reached;
     let spin = crate::cli::output::Spinner::start("the reach of each size");
-    let map = crate::exact::reach::reach(from, to, step)?;
+    let map = crate::studies::reach::reach(from, to, step)?;
     drop(spin);
     if json {
         for size in map {
@@ -476,8 +476,8 @@ pub(crate) fn reach(from: f64, to: f64, step: f64, json: bool) -> Result<()> {
     }
     outln!(
         "the near-elliptic exact state of each size a, followed in rho at fixed a from the circle at rho = {} ({} modes of each sign):",
-        crate::exact::reach::PATHS_START_RHO,
-        crate::exact::reach::MODES
+        crate::studies::reach::PATHS_START_RHO,
+        crate::studies::reach::MODES
     );
     for p in &map {
         let what = match &p.reached {
@@ -488,14 +488,14 @@ pub(crate) fn reach(from: f64, to: f64, step: f64, json: bool) -> Result<()> {
             ),
             Reached::Floor { bc_error } => format!(
                 "reaches rho = {} without turning back (boundary error {bc_error:.0e})",
-                crate::exact::reach::FLOOR
+                crate::studies::reach::FLOOR
             ),
             Reached::Stopped { why } => format!("stopped: {why}"),
         };
         outln!("  a = {:.4}: {what}", p.a_bar);
     }
     outln!("");
-    outln!("{}", crate::exact::reach::markdown(&map).trim_end());
+    outln!("{}", crate::studies::reach::markdown(&map).trim_end());
     Ok(())
 }
 
@@ -513,7 +513,7 @@ pub(crate) fn settled_windows(
     step: f64,
     json: bool,
 ) -> Result<()> {
-    use crate::exact::reach::{self, WindowEnd};
+    use crate::studies::reach::{self, WindowEnd};
     crate::error::check_range(
         "windows-at",
         rho,
@@ -1111,9 +1111,9 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
             "following the unloading and loading paths (the state at F = 10 first)",
         );
         let cutoff = d.cutoff()?;
-        let start = crate::exact::start::start(&po, cutoff);
-        passed.push(crate::exact::unloading::unloading(&po, cutoff, &start));
-        passed.push(crate::exact::loading::reported(&po, cutoff, &start));
+        let start = crate::studies::start::start(&po, cutoff);
+        passed.push(crate::studies::unloading::unloading(&po, cutoff, &start));
+        passed.push(crate::studies::loading::reported(&po, cutoff, &start));
         Ok(())
     };
     if json {

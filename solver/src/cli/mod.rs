@@ -892,7 +892,7 @@ fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> crate::Result<()
 /// `thinjkr models`.
 fn models_command(j: bool) -> crate::Result<()> {
     // the families' problems, if any, are said by `main` after the output
-    let models = crate::report::models();
+    let models = crate::registry::entries();
     if j {
         outln!("{}", Document::Models { models }.to_json());
     } else {

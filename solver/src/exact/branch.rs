@@ -90,7 +90,9 @@ pub(crate) enum SizeFoldEnd {
     /// ā passed the limit first.
     Beyond,
     /// The series stopped following the family first: at this traced
-    /// point its fine-grid boundary error exceeds the bound.
+    /// point its fine-grid boundary error exceeds the bound (read by the
+    /// command line's reach study, `studies::reach`).
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))]
     Unresolved {
         /// ā there.
         a_bar: f64,
@@ -572,6 +574,7 @@ impl Exact {
     /// between, or no minimum near), for the caller's trace to take over
     /// ([`Exact::force_minimum_nearest`]). Far cheaper than the trace: a
     /// handful of states at fixed ā, each one or two Newton steps.
+    #[cfg(any(feature = "cli", test))]
     pub(crate) fn force_minimum_in_size(&self, start: &ExactState) -> Result<ExactState> {
         self.force_minimum_in_size_from(self.unknowns(start))
     }

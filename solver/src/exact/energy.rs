@@ -1,6 +1,6 @@
 //! The potential energy of a contour and its derivatives: what a contact
 //! lowers when it moves, so what decides where it goes once a state is
-//! lost (the descent of `exact::descent`) and whether a state is stable
+//! lost (the descent of `studies::descent`) and whether a state is stable
 //! (`exact::stability`).
 //!
 //! In the units (17) the potential of the paper's Section 2 is, up to the

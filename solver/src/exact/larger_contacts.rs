@@ -9,7 +9,7 @@
 //! exceeded is traced down in ā, through its folds in ā, to the control.
 //! That state is a state of the problem, not the one a contact holds: it
 //! can be unstable (at ρ = 0.3 and F̄ = 10, to n = 2); which state a
-//! contact takes is the loading path's question (`exact::loading`).
+//! contact takes is the loading path's question (`studies::loading`).
 //!
 //! Owns: [`from_larger_contacts`]. May use: `exact` (the
 //! problem, `branch`'s trace through folds), `control`, `error`, `newton`
@@ -53,10 +53,6 @@ const ARM_DEPARTURE: f64 = 0.3;
 
 /// The largest fine-grid boundary error of a state on the way.
 const ON_THE_WAY: f64 = 1e-6;
-
-/// The largest and smallest step in ρ of the continuation at fixed ā.
-const RHO_STEP: f64 = 0.01;
-const SMALLEST_RHO_STEP: f64 = 1e-4;
 
 /// The state at `control` at `rho` on the arm of the first contact size
 /// above `start` (the state at the control at a larger ρ) that, continued in
@@ -193,30 +189,31 @@ pub(crate) fn traced_with_raised_modes(
 }
 
 /// `st` continued in ρ at its ā down to `rho` (Newton at fixed ā from the
-/// state before, steps of at most [`RHO_STEP`], halved where one fails
-/// down to [`SMALLEST_RHO_STEP`]); where it stops, the smallest ρ reached.
+/// state before, the steps [`AT_FIXED_SIZE`](super::rho_walk::AT_FIXED_SIZE));
+/// where it stops, the smallest ρ reached.
 fn at_fixed_size(mut st: ExactState, rho: f64) -> std::result::Result<ExactState, f64> {
     let held = Hold::Size(st.a_bar);
-    let mut step = RHO_STEP;
-    while st.rho > rho {
-        if crate::newton::check_stop().is_err() {
-            return Err(st.rho);
-        }
-        let next = (st.rho - step).max(rho);
-        let next_state = Exact::on(st.gap, next, st.truncation).and_then(|ex| {
-            ex.deferring_stability()
-                .solve_at(held, &st.contour, st.delta_bar)
-        });
-        match next_state {
-            Ok(n) if n.bc_error <= ON_THE_WAY => {
-                st = n;
-                step = (step * 1.5).min(RHO_STEP);
-            }
-            _ if step > SMALLEST_RHO_STEP => step *= 0.5,
-            _ => return Err(st.rho),
-        }
+    let walked = super::rho_walk::walk_down(
+        &mut st,
+        rho,
+        super::rho_walk::AT_FIXED_SIZE,
+        |st| st.rho,
+        |st, next| {
+            let next_state = Exact::on(st.gap, next, st.truncation).and_then(|ex| {
+                ex.deferring_stability()
+                    .solve_at(held, &st.contour, st.delta_bar)
+            });
+            Ok(match next_state {
+                Ok(n) if n.bc_error <= ON_THE_WAY => super::rho_walk::Attempt::Took(n),
+                _ => super::rho_walk::Attempt::Missed(()),
+            })
+        },
+    );
+    match walked {
+        Ok(Ok(())) => Ok(st),
+        // stopped, or asked to stop
+        Ok(Err(_)) | Err(_) => Err(st.rho),
     }
-    Ok(st)
 }
 
 #[cfg(test)]

@@ -46,23 +46,19 @@
 pub mod bands;
 pub(crate) mod bie;
 pub mod branch;
-pub(crate) mod descent;
 pub(crate) mod energy;
 pub(crate) mod gap;
 pub(crate) mod larger_contacts;
 pub(crate) mod linear;
-pub(crate) mod loading;
 pub(crate) mod no_state;
-pub(crate) mod reach;
 mod resolve;
 pub(crate) mod rho_fold;
 pub(crate) mod rho_path;
+pub(crate) mod rho_walk;
 pub(crate) mod seed;
 pub mod stability;
-pub(crate) mod start;
 pub(crate) mod stored;
 pub(crate) mod undulations;
-pub(crate) mod unloading;
 
 use crate::control::Hold;
 use crate::error::{Error, Result};
@@ -70,8 +66,6 @@ use bie::{solve_dirichlet, solve_dirichlet_symmetric, ContourSamples, Grid};
 pub(crate) use gap::Gap;
 use gap::GapAt;
 use nalgebra::{Complex, DMatrix, DVector};
-#[cfg(feature = "cli")]
-pub(crate) use resolve::ESCALATION;
 pub use resolve::{
     at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
     MAX_USER_MODES,
@@ -79,7 +73,14 @@ pub use resolve::{
 pub(crate) use resolve::{
     at_resolved_searching, next_try, pull_off_resolved_on, resolved, RESOLVED,
 };
+#[cfg(feature = "cli")]
+pub(crate) use resolve::{ARCLENGTH_ESCALATION, ESCALATION};
 use serde::Serialize;
+
+/// The large load F̄ = 10 from which the command line's studies of the
+/// loading path and the unloading trace begin, where a state is found
+/// there (its words in `report`).
+pub(crate) const START_FORCE: f64 = 10.0;
 
 /// The largest cosine mode of ∂p̄/∂ν − 1 accepted at convergence (the
 /// round-off floor of the boundary integral solution is about 1e-13).
@@ -739,7 +740,7 @@ pub struct Exact {
     gap: GapAt,
     circle: GapAt,
     truncation: Truncation,
-    grid: Grid,
+    pub(crate) grid: Grid,
     fine: Grid,
     /// cos 2kθ_i on the grid (row k = 0..N, column i), divided by the
     /// number of points: the imposed modes of ∂p̄/∂ν − 1 as the mean of
@@ -954,12 +955,14 @@ impl Exact {
     /// from them: [`Exact::keeping_the_speed_of_grooved`]), else θ
     /// proportional to arclength. (A trace from a grooved pull-off in the
     /// plain gauge fails at its first step.)
+    #[cfg(feature = "cli")]
     pub(crate) fn of_state(st: &ExactState) -> Result<Exact> {
         Exact::of_state_with(st, st.truncation)
     }
 
     /// [`Exact::of_state`] with another truncation (a finer or coarser
     /// rung for the same state).
+    #[cfg(feature = "cli")]
     pub(crate) fn of_state_with(st: &ExactState, truncation: Truncation) -> Result<Exact> {
         Ok(Exact::on(st.gap, st.rho, truncation)?.keeping_the_speed_of_grooved(&st.contour))
     }
@@ -1002,7 +1005,7 @@ impl Exact {
     /// The arclength representation's rows: the modes cos 2kθ, k = 1..P,
     /// of |z′(θ)|² (mean over the grid), zero when θ is proportional to
     /// arclength; empty for the conformal-map form.
-    fn gauge_rows(&self, dz: &[Complex<f64>]) -> Vec<f64> {
+    pub(crate) fn gauge_rows(&self, dz: &[Complex<f64>]) -> Vec<f64> {
         let mut speed2 = DVector::from_iterator(dz.len(), dz.iter().map(|d| d.norm_sqr()));
         if let Some(w) = &self.gauge_weight {
             speed2.component_mul_assign(w);
@@ -1015,7 +1018,7 @@ impl Exact {
 
     /// ∂/∂(coefficients) of [`Exact::gauge_rows`]: P × (unknowns), δ̄'s
     /// column zero (∂|z′|²/∂c_l = 2 Re(z̄′ i m_l e_l)).
-    fn gauge_jacobian(&self, u: &DVector<f64>) -> DMatrix<f64> {
+    pub(crate) fn gauge_jacobian(&self, u: &DVector<f64>) -> DMatrix<f64> {
         let np = self.truncation.arclength;
         let nu = self.unknown_count();
         let mut jac = DMatrix::zeros(np, nu);
@@ -1041,7 +1044,8 @@ impl Exact {
     /// 2 m_k m_l Re(ē_k e_l)(θ_i), summed with the weights
     /// Σ_j λ_j cos 2jθ_i (the rows' modes) and the gauge weight. With λ the
     /// gauge's multipliers it is what the curvature of the gauge adds to a
-    /// Hessian in the coefficients that move on it (`exact::descent`).
+    /// Hessian in the coefficients that move on it (`studies::descent`).
+    #[cfg(feature = "cli")]
     pub(crate) fn gauge_curvature(&self, lambda: &DVector<f64>) -> DMatrix<f64> {
         let np = self.truncation.arclength;
         let m = self.truncation.coefficients();
@@ -1310,40 +1314,40 @@ impl Exact {
         }
         let circle = Exact::on(self.gap_source, 1.0, self.truncation)?;
         // the intermediate states need no fine-grid check or stability
-        let mut u = circle.newton(
+        let u = circle.newton(
             Hold::Size(a_bar),
             &Contour::ellipse(a_bar, a_bar, nm),
             self.circle_delta(a_bar),
         )?;
         let id = self.unknown_count() - 1;
         let contour = |u: &DVector<f64>| circle.contour_of(u);
-        let mut rho = 1.0;
-        let mut step: f64 = 0.05;
-        while rho > self.rho {
-            crate::newton::check_stop()?;
-            let next = (rho - step).max(self.rho);
-            let ex = Exact::on(self.gap_source, next, self.truncation)?;
-            match ex.newton(Hold::Size(a_bar), &contour(&u), u[id]) {
-                Ok(n) => {
-                    u = n;
-                    rho = next;
-                    step = (step * 1.5).min(0.1);
-                }
-                Err(e) if step < 1e-4 => {
-                    // in the user's words: where the continuation stopped,
-                    // rounded (not the intermediate ρ to 17 digits)
-                    return Err(match e {
-                        Error::NoConvergence { .. } | Error::Unresolved { .. } | Error::NoState(_) => Error::NoState(format!(
-                            "exact state at rho = {}: the continuation in rho from the circle at a_bar = {} stopped at rho = {} (Newton failed there with steps in rho down to 1e-4)",
-                            crate::error::short(self.rho),
-                            crate::error::rounded(a_bar),
-                            crate::error::rounded(rho)
-                        )),
-                        other => other,
-                    });
-                }
-                Err(_) => step *= 0.5,
-            }
+        let mut at = (1.0, u);
+        let walked = rho_walk::walk_down(
+            &mut at,
+            self.rho,
+            rho_walk::FROM_THE_CIRCLE,
+            |at| at.0,
+            |(_, u), next| {
+                let ex = Exact::on(self.gap_source, next, self.truncation)?;
+                Ok(match ex.newton(Hold::Size(a_bar), &contour(u), u[id]) {
+                    Ok(n) => rho_walk::Attempt::Took((next, n)),
+                    Err(e) => rho_walk::Attempt::Missed(e),
+                })
+            },
+        )?;
+        let (rho, u) = at;
+        if let Err(rho_walk::Stopped { why, .. }) = walked {
+            // in the user's words: where the continuation stopped, rounded
+            // (not the intermediate ρ to 17 digits)
+            return Err(match why {
+                Error::NoConvergence { .. } | Error::Unresolved { .. } | Error::NoState(_) => Error::NoState(format!(
+                    "exact state at rho = {}: the continuation in rho from the circle at a_bar = {} stopped at rho = {} (Newton failed there with steps in rho down to 1e-4)",
+                    crate::error::short(self.rho),
+                    crate::error::rounded(a_bar),
+                    crate::error::rounded(rho)
+                )),
+                other => other,
+            });
         }
         self.state(&u)
     }

@@ -14,6 +14,7 @@
 //! caller's stop flag).
 
 use super::rho_path::Followed;
+use super::rho_walk::{walk_down, Attempt, Stopped};
 use super::{bands, branch, larger_contacts, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
 use crate::error::{Error, Result};
@@ -290,31 +291,32 @@ pub(crate) fn pull_off_continued_in_rho_along(
     tries: &[Truncation],
 ) -> Result<(ExactState, Vec<branch::Event>)> {
     let mut at = (start.clone(), Vec::new());
-    let mut step: f64 = 0.01;
-    while at.0.rho > rho {
-        crate::newton::check_stop()?;
-        let next = (at.0.rho - step).max(rho);
-        let before = &at.0;
-        match resolved(start.gap, next, tries, |ex| {
-            ex.pull_off_load_near(None, Some(before))
-        }) {
-            Ok(found) => {
-                at = found;
-                step = (step * 1.5).min(0.01);
-            }
-            Err(_) if step > 0.0025 => step *= 0.5,
-            Err(e) => {
-                return Err(Error::NoState(format!(
-                    "the pull-off continued in rho from rho = {} converges (boundary error below {:.0e}) down to rho = {} only (its contour {:.1e} a off the ellipse there); at rho = {}: {}",
-                    crate::error::short(start.rho),
-                    CONVERGED,
-                    crate::error::rounded(at.0.rho),
-                    at.0.deviation_from_ellipse,
-                    crate::error::rounded(next),
-                    e.to_string().chars().take(200).collect::<String>()
-                )))
-            }
-        }
+    let walked = walk_down(
+        &mut at,
+        rho,
+        super::rho_walk::PULL_OFF,
+        |at| at.0.rho,
+        |at, next| {
+            Ok(
+                match resolved(start.gap, next, tries, |ex| {
+                    ex.pull_off_load_near(None, Some(&at.0))
+                }) {
+                    Ok(found) => Attempt::Took(found),
+                    Err(e) => Attempt::Missed(e),
+                },
+            )
+        },
+    )?;
+    if let Err(Stopped { next, why }) = walked {
+        return Err(Error::NoState(format!(
+            "the pull-off continued in rho from rho = {} converges (boundary error below {:.0e}) down to rho = {} only (its contour {:.1e} a off the ellipse there); at rho = {}: {}",
+            crate::error::short(start.rho),
+            CONVERGED,
+            crate::error::rounded(at.0.rho),
+            at.0.deviation_from_ellipse,
+            crate::error::rounded(next),
+            why.to_string().chars().take(200).collect::<String>()
+        )));
     }
     at.0.route = Route::ContinuedInRho;
     Ok(at)
@@ -793,43 +795,52 @@ pub(crate) fn continued_in_rho_along(
         .position(|t| t.modes >= start.truncation.modes)
         .unwrap_or(tries.len() - 1);
     let mut st = start.clone();
-    let mut step: f64 = 0.01;
-    let stop = |st: &ExactState, why: String| converged_only_to(start, st, control, &why);
-    while st.rho > rho {
-        crate::newton::check_stop()?;
-        let next = (st.rho - step).max(rho);
-        crate::progress::stage(format!(
-            "continued in rho at {control} from rho = {}: at rho = {}, {} modes",
-            crate::error::short(start.rho),
-            crate::error::rounded(next),
-            tries[k].modes
-        ));
-        let ex = Exact::on(start.gap, next, tries[k])?.deferring_stability();
-        match ex.solve_at(control, &st.contour, st.delta_bar) {
-            Ok(n) if n.bc_error <= CONVERGED => {
-                st = n;
-                step = (step * 1.5).min(0.01);
-            }
-            Ok(n) if n.bc_error <= 1e-2 && k + 1 < tries.len() => k += 1,
-            _ if step > 1e-3 => step *= 0.5,
-            Ok(n) => {
-                let how = if n.bc_error <= 1e-2 {
-                    "the most tried"
-                } else {
-                    "a contour Newton reaches but the series does not resolve"
-                };
-                return Err(stop(
-                    &st,
-                    format!(
-                        "at rho = {} the boundary error is {:.1e} with {} modes ({how}), and the contour is {:.1e} a off the ellipse",
-                        crate::error::rounded(next),
-                        n.bc_error,
-                        n.truncation.modes,
-                        n.deviation_from_ellipse
-                    ),
-                ));
-            }
-            Err(e) => return past_newtons_end(&st, start, rho, control, tries, &e),
+    let walked = walk_down(
+        &mut st,
+        rho,
+        super::rho_walk::AT_A_CONTROL,
+        |st| st.rho,
+        |st, next| {
+            crate::progress::stage(format!(
+                "continued in rho at {control} from rho = {}: at rho = {}, {} modes",
+                crate::error::short(start.rho),
+                crate::error::rounded(next),
+                tries[k].modes
+            ));
+            let ex = Exact::on(start.gap, next, tries[k])?.deferring_stability();
+            Ok(match ex.solve_at(control, &st.contour, st.delta_bar) {
+                Ok(n) if n.bc_error <= CONVERGED => Attempt::Took(n),
+                Ok(n) if n.bc_error <= 1e-2 && k + 1 < tries.len() => {
+                    k += 1;
+                    Attempt::Again
+                }
+                missed => Attempt::Missed(missed),
+            })
+        },
+    )?;
+    match walked {
+        Ok(()) => {}
+        Err(Stopped { next, why: Ok(n) }) => {
+            let how = if n.bc_error <= 1e-2 {
+                "the most tried"
+            } else {
+                "a contour Newton reaches but the series does not resolve"
+            };
+            return Err(converged_only_to(
+                start,
+                &st,
+                control,
+                &format!(
+                    "at rho = {} the boundary error is {:.1e} with {} modes ({how}), and the contour is {:.1e} a off the ellipse",
+                    crate::error::rounded(next),
+                    n.bc_error,
+                    n.truncation.modes,
+                    n.deviation_from_ellipse
+                ),
+            ));
+        }
+        Err(Stopped { why: Err(e), .. }) => {
+            return past_newtons_end(&st, start, rho, control, tries, &e)
         }
     }
     st.stability = Exact::on(start.gap, rho, st.truncation)?.stability(&st)?;
@@ -971,10 +982,6 @@ fn at_with_visiting(
 pub(crate) const ARCLENGTH_ESCALATION: [usize; 10] =
     [48, 64, 96, 128, 160, 192, 224, 256, 288, 320];
 
-/// The follow's smallest step in ρ: [`pull_off_followed_in_arclength`]
-/// halves a failed step while it is larger.
-pub(crate) const SMALLEST_RHO_STEP: f64 = 0.00125;
-
 /// The load-controlled pull-off (the first minimum of F̄ on the arm that
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
 /// larger ρ, in the arclength representation ([`Truncation::in_arclength`]).
@@ -1004,7 +1011,6 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
     visit: &mut dyn FnMut(&ExactState),
 ) -> Result<ExactState> {
     let mut at = start.clone();
-    let mut step: f64 = 0.01;
     let mut k = if start.truncation.arclength > 0 {
         ARCLENGTH_ESCALATION
             .iter()
@@ -1013,61 +1019,73 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
     } else {
         0
     };
-    while at.rho > rho {
-        crate::newton::check_stop()?;
-        let next = (at.rho - step).max(rho);
-        let t = Truncation::in_arclength(ARCLENGTH_ESCALATION[k]);
-        crate::progress::stage(format!(
-            "the pull-off followed in rho from rho = {}: at rho = {}, {} modes of each sign",
-            crate::error::short(start.rho),
-            crate::error::rounded(next),
-            t.modes
-        ));
-        // where the previous pull-off has narrow grooves, its points
-        // crowded into them, and the gauge that keeps them there
-        let crowded = at.contour.crowded_at_groove(t.modes);
-        let start_contour = crowded.as_ref().unwrap_or(&at.contour);
-        let ex = Exact::on(start.gap, next, t)?
-            .deferring_stability()
-            .keeping_the_speed_of_grooved(start_contour);
-        // Newton at the previous pull-off's ā, else at its δ̄ (the state
-        // there is checked on the fine grid only where the trace needs it)
-        let from = |hold: Hold| {
-            ex.newton(hold, start_contour, at.delta_bar).and_then(|u0| {
-                ex.force_minimum_in_size_from(u0.clone()).or_else(|_| {
-                    ex.state(&u0)
-                        .and_then(|s0| ex.force_minimum_nearest(&s0, at.a_bar))
+    let steps = super::rho_walk::PULL_OFF_IN_ARCLENGTH;
+    let walked = walk_down(
+        &mut at,
+        rho,
+        steps,
+        |at| at.rho,
+        |at, next| {
+            let t = Truncation::in_arclength(ARCLENGTH_ESCALATION[k]);
+            crate::progress::stage(format!(
+                "the pull-off followed in rho from rho = {}: at rho = {}, {} modes of each sign",
+                crate::error::short(start.rho),
+                crate::error::rounded(next),
+                t.modes
+            ));
+            // where the previous pull-off has narrow grooves, its points
+            // crowded into them, and the gauge that keeps them there
+            let crowded = at.contour.crowded_at_groove(t.modes);
+            let start_contour = crowded.as_ref().unwrap_or(&at.contour);
+            let ex = Exact::on(start.gap, next, t)?
+                .deferring_stability()
+                .keeping_the_speed_of_grooved(start_contour);
+            // Newton at the previous pull-off's ā, else at its δ̄ (the state
+            // there is checked on the fine grid only where the trace needs it)
+            let from = |hold: Hold| {
+                ex.newton(hold, start_contour, at.delta_bar).and_then(|u0| {
+                    ex.force_minimum_in_size_from(u0.clone()).or_else(|_| {
+                        ex.state(&u0)
+                            .and_then(|s0| ex.force_minimum_nearest(&s0, at.a_bar))
+                    })
                 })
-            })
+            };
+            Ok(
+                match from(Hold::Size(at.a_bar)).or_else(|_| from(Hold::Delta(at.delta_bar))) {
+                    Ok(po) if po.bc_error <= CONVERGED => {
+                        visit(&po);
+                        Attempt::Took(po)
+                    }
+                    Ok(_) if k + 1 < ARCLENGTH_ESCALATION.len() => {
+                        k += 1;
+                        Attempt::Again
+                    }
+                    missed => Attempt::Missed((missed, t.modes)),
+                },
+            )
+        },
+    )?;
+    if let Err(Stopped {
+        next,
+        why: (missed, modes),
+    }) = walked
+    {
+        // how the step at `next` failed, after "only: at rho = …"
+        let how = match missed {
+            Ok(po) => format!(
+                " the boundary error is {:.1e} with {modes} modes",
+                po.bc_error
+            ),
+            Err(e) => format!(": {}", e.to_string().chars().take(160).collect::<String>()),
         };
-        let found = from(Hold::Size(at.a_bar)).or_else(|_| from(Hold::Delta(at.delta_bar)));
-        match found {
-            Ok(po) if po.bc_error <= CONVERGED => {
-                visit(&po);
-                at = po;
-                step = (step * 1.5).min(0.02);
-            }
-            Ok(_) if k + 1 < ARCLENGTH_ESCALATION.len() => k += 1,
-            _ if step > SMALLEST_RHO_STEP => step *= 0.5,
-            stopped => {
-                // how the step at `next` failed, after "only: at rho = …"
-                let how = match stopped {
-                    Ok(po) => format!(
-                        " the boundary error is {:.1e} with {} modes",
-                        po.bc_error, t.modes
-                    ),
-                    Err(e) => format!(": {}", e.to_string().chars().take(160).collect::<String>()),
-                };
-                return Err(Error::StopsInRho {
-                    reached: at.rho,
-                    what: format!(
-                        "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {}{how}",
-                        crate::error::rounded(at.rho),
-                        crate::error::rounded(next),
-                    ),
-                });
-            }
-        }
+        return Err(Error::StopsInRho {
+            reached: at.rho,
+            what: format!(
+                "the pull-off followed in rho in the arclength representation converges down to rho = {} only: at rho = {}{how}",
+                crate::error::rounded(at.rho),
+                crate::error::rounded(next),
+            ),
+        });
     }
     let ex = Exact::on(start.gap, at.rho, at.truncation)?.keeping_the_speed_of_grooved(&at.contour);
     at.stability = ex.stability(&at)?;

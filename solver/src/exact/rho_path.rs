@@ -28,7 +28,7 @@ pub(crate) enum Followed {
     TurnedBack {
         rho: f64,
         a_bar: f64,
-        // read by `exact::reach`, which the command line runs
+        // read by `studies::reach`, which the command line runs
         #[cfg_attr(not(feature = "cli"), allow(dead_code))]
         fold: f64,
         #[cfg_attr(not(feature = "cli"), allow(dead_code))]
@@ -145,7 +145,7 @@ const FARTHEST_CORRECTION: f64 = 0.25;
 /// [`FARTHEST_CORRECTION`] times the step is halved (below a step of 1e-5
 /// the path stops with an error rather than take it). At ρ = 0.5 and 0.4
 /// the sizes of the band edges that [`super::bands`] located by traces in
-/// ā turn back at ρ within 1e-6 of it (`exact::reach`'s tests).
+/// ā turn back at ρ within 1e-6 of it (`studies::reach`'s tests).
 pub(crate) fn follow_with(
     start: &ExactState,
     rho: f64,

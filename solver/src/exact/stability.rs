@@ -419,9 +419,14 @@ mod tests {
     #[test]
     fn on_a_window_at_rho_0_3_the_ladder_names_the_longest_unstable_mode() {
         use crate::control::Hold;
-        use crate::exact::reach;
-        let t = super::super::Truncation::in_arclength(reach::MODES);
-        let st = reach::from_the_circle(3.62, t).unwrap().unwrap();
+        // the state of the reach map (`thinjkr exact reach`: 128 modes of
+        // each sign, from the circle continued to rho = 0.98 at its size)
+        let t = super::super::Truncation::in_arclength(128);
+        let st = Exact::new(0.98, t)
+            .unwrap()
+            .deferring_stability()
+            .from_circle(3.62)
+            .unwrap();
         let Ok(super::super::rho_path::Followed::Reached(st)) =
             super::super::rho_path::follow_with(&st, 0.3, Hold::Size(3.62), true)
         else {

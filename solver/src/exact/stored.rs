@@ -210,7 +210,7 @@ pub(crate) fn below_the_floor(gap: Gap, rho: f64, asked: &str) -> Option<Error> 
         .pull_offs
         .last()
         .is_some_and(|p| Some(p.truncation.modes) == last_rung);
-    (at_last_rung && rho < table.reached - super::resolve::SMALLEST_RHO_STEP).then(|| {
+    (at_last_rung && rho < table.reached - super::rho_walk::PULL_OFF_IN_ARCLENGTH.smallest).then(|| {
         Error::StopsInRho {
             reached: table.reached,
             what: format!(

@@ -235,6 +235,7 @@ pub(crate) fn short_waves(contour: &Contour, cutoff: Cutoff) -> ShortWaves {
 /// of a coating that holds those undulations flat, to the mixing of modes
 /// between the coefficients and the radial departure that [`short_waves`]
 /// measures (a tenth or less of the short part is left).
+#[cfg(any(feature = "cli", test))]
 pub(crate) fn without_short_waves(contour: &Contour, cutoff: Cutoff) -> Contour {
     let h = 2.0 * std::f64::consts::PI / POINTS as f64;
     let z: Vec<Complex<f64>> = (0..POINTS)

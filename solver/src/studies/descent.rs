@@ -42,13 +42,10 @@
 //! energy and Newton), `control`, `cutoff`, `newton` (the stop request),
 //! nalgebra.
 
-// asked by the loading path, which the command line asks
-#![cfg_attr(not(feature = "cli"), allow(dead_code))]
-
-use super::energy::AtForce;
-use super::{Exact, ExactState};
 use crate::control::Hold;
 use crate::cutoff::Cutoff;
+use crate::exact::energy::AtForce;
+use crate::exact::{Exact, ExactState};
 use nalgebra::{DMatrix, DVector};
 
 /// Where a descent ends.
@@ -392,7 +389,7 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
     let samples = start.contour.samples(&ex.grid);
     let h = 2.0 * std::f64::consts::PI / ex.grid.len() as f64;
     let perimeter: f64 = samples.dz.iter().map(|d| d.norm()).sum::<f64>() * h;
-    let shape = 1 + ex.truncation.modes;
+    let shape = 1 + ex.truncation().modes;
     let resolved = resolved_coefficients(ex, perimeter, cutoff);
     let (free, held): (Vec<usize>, Vec<usize>) = (0..shape).partition(|&k| resolved[k]);
     let d = Descent {
@@ -401,7 +398,7 @@ pub(crate) fn descend(ex: &Exact, start: &ExactState, force: f64, cutoff: Cutoff
         free,
         held,
         shape,
-        gauge: ex.truncation.arclength,
+        gauge: ex.truncation().arclength,
     };
     let Some(mut p) = d.point(ex.unknowns(start)) else {
         return Landing::NotSettled(format!(
@@ -602,20 +599,20 @@ mod tests {
     /// curvature term carries up to a third of it).
     #[test]
     fn the_hessian_is_the_derivative_of_the_gradient_along_the_gauge() {
-        let zero = crate::exact::resolve::at_resolved(0.8, Hold::Force(0.0)).unwrap();
+        let zero = crate::exact::at_resolved(0.8, Hold::Force(0.0)).unwrap();
         for t in [Truncation::with_modes(32), Truncation::in_arclength(32)] {
             let ex = Exact::new(0.8, t).unwrap();
             let st = ex
                 .solve_at(Hold::Force(0.0), &zero.contour, zero.delta_bar)
                 .unwrap();
-            let shape = 1 + ex.truncation.modes;
+            let shape = 1 + ex.truncation().modes;
             let d = Descent {
                 ex: &ex,
                 force: 0.0,
                 free: (0..shape).collect(),
                 held: vec![],
                 shape,
-                gauge: ex.truncation.arclength,
+                gauge: ex.truncation().arclength,
             };
             // the gradient in the shape coordinates at u, put on the gauge
             let gradient = |u: DVector<f64>| {

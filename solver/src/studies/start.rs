@@ -15,21 +15,18 @@
 //! there is none, no path begins and the error says why.
 //!
 //! Owns: [`Start`], [`start`], [`reported_from`], [`at_large_load`],
-//! [`largest_on_pull_off_piece`]. May use: its parent `exact` (the
-//! problem, its states and `resolve`), `branch` (the trace), `stability`
-//! (the verdicts), `loading` (the large load), `control`, `cutoff`,
+//! [`largest_on_pull_off_piece`]. May use: `exact` (the
+//! problem, its states and `resolve`, the large load, `branch` (the
+//! trace), `stability` (the verdicts)), `control`, `cutoff`,
 //! `error`, `newton` (the stop request), `report` ([`StartAt`], the
 //! start's shape in the output).
 
-// asked by the command line (`exact pull-off --unloading`)
-#![cfg_attr(not(feature = "cli"), allow(dead_code))]
-
-use super::loading::START_FORCE;
-use super::stability::UnstableMode;
-use super::{Exact, ExactState, CONVERGED};
 use crate::control::Hold;
 use crate::cutoff::Cutoff;
 use crate::error::{Error, Result};
+use crate::exact::stability::UnstableMode;
+use crate::exact::START_FORCE;
+use crate::exact::{Exact, ExactState, CONVERGED};
 pub(crate) use crate::report::StartAt;
 
 /// How far the piece is traced from the pull-off at most (points of the
@@ -74,17 +71,14 @@ pub(crate) fn reported_from(start: &Result<Start>) -> (f64, Option<StartAt>) {
     }
 }
 
-/// The first clause of a reason (up to its first "; "): the long story of
-/// why no state at F̄ = 10 is found (every route tried) is in the JSON and
-/// in `thinjkr exact solve --force 10`.
-pub(crate) fn first_clause(why: &str) -> &str {
-    why.split("; ").next().unwrap_or(why)
-}
-
 /// The resolved exact state at F̄ = [`START_FORCE`] at `rho`.
 pub(crate) fn at_large_load(rho: f64) -> Result<ExactState> {
     // searched, not refused by the map (the path's start says why none)
-    super::at_resolved_searching(super::Gap::cylinders(), rho, Hold::Force(START_FORCE))
+    crate::exact::at_resolved_searching(
+        crate::exact::Gap::cylinders(),
+        rho,
+        Hold::Force(START_FORCE),
+    )
 }
 
 /// The largest F̄ on the piece through `pull_off` at which its state is
@@ -102,7 +96,7 @@ pub(crate) fn largest_on_pull_off_piece(
     let none = |what: String| {
         Error::NoState(format!(
             "no state at F = {START_FORCE} ({}); {what}",
-            first_clause(&why)
+            crate::report::first_clause(&why)
         ))
     };
     let side = |direction: f64| -> Result<Vec<(ExactState, Vec<UnstableMode>)>> {

@@ -8,19 +8,16 @@
 //! above the short-wave cutoff (a contact that thin changes shape before it
 //! reaches the minimum).
 //!
-//! Owns: [`unloading`]. May use: its parent `exact` (the problem and its
-//! states), `branch` (the trace), `start`
+//! Owns: [`unloading`]. May use: `exact` (the problem and its
+//! states, `branch` (the trace), `stability`), its parent `studies`: `start`
 //! (where it begins; the start itself comes from the caller, shared with
-//! the loading path), `stability`, `cutoff`, `error`, `report` (the outcome's
+//! the loading path), `cutoff`, `error`, `report` (the outcome's
 //! shape).
 
-// asked by the command line (`exact pull-off --unloading`)
-#![cfg_attr(not(feature = "cli"), allow(dead_code))]
-
 use super::start::{Start, StartAt};
-use super::{Exact, ExactState};
 use crate::cutoff::Cutoff;
 use crate::error::Result;
+use crate::exact::{Exact, ExactState};
 use crate::report::Passed;
 
 /// The largest boundary error of a traced point that still counts as a
@@ -133,9 +130,9 @@ fn path(pull_off: &ExactState, start: &Result<Start>) -> std::result::Result<Pat
             let bands_crossed = branch
                 .events
                 .iter()
-                .take_while(|e| !matches!(e, super::branch::Event::ForceMinimum { .. }))
+                .take_while(|e| !matches!(e, crate::exact::branch::Event::ForceMinimum { .. }))
                 .filter_map(|e| match e {
-                    super::branch::Event::Bifurcation { between, mode } => {
+                    crate::exact::branch::Event::Bifurcation { between, mode } => {
                         // one the trace met before this minimum
                         let before = between
                             .iter()
@@ -176,12 +173,12 @@ fn path(pull_off: &ExactState, start: &Result<Start>) -> std::result::Result<Pat
 
 /// The trace's first located force minimum, or the traced point before the
 /// force rose where none was located.
-fn first_minimum(branch: &super::branch::Branch, before: &ExactState) -> ExactState {
+fn first_minimum(branch: &crate::exact::branch::Branch, before: &ExactState) -> ExactState {
     branch
         .events
         .iter()
         .find_map(|e| match e {
-            super::branch::Event::ForceMinimum { state } if state.bc_error <= TRACED => {
+            crate::exact::branch::Event::ForceMinimum { state } if state.bc_error <= TRACED => {
                 Some((**state).clone())
             }
             _ => None,

@@ -1,7 +1,7 @@
 //! The loading path (issue 32 (b)): the states a contact takes when its
 //! load is lowered quasi-statically from a large load, F̄ = 10 (else the
-//! start `exact::start` finds), to where it comes off, under load control, with the jump rule of
-//! `exact::descent` wherever the state it holds is lost.
+//! start `studies::start` finds), to where it comes off, under load control, with the jump rule of
+//! `studies::descent` wherever the state it holds is lost.
 //!
 //! At each step in F̄ the contour descends the potential at the new force
 //! from the state at the last one (`descent::descend`): on a stable arm
@@ -34,24 +34,21 @@
 //! not settled from there.
 //!
 //! Owns: [`LoadingPath`], [`Jump`], [`BandPass`], [`PathEnd`],
-//! [`loading_path`], [`loading_path_to_first_band`], [`reported`]. May use: `exact` (the problem, `descent`, `resolve`, `start`,
-//! `undulations`),
+//! [`loading_path`], [`loading_path_to_first_band`], [`reported`]. May use: its parent `studies` (`descent`, `start`), `exact`
+//! (the problem, `resolve`, `undulations`, the large load),
 //! `control`, `continuation` (the family's linearisation, for the arm's
 //! tangent), `cutoff`, `error`, `newton` (the stop request), `report`
 //! (the outcome's shape).
 
-// asked by the command line (`exact pull-off --unloading`)
-#![cfg_attr(not(feature = "cli"), allow(dead_code))]
-
 use super::descent::{descend, Landing};
-use super::resolve::{ARCLENGTH_ESCALATION, ESCALATION};
-use super::{Exact, ExactState, Truncation, CONVERGED, RESOLVED};
 use crate::control::Hold;
 use crate::cutoff::Cutoff;
 use crate::error::Result;
+use crate::exact::{Exact, ExactState, Truncation, CONVERGED, RESOLVED};
+use crate::exact::{ARCLENGTH_ESCALATION, ESCALATION};
 
-/// The large load the path starts from.
-pub(crate) const START_FORCE: f64 = 10.0;
+#[cfg(test)]
+use crate::exact::START_FORCE;
 
 /// The force steps are halved down to this (relative to max(1, |F̄|)):
 /// where a step this short still loses the state held, it is lost within
@@ -208,13 +205,13 @@ const SAME_LANDING: f64 = 1e-7;
 
 /// Whether every point of each contour lies within `tolerance` of the
 /// other ([`near`]).
-fn contours_near(a: &super::Contour, b: &super::Contour, tolerance: f64) -> bool {
+fn contours_near(a: &crate::exact::Contour, b: &crate::exact::Contour, tolerance: f64) -> bool {
     let (pa, pb) = (contour_points(a), contour_points(b));
     within_polygon(&pa, &pb, tolerance) && within_polygon(&pb, &pa, tolerance)
 }
 
 /// [`NEAR_POINTS`] points of a contour at equal steps of its parameter.
-fn contour_points(c: &super::Contour) -> Vec<nalgebra::Complex<f64>> {
+fn contour_points(c: &crate::exact::Contour) -> Vec<nalgebra::Complex<f64>> {
     (0..NEAR_POINTS)
         .map(|i| c.point_at(2.0 * std::f64::consts::PI * i as f64 / NEAR_POINTS as f64))
         .collect()
@@ -241,7 +238,10 @@ fn within_polygon(
 }
 
 /// The modes of `st` unstable under load that `cutoff` resolves.
-fn unstable_resolved(st: &ExactState, cutoff: Cutoff) -> Vec<super::stability::UnstableMode> {
+fn unstable_resolved(
+    st: &ExactState,
+    cutoff: Cutoff,
+) -> Vec<crate::exact::stability::UnstableMode> {
     st.stability
         .clone()
         .under(cutoff)
@@ -266,8 +266,8 @@ fn same_state(a: &ExactState, b: &ExactState) -> bool {
     (b.a_bar - a.a_bar).abs() <= 1e-6 * a.a_bar && (b.s - a.s).abs() <= 1e-6
 }
 
-/// The loading path from `start` (the state at F̄ = [`START_FORCE`], else
-/// the largest stable load on the pull-off's piece: `exact::start`), down, with `cutoff` choosing the resolved modes.
+/// The loading path from `start` (the state at F̄ = [`crate::exact::START_FORCE`], else
+/// the largest stable load on the pull-off's piece: `studies::start`), down, with `cutoff` choosing the resolved modes.
 pub(crate) fn loading_path(start: &ExactState, cutoff: Cutoff) -> Result<LoadingPath> {
     Ok(follow(
         Exact::of_state(start)?,
@@ -280,7 +280,7 @@ pub(crate) fn loading_path(start: &ExactState, cutoff: Cutoff) -> Result<Loading
 /// [`loading_path`] up to the first band it passes: where it has passed
 /// one, it ends ([`PathEnd::PassedBand`]) at the state beyond, on the
 /// piece below, from which the path goes on as that piece's (the windows'
-/// rows, `exact::reach`, each the path on its own piece).
+/// rows, `studies::reach`, each the path on its own piece).
 pub(crate) fn loading_path_to_first_band(
     start: &ExactState,
     cutoff: Cutoff,
@@ -302,7 +302,7 @@ fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, S
     let mut best: (Option<Exact>, ExactState) = (None, st);
     // the conformal-map form's rungs above the state's, then the
     // arclength representation's (above the state's if it is in it)
-    let t = ex.truncation;
+    let t = ex.truncation();
     let rungs: Vec<Truncation> = ESCALATION
         .iter()
         .filter(|&&m| t.arclength == 0 && m > t.modes)
@@ -330,7 +330,7 @@ fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, S
         }
     }
     let (finer, st) = best;
-    let on = finer.as_ref().unwrap_or(ex).truncation;
+    let on = finer.as_ref().unwrap_or(ex).truncation();
     if st.bc_error <= RESOLVED {
         if let Some(f) = finer {
             *ex = f;
@@ -469,7 +469,7 @@ impl Walk {
         self.judged = shape_loss.is_none();
         if shape_loss.is_some() {
             if let Some((back, taken, truncation)) = self.before.take() {
-                if truncation != self.ex.truncation {
+                if truncation != self.ex.truncation() {
                     match Exact::of_state_with(&back, truncation) {
                         Ok(e) => self.ex = e,
                         Err(e) => return Some(PathEnd::NotSettled(e.to_string())),
@@ -501,7 +501,7 @@ impl Walk {
     /// shape no state before resolved); else the path ends there.
     fn past_short_waves(&mut self) -> Flow {
         let (held, cutoff) = (&self.held, self.cutoff);
-        let short = super::undulations::short_waves(&held.contour, cutoff);
+        let short = crate::exact::undulations::short_waves(&held.contour, cutoff);
         if short.unresolved && self.states.len() > 1 {
             if let Some(to) = pass_band(&mut self.ex, held, cutoff) {
                 self.states.pop();
@@ -609,7 +609,7 @@ impl Walk {
         };
         match probed {
             Some(st) if continues(&self.ex, &self.held, &st) => {
-                let back = (self.held.clone(), step, self.ex.truncation);
+                let back = (self.held.clone(), step, self.ex.truncation());
                 self.held = resolved(&mut self.ex, st).map_err(PathEnd::NotSettled)?;
                 self.judged = false;
                 self.before = (step > BRACKET * scale).then_some(back);
@@ -720,7 +720,7 @@ impl Walk {
 /// step reaches one.
 fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactState> {
     let mut guess = held.clone();
-    guess.contour = super::undulations::without_short_waves(&held.contour, cutoff);
+    guess.contour = crate::exact::undulations::without_short_waves(&held.contour, cutoff);
     // the search's problem, without the states' stability (the state
     // chosen gets it from `ex`)
     let search = Exact::of_state_with(held, ex.truncation())
@@ -730,7 +730,7 @@ fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactS
     let beyond = |ex: &mut Exact, a_bar: f64| -> Option<ExactState> {
         let st = search.solve_from(a_bar, &guess).ok()?;
         if st.force_bar >= held.force_bar
-            || super::undulations::short_waves(&st.contour, cutoff).unresolved
+            || crate::exact::undulations::short_waves(&st.contour, cutoff).unresolved
         {
             return None;
         }
@@ -740,7 +740,7 @@ fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactS
         // (a finer truncation that resolves it replaces `ex`, as on the
         // path)
         let st = resolved(ex, st).ok()?;
-        (!super::undulations::short_waves(&st.contour, cutoff).unresolved).then_some(st)
+        (!crate::exact::undulations::short_waves(&st.contour, cutoff).unresolved).then_some(st)
     };
     let step = PASS_STEP * held.a_bar;
     let mut above = held.a_bar;
@@ -1286,8 +1286,8 @@ mod tests {
     #[ignore = "slow tier (.ci/slow): about 120 s; the loading path at rho = 0.8 and at 80/90 degrees stays in CI"]
     fn at_rho_0_3_a_state_of_a_window_passes_one_band_and_unloads_until_its_shape_is_unresolved() {
         let cutoff = Cutoff::for_thinness(0.3).unwrap();
-        let t = Truncation::in_arclength(crate::exact::reach::MODES);
-        let st = crate::exact::reach::from_the_circle(3.62, t)
+        let t = Truncation::in_arclength(crate::studies::reach::MODES);
+        let st = crate::studies::reach::from_the_circle(3.62, t)
             .unwrap()
             .unwrap();
         let Ok(crate::exact::rho_path::Followed::Reached(st)) =

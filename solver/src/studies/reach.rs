@@ -1,31 +1,28 @@
 //! The reach in ρ of the near-elliptic family at each contact size (issue
 //! 32): the exact state of half-width ā is followed in ρ at that fixed ā
 //! from the circle (at ρ = [`PATHS_START_RHO`]) by the path in (shape, ρ)
-//! ([`super::rho_path::follow_with`], which steps around the folds in ā
+//! ([`crate::exact::rho_path::follow_with`], which steps around the folds in ā
 //! close by) until ρ turns back; that fold's ρ, located, is the size's
 //! reach. Below it no state of that size is connected to the circle at
 //! fixed ā. At any ρ the sizes whose reach lies above it are the bands of
-//! [`super::bands`], found here by a second route that needs no model, and
+//! [`crate::exact::bands`], found here by a second route that needs no model, and
 //! that holds below ρ = 0.4, where the screen of `bands` (`conformal:8`)
 //! fails: a band edge that `bands` located at ρ = 0.5 by a trace in ā is a
 //! size whose reach is 0.5 to 1e-6 (the tests).
 //!
-//! Owns: [`SizeReach`], [`Reached`], [`of_size`], [`reach`], [`from_json_lines`],
-//! [`windows`], [`valleys`], [`markdown`], [`Window`], [`WindowEnd`],
-//! [`WindowPath`], [`settle`], [`windows_markdown`], [`windows_from_json_lines`]. May use: `exact` (the family,
-//! `rho_path`, `stability`, `undulations`), `control`, `cutoff`, `error`, `accuracy` (the ρ of its table),
+//! Owns: [`of_size`], [`reach`], [`reach_of`], [`from_json_lines`],
+//! [`windows`], [`valleys`], [`markdown`], [`settle`], [`windows_markdown`], [`windows_from_json_lines`]. May use: its parent `studies` (the loading path, in the windows), `exact` (the family,
+//! `rho_path`, `stability`, `undulations`), `control`, `cutoff`, `error`, `report` (the map's and the windows' shapes, [`SizeReach`], [`Window`],
+//! re-exported here), `accuracy` (the ρ of its table),
 //! `newton` (the stop flag, carried to rayon's threads), `progress` (the sizes followed), rayon.
 
-// computed by the command line, read by the figures
-#![cfg_attr(not(feature = "cli"), allow(dead_code))]
-
-use super::branch::SizeFoldEnd;
-use super::rho_path::{follow_with, Followed};
-use super::{Exact, ExactState, Truncation, CONVERGED};
 use crate::control::Hold;
 use crate::error::{rounded, Result};
+use crate::exact::branch::SizeFoldEnd;
+use crate::exact::rho_path::{follow_with, Followed};
+use crate::exact::{Exact, ExactState, Truncation, CONVERGED};
+pub(crate) use crate::report::{Reached, SizeReach, Window, WindowEnd, WindowPath};
 use rayon::prelude::*;
-use serde::{Deserialize, Serialize};
 
 /// The ρ the paths start from: the circle continued to it at its ā
 /// ([`Exact::from_circle`]); at ρ = 1 itself the path's derivative in ρ
@@ -43,54 +40,13 @@ pub(crate) const MODES: usize = 128;
 /// The most sizes of a map.
 pub(crate) const MAX_SIZES: usize = 1000;
 
-/// How a size's path in ρ ended.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub(crate) enum Reached {
-    /// ρ turned back at this located fold; the fine-grid boundary error of
-    /// the path's lowest point (absent where that system is singular).
-    TurnsBack {
-        /// The fold's ρ: the size's reach.
-        rho: f64,
-        /// The boundary error there.
-        bc_error: Option<f64>,
-    },
-    /// The path reached ρ = 0.02, the smallest it is followed to, without
-    /// turning back.
-    Floor {
-        /// The boundary error of the state at the floor.
-        bc_error: f64,
-    },
-    /// The path stopped without turning back (no state of this size near
-    /// the circle, or a step that failed): why, in words.
-    Stopped {
-        /// Why.
-        why: String,
-    },
-}
-
-/// One size's reach.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub(crate) struct SizeReach {
-    /// ā.
-    pub a_bar: f64,
-    /// The modes of each sign of the arclength representation.
-    pub modes: usize,
-    /// How its path in ρ ended.
-    pub reached: Reached,
-}
-
-impl SizeReach {
-    /// The smallest ρ with a state of this size connected to the circle at
-    /// fixed ā; `None` where the path stopped.
-    pub(crate) fn reach(&self) -> Option<f64> {
-        match self.reached {
-            Reached::TurnsBack { rho, .. } => Some(rho),
-            Reached::Floor { .. } => Some(FLOOR),
-            Reached::Stopped { .. } => None,
-        }
+/// The smallest ρ with a state of the size `p` connected to the circle
+/// at fixed ā; `None` where its path stopped.
+pub(crate) fn reach_of(p: &SizeReach) -> Option<f64> {
+    match p.reached {
+        Reached::TurnsBack { rho, .. } => Some(rho),
+        Reached::Floor { .. } => Some(FLOOR),
+        Reached::Stopped { .. } => None,
     }
 }
 
@@ -191,7 +147,7 @@ pub(crate) fn windows(map: &[SizeReach], rho: f64) -> Vec<[f64; 2]> {
     let mut out: Vec<[f64; 2]> = Vec::new();
     let mut open = false;
     for p in map {
-        let inside = p.reach().is_some_and(|r| r < rho);
+        let inside = reach_of(&p).is_some_and(|r| r < rho);
         match (inside, open) {
             (true, true) => out.last_mut().expect("an open window")[1] = p.a_bar,
             (true, false) => out.push([p.a_bar, p.a_bar]),
@@ -241,7 +197,7 @@ pub(crate) fn markdown(map: &[SizeReach]) -> String {
     }
     let lowest = map
         .iter()
-        .filter_map(|p| p.reach().map(|r| (r, p.a_bar)))
+        .filter_map(|p| reach_of(&p).map(|r| (r, p.a_bar)))
         .min_by(|x, y| x.0.total_cmp(&y.0));
     if let Some((r, a)) = lowest {
         s += &format!("\nThe smallest reach: ρ = {} (ā = {:.2}).\n", rounded(r), a);
@@ -294,10 +250,12 @@ pub(crate) fn markdown(map: &[SizeReach]) -> String {
 /// the bands' tongues, where the windows close last as ρ falls.
 pub(crate) fn valleys(map: &[SizeReach]) -> Vec<(f64, f64)> {
     map.windows(3)
-        .filter_map(|w| match (w[0].reach(), w[1].reach(), w[2].reach()) {
-            (Some(l), Some(r), Some(h)) if r < l && r < h => Some((w[1].a_bar, r)),
-            _ => None,
-        })
+        .filter_map(
+            |w| match (reach_of(&w[0]), reach_of(&w[1]), reach_of(&w[2])) {
+                (Some(l), Some(r), Some(h)) if r < l && r < h => Some((w[1].a_bar, r)),
+                _ => None,
+            },
+        )
         .collect()
 }
 
@@ -308,143 +266,6 @@ pub(crate) const WINDOW_RESOLVED: f64 = 1e-6;
 
 /// How far from its start a window's trace in ā looks for a fold.
 pub(crate) const WINDOW_SPAN: f64 = 1.0;
-
-/// One end of a window of [`settle`]: where the family at that ρ, traced
-/// in ā from the window's state, ends on that side.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub(crate) enum WindowEnd {
-    /// The family folds in ā: the edge of the band beyond.
-    Fold {
-        /// ā at the fold.
-        a_bar: f64,
-        /// s there.
-        s: f64,
-        /// F̄ there.
-        force_bar: f64,
-        /// The contour mode n of the fold's null direction, where computed.
-        mode: Option<usize>,
-        /// The fine-grid boundary error there.
-        bc_error: f64,
-    },
-    /// Before any fold the series stopped following the family: at this
-    /// traced point the boundary error passed [`WINDOW_RESOLVED`]. The
-    /// family goes on, with a shape [`MODES`] modes do not resolve.
-    Unresolved {
-        /// ā there.
-        a_bar: f64,
-        /// F̄ there.
-        force_bar: f64,
-        /// The boundary error there.
-        bc_error: f64,
-    },
-    /// ā moved [`WINDOW_SPAN`] from the start without a fold.
-    Beyond {
-        /// The ā passed.
-        a_bar: f64,
-    },
-    /// The trace failed: why, in words.
-    Failed {
-        /// Why.
-        why: String,
-    },
-    /// The trace ended (at a fold, or where it stopped being resolved, or
-    /// at its limit) past another window of the grid, across the band
-    /// between, in steps of 0.01 and again in the band maps' fine steps
-    /// (a band narrower than those, or another arm it left the piece
-    /// for). Not settled.
-    Crossed {
-        /// Where it ended.
-        a_bar: f64,
-        /// The window it passed: its first and last size on the grid.
-        window: [f64; 2],
-    },
-}
-
-impl WindowEnd {
-    /// Where the trace ended; `None` where it failed.
-    fn a_bar(&self) -> Option<f64> {
-        match self {
-            WindowEnd::Fold { a_bar, .. }
-            | WindowEnd::Unresolved { a_bar, .. }
-            | WindowEnd::Beyond { a_bar }
-            | WindowEnd::Crossed { a_bar, .. } => Some(*a_bar),
-            WindowEnd::Failed { .. } => None,
-        }
-    }
-}
-
-/// A window of the reach at one ρ, settled by the family at that ρ: the
-/// state of the window's size with the smallest reach, followed from the
-/// circle at fixed ā down to ρ, traced in ā both ways to where the family
-/// folds (a band's edge) or stops being resolved.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub(crate) struct Window {
-    /// ρ.
-    pub rho: f64,
-    /// The window of [`windows`]: its first and last size on the grid.
-    pub grid: [f64; 2],
-    /// The size the traces start from.
-    pub a_bar: f64,
-    /// F̄ of its state at ρ (absent where the state was not found).
-    pub force_bar: Option<f64>,
-    /// The boundary error of that state.
-    pub bc_error: Option<f64>,
-    /// For which coatings (2) gives that state as a contact it resolves
-    /// (stable above the cutoff under each control, its shape resolved);
-    /// absent where the state or its stability was not found.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub coatings: Option<super::undulations::Coatings>,
-    /// The loading path from that state (`--unloading-at`), where it is a
-    /// stable contact (2) resolves at that thinness.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub unloading: Option<WindowPath>,
-    /// Towards smaller ā.
-    pub lower: WindowEnd,
-    /// Towards larger ā.
-    pub upper: WindowEnd,
-}
-
-/// The loading path (`exact::loading`) from a window's start, unloaded
-/// under load control with the cutoff of one thinness.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub(crate) struct WindowPath {
-    /// The thinness h/L of the cutoff.
-    pub thinness: f64,
-    /// How many states it held on its own piece, the start first.
-    pub states: usize,
-    /// How many jumps it made.
-    pub jumps: usize,
-    /// The modes shorter than the cutoff its states turned unstable to on
-    /// the way and stayed so (`LoadingPath::unresolved_turned_unstable`), in
-    /// order: below ρ = 1 a band stepped over on a near-elliptic piece, or
-    /// past a fold in ā the fold's mode.
-    #[serde(default)]
-    pub unresolved_turned_unstable: Vec<usize>,
-    /// Where the path passed the band whose lobes ended its piece (the
-    /// last state held here), F̄ and ā of the state beyond, on the piece
-    /// below, from which it goes on as that piece's path (followed up to
-    /// that band only: `exact::loading::loading_path_to_first_band`,
-    /// docs/exact.md "Bands of unresolved modes"); none where it found no
-    /// piece beyond, or ended before.
-    #[serde(default)]
-    pub passed_to: Option<[f64; 2]>,
-    /// F̄ of the last state held whose shape the cutoff resolves.
-    pub resolved_force_bar: f64,
-    /// F̄ of the last state held.
-    pub last_force_bar: f64,
-    /// ā of the last state held.
-    pub last_a_bar: f64,
-    /// Where the last state held has undulations shorter than the cutoff
-    /// above 1 % of ā: the largest such mode and their share of ā.
-    pub unresolved: Option<(usize, f64)>,
-    /// How the path ends: it comes off (the path's pull-off), loses its
-    /// state, or is not settled, in words.
-    pub end: String,
-}
 
 /// The windows of `map` at `rho`, each settled by the family at `rho`
 /// ([`Window`]; [`MODES`] modes of each sign), in parallel.
@@ -476,7 +297,7 @@ fn settle_one(
     let a_bar = map
         .iter()
         .filter(|p| p.a_bar >= grid[0] && p.a_bar <= grid[1])
-        .filter_map(|p| p.reach().map(|r| (r, p.a_bar)))
+        .filter_map(|p| reach_of(&p).map(|r| (r, p.a_bar)))
         .min_by(|x, y| x.0.total_cmp(&y.0))
         .map_or(grid[0], |(_, a)| a);
     let failed = |why: String| Window {
@@ -529,7 +350,7 @@ fn settle_one(
     let settled = |direction: f64| -> Result<WindowEnd> {
         match checked(end(direction, 0.01)?, direction) {
             WindowEnd::Crossed { .. } => Ok(checked(
-                end(direction, super::bands::PROBE_STEP)?,
+                end(direction, crate::exact::bands::PROBE_STEP)?,
                 direction,
             )),
             e => Ok(e),
@@ -746,7 +567,7 @@ fn end_words(e: &WindowEnd) -> String {
 /// The coatings for which a window's start is a resolved stable contact:
 /// under both controls, or each ("0.250 on", "0.248 to 0.744", "none").
 fn coatings_words(w: &Window) -> String {
-    let range = |t: &Option<super::undulations::Thinnesses>| match t {
+    let range = |t: &Option<crate::exact::undulations::Thinnesses>| match t {
         None => "none".to_string(),
         Some(t) => match t.to {
             None => format!("{:.3} on", t.from),
@@ -806,7 +627,7 @@ fn path_words(w: &Window, asked: bool) -> String {
 /// The sizes of the lines `thinjkr exact reach --json` writes (one
 /// `{"reach": …}` document per line, as docs/data/exact_reach.jsonl).
 pub(crate) fn from_json_lines(text: &str) -> Result<Vec<SizeReach>> {
-    super::bands::documents_of(text, "reach", "reach")
+    crate::exact::bands::documents_of(text, "reach", "reach")
 }
 
 /// The windows of the lines `thinjkr exact reach --windows-at --json`
@@ -814,7 +635,7 @@ pub(crate) fn from_json_lines(text: &str) -> Result<Vec<SizeReach>> {
 /// docs/data/exact_windows.jsonl; the docs' table is checked against it).
 #[cfg(test)]
 pub(crate) fn windows_from_json_lines(text: &str) -> Result<Vec<Window>> {
-    super::bands::documents_of(text, "window", "window")
+    crate::exact::bands::documents_of(text, "window", "window")
 }
 
 #[cfg(test)]
@@ -858,7 +679,7 @@ mod tests {
             };
             for a in [edge(lower_of, true), edge(upper_of, false)] {
                 let r = of_size(a, 96).unwrap();
-                let reach = r.reach().unwrap_or_else(|| panic!("{r:?}"));
+                let reach = reach_of(&r).unwrap_or_else(|| panic!("{r:?}"));
                 assert!(
                     (reach - rho).abs() < 1e-6,
                     "the edge a = {a} at rho = {rho} reaches {reach}"
@@ -871,7 +692,7 @@ mod tests {
             .find(|p| (p.a_bar - 3.8).abs() < 1e-9)
             .expect("a = 3.8 in the map");
         let now = of_size(3.8, MODES).unwrap();
-        let (Some(was), Some(is)) = (at.reach(), now.reach()) else {
+        let (Some(was), Some(is)) = (reach_of(&at), reach_of(&now)) else {
             panic!("{at:?} / {now:?}")
         };
         assert!(
@@ -914,7 +735,7 @@ mod tests {
                 .iter()
                 .filter(|p| p.a_bar >= m.range[0] && p.a_bar <= m.range[1])
             {
-                let reaches = p.reach().is_some_and(|r| r < m.rho);
+                let reaches = reach_of(&p).is_some_and(|r| r < m.rho);
                 if inside(p.a_bar) {
                     assert!(!reaches, "rho = {}: {p:?} inside a band", m.rho);
                 } else if !reaches && !unsettled(p.a_bar) {
@@ -1013,7 +834,7 @@ mod tests {
         let (lower, force) = fold(&is.lower);
         assert!((lower - 3.600373).abs() < 2e-6 && (force - 10.951).abs() < 1e-3);
         let (upper, _) = fold(&is.upper);
-        let reach = of_size(upper, MODES).unwrap().reach().expect("a reach");
+        let reach = reach_of(&of_size(upper, MODES).unwrap()).expect("a reach");
         assert!(
             (reach - 0.3).abs() < 1e-6,
             "the upper fold's size reaches {reach}"
@@ -1093,7 +914,7 @@ mod tests {
 
     /// A second route to where a window's path passes its band: the state
     /// beyond (found by Newton's method at fixed ā from the contour with
-    /// the short undulations taken off, `exact::loading`) lies on the
+    /// the short undulations taken off, `studies::loading`) lies on the
     /// piece of another window at the same ρ, between that window's two
     /// folds in ā and in F̄ (located by traces of the family, `settle`),
     /// below the window it left (docs/data/exact_windows.jsonl), at

@@ -1,0 +1,17 @@
+//! The command line's studies of the exact family (issue 32): where the
+//! loading path and the unloading trace begin (`start`), the loading path
+//! with its jump rule (`loading`, `descent`), the unloading trace
+//! (`unloading`), and the reach in ρ of each contact size with the windows
+//! it leaves (`reach`). They answer `thinjkr exact pull-off --unloading`
+//! and `thinjkr exact reach`, and compile with the feature `cli` only:
+//! the engine they drive (`exact`) needs none of them.
+//!
+//! Owns: its submodules. May use: `exact` (the engine), `report` (the
+//! shapes of their outcomes), `accuracy` (the ρ of its table), `control`,
+//! `continuation`, `cutoff`, `error`, `newton`, `progress`.
+
+pub(crate) mod descent;
+pub(crate) mod loading;
+pub(crate) mod reach;
+pub(crate) mod start;
+pub(crate) mod unloading;
