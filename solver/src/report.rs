@@ -9,16 +9,17 @@
 //! JSON Schema of `Document` is derived from these types (`thinjkr
 //! schema`, committed as docs/schema.json).
 //!
-//! Owns: `Document` and its parts, the shape of a slender state
-//! ([`SlenderState`]) and of the command line's studies' outcomes (the
+//! Owns: `Document` and its parts, and the shapes of the command line's studies' outcomes (the
 //! reach map's [`SizeReach`], its [`Window`]s, the paths' [`Passed`]). May use: `contact`, `conformal`, `layer` (its state),
-//! `exact`, `curve`, `fold`, `units`, `error`.
+//! `exact`, `curve`, `fold`, `units`, `error`, `slender` (its state's
+//! shape, [`SlenderState`], re-exported here).
 
 use crate::conformal::{ConformalState, Extremum};
 use crate::contact::State;
 use crate::curve::{Fold, FoldKind};
 use crate::exact::branch::Event;
 use crate::exact::ExactState;
+pub use crate::slender::SlenderState;
 #[cfg(feature = "cli")]
 use crate::units::{Scales, Si};
 #[cfg(feature = "cli")]
@@ -735,34 +736,4 @@ impl Document {
 pub(crate) fn schema() -> String {
     let s = schemars::schema_for!(Document);
     serde_json::to_string_pretty(&s).expect("a schema serialises") + "\n"
-}
-
-/// A state of the slender model.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct SlenderState {
-    /// The model's name.
-    pub model: &'static str,
-    /// ρ = R₂/R₁.
-    pub rho: f64,
-    /// The centre's half-width in the slender units (b̄₀ = ρ^(1/3) β₀).
-    pub beta0: f64,
-    /// The half-width of the contact at its centre, in the units (17).
-    pub b_bar: f64,
-    /// The approach δ̄ = ρ^(−1/3) D(β₀).
-    pub delta_bar: f64,
-    /// The force F̄ = ρ^(1/2) G(β₀).
-    pub force_bar: f64,
-    /// dF̄/dδ̄ along the model's one curve.
-    pub stiffness: f64,
-    /// Stable under load control (dF̄/dδ̄ > 0: the state lies beyond the
-    /// force minimum, on the branch from large loads).
-    pub stable_load: bool,
-    /// Stable under displacement control (always: δ̄ fixes β₀).
-    pub stable_displacement: bool,
-    /// How far the state is from what it claims, checked before it is
-    /// returned: at a δ̄, |D(β₀) − ρ^(1/3) δ̄| over max(1, |D|); at an F̄,
-    /// |F̄(β₀) − F̄| over max(|F̄|, ρ^(1/2)); at the pull-off, |dG/dβ₀| over
-    /// max(1, |G|).
-    pub residual: f64,
 }

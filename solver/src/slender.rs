@@ -14,13 +14,12 @@
 //! displacement control the strip never lets go (F̄ → 0⁻ as δ̄ → −∞).
 //!
 //! Owns: `SlenderModel` (the generated registry's entry), `Slender`, the
-//! model's states at a control, its pull-off and its
-//! zero-force state. May use: `generated` (the slender registry), `control`,
-//! `report` (the state's shape), `error`.
+//! model's states at a control ([`SlenderState`], which `report` shows),
+//! its pull-off and its zero-force state. May use: `generated` (the
+//! slender registry), `control`, `error`.
 
 use crate::control::Hold;
 use crate::error::{short, Error, Result};
-use crate::report::SlenderState;
 
 /// One slender model as the generator registers it: its name and title,
 /// and its generated functions.
@@ -454,6 +453,36 @@ impl Slender {
             why: "under displacement control the slender strip never lets go: its force tends to 0 from below as delta falls, without an extremum",
         }
     }
+}
+
+/// A state of the slender model.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct SlenderState {
+    /// The model's name.
+    pub model: &'static str,
+    /// ρ = R₂/R₁.
+    pub rho: f64,
+    /// The centre's half-width in the slender units (b̄₀ = ρ^(1/3) β₀).
+    pub beta0: f64,
+    /// The half-width of the contact at its centre, in the units (17).
+    pub b_bar: f64,
+    /// The approach δ̄ = ρ^(−1/3) D(β₀).
+    pub delta_bar: f64,
+    /// The force F̄ = ρ^(1/2) G(β₀).
+    pub force_bar: f64,
+    /// dF̄/dδ̄ along the model's one curve.
+    pub stiffness: f64,
+    /// Stable under load control (dF̄/dδ̄ > 0: the state lies beyond the
+    /// force minimum, on the branch from large loads).
+    pub stable_load: bool,
+    /// Stable under displacement control (always: δ̄ fixes β₀).
+    pub stable_displacement: bool,
+    /// How far the state is from what it claims, checked before it is
+    /// returned: at a δ̄, |D(β₀) − ρ^(1/3) δ̄| over max(1, |D|); at an F̄,
+    /// |F̄(β₀) − F̄| over max(|F̄|, ρ^(1/2)); at the pull-off, |dG/dβ₀| over
+    /// max(1, |G|).
+    pub residual: f64,
 }
 
 #[cfg(test)]
