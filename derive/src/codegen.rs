@@ -773,7 +773,7 @@ fn has(fs: &[Function], name: &str) -> bool {
 fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
     let a = md.ansatz();
     let ty = ident(&camel(a.id));
-    let variant = ident(&camel(a.id));
+    let model_name = a.id;
     let title = a.title;
     let note = a.closure.describe();
     let (closure, degree) = match a.closure {
@@ -820,7 +820,7 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
     let info = quote! {
         /// What this model is and has.
         pub static INFO: ModelInfo = ModelInfo {
-            id: ModelId::#variant,
+            name: #model_name,
             title: #title,
             closure: #closure,
             closure_note: #note,
@@ -945,7 +945,7 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
     };
     let doc = format!(" The model `{}`: {}.", a.id, a.title);
     quote! {
-        use crate::model::{BranchPoints, ClosureKind, Model, ModelId, ModelInfo, PressureParameters};
+        use crate::model::{BranchPoints, ClosureKind, Model, ModelInfo, PressureParameters};
         use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
         #info
         #[doc = #doc]

@@ -257,14 +257,14 @@ fn unrolled_second(k: usize, rows: &[(u64, f64)]) -> TokenStream {
     let pad_grad = (n..9).map(|_| quote!(0.0));
     quote! {
         /// Π̄ with its gradient and Hessian in (c, δ̄) at μ = 1/ρ: the table
-        /// evaluator (`crate::conformal::poly::evaluate`, order 2) unrolled
+        /// evaluator (`crate::ansatz::poly::evaluate`, order 2) unrolled
         /// over this member's rows, the same operations in the same order.
         /// `c` holds the K map coefficients.
         #[allow(clippy::all, unused_parens, unused_variables, unused_mut)]
-        pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::conformal::poly::Second {
+        pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::ansatz::poly::Second {
             assert_eq!(c.len(), #k, "one value per map coefficient");
             #(#body)*
-            crate::conformal::poly::Second {
+            crate::ansatz::poly::Second {
                 n: #n,
                 value,
                 grad: [#(#grads,)* #(#pad_grad),*],
@@ -445,8 +445,8 @@ pub fn outputs(all: &[ConformalDerivation]) -> Result<Vec<Output>, String> {
         pub mod table;
         #(pub mod #mods;)*
         /// Every generated member, by K.
-        pub static MEMBERS: [crate::conformal::Tables; #n] = [
-            #(crate::conformal::Tables {
+        pub static MEMBERS: [crate::ansatz::Tables; #n] = [
+            #(crate::ansatz::Tables {
                 terms: #terms,
                 powers: &#mods::POWERS,
                 potential: table::POTENTIAL,
@@ -636,7 +636,7 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
                 }
             });
             Ok(quote! {
-                crate::conformal::Family {
+                crate::ansatz::Family {
                     name: #name,
                     kind: #kind,
                     title: #title,
@@ -658,7 +658,7 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
     let n = Literal::usize_unsuffixed(families.len());
     let file = quote! {
         /// Every contour family, in the order of their data files' names.
-        pub static CONTOUR_FAMILIES: [crate::conformal::Family; #n] = [#(#entries),*];
+        pub static CONTOUR_FAMILIES: [crate::ansatz::Family; #n] = [#(#entries),*];
     };
     let ast: syn::File =
         syn::parse2(file).map_err(|e| format!("generated registry.rs does not parse: {e}"))?;

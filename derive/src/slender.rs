@@ -55,7 +55,7 @@ pub struct SlenderFamily {
 /// slender family file exists.
 pub const REGISTRY_MODULE: &str = "slender_registry";
 
-/// The source of the slender registry: one `thinjkr::slender::SlenderModel`
+/// The source of the slender registry: one `thinjkr::ansatz::SlenderModel`
 /// per slender family file, in the order of the files' names.
 pub fn registry_source(families: &[SlenderFamily]) -> Result<String, String> {
     let entries: Vec<proc_macro2::TokenStream> = families
@@ -64,7 +64,7 @@ pub fn registry_source(families: &[SlenderFamily]) -> Result<String, String> {
             let module = proc_macro2::Ident::new(&f.name, proc_macro2::Span::call_site());
             let (name, title) = (&f.name, &f.title);
             quote::quote! {
-                crate::slender::SlenderModel {
+                crate::ansatz::SlenderModel {
                     name: #name,
                     title: #title,
                     approach: super::#module::approach,
@@ -77,7 +77,7 @@ pub fn registry_source(families: &[SlenderFamily]) -> Result<String, String> {
     let n = proc_macro2::Literal::usize_unsuffixed(families.len());
     let file = quote::quote! {
         /// Every slender model, in the order of their data files' names.
-        pub(crate) static SLENDER_MODELS: [crate::slender::SlenderModel; #n] = [#(#entries),*];
+        pub(crate) static SLENDER_MODELS: [crate::ansatz::SlenderModel; #n] = [#(#entries),*];
     };
     let ast: syn::File =
         syn::parse2(file).map_err(|e| format!("generated slender registry does not parse: {e}"))?;

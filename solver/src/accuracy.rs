@@ -11,7 +11,7 @@
 //! and the reference file the checker reads for `sec6.error.exact`.
 //!
 //! Owns: [`Quantity`], `Row`, `row`, `render`, `RHOS`,
-//! `Doubling`, `doubling`, [`Reference`], [`band_markdown`]. May use: `fold`, `control`, `exact`, `contact`,
+//! `Doubling`, `doubling`, [`Reference`], [`band_markdown`]. May use: `generated` (`ModelId`), `fold`, `control`, `exact`, `contact`,
 //! `conformal` (the compared members), `model` (the ellipse models), `slender`
 //! (the slender limit's table), `report` (its state), `error`.
 
@@ -93,7 +93,7 @@ pub(crate) fn own_gap_families() -> Vec<&'static Family> {
     crate::conformal::families()
         .iter()
         .copied()
-        .filter(|f| f.exact_gap() != Gap::CYLINDERS)
+        .filter(|f| crate::conformal::exact_gap(f) != Gap::CYLINDERS)
         .collect()
 }
 
@@ -110,7 +110,7 @@ fn compared_in(family: &Family) -> Vec<Conformal> {
 /// One row of `family` (on a gap of its own): the exact state of its gap
 /// at `rho` and its compared members' states.
 pub(crate) fn row_on(family: &'static Family, rho: f64, quantity: Quantity) -> Row {
-    let gap = family.exact_gap();
+    let gap = crate::conformal::exact_gap(family);
     let exact = match quantity {
         Quantity::PullOff => pull_off_resolved_on(gap, rho).map(|(s, _)| s),
         Quantity::ZeroForce => at_resolved_searching(gap, rho, Hold::Force(0.0)),
@@ -758,7 +758,7 @@ fn render_own_gap(f: &'static Family, rows: &[Row]) -> String {
          Relative errors (not per cent) of the first quantity / ā / s.\n",
         f.name, f.name, f.title, f.source, f.gap, f.particular
     );
-    if let Ok(circle) = f.exact_gap().at(1.0) {
+    if let Ok(circle) = crate::conformal::exact_gap(f).at(1.0) {
         if circle.is_radial() {
             let (a, force) = crate::exact::branch::circle_pull_off(&circle);
             o.push_str(&format!(

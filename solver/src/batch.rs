@@ -6,13 +6,13 @@
 //! of the crate and its front ends runs on ([`thread_pool`]).
 //!
 //! Owns: [`Item`], [`Solves`], [`solve_all`], [`thread_pool`], [`parse_line`],
-//! `csv_row_values`, `CSV_HEADER`. May use: `contact`, `conformal`, `control`, `error`,
+//! `csv_row_values`, `CSV_HEADER`. May use: `generated` (`ModelId`), `contact`, `conformal`, `control`, `error`,
 //! `model`.
 
 use crate::contact::{Contact, State};
 use crate::control::Hold;
 use crate::error::{Error, Result};
-use crate::model::ModelId;
+use crate::generated::ModelId;
 use rayon::prelude::*;
 
 /// One input of a batch.

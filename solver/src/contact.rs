@@ -24,7 +24,7 @@
 //!
 //! Owns: [`Contact`], `NEAR_CIRCLE`, [`State`], [`Stability`], [`PullOff`], [`Search`]
 //! and the walk.
-//! May use: `control`, `model`, `newton`, `fold`, `error`, `equations` (the one model
+//! May use: `generated` (`ModelId`), `control`, `model`, `newton`, `fold`, `error`, `equations` (the one model
 //! interface its Newton and continuation run on), `cutoff` (the neutral band).
 
 mod cold;
@@ -39,7 +39,8 @@ use crate::cutoff::Eigen;
 use crate::equations::held;
 use crate::error::{check_range, rounded, short, Error, Result};
 use crate::fold::{self, FoldCondition};
-use crate::model::{brent_minimum, ClosureKind, Model, ModelId};
+use crate::generated::ModelId;
+use crate::model::{brent_minimum, ClosureKind, Model};
 use crate::newton::{self, NewtonConfig};
 use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
@@ -212,6 +213,7 @@ pub enum Search {
 #[derive(Clone, Copy)]
 pub struct Contact {
     rho: f64,
+    id: ModelId,
     model: &'static dyn Model,
     newton: NewtonConfig,
     search: Search,
@@ -236,7 +238,7 @@ enum WalkSample {
 impl std::fmt::Debug for Contact {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Contact")
-            .field("model", &self.model.info().id)
+            .field("model", &self.id)
             .field("rho", &self.rho)
             .finish()
     }
@@ -286,6 +288,7 @@ impl Contact {
         }
         Ok(Contact {
             rho,
+            id: model,
             model: model.model(),
             newton: NewtonConfig::default(),
             search: Search::Cold,
@@ -317,7 +320,7 @@ impl Contact {
 
     /// The model's identifier.
     pub fn model_id(&self) -> ModelId {
-        self.model.info().id
+        self.id
     }
 
     fn axisymmetric(&self) -> bool {
@@ -502,7 +505,7 @@ impl Contact {
             None => Stability::default(),
         };
         State {
-            model: m.info().id,
+            model: self.id,
             rho: self.rho,
             a_bar: a,
             b_bar: s * a,

@@ -18,7 +18,7 @@
 //! the states are handed out one at a time (`trace_each`), so a curve's
 //! memory does not grow with its points.
 //!
-//! Owns: [`Curve`], [`Fold`], [`trace`], `trace_each`, `TRACED_FOR`. May use: `contact`, `equations`,
+//! Owns: [`Curve`], [`Fold`], [`trace`], `trace_each`, `TRACED_FOR`. May use: `generated` (`ModelId`), `contact`, `equations`,
 //! `fold`, `continuation`, `error`, `model` (its tests: the residuals a state solves).
 
 use crate::contact::{Contact, State};

@@ -15,7 +15,7 @@
 //! method is [`crate::newton::damped`], also written once for any
 //! dimension.
 //!
-//! Owns: [`Equations`], [`Linearised`], [`Branch`], [`held`]. May use: `control`, `fold`, `model`, `continuation`,
+//! Owns: [`Equations`], [`Linearised`], [`Branch`], [`held`]. May use: `generated` (`ModelId`), `control`, `fold`, `model`, `continuation`,
 //! `error`, `contact` and `conformal` (the two kinds of model it is
 //! implemented for), nalgebra.
 
@@ -123,7 +123,7 @@ impl<M: Model + ?Sized> Equations for M {
         U2::name()
     }
     fn label(&self) -> String {
-        self.info().id.to_string()
+        self.info().name.to_string()
     }
     fn residuals_and_jacobian(
         &self,
@@ -398,7 +398,7 @@ mod tests {
     use super::*;
     use crate::conformal::Conformal;
     use crate::contact::Contact;
-    use crate::model::ModelId;
+    use crate::generated::ModelId;
     use nalgebra::{DVector, Vector3};
 
     /// max |J − J_fd| / (1 + |J|) over the entries, J_fd by central

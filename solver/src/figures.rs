@@ -19,8 +19,8 @@
 use crate::contact::Contact;
 use crate::error::{Error, Result};
 use crate::generated::max as g;
+use crate::generated::ModelId;
 use crate::limits;
-use crate::model::ModelId;
 use plotters::prelude::*;
 
 /// One curve of a figure.

@@ -27,6 +27,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod accuracy;
+pub(crate) mod ansatz;
 pub mod batch;
 #[cfg(feature = "cli")]
 #[doc(hidden)]
@@ -77,9 +78,9 @@ pub use contact::{Contact, FoldBasis, PullOff, Search, Stability, State};
 pub use control::Hold;
 pub use error::{Error, Result};
 pub use fold::FoldCondition;
-pub use model::{Model, ModelId};
 pub use registry::PullOffAnswer;
 pub use report::AnyState;
+pub use {generated::ModelId, model::Model};
 
 /// The state of the model named `model` at the ratio of principal relative
 /// curvatures `rho` (ρ = 1 for cylinders crossed at 90°), held at `hold`:

@@ -5,11 +5,11 @@
 //! asymptotics of the Appendix, (35)–(37). A limit the model lacks is an
 //! [`Error::Unavailable`] that says why.
 //!
-//! Owns: these functions. May use: `contact`, `model`, `error`.
+//! Owns: these functions. May use: `generated` (`ModelId`), `contact`, `model`, `error`.
 
 use crate::contact::{bisect, Contact};
 use crate::error::{check_range, Error, Result};
-use crate::model::ModelId;
+use crate::generated::ModelId;
 
 fn unavailable(model: ModelId, what: &str) -> Error {
     Error::Unavailable {

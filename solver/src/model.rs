@@ -10,12 +10,11 @@
 //! Owns: [`Model`], [`ModelInfo`], [`ClosureKind`], [`PressureParameters`],
 //! and numeric helpers the generated implementations share
 //! (`real_roots`, `contour_spread`, Brent's minimisation). May use:
-//! `generated` (for [`ModelId`]), nalgebra.
+//! nalgebra; not `generated`, which implements [`Model`] and lists the
+//! models (`ModelId`).
 
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
-
-pub use crate::generated::ModelId;
 
 /// How a model imposes the second boundary condition (3)₂.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -33,8 +32,8 @@ pub enum ClosureKind {
 /// What a model is and what it has, as data (generated).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModelInfo {
-    /// Its identifier.
-    pub id: ModelId,
+    /// Its name, as `thinjkr models` lists it (its `ModelId`'s).
+    pub name: &'static str,
     /// One line.
     pub title: &'static str,
     /// The closure of (3)₂.

@@ -10,7 +10,7 @@
 //! schema`, committed as docs/schema.json).
 //!
 //! Owns: `Document` and its parts, and the shapes of the command line's studies' outcomes (the
-//! reach map's [`SizeReach`], its [`Window`]s, the paths' [`Passed`]). May use: `contact`, `conformal`, `layer` (its state),
+//! reach map's `SizeReach`, its `Window`s, the paths' [`Passed`]). May use: `contact`, `conformal`, `layer` (its state),
 //! `exact`, `curve`, `fold`, `units`, `error`, `slender` (its state's
 //! shape, [`SlenderState`], re-exported here).
 

@@ -13,30 +13,16 @@
 //! the strip thins as 2/ξ² but never ends, so a state has no ā, and under
 //! displacement control the strip never lets go (F̄ → 0⁻ as δ̄ → −∞).
 //!
-//! Owns: `SlenderModel` (the generated registry's entry), `Slender`, the
+//! Owns: `Slender`, the
 //! model's states at a control ([`SlenderState`], which `report` shows),
 //! its pull-off and its zero-force state. May use: `generated` (the
-//! slender registry), `control`, `error`.
+//! slender registry), `ansatz` (its entry's shape, `SlenderModel`),
+//! `control`, `error`.
 
 use crate::control::Hold;
 use crate::error::{short, Error, Result};
 
-/// One slender model as the generator registers it: its name and title,
-/// and its generated functions.
-#[derive(Debug)]
-pub(crate) struct SlenderModel {
-    /// The model's name (its family file's `name`).
-    pub name: &'static str,
-    /// One line for reports.
-    pub title: &'static str,
-    /// D(β) and D′(β): a strip's local approach in the slender units.
-    pub approach: fn(f64) -> [f64; 2],
-    /// G(β₀) and dG/dβ₀: the total force in the slender units (the
-    /// generated kernel integrated over φ by the generated rule).
-    pub force: fn(f64) -> [f64; 2],
-    /// The largest β₀ the functions are checked for.
-    pub beta0_max: f64,
-}
+use crate::ansatz::SlenderModel;
 
 /// The smallest β₀ the generated functions are checked for.
 const BETA0_MIN: f64 = 1e-3;

@@ -21,7 +21,7 @@ const ROOT_ITEMS: &[(&str, &str)] = &[
     ("Error", "error"),
     ("Result", "error"),
     ("Model", "model"),
-    ("ModelId", "model"),
+    ("ModelId", "generated"),
 ];
 
 fn sources(dir: &Path, out: &mut Vec<PathBuf>) {
@@ -227,45 +227,27 @@ fn the_public_api_stays_small() {
 /// code (`#[cfg(test)] mod tests`) is not held to it. `generated` is
 /// ranked like any module.
 const RANKS: &[&[&str]] = &[
-    &["error", "progress", "quadrature"],
-    &["control", "cutoff", "newton"],
+    &["error", "model", "progress", "quadrature"],
+    &["control", "cutoff", "fold", "newton"],
     &["continuation", "contour_modes"],
-    &["exact"],
-    &[
-        "conformal",
-        "contact",
-        "curve",
-        "equations",
-        "fold",
-        "generated",
-        "model",
-        "slender",
-    ],
-    &["batch", "layer", "limits", "units"],
-    &["report"],
+    &["equations", "exact"],
+    &["ansatz"],
+    &["generated"],
+    &["contact", "layer", "slender"],
+    &["curve", "limits", "units"],
+    &["conformal"],
+    &["batch", "report"],
     &["accuracy", "registry"],
     &["studies"],
     &["figures"],
     &["cli"],
 ];
 
-/// The modules that still import each other, all of one rank: the
-/// generator writes `crate::model`, `crate::conformal` and
-/// `crate::slender` types into generated/, whose registries those modules
-/// read, and contact, curve, equations and fold lie on the way between
-/// (issue 69: breaking it is a change to the generator in derive/). A
-/// module that leaves the cycle must leave this list (the test says so),
-/// and no other module may import one of its own rank.
-const CYCLE: &[&str] = &[
-    "conformal",
-    "contact",
-    "curve",
-    "equations",
-    "fold",
-    "generated",
-    "model",
-    "slender",
-];
+/// The modules that still import each other, all of one rank: none since
+/// issue 69 broke the last cycle (the generator's types moved to `ansatz`,
+/// below `generated`; `ModelId` is `generated`'s alone). A cycle that
+/// comes back must be named here, with why, or the test fails.
+const CYCLE: &[&str] = &[];
 
 /// Inherent impls outside their type's own top-level module, each with
 /// why it is there still: (file, type). The one left hides an import: the

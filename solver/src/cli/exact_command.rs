@@ -2,7 +2,7 @@
 //! free-boundary problem (2)–(3) at the command line, every approximate
 //! model's answer printed beside it.
 //!
-//! Owns: [`ExactCommand`], the exact printers. May use: `batch` (an ellipse model at a control), `control`, `crate::exact`,
+//! Owns: [`ExactCommand`], the exact printers. May use: `generated` (`ModelId`), `batch` (an ellipse model at a control), `control`, `crate::exact`,
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
 //! state), `crate::report`, `crate::fold`, `crate::error`, `crate::cutoff`,
 //! `crate::studies` (the loading path, the unloading trace, the reach), `crate::cli` (`output`, `files`).

@@ -7,7 +7,7 @@
 //! example.
 //!
 //! Owns: the verbs, their parsing and printing, the thread pool of a run.
-//! May use: `accuracy`, `control`, `crate::registry`, `crate::report`, `crate::units`,
+//! May use: `generated` (`ModelId`), `accuracy`, `control`, `crate::registry`, `crate::report`, `crate::units`,
 //! `crate::contact`, `crate::model`, `crate::conformal`, `crate::exact`,
 //! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
 //! `crate::limits`, `crate::error`, `crate::layer` (a layer state), its own modules.

@@ -23,7 +23,7 @@
 //! each member's tables against a quadrature). A family that fails is left out, and the reason is
 //! kept ([`super::load_problems`]) for every front end to show.
 //!
-//! Owns: reading `registry.json` and `tables.json`. May use: `conformal`
+//! Owns: reading `registry.json` and `tables.json`. May use: `generated` (`ModelId`), `conformal`
 //! (`Family`, `Tables`, `poly`'s packing, `algebra`'s check), `exact` (the gap's terms, checked
 //! as the exact solver checks them), `model` and `slender` (the built-in
 //! models' names), serde_json.

@@ -2,7 +2,7 @@
 //! the family that seeds the exact solver of its gap (`seeds_exact` in its
 //! data file; `conformal:8` for the cylinders) gives the solver its
 //! starting guesses through the solver's own [`Seed`] interface, handed in
-//! with the gap ([`Family::exact_gap`], `Gap::cylinders`), so that the
+//! with the gap ([`exact_gap`], `Gap::cylinders`), so that the
 //! exact solver names no model.
 //!
 //! Owns: the `Seed` implementation of a member, `Gap::cylinders`, the
@@ -106,24 +106,12 @@ impl Gap {
     }
 }
 
-impl Family {
-    /// The gap its members solve, without looking up its seed (usable while
-    /// the registry is being read).
-    pub(crate) fn unseeded_gap(&self) -> Gap {
-        Gap {
-            name: self.name,
-            particular: self.particular_terms,
-            seed: None,
-        }
-    }
-
-    /// The gap its members solve, as data for the exact solver, with the
-    /// seed of that gap's exact solver.
-    pub(crate) fn exact_gap(&self) -> Gap {
-        let g = self.unseeded_gap();
-        Gap {
-            seed: seed_of(&g),
-            ..g
-        }
+/// The gap the members of `family` solve, as data for the exact solver,
+/// with the seed of that gap's exact solver.
+pub(crate) fn exact_gap(family: &Family) -> Gap {
+    let g = family.unseeded_gap();
+    Gap {
+        seed: seed_of(&g),
+        ..g
     }
 }

@@ -843,13 +843,11 @@ pub fn near_circular_ds_dmu(abar0: f64) -> f64 {
     let t1 = (-(4.0 * 0.7071067811865476 * 1.4142135623730951) + t0);
     (-0.6666666666666666 * t0 / (t1))
 }
-use crate::model::{
-    BranchPoints, ClosureKind, Model, ModelId, ModelInfo, PressureParameters,
-};
+use crate::model::{BranchPoints, ClosureKind, Model, ModelInfo, PressureParameters};
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 /// What this model is and has.
 pub static INFO: ModelInfo = ModelInfo {
-    id: ModelId::Apex45,
+    name: "apex45",
     title: "Eq. (5) with ∂p/∂ν equal at t = 0 and t = π/4, closure (13)",
     closure: ClosureKind::Max,
     closure_note: "max ∂p/∂ν on Γ₀ = √(2mΔγ) (Eq. (13))",

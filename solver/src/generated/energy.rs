@@ -575,13 +575,11 @@ pub fn axisymmetric_force_bar(abar: f64) -> f64 {
         * (-(24.0 * ::core::f64::consts::PI * abar.powi(3))
             + (::core::f64::consts::PI * abar.powi(6))))
 }
-use crate::model::{
-    BranchPoints, ClosureKind, Model, ModelId, ModelInfo, PressureParameters,
-};
+use crate::model::{BranchPoints, ClosureKind, Model, ModelInfo, PressureParameters};
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 /// What this model is and has.
 pub static INFO: ModelInfo = ModelInfo {
-    id: ModelId::Energy,
+    name: "energy",
     title: "Eq. (5) with (6) exact on the ellipse, semi-axes from ∂Π/∂a = ∂Π/∂b = 0 (Ritz)",
     closure: ClosureKind::Energy,
     closure_note: "energy (Ritz): ∂Π/∂a = ∂Π/∂b = 0, Π = U − Δγ·πab, U = ½∫p(δ − φ) dA",

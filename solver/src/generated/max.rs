@@ -465,13 +465,11 @@ pub fn near_circular_ds_dmu(abar0: f64) -> f64 {
     let t1 = (-4.0 + t0);
     (-0.6666666666666666 * t0 / (t1))
 }
-use crate::model::{
-    BranchPoints, ClosureKind, Model, ModelId, ModelInfo, PressureParameters,
-};
+use crate::model::{BranchPoints, ClosureKind, Model, ModelInfo, PressureParameters};
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 /// What this model is and has.
 pub static INFO: ModelInfo = ModelInfo {
-    id: ModelId::Max,
+    name: "max",
     title: "Eq. (5) with collocation (10) and closure (13): the paper's model",
     closure: ClosureKind::Max,
     closure_note: "max ∂p/∂ν on Γ₀ = √(2mΔγ) (Eq. (13))",

@@ -4,8 +4,8 @@
 //! and the Python package (`thinjkr::registry`).
 
 /// Every contour family, in the order of their data files' names.
-pub static CONTOUR_FAMILIES: [crate::conformal::Family; 1] = [
-    crate::conformal::Family {
+pub static CONTOUR_FAMILIES: [crate::ansatz::Family; 1] = [
+    crate::ansatz::Family {
         name: "conformal",
         kind: "conformal",
         title: "image of the unit disk under an odd polynomial map, exact (2) and p = 0 on the contour, energy (Ritz) closure",

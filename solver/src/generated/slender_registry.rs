@@ -4,8 +4,8 @@
 //! `thinjkr::slender`.
 
 /// Every slender model, in the order of their data files' names.
-pub(crate) static SLENDER_MODELS: [crate::slender::SlenderModel; 1] = [
-    crate::slender::SlenderModel {
+pub(crate) static SLENDER_MODELS: [crate::ansatz::SlenderModel; 1] = [
+    crate::ansatz::SlenderModel {
         name: "slender",
         title: "slender limit rho -> 0: every cross-section a strip of the one-dimensional (2)-(3) at the local approach",
         approach: super::slender::approach,

@@ -10,11 +10,11 @@ pub const POTENTIAL_ROWS: usize = 7;
 /// The boundary slope's modes n and how many leading rows of `table::SLOPE`'s mode n are this member's.
 pub const SLOPE_ROWS: &[(u16, usize)] = &[(0, 3), (2, 2)];
 /// Π̄ with its gradient and Hessian in (c, δ̄) at μ = 1/ρ: the table
-/// evaluator (`crate::conformal::poly::evaluate`, order 2) unrolled
+/// evaluator (`crate::ansatz::poly::evaluate`, order 2) unrolled
 /// over this member's rows, the same operations in the same order.
 /// `c` holds the K map coefficients.
 #[allow(clippy::all, unused_parens, unused_variables, unused_mut)]
-pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::conformal::poly::Second {
+pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::ansatz::poly::Second {
     assert_eq!(c.len(), 1usize, "one value per map coefficient");
     let c0_0 = 1.0f64;
     let c0_1 = c[0usize];
@@ -139,7 +139,7 @@ pub fn second(c: &[f64], dbar: f64, mu: f64) -> crate::conformal::poly::Second {
         h0_1 += a1 * d_i;
         h0_0 += a0 * (56.0 * c0_6) * others;
     }
-    crate::conformal::poly::Second {
+    crate::ansatz::poly::Second {
         n: 2usize,
         value,
         grad: [g0, g1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],

@@ -14,8 +14,8 @@ pub mod k6;
 pub mod k7;
 pub mod k8;
 /// Every generated member, by K.
-pub static MEMBERS: [crate::conformal::Tables; 8] = [
-    crate::conformal::Tables {
+pub static MEMBERS: [crate::ansatz::Tables; 8] = [
+    crate::ansatz::Tables {
         terms: 1,
         powers: &k1::POWERS,
         potential: table::POTENTIAL,
@@ -24,7 +24,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         slope_rows: k1::SLOPE_ROWS,
         second: Some(k1::second),
     },
-    crate::conformal::Tables {
+    crate::ansatz::Tables {
         terms: 2,
         powers: &k2::POWERS,
         potential: table::POTENTIAL,
@@ -33,7 +33,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         slope_rows: k2::SLOPE_ROWS,
         second: Some(k2::second),
     },
-    crate::conformal::Tables {
+    crate::ansatz::Tables {
         terms: 3,
         powers: &k3::POWERS,
         potential: table::POTENTIAL,
@@ -42,7 +42,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         slope_rows: k3::SLOPE_ROWS,
         second: Some(k3::second),
     },
-    crate::conformal::Tables {
+    crate::ansatz::Tables {
         terms: 4,
         powers: &k4::POWERS,
         potential: table::POTENTIAL,
@@ -51,7 +51,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         slope_rows: k4::SLOPE_ROWS,
         second: Some(k4::second),
     },
-    crate::conformal::Tables {
+    crate::ansatz::Tables {
         terms: 5,
         powers: &k5::POWERS,
         potential: table::POTENTIAL,
@@ -60,7 +60,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         slope_rows: k5::SLOPE_ROWS,
         second: None,
     },
-    crate::conformal::Tables {
+    crate::ansatz::Tables {
         terms: 6,
         powers: &k6::POWERS,
         potential: table::POTENTIAL,
@@ -69,7 +69,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         slope_rows: k6::SLOPE_ROWS,
         second: None,
     },
-    crate::conformal::Tables {
+    crate::ansatz::Tables {
         terms: 7,
         powers: &k7::POWERS,
         potential: table::POTENTIAL,
@@ -78,7 +78,7 @@ pub static MEMBERS: [crate::conformal::Tables; 8] = [
         slope_rows: k7::SLOPE_ROWS,
         second: None,
     },
-    crate::conformal::Tables {
+    crate::ansatz::Tables {
         terms: 8,
         powers: &k8::POWERS,
         potential: table::POTENTIAL,
