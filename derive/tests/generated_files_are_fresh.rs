@@ -1,6 +1,6 @@
 //! Generated files (docs/ reports, solver/src/generated/) must equal what
 //! the derivation produces now. On a mismatch the fresh file is written and
-//! the test fails: rerun `cargo run -p thinjkr-derive -- generate` (or just
+//! the test fails: rerun `cargo run --release -p thinjkr-derive -- generate` (or just
 //! this test) and commit. The pattern of rust-analyzer's `ensure_file_contents`.
 
 use thinjkr_derive::generate::{outputs, remove_stale, workspace_root, write_all};
@@ -27,11 +27,11 @@ fn generation_is_deterministic_and_the_generated_files_are_fresh() {
     assert!(
         gone.is_empty(),
         "generated files no family or model writes any more were removed: {gone:?}\n\
-         commit their removal (cargo run -p thinjkr-derive -- generate does the same)"
+         commit their removal (cargo run --release -p thinjkr-derive -- generate does the same)"
     );
     assert!(
         changed.is_empty(),
         "generated files were stale and have been rewritten: {changed:?}\n\
-         review the diff and commit them (cargo run -p thinjkr-derive -- generate does the same)"
+         review the diff and commit them (cargo run --release -p thinjkr-derive -- generate does the same)"
     );
 }
