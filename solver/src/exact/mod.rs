@@ -1341,10 +1341,11 @@ impl Exact {
             // (not the intermediate ρ to 17 digits)
             return Err(match why {
                 Error::NoConvergence { .. } | Error::Unresolved { .. } | Error::NoState(_) => Error::NoState(format!(
-                    "exact state at rho = {}: the continuation in rho from the circle at a_bar = {} stopped at rho = {} (Newton failed there with steps in rho down to 1e-4)",
+                    "exact state at rho = {}: the continuation in rho from the circle at a_bar = {} stopped at rho = {} (Newton failed there with steps in rho down to {:.0e})",
                     crate::error::short(self.rho),
                     crate::error::rounded(a_bar),
-                    crate::error::rounded(rho)
+                    crate::error::rounded(rho),
+                    rho_walk::FROM_THE_CIRCLE.smallest
                 )),
                 other => other,
             });

@@ -272,8 +272,8 @@ pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Ve
 }
 
 /// The pull-off at `rho`, continued in ρ from `start`, the converged
-/// pull-off at a larger ρ: at each step (at most 0.01 in ρ, halved where it
-/// fails, down to 0.0025) the family is traced from just above the pull-off
+/// pull-off at a larger ρ: at each step (the steps
+/// [`PULL_OFF`](super::rho_walk::PULL_OFF)) the family is traced from just above the pull-off
 /// before ([`Exact::pull_off_load_near`]) with the truncations escalated
 /// ([`resolved`]). The answer only where it converges; else an error that
 /// says down to which ρ the pull-off was followed, and how it stopped.
@@ -771,8 +771,8 @@ fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
 
 /// The state at `control` at `rho`, continued in ρ at that control from
 /// `start`, a converged state at a larger ρ: Newton with the control held
-/// at each step from the state before (steps of at most 0.01 in ρ, halved
-/// where a step fails, down to 1e-3), the contour modes escalated along
+/// at each step from the state before (the steps
+/// [`AT_A_CONTROL`](super::rho_walk::AT_A_CONTROL)), the contour modes escalated along
 /// [`default_tries`] wherever a state's boundary error exceeds
 /// [`CONVERGED`]. The answer only where it converges; else an error that
 /// says down to which ρ the family was followed converged, and how it
@@ -919,7 +919,8 @@ fn past_newtons_end(
         st,
         control,
         &format!(
-            "Newton fails below it with steps in rho down to 1e-3 (the contour is {:.1e} a off the ellipse there; {})",
+            "Newton fails below it with steps in rho down to {:.0e} (the contour is {:.1e} a off the ellipse there; {})",
+            super::rho_walk::AT_A_CONTROL.smallest,
             st.deviation_from_ellipse,
             e.to_string().chars().take(120).collect::<String>()
         ),
@@ -985,7 +986,7 @@ pub(crate) const ARCLENGTH_ESCALATION: [usize; 10] =
 /// The load-controlled pull-off (the first minimum of F̄ on the arm that
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
 /// larger ρ, in the arclength representation ([`Truncation::in_arclength`]).
-/// Each step in ρ (0.01 first, grown by 1.5 up to 0.02, halved where it
+/// Each step in ρ ([`PULL_OFF_IN_ARCLENGTH`](super::rho_walk::PULL_OFF_IN_ARCLENGTH): 0.01 first, grown by 1.5 up to 0.02, halved where it
 /// fails down to 0.00125): Newton at the previous pull-off's ā, else at
 /// its δ̄ (both regular there, where fixed F̄ is singular); then the
 /// minimum of F̄ over ā by the secant method on dF̄/dā
