@@ -63,9 +63,9 @@ impl Discretisation {
             }
             Some(m) => vec![m],
             // the escalation's rungs, as far as the points given allow
-            None => crate::exact::ESCALATION
+            None => crate::exact::default_tries()
                 .iter()
-                .copied()
+                .map(|t| t.modes)
                 .filter(|&m| self.points.is_none_or(|p| p >= 4 * m + 8))
                 .collect(),
         };
@@ -75,8 +75,8 @@ impl Discretisation {
                 value: self.points.unwrap_or(0) as f64,
                 range: format!(
                     "at least {} for the escalation's first rung of {} modes (4 · modes + 8), or give --modes",
-                    4 * crate::exact::ESCALATION[0] + 8,
-                    crate::exact::ESCALATION[0]
+                    4 * crate::exact::default_tries()[0].modes + 8,
+                    crate::exact::default_tries()[0].modes
                 )
                 .into(),
             });

@@ -46,6 +46,7 @@
 //! `error`, `newton` (the caller's stop flag, carried to rayon's threads),
 //! `progress` (the gap being settled), rayon.
 
+use super::ladder::Ladder;
 use super::seed::Guess;
 use super::{Contour, Exact};
 use crate::control::Hold;
@@ -432,7 +433,7 @@ fn curve(gap: super::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>]) -> V
         .map(|(j, (&a_bar, st))| {
             crate::newton::carried(stop.clone(), || {
                 let exact = st.as_ref().filter(|_| j % CURVE_EVERY == 0).and_then(|m| {
-                    super::resolved(gap, rho, &super::default_tries(), |ex| {
+                    super::resolved(gap, rho, &Ladder::conformal(), |ex| {
                         ex.solve(
                             m.a_bar,
                             &Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes),
@@ -502,7 +503,7 @@ pub fn states_at(
     to: f64,
     tries: &[super::Truncation],
 ) -> Result<AllStates> {
-    states_at_on(super::Gap::cylinders(), rho, control, from, to, tries)
+    states_at_on(super::Gap::cylinders(), rho, control, from, to, &Ladder::of(tries.to_vec()))
 }
 
 /// [`states_at`] on `gap`.
@@ -512,7 +513,7 @@ pub(crate) fn states_at_on(
     control: crate::control::Hold,
     from: f64,
     to: f64,
-    tries: &[super::Truncation],
+    ladder: &Ladder,
 ) -> Result<AllStates> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
@@ -533,7 +534,7 @@ pub(crate) fn states_at_on(
         .par_iter()
         .map(|&(l, r)| crate::newton::carried(stop.clone(), || {
             let start = if value(l).abs() <= value(r).abs() { l } else { r };
-            let found = super::resolved(gap, rho, tries, |ex| {
+            let found = super::resolved(gap, rho, ladder, |ex| {
                 ex.solve_at(
                     control,
                     &Contour::ellipse(start.a_bar, start.b_bar, ex.truncation().modes),
@@ -565,7 +566,7 @@ pub(crate) fn states_at_on(
         .par_iter()
         .map(|(left, right)| {
             crate::newton::carried(stop.clone(), || {
-                past_folds(gap, rho, control, left, right, STEP, tries)
+                past_folds(gap, rho, control, left, right, STEP, ladder)
             })
         })
         .collect();
@@ -632,7 +633,7 @@ pub(crate) fn past_folds_or_band(
     rho: f64,
     control: crate::control::Hold,
     a_circle: f64,
-    tries: &[super::Truncation],
+    ladder: &Ladder,
     err: Error,
 ) -> Result<super::ExactState> {
     use crate::control::Hold;
@@ -672,7 +673,7 @@ pub(crate) fn past_folds_or_band(
     let mut past = Vec::new();
     let mut followed = Vec::new();
     for (left, right, step) in &brackets {
-        let found = past_folds(gap, rho, control, left, right, *step, tries);
+        let found = past_folds(gap, rho, control, left, right, *step, ladder);
         past.extend(found.states);
         followed.extend(found.followed);
         followed.extend(found.missed.into_iter().map(|(_, why)| why));
@@ -732,26 +733,21 @@ fn past_folds(
     left: &[&Guess],
     right: &[&Guess],
     step: f64,
-    tries: &[super::Truncation],
+    ladder: &Ladder,
 ) -> PastFolds {
     let mut out = PastFolds::default();
-    let escalation = tries.len() > 1;
-    let tries: Vec<super::Truncation> = match tries {
-        [.., last] if tries.len() > 1 => tries
-            .iter()
-            .copied()
-            .chain(
-                super::resolve::arclength_tries()
-                    .into_iter()
-                    .filter(|t| t.modes > last.modes),
-            )
-            .collect(),
-        _ => tries.to_vec(),
+    let escalation = ladder.rungs().len() > 1;
+    let ladder = match escalation {
+        true => {
+            let above = ladder.top_modes() + 1;
+            ladder.clone().then(Ladder::arclength().from_modes(above))
+        }
+        false => ladder.clone(),
     };
     for (beside, other, direction, which) in
         [(left, right, 1.0, "lower"), (right, left, -1.0, "upper")]
     {
-        let start = super::resolved(gap, rho, &tries, |ex| {
+        let start = super::resolved(gap, rho, &ladder, |ex| {
             beside
                 .iter()
                 .find_map(|m| {
@@ -782,12 +778,9 @@ fn past_folds(
             truncation.modes
         ));
         // the rungs from the trace's on
-        let from = tries
-            .iter()
-            .position(|t| *t == truncation)
-            .unwrap_or(tries.len() - 1);
+        let from_trace = ladder.clone().at_rung(truncation);
         for crossing in found {
-            let again = super::resolved(gap, rho, &tries[from..], |ex| {
+            let again = super::resolved(gap, rho, &from_trace, |ex| {
                 let mut contour = crossing.contour.clone();
                 if ex.truncation().arclength == 0 {
                     contour.b.resize(ex.truncation().modes, 0.0);
@@ -898,8 +891,8 @@ fn settle(
 /// The located fold of the exact family traced in `direction` from the
 /// exact state near the first of the model's states `beside` the gap (in
 /// order) that gives one; `None` when ā passes `limit` first.
-/// The truncations of [`super::default_tries`] are tried in turn (those
-/// predicted not to converge skipped, [`super::next_try`]), from the
+/// The rungs of [`Ladder::conformal`] are tried in turn (those
+/// predicted not to converge skipped, [`Ladder::escalate`]), from the
 /// first that resolves the start, until the fold state's boundary error is
 /// below [`super::CONVERGED`] (else the best below [`super::RESOLVED`],
 /// which the band table prints with its boundary error, else an
@@ -915,14 +908,9 @@ fn fold_from(
     let mut best: Option<BandEdge> = None;
     let mut last_error = None;
     let near = beside[0];
-    let tries = super::default_tries();
-    let mut seen: Vec<(usize, f64)> = Vec::new();
-    let mut next = 0;
-    while next < tries.len() {
+    let mut ladder = Ladder::conformal();
+    while let Some(t) = ladder.rung() {
         crate::newton::check_stop()?;
-        let i = next;
-        let t = tries[i];
-        next = i + 1;
         let ex = Exact::on(gap, rho, t)?;
         // the first of the model's states beside the gap whose exact
         // neighbour this truncation resolves
@@ -935,38 +923,40 @@ fn fold_from(
             .map_err(|e| last_error = Some(e.to_string()))
             .ok()
         });
-        let start = match start {
-            Some(st) if st.bc_error <= super::RESOLVED => st,
+        match start {
+            Some(st) if st.bc_error <= super::RESOLVED => {
+                let Some((fold, mode)) = ex.to_size_fold(&st, direction, limit, step)? else {
+                    return Ok(None);
+                };
+                let edge = BandEdge {
+                    a_bar: fold.a_bar,
+                    s: fold.s,
+                    force_bar: fold.force_bar,
+                    delta_bar: fold.delta_bar,
+                    mode,
+                    bc_error: fold.bc_error,
+                    modes: t.modes,
+                };
+                if edge.bc_error <= super::CONVERGED {
+                    return Ok(Some(edge));
+                }
+                ladder.saw(t.modes, edge.bc_error);
+                if edge.bc_error <= super::RESOLVED
+                    && best.as_ref().is_none_or(|b| edge.bc_error < b.bc_error)
+                {
+                    best = Some(edge);
+                }
+            }
             Some(st) => {
                 last_error = Some(format!(
                     "boundary error {:.0e} with {} modes",
                     st.bc_error, t.modes
                 ));
-                continue;
             }
-            None => continue,
-        };
-        let Some((fold, mode)) = ex.to_size_fold(&start, direction, limit, step)? else {
-            return Ok(None);
-        };
-        let edge = BandEdge {
-            a_bar: fold.a_bar,
-            s: fold.s,
-            force_bar: fold.force_bar,
-            delta_bar: fold.delta_bar,
-            mode,
-            bc_error: fold.bc_error,
-            modes: t.modes,
-        };
-        if edge.bc_error <= super::CONVERGED {
-            return Ok(Some(edge));
+            None => {}
         }
-        seen.push((t.modes, edge.bc_error));
-        next = super::next_try(&tries, i, &seen);
-        if edge.bc_error <= super::RESOLVED
-            && best.as_ref().is_none_or(|b| edge.bc_error < b.bc_error)
-        {
-            best = Some(edge);
+        if !ladder.escalate() {
+            break;
         }
     }
     match best {

@@ -16,6 +16,7 @@
 //! (the stop request), `progress` (the stage a spinner shows).
 
 use super::branch::{ArmEnd, PAST_FOLD_STEPS};
+use super::ladder::Ladder;
 use super::{Exact, ExactState, Truncation};
 use crate::control::Hold;
 use crate::error::{rounded, Error, Result};
@@ -33,13 +34,6 @@ const SIZES: usize = 15;
 /// state at the control is then resolved by the caller's escalation):
 /// at ρ = 0.22 and ā = 3.8 they leave a boundary error of 5e-9.
 pub(crate) const PATH_MODES: usize = 96;
-
-/// The longer series a trace down an arm takes on with, in turn, where
-/// [`PATH_MODES`] no longer resolve it ([`traced_with_raised_modes`]): the
-/// notched arm of ā = 3.435 at ρ = 0.3 needs 160 modes below F̄ ≈ 3.5, 256
-/// below F̄ ≈ 2.2 and 320 below F̄ ≈ 0.66, down to F̄ = 0 (boundary error
-/// 4.9e-7 there).
-const RAISED_MODES: [usize; 3] = [160, 256, 320];
 
 /// Where a trace down an arm ends: its contour off the ellipse with its
 /// half-widths by more than this times ā. At ρ = 0.3 the arm of ā = 3.24
@@ -141,7 +135,7 @@ pub(crate) fn from_larger_contacts(
 /// ([`Exact::first_crossing_through_folds`]); where the series no longer
 /// resolves the arm (a notch grows on it: docs/exact.md, "Zero force at
 /// ρ = 0.3"), taken on from the last state it resolved with the next of
-/// [`RAISED_MODES`], solved again at that state's ā (and accepted within
+/// [`Ladder::raised`], solved again at that state's ā (and accepted within
 /// 1e-6 in F̄ of it: the same arm), the way ā was moving.
 pub(crate) fn traced_with_raised_modes(
     at_rho: &Exact,
@@ -156,7 +150,7 @@ pub(crate) fn traced_with_raised_modes(
         ON_THE_WAY,
         ARM_DEPARTURE,
     )?;
-    for modes in RAISED_MODES {
+    for &t in Ladder::raised().rungs() {
         crate::newton::check_stop()?;
         let ArmEnd::Unresolved {
             resolved_before: Some((last, direction)),
@@ -165,12 +159,12 @@ pub(crate) fn traced_with_raised_modes(
         else {
             return Ok(end);
         };
-        let finer = Exact::on(arrived.gap, arrived.rho, Truncation::in_arclength(modes))?
-            .deferring_stability();
+        let finer = Exact::on(arrived.gap, arrived.rho, t)?.deferring_stability();
         let from = finer.solve_at(Hold::Size(last.a_bar), &last.contour, last.delta_bar)?;
         if (from.force_bar - last.force_bar).abs() > 1e-6 * last.force_bar.abs().max(1.0) {
             return Err(Error::NoState(format!(
-                "with {modes} modes the arm's state at a = {} has F = {}, not its F = {}",
+                "with {} modes the arm's state at a = {} has F = {}, not its F = {}",
+                t.modes,
                 rounded(last.a_bar),
                 rounded(from.force_bar),
                 rounded(last.force_bar)
@@ -353,8 +347,8 @@ mod tests {
             back.a_bar,
             st.a_bar
         );
-        let tries = super::super::resolve::arclength_tries();
-        match super::super::resolve::continued_in_rho_along(&below, 0.1, zero, &tries) {
+        let ladder = super::super::ladder::Ladder::arclength();
+        match super::super::resolve::continued_in_rho_along(&below, 0.1, zero, &ladder) {
             Err(Error::PastRhoFold { fold, from, .. }) => {
                 assert!(fold > 0.17 && fold < 0.19, "fold at {fold}");
                 assert_eq!(from, 0.2);

@@ -48,6 +48,7 @@ pub(crate) mod bie;
 pub mod branch;
 pub(crate) mod energy;
 pub(crate) mod gap;
+pub(crate) mod ladder;
 pub(crate) mod larger_contacts;
 pub(crate) mod linear;
 pub(crate) mod no_state;
@@ -66,16 +67,17 @@ use bie::{solve_dirichlet, solve_dirichlet_symmetric, ContourSamples, Grid};
 pub(crate) use gap::Gap;
 use gap::GapAt;
 use nalgebra::{Complex, DMatrix, DVector};
+pub(crate) use ladder::MAX_ESCALATED_MODES;
 pub use resolve::{
     at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
-    MAX_USER_MODES,
 };
-pub(crate) use resolve::{
-    at_resolved_searching, next_try, pull_off_resolved_on, resolved, RESOLVED,
-};
-#[cfg(feature = "cli")]
-pub(crate) use resolve::{ARCLENGTH_ESCALATION, ESCALATION};
+pub(crate) use resolve::{at_resolved_searching, pull_off_resolved_on, resolved, RESOLVED};
 use serde::Serialize;
+
+/// The most contour modes a user may ask for (the command line's
+/// `--modes`, the Python package's `modes`): the top of the default
+/// escalation ([`default_tries`]).
+pub const MAX_USER_MODES: usize = ladder::CONFORMAL_MODES[ladder::CONFORMAL_MODES.len() - 1];
 
 /// The large load F̄ = 10 from which the command line's studies of the
 /// loading path and the unloading trace begin, where a state is found
@@ -785,12 +787,6 @@ pub(crate) const CROWDING_TIMES_HALF_WIDTH: f64 = 0.2;
 /// is best or within a factor 1.5 of the best at the three ρ above.
 pub(crate) const GROOVE_WIDTH: f64 = 0.1;
 
-/// The most modes of each sign the default escalations try: the last rung
-/// of the arclength representation's escalation (320, the pull-off
-/// followed down to ρ = 0.0141), more than twice [`MAX_USER_MODES`] (the
-/// doubling checks of `thinjkr accuracy` stop here).
-pub(crate) const MAX_ESCALATED_MODES: usize =
-    resolve::ARCLENGTH_ESCALATION[resolve::ARCLENGTH_ESCALATION.len() - 1];
 /// The longest contour series accepted ([`Truncation::modes`]): beyond
 /// [`MAX_ESCALATED_MODES`], for the notched arms below the fold in ρ
 /// (docs/exact.md, "Zero force at ρ = 0.3": 448 to 512 modes of each sign

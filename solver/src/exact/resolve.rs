@@ -15,6 +15,7 @@
 
 use super::rho_path::Followed;
 use super::rho_walk::{walk_down, Attempt, Stopped};
+use super::ladder::Ladder;
 use super::{bands, branch, larger_contacts, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
 use crate::error::{Error, Result};
@@ -60,7 +61,7 @@ impl BoundaryError for (ExactState, Vec<branch::Event>) {
     }
 }
 
-/// `solve` at `rho` with the truncations of `tries` in turn until one
+/// `solve` at `rho` on each rung of `ladder` in turn until one
 /// converges the answer: its boundary error (max |∂p̄/∂ν − 1| on the
 /// independent fine grid) at most [`CONVERGED`]. Only such an answer is
 /// accepted from an escalation; where none converges the answer is an
@@ -74,21 +75,20 @@ impl BoundaryError for (ExactState, Vec<branch::Event>) {
 /// error); with fewer, the series may be too short to follow the contour,
 /// and the next rung is tried.
 ///
-/// Once two truncations have been tried, the boundary error is
-/// extrapolated geometrically in the number of modes from the last two
-/// (it falls spectrally, [`next_try`]), and the truncations predicted not
-/// to converge are skipped. The intermediate answers are solved without
-/// their stability; the accepted answer's is computed once, with its own
-/// truncation.
+/// The rungs predicted not to converge are skipped ([`Ladder::escalate`]).
+/// The intermediate answers are solved without their stability; the
+/// accepted answer's is computed once, with its own truncation.
 pub(crate) fn resolved<T: BoundaryError>(
     gap: Gap,
     rho: f64,
-    tries: &[Truncation],
+    ladder: &Ladder,
     solve: impl Fn(&Exact) -> Result<T>,
 ) -> Result<T> {
+    // (the climb from the ladder's rung up)
+    let mut ladder = Ladder::of(ladder.from_rung().to_vec());
+    let single = ladder.rungs().len() == 1;
     let mut best: Option<(T, Exact)> = None;
     let mut last = None;
-    let mut seen: Vec<(usize, f64)> = Vec::new();
     let with_stability = |(mut v, ex): (T, Exact)| {
         for st in v.states_mut() {
             st.stability = ex.stability(st)?;
@@ -98,21 +98,19 @@ pub(crate) fn resolved<T: BoundaryError>(
     // where no truncation converges: a single truncation's resolved
     // answer, else an error that says how far the escalation got
     let or_best = |best: Option<(T, Exact)>, e: Error| match best {
-        Some(b) if tries.len() == 1 => with_stability(b),
+        Some(b) if single => with_stability(b),
         Some((v, ex)) => Err(not_converged(rho, v.bc_error(), ex.truncation.modes, e)),
         None => Err(e),
     };
-    let mut i = 0;
-    while i < tries.len() {
+    while let Some(t) = ladder.rung() {
         crate::newton::check_stop()?;
-        let t = tries[i];
         // (the stability is computed with the same problem: it does not
         // depend on the deferral, which only [`Exact::state`] reads)
         let ex = Exact::on(gap, rho, t)?.deferring_stability();
         match solve(&ex) {
             Ok(v) if v.bc_error() <= CONVERGED => return with_stability((v, ex)),
             Ok(v) => {
-                seen.push((t.modes, v.bc_error()));
+                ladder.saw(t.modes, v.bc_error());
                 if best
                     .as_ref()
                     .is_none_or(|(b, _)| v.bc_error() < b.bc_error())
@@ -138,18 +136,17 @@ pub(crate) fn resolved<T: BoundaryError>(
                 last = Some(e);
             }
             Err(e @ Error::Unresolved { residual, .. }) => {
-                seen.push((t.modes, residual));
+                ladder.saw(t.modes, residual);
                 last = Some(e);
             }
             Err(e) => return or_best(best, e),
         }
-        i = next_try(tries, i, &seen);
+        if !ladder.escalate() {
+            break;
+        }
     }
     let tried = Error::Unresolved {
-        what: format!(
-            "the most modes tried: {}",
-            tries.last().map_or(0, |t| t.modes)
-        ),
+        what: format!("the most modes tried: {}", ladder.top_modes()),
         residual: f64::NAN,
     };
     match best {
@@ -174,28 +171,6 @@ fn not_converged(rho: f64, bc_error: f64, modes: usize, last: Error) -> Error {
     }
 }
 
-/// The index in `tries` of the truncation to try after the `i`-th, given
-/// the modes and boundary errors `seen` so far: the first whose boundary
-/// error, extrapolated from the last two seen as e₂·r^(N₂ − N) (r from
-/// e₁ = e₂·r^(N₂ − N₁)), is below [`CONVERGED`]/4, or the last; simply
-/// the next where fewer than two are seen or the error did not fall. An
-/// extrapolation that is too hopeful costs one more rung, from which it
-/// is made again.
-pub(crate) fn next_try(tries: &[Truncation], i: usize, seen: &[(usize, f64)]) -> usize {
-    let [.., (n1, e1), (n2, e2)] = seen else {
-        return i + 1;
-    };
-    if !(e2 < e1 && n2 > n1 && *e2 > 0.0) {
-        return i + 1;
-    }
-    let log_rate = (e1 / e2).ln() / (n2 - n1) as f64;
-    let predicted = |t: &Truncation| e2 * (-log_rate * (t.modes as f64 - *n2 as f64)).exp();
-    (i + 1..tries.len())
-        .find(|&k| predicted(&tries[k]) <= CONVERGED / 4.0)
-        .unwrap_or(tries.len().saturating_sub(1))
-        .max(i + 1)
-}
-
 /// The fewest contour modes with which a boundary error above 1e-2 (a
 /// trace that left the near-elliptic family) stops an escalation: with
 /// fewer, an elongated contour may not be followed at all (at ρ = 0.3 the
@@ -203,22 +178,12 @@ pub(crate) fn next_try(tries: &[Truncation], i: usize, seen: &[(usize, f64)]) ->
 /// boundary error is 4.8e-4, with 40 5.1e-6).
 const FOLLOWS_THE_FAMILY: usize = 24;
 
-/// The contour modes of the default escalation ([`default_tries`]).
-pub(crate) const ESCALATION: [usize; 12] = [12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96];
-
-/// The most contour modes a user may ask for (the command line's
-/// `--modes`, the Python package's `modes`): the last rung of the default
-/// escalation.
-pub const MAX_USER_MODES: usize = ESCALATION[ESCALATION.len() - 1];
-
-/// The default escalation: 12, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80
-/// and 96 contour modes (of which `resolved` skips those predicted not to
-/// converge), each with `POINTS_PER_MODE` quadrature points per mode.
+/// The default escalation ([`Ladder::conformal`]): 12, 16, 20, 24, 28,
+/// 32, 40, 48, 56, 64, 80 and 96 contour modes (of which [`resolved`]
+/// skips those predicted not to converge), each with `POINTS_PER_MODE`
+/// quadrature points per mode.
 pub fn default_tries() -> Vec<Truncation> {
-    ESCALATION
-        .iter()
-        .map(|&modes| Truncation::with_modes(modes))
-        .collect()
+    Ladder::conformal().rungs().to_vec()
 }
 
 /// The load-controlled pull-off at `rho` with the default escalation of
@@ -240,13 +205,13 @@ pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Ve
     if let Some(followed) = super::stored::pull_off(gap, rho) {
         return followed.map(|st| (st, Vec::new()));
     }
-    match pull_off_on(gap, rho, &default_tries()) {
+    match pull_off_on(gap, rho, &Ladder::conformal()) {
         // not found, or not resolved by the conformal form's escalation:
         // followed in ρ from the pull-off at a larger ρ in the arclength
         // representation, else continued in the conformal form
         Err(e @ (Error::NoState(_) | Error::Unresolved { .. })) => {
             let why = e.detail();
-            let Some((start, _)) = first_above(rho, |r| pull_off_on(gap, r, &default_tries()))
+            let Some((start, _)) = first_above(rho, |r| pull_off_on(gap, r, &Ladder::conformal()))
             else {
                 return Err(Error::NoState(format!(
                     "{why}; no pull-off found at any rho above it in steps of 0.1 to continue from"
@@ -281,14 +246,14 @@ pub(crate) fn pull_off_continued_in_rho(
     start: &ExactState,
     rho: f64,
 ) -> Result<(ExactState, Vec<branch::Event>)> {
-    pull_off_continued_in_rho_along(start, rho, &default_tries())
+    pull_off_continued_in_rho_along(start, rho, &Ladder::conformal())
 }
 
-/// [`pull_off_continued_in_rho`] with the truncations `tries`.
+/// [`pull_off_continued_in_rho`] climbing `ladder`.
 pub(crate) fn pull_off_continued_in_rho_along(
     start: &ExactState,
     rho: f64,
-    tries: &[Truncation],
+    ladder: &Ladder,
 ) -> Result<(ExactState, Vec<branch::Event>)> {
     let mut at = (start.clone(), Vec::new());
     let walked = walk_down(
@@ -298,7 +263,7 @@ pub(crate) fn pull_off_continued_in_rho_along(
         |at| at.0.rho,
         |at, next| {
             Ok(
-                match resolved(start.gap, next, tries, |ex| {
+                match resolved(start.gap, next, ladder, |ex| {
                     ex.pull_off_load_near(None, Some(&at.0))
                 }) {
                     Ok(found) => Attempt::Took(found),
@@ -324,20 +289,20 @@ pub(crate) fn pull_off_continued_in_rho_along(
 
 /// [`pull_off_resolved`] with the truncations `tries`.
 pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<branch::Event>)> {
-    pull_off_on(Gap::cylinders(), rho, tries)
+    pull_off_on(Gap::cylinders(), rho, &Ladder::of(tries.to_vec()))
 }
 
 /// [`pull_off_with`] on `gap`.
 pub(crate) fn pull_off_on(
     gap: Gap,
     rho: f64,
-    tries: &[Truncation],
+    ladder: &Ladder,
 ) -> Result<(ExactState, Vec<branch::Event>)> {
     // the model's pull-off once; each truncation after the first starts
     // just above the pull-off the one before found (resolved or not)
     let model = branch::model_pull_off(gap, rho);
     let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
-    resolved(gap, rho, tries, |ex| {
+    resolved(gap, rho, ladder, |ex| {
         let found = ex.pull_off_found(model.as_ref(), coarser.borrow().as_ref())?;
         *coarser.borrow_mut() = Some(found.0.clone());
         ex.accept_resolved_pull_off(found)
@@ -379,7 +344,7 @@ pub(crate) fn at_resolved_searching(gap: Gap, rho: f64, control: Hold) -> Result
             best = Some(st.clone());
         }
     };
-    match searched_visiting(gap, rho, control, &default_tries(), &mut keep_best) {
+    match searched_visiting(gap, rho, control, &Ladder::conformal(), &mut keep_best) {
         // not reached, and not in a band: from the state at a larger ρ
         // (a value in a band, Error::InBand, is answered as it is)
         // (a fold in ρ of the family continued from a larger ρ is said
@@ -432,7 +397,7 @@ pub(crate) fn at_resolved_searching(gap: Gap, rho: f64, control: Hold) -> Result
 /// The state at `control` at `rho` that the conformal form's escalation
 /// resolves ([`RESOLVED`]) but does not converge (its best, `best`), solved again by Newton at
 /// the control in the arclength representation from its contour, the
-/// modes escalated ([`resolved`], [`arclength_tries`] from as many modes);
+/// modes escalated ([`resolved`], [`Ladder::arclength`] from as many modes);
 /// each finer state is accepted only within 1e-3 in ā of the conformal
 /// one (the same state, not a neighbour).
 fn again_in_arclength(
@@ -444,12 +409,9 @@ fn again_in_arclength(
     let near = best.ok_or_else(|| {
         Error::NoState("the conformal form's escalation resolves no state to start from".into())
     })?;
-    let tries: Vec<Truncation> = arclength_tries()
-        .into_iter()
-        .filter(|t| t.modes >= near.truncation.modes)
-        .collect();
+    let ladder = Ladder::arclength().from_modes(near.truncation.modes);
     let of = format!("the state of {} modes", near.truncation.modes);
-    resolved(gap, rho, &tries, |ex| {
+    resolved(gap, rho, &ladder, |ex| {
         again_within_its_size(ex, control, &near, &of, near.route)
     })
 }
@@ -515,7 +477,7 @@ fn below_the_fold(
     if tenth(fold) <= rho + 1e-9 {
         return Err(None);
     }
-    let tries = arclength_tries();
+    let ladder = Ladder::arclength();
     let mut stone = at_resolved_searching(gap, tenth(fold), control).map_err(Some)?;
     for rung in 1..=RUNGS {
         crate::progress::stage(format!(
@@ -523,7 +485,7 @@ fn below_the_fold(
             crate::error::rounded(fold),
             crate::error::short(stone.rho)
         ));
-        let (fold, from, what) = match continued_in_rho_along(&stone, rho, control, &tries) {
+        let (fold, from, what) = match continued_in_rho_along(&stone, rho, control, &ladder) {
             Ok(st) => return Ok(st),
             Err(Error::PastRhoFold { fold, from, what }) => (fold, from, what),
             Err(e) => return Err(Some(e)),
@@ -531,7 +493,7 @@ fn below_the_fold(
         let above = ((fold * 100.0).floor() + 1.0) / 100.0;
         let next = tenth(fold);
         let further = next > rho + 1e-9;
-        let on_arm = continued_in_rho_along(&stone, above, control, &tries).and_then(|above| {
+        let on_arm = continued_in_rho_along(&stone, above, control, &ladder).and_then(|above| {
             from_larger_contact(&above, rho, control).or_else(|none| {
                 if further {
                     from_larger_contact(&above, next, control)
@@ -583,7 +545,7 @@ fn screened(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
     } else {
         4.0
     };
-    let all = bands::states_at_on(gap, rho, control, 1.0, to.min(10.9), &default_tries())?;
+    let all = bands::states_at_on(gap, rho, control, 1.0, to.min(10.9), &Ladder::conformal())?;
     all.states
         .into_iter()
         .min_by(|x, y| {
@@ -606,7 +568,7 @@ fn screened(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
 /// there either, and the control lies in a band, the error says so
 /// (`bands::past_folds_or_band`).
 pub fn at_searched(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
-    searched_on(Gap::cylinders(), rho, control, tries)
+    searched_on(Gap::cylinders(), rho, control, &Ladder::of(tries.to_vec()))
 }
 
 /// [`at_searched`] on `gap`.
@@ -614,9 +576,9 @@ pub(crate) fn searched_on(
     gap: Gap,
     rho: f64,
     control: Hold,
-    tries: &[Truncation],
+    ladder: &Ladder,
 ) -> Result<ExactState> {
-    searched_visiting(gap, rho, control, tries, &mut |_| {})
+    searched_visiting(gap, rho, control, ladder, &mut |_| {})
 }
 
 /// [`searched_on`], handing every state the escalation resolves on the
@@ -625,13 +587,13 @@ fn searched_visiting(
     gap: Gap,
     rho: f64,
     control: Hold,
-    tries: &[Truncation],
+    ladder: &Ladder,
     visit: &mut dyn FnMut(&ExactState),
 ) -> Result<ExactState> {
     by_delta_or_force(control)?;
-    at_with_visiting(gap, rho, control, tries, visit).or_else(|e| {
+    at_with_visiting(gap, rho, control, ladder, visit).or_else(|e| {
         let circle_a = branch::circle_a_bar(&gap.at(1.0)?, control);
-        bands::past_folds_or_band(gap, rho, control, circle_a, tries, e)
+        bands::past_folds_or_band(gap, rho, control, circle_a, ladder, e)
     })
 }
 
@@ -652,7 +614,7 @@ fn by_delta_or_force(control: Hold) -> Result<Hold> {
 /// The state at `control` at the first larger ρ where [`at_with`] finds
 /// it ([`first_above`]): the start of the routes from a larger ρ.
 fn state_above(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
-    first_above(rho, |r| at_with(gap, r, control, &default_tries())).ok_or_else(|| {
+    first_above(rho, |r| at_with(gap, r, control, &Ladder::conformal())).ok_or_else(|| {
         Error::NoState(format!(
             "no state at {control} found at any rho above it in steps of 0.1 to continue from"
         ))
@@ -669,7 +631,7 @@ fn from_larger_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactS
         Error::PastRhoFold { .. } => Err(conformal),
         // where the conformal form's series no longer resolves the family:
         // again from the start, in the arclength representation
-        _ => continued_in_rho_along(start, rho, control, &arclength_tries()).map_err(|arclength| {
+        _ => continued_in_rho_along(start, rho, control, &Ladder::arclength()).map_err(|arclength| {
             match arclength {
                 Error::PastRhoFold { .. } => arclength,
                 _ => Error::NoState(format!(
@@ -700,12 +662,8 @@ pub(crate) fn from_larger_contact(
         crate::error::short(start.rho)
     ));
     let arm = larger_contacts::from_larger_contacts(start, rho, control)?;
-    let tries: Vec<Truncation> = arclength_tries()
-        .into_iter()
-        .chain(NOTCHED_ARM_MODES.map(Truncation::in_arclength))
-        .filter(|t| t.modes >= arm.truncation.modes)
-        .collect();
-    resolved(gap, rho, &tries, |ex| {
+    let ladder = Ladder::notched_arm().from_modes(arm.truncation.modes);
+    resolved(gap, rho, &ladder, |ex| {
         again_within_its_size(
             ex,
             control,
@@ -737,23 +695,6 @@ fn again_within_its_size(
     Ok(st)
 }
 
-/// The modes of each sign beyond [`ARCLENGTH_ESCALATION`] with which a
-/// state on the arm of a larger contact is resolved where the arm's trace
-/// needed that escalation's last rung (its modes raised on the way,
-/// `larger_contacts`): the notched zero-force state at ρ = 0.3 is left at
-/// 4.9e-7 by 320, 3.6e-8 by 384, 2.6e-9 by 448 and 1.9e-10 by 512
-/// ([`super::MAX_MODES`]; docs/exact.md, "Zero force at ρ = 0.3").
-const NOTCHED_ARM_MODES: [usize; 3] = [384, 448, 512];
-
-/// The arclength representation's truncations, in the order of
-/// [`ARCLENGTH_ESCALATION`].
-pub(crate) fn arclength_tries() -> Vec<Truncation> {
-    ARCLENGTH_ESCALATION
-        .iter()
-        .map(|&m| Truncation::in_arclength(m))
-        .collect()
-}
-
 /// The first answer of `solve` at ρ + 0.1, ρ + 0.2, … (below 1): the start
 /// of a continuation in ρ down to `rho`.
 fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
@@ -778,22 +719,23 @@ fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
 /// says down to which ρ the family was followed converged, and how it
 /// stopped.
 pub(crate) fn continued_in_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactState> {
-    continued_in_rho_along(start, rho, control, &default_tries())
+    continued_in_rho_along(start, rho, control, &Ladder::conformal())
 }
 
-/// [`continued_in_rho`] with the truncations `tries` (escalated in order;
-/// a start of another representation is converted to the tries').
+/// [`continued_in_rho`] climbing `ladder` (from the first rung as fine as
+/// `start`; a start of another representation is converted to the
+/// ladder's).
 pub(crate) fn continued_in_rho_along(
     start: &ExactState,
     rho: f64,
     control: Hold,
-    tries: &[Truncation],
+    ladder: &Ladder,
 ) -> Result<ExactState> {
     by_delta_or_force(control)?;
-    let mut k = tries
-        .iter()
-        .position(|t| t.modes >= start.truncation.modes)
-        .unwrap_or(tries.len() - 1);
+    let mut ladder = ladder.clone().starting_at(start.truncation.modes);
+    let Some(mut t) = ladder.rung() else {
+        return Err(Error::NoState("no truncation to continue in rho with".into()));
+    };
     let mut st = start.clone();
     let walked = walk_down(
         &mut st,
@@ -805,13 +747,14 @@ pub(crate) fn continued_in_rho_along(
                 "continued in rho at {control} from rho = {}: at rho = {}, {} modes",
                 crate::error::short(start.rho),
                 crate::error::rounded(next),
-                tries[k].modes
+                t.modes
             ));
-            let ex = Exact::on(start.gap, next, tries[k])?.deferring_stability();
+            let ex = Exact::on(start.gap, next, t)?.deferring_stability();
             Ok(match ex.solve_at(control, &st.contour, st.delta_bar) {
                 Ok(n) if n.bc_error <= CONVERGED => Attempt::Took(n),
-                Ok(n) if n.bc_error <= 1e-2 && k + 1 < tries.len() => {
-                    k += 1;
+                // (the climb in the guard: a rung up where there is one)
+                Ok(n) if n.bc_error <= 1e-2 && ladder.escalate() => {
+                    t = ladder.rung().unwrap_or(t);
                     Attempt::Again
                 }
                 missed => Attempt::Missed(missed),
@@ -840,7 +783,7 @@ pub(crate) fn continued_in_rho_along(
             ));
         }
         Err(Stopped { why: Err(e), .. }) => {
-            return past_newtons_end(&st, start, rho, control, tries, &e)
+            return past_newtons_end(&st, start, rho, control, &ladder, &e)
         }
     }
     st.stability = Exact::on(start.gap, rho, st.truncation)?.stability(&st)?;
@@ -860,12 +803,12 @@ fn past_newtons_end(
     start: &ExactState,
     rho: f64,
     control: Hold,
-    tries: &[Truncation],
+    ladder: &Ladder,
     e: &Error,
 ) -> Result<ExactState> {
     // a fold in ρ of the family at the control, located, or
     // Newton stopped for another reason
-    if let Some(fold) = super::rho_fold::rho_fold(st, control, tries) {
+    if let Some(fold) = super::rho_fold::rho_fold(st, control, ladder) {
         if fold.rho > rho {
             return Err(Error::PastRhoFold {
                 fold: fold.rho,
@@ -939,16 +882,16 @@ fn converged_only_to(start: &ExactState, st: &ExactState, control: Hold, why: &s
     ))
 }
 
-/// The exact state at `control` with the truncations `tries`
+/// The exact state at `control` climbing `ladder`
 /// ([`resolved`]), each after the first started from the state the one
 /// before found (resolved or not).
 pub(crate) fn at_with(
     gap: Gap,
     rho: f64,
     control: Hold,
-    tries: &[Truncation],
+    ladder: &Ladder,
 ) -> Result<ExactState> {
-    at_with_visiting(gap, rho, control, tries, &mut |_| {})
+    at_with_visiting(gap, rho, control, ladder, &mut |_| {})
 }
 
 /// [`at_with`], handing every state a truncation resolves ([`RESOLVED`])
@@ -957,12 +900,12 @@ fn at_with_visiting(
     gap: Gap,
     rho: f64,
     control: Hold,
-    tries: &[Truncation],
+    ladder: &Ladder,
     visit: &mut dyn FnMut(&ExactState),
 ) -> Result<ExactState> {
     let coarser: std::cell::RefCell<Option<ExactState>> = std::cell::RefCell::new(None);
     let visit = std::cell::RefCell::new(visit);
-    resolved(gap, rho, tries, |ex| {
+    resolved(gap, rho, ladder, |ex| {
         let st = ex.find(control, coarser.borrow().as_ref())?;
         *coarser.borrow_mut() = Some(st.clone());
         let at = format!("{control} ({})", st.route);
@@ -971,17 +914,6 @@ fn at_with_visiting(
         Ok(st)
     })
 }
-
-/// The arclength representation's contour modes, escalated in order by
-/// [`pull_off_followed_in_arclength`]: 96 carries the pull-off down to
-/// ρ ≈ 0.089, 128 to ρ ≈ 0.074, 160 (with the points crowded into the
-/// grooves below ρ ≈ 0.068, [`Contour::crowded_at_groove`](super::Contour::crowded_at_groove))
-/// to 0.0415, 192 to 0.0270, 224 to 0.0243, 256 to 0.0188, 288 to 0.0169
-/// and 320 ([`MAX_ESCALATED_MODES`](super::MAX_ESCALATED_MODES)), to
-/// ρ = 0.0141 (θ = 13.5°), where the grooves have narrowed to a half-width
-/// of 0.013.
-pub(crate) const ARCLENGTH_ESCALATION: [usize; 10] =
-    [48, 64, 96, 128, 160, 192, 224, 256, 288, 320];
 
 /// The load-controlled pull-off (the first minimum of F̄ on the arm that
 /// carries `start`) followed in ρ from `start`, a converged pull-off at a
@@ -995,7 +927,7 @@ pub(crate) const ARCLENGTH_ESCALATION: [usize; 10] =
 /// the previous pull-off's ā to its first force minimum, the other way
 /// only where that finds none ([`Exact::force_minimum_nearest`]). A step is taken when its pull-off's
 /// boundary error is at most [`CONVERGED`]; else the modes are escalated
-/// along [`ARCLENGTH_ESCALATION`], then the step is halved. The last route
+/// along [`Ladder::arclength`], then the step is halved. The last route
 /// of [`pull_off_resolved`], where the conformal form's continuation stops
 /// (near ρ = 0.3).
 pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Result<ExactState> {
@@ -1012,13 +944,9 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
     visit: &mut dyn FnMut(&ExactState),
 ) -> Result<ExactState> {
     let mut at = start.clone();
-    let mut k = if start.truncation.arclength > 0 {
-        ARCLENGTH_ESCALATION
-            .iter()
-            .position(|&m| m >= start.truncation.modes)
-            .unwrap_or(ARCLENGTH_ESCALATION.len() - 1)
-    } else {
-        0
+    let mut ladder = match start.truncation.arclength {
+        0 => Ladder::arclength(),
+        _ => Ladder::arclength().starting_at(start.truncation.modes),
     };
     let steps = super::rho_walk::PULL_OFF_IN_ARCLENGTH;
     let walked = walk_down(
@@ -1027,7 +955,9 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
         steps,
         |at| at.rho,
         |at, next| {
-            let t = Truncation::in_arclength(ARCLENGTH_ESCALATION[k]);
+            let Some(t) = ladder.rung() else {
+                return Err(Error::NoState("no truncation to follow the pull-off with".into()));
+            };
             crate::progress::stage(format!(
                 "the pull-off followed in rho from rho = {}: at rho = {}, {} modes of each sign",
                 crate::error::short(start.rho),
@@ -1057,10 +987,8 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
                         visit(&po);
                         Attempt::Took(po)
                     }
-                    Ok(_) if k + 1 < ARCLENGTH_ESCALATION.len() => {
-                        k += 1;
-                        Attempt::Again
-                    }
+                    // (the climb in the guard: a rung up where there is one)
+                    Ok(_) if ladder.escalate() => Attempt::Again,
                     missed => Attempt::Missed((missed, t.modes)),
                 },
             )
@@ -1261,7 +1189,7 @@ mod tests {
         control: Hold,
     ) {
         let continued =
-            continued_in_rho_along(above, direct.rho, control, &arclength_tries()).unwrap();
+            continued_in_rho_along(above, direct.rho, control, &Ladder::arclength()).unwrap();
         assert!(continued.bc_error <= CONVERGED, "{:e}", continued.bc_error);
         for (what, d, c) in [
             ("a", direct.a_bar, continued.a_bar),

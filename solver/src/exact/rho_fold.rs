@@ -11,6 +11,7 @@
 //! Owns: [`RhoFold`], [`rho_fold`]. May use: `exact`, `control`, `error`,
 //! `newton` (its stop check).
 
+use super::ladder::Ladder;
 use super::{Exact, ExactState, Truncation};
 use crate::control::Hold;
 use crate::error::{Error, Result};
@@ -104,18 +105,15 @@ fn rho_at(ex: &RefCell<Exact>, control: Hold, a_bar: f64, near: &OnCurve) -> Res
 
 /// The fold in ρ of the family at `control` near `last`, the last state a
 /// continuation in ρ downwards at that control converged to: the minimum of
-/// ρ*(ā) (ā within 0.5 of `last`'s), searched with the first of `tries`
+/// ρ*(ā) (ā within 0.5 of `last`'s), searched with the first rung of `ladder`
 /// at least as fine as `last`'s truncation, and again with the next where
 /// the state at the fold is not resolved (fine-grid boundary error above
 /// [`super::CONVERGED`]). `None` where ρ*(ā) has no minimum there (Newton
 /// stopped for another reason: a band, a failed step), or where no
 /// truncation tried resolves it.
-pub(crate) fn rho_fold(last: &ExactState, control: Hold, tries: &[Truncation]) -> Option<RhoFold> {
-    let first = tries
-        .iter()
-        .position(|t| t.modes >= last.truncation.modes)
-        .unwrap_or(tries.len().saturating_sub(1));
-    tries[first..].iter().find_map(|&t| {
+pub(crate) fn rho_fold(last: &ExactState, control: Hold, ladder: &Ladder) -> Option<RhoFold> {
+    let from_last = Ladder::of(ladder.rungs().to_vec()).starting_at(last.truncation.modes);
+    from_last.from_rung().iter().find_map(|&t| {
         let (fold, bc_error) = search(last, control, t)?;
         (bc_error <= super::CONVERGED).then_some(fold)
     })
@@ -274,7 +272,8 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
 mod tests {
     use super::*;
     use crate::exact::resolve::{at_with, continued_in_rho_along};
-    use crate::exact::{default_tries, Gap, Truncation};
+    use crate::exact::ladder::Ladder;
+    use crate::exact::{Gap, Truncation};
 
     /// The near-elliptic family at F̄ = 0, continued in ρ from its state at
     /// ρ = 0.4 (80 modes) in the arclength representation (48, then 64
@@ -286,16 +285,16 @@ mod tests {
     /// joins.
     #[test]
     fn the_zero_force_family_turns_back_in_rho() {
-        let start = at_with(Gap::cylinders(), 0.4, Hold::Force(0.0), &default_tries()).unwrap();
+        let start = at_with(Gap::cylinders(), 0.4, Hold::Force(0.0), &Ladder::conformal()).unwrap();
         let last = continued_in_rho_along(
             &start,
             0.36,
             Hold::Force(0.0),
-            &[Truncation::in_arclength(48), Truncation::in_arclength(64)],
+            &Ladder::of(vec![Truncation::in_arclength(48), Truncation::in_arclength(64)]),
         )
         .unwrap();
-        let tries = [48, 64, 96].map(Truncation::in_arclength);
-        let fold = rho_fold(&last, Hold::Force(0.0), &tries).expect("a fold in rho");
+        let ladder = Ladder::of([48, 64, 96].map(Truncation::in_arclength).to_vec());
+        let fold = rho_fold(&last, Hold::Force(0.0), &ladder).expect("a fold in rho");
         assert!(
             fold.rho > 0.355 && fold.rho < 0.36,
             "the fold at rho = {}",

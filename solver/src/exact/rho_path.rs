@@ -266,7 +266,8 @@ pub(crate) fn follow_with(
 mod tests {
     use super::*;
     use crate::exact::resolve::{at_with, continued_in_rho_along};
-    use crate::exact::{default_tries, Gap, Truncation};
+    use crate::exact::ladder::Ladder;
+    use crate::exact::{Gap, Truncation};
 
     /// At F̄ = 10 the near-elliptic family continued from ρ = 0.4 (56
     /// modes, then 48 to 96 of each sign in the arclength representation)
@@ -279,9 +280,9 @@ mod tests {
     #[test]
     fn the_force_10_family_turns_back_in_rho() {
         let control = Hold::Force(10.0);
-        let start = at_with(Gap::cylinders(), 0.4, control, &default_tries()).unwrap();
-        let tries = [48, 64, 96].map(Truncation::in_arclength);
-        let last = continued_in_rho_along(&start, 0.3235, control, &tries).unwrap();
+        let start = at_with(Gap::cylinders(), 0.4, control, &Ladder::conformal()).unwrap();
+        let ladder = Ladder::of([48, 64, 96].map(Truncation::in_arclength).to_vec());
+        let last = continued_in_rho_along(&start, 0.3235, control, &ladder).unwrap();
         match follow(&last, 0.3, control).unwrap() {
             Followed::TurnedBack { rho, .. } => {
                 assert!(rho > 0.3222 && rho < 0.3228, "turned back at rho = {rho}")

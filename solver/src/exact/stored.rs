@@ -25,8 +25,9 @@
 //! [`pull_off`], [`below_the_floor`], [`store`]. May use: its parent `exact` (`resolve`'s follow and
 //! escalation), `error`.
 
+use super::ladder::Ladder;
 #[cfg(feature = "cli")]
-use super::resolve::{default_tries, pull_off_followed_in_arclength_visiting, pull_off_on};
+use super::resolve::{pull_off_followed_in_arclength_visiting, pull_off_on};
 use super::{Contour, Exact, ExactState, Gap, Route, Truncation};
 use crate::error::{Error, Result};
 
@@ -205,7 +206,7 @@ pub(crate) fn below_the_floor(gap: Gap, rho: f64, asked: &str) -> Option<Error> 
         return None;
     }
     let table = stored()?;
-    let last_rung = super::resolve::ARCLENGTH_ESCALATION.last().copied();
+    let last_rung = Some(Ladder::arclength().top_modes());
     let at_last_rung = table
         .pull_offs
         .last()
@@ -341,7 +342,7 @@ impl Prediction {
 #[cfg(feature = "cli")]
 pub(crate) fn store() -> Result<Stored> {
     let gap = Gap::cylinders();
-    let (top, _) = pull_off_on(gap, STORED_FROM_RHO, &default_tries())?;
+    let (top, _) = pull_off_on(gap, STORED_FROM_RHO, &Ladder::conformal())?;
     let mut pull_offs = vec![StoredPullOff::of(&top, None)?];
     let mut recorded = Ok(());
     let followed = pull_off_followed_in_arclength_visiting(&top, FLOOR, &mut |st| {

@@ -44,8 +44,8 @@ use super::descent::{descend, Landing};
 use crate::control::Hold;
 use crate::cutoff::Cutoff;
 use crate::error::Result;
+use crate::exact::ladder::Ladder;
 use crate::exact::{Exact, ExactState, Truncation, CONVERGED, RESOLVED};
-use crate::exact::{ARCLENGTH_ESCALATION, ESCALATION};
 
 #[cfg(test)]
 use crate::exact::START_FORCE;
@@ -302,19 +302,10 @@ fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, S
     let mut best: (Option<Exact>, ExactState) = (None, st);
     // the conformal-map form's rungs above the state's, then the
     // arclength representation's (above the state's if it is in it)
-    let t = ex.truncation();
-    let rungs: Vec<Truncation> = ESCALATION
-        .iter()
-        .filter(|&&m| t.arclength == 0 && m > t.modes)
-        .map(|&m| Truncation::with_modes(m))
-        .chain(
-            ARCLENGTH_ESCALATION
-                .iter()
-                .filter(|&&m| t.arclength == 0 || m > t.modes)
-                .map(|&m| Truncation::in_arclength(m)),
-        )
-        .collect();
-    for rung in rungs {
+    let rungs = Ladder::conformal()
+        .then(Ladder::arclength())
+        .above(ex.truncation());
+    for &rung in rungs.rungs() {
         let st = &best.1;
         let Ok(finer) = Exact::of_state_with(st, rung) else {
             continue;
