@@ -553,37 +553,7 @@ fn eta_collected(r: &[Atom]) -> Option<Vec<Atom>> {
 
 /// The functions generated for one derivation.
 fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
-    // η in the form that passes the accuracy check: as derived, or with its
-    // cancelling radicals rationalised; η' by differentiating that form
-    // (product rule, not re-expanded, so that no cancellation returns).
-    let (eta, eta_s) = if crate::accuracy::check("eta", &["s"], &[d.eta.clone()], &[], None).is_ok()
-    {
-        (d.eta.clone(), simplify(&diff(&d.eta, "s")))
-    } else {
-        let r = rationalize(&d.eta, &probe(&["s"]));
-        (r.clone(), diff(&r, "s"))
-    };
-    let d_eta = &eta;
-    // η factored into powers of irreducible polynomials and η' as η times
-    // its logarithmic derivative (a short rational function), where both
-    // pass the accuracy check: the radicals of η are then shared by the two
-    let (eta, eta_s) = {
-        let f = crate::sym::factored(d_eta);
-        let candidate = (f.clone(), &f * &crate::sym::log_derivative(&f, "s"));
-        let passes = crate::accuracy::check(
-            "eta_and_eta_s",
-            &["s"],
-            &[candidate.0.clone(), candidate.1.clone()],
-            &[],
-            None,
-        )
-        .is_ok();
-        if passes {
-            candidate
-        } else {
-            (eta.clone(), eta_s)
-        }
-    };
+    let (eta, eta_s) = eta_forms(d);
     let d_eta = &eta;
     // (14) likewise: as derived (the form search below rationalises it
     // when needed), or max/min − 1 from the rationalised extrema
@@ -659,45 +629,90 @@ fn functions(d: &Derivation) -> Result<Vec<Function>, String> {
         fs.push(Function { name: "branch_eta", doc: "The solution curve at fixed ρ, explicit in s: `[ā³, δ̄ ā]` (both residuals are linear in these); η passed in.".into(), params: vec!["s", "rho", "eta"], outputs: vec![b.abar_cubed.clone(), b.dbar_abar.clone()] });
     }
     if let Ok(l) = &d.limits {
-        fs.push(Function {
-            name: "non_adhesive_rho",
-            doc: "ρ(s) in the non-adhesive limit; its root in s is (29).".into(),
-            params: vec!["s"],
-            outputs: vec![l.non_adhesive_rho.clone()],
-        });
-        fs.push(Function {
-            name: "zero_force_rho",
-            doc: "ρ(s) at zero force: Eq. (28).".into(),
-            params: vec!["s"],
-            outputs: vec![l.zero_force.rho.clone()],
-        });
-        fs.push(Function {
-            name: "zero_force_abar_cubed",
-            doc: "ā³ at zero force, derived form of Eq. (27) (with η; the printed (27) lacks it)."
-                .into(),
-            params: vec!["s", "eta"],
-            outputs: vec![l.zero_force.abar_cubed.clone()],
-        });
-        fs.push(Function { name: "axisymmetric_dbar", doc: "δ̄(ā) for ρ = 1, derived form of Eq. (25)₁ (δ̄ = ā²/4 − 2/ā; the printed 2^(4/3)/ā differs).".into(), params: vec!["abar"], outputs: vec![l.axisymmetric.dbar.clone()] });
-        fs.push(Function {
-            name: "axisymmetric_force_bar",
-            doc: "F̄(ā) for ρ = 1, Eq. (25)₂.".into(),
-            params: vec!["abar"],
-            outputs: vec![l.axisymmetric.fbar.clone()],
-        });
-        fs.push(Function {
-            name: "axisymmetric_critical",
-            doc: "The minimum of F̄(ā) at ρ = 1 (Section 4): `[ā_c, F̄_c, δ̄_c]`.".into(),
-            params: vec![],
-            outputs: vec![
-                l.axisymmetric.critical.0.clone(),
-                l.axisymmetric.critical.1.clone(),
-                l.axisymmetric.critical.2.clone(),
-            ],
-        });
-        fs.push(Function { name: "near_circular_ds_dmu", doc: "ds/dμ at μ = 0 and fixed δ for ρ = (1 − μ)/(1 + μ): by (35) equal to −2a₂/a₀ with a₂ from (36).".into(), params: vec!["abar0"], outputs: vec![l.near_circular_model.s1.clone()] });
+        fs.extend(limit_functions(l));
     }
     Ok(fs)
+}
+
+/// η(s) and η′(s) in the forms that pass the accuracy check, the shortest
+/// first: η factored with η′ as η times its logarithmic derivative, else
+/// as derived (or rationalised) with η′ by differentiating that form.
+fn eta_forms(d: &Derivation) -> (Atom, Atom) {
+    // η in the form that passes the accuracy check: as derived, or with its
+    // cancelling radicals rationalised; η' by differentiating that form
+    // (product rule, not re-expanded, so that no cancellation returns).
+    let (eta, eta_s) = if crate::accuracy::check("eta", &["s"], &[d.eta.clone()], &[], None).is_ok()
+    {
+        (d.eta.clone(), simplify(&diff(&d.eta, "s")))
+    } else {
+        let r = rationalize(&d.eta, &probe(&["s"]));
+        (r.clone(), diff(&r, "s"))
+    };
+    let d_eta = &eta;
+    // η factored into powers of irreducible polynomials and η' as η times
+    // its logarithmic derivative (a short rational function), where both
+    // pass the accuracy check: the radicals of η are then shared by the two
+    let (eta, eta_s) = {
+        let f = crate::sym::factored(d_eta);
+        let candidate = (f.clone(), &f * &crate::sym::log_derivative(&f, "s"));
+        let passes = crate::accuracy::check(
+            "eta_and_eta_s",
+            &["s"],
+            &[candidate.0.clone(), candidate.1.clone()],
+            &[],
+            None,
+        )
+        .is_ok();
+        if passes {
+            candidate
+        } else {
+            (eta.clone(), eta_s)
+        }
+    };
+    (eta, eta_s)
+}
+
+/// The functions of the limits (25)–(29) and (35)–(36), where derived.
+fn limit_functions(l: &crate::model::Limits) -> Vec<Function> {
+    let mut fs = Vec::new();
+    fs.push(Function {
+        name: "non_adhesive_rho",
+        doc: "ρ(s) in the non-adhesive limit; its root in s is (29).".into(),
+        params: vec!["s"],
+        outputs: vec![l.non_adhesive_rho.clone()],
+    });
+    fs.push(Function {
+        name: "zero_force_rho",
+        doc: "ρ(s) at zero force: Eq. (28).".into(),
+        params: vec!["s"],
+        outputs: vec![l.zero_force.rho.clone()],
+    });
+    fs.push(Function {
+        name: "zero_force_abar_cubed",
+        doc: "ā³ at zero force, derived form of Eq. (27) (with η; the printed (27) lacks it)."
+            .into(),
+        params: vec!["s", "eta"],
+        outputs: vec![l.zero_force.abar_cubed.clone()],
+    });
+    fs.push(Function { name: "axisymmetric_dbar", doc: "δ̄(ā) for ρ = 1, derived form of Eq. (25)₁ (δ̄ = ā²/4 − 2/ā; the printed 2^(4/3)/ā differs).".into(), params: vec!["abar"], outputs: vec![l.axisymmetric.dbar.clone()] });
+    fs.push(Function {
+        name: "axisymmetric_force_bar",
+        doc: "F̄(ā) for ρ = 1, Eq. (25)₂.".into(),
+        params: vec!["abar"],
+        outputs: vec![l.axisymmetric.fbar.clone()],
+    });
+    fs.push(Function {
+        name: "axisymmetric_critical",
+        doc: "The minimum of F̄(ā) at ρ = 1 (Section 4): `[ā_c, F̄_c, δ̄_c]`.".into(),
+        params: vec![],
+        outputs: vec![
+            l.axisymmetric.critical.0.clone(),
+            l.axisymmetric.critical.1.clone(),
+            l.axisymmetric.critical.2.clone(),
+        ],
+    });
+    fs.push(Function { name: "near_circular_ds_dmu", doc: "ds/dμ at μ = 0 and fixed δ for ρ = (1 − μ)/(1 + μ): by (35) equal to −2a₂/a₀ with a₂ from (36).".into(), params: vec!["abar0"], outputs: vec![l.near_circular_model.s1.clone()] });
+    fs
 }
 
 /// The functions generated for an energy (Ritz) model.
@@ -769,36 +784,13 @@ fn has(fs: &[Function], name: &str) -> bool {
 }
 
 /// The model value and its implementation of the solver's `Model` trait:
-/// the glue between the generated functions and the one interface.
+/// the glue between the generated functions and the one interface: its
+/// [`model_info`], the methods its closure's kind of derivation gives
+/// ([`collocation_methods`], [`energy_methods`]) and the limits it has.
 fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
     let a = md.ansatz();
     let ty = ident(&camel(a.id));
-    let model_name = a.id;
-    let title = a.title;
-    let note = a.closure.describe();
-    let (closure, degree) = match a.closure {
-        Closure::Max => (quote!(ClosureKind::Max), 1u32),
-        Closure::AtPoint(_) => (quote!(ClosureKind::AtPoint), 1),
-        Closure::Energy => (quote!(ClosureKind::Energy), 2),
-    };
-    let degree = Literal::u32_unsuffixed(degree);
-    let non_adhesive = has(fs, "non_adhesive_rho");
-    let axisymmetric = has(fs, "axisymmetric_dbar");
-    let zero_force = has(fs, "zero_force_rho");
-    let near_circular = has(fs, "near_circular_ds_dmu");
-    let missing = match md {
-        ModelDerivation::Collocation(d) => match &d.limits {
-            Ok(_) => String::new(),
-            Err(e) => format!("limits not derived: {e}"),
-        },
-        ModelDerivation::Energy(e) => {
-            let mut m = vec!["the non-adhesive, zero-force and near-circular relations are not derived for the energy closure (its residuals are quadratic in dbar); the solver finds the non-adhesive end of the branch numerically".to_string()];
-            if let Err(x) = crate::energy::axisymmetric(e) {
-                m.push(format!("axisymmetric limit: {x}"));
-            }
-            m.join("; ")
-        }
-    };
+    let info = model_info(md, fs);
     let opt = |present: bool, body: TokenStream| {
         if present {
             quote!(Some(#body))
@@ -806,142 +798,20 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
             quote!(None)
         }
     };
-    let non_adhesive_body = opt(non_adhesive, quote!(non_adhesive_rho(s)));
-    let zero_force_body = opt(zero_force, quote!(zero_force_rho(s)));
-    let near_circular_body = opt(near_circular, quote!(near_circular_ds_dmu(a0)));
+    let non_adhesive_body = opt(has(fs, "non_adhesive_rho"), quote!(non_adhesive_rho(s)));
+    let zero_force_body = opt(has(fs, "zero_force_rho"), quote!(zero_force_rho(s)));
+    let near_circular_body = opt(has(fs, "near_circular_ds_dmu"), quote!(near_circular_ds_dmu(a0)));
     let critical_body = opt(
         has(fs, "axisymmetric_critical"),
         quote!(axisymmetric_critical()[0]),
     );
     let axisymmetric_body = opt(
-        axisymmetric,
+        has(fs, "axisymmetric_dbar"),
         quote!((axisymmetric_dbar(a_bar), axisymmetric_force_bar(a_bar))),
     );
-    let info = quote! {
-        /// What this model is and has.
-        pub static INFO: ModelInfo = ModelInfo {
-            name: #model_name,
-            title: #title,
-            closure: #closure,
-            closure_note: #note,
-            residual_degree: #degree,
-            has_non_adhesive_limit: #non_adhesive,
-            has_axisymmetric_limit: #axisymmetric,
-            has_zero_force_limit: #zero_force,
-            has_near_circular_limit: #near_circular,
-            missing_limits: #missing,
-        };
-    };
     let body = match md {
-        ModelDerivation::Collocation(_) => quote! {
-            fn residuals_and_jacobian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> (Vector2<f64>, Matrix2<f64>) {
-                let [eta, eta_s] = eta_and_eta_s(x[1]);
-                let v = residuals_and_jacobian_eta(x[0], x[1], rho, delta_bar, eta, eta_s);
-                (Vector2::new(v[0], v[1]), Matrix2::new(v[2], v[3], v[4], v[5]))
-            }
-            fn residuals_d_delta(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector2<f64> {
-                let [eta, eta_s] = eta_and_eta_s(x[1]);
-                Vector2::from(residuals_d_dbar_eta(x[0], x[1], rho, delta_bar, eta, eta_s))
-            }
-            fn force_bar(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> f64 {
-                force_bar(x[0], x[1], delta_bar, eta(x[1]))
-            }
-            fn force_bar_gradient(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> Vector3<f64> {
-                let [eta, eta_s] = eta_and_eta_s(x[1]);
-                Vector3::from(force_bar_gradient_eta(x[0], x[1], delta_bar, eta, eta_s))
-            }
-            fn branch(&self, s: f64, rho: f64) -> BranchPoints {
-                let [x, y] = branch_eta(s, rho, eta(s));
-                if x.is_finite() && x > 0.0 && y.is_finite() {
-                    let a = x.cbrt();
-                    [Some((a, y / a)), None]
-                } else {
-                    [None, None]
-                }
-            }
-            fn normal_derivative(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64, u: f64) -> f64 {
-                let e = eta(x[1]);
-                let xi = xi(x[0], x[1], delta_bar, e);
-                normal_derivative_collocated(p0_bar(x[0], xi, e), x[0], x[1], xi, u)
-            }
-            fn edge_slopes(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> [f64; 2] {
-                let e = eta(x[1]);
-                let xi = xi(x[0], x[1], delta_bar, e);
-                let p0 = p0_bar(x[0], xi, e);
-                [
-                    normal_derivative_collocated(p0, x[0], x[1], xi, 0.0),
-                    normal_derivative_collocated(p0, x[0], x[1], xi, 1.0),
-                ]
-            }
-            fn pressure_parameters(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> PressureParameters {
-                let e = eta(x[1]);
-                let xi = xi(x[0], x[1], delta_bar, e);
-                PressureParameters { p0: p0_bar(x[0], xi, e), shape: shape(x[0], x[1], xi), xi }
-            }
-            fn pressure(&self, px: f64, py: f64, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
-                let p = self.pressure_parameters(x, rho, delta_bar);
-                pressure(px, py, p.p0, x[0], x[1], p.xi)
-            }
-            fn bc_error(&self, x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> f64 {
-                bc_error(x[1])
-            }
-            fn potential(&self, _x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> Option<f64> {
-                None
-            }
-            fn potential_hessian(&self, _x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> Option<Matrix3<f64>> {
-                None
-            }
-        },
-        ModelDerivation::Energy(_) => quote! {
-            fn residuals_and_jacobian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> (Vector2<f64>, Matrix2<f64>) {
-                let v = residuals_and_jacobian(x[0], x[1], delta_bar, rho);
-                (Vector2::new(v[0], v[1]), Matrix2::new(v[2], v[3], v[4], v[5]))
-            }
-            fn residuals_d_delta(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector2<f64> {
-                Vector2::from(residuals_d_dbar(x[0], x[1], delta_bar, rho))
-            }
-            fn force_bar(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
-                force_bar(x[0], x[1], delta_bar, rho)
-            }
-            fn force_bar_gradient(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector3<f64> {
-                Vector3::from(force_bar_gradient(x[0], x[1], delta_bar, rho))
-            }
-            fn branch(&self, s: f64, rho: f64) -> BranchPoints {
-                let mut out = [None, None];
-                let roots = crate::model::real_roots(&branch_poly(s, rho));
-                let d = INFO.residual_degree as f64;
-                let mut k = 0;
-                for t in roots.into_iter().flatten() {
-                    let xd = branch_x_pow(t, s, rho);
-                    if xd.is_finite() && xd > 0.0 {
-                        let x = xd.powf(1.0 / d);
-                        let a = x.cbrt();
-                        out[k] = Some((a, t * x / a));
-                        k += 1;
-                    }
-                }
-                out
-            }
-            fn normal_derivative(&self, x: Vector2<f64>, rho: f64, delta_bar: f64, u: f64) -> f64 {
-                normal_derivative(x[0], x[1], delta_bar, rho, u)
-            }
-            fn pressure_parameters(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> PressureParameters {
-                let [p0, a, b, xi] = pressure_parameters(x[0], x[1], delta_bar, rho);
-                PressureParameters { p0, shape: [a, b], xi }
-            }
-            fn pressure(&self, px: f64, py: f64, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
-                pressure(px, py, x[0], x[1], delta_bar, rho)
-            }
-            fn bc_error(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
-                crate::model::contour_spread(|u| normal_derivative(x[0], x[1], delta_bar, rho, u))
-            }
-            fn potential(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<f64> {
-                Some(potential(x[0], x[1], delta_bar, rho))
-            }
-            fn potential_hessian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<Matrix3<f64>> {
-                Some(Matrix3::from_row_slice(&potential_hessian(x[0], x[1], delta_bar, rho)))
-            }
-        },
+        ModelDerivation::Collocation(_) => collocation_methods(),
+        ModelDerivation::Energy(_) => energy_methods(),
     };
     let doc = format!(" The model `{}`: {}.", a.id, a.title);
     quote! {
@@ -972,6 +842,173 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
             fn axisymmetric_critical_a(&self) -> Option<f64> {
                 #critical_body
             }
+        }
+    }
+}
+
+
+/// The static `INFO` of one model: its name, title, closure, and which
+/// limits it has (and why one is missing).
+fn model_info(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
+    let a = md.ansatz();
+    let model_name = a.id;
+    let title = a.title;
+    let note = a.closure.describe();
+    let (closure, degree) = match a.closure {
+        Closure::Max => (quote!(ClosureKind::Max), 1u32),
+        Closure::AtPoint(_) => (quote!(ClosureKind::AtPoint), 1),
+        Closure::Energy => (quote!(ClosureKind::Energy), 2),
+    };
+    let degree = Literal::u32_unsuffixed(degree);
+    let non_adhesive = has(fs, "non_adhesive_rho");
+    let axisymmetric = has(fs, "axisymmetric_dbar");
+    let zero_force = has(fs, "zero_force_rho");
+    let near_circular = has(fs, "near_circular_ds_dmu");
+    let missing = match md {
+        ModelDerivation::Collocation(d) => match &d.limits {
+            Ok(_) => String::new(),
+            Err(e) => format!("limits not derived: {e}"),
+        },
+        ModelDerivation::Energy(e) => {
+            let mut m = vec!["the non-adhesive, zero-force and near-circular relations are not derived for the energy closure (its residuals are quadratic in dbar); the solver finds the non-adhesive end of the branch numerically".to_string()];
+            if let Err(x) = crate::energy::axisymmetric(e) {
+                m.push(format!("axisymmetric limit: {x}"));
+            }
+            m.join("; ")
+        }
+    };
+    quote! {
+        /// What this model is and has.
+        pub static INFO: ModelInfo = ModelInfo {
+            name: #model_name,
+            title: #title,
+            closure: #closure,
+            closure_note: #note,
+            residual_degree: #degree,
+            has_non_adhesive_limit: #non_adhesive,
+            has_axisymmetric_limit: #axisymmetric,
+            has_zero_force_limit: #zero_force,
+            has_near_circular_limit: #near_circular,
+            missing_limits: #missing,
+        };
+    }
+}
+
+/// The methods of `impl Model` a collocation closure's derivation gives
+/// (residuals through η(s), the collocated normal derivative).
+fn collocation_methods() -> TokenStream {
+    quote! {
+        fn residuals_and_jacobian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> (Vector2<f64>, Matrix2<f64>) {
+            let [eta, eta_s] = eta_and_eta_s(x[1]);
+            let v = residuals_and_jacobian_eta(x[0], x[1], rho, delta_bar, eta, eta_s);
+            (Vector2::new(v[0], v[1]), Matrix2::new(v[2], v[3], v[4], v[5]))
+        }
+        fn residuals_d_delta(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector2<f64> {
+            let [eta, eta_s] = eta_and_eta_s(x[1]);
+            Vector2::from(residuals_d_dbar_eta(x[0], x[1], rho, delta_bar, eta, eta_s))
+        }
+        fn force_bar(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> f64 {
+            force_bar(x[0], x[1], delta_bar, eta(x[1]))
+        }
+        fn force_bar_gradient(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> Vector3<f64> {
+            let [eta, eta_s] = eta_and_eta_s(x[1]);
+            Vector3::from(force_bar_gradient_eta(x[0], x[1], delta_bar, eta, eta_s))
+        }
+        fn branch(&self, s: f64, rho: f64) -> BranchPoints {
+            let [x, y] = branch_eta(s, rho, eta(s));
+            if x.is_finite() && x > 0.0 && y.is_finite() {
+                let a = x.cbrt();
+                [Some((a, y / a)), None]
+            } else {
+                [None, None]
+            }
+        }
+        fn normal_derivative(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64, u: f64) -> f64 {
+            let e = eta(x[1]);
+            let xi = xi(x[0], x[1], delta_bar, e);
+            normal_derivative_collocated(p0_bar(x[0], xi, e), x[0], x[1], xi, u)
+        }
+        fn edge_slopes(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> [f64; 2] {
+            let e = eta(x[1]);
+            let xi = xi(x[0], x[1], delta_bar, e);
+            let p0 = p0_bar(x[0], xi, e);
+            [
+                normal_derivative_collocated(p0, x[0], x[1], xi, 0.0),
+                normal_derivative_collocated(p0, x[0], x[1], xi, 1.0),
+            ]
+        }
+        fn pressure_parameters(&self, x: Vector2<f64>, _rho: f64, delta_bar: f64) -> PressureParameters {
+            let e = eta(x[1]);
+            let xi = xi(x[0], x[1], delta_bar, e);
+            PressureParameters { p0: p0_bar(x[0], xi, e), shape: shape(x[0], x[1], xi), xi }
+        }
+        fn pressure(&self, px: f64, py: f64, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+            let p = self.pressure_parameters(x, rho, delta_bar);
+            pressure(px, py, p.p0, x[0], x[1], p.xi)
+        }
+        fn bc_error(&self, x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> f64 {
+            bc_error(x[1])
+        }
+        fn potential(&self, _x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> Option<f64> {
+            None
+        }
+        fn potential_hessian(&self, _x: Vector2<f64>, _rho: f64, _delta_bar: f64) -> Option<Matrix3<f64>> {
+            None
+        }
+    }
+}
+
+/// The methods of `impl Model` the energy closure's derivation gives
+/// (quadratic residuals, a branch from a polynomial's roots, a potential).
+fn energy_methods() -> TokenStream {
+    quote! {
+        fn residuals_and_jacobian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> (Vector2<f64>, Matrix2<f64>) {
+            let v = residuals_and_jacobian(x[0], x[1], delta_bar, rho);
+            (Vector2::new(v[0], v[1]), Matrix2::new(v[2], v[3], v[4], v[5]))
+        }
+        fn residuals_d_delta(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector2<f64> {
+            Vector2::from(residuals_d_dbar(x[0], x[1], delta_bar, rho))
+        }
+        fn force_bar(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+            force_bar(x[0], x[1], delta_bar, rho)
+        }
+        fn force_bar_gradient(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Vector3<f64> {
+            Vector3::from(force_bar_gradient(x[0], x[1], delta_bar, rho))
+        }
+        fn branch(&self, s: f64, rho: f64) -> BranchPoints {
+            let mut out = [None, None];
+            let roots = crate::model::real_roots(&branch_poly(s, rho));
+            let d = INFO.residual_degree as f64;
+            let mut k = 0;
+            for t in roots.into_iter().flatten() {
+                let xd = branch_x_pow(t, s, rho);
+                if xd.is_finite() && xd > 0.0 {
+                    let x = xd.powf(1.0 / d);
+                    let a = x.cbrt();
+                    out[k] = Some((a, t * x / a));
+                    k += 1;
+                }
+            }
+            out
+        }
+        fn normal_derivative(&self, x: Vector2<f64>, rho: f64, delta_bar: f64, u: f64) -> f64 {
+            normal_derivative(x[0], x[1], delta_bar, rho, u)
+        }
+        fn pressure_parameters(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> PressureParameters {
+            let [p0, a, b, xi] = pressure_parameters(x[0], x[1], delta_bar, rho);
+            PressureParameters { p0, shape: [a, b], xi }
+        }
+        fn pressure(&self, px: f64, py: f64, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+            pressure(px, py, x[0], x[1], delta_bar, rho)
+        }
+        fn bc_error(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> f64 {
+            crate::model::contour_spread(|u| normal_derivative(x[0], x[1], delta_bar, rho, u))
+        }
+        fn potential(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<f64> {
+            Some(potential(x[0], x[1], delta_bar, rho))
+        }
+        fn potential_hessian(&self, x: Vector2<f64>, rho: f64, delta_bar: f64) -> Option<Matrix3<f64>> {
+            Some(Matrix3::from_row_slice(&potential_hessian(x[0], x[1], delta_bar, rho)))
         }
     }
 }

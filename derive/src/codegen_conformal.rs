@@ -139,9 +139,7 @@ fn unrolled_second(k: usize, rows: &[(u64, f64)]) -> TokenStream {
         .flat_map(|&(p, _)| (0..=MU_SHIFT / BITS).map(move |f| field(p, BITS * f)))
         .max()
         .unwrap_or(0);
-    let f = |v: f64| Literal::f64_unsuffixed(v);
     let pw = |name: &str, e: usize| format_ident!("{name}_{e}");
-    let c_pw = |i: usize, e: usize| pw(&format!("c{i}"), e);
     let g_id = |i: usize| format_ident!("g{i}");
     let h_id = |i: usize, j: usize| format_ident!("h{}_{}", i.min(j), i.max(j));
     let n = k + 1;
@@ -168,81 +166,8 @@ fn unrolled_second(k: usize, rows: &[(u64, f64)]) -> TokenStream {
             body.push(quote!(let mut #h = 0.0f64;));
         }
     }
-    let (gd, hdd) = (g_id(k), h_id(k, k));
     for (key, group) in &groups {
-        let factors: Vec<(usize, usize)> = (0..k)
-            .map(|i| (i, field(*key, BITS * i as u32)))
-            .filter(|&(_, e)| e > 0)
-            .collect();
-        let m = factors.len();
-        let mut g = vec![quote!(let (mut a0, mut a1, mut a2) = (0.0f64, 0.0f64, 0.0f64);)];
-        for &(dp, q, kappa) in group {
-            let (kappa, mq) = (f(kappa), pw("m", q));
-            g.push(quote!(let coef = #kappa * #mq;));
-            let d0 = pw("d", dp);
-            g.push(quote!(a0 += coef * #d0;));
-            if dp >= 1 {
-                let (e, d1) = (f(dp as f64), pw("d", dp - 1));
-                g.push(quote!(a1 += coef * #e * #d1;));
-            }
-            if dp >= 2 {
-                let (e, d2) = (f((dp * (dp - 1)) as f64), pw("d", dp - 2));
-                g.push(quote!(a2 += coef * #e * #d2;));
-            }
-        }
-        let f0 = |x: usize| format_ident!("f0_{x}");
-        let f1 = |x: usize| format_ident!("f1_{x}");
-        let pre = |x: usize| format_ident!("pre_{x}");
-        let suf = |x: usize| format_ident!("suf_{x}");
-        for (x, &(i, e)) in factors.iter().enumerate() {
-            let (a, b, p, q) = (f0(x), f1(x), c_pw(i, e), c_pw(i, e - 1));
-            let ef = f(e as f64);
-            g.push(quote!(let #a = #p; let #b = #ef * #q;));
-        }
-        let p0 = pre(0);
-        g.push(quote!(let #p0 = 1.0f64;));
-        for x in 0..m {
-            let (now, before, fx) = (pre(x + 1), pre(x), f0(x));
-            g.push(quote!(let #now = #before * #fx;));
-        }
-        let sm = suf(m);
-        g.push(quote!(let #sm = 1.0f64;));
-        for x in (0..m).rev() {
-            let (now, after, fx) = (suf(x), suf(x + 1), f0(x));
-            g.push(quote!(let #now = #after * #fx;));
-        }
-        let pm = pre(m);
-        g.push(quote!(
-            let mono = #pm;
-            value += a0 * mono;
-            #gd += a1 * mono;
-            #hdd += a2 * mono;
-        ));
-        for (x, &(i, e)) in factors.iter().enumerate() {
-            let (px, sx1, f1x) = (pre(x), suf(x + 1), f1(x));
-            let (gi, hik, hii) = (g_id(i), h_id(i, k), h_id(i, i));
-            g.push(quote!(
-                let others = #px * #sx1;
-                let d_i = #f1x * others;
-                #gi += a0 * d_i;
-                #hik += a1 * d_i;
-            ));
-            if e >= 2 {
-                let (c2, p2) = (f((e * (e - 1)) as f64), c_pw(i, e - 2));
-                g.push(quote!(#hii += a0 * (#c2 * #p2) * others;));
-            }
-            if x + 1 < m {
-                g.push(quote!(let a_fx_pre = a0 * #f1x * #px;));
-                // the product of the factors strictly between x and y
-                let mut between = quote!(1.0f64);
-                for y in x + 1..m {
-                    let (j, f1y, sy1, f0y) = (factors[y].0, f1(y), suf(y + 1), f0(y));
-                    let hij = h_id(i, j);
-                    g.push(quote!(#hij += a_fx_pre * #f1y * (#between) * #sy1;));
-                    between = quote!((#between) * #f0y);
-                }
-            }
-        }
+        let g = unrolled_group(k, *key, group);
         body.push(quote!({ #(#g)* }));
     }
     let grads: Vec<_> = (0..n).map(g_id).collect();
@@ -272,6 +197,95 @@ fn unrolled_second(k: usize, rows: &[(u64, f64)]) -> TokenStream {
             }
         }
     }
+}
+
+/// One group of [`unrolled_second`]'s rows, those of one monomial in the
+/// map coefficients (`key`, their exponents): the group's polynomial in δ̄
+/// and μ with its first two δ̄-derivatives, times the monomial, added to
+/// the value, gradient and Hessian, the monomial's derivatives by prefix
+/// and suffix products of its factors.
+fn unrolled_group(k: usize, key: u64, group: &[(usize, usize, f64)]) -> Vec<TokenStream> {
+    let field = |p: u64, shift: u32| ((p >> shift) & ((1 << BITS) - 1)) as usize;
+    let f = |v: f64| Literal::f64_unsuffixed(v);
+    let pw = |name: &str, e: usize| format_ident!("{name}_{e}");
+    let c_pw = |i: usize, e: usize| pw(&format!("c{i}"), e);
+    let g_id = |i: usize| format_ident!("g{i}");
+    let h_id = |i: usize, j: usize| format_ident!("h{}_{}", i.min(j), i.max(j));
+    let (gd, hdd) = (g_id(k), h_id(k, k));
+    let factors: Vec<(usize, usize)> = (0..k)
+        .map(|i| (i, field(key, BITS * i as u32)))
+        .filter(|&(_, e)| e > 0)
+        .collect();
+    let m = factors.len();
+    let mut g = vec![quote!(let (mut a0, mut a1, mut a2) = (0.0f64, 0.0f64, 0.0f64);)];
+    for &(dp, q, kappa) in group {
+        let (kappa, mq) = (f(kappa), pw("m", q));
+        g.push(quote!(let coef = #kappa * #mq;));
+        let d0 = pw("d", dp);
+        g.push(quote!(a0 += coef * #d0;));
+        if dp >= 1 {
+            let (e, d1) = (f(dp as f64), pw("d", dp - 1));
+            g.push(quote!(a1 += coef * #e * #d1;));
+        }
+        if dp >= 2 {
+            let (e, d2) = (f((dp * (dp - 1)) as f64), pw("d", dp - 2));
+            g.push(quote!(a2 += coef * #e * #d2;));
+        }
+    }
+    let f0 = |x: usize| format_ident!("f0_{x}");
+    let f1 = |x: usize| format_ident!("f1_{x}");
+    let pre = |x: usize| format_ident!("pre_{x}");
+    let suf = |x: usize| format_ident!("suf_{x}");
+    for (x, &(i, e)) in factors.iter().enumerate() {
+        let (a, b, p, q) = (f0(x), f1(x), c_pw(i, e), c_pw(i, e - 1));
+        let ef = f(e as f64);
+        g.push(quote!(let #a = #p; let #b = #ef * #q;));
+    }
+    let p0 = pre(0);
+    g.push(quote!(let #p0 = 1.0f64;));
+    for x in 0..m {
+        let (now, before, fx) = (pre(x + 1), pre(x), f0(x));
+        g.push(quote!(let #now = #before * #fx;));
+    }
+    let sm = suf(m);
+    g.push(quote!(let #sm = 1.0f64;));
+    for x in (0..m).rev() {
+        let (now, after, fx) = (suf(x), suf(x + 1), f0(x));
+        g.push(quote!(let #now = #after * #fx;));
+    }
+    let pm = pre(m);
+    g.push(quote!(
+        let mono = #pm;
+        value += a0 * mono;
+        #gd += a1 * mono;
+        #hdd += a2 * mono;
+    ));
+    for (x, &(i, e)) in factors.iter().enumerate() {
+        let (px, sx1, f1x) = (pre(x), suf(x + 1), f1(x));
+        let (gi, hik, hii) = (g_id(i), h_id(i, k), h_id(i, i));
+        g.push(quote!(
+            let others = #px * #sx1;
+            let d_i = #f1x * others;
+            #gi += a0 * d_i;
+            #hik += a1 * d_i;
+        ));
+        if e >= 2 {
+            let (c2, p2) = (f((e * (e - 1)) as f64), c_pw(i, e - 2));
+            g.push(quote!(#hii += a0 * (#c2 * #p2) * others;));
+        }
+        if x + 1 < m {
+            g.push(quote!(let a_fx_pre = a0 * #f1x * #px;));
+            // the product of the factors strictly between x and y
+            let mut between = quote!(1.0f64);
+            for y in x + 1..m {
+                let (j, f1y, sy1, f0y) = (factors[y].0, f1(y), suf(y + 1), f0(y));
+                let hij = h_id(i, j);
+                g.push(quote!(#hij += a_fx_pre * #f1y * (#between) * #sy1;));
+                between = quote!((#between) * #f0y);
+            }
+        }
+    }
+    g
 }
 
 /// The module of one member: the map's powers and how many leading rows

@@ -99,164 +99,175 @@ fn main() -> ExitCode {
             );
             ExitCode::SUCCESS
         }
-        Some("check") => {
-            if let Err(code) = known(&args, &["--json"], &["--model"]) {
-                return code;
-            }
-            let json = args.iter().any(|a| a == "--json");
-            // `--model NAME`: hold the paper's claims against another
-            // closure's derivation (default: the paper's, `max`)
-            let name = args
-                .iter()
-                .position(|a| a == "--model")
-                .and_then(|i| args.get(i + 1))
-                .map(String::as_str)
-                .unwrap_or(ansatz::PAPER.id);
-            let Some(a) = ansatz::ALL.iter().find(|a| a.id == name) else {
-                eprintln!(
-                    "unknown model {name}: one of {}",
-                    ansatz::ALL
-                        .iter()
-                        .map(|a| a.id)
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                );
-                return ExitCode::FAILURE;
-            };
-            let d = match Derivation::new(a) {
-                Ok(d) => d,
-                Err(e) => {
-                    eprintln!("derivation failed: {e}");
-                    return ExitCode::FAILURE;
-                }
-            };
-            let results = match claims::check_all(&d) {
-                Ok(r) => r,
-                Err(e) => {
-                    eprintln!("check failed: {e}");
-                    return ExitCode::FAILURE;
-                }
-            };
-            if json {
-                println!(
-                    "{}",
-                    serde_json::to_string_pretty(&results).expect("serialisable")
-                );
-            } else {
-                println!("{:<14} {:<10} {:<8} note", "id", "verdict", "method");
-                for r in &results {
-                    println!(
-                        "{:<14} {:<10} {:<8} {}",
-                        r.id,
-                        r.verdict.as_str(),
-                        format!("{:?}", r.method).to_lowercase(),
-                        r.note
-                    );
-                }
-            }
-            ExitCode::SUCCESS
-        }
-        Some("generate") => {
-            if let Err(code) = known(&args, &[], &["--root"]) {
-                return code;
-            }
-            let t = std::time::Instant::now();
-            // `--root DIR`: the repository to read families from and write
-            // into (default: the checkout that holds the working directory)
-            let root = match args.iter().position(|a| a == "--root") {
-                Some(i) => std::path::PathBuf::from(&args[i + 1]),
-                None => {
-                    let here = std::env::current_dir().unwrap_or_default();
-                    match thinjkr_derive::generate::repository_of(&here) {
-                        Some(root) => root,
-                        None => {
-                            return usage(&format!(
-                                "{} is not inside a thinjkr checkout (no derive/families/ and solver/ above it): run it in one, or give --root DIR",
-                                here.display()
-                            ))
-                        }
-                    }
-                }
-            };
-            let outputs = match thinjkr_derive::generate::outputs_in(&root) {
-                Ok(o) => o,
-                Err(e) => {
-                    eprintln!("generation failed: {e}");
-                    return ExitCode::FAILURE;
-                }
-            };
-            // which files were there before: a new one is reported as created
-            let existed: Vec<bool> = outputs
-                .iter()
-                .map(|o| root.join(&o.path).exists())
-                .collect();
-            let written =
-                thinjkr_derive::generate::write_all(&root, &outputs).and_then(|changed| {
-                    thinjkr_derive::generate::remove_stale(&root, &outputs)
-                        .map(|gone| (changed, gone))
-                });
-            match written {
-                Ok((changed, gone)) => {
-                    for p in &gone {
-                        println!("{:>9} {}", "removed", p.display());
-                    }
-                    for (o, existed) in outputs.iter().zip(&existed) {
-                        let mark = match (changed.contains(&o.path), *existed) {
-                            (true, false) => "created",
-                            (true, true) => "updated",
-                            (false, _) => "unchanged",
-                        };
-                        println!("{mark:>9} {}", o.path.display());
-                    }
-                    eprintln!(
-                        "generated {} files in {:.3} s",
-                        outputs.len(),
-                        t.elapsed().as_secs_f64()
-                    );
-                    ExitCode::SUCCESS
-                }
-                Err(e) => {
-                    eprintln!("could not write: {e}");
-                    ExitCode::FAILURE
-                }
-            }
-        }
-        Some("timings") => {
-            if let Err(code) = known(&args, &[], &[]) {
-                return code;
-            }
-            // medians of 5 runs of each symbolic stage, per ansatz
-            let median = |f: &dyn Fn() -> bool| {
-                let mut v: Vec<f64> = (0..5)
-                    .map(|_| {
-                        let t = std::time::Instant::now();
-                        assert!(f());
-                        t.elapsed().as_secs_f64()
-                    })
-                    .collect();
-                v.sort_by(f64::total_cmp);
-                v[2]
-            };
-            for a in ansatz::ALL {
-                let derive = median(&|| ModelDerivation::new(a).is_ok());
-                let d = ModelDerivation::new(a).expect("derives");
-                let codegen = median(&|| thinjkr_derive::codegen::module_source(&d).is_ok());
-                println!(
-                    "ansatz {:<8} derive {:.3} s, generate code {:.3} s",
-                    a.id, derive, codegen
-                );
-            }
-            let d = Derivation::new(&ansatz::PAPER).expect("derives");
-            println!(
-                "check (paper) {:.3} s",
-                median(&|| claims::check_all(&d).is_ok())
-            );
-            println!(
-                "everything (derive both, check, render all files) {:.3} s",
-                median(&|| thinjkr_derive::generate::outputs().is_ok())
-            );
-            ExitCode::SUCCESS
-        }
+        Some("check") => check(&args),
+        Some("generate") => generate(&args),
+        Some("timings") => timings(&args),
         Some(other) => usage(&format!("unknown verb {other:?}")),
     }
+}
+
+/// `check [--json] [--model NAME]`: the paper's printed claims held
+/// against the derivation, as a table or one JSON document.
+fn check(args: &[String]) -> ExitCode {
+    if let Err(code) = known(args, &["--json"], &["--model"]) {
+        return code;
+    }
+    let json = args.iter().any(|a| a == "--json");
+    // `--model NAME`: hold the paper's claims against another
+    // closure's derivation (default: the paper's, `max`)
+    let name = args
+        .iter()
+        .position(|a| a == "--model")
+        .and_then(|i| args.get(i + 1))
+        .map(String::as_str)
+        .unwrap_or(ansatz::PAPER.id);
+    let Some(a) = ansatz::ALL.iter().find(|a| a.id == name) else {
+        eprintln!(
+            "unknown model {name}: one of {}",
+            ansatz::ALL
+                .iter()
+                .map(|a| a.id)
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        return ExitCode::FAILURE;
+    };
+    let d = match Derivation::new(a) {
+        Ok(d) => d,
+        Err(e) => {
+            eprintln!("derivation failed: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    let results = match claims::check_all(&d) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("check failed: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&results).expect("serialisable")
+        );
+    } else {
+        println!("{:<14} {:<10} {:<8} note", "id", "verdict", "method");
+        for r in &results {
+            println!(
+                "{:<14} {:<10} {:<8} {}",
+                r.id,
+                r.verdict.as_str(),
+                format!("{:?}", r.method).to_lowercase(),
+                r.note
+            );
+        }
+    }
+    ExitCode::SUCCESS
+}
+
+/// `generate [--root DIR]`: every output written into the repository,
+/// each reported as created, updated, unchanged or removed.
+fn generate(args: &[String]) -> ExitCode {
+    if let Err(code) = known(args, &[], &["--root"]) {
+        return code;
+    }
+    let t = std::time::Instant::now();
+    // `--root DIR`: the repository to read families from and write
+    // into (default: the checkout that holds the working directory)
+    let root = match args.iter().position(|a| a == "--root") {
+        Some(i) => std::path::PathBuf::from(&args[i + 1]),
+        None => {
+            let here = std::env::current_dir().unwrap_or_default();
+            match thinjkr_derive::generate::repository_of(&here) {
+                Some(root) => root,
+                None => {
+                    return usage(&format!(
+                        "{} is not inside a thinjkr checkout (no derive/families/ and solver/ above it): run it in one, or give --root DIR",
+                        here.display()
+                    ))
+                }
+            }
+        }
+    };
+    let outputs = match thinjkr_derive::generate::outputs_in(&root) {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!("generation failed: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    // which files were there before: a new one is reported as created
+    let existed: Vec<bool> = outputs
+        .iter()
+        .map(|o| root.join(&o.path).exists())
+        .collect();
+    let written =
+        thinjkr_derive::generate::write_all(&root, &outputs).and_then(|changed| {
+            thinjkr_derive::generate::remove_stale(&root, &outputs)
+                .map(|gone| (changed, gone))
+        });
+    match written {
+        Ok((changed, gone)) => {
+            for p in &gone {
+                println!("{:>9} {}", "removed", p.display());
+            }
+            for (o, existed) in outputs.iter().zip(&existed) {
+                let mark = match (changed.contains(&o.path), *existed) {
+                    (true, false) => "created",
+                    (true, true) => "updated",
+                    (false, _) => "unchanged",
+                };
+                println!("{mark:>9} {}", o.path.display());
+            }
+            eprintln!(
+                "generated {} files in {:.3} s",
+                outputs.len(),
+                t.elapsed().as_secs_f64()
+            );
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("could not write: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `timings`: the medians of 5 runs of each symbolic stage, per ansatz.
+fn timings(args: &[String]) -> ExitCode {
+    if let Err(code) = known(args, &[], &[]) {
+        return code;
+    }
+    // medians of 5 runs of each symbolic stage, per ansatz
+    let median = |f: &dyn Fn() -> bool| {
+        let mut v: Vec<f64> = (0..5)
+            .map(|_| {
+                let t = std::time::Instant::now();
+                assert!(f());
+                t.elapsed().as_secs_f64()
+            })
+            .collect();
+        v.sort_by(f64::total_cmp);
+        v[2]
+    };
+    for a in ansatz::ALL {
+        let derive = median(&|| ModelDerivation::new(a).is_ok());
+        let d = ModelDerivation::new(a).expect("derives");
+        let codegen = median(&|| thinjkr_derive::codegen::module_source(&d).is_ok());
+        println!(
+            "ansatz {:<8} derive {:.3} s, generate code {:.3} s",
+            a.id, derive, codegen
+        );
+    }
+    let d = Derivation::new(&ansatz::PAPER).expect("derives");
+    println!(
+        "check (paper) {:.3} s",
+        median(&|| claims::check_all(&d).is_ok())
+    );
+    println!(
+        "everything (derive both, check, render all files) {:.3} s",
+        median(&|| thinjkr_derive::generate::outputs().is_ok())
+    );
+    ExitCode::SUCCESS
 }

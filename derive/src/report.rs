@@ -85,11 +85,30 @@ pub fn derivation_md(
     let _ = writeln!(o, "Ansatz: **{}** (`{}`).\n", d.ansatz.title, d.ansatz.id);
     o.push_str("Notation: `g` = √(2mΔγ) is the right-hand side of (3)₂; `u` = sin²t on the contour x = a cos t, y = b sin t; `abar`, `dbar` are ā, δ̄; `eta` is η(s) of (16), kept as a symbol in the reduced equations.\n\n");
     layer_section(&mut o);
+    steps_1_to_3(&mut o, d);
+    step_4(&mut o, d);
+    step_5(&mut o, d);
+    o.push_str("## Step 6. Section 6: p₀ and the pressure\n\n");
+    eq(&mut o, "p₀ =", &d.p0_explicit);
+    eq(&mut o, "p(x, y) =", &d.pressure_collocated);
+    for md in others {
+        match md {
+            ModelDerivation::Collocation(other) => collocation_section(&mut o, other),
+            ModelDerivation::Energy(e) => energy_section(&mut o, e),
+        }
+    }
+    claims_table(&mut o, results);
+    o
+}
+
+/// Steps 1–3: system (6), the force (8), the normal derivative (9), the
+/// collocation (10), (11) and the maximum (13).
+fn steps_1_to_3(o: &mut String, d: &Derivation) {
     o.push_str("## Step 1. Thin-layer equation (2) with gap (1): system (6)\n\n");
-    eq(&mut o, "Pressure (5):", &d.pressure);
+    eq(o, "Pressure (5):", &d.pressure);
     for l in &d.laplace {
         eq(
-            &mut o,
+            o,
             &format!(
                 "Coefficient of x^{} y^{} in Δp − m(φ − δ), which must vanish:",
                 l.monomial.0, l.monomial.1
@@ -98,18 +117,18 @@ pub fn derivation_md(
         );
     }
     o.push_str("## Step 2. Force (8)\n\nEach monomial is integrated by ∫∫ x^(2i) y^(2j) = π a^(2i+1) b^(2j+1) (2i)!(2j)!/(4^(i+j) i! j! (i+j+1)!) over the ellipse (7).\n\n");
-    eq(&mut o, "F =", &d.force);
+    eq(o, "F =", &d.force);
     o.push_str("## Step 3. Normal derivative (9), collocation (10), (11), maximum (13)\n\n");
     eq(
-        &mut o,
+        o,
         "∂p/∂ν on Γ₀, as −∇p·∇E/|∇E| with E = 1 − x²/a² − y²/b², in u = sin²t (9):",
         &d.normal_derivative.value(),
     );
     for (n, v) in &d.collocation {
-        eq(&mut o, &format!("Collocation (10), {n} =", n = n), v);
+        eq(o, &format!("Collocation (10), {n} =", n = n), v);
     }
     eq(
-        &mut o,
+        o,
         "After collocation, b = s a (11):",
         &d.normal_derivative_collocated.value(),
     );
@@ -120,33 +139,37 @@ pub fn derivation_md(
         plain(&d.extrema.u_max),
         plain(&d.extrema.u_min)
     );
-    eq(&mut o, "Maximum of ∂p/∂ν on Γ₀:", &d.extrema.max);
-    eq(&mut o, "η(s) = maximum / apex value (16):", &d.eta);
+    eq(o, "Maximum of ∂p/∂ν on Γ₀:", &d.extrema.max);
+    eq(o, "η(s) = maximum / apex value (16):", &d.eta);
     if crate::sym::is_zero(&crate::sym::simplify(
         &(&d.bc_error - &(&d.eta - &Atom::num(1))),
     )) {
         // as the paper writes it: (14) = η − 1
         eq(
-            &mut o,
+            o,
             "Quantity (14), (max − min)/min, which is η − 1 (checked: the difference simplifies to 0):",
             &crate::sym::ex("eta - 1"),
         );
     } else {
-        eq(&mut o, "Quantity (14), (max − min)/min:", &d.bc_error);
+        eq(o, "Quantity (14), (max − min)/min:", &d.bc_error);
     }
-    eq(&mut o, "ξ from max ∂p/∂ν = √(2mΔγ) (13):", &d.xi_adhesion);
+    eq(o, "ξ from max ∂p/∂ν = √(2mΔγ) (13):", &d.xi_adhesion);
+}
+
+/// Step 4: the scaling (17), (15), (19), (20), (18).
+fn step_4(o: &mut String, d: &Derivation) {
     o.push_str("## Step 4. Scaling (17): (15), (19), (20), (18)\n\n");
     o.push_str("The scales enter through one length L = (2R₁²Δγ/m)^(1/6): a = āL, δ = δ̄L²/R₁, √(2mΔγ) = mL³/R₁, F = F̄ mL⁶/R₁, with R₂ = ρR₁ and b = sa. The reduction fails unless L, m and R₁ drop out, which they do.\n\n");
     for (k, x) in d.xi.iter().enumerate() {
         eq(
-            &mut o,
+            o,
             &format!("ξ from equation {} (15)_{}:", k + 1, k + 1),
             x,
         );
     }
     for (k, r) in d.residuals.iter().enumerate() {
         eq(
-            &mut o,
+            o,
             &format!(
                 "Residual {} (ξ eliminated, monic in ā) ({}):",
                 k + 1,
@@ -155,60 +178,59 @@ pub fn derivation_md(
             r,
         );
     }
-    eq(&mut o, "F̄ in terms of ξ:", &d.fbar);
-    eq(&mut o, "F̄ with ξ from (15)₁ (18):", &d.fbar_reduced);
+    eq(o, "F̄ in terms of ξ:", &d.fbar);
+    eq(o, "F̄ with ξ from (15)₁ (18):", &d.fbar_reduced);
     if let Some(b) = &d.branch {
         o.push_str("Both residuals are linear in ā³ and δ̄ā, so the solution set at fixed ρ is explicit in s:\n\n");
-        eq(&mut o, "ā³ =", &b.abar_cubed);
-        eq(&mut o, "δ̄ ā =", &b.dbar_abar);
+        eq(o, "ā³ =", &b.abar_cubed);
+        eq(o, "δ̄ ā =", &b.dbar_abar);
     }
+}
+
+/// Step 5: the limits (22)–(29) and the nearly circular contact (36), (37).
+fn step_5(o: &mut String, d: &Derivation) {
     o.push_str("## Step 5. Limits\n\n");
     match &d.limits {
         Ok(l) => {
             let ax = &l.axisymmetric;
-            eq(&mut o, "η(1) =", &ax.eta_at_1);
-            eq(&mut o, "Axisymmetric δ̄(ā) (25)₁:", &ax.dbar);
-            eq(&mut o, "Axisymmetric F̄(ā) (25)₂:", &ax.fbar);
-            eq(&mut o, "Dimensional δ(a) (22), with L³ = gR₁/m:", &ax.delta);
-            eq(&mut o, "Dimensional F(a) (23):", &ax.force);
-            eq(&mut o, "Critical ā_c:", &ax.critical.0);
-            eq(&mut o, "Critical F̄_c:", &ax.critical.1);
-            eq(&mut o, "Critical δ̄_c:", &ax.critical.2);
+            eq(o, "η(1) =", &ax.eta_at_1);
+            eq(o, "Axisymmetric δ̄(ā) (25)₁:", &ax.dbar);
+            eq(o, "Axisymmetric F̄(ā) (25)₂:", &ax.fbar);
+            eq(o, "Dimensional δ(a) (22), with L³ = gR₁/m:", &ax.delta);
+            eq(o, "Dimensional F(a) (23):", &ax.force);
+            eq(o, "Critical ā_c:", &ax.critical.0);
+            eq(o, "Critical F̄_c:", &ax.critical.1);
+            eq(o, "Critical δ̄_c:", &ax.critical.2);
             eq(
-                &mut o,
+                o,
                 "Zero force: ā δ̄ (26):",
                 &crate::sym::simplify(&(crate::sym::ex("abar") * &l.zero_force.dbar)),
             );
-            eq(&mut o, "Zero force: ā³ (27):", &l.zero_force.abar_cubed);
-            eq(&mut o, "Zero force: ρ(s) (28):", &l.zero_force.rho);
+            eq(o, "Zero force: ā³ (27):", &l.zero_force.abar_cubed);
+            eq(o, "Zero force: ρ(s) (28):", &l.zero_force.rho);
             eq(
-                &mut o,
+                o,
                 "Non-adhesive limit (ā → ∞ at fixed δ̄/ā²): ρ(s), solved by (29):",
                 &l.non_adhesive_rho,
             );
             o.push_str("Nearly circular contact, exact first-order perturbation of (2)–(3) (independent of the ansatz): p = P₀(r) + μP₁(r) cos 2θ on r = a₀ + μa₂ cos 2θ.\n\n");
-            eq(&mut o, "δ(a₀) (37):", &l.near_circular_exact.delta);
-            eq(&mut o, "a₂(a₀) (36):", &l.near_circular_exact.a2);
+            eq(o, "δ(a₀) (37):", &l.near_circular_exact.delta);
+            eq(o, "a₂(a₀) (36):", &l.near_circular_exact.a2);
             eq(
-                &mut o,
+                o,
                 "The model expanded about the circle: ds/dμ at μ = 0, fixed δ:",
                 &l.near_circular_model.s1,
             );
-            eq(&mut o, "ξ at μ = 0:", &l.near_circular_model.xi0);
+            eq(o, "ξ at μ = 0:", &l.near_circular_model.xi0);
         }
         Err(e) => {
             let _ = writeln!(o, "Not available for this ansatz: {e}\n");
         }
     }
-    o.push_str("## Step 6. Section 6: p₀ and the pressure\n\n");
-    eq(&mut o, "p₀ =", &d.p0_explicit);
-    eq(&mut o, "p(x, y) =", &d.pressure_collocated);
-    for md in others {
-        match md {
-            ModelDerivation::Collocation(other) => collocation_section(&mut o, other),
-            ModelDerivation::Energy(e) => energy_section(&mut o, e),
-        }
-    }
+}
+
+/// The paper's claims, each with its verdict and method.
+fn claims_table(o: &mut String, results: &[ClaimResult]) {
     o.push_str("## The paper's claims\n\n");
     o.push_str("Method `exact`: the difference of printed and derived forms simplifies to zero (or, for `differs`, does not, and a 40-digit evaluation confirms a non-zero difference). `numeric`: no exact normal form was reached, and six random points at 40 digits decide. `solve`: the derived equations solved numerically at the stated parameters. Numbers printed with `≈` are compared to half a unit in their last printed digit.\n\n");
     o.push_str("| id | source | verdict | method | note |\n|---|---|---|---|---|\n");
@@ -223,7 +245,6 @@ pub fn derivation_md(
             md_escape(&r.note)
         );
     }
-    o
 }
 
 /// Step 0: the coating's kernel from three-dimensional elasticity, its

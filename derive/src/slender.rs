@@ -217,56 +217,8 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
     let fail = |what: &str| format!("{} (slender): {what}", f.source.display());
     let mut checks = Vec::new();
     let (_along, across) = split_gap(f)?;
-    // 1. the strip: p'' = φ̄ − δ̄ at fixed X, the local approach d = δ̄ − φ̄(X, 0)
-    let rhs = &across - &var("d");
-    let q = antiderivative_y(&antiderivative_y(&rhs, 8)?, 10)?;
-    let strip = simplify(&(&q - &subs(&q, "Y", &var("b"))));
-    let residual = &diff(&diff(&strip, "Y"), "Y") - &rhs;
-    let edges = [subs(&strip, "Y", &var("b")), subs(&strip, "Y", &ex("-b"))];
-    if !is_zero(&residual) || !edges.iter().all(is_zero) {
-        return Err(fail(
-            "the strip's pressure does not solve p'' = mu*Y^2/2 - d with p(±b) = 0",
-        ));
-    }
-    checks.push(Check {
-        what: "the strip solves the one-dimensional (2) with p(±b) = 0".into(),
-        detail: "p'' − (μY²/2 − d) and p(±b) simplify to 0".into(),
-    });
-    // 2. the edge condition (3)₂: p'(b) = 1 (the tensile edge)
-    let edge = &subs(&diff(&strip, "Y"), "Y", &var("b")) - &Atom::num(1);
-    let width = solve_linear(&edge, "d").ok_or_else(|| fail("p'(b) = 1 is not linear in d"))?;
-    // 3. the line force, ∫_{-b}^{b} p dY
-    let anti = antiderivative_y(&strip, 12)?;
-    let line_force_d = &subs(&anti, "Y", &var("b")) - &subs(&anti, "Y", &ex("-b"));
-    let line_force = simplify(&subs(&line_force_d, "d", &width));
-    // second route: the strip shot as an ODE
-    let shot = strip_by_shooting(&width, &line_force)?;
-    checks.push(Check {
-        what: "the width relation d(b) and the line force f(b) from (3)₂".into(),
-        detail: shot,
-    });
-    // 4. the scaling μ = n⁶, b = β/n², d = n²D, X = nξ, f = g/n⁴
-    let scale = [("b", ex("beta/n^2")), ("mu", ex("n^6"))];
-    let approach = simplify(&(&subs_all(&width, &scale) / &ex("n^2")));
-    let strip_force = simplify(&(&subs_all(&line_force, &scale) * &ex("n^4")));
-    let local = simplify(
-        &(&subs_all(
-            &ex("dbar - X^2/2"),
-            &[("dbar", ex("n^2*Delta")), ("X", ex("n*xi"))],
-        ) / &ex("n^2")),
-    );
-    if !is_zero(&diff(&approach, "n"))
-        || !is_zero(&diff(&strip_force, "n"))
-        || !is_zero(&(&local - &ex("Delta - xi^2/2")))
-    {
-        return Err(fail(
-            "the scaling mu = n^6, b = beta/n^2, d = n^2 D, X = n xi does not remove n",
-        ));
-    }
-    checks.push(Check {
-        what: "the slender scaling: δ̄ = ρ^(−1/3) Δ, b̄ = ρ^(1/3) β, X = ρ^(−1/6) ξ, F̄ = ρ^(1/2) G".into(),
-        detail: "with μ = 1/ρ = n⁶, b = β/n², d = n²D, X = nξ, f = g/n⁴ the width relation, the line force and the local approach D = Δ − ξ²/2 are free of n; F̄ = ∫ f dX = n⁻³ ∫ g dξ".into(),
-    });
+    let (strip, width, line_force) = strip_relations(f, &across, &mut checks)?;
+    let (approach, strip_force) = slender_scaling(f, &width, &line_force, &mut checks)?;
     // 5. the total force over β, then over φ (β = β₀ cos²φ)
     let approach_slope = simplify(&diff(&approach, "beta"));
     let weight = simplify(&(&strip_force * &approach_slope));
@@ -307,31 +259,7 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
     // the tolerance against a rule four times finer
     let kernel_ir = [Ir::from_atom(&kernel[0])?, Ir::from_atom(&kernel[1])?];
     let samples = beta0_samples();
-    let mut rules: Vec<(f64, usize)> = Vec::new();
-    let mut below = 0.0;
-    for &bound in &RULE_BOUNDS {
-        let mut chosen = None;
-        'rules: for n in NODE_CHOICES {
-            for &b0 in samples.iter().filter(|&&b| b > below && b <= bound) {
-                let (g, dg, _, _) = midpoint(&kernel_ir, b0, n)?;
-                let (g4, dg4, m4, md4) = midpoint(&kernel_ir, b0, 4 * n)?;
-                if (g - g4).abs() > QUADRATURE_TOLERANCE * m4
-                    || (dg - dg4).abs() > QUADRATURE_TOLERANCE * md4
-                {
-                    continue 'rules;
-                }
-            }
-            chosen = Some(n);
-            break;
-        }
-        let n = chosen.ok_or_else(|| {
-            fail(&format!(
-                "no quadrature rule of at most 256 nodes meets 1e-13 for beta0 up to {bound}"
-            ))
-        })?;
-        rules.push((bound, n));
-        below = bound;
-    }
+    let rules = quadrature_rules(f, &kernel_ir, &samples)?;
     let nodes_for = |b0: f64| {
         rules
             .iter()
@@ -354,28 +282,12 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
                 .join(", ")
         ),
     });
-    // second route of the total force: the ξ integral with the cubic
-    let d_ir = Ir::from_atom(&approach)?;
-    let dd_ir = Ir::from_atom(&approach_slope)?;
-    let g_ir = Ir::from_atom(&strip_force)?;
-    let mut worst: f64 = 0.0;
-    for &b0 in &[0.05, 0.5, 1.0, 2.0, 2.8, 5.0, 12.0] {
-        let (g, _, m) = g_of(b0)?;
-        let gx = force_by_xi(&d_ir, &dd_ir, &g_ir, b0)?;
-        let err = (g - gx).abs() / m;
-        worst = worst.max(err);
-        if err > ROUTE_TOLERANCE {
-            return Err(fail(&format!(
-                "at beta0 = {b0} the force by the quadrature over phi, {g:.12e}, and by the xi integral, {gx:.12e}, differ"
-            )));
-        }
-    }
-    checks.push(Check {
-        what: "the total force G(β₀): the φ quadrature against the ξ integral".into(),
-        detail: format!(
-            "G = 2∫₀^∞ g(β(ξ)) dξ with β(ξ) the root of D(β) = Δ − ξ²/2 at every ξ (Newton), composite Gauss–Legendre in ξ = t/(1 − t): largest difference {worst:.1e} of ∫|K| dφ at 7 values of β₀ from 0.05 to 12"
-        ),
-    });
+    let (d_ir, dd_ir, g_ir) = (
+        Ir::from_atom(&approach)?,
+        Ir::from_atom(&approach_slope)?,
+        Ir::from_atom(&strip_force)?,
+    );
+    checks.push(force_by_two_routes(f, [&d_ir, &dd_ir, &g_ir], &g_of)?);
     // the universal constants
     let g_only = |b0: f64| g_of(b0).map(|x| x.0).unwrap_or(f64::NAN);
     let dg_only = |b0: f64| g_of(b0).map(|x| x.1).unwrap_or(f64::NAN);
@@ -405,6 +317,148 @@ pub fn derive(f: &SlenderFamily) -> Result<Slender, String> {
         checks,
         constants,
     })
+}
+
+/// The second route of the total force G(β₀) (the ξ integral with the
+/// width relation solved by Newton) held against the φ quadrature `g_of`
+/// at 7 values of β₀; `irs` are D, D′ and g.
+fn force_by_two_routes(
+    f: &SlenderFamily,
+    [d_ir, dd_ir, g_ir]: [&Ir; 3],
+    g_of: &dyn Fn(f64) -> Result<(f64, f64, f64), String>,
+) -> Result<Check, String> {
+    let fail = |what: &str| format!("{} (slender): {what}", f.source.display());
+    let mut worst: f64 = 0.0;
+    for &b0 in &[0.05, 0.5, 1.0, 2.0, 2.8, 5.0, 12.0] {
+        let (g, _, m) = g_of(b0)?;
+        let gx = force_by_xi(d_ir, dd_ir, g_ir, b0)?;
+        let err = (g - gx).abs() / m;
+        worst = worst.max(err);
+        if err > ROUTE_TOLERANCE {
+            return Err(fail(&format!(
+                "at beta0 = {b0} the force by the quadrature over phi, {g:.12e}, and by the xi integral, {gx:.12e}, differ"
+            )));
+        }
+    }
+    Ok(Check {
+        what: "the total force G(β₀): the φ quadrature against the ξ integral".into(),
+        detail: format!(
+            "G = 2∫₀^∞ g(β(ξ)) dξ with β(ξ) the root of D(β) = Δ − ξ²/2 at every ξ (Newton), composite Gauss–Legendre in ξ = t/(1 − t): largest difference {worst:.1e} of ∫|K| dφ at 7 values of β₀ from 0.05 to 12"
+        ),
+    })
+}
+
+/// Step 4 of [`derive`]: the scaling μ = n⁶, b = β/n², d = n²D, X = nξ,
+/// f = g/n⁴, which must remove n from the width relation, the line force
+/// and the local approach. Returns D(β) and g(β).
+fn slender_scaling(
+    f: &SlenderFamily,
+    width: &Atom,
+    line_force: &Atom,
+    checks: &mut Vec<Check>,
+) -> Result<(Atom, Atom), String> {
+    let fail = |what: &str| format!("{} (slender): {what}", f.source.display());
+    let scale = [("b", ex("beta/n^2")), ("mu", ex("n^6"))];
+    let approach = simplify(&(&subs_all(width, &scale) / &ex("n^2")));
+    let strip_force = simplify(&(&subs_all(line_force, &scale) * &ex("n^4")));
+    let local = simplify(
+        &(&subs_all(
+            &ex("dbar - X^2/2"),
+            &[("dbar", ex("n^2*Delta")), ("X", ex("n*xi"))],
+        ) / &ex("n^2")),
+    );
+    if !is_zero(&diff(&approach, "n"))
+        || !is_zero(&diff(&strip_force, "n"))
+        || !is_zero(&(&local - &ex("Delta - xi^2/2")))
+    {
+        return Err(fail(
+            "the scaling mu = n^6, b = beta/n^2, d = n^2 D, X = n xi does not remove n",
+        ));
+    }
+    checks.push(Check {
+        what: "the slender scaling: δ̄ = ρ^(−1/3) Δ, b̄ = ρ^(1/3) β, X = ρ^(−1/6) ξ, F̄ = ρ^(1/2) G".into(),
+        detail: "with μ = 1/ρ = n⁶, b = β/n², d = n²D, X = nξ, f = g/n⁴ the width relation, the line force and the local approach D = Δ − ξ²/2 are free of n; F̄ = ∫ f dX = n⁻³ ∫ g dξ".into(),
+    });
+    Ok((approach, strip_force))
+}
+
+/// Steps 1–3 of [`derive`]: the strip's pressure solving the
+/// one-dimensional (2) across the contact at fixed X, p(±b) = 0, with
+/// `across` the gap's part across it; the width relation d(b) from the
+/// edge condition (3)₂ and the line force f(b), with a second route by
+/// shooting. Returns (strip, width, line force).
+fn strip_relations(
+    f: &SlenderFamily,
+    across: &Atom,
+    checks: &mut Vec<Check>,
+) -> Result<(Atom, Atom, Atom), String> {
+    let fail = |what: &str| format!("{} (slender): {what}", f.source.display());
+    // 1. the strip: p'' = φ̄ − δ̄ at fixed X, the local approach d = δ̄ − φ̄(X, 0)
+    let rhs = across - &var("d");
+    let q = antiderivative_y(&antiderivative_y(&rhs, 8)?, 10)?;
+    let strip = simplify(&(&q - &subs(&q, "Y", &var("b"))));
+    let residual = &diff(&diff(&strip, "Y"), "Y") - &rhs;
+    let edges = [subs(&strip, "Y", &var("b")), subs(&strip, "Y", &ex("-b"))];
+    if !is_zero(&residual) || !edges.iter().all(is_zero) {
+        return Err(fail(
+            "the strip's pressure does not solve p'' = mu*Y^2/2 - d with p(±b) = 0",
+        ));
+    }
+    checks.push(Check {
+        what: "the strip solves the one-dimensional (2) with p(±b) = 0".into(),
+        detail: "p'' − (μY²/2 − d) and p(±b) simplify to 0".into(),
+    });
+    // 2. the edge condition (3)₂: p'(b) = 1 (the tensile edge)
+    let edge = &subs(&diff(&strip, "Y"), "Y", &var("b")) - &Atom::num(1);
+    let width = solve_linear(&edge, "d").ok_or_else(|| fail("p'(b) = 1 is not linear in d"))?;
+    // 3. the line force, ∫_{-b}^{b} p dY
+    let anti = antiderivative_y(&strip, 12)?;
+    let line_force_d = &subs(&anti, "Y", &var("b")) - &subs(&anti, "Y", &ex("-b"));
+    let line_force = simplify(&subs(&line_force_d, "d", &width));
+    // second route: the strip shot as an ODE
+    let shot = strip_by_shooting(&width, &line_force)?;
+    checks.push(Check {
+        what: "the width relation d(b) and the line force f(b) from (3)₂".into(),
+        detail: shot,
+    });
+    Ok((strip, width, line_force))
+}
+
+/// For each interval of β₀ ([`RULE_BOUNDS`]), the fewest midpoint nodes
+/// over φ ([`NODE_CHOICES`]) whose G and dG/dβ₀ agree with a rule four
+/// times finer within [`QUADRATURE_TOLERANCE`] at the `samples` in it.
+fn quadrature_rules(
+    f: &SlenderFamily,
+    kernel_ir: &[Ir; 2],
+    samples: &[f64],
+) -> Result<Vec<(f64, usize)>, String> {
+    let fail = |what: &str| format!("{} (slender): {what}", f.source.display());
+    let mut rules: Vec<(f64, usize)> = Vec::new();
+    let mut below = 0.0;
+    for &bound in &RULE_BOUNDS {
+        let mut chosen = None;
+        'rules: for n in NODE_CHOICES {
+            for &b0 in samples.iter().filter(|&&b| b > below && b <= bound) {
+                let (g, dg, _, _) = midpoint(kernel_ir, b0, n)?;
+                let (g4, dg4, m4, md4) = midpoint(kernel_ir, b0, 4 * n)?;
+                if (g - g4).abs() > QUADRATURE_TOLERANCE * m4
+                    || (dg - dg4).abs() > QUADRATURE_TOLERANCE * md4
+                {
+                    continue 'rules;
+                }
+            }
+            chosen = Some(n);
+            break;
+        }
+        let n = chosen.ok_or_else(|| {
+            fail(&format!(
+                "no quadrature rule of at most 256 nodes meets 1e-13 for beta0 up to {bound}"
+            ))
+        })?;
+        rules.push((bound, n));
+        below = bound;
+    }
+    Ok(rules)
 }
 
 /// The sample domain of the generated functions.

@@ -201,121 +201,14 @@ fn claim_30(l: &Limits, printed_full: &str) -> ClaimResult {
 /// Claims read off figures and Section 6's error statement.
 fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
     let mut out = Vec::new();
-    // fig2.bound: (14) < 10 % for s ≥ 0.6.
-    let bound = || -> Result<ClaimResult, String> {
-        let e = Ir::from_atom(&d.bc_error)?;
-        let at = |s: f64| e.eval(&BTreeMap::from([("s", s)])).unwrap_or(f64::NAN);
-        let samples = (0..=4000)
-            .map(|k| 0.6 + 0.4 * k as f64 / 4000.0)
-            .map(|s| (at(s), s))
-            .collect::<Vec<_>>();
-        if let Some((_, s)) = samples.iter().find(|(v, _)| !v.is_finite()) {
-            return Err(format!("(14) could not be evaluated at s = {s}"));
-        }
-        let worst = samples
-            .into_iter()
-            .fold((0.0, 0.0), |m, v| if v.0 > m.0 { v } else { m });
-        let at06 = crate::sym::eval_prec(&d.bc_error, &[("s", crate::sym::rat(3, 5))], 30)?;
-        // where (14) crosses 10 %, if it does on [0.3, 0.99]
-        let threshold = bisect(|s| at(s) - 0.1, 0.3, 0.99).ok();
-        let mut values = vec![("worst", worst.0), ("worst_s", worst.1), ("at_0_6", at06)];
-        if let Some(t) = threshold {
-            values.push(("threshold", t));
-        }
-        Ok(numeric_claim(
-            "fig2.bound",
-            FROM_CATALOG,
-            FROM_CATALOG,
-            worst.0 < 0.1,
-            format!("(14) = η(s) − 1 = {}", plain(&d.bc_error)),
-            format!(
-                "max of (14) on [0.6, 1] is {:.4} % at s = {:.4}; at s = 0.6 exactly (30 digits) {:.5} %; {}",
-                worst.0 * 100.0,
-                worst.1,
-                at06 * 100.0,
-                match threshold {
-                    Some(t) => format!("(14) < 10 % only for s > {t:.5}"),
-                    None => "(14) does not cross 10 % on [0.3, 0.99]".into(),
-                }
-            ),
-        )
-        .with(&values))
-    };
-    out.push(match bound() {
+    out.push(match fig2_bound(d) {
         Ok(c) => crate::routes::decided_by_two_routes(
             c,
             crate::routes::two_evaluations(&d.bc_error, (3, 5)),
         ),
         Err(e) => failed("fig2.bound", FROM_CATALOG, FROM_CATALOG, e),
     });
-    // fig7: pull-off and heavy load at ρ = 0.8.
-    let fig7 = || -> Result<(ClaimResult, ClaimResult), String> {
-        let c = Curve::new(d, 0.8)?;
-        let po = c.first_minimum(|st| st.fbar)?;
-        // the pull-off the printed (18) would give on the same branch
-        let printed_18 = Ir::from_atom(&ex(
-            "pi*3^(1/2)*abar^3*(2*s^2*abar*dbar - (s + 1)^3)*s^2*(s + 1)/(16*(s^2 + 1)*(s^2 + s + 1)^(3/2))",
-        ))?;
-        let f18 = |st: &crate::numeric::State| {
-            printed_18
-                .eval(&BTreeMap::from([
-                    ("abar", st.abar),
-                    ("s", st.s),
-                    ("dbar", st.dbar),
-                ]))
-                .unwrap_or(f64::NAN)
-        };
-        let po_printed = c.first_minimum(f18)?;
-        let f_printed = f18(&po_printed);
-        if !f_printed.is_finite() {
-            return Err("the printed (18) could not be evaluated on the branch".into());
-        }
-        let (ok_s, tol_s) = approx_printed(po.s, "0.895");
-        let (ok_f, tol_f) = approx_printed(po.fbar, "-4.21");
-        let pull = numeric_claim(
-            "fig7.pulloff",
-            FROM_CATALOG,
-            FROM_CATALOG,
-            ok_s && ok_f,
-            format!("s = {:.5}, F̄ = {:.5} (ā = {:.5}, δ̄ = {:.5})", po.s, po.fbar, po.abar, po.dbar),
-            format!(
-                "minimum of the derived F̄ along the branch from s∞: s {} (±{tol_s}), F̄ {} (±{tol_f}); tolerance: half a unit in the last printed digit",
-                if ok_s { "agrees" } else { "differs" },
-                if ok_f { "agrees" } else { "differs" }
-            ),
-        )
-        .with(&[
-            ("s", po.s),
-            ("fbar", po.fbar),
-            ("fbar_printed_18", f_printed),
-            ("s_ok", ok_s as u8 as f64),
-            ("fbar_ok", ok_f as u8 as f64),
-        ]);
-        let heavy = c.first_crossing(|st| st.fbar, 10.0)?;
-        let (ok_h, tol_h) = approx_printed(heavy.s, "0.93");
-        let heavy_c = numeric_claim(
-            "fig7.heavy",
-            FROM_CATALOG,
-            FROM_CATALOG,
-            ok_h,
-            format!("s = {:.5} at F̄ = 10 (ā = {:.5}, δ̄ = {:.5})", heavy.s, heavy.abar, heavy.dbar),
-            format!(
-                "tolerance ±{tol_h}; s∞ = {:.5} is the non-adhesive limit (29), approached only as F̄ → ∞",
-                c.s_inf()?
-            ),
-        )
-        .with(&[("s", heavy.s), ("s_inf", c.s_inf()?), ("s_pull_off", po.s)]);
-        let pull = crate::routes::decided_by_two_routes(
-            pull,
-            crate::routes::on_branch(d, 0.8, &po, "the pull-off"),
-        );
-        let heavy_c = crate::routes::decided_by_two_routes(
-            heavy_c,
-            crate::routes::on_branch(d, 0.8, &heavy, "F̄ = 10"),
-        );
-        Ok((pull, heavy_c))
-    };
-    match fig7() {
+    match fig7(d) {
         Ok((a, b)) => {
             out.push(a);
             out.push(b);
@@ -325,61 +218,171 @@ fn figure_claims(d: &Derivation) -> Vec<ClaimResult> {
             out.push(failed("fig7.heavy", FROM_CATALOG, FROM_CATALOG, e));
         }
     }
-    // sec6.error: (14) < 0.5 % for ρ ≥ 0.8, any loading.
-    // Load control visits the branch from F̄ → ∞ down to pull-off (the first
-    // minimum of F̄). Displacement control is stable while dδ̄/dā > 0 and
-    // continues past the load pull-off down to the fold of the contact size
-    // (the first minimum of ā), where dδ̄/dā changes sign through infinity.
-    let err = || -> Result<ClaimResult, String> {
-        let mut worst_load: (f64, f64) = (0.0, 0.0);
-        let mut worst_disp: (f64, f64, f64) = (0.0, 0.0, 0.0);
-        for k in 0..=20 {
-            let rho = 0.8 + 0.19 * k as f64 / 20.0;
-            let c = Curve::new(d, rho)?;
-            let po = c.first_minimum(|st| st.fbar)?;
-            if po.bc_error > worst_load.0 {
-                worst_load = (po.bc_error, rho);
-            }
-            let fold = c.first_minimum(|st| st.abar)?;
-            if fold.bc_error > worst_disp.0 {
-                worst_disp = (fold.bc_error, rho, fold.s);
-            }
-        }
-        let c = Curve::new(d, 0.8)?;
-        let s_half = c.first_crossing(|st| st.bc_error, 0.005)?;
-        let values = [
-            ("worst_load", worst_load.0),
-            ("worst_displacement", worst_disp.0),
-            ("s_half", s_half.s),
-        ];
-        Ok(numeric_claim(
-            "sec6.error",
-            FROM_CATALOG,
-            FROM_CATALOG,
-            worst_load.0 < 0.005 && worst_disp.0 < 0.005,
-            format!("max (14) = {:.4} % under load control, {:.4} % under displacement control", worst_load.0 * 100.0, worst_disp.0 * 100.0),
-            format!(
-                "21 values of ρ in [0.8, 0.99]. Load control (F̄ from +∞ to pull-off): max {:.4} % at ρ = {:.3}, at pull-off: {}. Displacement control continues past the load pull-off (dδ̄/dā > 0) to the fold of the contact size (minimum of ā): there (14) = {:.4} % (ρ = {:.3}, s = {:.4}); at ρ = 0.8 it passes 0.5 % at s = {:.4}, F̄ = {:.4}",
-                worst_load.0 * 100.0,
-                worst_load.1,
-                if worst_load.0 < 0.005 { "holds" } else { "does not hold" },
-                worst_disp.0 * 100.0,
-                worst_disp.1,
-                worst_disp.2,
-                s_half.s,
-                s_half.fbar
-            ),
-        )
-        .with(&values))
-        .map(|claim| {
-            crate::routes::decided_by_two_routes(
-                claim,
-                crate::routes::on_branch(d, 0.8, &s_half, "the state where (14) = 0.5 %"),
-            )
-        })
-    };
-    out.push(err().unwrap_or_else(|e| failed("sec6.error", FROM_CATALOG, FROM_CATALOG, e)));
+    out.push(sec6_error(d).unwrap_or_else(|e| failed("sec6.error", FROM_CATALOG, FROM_CATALOG, e)));
     out
+}
+
+/// fig2.bound: (14) < 10 % for s ≥ 0.6.
+fn fig2_bound(d: &Derivation) -> Result<ClaimResult, String> {
+    let e = Ir::from_atom(&d.bc_error)?;
+    let at = |s: f64| e.eval(&BTreeMap::from([("s", s)])).unwrap_or(f64::NAN);
+    let samples = (0..=4000)
+        .map(|k| 0.6 + 0.4 * k as f64 / 4000.0)
+        .map(|s| (at(s), s))
+        .collect::<Vec<_>>();
+    if let Some((_, s)) = samples.iter().find(|(v, _)| !v.is_finite()) {
+        return Err(format!("(14) could not be evaluated at s = {s}"));
+    }
+    let worst = samples
+        .into_iter()
+        .fold((0.0, 0.0), |m, v| if v.0 > m.0 { v } else { m });
+    let at06 = crate::sym::eval_prec(&d.bc_error, &[("s", crate::sym::rat(3, 5))], 30)?;
+    // where (14) crosses 10 %, if it does on [0.3, 0.99]
+    let threshold = bisect(|s| at(s) - 0.1, 0.3, 0.99).ok();
+    let mut values = vec![("worst", worst.0), ("worst_s", worst.1), ("at_0_6", at06)];
+    if let Some(t) = threshold {
+        values.push(("threshold", t));
+    }
+    Ok(numeric_claim(
+        "fig2.bound",
+        FROM_CATALOG,
+        FROM_CATALOG,
+        worst.0 < 0.1,
+        format!("(14) = η(s) − 1 = {}", plain(&d.bc_error)),
+        format!(
+            "max of (14) on [0.6, 1] is {:.4} % at s = {:.4}; at s = 0.6 exactly (30 digits) {:.5} %; {}",
+            worst.0 * 100.0,
+            worst.1,
+            at06 * 100.0,
+            match threshold {
+                Some(t) => format!("(14) < 10 % only for s > {t:.5}"),
+                None => "(14) does not cross 10 % on [0.3, 0.99]".into(),
+            }
+        ),
+    )
+    .with(&values))
+}
+
+/// fig7: pull-off and heavy load at ρ = 0.8.
+fn fig7(d: &Derivation) -> Result<(ClaimResult, ClaimResult), String> {
+    let c = Curve::new(d, 0.8)?;
+    let po = c.first_minimum(|st| st.fbar)?;
+    // the pull-off the printed (18) would give on the same branch
+    let printed_18 = Ir::from_atom(&ex(
+        "pi*3^(1/2)*abar^3*(2*s^2*abar*dbar - (s + 1)^3)*s^2*(s + 1)/(16*(s^2 + 1)*(s^2 + s + 1)^(3/2))",
+    ))?;
+    let f18 = |st: &crate::numeric::State| {
+        printed_18
+            .eval(&BTreeMap::from([
+                ("abar", st.abar),
+                ("s", st.s),
+                ("dbar", st.dbar),
+            ]))
+            .unwrap_or(f64::NAN)
+    };
+    let po_printed = c.first_minimum(f18)?;
+    let f_printed = f18(&po_printed);
+    if !f_printed.is_finite() {
+        return Err("the printed (18) could not be evaluated on the branch".into());
+    }
+    let (ok_s, tol_s) = approx_printed(po.s, "0.895");
+    let (ok_f, tol_f) = approx_printed(po.fbar, "-4.21");
+    let pull = numeric_claim(
+        "fig7.pulloff",
+        FROM_CATALOG,
+        FROM_CATALOG,
+        ok_s && ok_f,
+        format!("s = {:.5}, F̄ = {:.5} (ā = {:.5}, δ̄ = {:.5})", po.s, po.fbar, po.abar, po.dbar),
+        format!(
+            "minimum of the derived F̄ along the branch from s∞: s {} (±{tol_s}), F̄ {} (±{tol_f}); tolerance: half a unit in the last printed digit",
+            if ok_s { "agrees" } else { "differs" },
+            if ok_f { "agrees" } else { "differs" }
+        ),
+    )
+    .with(&[
+        ("s", po.s),
+        ("fbar", po.fbar),
+        ("fbar_printed_18", f_printed),
+        ("s_ok", ok_s as u8 as f64),
+        ("fbar_ok", ok_f as u8 as f64),
+    ]);
+    let heavy = c.first_crossing(|st| st.fbar, 10.0)?;
+    let (ok_h, tol_h) = approx_printed(heavy.s, "0.93");
+    let heavy_c = numeric_claim(
+        "fig7.heavy",
+        FROM_CATALOG,
+        FROM_CATALOG,
+        ok_h,
+        format!("s = {:.5} at F̄ = 10 (ā = {:.5}, δ̄ = {:.5})", heavy.s, heavy.abar, heavy.dbar),
+        format!(
+            "tolerance ±{tol_h}; s∞ = {:.5} is the non-adhesive limit (29), approached only as F̄ → ∞",
+            c.s_inf()?
+        ),
+    )
+    .with(&[("s", heavy.s), ("s_inf", c.s_inf()?), ("s_pull_off", po.s)]);
+    let pull = crate::routes::decided_by_two_routes(
+        pull,
+        crate::routes::on_branch(d, 0.8, &po, "the pull-off"),
+    );
+    let heavy_c = crate::routes::decided_by_two_routes(
+        heavy_c,
+        crate::routes::on_branch(d, 0.8, &heavy, "F̄ = 10"),
+    );
+    Ok((pull, heavy_c))
+}
+
+/// sec6.error: (14) < 0.5 % for ρ ≥ 0.8, any loading.
+/// Load control visits the branch from F̄ → ∞ down to pull-off (the first
+/// minimum of F̄). Displacement control is stable while dδ̄/dā > 0 and
+/// continues past the load pull-off down to the fold of the contact size
+/// (the first minimum of ā), where dδ̄/dā changes sign through infinity.
+fn sec6_error(d: &Derivation) -> Result<ClaimResult, String> {
+    let mut worst_load: (f64, f64) = (0.0, 0.0);
+    let mut worst_disp: (f64, f64, f64) = (0.0, 0.0, 0.0);
+    for k in 0..=20 {
+        let rho = 0.8 + 0.19 * k as f64 / 20.0;
+        let c = Curve::new(d, rho)?;
+        let po = c.first_minimum(|st| st.fbar)?;
+        if po.bc_error > worst_load.0 {
+            worst_load = (po.bc_error, rho);
+        }
+        let fold = c.first_minimum(|st| st.abar)?;
+        if fold.bc_error > worst_disp.0 {
+            worst_disp = (fold.bc_error, rho, fold.s);
+        }
+    }
+    let c = Curve::new(d, 0.8)?;
+    let s_half = c.first_crossing(|st| st.bc_error, 0.005)?;
+    let values = [
+        ("worst_load", worst_load.0),
+        ("worst_displacement", worst_disp.0),
+        ("s_half", s_half.s),
+    ];
+    Ok(numeric_claim(
+        "sec6.error",
+        FROM_CATALOG,
+        FROM_CATALOG,
+        worst_load.0 < 0.005 && worst_disp.0 < 0.005,
+        format!("max (14) = {:.4} % under load control, {:.4} % under displacement control", worst_load.0 * 100.0, worst_disp.0 * 100.0),
+        format!(
+            "21 values of ρ in [0.8, 0.99]. Load control (F̄ from +∞ to pull-off): max {:.4} % at ρ = {:.3}, at pull-off: {}. Displacement control continues past the load pull-off (dδ̄/dā > 0) to the fold of the contact size (minimum of ā): there (14) = {:.4} % (ρ = {:.3}, s = {:.4}); at ρ = 0.8 it passes 0.5 % at s = {:.4}, F̄ = {:.4}",
+            worst_load.0 * 100.0,
+            worst_load.1,
+            if worst_load.0 < 0.005 { "holds" } else { "does not hold" },
+            worst_disp.0 * 100.0,
+            worst_disp.1,
+            worst_disp.2,
+            s_half.s,
+            s_half.fbar
+        ),
+    )
+    .with(&values))
+    .map(|claim| {
+        crate::routes::decided_by_two_routes(
+            claim,
+            crate::routes::on_branch(d, 0.8, &s_half, "the state where (14) = 0.5 %"),
+        )
+    })
 }
 
 /// The reference the solver writes: `thinjkr accuracy --reference
