@@ -336,7 +336,7 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
         ExactCommand::StorePullOffs { out } => {
             super::files::check_file(&out)?;
             let spin = crate::cli::output::Spinner::start("following the pull-off down in rho");
-            let stored = crate::exact::stored::store()?;
+            let stored = crate::studies::stored_pull_offs::store()?;
             drop(spin);
             let json = serde_json::to_string_pretty(&stored).expect("plain data serialises");
             super::files::write_whole(&out, (json + "\n").as_bytes())?;
@@ -1393,7 +1393,7 @@ fn store_no_state(
         forces.len() + deltas.len(),
         crate::error::short(minutes)
     ));
-    let map = crate::exact::no_state::store(forces, deltas, minutes, previous, &mut write)?;
+    let map = crate::studies::no_state_map::store(forces, deltas, minutes, previous, &mut write)?;
     drop(spin);
     let count = |f: fn(&crate::exact::no_state::Cell) -> bool| {
         map.lines

@@ -72,6 +72,8 @@ pub use resolve::{
     at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
 };
 pub(crate) use resolve::{at_resolved_searching, pull_off_resolved_on, resolved, RESOLVED};
+#[cfg(feature = "cli")]
+pub(crate) use resolve::{pull_off_followed_in_arclength_visiting, pull_off_on};
 use serde::Serialize;
 
 /// The most contour modes a user may ask for (the command line's

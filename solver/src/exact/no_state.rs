@@ -17,9 +17,10 @@
 //! The map holds the cylinders' gap only; where the file cannot be read,
 //! nothing is refused.
 //!
-//! Owns: [`NoStateMap`], [`Cell`], [`refusal`], [`store`], [`SEARCH_ANYWAY`].
-//! May use: its parent `exact` (`resolve`'s search, the gap), `control`,
-//! `error`, `newton` (the stop flag, for the store's time limit), rayon.
+//! The map is written by the study `studies::no_state_map`.
+//!
+//! Owns: [`NoStateMap`], [`Cell`], [`Line`], [`refusal`], [`SEARCH_ANYWAY`].
+//! May use: its parent `exact` (the gap), `control`, `error`.
 
 use super::Gap;
 use crate::control::Hold;
@@ -37,7 +38,7 @@ pub(crate) const PATH: &str = "solver/data/exact_no_state.json";
 /// The ρ at which the search is run, from just below where the conformal
 /// seed's states end (0.3) down to where the stored pull-offs have only a
 /// few rungs left.
-#[cfg_attr(not(feature = "cli"), allow(dead_code))]
+#[cfg_attr(not(any(feature = "cli", test)), allow(dead_code))]
 pub(crate) const LADDER: [f64; 8] = [0.25, 0.2, 0.175, 0.15, 0.125, 0.1, 0.075, 0.05];
 
 /// What the search found at one control and ρ.
@@ -78,7 +79,7 @@ pub(crate) enum Cell {
 }
 
 impl Cell {
-    fn rho(&self) -> f64 {
+    pub(crate) fn rho(&self) -> f64 {
         match self {
             Cell::Found { rho, .. }
             | Cell::None { rho, .. }
@@ -120,7 +121,7 @@ pub(crate) fn map() -> Option<&'static NoStateMap> {
 }
 
 /// The control's name in the map and its value; `None` for ā.
-fn key(control: Hold) -> Option<(&'static str, f64)> {
+pub(crate) fn key(control: Hold) -> Option<(&'static str, f64)> {
     match control {
         Hold::Force(v) => Some(("force", v)),
         Hold::Delta(v) => Some(("delta", v)),
@@ -231,160 +232,6 @@ pub(crate) fn refusal_in(map: &NoStateMap, rho: f64, control: Hold) -> Option<Er
     )))
 }
 
-/// The map at the forces and approaches given: the search of
-/// [`super::at_resolved`] at each ρ of [`LADDER`], each stopped after
-/// `minutes` (then [`Cell::Stopped`]), the cells of a line side by side.
-/// A line of `previous` (the file being rewritten) at a value asked for
-/// keeps its settled cells (found or none, with the same time limit):
-/// only its stopped and unsettled cells are searched again, and its other
-/// lines are kept. `written` is given the map after each line, so that a long run
-/// stopped part way keeps what it settled.
-#[cfg(feature = "cli")]
-pub(crate) fn store(
-    forces: &[f64],
-    deltas: &[f64],
-    minutes: f64,
-    previous: Option<NoStateMap>,
-    written: &mut dyn FnMut(&NoStateMap) -> crate::error::Result<()>,
-) -> crate::error::Result<NoStateMap> {
-    use rayon::prelude::*;
-    let asked: Vec<Hold> = forces
-        .iter()
-        .map(|&v| Hold::Force(v))
-        .chain(deltas.iter().map(|&v| Hold::Delta(v)))
-        .collect();
-    if let Some(p) = previous.as_ref().filter(|p| p.minutes != minutes) {
-        // its lines would be dropped, or kept beside cells of another limit
-        return Err(Error::Usage(format!(
-            "the map being extended was written with --minutes {}: give the same, or write another file",
-            short(p.minutes)
-        )));
-    }
-    let mut map = previous.unwrap_or(NoStateMap {
-        generated_by: String::new(),
-        minutes,
-        lines: Vec::new(),
-    });
-    let stop = crate::newton::stop_flag();
-    for &control in &asked {
-        let (name, value) = key(control).expect("force or delta");
-        let kept: Option<Line> = map
-            .lines
-            .iter()
-            .find(|l| l.control == name && l.value == value)
-            .cloned();
-        let settled = |rho: f64| {
-            kept.as_ref().and_then(|l| {
-                l.cells
-                    .iter()
-                    .find(|c| c.rho() == rho && matches!(c, Cell::Found { .. } | Cell::None { .. }))
-                    .cloned()
-            })
-        };
-        let cells: Vec<Cell> = LADDER
-            .par_iter()
-            .map(|&rho| {
-                settled(rho).unwrap_or_else(|| {
-                    crate::newton::carried(stop.clone(), || searched_within(rho, control, minutes))
-                })
-            })
-            .collect();
-        crate::newton::check_stop()?;
-        map.lines
-            .retain(|l| !(l.control == name && l.value == value));
-        map.lines.push(Line {
-            control: name.into(),
-            value,
-            cells,
-        });
-        map.lines.sort_by(|a, b| {
-            (a.control.as_str(), a.value)
-                .partial_cmp(&(b.control.as_str(), b.value))
-                .unwrap_or(std::cmp::Ordering::Equal)
-        });
-        map.generated_by = command(&map);
-        written(&map)?;
-    }
-    Ok(map)
-}
-
-/// The command that writes `map` whole.
-#[cfg(feature = "cli")]
-fn command(map: &NoStateMap) -> String {
-    let list = |name: &str| {
-        map.lines
-            .iter()
-            .filter(|l| l.control == name)
-            .map(|l| short(l.value))
-            .collect::<Vec<_>>()
-            .join(",")
-    };
-    let mut out = "thinjkr exact store-no-state".to_string();
-    for (flag, name) in [("--forces", "force"), ("--deltas", "delta")] {
-        let values = list(name);
-        if !values.is_empty() {
-            out += &format!(" {flag} {values}");
-        }
-    }
-    out + &format!(" --minutes {} --out {PATH}", short(map.minutes))
-}
-
-/// One search at `control` and `rho`, stopped after `minutes`.
-#[cfg(feature = "cli")]
-fn searched_within(rho: f64, control: Hold, minutes: f64) -> Cell {
-    use std::sync::Arc;
-    let flag = Arc::new(AtomicBool::new(false));
-    let done = Arc::new((std::sync::Mutex::new(false), std::sync::Condvar::new()));
-    let watchdog = {
-        let (flag, done) = (flag.clone(), done.clone());
-        let outer = crate::newton::stop_flag();
-        std::thread::spawn(move || {
-            let deadline =
-                std::time::Instant::now() + std::time::Duration::from_secs_f64(60.0 * minutes);
-            let (lock, wake) = &*done;
-            let mut finished = lock.lock().expect("not poisoned");
-            while !*finished {
-                let now = std::time::Instant::now();
-                let outer_stop = outer.as_ref().is_some_and(|o| o.load(Ordering::Relaxed));
-                if now >= deadline || outer_stop {
-                    flag.store(true, Ordering::Relaxed);
-                    break;
-                }
-                let wait = (deadline - now).min(std::time::Duration::from_millis(200));
-                finished = wake.wait_timeout(finished, wait).expect("not poisoned").0;
-            }
-        })
-    };
-    let found = crate::newton::stoppable(&flag, || {
-        super::resolve::at_resolved_searching(Gap::cylinders(), rho, control)
-    });
-    {
-        let (lock, wake) = &*done;
-        *lock.lock().expect("not poisoned") = true;
-        wake.notify_all();
-    }
-    let _ = watchdog.join();
-    match found {
-        Ok(st) => Cell::Found {
-            rho,
-            a_bar: st.a_bar,
-        },
-        Err(_) if flag.load(Ordering::Relaxed) => Cell::Stopped { rho, minutes },
-        Err(e @ (Error::NoState(_) | Error::PastRhoFold { .. } | Error::StopsInRho { .. })) => {
-            Cell::None {
-                rho,
-                // its first clauses, as a message gives them, without the
-                // pointer to --explain (the map keeps no whole record)
-                why: e.brief().trim_end_matches(crate::error::MORE).to_string(),
-            }
-        }
-        Err(e) => Cell::Unsettled {
-            rho,
-            why: e.brief().trim_end_matches(crate::error::MORE).to_string(),
-        },
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -485,36 +332,6 @@ mod tests {
         // a corner that failed otherwise, or found a state
         assert!(refusal_in(&m, 0.12, Hold::Force(10.0)).is_none());
         assert!(refusal_in(&m, 0.17, Hold::Force(10.0)).is_none());
-    }
-
-    /// Slow tier: the committed map's cells at zero force, ρ = 0.2 and 0.15,
-    /// are what the search finds now (a change of the search that finds
-    /// a state where the map says none would make the map refuse it).
-    #[test]
-    #[cfg(feature = "cli")]
-    #[ignore = "slow tier (.ci/slow): about 3 min; the map's reading and its rule stay in CI"]
-    fn the_maps_cells_at_zero_force_are_what_the_search_finds_now() {
-        let m = map().expect("the map");
-        let line = m
-            .lines
-            .iter()
-            .find(|l| l.control == "force" && l.value == 0.0)
-            .expect("the map's line at zero force");
-        for rho in [0.2, 0.15] {
-            let stored = line
-                .cells
-                .iter()
-                .find(|c| c.rho() == rho)
-                .expect("on the ladder");
-            let now = searched_within(rho, Hold::Force(0.0), m.minutes);
-            match (stored, &now) {
-                (Cell::Found { a_bar: a, .. }, Cell::Found { a_bar: b, .. }) => {
-                    assert!((a - b).abs() < 1e-9, "rho = {rho}: a = {a} stored, {b} now")
-                }
-                (Cell::None { .. }, Cell::None { .. }) => {}
-                _ => panic!("rho = {rho}: stored {stored:?}, now {now:?}"),
-            }
-        }
     }
 
     /// The committed map parses, its cells follow the ladder, and every

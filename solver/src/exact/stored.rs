@@ -22,12 +22,10 @@
 //! taken and the pull-off is followed from ρ = 0.3 as before.
 //!
 //! Owns: [`STORED_FROM_RHO`], [`Stored`], [`StoredPullOff`], [`Prediction`],
-//! [`pull_off`], [`below_the_floor`], [`store`]. May use: its parent `exact` (`resolve`'s follow and
-//! escalation), `error`.
+//! [`pull_off`], [`below_the_floor`]. May use: its parent `exact` (`resolve`'s follow and
+//! escalation), `error`. The study `studies::stored_pull_offs` writes them.
 
 use super::ladder::Ladder;
-#[cfg(feature = "cli")]
-use super::resolve::{pull_off_followed_in_arclength_visiting, pull_off_on};
 use super::{Contour, Exact, ExactState, Gap, Route, Truncation};
 use crate::error::{Error, Result};
 
@@ -35,11 +33,6 @@ use crate::error::{Error, Result};
 /// conformal form's escalation resolves the pull-off directly down to
 /// here (docs/accuracy.md's row ρ = 0.3: N = 80).
 pub(crate) const STORED_FROM_RHO: f64 = 0.3;
-
-/// How far down in ρ [`store`] follows the pull-off (it stops where the
-/// follow stops converging, at ρ = 0.0141 with 320 modes).
-#[cfg(feature = "cli")]
-const FLOOR: f64 = 0.01;
 
 /// The stored pull-offs, as in `solver/data/exact_pull_offs.json`.
 #[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
@@ -89,37 +82,6 @@ pub(crate) struct StoredPullOff {
 }
 
 impl StoredPullOff {
-    /// The record of the pull-off `st`, stored after `before` (`None` for
-    /// the first), with its curvature in ā computed on its own truncation
-    /// where it is in the plain gauge.
-    #[cfg(feature = "cli")]
-    fn of(st: &ExactState, before: Option<&StoredPullOff>) -> Result<StoredPullOff> {
-        let narrow_groove = st.contour.narrow_groove().is_some();
-        let plain = in_plain_gauge(
-            st.truncation,
-            narrow_groove,
-            before.is_some_and(|b| b.narrow_groove),
-        );
-        let force_curvature = if plain {
-            let ex = Exact::on(st.gap, st.rho, st.truncation)?.deferring_stability();
-            ex.force_curvature_in_size(&ex.unknowns(st))
-        } else {
-            None
-        };
-        Ok(StoredPullOff {
-            rho: st.rho,
-            force_bar: st.force_bar,
-            a_bar: st.a_bar,
-            s: st.s,
-            delta_bar: st.delta_bar,
-            bc_error: st.bc_error,
-            truncation: st.truncation,
-            contour: st.contour.clone(),
-            force_curvature,
-            narrow_groove,
-        })
-    }
-
     /// The state again, from the contour and δ̄ (no Newton iteration): its
     /// force and boundary error computed on the fine grid, refused when
     /// the boundary error is above [`CONVERGED`](super::CONVERGED).
@@ -143,7 +105,7 @@ impl StoredPullOff {
 /// coefficients describe its curve as those of its neighbours do: it has
 /// no narrow groove, and neither has the pull-off it was followed from
 /// (the follow crowds the points of the next one where the last had one).
-fn in_plain_gauge(t: Truncation, grooved: bool, before_grooved: bool) -> bool {
+pub(crate) fn in_plain_gauge(t: Truncation, grooved: bool, before_grooved: bool) -> bool {
     t.arclength > 0 && !grooved && !before_grooved
 }
 
@@ -334,38 +296,6 @@ impl Prediction {
         ex.accept_resolved_pull_off((po, Vec::new()))
             .map(|(st, _)| st)
     }
-}
-
-/// What `thinjkr exact store-pull-offs` writes: the pull-off at [`STORED_FROM_RHO`]
-/// (the conformal form's escalation), then every pull-off the follow in ρ
-/// takes on its way down to where it stops converging (or [`FLOOR`]).
-#[cfg(feature = "cli")]
-pub(crate) fn store() -> Result<Stored> {
-    let gap = Gap::cylinders();
-    let (top, _) = pull_off_on(gap, STORED_FROM_RHO, &Ladder::conformal())?;
-    let mut pull_offs = vec![StoredPullOff::of(&top, None)?];
-    let mut recorded = Ok(());
-    let followed = pull_off_followed_in_arclength_visiting(&top, FLOOR, &mut |st| {
-        if recorded.is_ok() {
-            match StoredPullOff::of(st, pull_offs.last()) {
-                Ok(p) => pull_offs.push(p),
-                Err(e) => recorded = Err(e),
-            }
-        }
-    });
-    recorded?;
-    let why_stopped = match followed {
-        Ok(_) => format!("reached rho = {FLOOR}"),
-        Err(Error::StopsInRho { what, .. }) => what,
-        Err(e) => return Err(e),
-    };
-    let reached = pull_offs.last().map_or(STORED_FROM_RHO, |p| p.rho);
-    Ok(Stored {
-        generated_by: "thinjkr exact store-pull-offs --out solver/data/exact_pull_offs.json".into(),
-        pull_offs,
-        reached,
-        why_stopped,
-    })
 }
 
 #[cfg(test)]

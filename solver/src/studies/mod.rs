@@ -1,8 +1,9 @@
 //! The command line's studies of the exact family (issue 32): where the
 //! loading path and the unloading trace begin (`start`), the loading path
 //! with its jump rule (`loading`, `descent`), the unloading trace
-//! (`unloading`), and the reach in ρ of each contact size with the windows
-//! it leaves (`reach`). They answer `thinjkr exact pull-off --unloading`
+//! (`unloading`), the reach in ρ of each contact size with the windows
+//! it leaves (`reach`), the map of where the search finds no state
+//! (`no_state_map`) and the stored pull-offs (`stored_pull_offs`). They answer `thinjkr exact pull-off --unloading`
 //! and `thinjkr exact reach`, and compile with the feature `cli` only:
 //! the engine they drive (`exact`) needs none of them.
 //!
@@ -12,6 +13,8 @@
 
 pub(crate) mod descent;
 pub(crate) mod loading;
+pub(crate) mod no_state_map;
 pub(crate) mod reach;
 pub(crate) mod start;
+pub(crate) mod stored_pull_offs;
 pub(crate) mod unloading;
