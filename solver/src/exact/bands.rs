@@ -619,7 +619,7 @@ pub struct AllStates {
 }
 
 /// The exact state at `control` where no route found one (`err`, from
-/// [`super::at_with`] with the truncations `tries`): on the arms beside
+/// [`super::resolve::at_with`] climbing the ladder): on the arms beside
 /// each gap of the model's screen (ā within 15 % of the circle's ā at that
 /// control, `a_circle`) whose neighbours' values of the control lie on
 /// either side of it, traced through their folds and on along their

@@ -1239,7 +1239,7 @@ impl Exact {
     /// The state [`Exact::at`] finds, resolved or not; first, where given,
     /// by Newton at the control from `coarser`, the state at the same
     /// control with fewer modes (its contour padded with zeros; accepted
-    /// near it, with its route): the escalation of [`super::at_with`].
+    /// near it, with its route): the escalation of [`super::resolve::at_with`].
     pub(crate) fn find(&self, control: Hold, coarser: Option<&ExactState>) -> Result<ExactState> {
         if let Some(c) = coarser {
             if let Ok(mut st) = self.solve_at(control, &c.contour, c.delta_bar) {

@@ -178,8 +178,8 @@ fn not_converged(rho: f64, bc_error: f64, modes: usize, last: Error) -> Error {
 /// boundary error is 4.8e-4, with 40 5.1e-6).
 const FOLLOWS_THE_FAMILY: usize = 24;
 
-/// The default escalation ([`Ladder::conformal`]): 12, 16, 20, 24, 28,
-/// 32, 40, 48, 56, 64, 80 and 96 contour modes (of which [`resolved`]
+/// The default escalation (the conformal ladder): 12, 16, 20, 24, 28,
+/// 32, 40, 48, 56, 64, 80 and 96 contour modes (of which the escalation
 /// skips those predicted not to converge), each with `POINTS_PER_MODE`
 /// quadrature points per mode.
 pub fn default_tries() -> Vec<Truncation> {
@@ -936,7 +936,7 @@ pub(crate) fn pull_off_followed_in_arclength(start: &ExactState, rho: f64) -> Re
 
 /// [`pull_off_followed_in_arclength`], handing every pull-off it takes on
 /// the way (resolved, without its stability) to `visit` (the pull-offs
-/// stored as starts, [`super::seeds`]). The escalation begins at the rung
+/// stored as starts, [`super::stored`]). The escalation begins at the rung
 /// of `start`'s modes when `start` is in the arclength representation.
 pub(crate) fn pull_off_followed_in_arclength_visiting(
     start: &ExactState,
