@@ -47,6 +47,7 @@
 //! `progress` (the gap being settled), rayon.
 
 use super::ladder::Ladder;
+use super::same::Same;
 use super::seed::Guess;
 use super::{Contour, Exact};
 use crate::control::Hold;
@@ -441,7 +442,7 @@ fn curve(gap: super::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>]) -> V
                         )
                     })
                     .ok()
-                    .filter(|e| e.bc_error <= super::RESOLVED && (e.s / m.s - 1.0).abs() <= 0.05)
+                    .filter(|e| e.bc_error <= super::RESOLVED && Same::SAME_SHAPE.of(e, m))
                     .map(|e| e.force_bar)
                 });
                 CurvePoint {
@@ -593,7 +594,7 @@ pub(crate) fn states_at_on(
                 if !out
                     .states
                     .iter()
-                    .any(|o: &super::ExactState| (o.a_bar - st.a_bar).abs() < 1e-6)
+                    .any(|o: &super::ExactState| Same::FOUND_TWICE.of(o, &st))
                 {
                     out.states.push(st);
                 }
@@ -799,10 +800,7 @@ fn past_folds(
                         st.truncation.modes
                     ),
                 )),
-                Ok(mut st)
-                    if (st.a_bar - crossing.a_bar).abs() <= 0.01
-                        && (st.s / crossing.s - 1.0).abs() <= 0.01 =>
-                {
+                Ok(mut st) if Same::AT_THE_CROSSING.of(&st, &crossing) => {
                     st.route = super::Route::PastFold;
                     out.states.push(st);
                 }

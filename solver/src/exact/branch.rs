@@ -17,6 +17,7 @@
 //! `exact::seed` (the gap's seed, the richest member's state, as a start).
 
 use super::gap::GapAt;
+use super::same::Same;
 use super::seed::Guess;
 use super::{Exact, ExactState, Gap, Route};
 use crate::continuation::{self, EventKind, Family, Linear, On, Settings, Watch};
@@ -517,7 +518,7 @@ impl Exact {
     ) -> Result<(ExactState, Vec<Event>)> {
         let from_coarser = coarser.and_then(|c| {
             let st = self.solve_from(c.a_bar + ABOVE_COARSER_PULL_OFF, c).ok()?;
-            (st.bc_error <= 1e-2 && (st.s / c.s - 1.0).abs() <= 0.05).then_some((st, c.route))
+            Same::SAME_SIDE.of(&st, c).then_some((st, c.route))
         });
         let (start, route) = match from_coarser {
             Some(found) => found,
@@ -766,7 +767,7 @@ impl Exact {
         // model's offset
         let delta = po.delta_bar + self.circle_delta(a) - self.circle_delta(po.a_bar);
         let st = self.solve(a, &ellipse, delta).ok()?;
-        (st.bc_error <= 1e-2 && (st.s / po.s - 1.0).abs() <= 0.05).then_some(st)
+        Same::SAME_SIDE.of(&st, po).then_some(st)
     }
 
     /// ā at which the pull-off's trace from the circle starts: the seeding
@@ -1169,13 +1170,8 @@ impl Exact {
         let ellipse = super::Contour::ellipse(guess.a_bar, guess.b_bar, nm);
         // Newton at the control itself from the model's ellipse: the state
         // when it lands near the model's and near-elliptical
-        let near = |st: &ExactState| {
-            st.bc_error <= 1e-2
-                && (st.a_bar / guess.a_bar - 1.0).abs() <= 0.02
-                && (st.s / guess.s - 1.0).abs() <= 0.05
-        };
         if let Ok(mut st) = self.solve_at(control, &ellipse, guess.delta_bar) {
-            if near(&st) {
+            if Same::NEAR_THE_START.of(&st, &guess) {
                 st.route = Route::FromModel;
                 return Some(st);
             }
@@ -1186,7 +1182,7 @@ impl Exact {
         let start = start.ok()?;
         // the exact state near the model's: same side of the circle's
         // bifurcations (a contour within a few per cent of the model's)
-        if (start.s / guess.s - 1.0).abs() > 0.05 {
+        if !Same::SAME_SHAPE.of(&start, &guess) {
             return None;
         }
         let here = control.excess(start.a_bar, start.delta_bar, start.force_bar);
@@ -1206,7 +1202,7 @@ impl Exact {
         let mut st = found?;
         // near-elliptical and near the model's (an unresolved answer is
         // still returned: more contour modes may resolve it)
-        if st.bc_error > 1e-2 || (st.a_bar / guess.a_bar - 1.0).abs() > 0.02 {
+        if !Same::TRACED_NEAR_THE_START.of(&st, &guess) {
             return None;
         }
         st.route = Route::FromModel;
@@ -1243,10 +1239,7 @@ impl Exact {
     pub(crate) fn find(&self, control: Hold, coarser: Option<&ExactState>) -> Result<ExactState> {
         if let Some(c) = coarser {
             if let Ok(mut st) = self.solve_at(control, &c.contour, c.delta_bar) {
-                if st.bc_error <= 1e-2
-                    && (st.a_bar / c.a_bar - 1.0).abs() <= 0.02
-                    && (st.s / c.s - 1.0).abs() <= 0.05
-                {
+                if Same::NEAR_THE_START.of(&st, c) {
                     st.route = c.route;
                     return Ok(st);
                 }

@@ -56,6 +56,7 @@ mod resolve;
 pub(crate) mod rho_fold;
 pub(crate) mod rho_path;
 pub(crate) mod rho_walk;
+pub(crate) mod same;
 pub(crate) mod seed;
 pub mod stability;
 pub(crate) mod stored;

@@ -16,6 +16,7 @@
 use super::rho_path::Followed;
 use super::rho_walk::{walk_down, Attempt, Stopped};
 use super::ladder::Ladder;
+use super::same::Same;
 use super::{bands, branch, larger_contacts, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
 use crate::error::{Error, Result};
@@ -685,7 +686,7 @@ fn again_within_its_size(
     route: Route,
 ) -> Result<ExactState> {
     let mut st = ex.solve_at(control, &from.contour, from.delta_bar)?;
-    if (st.a_bar / from.a_bar - 1.0).abs() > 1e-3 {
+    if !Same::AGAIN.of(&st, from) {
         return Err(Error::NoState(format!(
             "with {} modes Newton at {control} from {of} lands at a = {:.4}, not at its a = {:.4}",
             ex.truncation.modes, st.a_bar, from.a_bar

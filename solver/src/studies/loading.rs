@@ -45,6 +45,7 @@ use crate::control::Hold;
 use crate::cutoff::Cutoff;
 use crate::error::Result;
 use crate::exact::ladder::Ladder;
+use crate::exact::same::Same;
 use crate::exact::{Exact, ExactState, Truncation, CONVERGED, RESOLVED};
 
 #[cfg(test)]
@@ -260,10 +261,10 @@ fn newly_unstable(held: &ExactState, next: &ExactState, cutoff: Cutoff) -> bool 
         .any(|m| before.iter().all(|b| b.n != m.n))
 }
 
-/// Whether `b` is the state `a` itself (ā and s to 1e-6): a descent that
-/// stays where it started.
+/// Whether `b` is the state `a` itself ([`Same::ITSELF`]): a descent
+/// that stays where it started.
 fn same_state(a: &ExactState, b: &ExactState) -> bool {
-    (b.a_bar - a.a_bar).abs() <= 1e-6 * a.a_bar && (b.s - a.s).abs() <= 1e-6
+    Same::ITSELF.of(b, a)
 }
 
 /// The loading path from `start` (the state at F̄ = [`crate::exact::START_FORCE`], else
@@ -821,10 +822,7 @@ pub(crate) fn reported(
         unresolved_turned_unstable_at: passed.iter().map(|p| p.0).collect(),
         first_lost_force: lost.map(|s| s.force_bar),
         first_lost_a_bar: lost.map(|s| s.a_bar),
-        reaches: lost.map(|s| {
-            (s.force_bar - pull_off.force_bar).abs() <= 1e-6 * pull_off.force_bar.abs()
-                && (s.a_bar - pull_off.a_bar).abs() <= 1e-3 * pull_off.a_bar
-        }),
+        reaches: lost.map(|s| Same::THE_PULL_OFF.of(s, pull_off)),
         comes_off,
         why_not_settled: why,
     }

@@ -124,9 +124,7 @@ fn path(pull_off: &ExactState, start: &Result<Start>) -> std::result::Result<Pat
         if i > 0 && st.force_bar > points[i - 1].state.force_bar {
             // the force rises: the minimum lies between the last two points
             let minimum = first_minimum(&branch, &points[i - 1].state);
-            let reaches = (minimum.force_bar - pull_off.force_bar).abs()
-                <= 1e-6 * pull_off.force_bar.abs()
-                && (minimum.a_bar - pull_off.a_bar).abs() <= 1e-3 * pull_off.a_bar;
+            let reaches = crate::exact::same::Same::THE_PULL_OFF.of(&minimum, pull_off);
             let bands_crossed = branch
                 .events
                 .iter()
