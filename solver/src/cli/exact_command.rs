@@ -369,7 +369,7 @@ fn no_band_words(map: &crate::exact::bands::BandMap) -> Option<&'static str> {
 /// `thinjkr exact bands`.
 pub(crate) fn bands(rho: f64, from: f64, to: f64, json: bool) -> Result<()> {
     let spin = crate::cli::output::Spinner::start("screening for the bands");
-    let map = crate::exact::bands::bands(rho, from, to)?;
+    let map = crate::studies::band_map::bands(rho, from, to)?;
     drop(spin);
     if json {
         outln!("{}", Document::Bands { bands: map }.to_json());

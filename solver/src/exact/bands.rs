@@ -39,9 +39,12 @@
 //! looked for on the arms beside a gap traced past their folds
 //! (`past_folds_or_band`, [`states_at`]).
 //!
-//! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], [`bands`],
-//! [`states_at`], `past_folds_or_band`, `documents_of` (the maps' JSON
-//! lines). May use: `control`, `exact`
+//! The map itself is drawn by the study `studies::band_map` (`thinjkr
+//! exact bands`) from the screen and the settling here.
+//!
+//! Owns: [`BandEdge`], [`Band`], [`BandMap`], [`CurvePoint`], `screen`,
+//! `settle`, [`states_at`], `past_folds_or_band`, `documents_of` (the maps'
+//! JSON lines). May use: `control`, `exact`
 //! (its family and traces; the screen by the gap's seed, `exact::seed`),
 //! `error`, `newton` (the caller's stop flag, carried to rayon's threads),
 //! `progress` (the gap being settled), rayon.
@@ -130,9 +133,6 @@ pub struct CurvePoint {
     pub exact: Option<f64>,
 }
 
-/// The exact family's F̄(ā) is sampled at every this many grid points of
-/// the screen (0.05 in ā).
-pub(crate) const CURVE_EVERY: usize = 5;
 
 /// The band map at one ρ over a range of ā.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -168,7 +168,7 @@ pub struct BandMap {
 /// `to` in steps of [`STEP`] (`None` where there is none), with the grid
 /// and the model.
 #[allow(clippy::type_complexity)]
-fn screen(
+pub(crate) fn screen(
     gap: super::Gap,
     rho: f64,
     from: f64,
@@ -221,15 +221,17 @@ fn screen(
 }
 
 /// A run of grid points without a near-elliptic state.
-enum Gap {
+pub(crate) enum Gap {
     /// Bracketed by the near-elliptic points lo and hi.
     Inside(usize, usize),
-    /// At an end of the grid: its first and last points.
+    /// At an end of the grid: its first and last points (the band map's
+    /// open ends).
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))]
     AtEnd(usize, usize),
 }
 
 /// The runs of grid points without a near-elliptic state.
-fn gaps(states: &[Option<Guess>]) -> Vec<Gap> {
+pub(crate) fn gaps(states: &[Option<Guess>]) -> Vec<Gap> {
     let (count, mut out, mut j) = (states.len(), Vec::new(), 0);
     while j < count {
         if states[j].is_some() {
@@ -252,7 +254,7 @@ fn gaps(states: &[Option<Guess>]) -> Vec<Gap> {
 /// nearest first, up to five grid points away on either side (an exact
 /// start that fails next to the gap may succeed a little further out).
 #[allow(clippy::type_complexity)]
-fn beside(states: &[Option<Guess>], lo: usize, hi: usize) -> (Vec<&Guess>, Vec<&Guess>) {
+pub(crate) fn beside(states: &[Option<Guess>], lo: usize, hi: usize) -> (Vec<&Guess>, Vec<&Guess>) {
     (
         states[..=lo]
             .iter()
@@ -269,115 +271,16 @@ fn beside(states: &[Option<Guess>], lo: usize, hi: usize) -> (Vec<&Guess>, Vec<&
 }
 
 /// The grid step of the screen in ā.
-const STEP: f64 = 0.01;
+pub(crate) const STEP: f64 = 0.01;
 
 /// How far beyond a gap's far side, in ā, an arm traced into the gap may go
 /// before it is said to cross the gap without folding.
 const BEYOND_GAP: f64 = 0.05;
 
-/// The band map at `rho` for ā in [`from`, `to`] (see the module).
-pub fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
-    let gap = super::Gap::cylinders();
-    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-    crate::error::check_range("from", from, from.is_finite() && from > 0.5, "(0.5, to)")?;
-    crate::error::check_range("to", to, to.is_finite() && to > from, "(from, from + 10]")?;
-    crate::progress::stage(format!(
-        "the screen by the seed's family, a from {from} to {to}"
-    ));
-    let (model, grid, states) = screen(gap, rho, from, to)?;
-    let holes = gaps(&states);
-    let mut map = BandMap {
-        rho,
-        range: [from, to],
-        step: STEP,
-        screen: model.name(),
-        bands: Vec::new(),
-        crossed: Vec::new(),
-        unsettled: Vec::new(),
-        open_ends: Vec::new(),
-        probed: Vec::new(),
-        curve: curve(gap, rho, &grid, &states),
-    };
-    let count = holes.len();
-    for (k, hole) in holes.into_iter().enumerate() {
-        crate::progress::stage(format!(
-            "gap {} of {count} the screen found, settled by the exact family's folds",
-            k + 1
-        ));
-        match hole {
-            Gap::Inside(lo, hi) => {
-                let (left, right) = beside(&states, lo, hi);
-                let screened = [grid[lo], grid[hi]];
-                match settle(gap, rho, &left, &right, STEP) {
-                    Ok(Ok(band)) => map.bands.push(band),
-                    Ok(Err(why)) => map.crossed.push(Crossed {
-                        screened,
-                        why: why.words("crosses the gap"),
-                    }),
-                    Err(e) => map.unsettled.push(Crossed {
-                        screened,
-                        why: e.to_string(),
-                    }),
-                }
-            }
-            Gap::AtEnd(first, last) => map.open_ends.push([grid[first], grid[last]]),
-        }
-    }
-    probe_neutral_points(gap, &mut map, &grid, &states)?;
-    Ok(map)
-}
-
 /// The step (in the family's unknowns) of the traces that probe the
 /// neutral points: at ρ = 0.9 the mode-8 band is 0.003 wide in ā
 /// (3.0435 < ā < 3.0464), and a trace in steps of 0.01 can step across it.
 pub(crate) const PROBE_STEP: f64 = 0.002;
-
-/// Probe each neutral point of the circle ā³ = 4(n − 1) that the screen
-/// passed without a gap ([`unscreened_neutral_points`]): the exact family
-/// is traced towards it from the model's states 0.05 or more below and
-/// above, in steps of [`PROBE_STEP`], as a gap is settled; two folds that
-/// leave an interval between them are a band.
-fn probe_neutral_points(
-    gap: super::Gap,
-    map: &mut BandMap,
-    grid: &[f64],
-    states: &[Option<Guess>],
-) -> Result<()> {
-    let found: Vec<[f64; 2]> = map
-        .bands
-        .iter()
-        .map(|b| [b.lower.a_bar, b.upper.a_bar])
-        .chain(map.crossed.iter().map(|c| c.screened))
-        .chain(map.unsettled.iter().map(|c| c.screened))
-        .chain(map.open_ends.iter().copied())
-        .collect();
-    let mut probes = Vec::new();
-    for (n, a_n, left, right) in
-        unscreened_neutral_points(&gap.at(1.0)?, map.range, grid, states, &found)
-    {
-        let outcome = if left.is_empty() || right.is_empty() {
-            "the model has no near-elliptic state beside it".to_string()
-        } else {
-            match settle(gap, map.rho, &left, &right, PROBE_STEP) {
-                Ok(Ok(band)) => {
-                    map.bands.push(band);
-                    "band".to_string()
-                }
-                Ok(Err(why)) => why.words("passes the neutral point"),
-                Err(e) => format!("not settled: {e}"),
-            }
-        };
-        probes.push(Probe {
-            n,
-            a_bar: a_n,
-            outcome,
-        });
-    }
-    map.bands
-        .sort_by(|x, y| x.lower.a_bar.total_cmp(&y.lower.a_bar));
-    map.probed = probes;
-    Ok(())
-}
 
 /// The circle's neutral points ā_n = (4(n − 1))^(1/3), n even, 0.1 or
 /// more inside `range` and 0.1 or more from every interval of `found` (the
@@ -385,7 +288,7 @@ fn probe_neutral_points(
 /// the grid 0.05 or more below it and above it (up to five each, nearest
 /// first, consecutive).
 #[allow(clippy::type_complexity)]
-fn unscreened_neutral_points<'a>(
+pub(crate) fn unscreened_neutral_points<'a>(
     circle: &super::gap::GapAt,
     range: [f64; 2],
     grid: &[f64],
@@ -417,40 +320,6 @@ fn unscreened_neutral_points<'a>(
                 .map_while(|(_, s)| s.as_ref())
                 .collect();
             (n, a_n, left, right)
-        })
-        .collect()
-}
-
-/// F̄(ā) over the screen: the model's at every grid point, the exact
-/// family's at every [`CURVE_EVERY`]th, each exact state by Newton at that ā
-/// from the model's ellipse there (truncations escalated as for every
-/// exact state, [`super::resolved`]), kept when resolved and near the
-/// model's state (s within 5 %).
-fn curve(gap: super::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>]) -> Vec<CurvePoint> {
-    let stop = crate::newton::stop_flag();
-    grid.par_iter()
-        .zip(states)
-        .enumerate()
-        .map(|(j, (&a_bar, st))| {
-            crate::newton::carried(stop.clone(), || {
-                let exact = st.as_ref().filter(|_| j % CURVE_EVERY == 0).and_then(|m| {
-                    super::resolved(gap, rho, &Ladder::conformal(), |ex| {
-                        ex.solve(
-                            m.a_bar,
-                            &Contour::ellipse(m.a_bar, m.b_bar, ex.truncation().modes),
-                            m.delta_bar,
-                        )
-                    })
-                    .ok()
-                    .filter(|e| e.bc_error <= super::RESOLVED && Same::SAME_SHAPE.of(e, m))
-                    .map(|e| e.force_bar)
-                });
-                CurvePoint {
-                    a_bar,
-                    model: st.as_ref().map(|m| m.force_bar),
-                    exact,
-                }
-            })
         })
         .collect()
 }
@@ -835,7 +704,7 @@ struct PastFolds {
 /// Why a gap between the model's near-elliptic states holds no band
 /// ([`settle`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum NoBand {
+pub(crate) enum NoBand {
     /// The arms' folds overlap (the lower arm folds at ā = `lower`, the
     /// upper at ā = `upper`): near-elliptic states exist at every ā between.
     Overlap { lower: f64, upper: f64 },
@@ -847,7 +716,8 @@ enum NoBand {
 impl NoBand {
     /// In words, `passes` saying what the family passed without folding
     /// ("crosses the gap", "passes the neutral point").
-    fn words(self, passes: &str) -> String {
+    #[cfg(feature = "cli")]
+    pub(crate) fn words(self, passes: &str) -> String {
         match self {
             NoBand::Overlap { lower, upper } => format!(
                 "the arms' folds overlap (the lower arm folds at a = {lower:.4}, the upper at a = {upper:.4}): near-elliptic states exist at every a between"
@@ -862,7 +732,7 @@ impl NoBand {
 /// Settle one candidate gap between the model's near-elliptic states
 /// `left` and `right`, tracing in steps of at most `step`: the band, or why
 /// there is none.
-fn settle(
+pub(crate) fn settle(
     gap: super::Gap,
     rho: f64,
     left: &[&Guess],

@@ -3,7 +3,8 @@
 //! with its jump rule (`loading`, `descent`), the unloading trace
 //! (`unloading`), the reach in ρ of each contact size with the windows
 //! it leaves (`reach`), the map of where the search finds no state
-//! (`no_state_map`) and the stored pull-offs (`stored_pull_offs`). They answer `thinjkr exact pull-off --unloading`
+//! (`no_state_map`), the stored pull-offs (`stored_pull_offs`) and the
+//! band map (`band_map`). They answer `thinjkr exact pull-off --unloading`
 //! and `thinjkr exact reach`, and compile with the feature `cli` only:
 //! the engine they drive (`exact`) needs none of them.
 //!
@@ -11,6 +12,7 @@
 //! shapes of their outcomes), `accuracy` (the ρ of its table), `control`,
 //! `continuation`, `cutoff`, `error`, `newton`, `progress`.
 
+pub(crate) mod band_map;
 pub(crate) mod descent;
 pub(crate) mod loading;
 pub(crate) mod no_state_map;
