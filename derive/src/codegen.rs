@@ -800,7 +800,10 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
     };
     let non_adhesive_body = opt(has(fs, "non_adhesive_rho"), quote!(non_adhesive_rho(s)));
     let zero_force_body = opt(has(fs, "zero_force_rho"), quote!(zero_force_rho(s)));
-    let near_circular_body = opt(has(fs, "near_circular_ds_dmu"), quote!(near_circular_ds_dmu(a0)));
+    let near_circular_body = opt(
+        has(fs, "near_circular_ds_dmu"),
+        quote!(near_circular_ds_dmu(a0)),
+    );
     let critical_body = opt(
         has(fs, "axisymmetric_critical"),
         quote!(axisymmetric_critical()[0]),
@@ -845,7 +848,6 @@ fn model_impl(md: &ModelDerivation, fs: &[Function]) -> TokenStream {
         }
     }
 }
-
 
 /// The static `INFO` of one model: its name, title, closure, and which
 /// limits it has (and why one is missing).

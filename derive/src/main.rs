@@ -202,11 +202,9 @@ fn generate(args: &[String]) -> ExitCode {
         .iter()
         .map(|o| root.join(&o.path).exists())
         .collect();
-    let written =
-        thinjkr_derive::generate::write_all(&root, &outputs).and_then(|changed| {
-            thinjkr_derive::generate::remove_stale(&root, &outputs)
-                .map(|gone| (changed, gone))
-        });
+    let written = thinjkr_derive::generate::write_all(&root, &outputs).and_then(|changed| {
+        thinjkr_derive::generate::remove_stale(&root, &outputs).map(|gone| (changed, gone))
+    });
     match written {
         Ok((changed, gone)) => {
             for p in &gone {

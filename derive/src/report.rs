@@ -161,11 +161,7 @@ fn step_4(o: &mut String, d: &Derivation) {
     o.push_str("## Step 4. Scaling (17): (15), (19), (20), (18)\n\n");
     o.push_str("The scales enter through one length L = (2R₁²Δγ/m)^(1/6): a = āL, δ = δ̄L²/R₁, √(2mΔγ) = mL³/R₁, F = F̄ mL⁶/R₁, with R₂ = ρR₁ and b = sa. The reduction fails unless L, m and R₁ drop out, which they do.\n\n");
     for (k, x) in d.xi.iter().enumerate() {
-        eq(
-            o,
-            &format!("ξ from equation {} (15)_{}:", k + 1, k + 1),
-            x,
-        );
+        eq(o, &format!("ξ from equation {} (15)_{}:", k + 1, k + 1), x);
     }
     for (k, r) in d.residuals.iter().enumerate() {
         eq(

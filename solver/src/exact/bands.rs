@@ -133,7 +133,6 @@ pub struct CurvePoint {
     pub exact: Option<f64>,
 }
 
-
 /// The band map at one ρ over a range of ā.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -373,7 +372,14 @@ pub fn states_at(
     to: f64,
     tries: &[super::Truncation],
 ) -> Result<AllStates> {
-    states_at_on(super::Gap::cylinders(), rho, control, from, to, &Ladder::of(tries.to_vec()))
+    states_at_on(
+        super::Gap::cylinders(),
+        rho,
+        control,
+        from,
+        to,
+        &Ladder::of(tries.to_vec()),
+    )
 }
 
 /// [`states_at`] on `gap`.

@@ -262,7 +262,13 @@ mod tests {
 
     #[test]
     fn starting_at_takes_the_first_rung_as_fine_as_the_start() {
-        assert_eq!(Ladder::arclength().starting_at(100).rung().unwrap().modes, 128);
-        assert_eq!(Ladder::arclength().starting_at(400).rung().unwrap().modes, 320);
+        assert_eq!(
+            Ladder::arclength().starting_at(100).rung().unwrap().modes,
+            128
+        );
+        assert_eq!(
+            Ladder::arclength().starting_at(400).rung().unwrap().modes,
+            320
+        );
     }
 }

@@ -67,8 +67,8 @@ use crate::error::{Error, Result};
 use bie::{solve_dirichlet, solve_dirichlet_symmetric, ContourSamples, Grid};
 pub(crate) use gap::Gap;
 use gap::GapAt;
-use nalgebra::{Complex, DMatrix, DVector};
 pub(crate) use ladder::MAX_ESCALATED_MODES;
+use nalgebra::{Complex, DMatrix, DVector};
 pub use resolve::{
     at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
 };

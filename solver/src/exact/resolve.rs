@@ -13,9 +13,9 @@
 //! stage a spinner shows), `newton` (the
 //! caller's stop flag).
 
+use super::ladder::Ladder;
 use super::rho_path::Followed;
 use super::rho_walk::{walk_down, Attempt, Stopped};
-use super::ladder::Ladder;
 use super::same::Same;
 use super::{bands, branch, larger_contacts, Exact, ExactState, Gap, Route, Truncation};
 use crate::control::Hold;
@@ -632,16 +632,18 @@ fn from_larger_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactS
         Error::PastRhoFold { .. } => Err(conformal),
         // where the conformal form's series no longer resolves the family:
         // again from the start, in the arclength representation
-        _ => continued_in_rho_along(start, rho, control, &Ladder::arclength()).map_err(|arclength| {
-            match arclength {
-                Error::PastRhoFold { .. } => arclength,
-                _ => Error::NoState(format!(
-                    "{}; in the arclength representation: {}",
-                    conformal.detail(),
-                    arclength.detail()
-                )),
-            }
-        }),
+        _ => {
+            continued_in_rho_along(start, rho, control, &Ladder::arclength()).map_err(|arclength| {
+                match arclength {
+                    Error::PastRhoFold { .. } => arclength,
+                    _ => Error::NoState(format!(
+                        "{}; in the arclength representation: {}",
+                        conformal.detail(),
+                        arclength.detail()
+                    )),
+                }
+            })
+        }
     })
 }
 
@@ -735,7 +737,9 @@ pub(crate) fn continued_in_rho_along(
     by_delta_or_force(control)?;
     let mut ladder = ladder.clone().starting_at(start.truncation.modes);
     let Some(mut t) = ladder.rung() else {
-        return Err(Error::NoState("no truncation to continue in rho with".into()));
+        return Err(Error::NoState(
+            "no truncation to continue in rho with".into(),
+        ));
     };
     let mut st = start.clone();
     let walked = walk_down(
@@ -886,12 +890,7 @@ fn converged_only_to(start: &ExactState, st: &ExactState, control: Hold, why: &s
 /// The exact state at `control` climbing `ladder`
 /// ([`resolved`]), each after the first started from the state the one
 /// before found (resolved or not).
-pub(crate) fn at_with(
-    gap: Gap,
-    rho: f64,
-    control: Hold,
-    ladder: &Ladder,
-) -> Result<ExactState> {
+pub(crate) fn at_with(gap: Gap, rho: f64, control: Hold, ladder: &Ladder) -> Result<ExactState> {
     at_with_visiting(gap, rho, control, ladder, &mut |_| {})
 }
 
@@ -957,7 +956,9 @@ pub(crate) fn pull_off_followed_in_arclength_visiting(
         |at| at.rho,
         |at, next| {
             let Some(t) = ladder.rung() else {
-                return Err(Error::NoState("no truncation to follow the pull-off with".into()));
+                return Err(Error::NoState(
+                    "no truncation to follow the pull-off with".into(),
+                ));
             };
             crate::progress::stage(format!(
                 "the pull-off followed in rho from rho = {}: at rho = {}, {} modes of each sign",

@@ -271,8 +271,8 @@ fn search(last: &ExactState, control: Hold, t: Truncation) -> Option<(RhoFold, f
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exact::resolve::{at_with, continued_in_rho_along};
     use crate::exact::ladder::Ladder;
+    use crate::exact::resolve::{at_with, continued_in_rho_along};
     use crate::exact::{Gap, Truncation};
 
     /// The near-elliptic family at F̄ = 0, continued in ρ from its state at
@@ -285,12 +285,21 @@ mod tests {
     /// joins.
     #[test]
     fn the_zero_force_family_turns_back_in_rho() {
-        let start = at_with(Gap::cylinders(), 0.4, Hold::Force(0.0), &Ladder::conformal()).unwrap();
+        let start = at_with(
+            Gap::cylinders(),
+            0.4,
+            Hold::Force(0.0),
+            &Ladder::conformal(),
+        )
+        .unwrap();
         let last = continued_in_rho_along(
             &start,
             0.36,
             Hold::Force(0.0),
-            &Ladder::of(vec![Truncation::in_arclength(48), Truncation::in_arclength(64)]),
+            &Ladder::of(vec![
+                Truncation::in_arclength(48),
+                Truncation::in_arclength(64),
+            ]),
         )
         .unwrap();
         let ladder = Ladder::of([48, 64, 96].map(Truncation::in_arclength).to_vec());

@@ -265,8 +265,8 @@ pub(crate) fn follow_with(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exact::resolve::{at_with, continued_in_rho_along};
     use crate::exact::ladder::Ladder;
+    use crate::exact::resolve::{at_with, continued_in_rho_along};
     use crate::exact::{Gap, Truncation};
 
     /// At F̄ = 10 the near-elliptic family continued from ρ = 0.4 (56

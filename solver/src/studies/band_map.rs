@@ -130,7 +130,12 @@ fn probe_neutral_points(
 /// from the model's ellipse there (truncations escalated as for every
 /// exact state, `exact::resolved`), kept when resolved and near the
 /// model's state (s within 5 %).
-fn curve(gap: crate::exact::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>]) -> Vec<CurvePoint> {
+fn curve(
+    gap: crate::exact::Gap,
+    rho: f64,
+    grid: &[f64],
+    states: &[Option<Guess>],
+) -> Vec<CurvePoint> {
     let stop = crate::newton::stop_flag();
     grid.par_iter()
         .zip(states)
@@ -158,7 +163,6 @@ fn curve(gap: crate::exact::Gap, rho: f64, grid: &[f64], states: &[Option<Guess>
         })
         .collect()
 }
-
 
 #[cfg(test)]
 mod tests {
