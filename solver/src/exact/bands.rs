@@ -590,14 +590,14 @@ pub(crate) fn past_folds_or_band(
 /// each traced into the gap through its first fold and on past it
 /// ([`Exact::crossings_past_fold`], steps of at most `step`), from the
 /// exact state at the first of them where Newton converges, with the first
-/// truncation of `tries` that converges it (boundary error ≤
+/// rung of `ladder` that converges it (boundary error ≤
 /// [`super::CONVERGED`]; a single truncation: ≤ [`super::RESOLVED`]),
 /// until ā passes [`BEYOND_GAP`] beyond the gap's far side. Each crossing
-/// is solved again by Newton at the control with the truncations of
-/// `tries` from its own on ([`super::resolved`]), and kept when that state
-/// lies where the trace crossed (ā within 0.01, s within 1 %); route
-/// [`super::Route::PastFold`]. Where `tries` is an escalation (more than
-/// one), the arclength representation's rungs above its last follow it,
+/// is solved again by Newton at the control with the rungs of `ladder`
+/// from its own on ([`super::resolved`]), and kept when that state lies
+/// where the trace crossed ([`Same::AT_THE_CROSSING`]); route
+/// [`super::Route::PastFold`]. Where `ladder` is an escalation (more than
+/// one rung), the arclength representation's rungs above its last follow it,
 /// for the start and the crossings alike: an escalation's answer is
 /// converged, and a single rung left of it would be answered as a user's
 /// choice of modes, resolved only (at F̄ = 0 for ρ = 0.36 the conformal

@@ -736,11 +736,6 @@ pub(crate) fn continued_in_rho_along(
 ) -> Result<ExactState> {
     by_delta_or_force(control)?;
     let mut ladder = ladder.clone().starting_at(start.truncation.modes);
-    let Some(mut t) = ladder.rung() else {
-        return Err(Error::NoState(
-            "no truncation to continue in rho with".into(),
-        ));
-    };
     let mut st = start.clone();
     let walked = walk_down(
         &mut st,
@@ -748,6 +743,11 @@ pub(crate) fn continued_in_rho_along(
         super::rho_walk::AT_A_CONTROL,
         |st| st.rho,
         |st, next| {
+            let Some(t) = ladder.rung() else {
+                return Err(Error::NoState(
+                    "no truncation to continue in rho with".into(),
+                ));
+            };
             crate::progress::stage(format!(
                 "continued in rho at {control} from rho = {}: at rho = {}, {} modes",
                 crate::error::short(start.rho),
@@ -758,10 +758,7 @@ pub(crate) fn continued_in_rho_along(
             Ok(match ex.solve_at(control, &st.contour, st.delta_bar) {
                 Ok(n) if n.bc_error <= CONVERGED => Attempt::Took(n),
                 // (the climb in the guard: a rung up where there is one)
-                Ok(n) if n.bc_error <= 1e-2 && ladder.escalate() => {
-                    t = ladder.rung().unwrap_or(t);
-                    Attempt::Again
-                }
+                Ok(n) if n.bc_error <= 1e-2 && ladder.escalate() => Attempt::Again,
                 missed => Attempt::Missed(missed),
             })
         },

@@ -112,7 +112,7 @@ fn rho_at(ex: &RefCell<Exact>, control: Hold, a_bar: f64, near: &OnCurve) -> Res
 /// stopped for another reason: a band, a failed step), or where no
 /// truncation tried resolves it.
 pub(crate) fn rho_fold(last: &ExactState, control: Hold, ladder: &Ladder) -> Option<RhoFold> {
-    let from_last = Ladder::of(ladder.rungs().to_vec()).starting_at(last.truncation.modes);
+    let from_last = ladder.clone().starting_at(last.truncation.modes);
     from_last.from_rung().iter().find_map(|&t| {
         let (fold, bc_error) = search(last, control, t)?;
         (bc_error <= super::CONVERGED).then_some(fold)
