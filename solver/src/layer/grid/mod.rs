@@ -1,0 +1,500 @@
+//! The layer of finite thickness at any ρ, on a grid (issue 71): adhesive
+//! contact of two coatings on crossed cylinders, the gap
+//! φ̄ = (X² + Y²/ρ)/2 of (1) in the units (17), solved as a
+//! boundary-element problem on n × n square cells with a cohesive law of
+//! range ρ₀ (`law`) in place of JKR's sharp edge; the JKR limit is
+//! ρ₀ → 0 (and the cells → 0), taken by extrapolation.
+//!
+//! A state at approach δ̄ solves, for the gaps g of the cells,
+//! g = φ̄ − δ̄ + A p(g) (A the pair's compliance, `kernel`; p the law), by
+//! Newton's method with GMRES for its steps (`gmres`), each product of A
+//! two zero-padded FFTs. Its force is F̄ = Δ²Σp. Under displacement
+//! control the states from a loaded contact down to the pull-off under
+//! displacement control are stable, and F̄(δ̄) has its least value on
+//! them at the pull-off under load control, where dF̄/dδ̄ = 0; dF̄/dδ̄
+//! comes with each state from one more linear solve.
+//!
+//! Owns: `Sheet`, `SheetState`. May use: `layer` (the pair), `error`,
+//! `quadrature`, and its own `kernel`, `law`, `gmres`, `bessel0`.
+
+mod bessel0;
+mod gmres;
+mod kernel;
+mod law;
+
+use super::Layers;
+use crate::error::{rounded, Error, Result};
+use kernel::Kernel;
+use law::Law;
+
+/// The grid solver of one pair of coatings at one ρ.
+pub(crate) struct Sheet {
+    n: usize,
+    dx: f64,
+    law: Law,
+    kernel: Kernel,
+    /// φ̄ at the cells' centres.
+    phi: Vec<f64>,
+}
+
+/// A state of the grid solver.
+#[derive(Clone, Debug)]
+pub(crate) struct SheetState {
+    pub(crate) delta_bar: f64,
+    pub(crate) force_bar: f64,
+    /// dF̄/dδ̄ along the branch.
+    pub(crate) force_slope: f64,
+    /// The gaps of the cells.
+    pub(crate) gap: Vec<f64>,
+    /// dg/dδ̄ of the cells.
+    pub(crate) gap_slope: Vec<f64>,
+    /// The contact's half widths along X and Y: where the gap, interpolated
+    /// linearly between the cells' centres on the axes' nearest rows,
+    /// reaches the law's range ρ₀, where the tension is greatest (the
+    /// cohesive zone's counterpart of JKR's edge; the gap is zero further
+    /// in, where the pressure changes sign).
+    pub(crate) half_widths: (f64, f64),
+    /// The least gap on the grid's edge, over the range ρ₀: the cohesive
+    /// law's tension there is (g/ρ₀)e^(−g/ρ₀) of its scale, which the
+    /// grid cuts off (2e-8 at 20 ranges).
+    pub(crate) edge_gap: f64,
+    /// Newton steps taken.
+    pub(crate) steps: usize,
+    /// Products with the compliance.
+    pub(crate) products: usize,
+}
+
+/// The residual each cell's gap equation is solved to, over ρ₀.
+const GAP_TOL: f64 = 1e-10;
+
+impl Sheet {
+    /// `layers` at `rho` on n × n cells of side `dx` (the grid's half
+    /// width n·dx/2), cohesive range `range`.
+    pub(crate) fn new(layers: &Layers, rho: f64, n: usize, dx: f64, range: f64) -> Sheet {
+        let kernel = Kernel::new(layers, n, dx);
+        let centre = |i: usize| (i as f64 + 0.5 - 0.5 * n as f64) * dx;
+        let mut phi = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                let (x, y) = (centre(i), centre(j));
+                phi[i * n + j] = 0.5 * (x * x + y * y / rho);
+            }
+        }
+        Sheet {
+            n,
+            dx,
+            law: Law { range },
+            kernel,
+            phi,
+        }
+    }
+
+    /// The residual R(g) = g − φ̄ + δ̄ − A p(g), with p and dp/dg.
+    fn residual(&self, law: Law, gap: &[f64], delta: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        let (p, dp): (Vec<f64>, Vec<f64>) = gap.iter().map(|&g| law.pressure(g)).unzip();
+        let mut w = vec![0.0; gap.len()];
+        self.kernel.apply(&p, &mut w);
+        let r = gap
+            .iter()
+            .zip(&self.phi)
+            .zip(&w)
+            .map(|((g, f), w)| g - f + delta - w)
+            .collect();
+        (r, p, dp)
+    }
+
+    /// J v = v − A(p′ ⊙ v).
+    fn jacobian_solve(
+        &self,
+        dp: &[f64],
+        b: &[f64],
+        tol: f64,
+        products: &mut usize,
+    ) -> Result<Vec<f64>> {
+        let mut scaled = vec![0.0; b.len()];
+        let mut apply = |v: &[f64], out: &mut [f64]| {
+            scaled
+                .iter_mut()
+                .zip(v.iter().zip(dp))
+                .for_each(|(s, (v, d))| *s = v * d);
+            self.kernel.apply(&scaled, out);
+            out.iter_mut().zip(v).for_each(|(o, v)| *o = v - *o);
+        };
+        let (x, rel, used) = gmres::gmres(&mut apply, b, tol, 150, 3000);
+        *products += used;
+        if rel > 10.0 * tol {
+            return Err(Error::Unresolved {
+                what: format!(
+                    "the grid solver's linear step: GMRES reached a relative residual of {} ({} asked)",
+                    rounded(rel),
+                    rounded(tol)
+                ),
+                residual: rel,
+            });
+        }
+        Ok(x)
+    }
+
+    /// The state at approach δ̄ by Newton's method from the gaps `guess`.
+    pub(crate) fn state(&self, delta: f64, guess: &[f64]) -> Result<SheetState> {
+        self.solve(self.law, delta, guess)
+    }
+
+    /// The state at δ̄ under `law` by Newton's method from `guess`.
+    fn solve(&self, law: Law, delta: f64, guess: &[f64]) -> Result<SheetState> {
+        let mut gap = guess.to_vec();
+        let tol = GAP_TOL * law.range;
+        let mut products = 0;
+        let (mut r, mut p, mut dp) = self.residual(law, &gap, delta);
+        let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let l2 = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let mut steps = 0;
+        while inf(&r) > tol {
+            if steps == 60 {
+                return Err(Error::Unresolved {
+                    what: format!(
+                        "the grid solver at delta_bar = {}: 60 Newton steps leave a gap residual of {} of the range",
+                        rounded(delta),
+                        rounded(inf(&r) / law.range)
+                    ),
+                    residual: inf(&r) / law.range,
+                });
+            }
+            steps += 1;
+            let minus_r: Vec<f64> = r.iter().map(|x| -x).collect();
+            let forcing = (1e-3f64).min(l2(&r).sqrt()).max(1e-12);
+            let s = self.jacobian_solve(&dp, &minus_r, forcing, &mut products)?;
+            let norm0 = l2(&r);
+            let mut lambda = 1.0;
+            loop {
+                let trial: Vec<f64> = gap.iter().zip(&s).map(|(g, s)| g + lambda * s).collect();
+                let (r1, p1, dp1) = self.residual(law, &trial, delta);
+                if l2(&r1) < (1.0 - 1e-4 * lambda) * norm0 || lambda < 1e-6 {
+                    gap = trial;
+                    r = r1;
+                    p = p1;
+                    dp = dp1;
+                    break;
+                }
+                lambda *= 0.5;
+            }
+        }
+        let ones = vec![-1.0; gap.len()];
+        let gap_slope = self.jacobian_solve(&dp, &ones, 1e-10, &mut products)?;
+        let area = self.dx * self.dx;
+        let force_bar = area * p.iter().sum::<f64>();
+        let force_slope = area * dp.iter().zip(&gap_slope).map(|(d, s)| d * s).sum::<f64>();
+        let half_widths = (self.crossing(&gap, true), self.crossing(&gap, false));
+        let n = self.n;
+        let edge_gap = (0..n)
+            .flat_map(|k| [gap[k], gap[(n - 1) * n + k], gap[k * n], gap[k * n + n - 1]])
+            .fold(f64::INFINITY, f64::min)
+            / law.range;
+        Ok(SheetState {
+            delta_bar: delta,
+            force_bar,
+            force_slope,
+            half_widths,
+            edge_gap,
+            gap,
+            gap_slope,
+            steps,
+            products,
+        })
+    }
+
+    /// Where the gap crosses zero going out from the centre along X
+    /// (`along_x`) or Y, on the row of cells next to the axis.
+    fn crossing(&self, gap: &[f64], along_x: bool) -> f64 {
+        let n = self.n;
+        let at = |k: usize| {
+            let (i, j) = if along_x { (k, n / 2) } else { (n / 2, k) };
+            gap[i * n + j]
+        };
+        let centre = |k: usize| (k as f64 + 0.5 - 0.5 * n as f64) * self.dx;
+        for k in n / 2..n - 1 {
+            let (g0, g1) = (at(k) - self.law.range, at(k + 1) - self.law.range);
+            if g0 <= 0.0 && g1 > 0.0 {
+                return centre(k) + self.dx * g0 / (g0 - g1);
+            }
+        }
+        f64::NAN
+    }
+
+    /// The distance from the centre along X at which the gap of `state`
+    /// reaches `gap`: on the row next to the axis, interpolated linearly,
+    /// or extrapolated from the last two cells beyond the grid.
+    fn reach(&self, state: &SheetState, gap: f64) -> f64 {
+        let n = self.n;
+        let at = |k: usize| state.gap[k * n + n / 2];
+        let centre = |k: usize| (k as f64 + 0.5 - 0.5 * n as f64) * self.dx;
+        for k in n / 2..n - 1 {
+            let (g0, g1) = (at(k) - gap, at(k + 1) - gap);
+            if g0 < 0.0 && g1 >= 0.0 {
+                return centre(k) + self.dx * g0 / (g0 - g1);
+            }
+        }
+        let slope = ((at(n - 1) - at(n - 2)) / self.dx).max(1e-300);
+        centre(n - 1) + (gap - at(n - 1)).max(0.0) / slope
+    }
+
+    /// A first guess of the gaps at δ̄: the rigid gap where it is open,
+    /// half the range where the bodies overlap.
+    pub(crate) fn cold_guess(&self, delta: f64) -> Vec<f64> {
+        let r = self.law.range;
+        self.phi.iter().map(|f| (f - delta).max(-0.5 * r)).collect()
+    }
+
+    /// The state at δ̄ from no guess: solved first with a range 16 times
+    /// longer (a wide process zone, an easy Newton), then with the range
+    /// halved four times, each from the last.
+    pub(crate) fn cold_state(&self, delta: f64) -> Result<SheetState> {
+        let mut guess = self.cold_guess(delta);
+        for k in (1..=4).rev() {
+            let wide = Law {
+                range: self.law.range * f64::powi(2.0, k),
+            };
+            guess = self.solve(wide, delta, &guess)?.gap;
+        }
+        self.state(delta, &guess)
+    }
+
+    /// The gaps of `state`, solved on `coarse`, interpolated bilinearly
+    /// onto this grid (the same width): a first guess for this grid's state.
+    pub(crate) fn prolong(&self, coarse: &Sheet, state: &SheetState) -> (Vec<f64>, Vec<f64>) {
+        let (nc, nf) = (coarse.n, self.n);
+        let index = |i: usize| {
+            let x = (i as f64 + 0.5 - 0.5 * nf as f64) * self.dx;
+            let t = (x / coarse.dx + 0.5 * nc as f64 - 0.5).clamp(0.0, (nc - 1) as f64);
+            let i0 = (t.floor() as usize).min(nc - 2);
+            (i0, t - i0 as f64)
+        };
+        let lerp = |v: &[f64], i: usize, j: usize| {
+            let ((i0, u), (j0, w)) = (index(i), index(j));
+            let at = |a: usize, b: usize| v[a * nc + b];
+            (1.0 - u) * ((1.0 - w) * at(i0, j0) + w * at(i0, j0 + 1))
+                + u * ((1.0 - w) * at(i0 + 1, j0) + w * at(i0 + 1, j0 + 1))
+        };
+        let mut gap = vec![0.0; nf * nf];
+        let mut slope = vec![0.0; nf * nf];
+        for i in 0..nf {
+            for j in 0..nf {
+                gap[i * nf + j] = lerp(&state.gap, i, j);
+                slope[i * nf + j] = lerp(&state.gap_slope, i, j);
+            }
+        }
+        (gap, slope)
+    }
+
+    /// The pull-off under load control: down in δ̄ from `start` (a loaded
+    /// state, solved from no guess) in steps of `step` until dF̄/dδ̄ changes
+    /// sign, then the secant on dF̄/dδ̄ to `tol` in δ̄.
+    pub(crate) fn pull_off(&self, start: f64, step: f64, tol: f64) -> Result<SheetState> {
+        let first = self.cold_state(start)?;
+        if first.force_slope <= 0.0 {
+            return Err(Error::NoState(format!(
+                "the grid solver: the state at delta_bar = {} is not above the pull-off",
+                rounded(start)
+            )));
+        }
+        self.pull_off_from(first, step, tol)
+    }
+
+    /// The pull-off under load control from the state at `delta` whose
+    /// gaps are about `guess`: the state there, then steps of `step` in δ̄
+    /// (down while dF̄/dδ̄ > 0, up while it is not) until dF̄/dδ̄ changes
+    /// sign, then the secant.
+    pub(crate) fn pull_off_near(
+        &self,
+        delta: f64,
+        guess: &[f64],
+        step: f64,
+        tol: f64,
+    ) -> Result<SheetState> {
+        let first = self.state(delta, guess)?;
+        self.pull_off_from(first, step, tol)
+    }
+
+    fn pull_off_from(&self, first: SheetState, step: f64, tol: f64) -> Result<SheetState> {
+        let predict = |s: &SheetState, d: f64| -> Vec<f64> {
+            s.gap
+                .iter()
+                .zip(&s.gap_slope)
+                .map(|(g, v)| g + (d - s.delta_bar) * v)
+                .collect()
+        };
+        let down = first.force_slope > 0.0;
+        let mut state = first;
+        let mut h = if down { step } else { -step };
+        let mut prev;
+        loop {
+            let d = state.delta_bar - h;
+            match self.state(d, &predict(&state, d)) {
+                Ok(next) => {
+                    prev = state;
+                    state = next;
+                    if (state.force_slope > 0.0) != down {
+                        break;
+                    }
+                }
+                Err(_) if h.abs() > step * 1e-3 => h *= 0.5,
+                Err(e) => return Err(e),
+            }
+        }
+        // secant (Illinois) on F'(δ̄) between a (F' > 0) and b (F' ≤ 0)
+        let (mut a, mut b) = if down { (prev, state) } else { (state, prev) };
+        // the end replaced last time (true: a), and whether the other end
+        // has now been kept twice running
+        let mut last: Option<bool> = None;
+        let mut kept_twice = false;
+        for _ in 0..60 {
+            let (fa, fb) = (a.force_slope, b.force_slope);
+            let (wa, wb) = match (last, kept_twice) {
+                (Some(true), true) => (fa, 0.5 * fb),
+                (Some(false), true) => (0.5 * fa, fb),
+                _ => (fa, fb),
+            };
+            let d = (a.delta_bar * wb - b.delta_bar * wa) / (wb - wa);
+            let near = if (d - a.delta_bar).abs() < (d - b.delta_bar).abs() {
+                &a
+            } else {
+                &b
+            };
+            let c = self.state(d, &predict(near, d))?;
+            if (a.delta_bar - b.delta_bar).abs() < tol || c.force_slope == 0.0 {
+                return Ok(c);
+            }
+            // Illinois: halve the weight of the end kept twice running
+            let replaces_a = c.force_slope > 0.0;
+            kept_twice = last == Some(replaces_a);
+            last = Some(replaces_a);
+            if replaces_a {
+                a = c;
+            } else {
+                b = c;
+            }
+        }
+        Err(Error::Unresolved {
+            what:
+                "the grid solver's pull-off: the secant on dF/d(delta) did not settle in 60 steps"
+                    .into(),
+            residual: f64::NAN,
+        })
+    }
+}
+
+/// The most cells per side a grid may have (a grid of 2048² cells holds
+/// 4M unknowns and pads to 4096², 270 MB per complex array).
+pub(crate) const MAX_CELLS: usize = 2048;
+/// The least gap on a grid's edge, in ranges, that a state may have: the
+/// law's tension beyond it, cut off by the grid, is below 4e-8 of its peak.
+pub(crate) const EDGE_GAP: f64 = 20.0;
+/// The gap, in ranges, at which a grid's edge is placed from the last
+/// rung's state.
+const EDGE_AIM: f64 = 24.0;
+
+/// One pull-off of a ladder: the process zone ε (a fraction of the contact
+/// size scale, the smaller of the two limits' pull-off radii), the cells
+/// across it, the grid's cells per side and half width, the state, and
+/// the seconds it took.
+#[derive(Clone, Debug)]
+pub(crate) struct Rung {
+    pub(crate) eps: f64,
+    pub(crate) cells_per_zone: f64,
+    pub(crate) n: usize,
+    pub(crate) width: f64,
+    pub(crate) state: SheetState,
+    pub(crate) seconds: f64,
+}
+
+/// The pull-offs under load control of `layers` at `rho` on a ladder of
+/// (process zone ε, cells across it), each from the last one's state (its
+/// gaps interpolated onto the next grid), the first from a loaded state.
+/// Each grid's edge is placed where the last state's gap reaches 24 of the
+/// next range (the first grid's at 1.9 size scales); a state whose edge gap
+/// is below 20 ranges is solved again on a grid a fifth wider. `tell`
+/// hears each rung as it is found.
+pub(crate) fn pull_off_ladder(
+    layers: &Layers,
+    rho: f64,
+    rungs: &[(f64, f64)],
+    tell: &mut dyn FnMut(&Rung),
+) -> Result<Vec<Rung>> {
+    let a = layers.radius_guess();
+    let mut out: Vec<Rung> = Vec::new();
+    let mut last: Option<(Sheet, SheetState)> = None;
+    for &(eps, cells_per_zone) in rungs {
+        let t = std::time::Instant::now();
+        let zone = eps * a;
+        let range = (zone / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
+        let dx = zone / cells_per_zone;
+        let mut width = match &last {
+            None => 1.9 * a,
+            Some((s, st)) => s.reach(st, EDGE_AIM * range).max(1.05 * st.half_widths.0),
+        };
+        let found = loop {
+            let n = 2 * (width / dx).ceil() as usize;
+            if n > MAX_CELLS {
+                return Err(Error::Unsupported {
+                    name: "cells",
+                    value: n as f64,
+                    supported: format!("at most {MAX_CELLS} per side (process zone {eps}, {cells_per_zone} cells across it)").into(),
+                });
+            }
+            let sheet = Sheet::new(layers, rho, n, dx, range);
+            let st = match &last {
+                None => sheet.pull_off(START * a * a, 0.05 * a * a, 1e-7 * a * a)?,
+                Some((s, st)) => {
+                    let (gap, _) = sheet.prolong(s, st);
+                    sheet.pull_off_near(st.delta_bar, &gap, 0.01 * a * a, 1e-7 * a * a)?
+                }
+            };
+            if st.edge_gap >= EDGE_GAP {
+                break (sheet, st, n);
+            }
+            if width > 4.0 * a {
+                return Err(Error::Unresolved {
+                    what: format!(
+                        "the grid solver's pull-off: the gap at the grid's edge is {} ranges at a half width of {} size scales",
+                        rounded(st.edge_gap),
+                        rounded(width / a)
+                    ),
+                    residual: st.edge_gap,
+                });
+            }
+            width *= 1.2;
+        };
+        let (sheet, st, n) = found;
+        out.push(Rung {
+            eps,
+            cells_per_zone,
+            n,
+            width: sheet.dx * n as f64 / 2.0,
+            state: st.clone(),
+            seconds: t.elapsed().as_secs_f64(),
+        });
+        tell(out.last().expect("pushed"));
+        last = Some((sheet, st));
+    }
+    Ok(out)
+}
+
+/// Where a ladder's first pull-off search starts, in δ̄ over the size
+/// scale squared: above the pull-off of both limits.
+const START: f64 = 0.35;
+
+/// The JKR limit of three pull-offs (ε, F̄) at process zones ε (any order,
+/// distinct): the F̄₀ of F̄ = F̄₀ + Aε + Bε ln ε through them. The form is
+/// measured, not derived: at ρ = 1 and h/L = 1 the errors of the pull-offs
+/// at ε = 0.2 … 0.0125 against the axisymmetric reference fall as it says
+/// (docs/thickness.md), and through ε = 0.05, 0.025, 0.0125 it meets the
+/// reference to 2e-4.
+pub(crate) fn jkr_limit(points: [(f64, f64); 3]) -> f64 {
+    let row = |(e, _): (f64, f64)| [1.0, e, e * e.ln()];
+    let m = nalgebra::Matrix3::from_rows(&points.map(|p| nalgebra::RowVector3::from(row(p))));
+    let f = nalgebra::Vector3::from(points.map(|p| p.1));
+    m.lu().solve(&f).map_or(f64::NAN, |c| c[0])
+}
+
+#[cfg(test)]
+mod tests;
