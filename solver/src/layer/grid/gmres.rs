@@ -112,8 +112,8 @@ mod tests {
             .map(|i| (0..n).map(|j| a(i, j) * x_true[j]).sum())
             .collect();
         let mut apply = |v: &[f64], out: &mut [f64]| {
-            for i in 0..n {
-                out[i] = (0..n).map(|j| a(i, j) * v[j]).sum();
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = (0..n).map(|j| a(i, j) * v[j]).sum();
             }
         };
         let (x, rel, _) = gmres(&mut apply, &b, 1e-12, 10, 500);
