@@ -33,6 +33,9 @@ pub(crate) struct Kernel {
     /// The spectrum of the cell influences, wrapped on the padded grid
     /// (real: the influences are even in x and y), divided by m².
     spectrum: Vec<f64>,
+    /// Its reciprocal, divided by m² (the stiffness of the padded grid,
+    /// capped where the spectrum is below 1e-4 of its largest).
+    stiffness: Vec<f64>,
     forward: Arc<dyn Fft<f64>>,
     inverse: Arc<dyn Fft<f64>>,
 }
@@ -153,11 +156,17 @@ impl Kernel {
         let inverse = planner.plan_fft_inverse(m);
         fft2(&mut buf, m, m, &forward);
         let norm = 1.0 / (m * m) as f64;
-        let spectrum = buf.iter().map(|z| z.re * norm).collect();
+        let spectrum: Vec<f64> = buf.iter().map(|z| z.re * norm).collect();
+        let floor = 1e-4 * spectrum.iter().fold(0.0f64, |a, b| a.max(*b));
+        let stiffness = spectrum
+            .iter()
+            .map(|s| norm * norm / s.max(floor))
+            .collect();
         Kernel {
             n,
             m,
             spectrum,
+            stiffness,
             forward,
             inverse,
         }
@@ -171,6 +180,12 @@ impl Kernel {
     /// are their conjugates), and two rows of the product come back from
     /// one inverse FFT, half the transforms of a complex product.
     pub(crate) fn apply(&self, p: &[f64], out: &mut [f64]) {
+        self.product(p, out, &self.spectrum)
+    }
+
+    /// The product of `p` with the padded grid's operator of spectrum
+    /// `multiplier` (divided by m²), two real rows per complex FFT.
+    fn product(&self, p: &[f64], out: &mut [f64], multiplier: &[f64]) {
         let (n, m) = (self.n, self.m);
         let half = m / 2 + 1;
         let pairs = n.div_ceil(2);
@@ -206,7 +221,7 @@ impl Kernel {
         // the spectrum is symmetric in its two indices
         cols.par_chunks_mut(m).enumerate().for_each(|(k, col)| {
             for (r, z) in col.iter_mut().enumerate() {
-                *z *= self.spectrum[k * m + r];
+                *z *= multiplier[k * m + r];
             }
         });
         fft_rows(&mut cols, m, &self.inverse);
@@ -235,6 +250,16 @@ impl Kernel {
                 }
             }
         }
+    }
+}
+
+impl super::Compliance for Kernel {
+    fn apply(&self, p: &[f64], out: &mut [f64]) {
+        Kernel::apply(self, p, out)
+    }
+
+    fn stiffen(&self, w: &[f64], out: &mut [f64]) {
+        self.product(w, out, &self.stiffness)
     }
 }
 

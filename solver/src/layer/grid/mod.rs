@@ -18,6 +18,7 @@
 //! `quadrature`, and its own `kernel`, `law`, `gmres`, `bessel0`.
 
 mod bessel0;
+mod edge;
 mod gmres;
 mod kernel;
 mod law;
@@ -90,52 +91,6 @@ impl Sheet {
         }
     }
 
-    /// The residual R(g) = g − φ̄ + δ̄ − A p(g), with p and dp/dg.
-    fn residual(&self, law: Law, gap: &[f64], delta: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
-        let (p, dp): (Vec<f64>, Vec<f64>) = gap.iter().map(|&g| law.pressure(g)).unzip();
-        let mut w = vec![0.0; gap.len()];
-        self.kernel.apply(&p, &mut w);
-        let r = gap
-            .iter()
-            .zip(&self.phi)
-            .zip(&w)
-            .map(|((g, f), w)| g - f + delta - w)
-            .collect();
-        (r, p, dp)
-    }
-
-    /// J v = v − A(p′ ⊙ v).
-    fn jacobian_solve(
-        &self,
-        dp: &[f64],
-        b: &[f64],
-        tol: f64,
-        products: &mut usize,
-    ) -> Result<Vec<f64>> {
-        let mut scaled = vec![0.0; b.len()];
-        let mut apply = |v: &[f64], out: &mut [f64]| {
-            scaled
-                .iter_mut()
-                .zip(v.iter().zip(dp))
-                .for_each(|(s, (v, d))| *s = v * d);
-            self.kernel.apply(&scaled, out);
-            out.iter_mut().zip(v).for_each(|(o, v)| *o = v - *o);
-        };
-        let (x, rel, used) = gmres::gmres(&mut apply, b, tol, 150, 3000);
-        *products += used;
-        if rel > 10.0 * tol {
-            return Err(Error::Unresolved {
-                what: format!(
-                    "the grid solver's linear step: GMRES reached a relative residual of {} ({} asked)",
-                    rounded(rel),
-                    rounded(tol)
-                ),
-                residual: rel,
-            });
-        }
-        Ok(x)
-    }
-
     /// The state at approach δ̄ by Newton's method from the gaps `guess`.
     pub(crate) fn state(&self, delta: f64, guess: &[f64]) -> Result<SheetState> {
         self.solve(self.law, delta, guess)
@@ -143,45 +98,15 @@ impl Sheet {
 
     /// The state at δ̄ under `law` by Newton's method from `guess`.
     fn solve(&self, law: Law, delta: f64, guess: &[f64]) -> Result<SheetState> {
-        let mut gap = guess.to_vec();
-        let tol = GAP_TOL * law.range;
-        let mut products = 0;
-        let (mut r, mut p, mut dp) = self.residual(law, &gap, delta);
-        let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let l2 = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
-        let mut steps = 0;
-        while inf(&r) > tol {
-            if steps == 60 {
-                return Err(Error::Unresolved {
-                    what: format!(
-                        "the grid solver at delta_bar = {}: 60 Newton steps leave a gap residual of {} of the range",
-                        rounded(delta),
-                        rounded(inf(&r) / law.range)
-                    ),
-                    residual: inf(&r) / law.range,
-                });
-            }
-            steps += 1;
-            let minus_r: Vec<f64> = r.iter().map(|x| -x).collect();
-            let forcing = (1e-3f64).min(l2(&r).sqrt()).max(1e-12);
-            let s = self.jacobian_solve(&dp, &minus_r, forcing, &mut products)?;
-            let norm0 = l2(&r);
-            let mut lambda = 1.0;
-            loop {
-                let trial: Vec<f64> = gap.iter().zip(&s).map(|(g, s)| g + lambda * s).collect();
-                let (r1, p1, dp1) = self.residual(law, &trial, delta);
-                if l2(&r1) < (1.0 - 1e-4 * lambda) * norm0 || lambda < 1e-6 {
-                    gap = trial;
-                    r = r1;
-                    p = p1;
-                    dp = dp1;
-                    break;
-                }
-                lambda *= 0.5;
-            }
-        }
+        let Solved {
+            gap,
+            p,
+            dp,
+            steps,
+            mut products,
+        } = newton(&self.kernel, &self.phi, law, delta, guess)?;
         let ones = vec![-1.0; gap.len()];
-        let gap_slope = self.jacobian_solve(&dp, &ones, 1e-10, &mut products)?;
+        let gap_slope = jacobian_solve(&self.kernel, law, &dp, &ones, 1e-10, &mut products)?;
         let area = self.dx * self.dx;
         let force_bar = area * p.iter().sum::<f64>();
         let force_slope = area * dp.iter().zip(&gap_slope).map(|(d, s)| d * s).sum::<f64>();
@@ -376,6 +301,176 @@ impl Sheet {
             residual: f64::NAN,
         })
     }
+}
+
+/// The gaps of a state with the pressures and their slopes, and the
+/// work it took.
+pub(crate) struct Solved {
+    pub(crate) gap: Vec<f64>,
+    pub(crate) p: Vec<f64>,
+    pub(crate) dp: Vec<f64>,
+    pub(crate) steps: usize,
+    pub(crate) products: usize,
+}
+
+/// The residual R(g) = g − φ̄ + δ̄ − A p(g) for the compliance `apply`,
+/// with p and dp/dg.
+fn residual(
+    compliance: &dyn Compliance,
+    phi: &[f64],
+    law: Law,
+    gap: &[f64],
+    delta: f64,
+) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let (p, dp): (Vec<f64>, Vec<f64>) = gap.iter().map(|&g| law.pressure(g)).unzip();
+    let mut w = vec![0.0; gap.len()];
+    compliance.apply(&p, &mut w);
+    let r = gap
+        .iter()
+        .zip(phi)
+        .zip(&w)
+        .map(|((g, f), w)| g - f + delta - w)
+        .collect();
+    (r, p, dp)
+}
+
+/// A compliance on a row or a grid of cells: its product with the
+/// pressures, and its approximate inverse, the stiffness, for the linear
+/// steps' preconditioner.
+pub(crate) trait Compliance {
+    /// The displacements A p.
+    fn apply(&self, p: &[f64], out: &mut [f64]);
+    /// About A⁻¹ w: the stiffness's product with a displacement.
+    fn stiffen(&self, w: &[f64], out: &mut [f64]);
+}
+
+/// Solves J v = b, J v = v − A(p′ ⊙ v), by GMRES to the relative residual
+/// `tol` (a tenfold miss is an error), preconditioned on the right.
+///
+/// Where the law is stiff, −p′ ≥ s/2 (s its stiffness at g = 0: the cells
+/// in contact and the first of the cohesive zone), the unknown is the
+/// pressure's change q = p′v instead of v, and the block there,
+/// −(A + diag(1/p′)), a first-kind operator on the contact, is
+/// preconditioned by −A⁻¹, the stiffness restricted to those cells (its
+/// square-root edges make the product's spectrum cluster, as the
+/// Calderón identities say); elsewhere the unknown is v and the
+/// preconditioner the identity.
+pub(crate) fn jacobian_solve(
+    compliance: &dyn Compliance,
+    law: Law,
+    dp: &[f64],
+    b: &[f64],
+    tol: f64,
+    products: &mut usize,
+) -> Result<Vec<f64>> {
+    let stiff = 0.5 * law.pressure(0.0).1.abs();
+    let in_contact: Vec<bool> = dp.iter().map(|d| -d >= stiff).collect();
+    let n = b.len();
+    let mut masked = vec![0.0; n];
+    let mut y = vec![0.0; n];
+    // y = M⁻¹u: −A⁻¹ restricted on the contact, the identity elsewhere
+    let precondition = |u: &[f64], masked: &mut [f64], y: &mut [f64]| {
+        masked
+            .iter_mut()
+            .zip(u.iter().zip(&in_contact))
+            .for_each(|(m, (u, &c))| *m = if c { *u } else { 0.0 });
+        compliance.stiffen(masked, y);
+        y.iter_mut()
+            .zip(u.iter().zip(&in_contact))
+            .for_each(|(y, (u, &c))| *y = if c { -*y } else { *u });
+    };
+    // v = T y: q/p′ on the contact, y elsewhere
+    let to_gap = |y: &[f64], v: &mut [f64]| {
+        v.iter_mut()
+            .zip(y.iter().zip(dp.iter().zip(&in_contact)))
+            .for_each(|(v, (y, (d, &c)))| *v = if c { y / d } else { *y });
+    };
+    let mut v = vec![0.0; n];
+    let mut scaled = vec![0.0; n];
+    let mut product = |u: &[f64], out: &mut [f64]| {
+        precondition(u, &mut masked, &mut y);
+        to_gap(&y, &mut v);
+        scaled
+            .iter_mut()
+            .zip(v.iter().zip(dp))
+            .for_each(|(s, (v, d))| *s = v * d);
+        compliance.apply(&scaled, out);
+        out.iter_mut().zip(&v).for_each(|(o, v)| *o = v - *o);
+    };
+    let (u, rel, used) = gmres::gmres(&mut product, b, tol, 150, 3000);
+    *products += used;
+    if rel > 10.0 * tol {
+        return Err(Error::Unresolved {
+            what: format!(
+                "the grid solver's linear step: GMRES reached a relative residual of {} ({} asked)",
+                rounded(rel),
+                rounded(tol)
+            ),
+            residual: rel,
+        });
+    }
+    let (mut masked, mut y) = (vec![0.0; n], vec![0.0; n]);
+    precondition(&u, &mut masked, &mut y);
+    let mut x = vec![0.0; n];
+    to_gap(&y, &mut x);
+    Ok(x)
+}
+
+/// The gap equations g = φ̄ − δ̄ + A p(g) at approach δ̄ for the
+/// compliance `apply` and the rigid gap `phi`, by Newton's method from
+/// `guess`, each step by GMRES and a backtracking line search, until every
+/// residual is below 1e-10 of the law's range.
+pub(crate) fn newton(
+    compliance: &dyn Compliance,
+    phi: &[f64],
+    law: Law,
+    delta: f64,
+    guess: &[f64],
+) -> Result<Solved> {
+    let mut gap = guess.to_vec();
+    let tol = GAP_TOL * law.range;
+    let mut products = 0;
+    let (mut r, mut p, mut dp) = residual(compliance, phi, law, &gap, delta);
+    let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let l2 = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let mut steps = 0;
+    while inf(&r) > tol {
+        if steps == 60 {
+            return Err(Error::Unresolved {
+                what: format!(
+                    "the grid solver at delta_bar = {}: 60 Newton steps leave a gap residual of {} of the range",
+                    rounded(delta),
+                    rounded(inf(&r) / law.range)
+                ),
+                residual: inf(&r) / law.range,
+            });
+        }
+        steps += 1;
+        let minus_r: Vec<f64> = r.iter().map(|x| -x).collect();
+        let forcing = (1e-3f64).min(l2(&r).sqrt()).max(1e-12);
+        let s = jacobian_solve(compliance, law, &dp, &minus_r, forcing, &mut products)?;
+        let norm0 = l2(&r);
+        let mut lambda = 1.0;
+        loop {
+            let trial: Vec<f64> = gap.iter().zip(&s).map(|(g, s)| g + lambda * s).collect();
+            let (r1, p1, dp1) = residual(compliance, phi, law, &trial, delta);
+            if l2(&r1) < (1.0 - 1e-4 * lambda) * norm0 || lambda < 1e-6 {
+                gap = trial;
+                r = r1;
+                p = p1;
+                dp = dp1;
+                break;
+            }
+            lambda *= 0.5;
+        }
+    }
+    Ok(Solved {
+        gap,
+        p,
+        dp,
+        steps,
+        products,
+    })
 }
 
 /// The most cells per side a grid may have (a grid of 2048² cells holds
