@@ -29,6 +29,11 @@
 pub mod accuracy;
 pub(crate) mod ansatz;
 pub mod batch;
+/// Hooks into crate-internal machinery for the criterion benches, built
+/// only with the `bench-internals` feature; not an API.
+#[cfg(feature = "bench-internals")]
+#[doc(hidden)]
+pub mod bench_internals;
 #[cfg(feature = "cli")]
 #[doc(hidden)]
 pub mod cli;

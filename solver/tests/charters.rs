@@ -188,7 +188,10 @@ fn every_module_uses_only_what_its_charter_names() {
 /// messages in 300 characters, as the command line's are), then 219 for
 /// `report`'s re-export of `SlenderState`, which `slender` owns since
 /// issue 69 (the slender model no longer imports `report`, which kept it
-/// in the import cycle; its public path is unchanged).
+/// in the import cycle; its public path is unchanged). The benches' hooks
+/// (`bench_internals` and the module it re-exports, built only with the
+/// `bench-internals` feature, hidden from the docs) are not a user's API and
+/// are not counted.
 #[test]
 fn the_public_api_stays_small() {
     const MAX_PUBLIC_ITEMS: usize = 219;
@@ -199,9 +202,16 @@ fn the_public_api_stays_small() {
         "fn ", "struct ", "enum ", "const ", "static ", "type ", "trait ", "mod ", "use ",
     ];
     let mut public = Vec::new();
+    let hooks = ["bench_internals.rs", "layer/grid/bench.rs"];
     for f in &files {
+        if hooks.iter().any(|h| f.ends_with(h)) {
+            continue;
+        }
         let text = std::fs::read_to_string(f).unwrap();
         for (i, line) in text.lines().enumerate() {
+            if line.contains("pub mod bench_internals") {
+                continue;
+            }
             if let Some(rest) = line.trim_start().strip_prefix("pub ") {
                 if kinds.iter().any(|k| rest.starts_with(k)) {
                     public.push(format!("{}:{}", f.display(), i + 1));
@@ -234,7 +244,7 @@ const RANKS: &[&[&str]] = &[
     &["ansatz"],
     &["generated"],
     &["contact", "layer", "slender"],
-    &["curve", "limits", "units"],
+    &["bench_internals", "curve", "limits", "units"],
     &["conformal"],
     &["batch", "report"],
     &["accuracy", "registry"],

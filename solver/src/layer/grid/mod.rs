@@ -15,8 +15,11 @@
 //! comes with each state from one more linear solve.
 //!
 //! Owns: `Sheet`, `SheetState`. May use: `layer` (the pair), `error`,
-//! `quadrature`, and its own `kernel`, `law`, `gmres`, `bessel0`.
+//! `quadrature`, and its own `kernel`, `law`, `gmres`, `bessel0`, `edge`,
+//! `bench`.
 
+#[cfg(feature = "bench-internals")]
+pub(crate) mod bench;
 mod bessel0;
 mod edge;
 mod gmres;
