@@ -316,7 +316,7 @@ pub(crate) struct Solved {
     pub(crate) products: usize,
 }
 
-/// The residual R(g) = g − φ̄ + δ̄ − A p(g) for the compliance `apply`,
+/// The residual R(g) = g − φ̄ + δ̄ − A p(g) for `compliance`,
 /// with p and dp/dg.
 fn residual(
     compliance: &dyn Compliance,
@@ -420,9 +420,11 @@ pub(crate) fn jacobian_solve(
 }
 
 /// The gap equations g = φ̄ − δ̄ + A p(g) at approach δ̄ for the
-/// compliance `apply` and the rigid gap `phi`, by Newton's method from
-/// `guess`, each step by GMRES and a backtracking line search, until every
-/// residual is below 1e-10 of the law's range.
+/// `compliance` and the rigid gap `phi`, by Newton's method from
+/// `guess`, each step by GMRES and a backtracking line search (a step that
+/// lowers ‖R‖ by no fraction of itself down to 1e-6 of its length is an
+/// error, not a state), until every residual is below 1e-10 of the law's
+/// range.
 pub(crate) fn newton(
     compliance: &dyn Compliance,
     phi: &[f64],
@@ -457,7 +459,7 @@ pub(crate) fn newton(
         loop {
             let trial: Vec<f64> = gap.iter().zip(&s).map(|(g, s)| g + lambda * s).collect();
             let (r1, p1, dp1) = residual(compliance, phi, law, &trial, delta);
-            if l2(&r1) < (1.0 - 1e-4 * lambda) * norm0 || lambda < 1e-6 {
+            if l2(&r1) < (1.0 - 1e-4 * lambda) * norm0 {
                 gap = trial;
                 r = r1;
                 p = p1;
@@ -465,6 +467,16 @@ pub(crate) fn newton(
                 break;
             }
             lambda *= 0.5;
+            if lambda < 1e-6 {
+                return Err(Error::Unresolved {
+                    what: format!(
+                        "the grid solver at delta_bar = {}: Newton's step lowers the gap residual ({} of the range) by no fraction of itself down to a millionth of its length",
+                        rounded(delta),
+                        rounded(inf(&r) / law.range)
+                    ),
+                    residual: inf(&r) / law.range,
+                });
+            }
         }
     }
     Ok(Solved {
@@ -599,5 +611,7 @@ pub(crate) fn jkr_limit(points: [(f64, f64); 3]) -> Result<f64> {
         })
 }
 
+#[cfg(test)]
+mod tables;
 #[cfg(test)]
 mod tests;

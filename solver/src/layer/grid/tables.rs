@@ -1,0 +1,226 @@
+//! The slow tier's hold on docs/thickness.md's grid and edge tables: every
+//! row computed again and compared digit for digit as printed (issue 71's
+//! tables were typed in from the explorations' output; these tests keep
+//! them the code's). About 10 minutes; `.ci/slow` runs them.
+//!
+//! Owns: nothing. May use: `layer` (the pair and its axisymmetric
+//! reference), the grid's `pull_off_ladder`, `jkr_limit` and `edge`.
+
+use super::edge::{stiffness_minimum, LineContact};
+use super::{jkr_limit, pull_off_ladder};
+use crate::layer::{Layers, Route};
+use crate::model::brent_minimum;
+
+/// docs/thickness.md.
+fn doc() -> String {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/thickness.md");
+    std::fs::read_to_string(path).expect("docs/thickness.md")
+}
+
+/// The rows (cells trimmed) of the table whose header line is `header`.
+fn table(doc: &str, header: &str) -> Vec<Vec<String>> {
+    let mut lines = doc.lines().skip_while(|l| l.trim() != header);
+    assert!(lines.next().is_some(), "no table headed {header}");
+    lines
+        .skip(1)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.trim_matches('|')
+                .split('|')
+                .map(|c| c.trim().to_string())
+                .collect()
+        })
+        .collect()
+}
+
+/// `value` printed as `printed` is: the same count of decimals, or of
+/// significant digits in e-notation, or of decimals before a % sign.
+fn same(value: f64, printed: &str) -> bool {
+    let p = printed.trim_end_matches(" %").trim_end_matches('%');
+    let percent = p.len() != printed.len();
+    let value = if percent { 100.0 * value } else { value };
+    let text = if let Some((mantissa, _)) = p.split_once('e') {
+        let digits = mantissa.split_once('.').map_or(0, |(_, d)| d.len());
+        let s = format!("{value:+.digits$e}");
+        // Rust writes e-2 where the docs write e-02
+        let (m, e) = s.split_once('e').expect("e");
+        let e: i32 = e.parse().expect("exponent");
+        format!("{m}e{}{:02}", if e < 0 { '-' } else { '+' }, e.abs())
+    } else {
+        let digits = p.split_once('.').map_or(0, |(_, d)| d.len());
+        if p.starts_with('+') {
+            format!("{value:+.digits$}")
+        } else {
+            format!("{value:.digits$}")
+        }
+    };
+    text == p
+}
+
+fn check(what: &str, value: f64, printed: &str, bad: &mut Vec<String>) {
+    if !same(value, printed) {
+        bad.push(format!("{what}: computed {value}, printed {printed}"));
+    }
+}
+
+#[test]
+#[ignore = "slow tier (.ci/slow): the grid's ladders behind docs/thickness.md, about 9 minutes"]
+fn the_grid_tables_of_the_docs_are_the_solver_s() {
+    let doc = doc();
+    let mut bad = Vec::new();
+    let eps = [0.2, 0.1, 0.05, 0.025, 0.0125];
+    let rungs: Vec<(f64, f64)> = eps.iter().map(|&e| (e, 4.0)).collect();
+    let ladder_rows = table(&doc, "| h/L | ε | n | W | F̄ | error |");
+    let limit_rows = table(&doc, "| h/L | rungs ε | limit F̄₀ | error |");
+    let mut forces = std::collections::BTreeMap::new();
+    for thin in [1.0, 10.0] {
+        let layers = Layers::equal(thin, 0.5).unwrap();
+        let reference = layers.pull_off(Route::Griffith).unwrap().load.force_bar;
+        let ladder = pull_off_ladder(&layers, 1.0, &rungs, &mut |_| {}).unwrap();
+        let rows: Vec<&Vec<String>> = ladder_rows
+            .iter()
+            .filter(|r| r[0].parse::<f64>().unwrap() == thin)
+            .collect();
+        assert_eq!(rows.len(), ladder.len(), "h/L {thin}");
+        for (r, row) in ladder.iter().zip(rows) {
+            let f = r.state.force_bar;
+            let at = format!("h/L {thin}, eps {}", r.eps);
+            check(&format!("{at}: eps"), r.eps, &row[1], &mut bad);
+            check(&format!("{at}: n"), r.n as f64, &row[2], &mut bad);
+            check(&format!("{at}: W"), r.width, &row[3], &mut bad);
+            check(&format!("{at}: F"), f, &row[4], &mut bad);
+            check(
+                &format!("{at}: error"),
+                f / reference - 1.0,
+                &row[5],
+                &mut bad,
+            );
+        }
+        let f: Vec<f64> = ladder.iter().map(|r| r.state.force_bar).collect();
+        forces.insert((thin as i64, 1000), f.clone());
+        let rows: Vec<&Vec<String>> = limit_rows
+            .iter()
+            .filter(|r| r[0].parse::<f64>().unwrap() == thin)
+            .collect();
+        assert_eq!(rows.len(), 3, "h/L {thin}: three limits");
+        for (k, row) in rows.iter().enumerate() {
+            let limit = jkr_limit([
+                (eps[k], f[k]),
+                (eps[k + 1], f[k + 1]),
+                (eps[k + 2], f[k + 2]),
+            ])
+            .unwrap();
+            let at = format!("h/L {thin}, limit from eps {}", eps[k]);
+            check(&format!("{at}: F0"), limit, &row[2], &mut bad);
+            check(
+                &format!("{at}: error"),
+                limit / reference - 1.0,
+                &row[3],
+                &mut bad,
+            );
+        }
+    }
+    // ρ < 1 (and ρ = 1 at h/L = 0.5): four rungs each, (2)'s exact
+    // pull-offs as docs/accuracy.md prints them
+    let exact_2 = |rho: f64| match rho {
+        r if r == 1.0 => -4.712389,
+        r if r == 0.8 => -4.197605,
+        _ => -3.240848,
+    };
+    for row in table(
+        &doc,
+        "| h/L | ρ | F̄ at ε = 0.2, 0.1, 0.05, 0.025 | F̄₀ (0.2 … 0.05) | F̄₀ (0.1 … 0.025) | (2)'s error | F̄₀/F̄₍₂₎ |",
+    ) {
+        let (thin, rho): (f64, f64) = (row[0].parse().unwrap(), row[1].parse().unwrap());
+        let layers = Layers::equal(thin, 0.5).unwrap();
+        let f = match forces.get(&(thin as i64, (rho * 1000.0) as i64)) {
+            Some(f) if thin == 1.0 => f[..4].to_vec(),
+            _ => pull_off_ladder(&layers, rho, &rungs[..4], &mut |_| {})
+                .unwrap()
+                .iter()
+                .map(|r| r.state.force_bar)
+                .collect(),
+        };
+        let at = format!("h/L {thin}, rho {rho}");
+        for (k, printed) in row[2].split(", ").enumerate() {
+            check(&format!("{at}: F at eps {}", eps[k]), f[k], printed, &mut bad);
+        }
+        let coarse = jkr_limit([(eps[0], f[0]), (eps[1], f[1]), (eps[2], f[2])]).unwrap();
+        let fine = jkr_limit([(eps[1], f[1]), (eps[2], f[2]), (eps[3], f[3])]).unwrap();
+        check(&format!("{at}: coarse limit"), coarse, &row[3], &mut bad);
+        check(&format!("{at}: fine limit"), fine, &row[4], &mut bad);
+        check(&format!("{at}: (2)'s error"), exact_2(rho) / fine - 1.0, &row[5], &mut bad);
+        check(&format!("{at}: ratio"), fine / exact_2(rho), &row[6], &mut bad);
+    }
+    assert!(
+        bad.is_empty(),
+        "docs/thickness.md differs:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+#[ignore = "slow tier (.ci/slow): the straight edge's table of docs/thickness.md, about 30 s"]
+fn the_edge_table_of_the_docs_is_the_solver_s() {
+    let doc = doc();
+    let mut bad = Vec::new();
+    let rows = table(
+        &doc,
+        "| ν | ā/h | δ̄ | F̄ per unit length | ∂K/∂b / K | least δK/A / K | at kh | its wavelength | stiffness minimum |",
+    );
+    assert_eq!(rows.len(), 6);
+    for row in rows {
+        let nu = if row[0] == "½" {
+            0.5
+        } else {
+            row[0].parse().unwrap()
+        };
+        let a_over_h: f64 = row[1].parse().unwrap();
+        let layers = Layers::equal(0.1, nu).unwrap();
+        let line = LineContact::new(&layers, 80);
+        let st = line.state(a_over_h * 0.1).unwrap();
+        let f = |t: f64| line.undulation(&st, t.exp() / 0.1).unwrap();
+        let t = brent_minimum(f, (0.05f64).ln(), (8.0f64).ln(), 1e-6);
+        let (least, kh) = (f(t), t.exp());
+        let at = format!("nu {nu}, a/h {a_over_h}");
+        check(&format!("{at}: delta"), st.delta_bar, &row[2], &mut bad);
+        check(&format!("{at}: F"), st.force_bar, &row[3], &mut bad);
+        let k0 = (2.0 * layers.beta()).sqrt();
+        check(&format!("{at}: dK/db"), st.k_edge / k0, &row[4], &mut bad);
+        check(&format!("{at}: least"), least, &row[5], &mut bad);
+        check(&format!("{at}: kh"), kh, &row[6], &mut bad);
+        let wave = row[7].trim_end_matches('h');
+        check(
+            &format!("{at}: wavelength"),
+            2.0 * std::f64::consts::PI / kh,
+            wave,
+            &mut bad,
+        );
+        if let Some(rest) = row[8].strip_prefix("kh = ") {
+            let (k, lambda) = rest.split_once(" (").expect("kh = x (yh)");
+            let stiff = stiffness_minimum(&layers) * 0.1;
+            check(&format!("{at}: stiffness minimum"), stiff, k, &mut bad);
+            let lambda = lambda.trim_end_matches("h)");
+            check(
+                &format!("{at}: its wavelength"),
+                2.0 * std::f64::consts::PI / stiff,
+                lambda,
+                &mut bad,
+            );
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "docs/thickness.md differs:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn a_printed_number_is_read_at_its_own_precision() {
+    assert!(same(1.18379, "1.1838") && !same(1.18379, "1.1837"));
+    assert!(same(0.040530, "+4.05e-02") && !same(0.0406, "+4.05e-02"));
+    assert!(same(-0.00160, "-1.6e-03"));
+    assert!(same(0.638384, "+63.84 %") && !same(0.6385, "+63.84 %"));
+    assert!(same(92.0, "92") && same(-0.662110, "-0.6621") && same(1.186, "+1.186"));
+}
