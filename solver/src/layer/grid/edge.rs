@@ -369,19 +369,27 @@ mod tests {
         }
     }
 
+    /// A number from the environment, or `default`.
+    fn var(name: &str, default: f64) -> f64 {
+        std::env::var(name)
+            .map(|v| v.parse().unwrap())
+            .unwrap_or(default)
+    }
+
+    /// The explorations' coatings: THINJKR_EDGE_THIN (h/L, 0.1),
+    /// THINJKR_EDGE_NU (½) and THINJKR_EDGE_MODES (40).
+    fn explored() -> (f64, f64, usize, Layers) {
+        let thin = var("THINJKR_EDGE_THIN", 0.1);
+        let nu = var("THINJKR_EDGE_NU", 0.5);
+        let modes = var("THINJKR_EDGE_MODES", 40.0) as usize;
+        (thin, nu, modes, Layers::equal(thin, nu).unwrap())
+    }
+
     #[test]
     #[ignore = "exploration: prints the straight edge's dK/A against kh"]
     fn explore_edge() {
-        let var = |name: &str, default: f64| -> f64 {
-            std::env::var(name)
-                .map(|v| v.parse().unwrap())
-                .unwrap_or(default)
-        };
-        let thin = var("THINJKR_EDGE_THIN", 0.1);
-        let nu = var("THINJKR_EDGE_NU", 0.5);
+        let (thin, nu, modes, layers) = explored();
         let a = var("THINJKR_EDGE_A", 1.0);
-        let modes = var("THINJKR_EDGE_MODES", 40.0) as usize;
-        let layers = Layers::equal(thin, nu).unwrap();
         let line = LineContact::new(&layers, modes);
         let t = std::time::Instant::now();
         let st = line.state(a).unwrap();
@@ -412,15 +420,7 @@ mod tests {
     #[test]
     #[ignore = "exploration: the least dK/A over k for a list of half widths"]
     fn explore_onset() {
-        let var = |name: &str, default: f64| -> f64 {
-            std::env::var(name)
-                .map(|v| v.parse().unwrap())
-                .unwrap_or(default)
-        };
-        let thin = var("THINJKR_EDGE_THIN", 0.1);
-        let nu = var("THINJKR_EDGE_NU", 0.5);
-        let modes = var("THINJKR_EDGE_MODES", 40.0) as usize;
-        let layers = Layers::equal(thin, nu).unwrap();
+        let (thin, nu, modes, layers) = explored();
         let line = LineContact::new(&layers, modes);
         let list = std::env::var("THINJKR_EDGE_AS").unwrap_or("0.5,1,2".into());
         for a in list.split(',').map(|x| x.parse::<f64>().unwrap()) {

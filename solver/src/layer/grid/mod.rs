@@ -439,16 +439,18 @@ pub(crate) fn newton(
     let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let l2 = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
     let mut steps = 0;
+    // where Newton stops short: `why`, and the residual left
+    let stalled = |why: &str, r: &[f64]| Error::Unresolved {
+        what: format!(
+            "the grid solver at delta_bar = {}: {why} (the gap residual is {} of the range)",
+            rounded(delta),
+            rounded(inf(r) / law.range)
+        ),
+        residual: inf(r) / law.range,
+    };
     while inf(&r) > tol {
         if steps == 60 {
-            return Err(Error::Unresolved {
-                what: format!(
-                    "the grid solver at delta_bar = {}: 60 Newton steps leave a gap residual of {} of the range",
-                    rounded(delta),
-                    rounded(inf(&r) / law.range)
-                ),
-                residual: inf(&r) / law.range,
-            });
+            return Err(stalled("60 Newton steps do not converge", &r));
         }
         steps += 1;
         let minus_r: Vec<f64> = r.iter().map(|x| -x).collect();
@@ -468,14 +470,10 @@ pub(crate) fn newton(
             }
             lambda *= 0.5;
             if lambda < 1e-6 {
-                return Err(Error::Unresolved {
-                    what: format!(
-                        "the grid solver at delta_bar = {}: Newton's step lowers the gap residual ({} of the range) by no fraction of itself down to a millionth of its length",
-                        rounded(delta),
-                        rounded(inf(&r) / law.range)
-                    ),
-                    residual: inf(&r) / law.range,
-                });
+                return Err(stalled(
+                    "Newton's step lowers the residual by no fraction of itself down to a millionth of its length",
+                    &r,
+                ));
             }
         }
     }

@@ -4,7 +4,8 @@
 //! them the code's). About 10 minutes; `.ci/slow` runs them.
 //!
 //! Owns: nothing. May use: `layer` (the pair and its axisymmetric
-//! reference), the grid's `pull_off_ladder`, `jkr_limit` and `edge`.
+//! reference), `model` (Brent's minimum), the grid's `pull_off_ladder`,
+//! `jkr_limit` and `edge`.
 
 use super::edge::{stiffness_minimum, LineContact};
 use super::{jkr_limit, pull_off_ladder};
@@ -122,10 +123,14 @@ fn the_grid_tables_of_the_docs_are_the_solver_s() {
     }
     // ρ < 1 (and ρ = 1 at h/L = 0.5): four rungs each, (2)'s exact
     // pull-offs as docs/accuracy.md prints them
-    let exact_2 = |rho: f64| match rho {
-        r if r == 1.0 => -4.712389,
-        r if r == 0.8 => -4.197605,
-        _ => -3.240848,
+    let exact_2 = |rho: f64| {
+        if rho == 1.0 {
+            -4.712389
+        } else if rho == 0.8 {
+            -4.197605
+        } else {
+            -3.240848
+        }
     };
     for row in table(
         &doc,
