@@ -14,7 +14,7 @@
 //! them at the pull-off under load control, where dF̄/dδ̄ = 0; dF̄/dδ̄
 //! comes with each state from one more linear solve.
 //!
-//! Owns: `Sheet`, `SheetState`. May use: `layer` (the pair), `error`,
+//! Owns: `Sheet`, `SheetState`, `Work`, `Rung`. May use: `layer` (the pair), `error`,
 //! `quadrature`, and its own `kernel`, `law`, `gmres`, `bessel0`, `edge`,
 //! `bench`.
 
@@ -39,6 +39,29 @@ pub(crate) struct Sheet {
     kernel: Kernel,
     /// φ̄ at the cells' centres.
     phi: Vec<f64>,
+    /// The work of the states solved on this grid so far.
+    work: std::cell::Cell<Work>,
+}
+
+/// The work of the states a grid has solved: how many, their Newton steps
+/// and their products with the compliance (each GMRES iteration one, and
+/// each residual); attempts that failed are not counted.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Work {
+    pub(crate) states: usize,
+    pub(crate) steps: usize,
+    pub(crate) products: usize,
+}
+
+impl std::ops::Add for Work {
+    type Output = Work;
+    fn add(self, o: Work) -> Work {
+        Work {
+            states: self.states + o.states,
+            steps: self.steps + o.steps,
+            products: self.products + o.products,
+        }
+    }
 }
 
 /// A state of the grid solver.
@@ -91,6 +114,7 @@ impl Sheet {
             law: Law { range },
             kernel,
             phi,
+            work: Default::default(),
         }
     }
 
@@ -116,6 +140,14 @@ impl Sheet {
         let half_widths = (
             self.crossing(&gap, true, law.range),
             self.crossing(&gap, false, law.range),
+        );
+        self.work.set(
+            self.work.get()
+                + Work {
+                    states: 1,
+                    steps,
+                    products,
+                },
         );
         let n = self.n;
         let edge_gap = (0..n)
@@ -507,6 +539,8 @@ pub(crate) struct Rung {
     pub(crate) n: usize,
     pub(crate) width: f64,
     pub(crate) state: SheetState,
+    /// The work of the rung's whole search, on every grid it tried.
+    pub(crate) work: Work,
     pub(crate) seconds: f64,
 }
 
@@ -538,6 +572,7 @@ pub(crate) fn pull_off_ladder(
                 st.half_widths.0.map_or(reach, |a| reach.max(1.05 * a))
             }
         };
+        let mut work = Work::default();
         let found = loop {
             let n = 2 * (width / dx).ceil() as usize;
             if n > MAX_CELLS {
@@ -555,6 +590,7 @@ pub(crate) fn pull_off_ladder(
                     sheet.pull_off_near(st.delta_bar, &gap, 0.01 * a * a, 1e-7 * a * a)?
                 }
             };
+            work = work + sheet.work.get();
             if st.edge_gap >= EDGE_GAP {
                 break (sheet, st, n);
             }
@@ -577,6 +613,7 @@ pub(crate) fn pull_off_ladder(
             n,
             width: sheet.dx * n as f64 / 2.0,
             state: st.clone(),
+            work,
             seconds: t.elapsed().as_secs_f64(),
         });
         tell(out.last().expect("pushed"));

@@ -32,7 +32,7 @@ fn explore_ladder() {
     let reference = layers.pull_off(Route::Griffith).unwrap().load.force_bar;
     pull_off_ladder(&layers, rho, &rungs, &mut |r| {
         println!(
-            "h/L {thin} rho {rho} eps {} cells/zone {} n {} W {:.4}: F {:.8} rel {:+.3e} delta {:.6} a {:.4} b {:.4} edge gap {:.0} ranges; {} Newton steps, {} products ({:.1} s)",
+            "h/L {thin} rho {rho} eps {} cells/zone {} n {} W {:.4}: F {:.8} rel {:+.3e} delta {:.6} a {:.4} b {:.4} edge gap {:.0} ranges; {} states, {} Newton steps, {} products ({:.1} s)",
             r.eps,
             r.cells_per_zone,
             r.n,
@@ -43,8 +43,9 @@ fn explore_ladder() {
             r.state.half_widths.0.unwrap_or(f64::NAN),
             r.state.half_widths.1.unwrap_or(f64::NAN),
             r.state.edge_gap,
-            r.state.steps,
-            r.state.products,
+            r.work.states,
+            r.work.steps,
+            r.work.products,
             r.seconds
         );
     })
