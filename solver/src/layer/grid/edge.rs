@@ -123,8 +123,9 @@ impl<'a> LineContact<'a> {
     }
 
     /// The Galerkin matrix of mode k̄ at half width ā, and at k̄ = 0 also
-    /// its derivative in ā.
-    fn matrix(&self, a: f64, k: f64) -> (DMatrix<f64>, DMatrix<f64>) {
+    /// its derivative in ā (none at k̄ > 0).
+    fn matrix(&self, a: f64, k: f64) -> (DMatrix<f64>, Option<DMatrix<f64>>) {
+        let straight = k == 0.0;
         let n = self.modes;
         let beta = self.layers.beta();
         let top = self.top(k);
@@ -135,19 +136,23 @@ impl<'a> LineContact<'a> {
             orders(q * a, &mut j);
             let c = self.compliance(q.hypot(k));
             let rest = c - 1.0 / (beta * q);
-            let dphi = if k == 0.0 {
-                let eta = 1e-3 * q;
-                let phi = |x: f64| self.layers.base_share(x);
-                (8.0 * (phi(q + eta) - phi(q - eta)) - phi(q + 2.0 * eta) + phi(q - 2.0 * eta))
-                    / (12.0 * eta)
-            } else {
-                0.0
-            };
             for m in 0..n {
                 for l in (m % 2..=m).step_by(2) {
                     let jj = w * j[m] * j[l];
                     integral[(m, l)] += if m == 0 { c * jj } else { rest * jj };
-                    slope[(m, l)] += dphi * jj;
+                }
+            }
+            if straight {
+                // dΦ/dq by the five-point difference
+                let eta = 1e-3 * q;
+                let phi = |x: f64| self.layers.base_share(x);
+                let dphi = (8.0 * (phi(q + eta) - phi(q - eta)) - phi(q + 2.0 * eta)
+                    + phi(q - 2.0 * eta))
+                    / (12.0 * eta);
+                for m in 0..n {
+                    for l in (m % 2..=m).step_by(2) {
+                        slope[(m, l)] += dphi * w * j[m] * j[l];
+                    }
                 }
             }
         }
@@ -180,7 +185,7 @@ impl<'a> LineContact<'a> {
                 }
             }
         }
-        (matrix, da)
+        (matrix, straight.then_some(da))
     }
 
     /// The straight state at half width ā.
@@ -189,6 +194,7 @@ impl<'a> LineContact<'a> {
         let pi = std::f64::consts::PI;
         let beta = self.layers.beta();
         let (matrix, da) = self.matrix(a, 0.0);
+        let da = da.expect("the straight state's matrix carries its slope");
         let lu = matrix.lu();
         let solve = |r: DVector<f64>| {
             lu.solve(&r).ok_or_else(|| Error::Unresolved {
@@ -221,6 +227,26 @@ impl<'a> LineContact<'a> {
             coef_a: coef_a.iter().copied().collect(),
             coef_shift: coef_shift.iter().copied().collect(),
         })
+    }
+
+    /// The most unstable undulation of `state`: the least δK/A/K over k̄h in
+    /// [0.05, 8] (h the thicker coating), by Brent's method on ln k̄h, and
+    /// that k̄h; the first undulation that fails is the error.
+    pub(crate) fn most_unstable(&self, state: &LineState) -> Result<(f64, f64)> {
+        let h = self.layers.thickest();
+        let failed = std::cell::RefCell::new(None);
+        let at = |t: f64| match self.undulation(state, t.exp() / h) {
+            Ok(s) => s,
+            Err(e) => {
+                failed.borrow_mut().get_or_insert(e);
+                f64::INFINITY
+            }
+        };
+        let t = brent_minimum(at, (0.05f64).ln(), (8.0f64).ln(), 1e-6);
+        if let Some(e) = failed.into_inner() {
+            return Err(e);
+        }
+        Ok((self.undulation(state, t.exp() / h)?, t.exp()))
     }
 
     /// δK/A over K at mode k̄ > 0: the change of the stress-intensity
@@ -293,13 +319,6 @@ mod tests {
         }
     }
 
-    /// The least δK/A/K over k̄ (Brent on ln k̄h in [0.05, 8]) and its k̄h.
-    fn least(line: &LineContact, st: &LineState, thin: f64) -> (f64, f64) {
-        let f = |t: f64| line.undulation(st, t.exp() / thin).unwrap();
-        let t = brent_minimum(f, (0.05f64).ln(), (8.0f64).ln(), 1e-6);
-        (f(t), t.exp())
-    }
-
     #[test]
     fn the_straight_edge_follows_rice_at_short_waves_and_equation_2_at_long_ones() {
         // short waves (kh ≫ 1): the half-space's crack front, Rice (1985):
@@ -355,7 +374,7 @@ mod tests {
             for modes in [40, 80] {
                 let line = LineContact::new(&layers, modes);
                 let st = line.state(1.0).unwrap();
-                let (s, kh) = least(&line, &st, 0.1);
+                let (s, kh) = line.most_unstable(&st).unwrap();
                 assert!(s < 0.0, "nu {nu}, {modes} modes: {s}");
                 found.push(kh);
             }
@@ -425,7 +444,7 @@ mod tests {
         let list = std::env::var("THINJKR_EDGE_AS").unwrap_or("0.5,1,2".into());
         for a in list.split(',').map(|x| x.parse::<f64>().unwrap()) {
             let st = line.state(a).unwrap();
-            let (least, kh) = least(&line, &st, thin);
+            let (least, kh) = line.most_unstable(&st).unwrap();
             println!(
                 "h/L {thin} nu {nu} a/h {:.3}: delta {:.6} F {:.6} dK/db/K {:+.5} tail {:.1e}; least dK/A/K {:+.6} at kh {:.5}",
                 a / thin,

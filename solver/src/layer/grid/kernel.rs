@@ -18,6 +18,7 @@
 
 use super::super::Layers;
 use super::bessel0::j0;
+use super::Compliance;
 use crate::quadrature::GaussLegendre;
 use rayon::prelude::*;
 use rustfft::num_complex::Complex64;
@@ -172,17 +173,6 @@ impl Kernel {
         }
     }
 
-    /// The displacement A·p at every cell from the pressures p (n × n, row
-    /// by row). The pressures are real, and so is the product: two rows
-    /// of pressure go through one complex FFT (the real and imaginary
-    /// parts, told apart by the symmetry of a real row's transform), only
-    /// the columns of non-negative frequency are transformed (the others
-    /// are their conjugates), and two rows of the product come back from
-    /// one inverse FFT, half the transforms of a complex product.
-    pub(crate) fn apply(&self, p: &[f64], out: &mut [f64]) {
-        self.product(p, out, &self.spectrum)
-    }
-
     /// The product of `p` with the padded grid's operator of spectrum
     /// `multiplier` (divided by m²), two real rows per complex FFT.
     fn product(&self, p: &[f64], out: &mut [f64], multiplier: &[f64]) {
@@ -253,9 +243,16 @@ impl Kernel {
     }
 }
 
-impl super::Compliance for Kernel {
+impl Compliance for Kernel {
+    /// The displacement A·p at every cell from the pressures p (n × n, row
+    /// by row). The pressures are real, and so is the product: two rows
+    /// of pressure go through one complex FFT (the real and imaginary
+    /// parts, told apart by the symmetry of a real row's transform), only
+    /// the columns of non-negative frequency are transformed (the others
+    /// are their conjugates), and two rows of the product come back from
+    /// one inverse FFT, half the transforms of a complex product.
     fn apply(&self, p: &[f64], out: &mut [f64]) {
-        Kernel::apply(self, p, out)
+        self.product(p, out, &self.spectrum)
     }
 
     fn stiffen(&self, w: &[f64], out: &mut [f64]) {

@@ -4,13 +4,13 @@
 //! them the code's). About 10 minutes; `.ci/slow` runs them.
 //!
 //! Owns: nothing. May use: `layer` (the pair and its axisymmetric
-//! reference), `model` (Brent's minimum), the grid's `pull_off_ladder`,
-//! `jkr_limit` and `edge`.
+//! reference), `exact` ((2)'s exact pull-off), the grid's
+//! `pull_off_ladder`, `jkr_limit` and `edge`.
 
 use super::edge::{stiffness_minimum, LineContact};
 use super::{jkr_limit, pull_off_ladder};
+use crate::exact::pull_off_resolved;
 use crate::layer::{Layers, Route};
-use crate::model::brent_minimum;
 
 /// docs/thickness.md.
 fn doc() -> String {
@@ -121,17 +121,9 @@ fn the_grid_tables_of_the_docs_are_the_solver_s() {
             );
         }
     }
-    // ρ < 1 (and ρ = 1 at h/L = 0.5): four rungs each, (2)'s exact
-    // pull-offs as docs/accuracy.md prints them
-    let exact_2 = |rho: f64| {
-        if rho == 1.0 {
-            -4.712389
-        } else if rho == 0.8 {
-            -4.197605
-        } else {
-            -3.240848
-        }
-    };
+    // ρ < 1 (and ρ = 1 at h/L = 0.5): four rungs each, against (2)'s exact
+    // pull-off
+    let exact_2 = |rho: f64| pull_off_resolved(rho).unwrap().0.force_bar;
     for row in table(
         &doc,
         "| h/L | ρ | F̄ at ε = 0.2, 0.1, 0.05, 0.025 | F̄₀ (0.2 … 0.05) | F̄₀ (0.1 … 0.025) | (2)'s error | F̄₀/F̄₍₂₎ |",
@@ -184,9 +176,7 @@ fn the_edge_table_of_the_docs_is_the_solver_s() {
         let layers = Layers::equal(0.1, nu).unwrap();
         let line = LineContact::new(&layers, 80);
         let st = line.state(a_over_h * 0.1).unwrap();
-        let f = |t: f64| line.undulation(&st, t.exp() / 0.1).unwrap();
-        let t = brent_minimum(f, (0.05f64).ln(), (8.0f64).ln(), 1e-6);
-        let (least, kh) = (f(t), t.exp());
+        let (least, kh) = line.most_unstable(&st).unwrap();
         let at = format!("nu {nu}, a/h {a_over_h}");
         check(&format!("{at}: delta"), st.delta_bar, &row[2], &mut bad);
         check(&format!("{at}: F"), st.force_bar, &row[3], &mut bad);
