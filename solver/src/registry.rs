@@ -19,7 +19,8 @@
 //! answers' shapes), `batch` (quoting), `curve` (the ellipse models'
 //! curves), `model`, `control`, `units` (`physical`), `cutoff` (a contour state's
 //! stability judged with the coatings' thinness, an exact state's with the
-//! default one in the dimensionless verbs), `slender`, `error`.
+//! default one in the dimensionless verbs), `slender`, `error`, `newton`
+//! (whether the caller asked to stop).
 
 use crate::conformal::Conformal;
 use crate::control::Hold;
@@ -70,20 +71,6 @@ impl Choice {
                 other.name()
             ))),
             other => Ok(other),
-        }
-    }
-
-    /// The layer's coatings answer at ρ = 1 only: the problem is
-    /// axisymmetric there (every crossing angle is issue 71).
-    fn layer_at(rho: f64) -> crate::Result<()> {
-        if rho == 1.0 {
-            Ok(())
-        } else {
-            Err(crate::Error::Unsupported {
-                name: "rho",
-                value: rho,
-                supported: "1 for the model layer (coatings of finite thickness are solved at rho = 1, the axisymmetric contact of crossed equal cylinders at 90 degrees, so far)".into(),
-            })
         }
     }
 }
@@ -459,6 +446,12 @@ pub fn physical(
                 "the layer of finite thickness has no answer to measure (2) against: {e}"
             )),
         }
+    } else if question == Question::PullOff {
+        // at ρ < 1 the layer's pull-off in the plane, where the grid
+        // solver reaches these coatings (it is slow: a ladder of grids)
+        if let Some(layered) = in_the_plane(cyl, row, &mut answer)? {
+            return Ok(layered);
+        }
     }
     answer.chosen_because = Some(format!(
         "no model named: {} answers {} at rho = {} (the table of defaults): {}",
@@ -493,6 +486,104 @@ pub fn physical(
         }
     }
     Ok(answer)
+}
+
+/// The least ρ at which `physical` estimates the layer's pull-off from
+/// (2)'s where the layer in the plane does not answer: the ratio of the two
+/// at ρ = 1 held within 4 % down to ρ = 0.2 for h/L = 0.5, 0.73 and 1
+/// (docs/thickness.md, "The layer in the plane"), and failed at ρ = 0.072.
+const ESTIMATE_FROM_RHO: f64 = 0.2;
+
+/// The pull-off of the contact `cyl` at ρ < 1 by the layer in the plane
+/// when no model is named, where (2)'s answer `thin` (by the table's
+/// `row`) is more than [`THIN_LAYER_TOLERANCE`] off it: the layer's answer
+/// with (2)'s beside it. Where the grid solver does not reach these
+/// coatings (`layer::grid::plane::REACH`), `None`, and `thin` gains a
+/// warning, with the best estimate from [`ESTIMATE_FROM_RHO`] up: (2)'s
+/// pull-off times the ratio of the axisymmetric layer's to (2)'s at ρ = 1.
+fn in_the_plane(
+    cyl: &crate::units::Cylinders,
+    row: &DefaultRow,
+    thin: &mut PhysicalAnswer,
+) -> crate::Result<Option<PhysicalAnswer>> {
+    let sc = cyl.scales()?;
+    let layers = layers_of(cyl, &sc)?;
+    // (2)'s pull-off at ρ = 1 is the circle's, −3π/2 (docs/derivation.md)
+    let circle = -1.5 * std::f64::consts::PI;
+    let ratio = match layers.pull_off(crate::layer::Route::Griffith) {
+        Ok(p) => p.load.force_bar / circle,
+        Err(e) => {
+            thin.warnings.push(format!(
+                "the layer of finite thickness has no answer to measure (2) against: {e}"
+            ));
+            return Ok(None);
+        }
+    };
+    if (1.0 / ratio - 1.0).abs() <= THIN_LAYER_TOLERANCE {
+        // (2) holds for these coatings at ρ = 1, and its error changes
+        // little with ρ
+        return Ok(None);
+    }
+    let (.., force) = thin.state.size_and_load();
+    let reach = crate::layer::grid::plane::REACH;
+    // where the layer in the plane has no answer: (2)'s, with the estimate
+    // where the ratio's change with ρ is measured
+    let mut estimate = |why: String| {
+        let best = if sc.rho >= ESTIMATE_FROM_RHO {
+            format!(
+                "best estimate of the pull-off force: {} N, (2)'s times the layer's ratio to it at rho = 1, {}, which changed with rho by at most 4 % for h/L = 0.5 to 1 from rho = 1 down to {} (not measured for thinner coatings; docs/thickness.md)",
+                crate::error::short(force * ratio * sc.force),
+                crate::error::short(ratio),
+                ESTIMATE_FROM_RHO
+            )
+        } else {
+            format!(
+                "below rho = {ESTIMATE_FROM_RHO} no estimate is measured (at rho = 0.072 with h/L = 0.73 the layer's pull-off is 27 % larger than (2)'s, not smaller; docs/thickness.md)"
+            )
+        };
+        thin.warnings.push(format!(
+            "(2) is {} % off the layer of finite thickness at rho = 1 for these coatings, and at rho < 1 {why}; {best}",
+            crate::error::short(100.0 * (1.0 / ratio - 1.0).abs())
+        ));
+        Ok(None)
+    };
+    let beyond = if layers.thinnest() < reach.0 {
+        Some(layers.thinnest())
+    } else if layers.thickest() > reach.1 {
+        Some(layers.thickest())
+    } else {
+        None
+    };
+    if let Some(h) = beyond {
+        return estimate(format!(
+            "the grid solver reaches coatings with h/L from {} to {} only, and these have h/L = {}",
+            crate::error::short(reach.0),
+            crate::error::short(reach.1),
+            crate::error::short(h)
+        ));
+    }
+    let mut layered = match Choice::Layer(layers).physical(cyl, None, None) {
+        Ok(layered) => layered,
+        // (a stop the caller asked for stops the answer too)
+        Err(e) if crate::newton::stop_requested() => return Err(e),
+        Err(e) => return estimate(format!("the grid solver has no answer: {e}")),
+    };
+    let error = thin_layer_error(&thin.state, &layered.state, None, None);
+    layered.chosen_because = Some(format!(
+        "no model named: at rho < 1 the layer of finite thickness answers the pull-off in the plane where the grid solver reaches the coatings (h/L from {} to {}) and the thin-layer equation (2) is more than {} % off it (here {} %; (2)'s answer, by {}, is beside it)",
+        crate::error::short(reach.0),
+        crate::error::short(reach.1),
+        THIN_LAYER_TOLERANCE * 100.0,
+        crate::error::short(100.0 * error),
+        row.model
+    ));
+    layered.thin_layer = Some(crate::report::ThinLayer {
+        model: row.model.to_string(),
+        state: thin.state.clone(),
+        si: thin.si,
+        relative_error: error,
+    });
+    Ok(Some(layered))
 }
 
 impl Choice {
@@ -648,6 +739,7 @@ fn physical_warnings(
         crate::report::AnyState::Conformal(st) => warnings.extend(st.warnings.iter().cloned()),
         // (an exact state's warnings, its shape's, come after the
         // stability's doubt, below)
+        crate::report::AnyState::LayerPlane(st) => warnings.extend(st.warnings.iter().cloned()),
         crate::report::AnyState::Exact(_)
         | crate::report::AnyState::Slender(_)
         | crate::report::AnyState::Layer(_) => {}
@@ -694,7 +786,7 @@ fn physical_warnings(
         }
         _ => {}
     }
-    if let crate::report::AnyState::Layer(_) = state {
+    if let crate::report::AnyState::Layer(_) | crate::report::AnyState::LayerPlane(_) = state {
         // the layer measures h/a itself; its kernel assumes a flat coating
         let h_over_r = (cyl.h1 / cyl.r1).max(cyl.h2 / cyl.r2);
         if h_over_r > 0.1 {
@@ -798,12 +890,13 @@ impl Choice {
             Choice::Exact => vec![AnyState::Exact(Box::new(
                 crate::exact::at_resolved(rho, hold)?.judged(Cutoff::default()),
             ))],
-            Choice::Layer(layers) => {
-                Choice::layer_at(rho)?;
-                vec![AnyState::Layer(
-                    layers.state(hold, crate::layer::Route::Griffith)?,
-                )]
-            }
+            // at ρ < 1 the grid solver's state in the plane
+            Choice::Layer(layers) if rho != 1.0 => vec![AnyState::LayerPlane(Box::new(
+                crate::layer::grid::plane::state(&layers, rho, Some(hold))?,
+            ))],
+            Choice::Layer(layers) => vec![AnyState::Layer(
+                layers.state(hold, crate::layer::Route::Griffith)?,
+            )],
         })
     }
 
@@ -948,8 +1041,26 @@ impl Choice {
                     why: "only the load-controlled pull-off of the exact family is located",
                 })
             }
+            // at ρ < 1 the grid solver's pull-off in the plane, under
+            // load control
+            Choice::Layer(layers) if rho != 1.0 => {
+                if !load {
+                    return Err(crate::Error::Unavailable {
+                        model: LAYER,
+                        what: "pull-off under displacement control at rho < 1".into(),
+                        why: "the grid solver locates the pull-off under load control only; at rho = 1 the axisymmetric layer gives both",
+                    });
+                }
+                PullOffAnswer {
+                    state: AnyState::LayerPlane(Box::new(crate::layer::grid::plane::pull_off(
+                        &layers, rho,
+                    )?)),
+                    control,
+                    basis: None,
+                    passed: Vec::new(),
+                }
+            }
             Choice::Layer(layers) => {
-                Choice::layer_at(rho)?;
                 let p = layers.pull_off(crate::layer::Route::Griffith)?;
                 PullOffAnswer {
                     state: AnyState::Layer(if load { p.load } else { p.displacement }),
@@ -1185,6 +1296,21 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
                 p0: None,
                 bc_error: 0.0,
                 warning: String::new(),
+                departure: None,
+                route: None,
+            },
+            // the grid's JKR limit: its force's bound in place of a
+            // boundary error (the cohesive law has no sharp edge to check)
+            AnyState::LayerPlane(s) => crate::batch::Row {
+                a_bar: s.a_bar,
+                b_bar: s.b_bar,
+                s: s.s,
+                delta_bar: s.delta_bar,
+                force_bar: s.force_bar,
+                xi: None,
+                p0: None,
+                bc_error: s.force_error,
+                warning: s.warnings.join("; "),
                 departure: None,
                 route: None,
             },

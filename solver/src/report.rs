@@ -63,6 +63,9 @@ pub enum AnyState {
     Slender(SlenderState),
     /// The layer of finite thickness at ρ = 1 (`layer`).
     Layer(crate::layer::LayerState),
+    /// The layer of finite thickness at ρ < 1: its pull-off under load
+    /// control in the plane (`layer`, by the grid solver).
+    LayerPlane(Box<crate::layer::PlaneState>),
 }
 
 /// A state of a model of the ellipse as JSON: its fields and, where it is
@@ -97,6 +100,7 @@ impl AnyState {
             AnyState::Exact(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
             AnyState::Slender(st) => (f64::INFINITY, st.b_bar, st.delta_bar, st.force_bar),
             AnyState::Layer(st) => (st.a_bar, st.a_bar, st.delta_bar, st.force_bar),
+            AnyState::LayerPlane(st) => (st.a_bar, st.b_bar, st.delta_bar, st.force_bar),
         }
     }
 }

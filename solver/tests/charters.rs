@@ -188,13 +188,16 @@ fn every_module_uses_only_what_its_charter_names() {
 /// messages in 300 characters, as the command line's are), then 219 for
 /// `report`'s re-export of `SlenderState`, which `slender` owns since
 /// issue 69 (the slender model no longer imports `report`, which kept it
-/// in the import cycle; its public path is unchanged). The benches' hooks
+/// in the import cycle; its public path is unchanged), then 223 for the
+/// layer in the plane (issue 71: `PlaneState`, `PlaneRung` and `Held`,
+/// which `AnyState::LayerPlane` holds, and `layer`'s re-export of them from
+/// the crate-private grid solver). The benches' hooks
 /// (`bench_internals` and the module it re-exports, built only with the
 /// `bench-internals` feature, hidden from the docs) are not a user's API and
 /// are not counted.
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 219;
+    const MAX_PUBLIC_ITEMS: usize = 223;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);

@@ -349,6 +349,52 @@ fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
     Ok(())
 }
 
+/// A state of the layer in the plane: the answer in a line, how far to
+/// trust it in the next, any warning; with `--explain` what its coatings
+/// are, the ladder's rungs and the check's limit.
+fn show_layer_plane(label: &str, st: &crate::layer::PlaneState) -> crate::Result<()> {
+    outln!(
+        "{label}: model layer, rho = {}, force = {}, a = {}, s = {}, delta = {} [h/L = {}, nu = {}; {}]",
+        output::num(st.rho),
+        output::num(st.force_bar),
+        output::num(st.a_bar),
+        output::num(st.s),
+        output::num(st.delta_bar),
+        crate::error::short(st.coatings[0].thinness),
+        crate::error::short(st.coatings[0].nu),
+        match st.held {
+            crate::layer::Held::PullOff => "load control: neutral (a pull-off)",
+            crate::layer::Held::Delta => "on the branch stable under displacement control",
+            crate::layer::Held::Force => "on the branch stable under load control",
+        }
+    );
+    outln!("  {}", st.trust_words());
+    for w in &st.warnings {
+        outln!("  warning: {w}");
+    }
+    if output::explain() {
+        outln!("  {}", st.coatings_are);
+        for r in &st.rungs {
+            outln!(
+                "  process zone {} of the contact, {} cells per side: force = {}, a = {}, b = {}, delta = {}",
+                crate::error::short(r.eps),
+                r.cells,
+                output::num(r.force_bar),
+                output::num(r.a_bar),
+                output::num(r.b_bar),
+                output::num(r.delta_bar)
+            );
+        }
+        if st.held != crate::layer::Held::Force {
+            outln!(
+                "  the JKR limit through the three coarsest: force = {}",
+                output::num(st.force_bar_coarse)
+            );
+        }
+    }
+    Ok(())
+}
+
 /// A slender state in a line: its centre's half-width instead of a size
 /// (its contact has no finite length), and its stability.
 fn show_slender(label: &str, st: &crate::report::SlenderState) -> crate::Result<()> {
@@ -624,6 +670,7 @@ fn show_states(label: &str, states: &[AnyState], j: bool) -> crate::Result<()> {
             AnyState::Exact(st) => exact_command::show_state(label, st)?,
             AnyState::Slender(st) => show_slender(label, st)?,
             AnyState::Layer(st) => show_layer(label, st)?,
+            AnyState::LayerPlane(st) => show_layer_plane(label, st)?,
         }
     }
     Ok(())
@@ -1058,6 +1105,10 @@ fn physical(
         }
         AnyState::Conformal(st) => outln!("{}", conformal_line(st)),
         AnyState::Layer(st) => outln!("  {}", st.coatings_are),
+        AnyState::LayerPlane(st) => {
+            outln!("  {}", st.trust_words());
+            outln!("  {}", st.coatings_are);
+        }
         AnyState::Ellipse(_) | AnyState::Slender(_) => {}
     }
     if let Some(t) = &thin_layer {
@@ -1111,6 +1162,9 @@ fn physical_brief(
     thin_layer: Option<&crate::report::ThinLayer>,
     warnings: &[String],
 ) -> crate::Result<()> {
+    if let AnyState::LayerPlane(st) = state {
+        outln!("  {}", st.trust_words());
+    }
     match (thin_layer, state) {
         (Some(t), _) => outln!("{}", thin_layer_line(t)),
         (None, AnyState::Exact(st)) => outln!("  {}", exact_command::verdict_words(st)),
@@ -1291,6 +1345,8 @@ fn curve_row(p: &crate::registry::CurvePoint) -> String {
             "layer".into(),
             (Some(l.delta_slope > 0.0), Some(l.force_slope > 0.0)),
         ),
+        // (a pull-off alone, not on a curve: its stability is not judged)
+        AnyState::LayerPlane(_) => ("layer".into(), (None, None)),
     };
     format!(
         "{name},{},{},{},{},{},{},{},{},{}",

@@ -22,15 +22,22 @@
 //! elastic energy instead (∂Ū/∂ā = πā at fixed δ̄) and is held against the
 //! first in the tests.
 //!
+//! At ρ < 1 the contact is not axisymmetric: the grid solver (`grid`)
+//! gives the pull-off under load control in the plane, [`PlaneState`]
+//! (issue 71).
+//!
 //! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`], `Controlled`. May use:
 //! `control` (what a state is held at), `error`, `quadrature` (Gauss–Legendre), `generated` (the layer's kernel), `model` (Brent's minimum).
 
 mod bessel;
 mod energy;
 mod galerkin;
-// the grid solver of issue 71: tested here, called by the model layer once it holds the reference
+// the grid solver of issue 71: its pull-off in the plane answers through
+// the model layer (`grid::plane`); the straight edge's undulations are
+// tested here
 #[allow(dead_code)]
 pub(crate) mod grid;
+pub use grid::plane::{Held, PlaneRung, PlaneState};
 
 use crate::control::Hold;
 use crate::error::{check_range, rounded, short, Error, Result};

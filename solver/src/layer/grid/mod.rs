@@ -14,9 +14,10 @@
 //! them at the pull-off under load control, where dF̄/dδ̄ = 0; dF̄/dδ̄
 //! comes with each state from one more linear solve.
 //!
-//! Owns: `Sheet`, `SheetState`, `Work`, `Rung`. May use: `layer` (the pair), `error`,
-//! `quadrature`, and its own `kernel`, `law`, `gmres`, `bessel0`, `edge`,
-//! `bench`.
+//! Owns: `Sheet`, `SheetState`, `Work`, `Rung`, `Target`. May use: `layer` (the pair), `error`,
+//! `quadrature`, `newton` (the stop request, between rungs), and its own
+//! `kernel`, `law`, `gmres`, `bessel0`, `edge`, `bench`, `plane` (the
+//! answer the model layer gives).
 
 #[cfg(feature = "bench-internals")]
 pub(crate) mod bench;
@@ -25,6 +26,7 @@ mod edge;
 mod gmres;
 mod kernel;
 mod law;
+pub(crate) mod plane;
 
 use super::Layers;
 use crate::error::{rounded, Error, Result};
@@ -241,50 +243,115 @@ impl Sheet {
             .collect()
     }
 
-    /// The pull-off under load control: down in δ̄ from `start` (a loaded
-    /// state, solved from no guess) in steps of `step` until dF̄/dδ̄ changes
-    /// sign, then the secant on dF̄/dδ̄ to `tol` in δ̄.
-    pub(crate) fn pull_off(&self, start: f64, step: f64, tol: f64) -> Result<SheetState> {
-        let first = self.cold_state(start)?;
-        if first.force_slope <= 0.0 {
-            return Err(Error::NoState(format!(
-                "the grid solver: the state at delta_bar = {} is not above the pull-off",
-                rounded(start)
-            )));
-        }
-        self.pull_off_from(first, step, tol)
-    }
-
-    /// The pull-off under load control from the state at `delta` whose
-    /// gaps are about `guess`: the state there, then steps of `step` in δ̄
-    /// (down while dF̄/dδ̄ > 0, up while it is not) until dF̄/dδ̄ changes
-    /// sign, then the secant.
-    pub(crate) fn pull_off_near(
+    /// The state `target` asks for, from the state `first` on the branch
+    /// stable under displacement control: steps of `step` in δ̄, then the
+    /// secant to `tol` in δ̄ where a root is sought.
+    pub(crate) fn find(
         &self,
-        delta: f64,
-        guess: &[f64],
+        target: Target,
+        first: SheetState,
         step: f64,
         tol: f64,
     ) -> Result<SheetState> {
-        let first = self.state(delta, guess)?;
-        self.pull_off_from(first, step, tol)
+        match target {
+            Target::PullOff => self.pull_off_from(first, step, tol),
+            Target::Delta(d) => self.to_delta(first, d, step),
+            Target::Force(f) => self.to_force(first, f, step, tol),
+        }
     }
 
+    /// The first guess of the gaps at `d` from the state `s`: its gaps
+    /// moved along their slope in δ̄.
+    fn predict(s: &SheetState, d: f64) -> Vec<f64> {
+        s.gap
+            .iter()
+            .zip(&s.gap_slope)
+            .map(|(g, v)| g + (d - s.delta_bar) * v)
+            .collect()
+    }
+
+    /// The state at approach `d` from `first`, in steps of at most `step`
+    /// in δ̄ (halved where Newton fails, down to a thousandth), each from
+    /// the last one's prediction: the branch stable under displacement
+    /// control, which ends at its pull-off in δ̄.
+    fn to_delta(&self, first: SheetState, d: f64, step: f64) -> Result<SheetState> {
+        let from = first.delta_bar;
+        let mut state = first;
+        let mut h = step;
+        while state.delta_bar != d {
+            let next = if (d - state.delta_bar).abs() <= h {
+                d
+            } else {
+                state.delta_bar + h * (d - state.delta_bar).signum()
+            };
+            match self.state(next, &Self::predict(&state, next)) {
+                Ok(s) => state = s,
+                Err(_) if h > step * 1e-3 => h *= 0.5,
+                Err(e) => {
+                    return Err(Error::NoState(format!(
+                        "the grid solver: the branch stable under displacement control from delta_bar = {} ends before delta_bar = {} (Newton fails beyond delta_bar = {}: {})",
+                        rounded(from),
+                        rounded(d),
+                        rounded(state.delta_bar),
+                        e.detail()
+                    )))
+                }
+            }
+        }
+        Ok(state)
+    }
+
+    /// The state at force `f` from `first` on the branch stable under
+    /// load control (dF̄/dδ̄ > 0): steps of `step` in δ̄ towards it until F̄
+    /// passes `f`, then the secant (Illinois) on F̄ − f to `tol` in δ̄. A
+    /// force below the branch's least, the pull-off's, has none.
+    fn to_force(&self, first: SheetState, f: f64, step: f64, tol: f64) -> Result<SheetState> {
+        let below = |s: &SheetState| s.force_bar < f;
+        if first.force_slope <= 0.0 {
+            return Err(Error::NoState(format!(
+                "the grid solver: the state at delta_bar = {} is not on the branch stable under load control",
+                rounded(first.delta_bar)
+            )));
+        }
+        let up = below(&first);
+        let mut state = first;
+        let mut h = if up { step } else { -step };
+        let mut prev;
+        loop {
+            let d = state.delta_bar + h;
+            match self.state(d, &Self::predict(&state, d)) {
+                Ok(next) if next.force_slope <= 0.0 => {
+                    return Err(Error::NoState(format!(
+                        "the force {} is below the layer's pull-off force in the plane (about {})",
+                        rounded(f),
+                        rounded(state.force_bar.min(next.force_bar))
+                    )))
+                }
+                Ok(next) => {
+                    prev = state;
+                    state = next;
+                    if below(&state) != up {
+                        break;
+                    }
+                }
+                Err(_) if h.abs() > step * 1e-3 => h *= 0.5,
+                Err(e) => return Err(e),
+            }
+        }
+        self.secant(prev, state, |s| s.force_bar - f, tol, "F - F0")
+    }
+
+    /// The pull-off under load control from `first`: steps of `step` in
+    /// δ̄ (down while dF̄/dδ̄ > 0, up while it is not) until dF̄/dδ̄ changes
+    /// sign, then the secant on dF̄/dδ̄ to `tol` in δ̄.
     fn pull_off_from(&self, first: SheetState, step: f64, tol: f64) -> Result<SheetState> {
-        let predict = |s: &SheetState, d: f64| -> Vec<f64> {
-            s.gap
-                .iter()
-                .zip(&s.gap_slope)
-                .map(|(g, v)| g + (d - s.delta_bar) * v)
-                .collect()
-        };
         let down = first.force_slope > 0.0;
         let mut state = first;
         let mut h = if down { step } else { -step };
         let mut prev;
         loop {
             let d = state.delta_bar - h;
-            match self.state(d, &predict(&state, d)) {
+            match self.state(d, &Self::predict(&state, d)) {
                 Ok(next) => {
                     prev = state;
                     state = next;
@@ -296,14 +363,28 @@ impl Sheet {
                 Err(e) => return Err(e),
             }
         }
-        // secant (Illinois) on F'(δ̄) between a (F' > 0) and b (F' ≤ 0)
-        let (mut a, mut b) = if down { (prev, state) } else { (state, prev) };
+        self.secant(prev, state, |s| s.force_slope, tol, "dF/d(delta)")
+    }
+
+    /// The root in δ̄ of `g` between the states `x` and `y` (where `g`
+    /// has opposite signs) by the secant's Illinois variant, to `tol` in
+    /// δ̄; `what` names `g` in the error where it does not settle.
+    fn secant(
+        &self,
+        x: SheetState,
+        y: SheetState,
+        g: impl Fn(&SheetState) -> f64,
+        tol: f64,
+        what: &str,
+    ) -> Result<SheetState> {
+        // a: the end where g > 0, b: where it is not
+        let (mut a, mut b) = if g(&x) > 0.0 { (x, y) } else { (y, x) };
         // the end replaced last time (true: a), and whether the other end
         // has now been kept twice running
         let mut last: Option<bool> = None;
         let mut kept_twice = false;
         for _ in 0..60 {
-            let (fa, fb) = (a.force_slope, b.force_slope);
+            let (fa, fb) = (g(&a), g(&b));
             let (wa, wb) = match (last, kept_twice) {
                 (Some(true), true) => (fa, 0.5 * fb),
                 (Some(false), true) => (0.5 * fa, fb),
@@ -315,12 +396,12 @@ impl Sheet {
             } else {
                 &b
             };
-            let c = self.state(d, &predict(near, d))?;
-            if (a.delta_bar - b.delta_bar).abs() < tol || c.force_slope == 0.0 {
+            let c = self.state(d, &Self::predict(near, d))?;
+            if (a.delta_bar - b.delta_bar).abs() < tol || g(&c) == 0.0 {
                 return Ok(c);
             }
             // Illinois: halve the weight of the end kept twice running
-            let replaces_a = c.force_slope > 0.0;
+            let replaces_a = g(&c) > 0.0;
             kept_twice = last == Some(replaces_a);
             last = Some(replaces_a);
             if replaces_a {
@@ -330,9 +411,7 @@ impl Sheet {
             }
         }
         Err(Error::Unresolved {
-            what:
-                "the grid solver's pull-off: the secant on dF/d(delta) did not settle in 60 steps"
-                    .into(),
+            what: format!("the grid solver: the secant on {what} did not settle in 60 steps"),
             residual: f64::NAN,
         })
     }
@@ -544,16 +623,40 @@ pub(crate) struct Rung {
     pub(crate) seconds: f64,
 }
 
+/// What a ladder finds on each of its grids.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Target {
+    /// The pull-off under load control.
+    PullOff,
+    /// The state at approach δ̄ on the branch stable under displacement
+    /// control.
+    Delta(f64),
+    /// The state at force F̄ on the branch stable under load control.
+    Force(f64),
+}
+
 /// The pull-offs under load control of `layers` at `rho` on a ladder of
-/// (process zone ε, cells across it), each from the last one's state (its
-/// gaps interpolated onto the next grid), the first from a loaded state.
-/// Each grid's edge is placed where the last state's gap reaches 24 of the
-/// next range (the first grid's at 1.9 size scales); a state whose edge gap
-/// is below 20 ranges is solved again on a grid a fifth wider. `tell`
-/// hears each rung as it is found.
+/// (process zone ε, cells across it): [`ladder`] for [`Target::PullOff`].
 pub(crate) fn pull_off_ladder(
     layers: &Layers,
     rho: f64,
+    rungs: &[(f64, f64)],
+    tell: &mut dyn FnMut(&Rung),
+) -> Result<Vec<Rung>> {
+    ladder(layers, rho, Target::PullOff, rungs, tell)
+}
+
+/// The states `target` asks for of `layers` at `rho` on a ladder of
+/// (process zone ε, cells across it), each from the last one's state (its
+/// gaps interpolated onto the next grid, solved at its δ̄), the first from
+/// a loaded state. Each grid's edge is placed where the last state's gap
+/// reaches 24 of the next range (the first grid's at 1.9 size scales); a
+/// state whose edge gap is below 20 ranges is solved again on a grid a
+/// fifth wider. `tell` hears each rung as it is found.
+pub(crate) fn ladder(
+    layers: &Layers,
+    rho: f64,
+    target: Target,
     rungs: &[(f64, f64)],
     tell: &mut dyn FnMut(&Rung),
 ) -> Result<Vec<Rung>> {
@@ -561,6 +664,7 @@ pub(crate) fn pull_off_ladder(
     let mut out: Vec<Rung> = Vec::new();
     let mut last: Option<(Sheet, SheetState)> = None;
     for &(eps, cells_per_zone) in rungs {
+        crate::newton::check_stop()?;
         let t = std::time::Instant::now();
         let zone = eps * a;
         let range = (zone / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
@@ -583,13 +687,23 @@ pub(crate) fn pull_off_ladder(
                 });
             }
             let sheet = Sheet::new(layers, rho, n, dx, range);
-            let st = match &last {
-                None => sheet.pull_off(START * a * a, 0.05 * a * a, 1e-7 * a * a)?,
-                Some((s, st)) => {
-                    let gap = sheet.prolong(s, st);
-                    sheet.pull_off_near(st.delta_bar, &gap, 0.01 * a * a, 1e-7 * a * a)?
+            let (first, step) = match &last {
+                None => {
+                    let first = sheet.cold_state(START * a * a)?;
+                    if first.force_slope <= 0.0 {
+                        return Err(Error::NoState(format!(
+                            "the grid solver: the state at delta_bar = {} is not above the pull-off",
+                            rounded(START * a * a)
+                        )));
+                    }
+                    (first, 0.05 * a * a)
                 }
+                Some((s, st)) => (
+                    sheet.state(st.delta_bar, &sheet.prolong(s, st))?,
+                    0.01 * a * a,
+                ),
             };
+            let st = sheet.find(target, first, step, 1e-7 * a * a)?;
             work = work + sheet.work.get();
             if st.edge_gap >= EDGE_GAP {
                 break (sheet, st, n);
