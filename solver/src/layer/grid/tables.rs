@@ -6,7 +6,7 @@
 //! Owns: nothing. May use: `layer` (the pair and its axisymmetric
 //! reference), `exact` ((2)'s exact pull-off), the grid's
 //! `pull_off_ladder`, `jkr_limit`, `edge` and `plane` (the model layer's
-//! answer in the plane).
+//! answer in the plane), `control` (the hold of a state at a force).
 
 use super::edge::{stiffness_minimum, LineContact};
 use super::{jkr_limit, pull_off_ladder};
