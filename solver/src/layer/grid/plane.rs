@@ -354,6 +354,26 @@ mod tests {
     use super::*;
     use crate::layer::Route;
 
+    /// `p`'s half widths and approach each within the bound it states of
+    /// the axisymmetric `reference` at ρ = 1.
+    fn size_and_approach_within_bounds(p: &PlaneState, reference: &crate::layer::LayerState) {
+        for size in [p.a_bar, p.b_bar] {
+            assert!(
+                ((size - reference.a_bar) / reference.a_bar).abs() <= p.size_error,
+                "{size} against {}, bound {}",
+                reference.a_bar,
+                p.size_error
+            );
+        }
+        assert!(
+            (p.delta_bar - reference.delta_bar).abs() <= p.delta_error,
+            "{} against {}, bound {}",
+            p.delta_bar,
+            reference.delta_bar,
+            p.delta_error
+        );
+    }
+
     #[test]
     fn the_pull_off_in_the_plane_meets_the_axisymmetric_reference_within_its_bounds() {
         // h/L = 1 at ρ = 1, where the axisymmetric layer (Galerkin in
@@ -372,21 +392,7 @@ mod tests {
             reference.force_bar,
             p.force_error
         );
-        for size in [p.a_bar, p.b_bar] {
-            assert!(
-                rel(size, reference.a_bar) <= p.size_error,
-                "{size} against {}, bound {}",
-                reference.a_bar,
-                p.size_error
-            );
-        }
-        assert!(
-            (p.delta_bar - reference.delta_bar).abs() <= p.delta_error,
-            "{} against {}, bound {}",
-            p.delta_bar,
-            reference.delta_bar,
-            p.delta_error
-        );
+        size_and_approach_within_bounds(&p, &reference);
         // the ladder's four rungs, coarsest first, each pulling harder than
         // the limit, by less as the process zone shrinks
         assert_eq!(p.rungs.len(), LADDER.len());
@@ -407,21 +413,7 @@ mod tests {
             (p.held, p.force_bar, p.force_error),
             (Held::Force, 0.0, 0.0)
         );
-        assert!(
-            (p.delta_bar - reference.delta_bar).abs() <= p.delta_error,
-            "{} against {}, bound {}",
-            p.delta_bar,
-            reference.delta_bar,
-            p.delta_error
-        );
-        for size in [p.a_bar, p.b_bar] {
-            assert!(
-                ((size - reference.a_bar) / reference.a_bar).abs() <= p.size_error,
-                "{size} against {}, bound {}",
-                reference.a_bar,
-                p.size_error
-            );
-        }
+        size_and_approach_within_bounds(&p, &reference);
         // every rung holds the force asked for
         assert!(
             p.rungs.iter().all(|r| r.force_bar.abs() < 1e-9),
