@@ -58,6 +58,8 @@ __all__ = [
     "curve",
     "models",
     "physical",
+    "study",
+    "Study",
     "exact",
 ]
 
@@ -449,8 +451,16 @@ def physical(
     solver reaches the coatings (h/L from 0.5 to 10), with (2)'s answer
     under ``thin_layer``: its ``model``, ``state``, ``si`` and
     ``relative_error``)."""
-    cyl = dict(r1=r1, r2=r2, theta_deg=theta_deg, h1=h1, h2=h2, g1=g1, g2=g2,
-               work_of_adhesion=work_of_adhesion, nu1=nu1, nu2=nu2)
+    answer = _physical(dict(r1=r1, r2=r2, theta_deg=theta_deg, h1=h1, h2=h2, g1=g1, g2=g2,
+                            work_of_adhesion=work_of_adhesion, nu1=nu1, nu2=nu2), delta, force, model)
+    for w in answer.warnings:
+        _warnings.warn(w, ThinJkrWarning, stacklevel=2)
+    return answer
+
+
+def _physical(cyl: Dict[str, Any], delta, force, model) -> "Physical":
+    """:func:`physical` without issuing its warnings (they are in the
+    answer's ``warnings``)."""
     for k, v in cyl.items():
         if not isinstance(v, (int, float)):
             raise InvalidInput(f"parameter {k} must be a number, got {type(v).__name__}", kind="out_of_range")
@@ -467,8 +477,6 @@ def physical(
         t = d["thin_layer"]
         t["state"] = _state_from(t["state"], t["model"])
         d["thin_layer"] = State(t)
-    for w in d["warnings"]:
-        _warnings.warn(w, ThinJkrWarning, stacklevel=2)
     return Physical(d)
 
 
@@ -478,6 +486,86 @@ class Physical(State):
     dimensionless ``state`` and the ``warnings`` in words; where the layer
     of finite thickness answered by default, ``thin_layer`` (None
     otherwise)."""
+
+
+#: The most points a :func:`study` takes (its grid is built before any is
+#: solved).
+MAX_STUDY_POINTS = 1_000_000
+
+
+class Study:
+    """A study's points (:func:`study`), in the order of its grid: the
+    angles outermost, then the thicknesses, then the loads. Arrays of one
+    entry a point: ``theta_deg``, ``h`` (m), ``load`` (the force asked for,
+    N; NaN for the pull-off), and the answer's ``force`` (N), ``a``, ``b``,
+    ``delta`` (m), NaN where the point has none; lists ``model`` (the model
+    that answered, None where none did), ``answers`` (each point's
+    :class:`Physical`, or None) and ``error`` (why a point has no answer, in
+    words, else None). No point is dropped."""
+
+    def __init__(self, points, outcomes):
+        self.theta_deg = _np.array([p[0] for p in points], dtype=float)
+        self.h = _np.array([p[1] for p in points], dtype=float)
+        self.load = _np.array([_np.nan if p[2] is None else p[2] for p in points], dtype=float)
+        self.answers = [o if isinstance(o, Physical) else None for o in outcomes]
+        self.error = [None if isinstance(o, Physical) else o for o in outcomes]
+
+        def si(key):
+            return _np.array([_np.nan if a is None else getattr(a, key) for a in self.answers], dtype=float)
+
+        self.force, self.a, self.b, self.delta = si("force"), si("a"), si("b"), si("delta")
+        self.model = [None if a is None else a.model for a in self.answers]
+
+    def __len__(self) -> int:
+        return len(self.answers)
+
+    def __repr__(self) -> str:
+        failed = sum(e is not None for e in self.error)
+        return f"Study({len(self)} points, {len(self) - failed} answered, {failed} without an answer)"
+
+
+def _study_point(job):
+    """One point of a :func:`study`: its :class:`Physical`, or why it has
+    none (a :class:`ThinJkrError`'s words). Module-level, so that a process
+    pool or a Dask cluster can pickle it."""
+    cyl, load, model = job
+    try:
+        return _physical(cyl, None, load, model)
+    except ThinJkrError as e:
+        return f"{type(e).__name__}: {e}"
+
+
+def study(*, r1: float, r2: float, g1: float, g2: float, work_of_adhesion: float,
+          theta_deg, h, force=(None,), model: Optional[str] = None,
+          nu1: float = 0.5, nu2: float = 0.5, executor=None) -> Study:
+    """:func:`physical` over every combination of the crossing angles
+    ``theta_deg`` (degrees), the coating thicknesses ``h`` (m, both
+    coatings alike) and the loads ``force`` (N; None: the pull-off under
+    load control, the default), the rest of the contact as in
+    :func:`physical`. Each point is one :func:`physical` call, mapped by
+    ``executor.map``: any :class:`concurrent.futures.Executor` — a thread
+    pool (each call releases the GIL), a process pool started by ``spawn``
+    (``mp_context=multiprocessing.get_context("spawn")``: a child forked
+    from a process whose solver has run hangs on its thread pool), or a
+    Dask cluster's ``Client.get_executor()`` for studies beyond one
+    machine. Without one
+    the points are solved here, one after another. A point without an
+    answer keeps its place with its reason (``Study.error``); the warnings
+    of each answer are in its ``warnings``, not issued."""
+    angles = [float(x) for x in _np.atleast_1d(_np.asarray(theta_deg, dtype=float))]
+    thick = [float(x) for x in _np.atleast_1d(_np.asarray(h, dtype=float))]
+    loads = [None if f is None else float(f) for f in (force if _np.ndim(force) else [force])]
+    count = len(angles) * len(thick) * len(loads)
+    if count == 0 or count > MAX_STUDY_POINTS:
+        raise InvalidInput(
+            f"parameter points = {count} is outside its allowed range 1 to {MAX_STUDY_POINTS} "
+            "(the angles times the thicknesses times the loads)", kind="out_of_range")
+    points = [(t, hh, f) for t in angles for hh in thick for f in loads]
+    jobs = [(dict(r1=r1, r2=r2, theta_deg=t, h1=hh, h2=hh, g1=g1, g2=g2,
+                  work_of_adhesion=work_of_adhesion, nu1=nu1, nu2=nu2), f, model)
+            for t, hh, f in points]
+    outcomes = list(map(_study_point, jobs) if executor is None else executor.map(_study_point, jobs))
+    return Study(points, outcomes)
 
 
 from . import exact  # noqa: E402  (uses the helpers above)

@@ -141,3 +141,23 @@ class Physical:
     def to_dict(self) -> Dict[str, Any]: ...
     def keys(self) -> Iterator[str]: ...
     def _repr_html_(self) -> str: ...
+
+MAX_STUDY_POINTS: int
+
+class Study:
+    theta_deg: np.ndarray
+    h: np.ndarray
+    load: np.ndarray
+    force: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    delta: np.ndarray
+    model: List[Optional[str]]
+    answers: List[Optional[Physical]]
+    error: List[Optional[str]]
+    def __len__(self) -> int: ...
+
+def study(*, r1: float, r2: float, g1: float, g2: float, work_of_adhesion: float,
+          theta_deg: ArrayLike, h: ArrayLike, force: Sequence[Optional[float]] = ...,
+          model: Optional[ModelName] = ..., nu1: float = ..., nu2: float = ...,
+          executor: Any = ...) -> Study: ...
