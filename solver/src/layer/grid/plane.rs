@@ -374,7 +374,10 @@ mod tests {
         );
     }
 
+    // (the slow tier: CI solves the plane through the model layer at 60°
+    // and 70°, and the slow tier's tables hold these states' digits too)
     #[test]
+    #[ignore = "slow tier (.ci/slow): one ladder, about 35 s"]
     fn the_pull_off_in_the_plane_meets_the_axisymmetric_reference_within_its_bounds() {
         // h/L = 1 at ρ = 1, where the axisymmetric layer (Galerkin in
         // Legendre modes, Griffith's edge) is the independent reference:
@@ -402,6 +405,7 @@ mod tests {
     }
 
     #[test]
+    #[ignore = "slow tier (.ci/slow): one ladder, about 35 s"]
     fn zero_force_in_the_plane_meets_the_axisymmetric_reference_within_its_bounds() {
         // h/L = 1 at ρ = 1: the state at F̄ = 0 on the branch stable under
         // load control, its approach and size each within the bound it
