@@ -547,14 +547,7 @@ fn in_the_plane(
         ));
         Ok(None)
     };
-    let beyond = if layers.thinnest() < reach.0 {
-        Some(layers.thinnest())
-    } else if layers.thickest() > reach.1 {
-        Some(layers.thickest())
-    } else {
-        None
-    };
-    if let Some(h) = beyond {
+    if let Some(h) = crate::layer::grid::plane::beyond_reach(&layers) {
         return estimate(format!(
             "the grid solver reaches coatings with h/L from {} to {} only, and these have h/L = {}",
             crate::error::short(reach.0),

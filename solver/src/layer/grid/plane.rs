@@ -26,7 +26,7 @@
 //! ρ = 1, the rung ε = 0.05 is still 5 % off).
 //!
 //! Owns: [`PlaneState`], [`PlaneRung`], [`Held`], [`state`], [`LADDER`],
-//! [`WORST_FORCE_ERROR`], [`REACH`]. May use: its parent `grid` (the ladder
+//! [`WORST_FORCE_ERROR`], [`REACH`], [`beyond_reach`]. May use: its parent `grid` (the ladder
 //! and its limit), `layer` (the pair), `control` (the hold), `error`,
 //! `progress` (the rung a spinner shows), `newton` (the stop request).
 
@@ -196,8 +196,8 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
 /// [`WORST_FORCE_ERROR`].
 pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<PlaneState> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-    let (target, held) = match hold.map(Hold::check_finite).transpose()? {
-        None => (Target::PullOff, Held::PullOff),
+    let target = match hold.map(Hold::check_finite).transpose()? {
+        None => Target::PullOff,
         // (measured, not yet answered: at h/L = 0.5, ρ = 1 the JKR limit of
         // the force at a held approach missed the reference by 1.1 % with
         // a bound of 0.93 %, and at zero force's approach by 0.025 with
@@ -209,37 +209,50 @@ pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<Pla
                 why: "the grid solver's force at a held approach does not yet stay within a bound it can state: at h/L = 0.5 its limit missed the reference by more than the bound; give a force",
             })
         }
-        Some(Hold::Force(f)) => (Target::Force(f), Held::Force),
+        Some(Hold::Force(f)) => Target::Force(f),
         Some(Hold::Size(_)) => {
             return Err(Error::Unavailable {
                 model: "layer",
                 what: "state at a given contact size at rho < 1".into(),
-                why: "the grid solver holds an approach or a force; give delta or force",
+                why: "the grid solver holds a force (or finds the pull-off); give force",
             })
         }
     };
-    state_of(layers, rho, target, held)
+    state_of(layers, rho, target)
 }
 
-/// [`state`] for the ladder's `target`, reported as `held`.
-fn state_of(layers: &Layers, rho: f64, target: Target, held: Held) -> Result<PlaneState> {
-    for (value, beyond) in [
-        (layers.thinnest(), layers.thinnest() < REACH.0),
-        (layers.thickest(), layers.thickest() > REACH.1),
-    ] {
-        if beyond {
-            return Err(Error::Unsupported {
-                name: "h/L",
-                value,
-                supported: format!(
-                    "{} to {} for each coating at rho < 1: the grid solver's ladder is measured to resolve the layer there (docs/thickness.md); at rho = 1 the axisymmetric layer takes 0.001 to 10000",
-                    short(REACH.0),
-                    short(REACH.1)
-                )
-                .into(),
-            });
-        }
+/// The thinness of the coating of `layers` outside [`REACH`] (the
+/// thinner one first), if any: where the ladder is not measured to
+/// resolve the layer.
+pub(crate) fn beyond_reach(layers: &Layers) -> Option<f64> {
+    if layers.thinnest() < REACH.0 {
+        Some(layers.thinnest())
+    } else if layers.thickest() > REACH.1 {
+        Some(layers.thickest())
+    } else {
+        None
     }
+}
+
+/// [`state`] for the ladder's `target`.
+fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
+    if let Some(value) = beyond_reach(layers) {
+        return Err(Error::Unsupported {
+            name: "h/L",
+            value,
+            supported: format!(
+                "{} to {} for each coating at rho < 1: the grid solver's ladder is measured to resolve the layer there (docs/thickness.md); at rho = 1 the axisymmetric layer takes 0.001 to 10000",
+                short(REACH.0),
+                short(REACH.1)
+            )
+            .into(),
+        });
+    }
+    let held = match target {
+        Target::PullOff => Held::PullOff,
+        Target::Delta(_) => Held::Delta,
+        Target::Force(_) => Held::Force,
+    };
     let mut done = 0;
     let rungs = ladder(layers, rho, target, &LADDER, &mut |r: &Rung| {
         done += 1;
@@ -487,12 +500,12 @@ mod explorations {
             let holds = [hold, Hold::Delta(reference.delta_bar)];
             for h in holds {
                 let t = std::time::Instant::now();
-                let (target, held) = match h {
-                    Hold::Delta(d) => (Target::Delta(d), Held::Delta),
-                    Hold::Force(f) => (Target::Force(f), Held::Force),
+                let target = match h {
+                    Hold::Delta(d) => Target::Delta(d),
+                    Hold::Force(f) => Target::Force(f),
                     _ => unreachable!(),
                 };
-                let p = state_of(&layers, 1.0, target, held).unwrap();
+                let p = state_of(&layers, 1.0, target).unwrap();
                 println!(
                     "h/L {thin} {h:?}: F {:.7} ({:+.2e} rel, bound {:.2e}) delta {:.6} ({:+.2e}, bound {:.2e}) a {:.5} ({:+.2e} rel, bound {:.2e}); rungs F {:?} delta {:?} a {:?} ({:.0} s)",
                     p.force_bar,
