@@ -524,10 +524,24 @@ impl Exact {
             Some(found) => found,
             None => match model.and_then(|m| self.above_model_pull_off(m)) {
                 Some(st) => (st, Route::AboveModelPullOff),
-                None => (self.from_circle(self.trace_start())?, Route::FromCircle),
+                None => {
+                    let st = self.from_known_gap(self.trace_start())?;
+                    let route = st.route;
+                    (st, route)
+                }
             },
         };
-        let branch = self.trace_until(&start, 0.5, 0.05, 200, true)?;
+        // downhill in F̄: from above the minimum (the circle's and the
+        // model's starts) towards smaller ā; a start continued in the gap
+        // may lie on either side of it
+        let direction = match route {
+            Route::FromCylinders => self
+                .force_slope_in_size(&self.unknowns(&start))
+                .map_or(-1.0, |s| -s.slope.signum()),
+            _ => -1.0,
+        };
+        let (branch, _) =
+            self.trace_general(&start, direction, 0.5, f64::INFINITY, 0.05, 200, true, None)?;
         let po = branch.events.iter().find_map(|e| match e {
             Event::ForceMinimum { state } => Some(ExactState {
                 route,
@@ -770,15 +784,31 @@ impl Exact {
         Same::SAME_SIDE.of(&st, po).then_some(st)
     }
 
-    /// ā at which the pull-off's trace from the circle starts: the seeding
-    /// family's `trace_start_a` (2.6 for the cylinders), else halfway
-    /// between the circle's neutral points of modes 4 and 6, where the
-    /// near-elliptic arm that carries the pull-off lies.
+    /// ā at which the pull-off's trace starts. On a gap the circle solves:
+    /// the seeding family's `trace_start_a` (2.6 for the cylinders), else
+    /// halfway between the circle's neutral points of modes 4 and 6, where
+    /// the near-elliptic arm that carries the pull-off lies. On a gap no
+    /// circle solves (issue 73), where the state is continued in the gap
+    /// from the cylinders' ([`Exact::from_known_gap`]): halfway between the
+    /// cylinders' neutral points of modes 2 and 4 (ā³ = 4 and 12), whatever
+    /// a family's `trace_start_a` says (it names a place between a circle's
+    /// neutral points, which such a gap has not), and the trace goes
+    /// downhill in F̄ from there. There the cylinders' states continue from
+    /// the circle in ρ (next to a neutral point they fold at once) and, on
+    /// issue 73's bumpy gap, in the gap at every ρ tried (1, 0.9, 0.8,
+    /// 0.7); at 2.6 they fold in the gap above ρ = 0.8.
     pub(crate) fn trace_start(&self) -> f64 {
+        let neutral =
+            |c: &GapAt, m: usize, n: usize| 0.5 * (c.neutral_point(m) + c.neutral_point(n));
+        if !self.circle.is_radial() {
+            return Gap::CYLINDERS
+                .at(1.0)
+                .map_or(f64::NAN, |c| neutral(&c, 2, 4));
+        }
         if let Some(m) = self.gap().seed {
             return m.trace_start();
         }
-        0.5 * (self.circle.neutral_point(4) + self.circle.neutral_point(6))
+        neutral(&self.circle, 4, 6)
     }
 
     fn trace_until(

@@ -670,6 +670,11 @@ pub enum Route {
     /// family traced to the control (no approximate model used).
     #[default]
     FromCircle,
+    /// On a gap no circle solves: from the cylinders' exact state at the
+    /// same ρ and ā (continued in ρ from their circle), continued in the
+    /// gap itself at fixed ā to this one, then the family traced to the
+    /// control ([`Exact::from_known_gap`]; no approximate model used).
+    FromCylinders,
     /// Continued in ρ at the control from the exact state at a larger ρ
     /// (found there by another route), where no route finds it directly.
     ContinuedInRho,
@@ -699,6 +704,9 @@ impl std::fmt::Display for Route {
             Route::AboveModelPullOff => "traced from just above conformal:8's pull-off",
             Route::FromScreen => "Newton at the control from conformal:8's state where its states at fixed a cross it",
             Route::FromCircle => "continued in rho from the circle at rho = 1",
+            Route::FromCylinders => {
+                "continued in the gap from the cylinders' state at the same rho and a (continued in rho from their circle)"
+            }
             Route::ContinuedInRho => {
                 "continued in rho at the same control from the state at a larger rho"
             }
@@ -1303,6 +1311,64 @@ impl Exact {
     /// exact circle at ρ = 1 (steps in ρ halved where Newton fails): no
     /// approximate model is used.
     pub fn from_circle(&self, a_bar: f64) -> Result<ExactState> {
+        let u = self.circle_unknowns(a_bar)?;
+        self.state(&u)
+    }
+
+    /// The exact state at half-width `a_bar` on any gap: on a gap the
+    /// circle solves, [`Exact::from_circle`]; on another (issue 73), the
+    /// cylinders' state at ā at this ρ (continued in ρ from their circle),
+    /// continued in the gap itself at fixed ā and ρ,
+    /// φ̄ₜ = (1 − t)·φ̄_cylinders + t·φ̄ from t = 0 to 1 (the one walk, on
+    /// s = 1 − t, with the steps [`rho_walk::IN_THE_GAP`]). No approximate
+    /// model is used.
+    pub fn from_known_gap(&self, a_bar: f64) -> Result<ExactState> {
+        if self.circle.is_radial() {
+            return self.from_circle(a_bar);
+        }
+        let known = Exact::on(Gap::cylinders(), self.rho, self.truncation)?;
+        let u = known.circle_unknowns(a_bar)?;
+        let mut ex = Exact::on(self.gap_source, self.rho, self.truncation)?;
+        let id = self.unknown_count() - 1;
+        let mut at = (1.0, u);
+        let walked = rho_walk::walk_down(
+            &mut at,
+            0.0,
+            rho_walk::IN_THE_GAP,
+            |at| at.0,
+            |(_, u), s| {
+                // s = 1 − t: s of the cylinders' gap, 1 − s of this one
+                ex.gap = self.gap.blend(&known.gap, s);
+                Ok(
+                    match ex.newton(Hold::Size(a_bar), &ex.contour_of(u), u[id]) {
+                        Ok(n) => rho_walk::Attempt::Took((s, n)),
+                        Err(e) => rho_walk::Attempt::Missed(e),
+                    },
+                )
+            },
+        )?;
+        let (s, u) = at;
+        if let Err(rho_walk::Stopped { why, .. }) = walked {
+            return Err(match why {
+                Error::NoConvergence { .. } | Error::Unresolved { .. } | Error::NoState(_) => Error::NoState(format!(
+                    "exact state at rho = {} on the gap {}: the continuation in the gap from the cylinders' at a_bar = {} stopped at t = {} of the way (Newton failed there with steps in t down to {:.0e})",
+                    crate::error::short(self.rho),
+                    self.gap_source.name,
+                    crate::error::rounded(a_bar),
+                    crate::error::rounded(1.0 - s),
+                    rho_walk::IN_THE_GAP.smallest
+                )),
+                other => other,
+            });
+        }
+        let mut st = self.state(&u)?;
+        st.route = Route::FromCylinders;
+        Ok(st)
+    }
+
+    /// The unknowns of the exact state at half-width `a_bar` continued in ρ
+    /// from the exact circle at ρ = 1 ([`Exact::from_circle`]).
+    fn circle_unknowns(&self, a_bar: f64) -> Result<DVector<f64>> {
         let nm = self.truncation.modes;
         if !self.circle.is_radial() {
             return Err(Error::Unavailable {
@@ -1349,7 +1415,7 @@ impl Exact {
                 other => other,
             });
         }
-        self.state(&u)
+        Ok(u)
     }
 
     /// The contour of `u` and its fields on the fine grid (the check of

@@ -1,4 +1,5 @@
-//! The one walk down in ρ (issue 69): a state followed from its ρ to a
+//! The one walk down in ρ (issue 69), and in the gap's parameter (issue
+//! 73, `IN_THE_GAP`): a state followed from its ρ to a
 //! smaller one in steps that grow by half after each step taken (up to the
 //! preset's largest) and are halved after each step missed, until a step
 //! no larger than the preset's smallest misses. What a step is (Newton at
@@ -16,6 +17,16 @@ pub(crate) const FROM_THE_CIRCLE: RhoSteps = RhoSteps {
     first: 0.05,
     largest: 0.1,
     smallest: 1e-4,
+};
+
+/// A state at fixed ā and ρ continued in the gap itself, from the
+/// cylinders' gap to another, on s = 1 − t from 1 to 0
+/// (`Exact::from_known_gap`, issue 73): the same walk, its parameter the
+/// share of the known gap.
+pub(crate) const IN_THE_GAP: RhoSteps = RhoSteps {
+    first: 0.1,
+    largest: 0.25,
+    smallest: 1e-3,
 };
 
 /// The pull-off continued in ρ, traced again at each step
