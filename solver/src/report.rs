@@ -578,6 +578,10 @@ pub(crate) struct ModelAnswer {
     /// Its state at the same control (or its pull-off).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub state: Option<State>,
+    /// A contour family member's state (beside the exact state of its
+    /// family's own gap, `exact … --gap`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub member: Option<crate::conformal::ConformalState>,
     /// Why it has none.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<ErrorBody>,
@@ -590,6 +594,17 @@ impl ModelAnswer {
         ModelAnswer {
             model: model.into(),
             state: r.as_ref().ok().copied(),
+            member: None,
+            error: r.as_ref().err().map(ErrorBody::from),
+        }
+    }
+
+    /// From a contour family member's result.
+    pub(crate) fn member(model: &str, r: &crate::Result<crate::conformal::ConformalState>) -> Self {
+        ModelAnswer {
+            model: model.into(),
+            state: None,
+            member: r.as_ref().ok().cloned(),
             error: r.as_ref().err().map(ErrorBody::from),
         }
     }

@@ -796,3 +796,40 @@ fn the_no_state_store_never_overwrites_what_it_cannot_extend() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 73, item 2: `exact … --gap NAME` takes the cylinders' gap by
+/// name (and a family on it, which names the same gap) and refuses an
+/// unknown name with status 2, listing the known ones; the commands that
+/// solve the cylinders' gap alone refuse another gap (held with a loaded
+/// family's in the slow tier's walk, python/tests/test_walk.py). The
+/// pull-off on a gap no circle solves is held in solver/src/exact/gap.rs.
+#[test]
+fn exact_commands_take_a_gap_by_name() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args(["exact", "pull-off", "--rho", "1", "--gap", "nope"])
+        .env_remove("THINJKR_FAMILIES")
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("unknown gap nope: the known gaps are cylinders, conformal"),
+        "{err}"
+    );
+    let json = |gap: Option<&str>| {
+        let mut args = vec!["exact", "pull-off", "--rho", "1", "--json"];
+        if let Some(g) = gap {
+            args.extend(["--gap", g]);
+        }
+        let (ok, out, err) = thinjkr(&args);
+        assert!(ok, "{err}");
+        serde_json::from_str::<serde_json::Value>(&out).unwrap()["state"].clone()
+    };
+    let plain = json(None);
+    assert_eq!(plain["gap"], "cylinders");
+    for name in ["cylinders", "conformal"] {
+        let named = json(Some(name));
+        assert_eq!(named["gap"], "cylinders", "{name}");
+        assert_eq!(named["force_bar"], plain["force_bar"], "{name}");
+    }
+}

@@ -5,11 +5,12 @@
 //! Owns: [`ExactCommand`], the exact printers. May use: `generated` (`ModelId`), `batch` (an ellipse model at a control), `control`, `crate::exact`,
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
 //! state), `crate::report`, `crate::fold`, `crate::error`, `crate::cutoff`,
-//! `crate::studies` (the loading path, the unloading trace, the reach), `crate::cli` (`output`, `files`).
+//! `crate::studies` (the loading path, the unloading trace, the reach), `crate::cli` (`output`, `files`),
+//! `crate::conformal` (a family's gap and members, `--gap`).
 
 use crate::control::Hold;
 use crate::exact::stability::UnstableMode;
-use crate::exact::{ExactState, Truncation};
+use crate::exact::{ExactState, Gap, Truncation};
 use crate::report::{AnyState, Document, ModelAnswer, Passed};
 use crate::{Contact, Error, ModelId, Result};
 use clap::{Args, Subcommand};
@@ -92,6 +93,84 @@ impl Discretisation {
     }
 }
 
+/// The gap of the exact problem (issue 73): `--gap NAME`.
+#[derive(Args, Clone, Debug, Default)]
+pub(crate) struct GapChoice {
+    /// The gap the exact problem solves: `cylinders`, the paper's (1) (the default), or the name of a contour
+    /// family, built in or loaded through THINJKR_FAMILIES, whose own gap it then solves (`thinjkr models`
+    /// lists the families); its members' answers are printed beside the exact one.
+    #[arg(long, value_name = "NAME")]
+    pub gap: Option<String>,
+}
+
+impl GapChoice {
+    /// The gap asked for, with its family where it is a gap of its own (a
+    /// family on the cylinders' gap names the default).
+    fn gap(&self) -> Result<(Gap, Option<&'static crate::conformal::Family>)> {
+        match self.gap.as_deref() {
+            None | Some("cylinders") => Ok((Gap::cylinders(), None)),
+            Some(name) => match gap_named(name)? {
+                (g, _) if g == Gap::CYLINDERS => Ok((Gap::cylinders(), None)),
+                (g, f) => Ok((g, Some(f))),
+            },
+        }
+    }
+
+    /// A typed refusal where `command` solves the cylinders' gap alone.
+    fn refused_by(&self, command: &str) -> Result<()> {
+        match (self.gap.as_deref(), self.gap()?) {
+            (_, (_, None)) => Ok(()),
+            (name, (_, Some(_))) => Err(Error::Usage(format!(
+                "--gap {}: `thinjkr exact {command}` solves the cylinders' gap (1) alone; `exact pull-off`, `solve` and `zero-force` take --gap",
+                name.unwrap_or_default()
+            ))),
+        }
+    }
+}
+
+/// The gap of the contour family `name` (built in or loaded), as the exact
+/// solver takes it; an unknown name is a usage error that lists the known
+/// ones.
+pub(crate) fn gap_named(name: &str) -> Result<(Gap, &'static crate::conformal::Family)> {
+    let families = crate::conformal::families();
+    match families.iter().find(|f| f.name == name) {
+        Some(f) => Ok((crate::conformal::exact_gap(f), f)),
+        None => Err(Error::Usage(format!(
+            "unknown gap {name}: the known gaps are cylinders{}",
+            families
+                .iter()
+                .map(|f| format!(", {}", f.name))
+                .collect::<String>()
+        ))),
+    }
+}
+
+/// The members of `family`, in the registry's order.
+fn members_of(family: &'static crate::conformal::Family) -> Vec<crate::conformal::Conformal> {
+    crate::conformal::members()
+        .filter(|m| std::ptr::eq(m.family(), family))
+        .collect()
+}
+
+/// ρ on a family's own gap: at least the stored pull-offs' smallest, below
+/// which the exact answers on the cylinders' gap come from
+/// solver/data/exact_pull_offs.json, which holds no other gap.
+fn own_gap_rho(rho: f64, family: &crate::conformal::Family) -> Result<()> {
+    let least = crate::exact::stored::STORED_FROM_RHO;
+    if rho < least {
+        return Err(Error::Unsupported {
+            name: "rho",
+            value: rho,
+            supported: format!(
+                "[{least}, 1] on the gap {}: below {least} the exact solver's starts are the stored pull-offs of the cylinders' gap",
+                family.name
+            )
+            .into(),
+        });
+    }
+    Ok(())
+}
+
 /// `thinjkr exact …`.
 #[derive(Subcommand, Clone, Debug)]
 pub(crate) enum ExactCommand {
@@ -116,6 +195,8 @@ pub(crate) enum ExactCommand {
         /// Prints every line, as --explain does.
         #[arg(long)]
         unloading: bool,
+        #[command(flatten)]
+        gap: GapChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -151,6 +232,8 @@ pub(crate) enum ExactCommand {
         to: Option<f64>,
         #[command(flatten)]
         discretisation: Discretisation,
+        #[command(flatten)]
+        gap: GapChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -167,6 +250,8 @@ pub(crate) enum ExactCommand {
         /// Largest ā screened (at most from + 9.99).
         #[arg(long, default_value_t = 4.0, allow_hyphen_values = true)]
         to: f64,
+        #[command(flatten)]
+        gap: GapChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -192,6 +277,8 @@ pub(crate) enum ExactCommand {
         /// With --windows-at: read the reach from this file of `exact reach --json` lines (as docs/data/exact_reach.jsonl) instead of computing it over --from, --to, --step.
         #[arg(long, requires = "windows_at")]
         map: Option<std::path::PathBuf>,
+        #[command(flatten)]
+        gap: GapChoice,
         /// Print one JSON document per size (per window with --windows-at).
         #[arg(long)]
         json: bool,
@@ -242,6 +329,8 @@ pub(crate) enum ExactCommand {
         rho: f64,
         #[command(flatten)]
         discretisation: Discretisation,
+        #[command(flatten)]
+        gap: GapChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -269,8 +358,9 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             rho,
             discretisation,
             unloading,
+            gap,
             json,
-        } => pull_off(rho, &discretisation, unloading, json),
+        } => pull_off(rho, &discretisation, unloading, &gap, json),
         ExactCommand::Solve {
             rho,
             delta,
@@ -279,6 +369,7 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             from,
             to,
             discretisation,
+            gap,
             json,
         } => {
             let control = match (delta, force) {
@@ -287,6 +378,7 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
                 _ => return Err(Error::Usage("give one of --delta, --force".into())),
             };
             if all {
+                gap.refused_by("solve --all")?;
                 let circle = crate::exact::branch::circle_a_bar(
                     &crate::exact::Gap::CYLINDERS.at(1.0)?,
                     control,
@@ -298,19 +390,24 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
                 });
                 return every_state(rho, control, from, to, &discretisation, json);
             }
-            state(rho, control, &discretisation, json)
+            state(rho, control, &discretisation, &gap, json)
         }
         ExactCommand::ZeroForce {
             rho,
             discretisation,
+            gap,
             json,
-        } => state(rho, Hold::Force(0.0), &discretisation, json),
+        } => state(rho, Hold::Force(0.0), &discretisation, &gap, json),
         ExactCommand::Bands {
             rho,
             from,
             to,
+            gap,
             json,
-        } => bands(rho, from, to, json),
+        } => {
+            gap.refused_by("bands")?;
+            bands(rho, from, to, json)
+        }
         ExactCommand::Reach {
             from,
             to,
@@ -318,15 +415,23 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             windows_at: Some(rho),
             unloading_at,
             map,
+            gap,
             json,
-        } => settled_windows(rho, unloading_at, map.as_deref(), from, to, step, json),
+        } => {
+            gap.refused_by("reach")?;
+            settled_windows(rho, unloading_at, map.as_deref(), from, to, step, json)
+        }
         ExactCommand::Reach {
             from,
             to,
             step,
+            gap,
             json,
             ..
-        } => reach(from, to, step, json),
+        } => {
+            gap.refused_by("reach")?;
+            reach(from, to, step, json)
+        }
         ExactCommand::StoreNoState {
             forces,
             deltas,
@@ -1083,25 +1188,62 @@ fn bands_words(modes: &[usize], at: &[f64]) -> String {
     )
 }
 
-pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool) -> Result<()> {
+pub(crate) fn pull_off(
+    rho: f64,
+    d: &Discretisation,
+    unloading: bool,
+    gap: &GapChoice,
+    json: bool,
+) -> Result<()> {
+    let (gap, family) = gap.gap()?;
+    if let Some(f) = family {
+        if unloading {
+            return Err(Error::Usage(format!(
+                "--unloading with --gap {}: the unloading and loading paths are followed on the cylinders' gap (1) alone",
+                f.name
+            )));
+        }
+        own_gap_rho(rho, f)?;
+    }
     let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
     let (po, events) = match (d.modes, d.points) {
         // the default escalation, and the continuation in rho from a larger
         // rho where no start finds the pull-off
-        (None, None) => crate::exact::pull_off_resolved(rho),
-        _ => crate::exact::pull_off_with(rho, &d.tries()?),
+        (None, None) => crate::exact::pull_off_resolved_on(gap, rho),
+        _ => crate::exact::pull_off_on(gap, rho, &crate::exact::ladder::Ladder::of(d.tries()?)),
     }?;
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
-    let models: Vec<_> = ModelId::ALL
-        .iter()
-        .map(|&m| {
-            (
-                m,
-                Contact::with_model(m, rho).and_then(|c| c.pull_off_load()),
-            )
-        })
-        .collect();
+    // beside it: the ellipse models on the cylinders' gap, the family's
+    // members on its own (name, force, a and s or the error, the answer)
+    let models: Vec<(String, Result<[f64; 3]>, ModelAnswer)> = match family {
+        None => ModelId::ALL
+            .iter()
+            .map(|&m| {
+                let r = Contact::with_model(m, rho)
+                    .and_then(|c| c.pull_off_load())
+                    .map(|p| p.state);
+                let fas = r
+                    .as_ref()
+                    .map(|s| [s.force_bar, s.a_bar, s.s])
+                    .map_err(Clone::clone);
+                (m.name().to_string(), fas, ModelAnswer::new(m.name(), &r))
+            })
+            .collect(),
+        Some(f) => members_of(f)
+            .iter()
+            .map(|m| {
+                let r = m
+                    .pull_off(rho, crate::fold::FoldCondition::Load)
+                    .map(|(s, _)| s);
+                let fas = r
+                    .as_ref()
+                    .map(|s| [s.force_bar, s.a_bar, s.s])
+                    .map_err(Clone::clone);
+                (m.name(), fas, ModelAnswer::member(&m.name(), &r))
+            })
+            .collect(),
+    };
     drop(spin);
     // the paths from the state both begin from (at F = 10, else the
     // largest stable load on the pull-off's piece), found once: minutes
@@ -1125,10 +1267,7 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
             control: crate::fold::FoldCondition::Load,
             basis: None,
             passed,
-            models: models
-                .iter()
-                .map(|(m, r)| ModelAnswer::new(m.name(), &r.clone().map(|p| p.state)))
-                .collect(),
+            models: models.into_iter().map(|(_, _, answer)| answer).collect(),
         };
         outln!("{}", doc.to_json());
         return Ok(());
@@ -1178,16 +1317,16 @@ pub(crate) fn pull_off(rho: f64, d: &Discretisation, unloading: bool, json: bool
             _ => {}
         }
     }
-    for (m, r) in &models {
+    for (m, r, _) in &models {
         match r {
-            Ok(p) => outln!(
+            Ok([force, a, s]) => outln!(
                 "  model {m}: force = {:.6} ({:+.3} %), a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %)",
-                p.state.force_bar,
-                100.0 * (p.state.force_bar / po.force_bar - 1.0),
-                p.state.a_bar,
-                100.0 * (p.state.a_bar / po.a_bar - 1.0),
-                p.state.s,
-                100.0 * (p.state.s / po.s - 1.0)
+                force,
+                100.0 * (force / po.force_bar - 1.0),
+                a,
+                100.0 * (a / po.a_bar - 1.0),
+                s,
+                100.0 * (s / po.s - 1.0)
             ),
             Err(e) => outln!("  model {m}: {e}"),
         }
@@ -1272,35 +1411,66 @@ pub(crate) fn every_state(
 }
 
 /// The exact state at a control value and every model's.
-pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> Result<()> {
+pub(crate) fn state(
+    rho: f64,
+    control: Hold,
+    d: &Discretisation,
+    gap: &GapChoice,
+    json: bool,
+) -> Result<()> {
+    let (gap, family) = gap.gap()?;
+    if let Some(f) = family {
+        own_gap_rho(rho, f)?;
+    }
     let spin = crate::cli::output::Spinner::start("solving the free-boundary problem (2)-(3)");
     control.check_finite()?;
     let st = match (d.modes, d.points) {
         // the default escalation, and the continuation in rho from a larger
         // rho where no route finds the state directly
-        (None, None) => crate::exact::at_resolved(rho, control),
-        _ => crate::exact::at_searched(rho, control, &d.tries()?),
+        (None, None) => crate::exact::at_resolved_on(gap, rho, control),
+        _ => crate::exact::searched_on(
+            gap,
+            rho,
+            control,
+            &crate::exact::ladder::Ladder::of(d.tries()?),
+        ),
     }?;
     let st = d.judged(st)?;
-    let model_states: Vec<_> = ModelId::ALL
-        .iter()
-        .map(|&m| {
-            let c = Contact::with_model(m, rho);
-            (
-                m,
-                // the ellipse model's state at the control, as a batch
-                // solves it
-                c.and_then(|c| crate::batch::Solves::solve(&m, &c, control)),
-            )
-        })
-        .collect();
+    // beside it: the ellipse models on the cylinders' gap (their state at
+    // the control as a batch solves it), the family's members on its own
+    // (name; a, s, delta, force or the error; the answer)
+    let model_states: Vec<(String, Result<[f64; 4]>, ModelAnswer)> = match family {
+        None => ModelId::ALL
+            .iter()
+            .map(|&m| {
+                let r = Contact::with_model(m, rho)
+                    .and_then(|c| crate::batch::Solves::solve(&m, &c, control));
+                let v = r
+                    .as_ref()
+                    .map(|p| [p.a_bar, p.s, p.delta_bar, p.force_bar])
+                    .map_err(Clone::clone);
+                (m.name().to_string(), v, ModelAnswer::new(m.name(), &r))
+            })
+            .collect(),
+        Some(f) => members_of(f)
+            .iter()
+            .map(|m| {
+                let r = m.solve(rho, control);
+                let v = r
+                    .as_ref()
+                    .map(|p| [p.a_bar, p.s, p.delta_bar, p.force_bar])
+                    .map_err(Clone::clone);
+                (m.name(), v, ModelAnswer::member(&m.name(), &r))
+            })
+            .collect(),
+    };
     drop(spin);
     if json {
         let doc = Document::State {
             state: AnyState::Exact(Box::new(st)),
             models: model_states
-                .iter()
-                .map(|(m, r)| ModelAnswer::new(m.name(), r))
+                .into_iter()
+                .map(|(_, _, answer)| answer)
                 .collect(),
             others: None,
         };
@@ -1316,16 +1486,16 @@ pub(crate) fn state(rho: f64, control: Hold, d: &Discretisation, json: bool) -> 
     outln!(
         "  other exact states at {control}: not counted; --all lists every near-elliptic one with a in [--from, --to] (by default [1, 4]; a screen of conformal:8's states at fixed a, each crossing solved exactly: seconds to minutes)"
     );
-    for (m, r) in &model_states {
+    for (m, r, _) in &model_states {
         match r {
-            Ok(p) => outln!(
+            Ok([a, s, delta, force]) => outln!(
                 "  model {m}: a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %), delta = {:.6}, force = {:.6}",
-                p.a_bar,
-                100.0 * (p.a_bar / st.a_bar - 1.0),
-                p.s,
-                100.0 * (p.s / st.s - 1.0),
-                p.delta_bar,
-                p.force_bar
+                a,
+                100.0 * (a / st.a_bar - 1.0),
+                s,
+                100.0 * (s / st.s - 1.0),
+                delta,
+                force
             ),
             Err(e) => outln!("  model {m}: {e}"),
         }

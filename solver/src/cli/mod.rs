@@ -578,7 +578,13 @@ fn solve_command(
         _ => None,
     };
     if let Some(control) = exact {
-        return exact_command::state(rho, control, &exact_command::Discretisation::default(), j);
+        return exact_command::state(
+            rho,
+            control,
+            &exact_command::Discretisation::default(),
+            &exact_command::GapChoice::default(),
+            j,
+        );
     }
     // a contour family's states at any control are read from its curve
     let contour = matches!(model, ModelChoice::Contour(_));
@@ -686,7 +692,13 @@ fn pull_off_command(
     if let (ModelChoice::Exact, FoldCondition::Load) = (model, condition) {
         // the exact pull-off's report also solves the ellipse models' and
         // prints each one's distance from it
-        return exact_command::pull_off(rho, &exact_command::Discretisation::default(), false, j);
+        return exact_command::pull_off(
+            rho,
+            &exact_command::Discretisation::default(),
+            false,
+            &exact_command::GapChoice::default(),
+            j,
+        );
     }
     let p = model.pull_off(rho, condition)?;
     if j {
@@ -930,6 +942,7 @@ fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> crate::Result<()
             rho,
             crate::control::Hold::Force(0.0),
             &exact_command::Discretisation::default(),
+            &exact_command::GapChoice::default(),
             j,
         );
     }

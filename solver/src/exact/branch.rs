@@ -520,15 +520,27 @@ impl Exact {
             let st = self.solve_from(c.a_bar + ABOVE_COARSER_PULL_OFF, c).ok()?;
             Same::SAME_SIDE.of(&st, c).then_some((st, c.route))
         });
+        // on a gap no circle solves, the walk in the gap from the cylinders'
+        // first (issue 73): a seeding member's pull-off may lie on another
+        // arm of such a gap (on the bumpy gap at rho = 1, -4.1106 at
+        // a = 1.974 against the walk's -4.0799 at 2.049)
+        let walked = || -> Result<(ExactState, Route)> {
+            let st = self.from_known_gap(self.trace_start())?;
+            let route = st.route;
+            Ok((st, route))
+        };
         let (start, route) = match from_coarser {
             Some(found) => found,
+            None if !self.circle.is_radial() => match walked() {
+                Ok(found) => found,
+                Err(e) => match model.and_then(|m| self.above_model_pull_off(m)) {
+                    Some(st) => (st, Route::AboveModelPullOff),
+                    None => return Err(e),
+                },
+            },
             None => match model.and_then(|m| self.above_model_pull_off(m)) {
                 Some(st) => (st, Route::AboveModelPullOff),
-                None => {
-                    let st = self.from_known_gap(self.trace_start())?;
-                    let route = st.route;
-                    (st, route)
-                }
+                None => walked()?,
             },
         };
         // downhill in F̄: from above the minimum (the circle's and the

@@ -72,7 +72,9 @@ use nalgebra::{Complex, DMatrix, DVector};
 pub use resolve::{
     at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
 };
-pub(crate) use resolve::{at_resolved_searching, pull_off_resolved_on, resolved, RESOLVED};
+pub(crate) use resolve::{
+    at_resolved_on, at_resolved_searching, pull_off_resolved_on, resolved, searched_on, RESOLVED,
+};
 #[cfg(feature = "cli")]
 pub(crate) use resolve::{pull_off_followed_in_arclength_visiting, pull_off_on};
 use serde::Serialize;
@@ -604,11 +606,17 @@ pub struct ExactState {
     /// [`ExactState::judged`].
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
-    /// The gap of the problem it solves (the cylinders' (1), or a
-    /// family's, [`Gap`]).
-    #[serde(skip)]
-    #[cfg_attr(feature = "schema", schemars(skip))]
+    /// The gap of the problem it solves: `cylinders`, the paper's (1), or
+    /// the name of the contour family whose own gap it is ([`Gap`];
+    /// `exact … --gap`).
+    #[serde(serialize_with = "gap_name")]
+    #[cfg_attr(feature = "schema", schemars(with = "String"))]
     pub(crate) gap: Gap,
+}
+
+/// A gap in JSON: its name.
+fn gap_name<S: serde::Serializer>(gap: &Gap, s: S) -> std::result::Result<S::Ok, S::Error> {
+    s.serialize_str(gap.name)
 }
 
 impl ExactState {
