@@ -431,9 +431,10 @@ fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<St
 /// contour modes (8 quadrature points each) instead of the default
 /// escalation (12 to 96 modes, `thinjkr::exact::default_tries`); its
 /// stability judged with the short-wave cutoff of `thinness` h/L (default
-/// `thinjkr::cutoff::Cutoff::DEFAULT_THINNESS`).
+/// `thinjkr::cutoff::Cutoff::DEFAULT_THINNESS`); on the gap named `gap`
+/// (`cylinders`, the default, or a contour family's own: issue 73).
 #[pyfunction]
-#[pyo3(signature = (rho, what, value, modes=None, thinness=None))]
+#[pyo3(signature = (rho, what, value, modes=None, thinness=None, gap="cylinders"))]
 fn exact(
     py: Python<'_>,
     rho: f64,
@@ -441,19 +442,18 @@ fn exact(
     value: f64,
     modes: Option<usize>,
     thinness: Option<f64>,
+    gap: &str,
 ) -> PyResult<String> {
     let cutoff = match thinness {
         None => thinjkr::cutoff::Cutoff::default(),
         Some(t) => thinjkr::cutoff::Cutoff::for_thinness(t).map_err(raw)?,
     };
     let judged = move |st: thinjkr::exact::ExactState| json(&st.judged(cutoff));
-    use thinjkr::exact::{
-        at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, Truncation,
-        MAX_USER_MODES,
-    };
+    use thinjkr::conformal::{exact_pull_off_on_gap, exact_state_on_gap};
+    use thinjkr::exact::{Truncation, MAX_USER_MODES};
     let tries = match modes {
-        None => default_tries(),
-        Some(m) if (1..=MAX_USER_MODES).contains(&m) => vec![Truncation::with_modes(m)],
+        None => None,
+        Some(m) if (1..=MAX_USER_MODES).contains(&m) => Some(vec![Truncation::with_modes(m)]),
         Some(m) => {
             return Err(raw(Error::OutOfRange {
                 name: "modes",
@@ -462,14 +462,11 @@ fn exact(
             }))
         }
     };
-    let what = what.to_string();
+    let (what, gap) = (what.to_string(), gap.to_string());
     detached(py, move || -> thinjkr::Result<String> {
         match what.as_str() {
             "pull_off" => {
-                let (st, _) = match modes {
-                    None => pull_off_resolved(rho)?,
-                    Some(_) => pull_off_with(rho, &tries)?,
-                };
+                let (st, _) = exact_pull_off_on_gap(&gap, rho, tries.as_deref())?;
                 Ok(judged(st))
             }
             "delta" | "force" => {
@@ -480,10 +477,7 @@ fn exact(
                 };
                 // the default escalation as the command line: a value in a
                 // band says so, and one no start reaches is continued in rho
-                Ok(judged(match modes {
-                    None => at_resolved(rho, control)?,
-                    Some(_) => at_searched(rho, control, &tries)?,
-                }))
+                Ok(judged(exact_state_on_gap(&gap, rho, control, tries.as_deref())?))
             }
             other => Err(Error::Usage(format!(
                 "what must be delta, force or pull_off (got '{other}')"

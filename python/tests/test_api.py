@@ -124,6 +124,18 @@ def test_exact_equals_the_command_line(cli):
     assert close(st.x.max(), st.a_bar, 1e-9) and close(st.y.max(), st.b_bar, 1e-6)
 
 
+def test_exact_takes_a_gap_by_name(cli):
+    """Issue 73, item 2: gap= as the command line's --gap (a loaded family's
+    own gap in the slow tier's walk, python/tests/test_walk.py)."""
+    plain = thinjkr.exact.pull_off(1.0)
+    assert plain.gap == "cylinders"
+    for name in ("cylinders", "conformal"):
+        st = thinjkr.exact.pull_off(1.0, gap=name)
+        assert st.gap == "cylinders" and st.force_bar == plain.force_bar, name
+    with pytest.raises(thinjkr.InvalidInput, match="unknown gap nope: the known gaps are cylinders"):
+        thinjkr.exact.pull_off(1.0, gap="nope")
+
+
 def test_exact_stability_counts_the_modes_above_the_cutoff(cli):
     """The circle at F = 10 (a = 3.2141) is unstable to every even n >= 10
     its series holds; n = 10 is 2 pi a / 10 = 2.019 long. With h/L = 0.1

@@ -4,4 +4,4 @@
 //! Owns: nothing of its own; it re-exports `layer::grid`'s bench hooks.
 //! May use: `layer`.
 
-pub use crate::layer::grid::bench::{GridProduct, GridPullOff};
+pub use crate::layer::grid::bench::{GridProduct, GridPullOff, SphereOnHalfSpace, SphereState};

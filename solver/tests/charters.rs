@@ -191,13 +191,16 @@ fn every_module_uses_only_what_its_charter_names() {
 /// in the import cycle; its public path is unchanged), then 223 for the
 /// layer in the plane (issue 71: `PlaneState`, `PlaneRung` and `Held`,
 /// which `AnyState::LayerPlane` holds, and `layer`'s re-export of them from
-/// the crate-private grid solver). The benches' hooks
+/// the crate-private grid solver), then 225 for the exact solver on a gap
+/// named by the user (issue 73: `conformal::exact_pull_off_on_gap` and
+/// `exact_state_on_gap`, which the command line's and Python's `--gap`
+/// call; the re-export of the two is the third). The benches' hooks
 /// (`bench_internals` and the module it re-exports, built only with the
 /// `bench-internals` feature, hidden from the docs) are not a user's API and
 /// are not counted.
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 223;
+    const MAX_PUBLIC_ITEMS: usize = 225;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);

@@ -22,7 +22,8 @@ def _with_contour(d, points: int) -> State:
     return State(fields)
 
 
-def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinness=None):
+def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinness=None,
+          gap: str = "cylinders"):
     """The exact state at approach ``delta`` (δ̄) or force ``force`` (F̄),
     its contour sampled at ``points`` angles. ``modes``: the contour series'
     length (1 … 96); by default the modes are escalated from 12 to 96 until
@@ -38,6 +39,10 @@ def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinnes
     each unstable mode says whether it is ``resolved``. A state whose shape
     has more than 1 % of ā in undulations shorter than the cutoff (``shape``)
     says so in ``warnings``, raised as a :class:`ThinJkrWarning`.
+    ``gap``: the gap solved, ``"cylinders"`` (the paper's (1)) or the name of
+    a contour family, built in or loaded through ``THINJKR_FAMILIES``, whose
+    own gap it is (``thinjkr exact solve --gap``; an unknown name raises
+    :class:`InvalidInput` listing the known ones).
 
     Scalars give a :class:`State`; when ``rho`` or the control is an array
     (broadcast together) the answer is a :class:`States` of that shape,
@@ -48,32 +53,36 @@ def solve(rho, *, delta=None, force=None, points: int = 256, modes=None, thinnes
     modes = _modes(modes)
     if _np.ndim(rho) > 0 or _np.ndim(value) > 0:
         r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
-        return _many(r, "exact", lambda a, b: solve(a, points=points, modes=modes, thinness=thinness, **{control: b}), v)
-    d = _json.loads(_call(_thinjkr.exact, rho, control, value, modes, _thinness(thinness)))
+        return _many(r, "exact", lambda a, b: solve(a, points=points, modes=modes, thinness=thinness,
+                                                    gap=gap, **{control: b}), v)
+    d = _json.loads(_call(_thinjkr.exact, rho, control, value, modes, _thinness(thinness), str(gap)))
     _warn(d)
     return _with_contour(d, points)
 
 
-def zero_force(rho, *, points: int = 256, modes=None, thinness=None):
+def zero_force(rho, *, points: int = 256, modes=None, thinness=None, gap: str = "cylinders"):
     """The exact zero-force state (an array of ``rho`` gives a
-    :class:`States`, as in :func:`solve`)."""
-    return solve(rho, force=0.0, points=points, modes=modes, thinness=thinness)
+    :class:`States`, as in :func:`solve`; ``gap`` as there)."""
+    return solve(rho, force=0.0, points=points, modes=modes, thinness=thinness, gap=gap)
 
 
-def pull_off(rho, *, points: int = 256, modes=None, thinness=None):
+def pull_off(rho, *, points: int = 256, modes=None, thinness=None, gap: str = "cylinders"):
     """The exact load-controlled pull-off (the first minimum of F̄ along the
     family, traced from just above the richest contour model's pull-off), a
     :class:`PullOff` with ``control`` "load", as
     ``thinjkr.pull_off(rho, model="exact")`` gives it. ``modes`` as in
     :func:`solve`: by default escalated from 12 to 96 until the fine-grid
     boundary error is below 1e-9 (at ρ = 0.3: 80 modes); ``thinness`` as
-    in :func:`solve`. An array of ``rho`` gives a :class:`States`, as in
+    in :func:`solve`; ``gap`` as there (on a gap no circle solves, the pull-off is
+    reached by the walk in the gap from the cylinders': docs/exact.md, "A gap no
+    circle solves"). An array of ``rho`` gives a :class:`States`, as in
     :func:`solve`."""
     rho = _number("rho", rho)
     modes = _modes(modes)
     if _np.ndim(rho) > 0:
-        return _many(_np.asarray(rho, dtype=float), "exact", lambda r: pull_off(r, points=points, modes=modes, thinness=thinness))
-    d = _json.loads(_call(_thinjkr.exact, rho, "pull_off", 0.0, modes, _thinness(thinness)))
+        return _many(_np.asarray(rho, dtype=float), "exact",
+                     lambda r: pull_off(r, points=points, modes=modes, thinness=thinness, gap=gap))
+    d = _json.loads(_call(_thinjkr.exact, rho, "pull_off", 0.0, modes, _thinness(thinness), str(gap)))
     _warn(d)
     return PullOff({**_with_contour(d, points).to_dict(), "control": "load"})
 

@@ -108,12 +108,14 @@ impl GapChoice {
     /// family on the cylinders' gap names the default).
     fn gap(&self) -> Result<(Gap, Option<&'static crate::conformal::Family>)> {
         match self.gap.as_deref() {
-            None | Some("cylinders") => Ok((Gap::cylinders(), None)),
-            Some(name) => match gap_named(name)? {
-                (g, _) if g == Gap::CYLINDERS => Ok((Gap::cylinders(), None)),
-                (g, f) => Ok((g, Some(f))),
-            },
+            None => Ok((Gap::cylinders(), None)),
+            Some(name) => crate::conformal::gap_named(name),
         }
+    }
+
+    /// The name asked for (`cylinders` by default).
+    fn name(&self) -> &str {
+        self.gap.as_deref().unwrap_or("cylinders")
     }
 
     /// A typed refusal where `command` solves the cylinders' gap alone.
@@ -128,47 +130,11 @@ impl GapChoice {
     }
 }
 
-/// The gap of the contour family `name` (built in or loaded), as the exact
-/// solver takes it; an unknown name is a usage error that lists the known
-/// ones.
-pub(crate) fn gap_named(name: &str) -> Result<(Gap, &'static crate::conformal::Family)> {
-    let families = crate::conformal::families();
-    match families.iter().find(|f| f.name == name) {
-        Some(f) => Ok((crate::conformal::exact_gap(f), f)),
-        None => Err(Error::Usage(format!(
-            "unknown gap {name}: the known gaps are cylinders{}",
-            families
-                .iter()
-                .map(|f| format!(", {}", f.name))
-                .collect::<String>()
-        ))),
-    }
-}
-
 /// The members of `family`, in the registry's order.
 fn members_of(family: &'static crate::conformal::Family) -> Vec<crate::conformal::Conformal> {
     crate::conformal::members()
         .filter(|m| std::ptr::eq(m.family(), family))
         .collect()
-}
-
-/// ρ on a family's own gap: at least the stored pull-offs' smallest, below
-/// which the exact answers on the cylinders' gap come from
-/// solver/data/exact_pull_offs.json, which holds no other gap.
-fn own_gap_rho(rho: f64, family: &crate::conformal::Family) -> Result<()> {
-    let least = crate::exact::stored::STORED_FROM_RHO;
-    if rho < least {
-        return Err(Error::Unsupported {
-            name: "rho",
-            value: rho,
-            supported: format!(
-                "[{least}, 1] on the gap {}: below {least} the exact solver's starts are the stored pull-offs of the cylinders' gap",
-                family.name
-            )
-            .into(),
-        });
-    }
-    Ok(())
 }
 
 /// `thinjkr exact …`.
@@ -1195,23 +1161,21 @@ pub(crate) fn pull_off(
     gap: &GapChoice,
     json: bool,
 ) -> Result<()> {
-    let (gap, family) = gap.gap()?;
-    if let Some(f) = family {
-        if unloading {
-            return Err(Error::Usage(format!(
-                "--unloading with --gap {}: the unloading and loading paths are followed on the cylinders' gap (1) alone",
-                f.name
-            )));
-        }
-        own_gap_rho(rho, f)?;
+    let (_, family) = gap.gap()?;
+    if let (Some(f), true) = (family, unloading) {
+        return Err(Error::Usage(format!(
+            "--unloading with --gap {}: the unloading and loading paths are followed on the cylinders' gap (1) alone",
+            f.name
+        )));
     }
     let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
-    let (po, events) = match (d.modes, d.points) {
-        // the default escalation, and the continuation in rho from a larger
-        // rho where no start finds the pull-off
-        (None, None) => crate::exact::pull_off_resolved_on(gap, rho),
-        _ => crate::exact::pull_off_on(gap, rho, &crate::exact::ladder::Ladder::of(d.tries()?)),
-    }?;
+    // the default escalation (and the continuation in rho from a larger rho
+    // where no start finds the pull-off), else the truncations asked for
+    let tries = match (d.modes, d.points) {
+        (None, None) => None,
+        _ => Some(d.tries()?),
+    };
+    let (po, events) = crate::conformal::exact_pull_off_on_gap(gap.name(), rho, tries.as_deref())?;
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
     // beside it: the ellipse models on the cylinders' gap, the family's
@@ -1418,23 +1382,16 @@ pub(crate) fn state(
     gap: &GapChoice,
     json: bool,
 ) -> Result<()> {
-    let (gap, family) = gap.gap()?;
-    if let Some(f) = family {
-        own_gap_rho(rho, f)?;
-    }
+    let (_, family) = gap.gap()?;
     let spin = crate::cli::output::Spinner::start("solving the free-boundary problem (2)-(3)");
     control.check_finite()?;
-    let st = match (d.modes, d.points) {
-        // the default escalation, and the continuation in rho from a larger
-        // rho where no route finds the state directly
-        (None, None) => crate::exact::at_resolved_on(gap, rho, control),
-        _ => crate::exact::searched_on(
-            gap,
-            rho,
-            control,
-            &crate::exact::ladder::Ladder::of(d.tries()?),
-        ),
-    }?;
+    // the default escalation (and the continuation in rho from a larger rho
+    // where no route finds the state directly), else the truncations asked for
+    let tries = match (d.modes, d.points) {
+        (None, None) => None,
+        _ => Some(d.tries()?),
+    };
+    let st = crate::conformal::exact_state_on_gap(gap.name(), rho, control, tries.as_deref())?;
     let st = d.judged(st)?;
     // beside it: the ellipse models on the cylinders' gap (their state at
     // the control as a batch solves it), the family's members on its own

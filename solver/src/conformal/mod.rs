@@ -36,8 +36,11 @@ pub(crate) mod load;
 mod seed;
 pub use crate::ansatz::{poly, Family, Tables};
 pub(crate) use seed::exact_gap;
+#[cfg(feature = "cli")]
+pub(crate) use seed::gap_named;
 #[cfg(feature = "figures")]
 pub(crate) use seed::seeding_family;
+pub use seed::{exact_pull_off_on_gap, exact_state_on_gap};
 mod trace;
 
 use crate::contour_modes::NormalMotion;

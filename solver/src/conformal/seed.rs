@@ -5,9 +5,14 @@
 //! with the gap ([`exact_gap`], `Gap::cylinders`), so that the
 //! exact solver names no model.
 //!
+//! It also names the gaps (issue 73): `cylinders` and each family's own,
+//! the exact solver's answers on a gap named so ([`exact_pull_off_on_gap`],
+//! [`exact_state_on_gap`]) for the command line's and Python's `--gap`.
+//!
 //! Owns: the `Seed` implementation of a member, `Gap::cylinders`, the
-//! seeds' lookup. May use: `conformal`, `exact` (its `Seed`, `Guess` and
-//! `Gap`), `control`, `fold`, `error`.
+//! seeds' lookup, the gaps' names. May use: `conformal`, `exact` (its
+//! `Seed`, `Guess`, `Gap`, and its answers on a gap), `control`, `fold`,
+//! `error`.
 
 use super::{families, Conformal, ConformalState, Family};
 use crate::control::Hold;
@@ -113,5 +118,96 @@ pub(crate) fn exact_gap(family: &Family) -> Gap {
     Gap {
         seed: seed_of(&g),
         ..g
+    }
+}
+
+/// The gap named `name` (`cylinders`, the paper's (1), or the name of a
+/// contour family built in or loaded, whose own gap it is), with the
+/// family where it is a gap of its own (a family on the cylinders' gap
+/// names the cylinders'); an unknown name is a usage error that lists the
+/// known ones.
+pub(crate) fn gap_named(name: &str) -> crate::Result<(Gap, Option<&'static Family>)> {
+    if name == "cylinders" {
+        return Ok((Gap::cylinders(), None));
+    }
+    match families().iter().find(|f| f.name == name) {
+        Some(f) => {
+            let gap = exact_gap(f);
+            Ok(if gap == Gap::CYLINDERS {
+                (Gap::cylinders(), None)
+            } else {
+                (gap, Some(*f))
+            })
+        }
+        None => Err(crate::Error::Usage(format!(
+            "unknown gap {name}: the known gaps are cylinders{}",
+            families()
+                .iter()
+                .map(|f| format!(", {}", f.name))
+                .collect::<String>()
+        ))),
+    }
+}
+
+/// ρ on a family's own gap: at least the stored pull-offs' smallest, below
+/// which the exact answers on the cylinders' gap start from
+/// solver/data/exact_pull_offs.json, which holds no other gap.
+fn own_gap_rho(rho: f64, family: &Family) -> crate::Result<()> {
+    let least = crate::exact::stored::STORED_FROM_RHO;
+    if rho < least {
+        return Err(crate::Error::Unsupported {
+            name: "rho",
+            value: rho,
+            supported: format!(
+                "[{least}, 1] on the gap {}: below {least} the exact solver's starts are the stored pull-offs of the cylinders' gap",
+                family.name
+            )
+            .into(),
+        });
+    }
+    Ok(())
+}
+
+/// The exact load-controlled pull-off at `rho` on the gap named `gap`
+/// ([`gap_named`]), with the default escalation of truncations (`tries`
+/// `None`) or those given.
+pub fn exact_pull_off_on_gap(
+    gap: &str,
+    rho: f64,
+    tries: Option<&[crate::exact::Truncation]>,
+) -> crate::Result<(crate::exact::ExactState, Vec<crate::exact::branch::Event>)> {
+    let (gap, family) = gap_named(gap)?;
+    if let Some(f) = family {
+        own_gap_rho(rho, f)?;
+    }
+    match tries {
+        None => crate::exact::pull_off_resolved_on(gap, rho),
+        Some(t) => {
+            crate::exact::pull_off_on(gap, rho, &crate::exact::ladder::Ladder::of(t.to_vec()))
+        }
+    }
+}
+
+/// The exact state at `control` and `rho` on the gap named `gap`
+/// ([`gap_named`]), with the default escalation of truncations (`tries`
+/// `None`) or those given.
+pub fn exact_state_on_gap(
+    gap: &str,
+    rho: f64,
+    control: Hold,
+    tries: Option<&[crate::exact::Truncation]>,
+) -> crate::Result<crate::exact::ExactState> {
+    let (gap, family) = gap_named(gap)?;
+    if let Some(f) = family {
+        own_gap_rho(rho, f)?;
+    }
+    match tries {
+        None => crate::exact::at_resolved_on(gap, rho, control),
+        Some(t) => crate::exact::searched_on(
+            gap,
+            rho,
+            control,
+            &crate::exact::ladder::Ladder::of(t.to_vec()),
+        ),
     }
 }

@@ -69,14 +69,15 @@ pub(crate) use gap::Gap;
 use gap::GapAt;
 pub(crate) use ladder::MAX_ESCALATED_MODES;
 use nalgebra::{Complex, DMatrix, DVector};
+#[cfg(feature = "cli")]
+pub(crate) use resolve::pull_off_followed_in_arclength_visiting;
 pub use resolve::{
     at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
 };
 pub(crate) use resolve::{
-    at_resolved_on, at_resolved_searching, pull_off_resolved_on, resolved, searched_on, RESOLVED,
+    at_resolved_on, at_resolved_searching, pull_off_on, pull_off_resolved_on, resolved,
+    searched_on, RESOLVED,
 };
-#[cfg(feature = "cli")]
-pub(crate) use resolve::{pull_off_followed_in_arclength_visiting, pull_off_on};
 use serde::Serialize;
 
 /// The most contour modes a user may ask for (the command line's
@@ -1330,7 +1331,7 @@ impl Exact {
     /// φ̄ₜ = (1 − t)·φ̄_cylinders + t·φ̄ from t = 0 to 1 (the one walk, on
     /// s = 1 − t, with the steps [`rho_walk::IN_THE_GAP`]). No approximate
     /// model is used.
-    pub fn from_known_gap(&self, a_bar: f64) -> Result<ExactState> {
+    pub(crate) fn from_known_gap(&self, a_bar: f64) -> Result<ExactState> {
         if self.circle.is_radial() {
             return self.from_circle(a_bar);
         }

@@ -129,17 +129,30 @@ impl BaseShare {
 impl Kernel {
     /// The kernel of `layers` on n × n cells of side `dx`.
     pub(crate) fn new(layers: &Layers, n: usize, dx: f64) -> Kernel {
-        let m = 2 * n;
         let r_max = dx * n as f64 * std::f64::consts::SQRT_2 + dx;
         let base = BaseShare::new(layers, r_max);
-        let half_space = 1.0 / (2.0 * std::f64::consts::PI * layers.beta());
+        Kernel::with_base(n, dx, layers.beta(), Some(&base))
+    }
+
+    /// The half-space of modulus β alone (E* = 2β), no base: the peers'
+    /// problem of solver/benches/peer/grid_peers.py.
+    #[cfg(feature = "bench-internals")]
+    pub(crate) fn half_space(beta: f64, n: usize, dx: f64) -> Kernel {
+        Kernel::with_base(n, dx, beta, None)
+    }
+
+    /// The half-space of modulus β less the base's share `base`, if any.
+    fn with_base(n: usize, dx: f64, beta: f64, base: Option<&BaseShare>) -> Kernel {
+        let m = 2 * n;
+        let half_space = 1.0 / (2.0 * std::f64::consts::PI * beta);
         let d = 0.5 * dx;
         let rule = GaussLegendre::new(4);
         let mut buf = vec![Complex64::new(0.0, 0.0); m * m];
         for i in 0..n {
             for j in 0..=i {
                 let (x, y) = (i as f64 * dx, j as f64 * dx);
-                let v = half_space * love(x, y, d) + base.over_cell(x, y, dx, &rule);
+                let v =
+                    half_space * love(x, y, d) + base.map_or(0.0, |b| b.over_cell(x, y, dx, &rule));
                 for (a, b) in [(i, j), (j, i)] {
                     for (ia, jb) in [
                         (a, b),

@@ -101,7 +101,12 @@ impl Sheet {
     /// `layers` at `rho` on n × n cells of side `dx` (the grid's half
     /// width n·dx/2), cohesive range `range`.
     pub(crate) fn new(layers: &Layers, rho: f64, n: usize, dx: f64, range: f64) -> Sheet {
-        let kernel = Kernel::new(layers, n, dx);
+        Sheet::on(Kernel::new(layers, n, dx), rho, n, dx, range)
+    }
+
+    /// The grid of `kernel` (n × n cells of side `dx`) at `rho`, cohesive
+    /// range `range`.
+    fn on(kernel: Kernel, rho: f64, n: usize, dx: f64, range: f64) -> Sheet {
         let centre = |i: usize| (i as f64 + 0.5 - 0.5 * n as f64) * dx;
         let mut phi = vec![0.0; n * n];
         for i in 0..n {
