@@ -832,4 +832,33 @@ fn exact_commands_take_a_gap_by_name() {
         assert_eq!(named["gap"], "cylinders", "{name}");
         assert_eq!(named["force_bar"], plain["force_bar"], "{name}");
     }
+    // `--model exact --gap` as `exact pull-off --gap`; another model refuses it
+    let (ok, out, err) = thinjkr(&[
+        "pull-off",
+        "--rho",
+        "1",
+        "--model",
+        "exact",
+        "--gap",
+        "cylinders",
+        "--json",
+    ]);
+    assert!(ok, "{err}");
+    let st = serde_json::from_str::<serde_json::Value>(&out).unwrap()["state"].clone();
+    assert_eq!(st["force_bar"], plain["force_bar"]);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+        .args([
+            "pull-off",
+            "--rho",
+            "1",
+            "--model",
+            "max",
+            "--gap",
+            "conformal",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("only --model exact"), "{err}");
 }

@@ -6,7 +6,8 @@
 //! `crate::Contact`, `crate::model` (the ellipse models beside an exact
 //! state), `crate::report`, `crate::fold`, `crate::error`, `crate::cutoff`,
 //! `crate::studies` (the loading path, the unloading trace, the reach), `crate::cli` (`output`, `files`),
-//! `crate::conformal` (a family's gap and members, `--gap`).
+//! `crate::conformal` (a family's gap and members, `--gap`), `crate::registry` (`Choice`: `--gap`
+//! is for `--model exact` alone).
 
 use crate::control::Hold;
 use crate::exact::stability::UnstableMode;
@@ -118,8 +119,19 @@ impl GapChoice {
         self.gap.as_deref().unwrap_or("cylinders")
     }
 
+    /// A usage error where `--gap` is given with a model other than
+    /// `exact` (each model solves its own gap).
+    pub(crate) fn only_for_exact(&self, model: &crate::registry::Choice) -> Result<()> {
+        match (&self.gap, model) {
+            (None, _) | (Some(_), crate::registry::Choice::Exact) => Ok(()),
+            (Some(name), _) => Err(Error::Usage(format!(
+                "--gap {name}: only --model exact (and `thinjkr exact …`) solves a gap by name; every other model solves its own"
+            ))),
+        }
+    }
+
     /// A typed refusal where `command` solves the cylinders' gap alone.
-    fn refused_by(&self, command: &str) -> Result<()> {
+    pub(crate) fn refused_by(&self, command: &str) -> Result<()> {
         match (self.gap.as_deref(), self.gap()?) {
             (_, (_, None)) => Ok(()),
             (name, (_, Some(_))) => Err(Error::Usage(format!(

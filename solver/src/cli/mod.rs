@@ -105,6 +105,8 @@ enum Command {
         /// and the pull-off's arm).
         #[arg(long)]
         all: bool,
+        #[command(flatten)]
+        gap: exact_command::GapChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -129,6 +131,8 @@ enum Command {
         /// Control.
         #[arg(long, value_enum, default_value_t = FoldCondition::Load)]
         control: FoldCondition,
+        #[command(flatten)]
+        gap: exact_command::GapChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -176,6 +180,8 @@ enum Command {
         /// With --model layer: the coatings' Poisson's ratio in [0, 0.5] (default 0.5, incompressible).
         #[arg(long, allow_hyphen_values = true)]
         nu: Option<f64>,
+        #[command(flatten)]
+        gap: exact_command::GapChoice,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -450,10 +456,12 @@ fn run(cli: Cli) -> crate::Result<u8> {
             force,
             a,
             all,
+            gap,
             json,
         }) => {
             let model = model.with_coatings(thinness, nu)?;
-            solve_command(rho, model, delta, force, a, all, json)?
+            gap.only_for_exact(&model)?;
+            solve_command(rho, model, delta, force, a, all, &gap, json)?
         }
         Some(Command::PullOff {
             rho,
@@ -461,8 +469,13 @@ fn run(cli: Cli) -> crate::Result<u8> {
             thinness,
             nu,
             control,
+            gap,
             json,
-        }) => pull_off_command(rho, model.with_coatings(thinness, nu)?, control, json)?,
+        }) => {
+            let model = model.with_coatings(thinness, nu)?;
+            gap.only_for_exact(&model)?;
+            pull_off_command(rho, model, control, &gap, json)?
+        }
         Some(Command::Exact { command }) => exact_command::run(command)?,
         Some(Command::Batch { model }) => return batch_command(model),
         Some(Command::Accuracy {
@@ -476,8 +489,13 @@ fn run(cli: Cli) -> crate::Result<u8> {
             model,
             thinness,
             nu,
+            gap,
             json,
-        }) => zero_force_command(rho, model.with_coatings(thinness, nu)?, json)?,
+        }) => {
+            let model = model.with_coatings(thinness, nu)?;
+            gap.only_for_exact(&model)?;
+            zero_force_command(rho, model, &gap, json)?
+        }
         Some(Command::Curve {
             rho,
             model,
@@ -557,6 +575,7 @@ fn solve_command(
     force: Option<f64>,
     a: Option<f64>,
     all: bool,
+    gap: &exact_command::GapChoice,
     j: bool,
 ) -> crate::Result<()> {
     let hold = match (delta, force, a) {
@@ -582,10 +601,11 @@ fn solve_command(
             rho,
             control,
             &exact_command::Discretisation::default(),
-            &exact_command::GapChoice::default(),
+            gap,
             j,
         );
     }
+    gap.refused_by("solve --model exact --a")?;
     // a contour family's states at any control are read from its curve
     let contour = matches!(model, ModelChoice::Contour(_));
     if all || !(matches!(hold, Hold::Force(_)) || contour) {
@@ -687,6 +707,7 @@ fn pull_off_command(
     rho: f64,
     model: ModelChoice,
     condition: FoldCondition,
+    gap: &exact_command::GapChoice,
     j: bool,
 ) -> crate::Result<()> {
     if let (ModelChoice::Exact, FoldCondition::Load) = (model, condition) {
@@ -696,10 +717,11 @@ fn pull_off_command(
             rho,
             &exact_command::Discretisation::default(),
             false,
-            &exact_command::GapChoice::default(),
+            gap,
             j,
         );
     }
+    gap.refused_by("pull-off --model exact --control displacement")?;
     let p = model.pull_off(rho, condition)?;
     if j {
         let doc = Document::PullOff {
@@ -935,14 +957,19 @@ fn accuracy_command(
 }
 
 /// `thinjkr zero-force`.
-fn zero_force_command(rho: f64, model: ModelChoice, j: bool) -> crate::Result<()> {
+fn zero_force_command(
+    rho: f64,
+    model: ModelChoice,
+    gap: &exact_command::GapChoice,
+    j: bool,
+) -> crate::Result<()> {
     if let ModelChoice::Exact = model {
         // the exact state's report, with the ellipse models beside it
         return exact_command::state(
             rho,
             crate::control::Hold::Force(0.0),
             &exact_command::Discretisation::default(),
-            &exact_command::GapChoice::default(),
+            gap,
             j,
         );
     }

@@ -169,7 +169,7 @@ fn own_gap_rho(rho: f64, family: &Family) -> crate::Result<()> {
 }
 
 /// The exact load-controlled pull-off at `rho` on the gap named `gap`
-/// ([`gap_named`]), with the default escalation of truncations (`tries`
+/// (`cylinders` or a contour family's name), with the default escalation of truncations (`tries`
 /// `None`) or those given.
 pub fn exact_pull_off_on_gap(
     gap: &str,
@@ -189,7 +189,7 @@ pub fn exact_pull_off_on_gap(
 }
 
 /// The exact state at `control` and `rho` on the gap named `gap`
-/// ([`gap_named`]), with the default escalation of truncations (`tries`
+/// (`cylinders` or a contour family's name), with the default escalation of truncations (`tries`
 /// `None`) or those given.
 pub fn exact_state_on_gap(
     gap: &str,

@@ -682,7 +682,7 @@ pub enum Route {
     /// On a gap no circle solves: from the cylinders' exact state at the
     /// same ρ and ā (continued in ρ from their circle), continued in the
     /// gap itself at fixed ā to this one, then the family traced to the
-    /// control ([`Exact::from_known_gap`]; no approximate model used).
+    /// control (`Exact::from_known_gap`; no approximate model used).
     FromCylinders,
     /// Continued in ρ at the control from the exact state at a larger ρ
     /// (found there by another route), where no route finds it directly.
