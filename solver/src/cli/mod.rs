@@ -461,7 +461,7 @@ fn run(cli: Cli) -> crate::Result<u8> {
         }) => {
             let model = model.with_coatings(thinness, nu)?;
             gap.only_for_exact(&model)?;
-            solve_command(rho, model, delta, force, a, all, &gap, json)?
+            solve_command(rho, model, hold_of(delta, force, a)?, all, &gap, json)?
         }
         Some(Command::PullOff {
             rho,
@@ -567,27 +567,32 @@ fn example() -> crate::Result<()> {
     Ok(())
 }
 
+/// The control `solve` is given: one of --delta, --force, --a.
+fn hold_of(
+    delta: Option<f64>,
+    force: Option<f64>,
+    a: Option<f64>,
+) -> crate::Result<crate::control::Hold> {
+    use crate::control::Hold;
+    match (delta, force, a) {
+        (Some(d), _, _) => Ok(Hold::Delta(d)),
+        (_, Some(f), _) => Ok(Hold::Force(f)),
+        (_, _, Some(a)) => Ok(Hold::Size(a)),
+        _ => Err(crate::Error::Usage(
+            "give one of --delta, --force, --a".into(),
+        )),
+    }
+}
+
 /// `thinjkr solve`: one state at given δ̄, F̄ or ā (every state of that ā).
 fn solve_command(
     rho: f64,
     model: ModelChoice,
-    delta: Option<f64>,
-    force: Option<f64>,
-    a: Option<f64>,
+    hold: crate::control::Hold,
     all: bool,
     gap: &exact_command::GapChoice,
     j: bool,
 ) -> crate::Result<()> {
-    let hold = match (delta, force, a) {
-        (Some(d), _, _) => Hold::Delta(d),
-        (_, Some(f), _) => Hold::Force(f),
-        (_, _, Some(a)) => Hold::Size(a),
-        _ => {
-            return Err(crate::Error::Usage(
-                "give one of --delta, --force, --a".into(),
-            ))
-        }
-    };
     // the exact state's report also solves the ellipse models at its
     // control and prints each one's distance from it
     use crate::control::Hold;

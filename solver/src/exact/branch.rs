@@ -525,7 +525,7 @@ impl Exact {
         // arm of such a gap (on the bumpy gap at rho = 1, -4.1106 at
         // a = 1.974 against the walk's -4.0799 at 2.049)
         let walked = || -> Result<(ExactState, Route)> {
-            let st = self.from_known_gap(self.trace_start())?;
+            let st = self.continued_in_the_gap(self.trace_start())?;
             let route = st.route;
             Ok((st, route))
         };
@@ -801,7 +801,7 @@ impl Exact {
     /// halfway between the circle's neutral points of modes 4 and 6, where
     /// the near-elliptic arm that carries the pull-off lies. On a gap no
     /// circle solves (issue 73), where the state is continued in the gap
-    /// from the cylinders' ([`Exact::from_known_gap`]): halfway between the
+    /// from the cylinders' ([`Exact::continued_in_the_gap`]): halfway between the
     /// cylinders' neutral points of modes 2 and 4 (ā³ = 4 and 12), whatever
     /// a family's `trace_start_a` says (it names a place between a circle's
     /// neutral points, which such a gap has not), and the trace goes

@@ -587,7 +587,7 @@ mod tests {
                     .unwrap();
             let a0: f64 =
                 std::env::var("THINJKR_BUMPY_A").map_or(ex.trace_start(), |v| v.parse().unwrap());
-            let start = ex.from_known_gap(a0).unwrap();
+            let start = ex.continued_in_the_gap(a0).unwrap();
             for dir in [1.0, -1.0] {
                 let mut near = start.clone();
                 for k in 1..40 {

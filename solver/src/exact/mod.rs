@@ -682,7 +682,7 @@ pub enum Route {
     /// On a gap no circle solves: from the cylinders' exact state at the
     /// same ρ and ā (continued in ρ from their circle), continued in the
     /// gap itself at fixed ā to this one, then the family traced to the
-    /// control (`Exact::from_known_gap`; no approximate model used).
+    /// control (`Exact::continued_in_the_gap`; no approximate model used).
     FromCylinders,
     /// Continued in ρ at the control from the exact state at a larger ρ
     /// (found there by another route), where no route finds it directly.
@@ -1331,7 +1331,7 @@ impl Exact {
     /// φ̄ₜ = (1 − t)·φ̄_cylinders + t·φ̄ from t = 0 to 1 (the one walk, on
     /// s = 1 − t, with the steps [`rho_walk::IN_THE_GAP`]). No approximate
     /// model is used.
-    pub(crate) fn from_known_gap(&self, a_bar: f64) -> Result<ExactState> {
+    pub(crate) fn continued_in_the_gap(&self, a_bar: f64) -> Result<ExactState> {
         if self.circle.is_radial() {
             return self.from_circle(a_bar);
         }

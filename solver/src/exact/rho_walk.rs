@@ -21,7 +21,7 @@ pub(crate) const FROM_THE_CIRCLE: RhoSteps = RhoSteps {
 
 /// A state at fixed ā and ρ continued in the gap itself, from the
 /// cylinders' gap to another, on s = 1 − t from 1 to 0
-/// (`Exact::from_known_gap`, issue 73): the same walk, its parameter the
+/// (`Exact::continued_in_the_gap`, issue 73): the same walk, its parameter the
 /// share of the known gap.
 pub(crate) const IN_THE_GAP: RhoSteps = RhoSteps {
     first: 0.1,
