@@ -112,6 +112,12 @@ def _interrupted_one_second_in(code: str, timeout: float):
     import sys
     import time
 
+    # Python's own SIGINT handler in the child, whatever this process
+    # inherited: a shell that starts a job in the background without job
+    # control ignores SIGINT for it, and a Python started with SIGINT ignored
+    # installs no KeyboardInterrupt handler (the test asks how thinjkr answers
+    # Python's handler, not how the child was started)
+    code = "import signal\nsignal.signal(signal.SIGINT, signal.default_int_handler)\n" + code
     child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         assert child.stdout.readline().strip() == "started"

@@ -53,6 +53,15 @@ impl Discretisation {
         Ok(st.judged(self.cutoff()?))
     }
 
+    /// The truncations asked for, or none: the default escalation (and the
+    /// continuation in ρ from a larger ρ where no start finds the answer).
+    fn asked(&self) -> Result<Option<Vec<Truncation>>> {
+        match (self.modes, self.points) {
+            (None, None) => Ok(None),
+            _ => self.tries().map(Some),
+        }
+    }
+
     /// The truncations to try, in order.
     fn tries(&self) -> Result<Vec<Truncation>> {
         let modes = match self.modes {
@@ -1181,12 +1190,7 @@ pub(crate) fn pull_off(
         )));
     }
     let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
-    // the default escalation (and the continuation in rho from a larger rho
-    // where no start finds the pull-off), else the truncations asked for
-    let tries = match (d.modes, d.points) {
-        (None, None) => None,
-        _ => Some(d.tries()?),
-    };
+    let tries = d.asked()?;
     let (po, events) = crate::conformal::exact_pull_off_on_gap(gap.name(), rho, tries.as_deref())?;
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
@@ -1397,12 +1401,7 @@ pub(crate) fn state(
     let (_, family) = gap.gap()?;
     let spin = crate::cli::output::Spinner::start("solving the free-boundary problem (2)-(3)");
     control.check_finite()?;
-    // the default escalation (and the continuation in rho from a larger rho
-    // where no route finds the state directly), else the truncations asked for
-    let tries = match (d.modes, d.points) {
-        (None, None) => None,
-        _ => Some(d.tries()?),
-    };
+    let tries = d.asked()?;
     let st = crate::conformal::exact_state_on_gap(gap.name(), rho, control, tries.as_deref())?;
     let st = d.judged(st)?;
     // beside it: the ellipse models on the cylinders' gap (their state at
