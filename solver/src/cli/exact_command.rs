@@ -742,7 +742,7 @@ fn show_trust(st: &ExactState) -> crate::Result<()> {
         "  checked: max |dp/dnu - 1| = {:.1e} with {} modes; found: {}",
         st.bc_error,
         st.truncation.modes,
-        st.route
+        st.route_words()
     );
     outln!("  {} (more with --explain)", verdict_words(st));
     Ok(())
@@ -762,7 +762,7 @@ fn show_quality(st: &ExactState) -> crate::Result<()> {
         },
         st.truncation.points
     );
-    outln!("  found: {}", st.route);
+    outln!("  found: {}", st.route_words());
     outln!(
         "  displacement control: {}",
         modes(&st.stability.displacement, st.truncation.modes)

@@ -1269,7 +1269,7 @@ impl Exact {
     /// [`Error::NoState`] saying where the arm ended.
     pub fn at(&self, control: Hold) -> Result<ExactState> {
         self.find(control, None).and_then(|st| {
-            let at = format!("{control} ({})", st.route);
+            let at = format!("{control} ({})", st.route_words());
             self.accept_resolved(at, st)
         })
     }

@@ -573,6 +573,20 @@ mod tests {
         }
     }
 
+    /// Issue 73, item 4: a route started from a model names the model
+    /// that seeded it; on the cylinders' gap conformal:8, as the route's
+    /// own words always did.
+    #[test]
+    fn a_route_from_a_model_names_the_seeding_model() {
+        use crate::exact::Route;
+        for route in [Route::FromModel, Route::AboveModelPullOff, Route::FromScreen] {
+            assert_eq!(route.to_string(), route.words("conformal:8"));
+            let w = route.words("bumpy:3");
+            assert!(w.contains("bumpy:3") && !w.contains("conformal:8"), "{w}");
+        }
+        assert_eq!(Route::FromCylinders.words("bumpy:3"), Route::FromCylinders.to_string());
+    }
+
     /// Issue 73: the exact pull-off on the bumpy gap at ρ = 1, 0.8 and
     /// 0.5, and with THINJKR_BUMPY_SCAN=ρ the states at fixed ā on either
     /// side of the start continued in the gap from ā = THINJKR_BUMPY_A

@@ -621,6 +621,15 @@ fn gap_name<S: serde::Serializer>(gap: &Gap, s: S) -> std::result::Result<S::Ok,
 }
 
 impl ExactState {
+    /// How it was found, in words: its route, naming the model that
+    /// seeded it (the largest member of the family that seeds its gap).
+    pub(crate) fn route_words(&self) -> String {
+        match self.gap.seed {
+            Some(seed) => self.route.words(&seed.name()),
+            None => self.route.to_string(),
+        }
+    }
+
     /// The state with its stability judged under `cutoff` (the verdicts
     /// count the modes at least its wavelength long) and its shape's
     /// unresolved part measured against it.
@@ -706,12 +715,30 @@ pub enum Route {
     FromNeighbour,
 }
 
+impl Route {
+    /// The route in words, naming `seed`, the model whose states started
+    /// it where one did (the largest member of the family that seeds the
+    /// gap: conformal:8 on the cylinders').
+    pub(crate) fn words(self, seed: &str) -> String {
+        match self {
+            Route::FromModel => format!("started from {seed} at the same control"),
+            Route::AboveModelPullOff => format!("traced from just above {seed}'s pull-off"),
+            Route::FromScreen => format!(
+                "Newton at the control from {seed}'s state where its states at fixed a cross it"
+            ),
+            other => other.to_string(),
+        }
+    }
+}
+
 impl std::fmt::Display for Route {
+    /// The route in words, on the cylinders' gap ([`Route::words`] names
+    /// the seeding model of another).
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {
-            Route::FromModel => "started from conformal:8 at the same control",
-            Route::AboveModelPullOff => "traced from just above conformal:8's pull-off",
-            Route::FromScreen => "Newton at the control from conformal:8's state where its states at fixed a cross it",
+            Route::FromModel | Route::AboveModelPullOff | Route::FromScreen => {
+                return f.write_str(&self.words("conformal:8"))
+            }
             Route::FromCircle => "continued in rho from the circle at rho = 1",
             Route::FromCylinders => {
                 "continued in the gap from the cylinders' state at the same rho and a (continued in rho from their circle)"
