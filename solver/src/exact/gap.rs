@@ -579,12 +579,19 @@ mod tests {
     #[test]
     fn a_route_from_a_model_names_the_seeding_model() {
         use crate::exact::Route;
-        for route in [Route::FromModel, Route::AboveModelPullOff, Route::FromScreen] {
+        for route in [
+            Route::FromModel,
+            Route::AboveModelPullOff,
+            Route::FromScreen,
+        ] {
             assert_eq!(route.to_string(), route.words("conformal:8"));
             let w = route.words("bumpy:3");
             assert!(w.contains("bumpy:3") && !w.contains("conformal:8"), "{w}");
         }
-        assert_eq!(Route::FromCylinders.words("bumpy:3"), Route::FromCylinders.to_string());
+        assert_eq!(
+            Route::FromCylinders.words("bumpy:3"),
+            Route::FromCylinders.to_string()
+        );
     }
 
     /// Issue 73: the exact pull-off on the bumpy gap at ρ = 1, 0.8 and

@@ -732,7 +732,7 @@ impl Route {
 }
 
 impl std::fmt::Display for Route {
-    /// The route in words, on the cylinders' gap ([`Route::words`] names
+    /// The route in words, on the cylinders' gap (`Route::words` names
     /// the seeding model of another).
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {
