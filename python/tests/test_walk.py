@@ -72,14 +72,42 @@ name = "bumpy"
 title = "odd polynomial maps of the disk on the cylinders' gap with one cylinder's quartic term"
 gap = "X^2/2 + mu*Y^2/2 + X^4/24"
 particular = "X^4/24 + mu*Y^4/24 + X^6/720 - dbar*(X^2 + Y^2)/4"
-powers = [1, 3, 5]
+powers = [1, 3, 5, 7]
+rho_min = 0.5
+trace_start_a = 2.6
+seeds_exact = true
+"""
+
+# issue 73's two more gaps no circle solves: the other cylinder's quartic
+# term (at ρ = 1 the bumpy gap turned by 90°, so the same pull-offs there:
+# a check by symmetry), and quartic terms of both, unequal
+ACROSS = """\
+kind = "conformal"
+name = "across"
+title = "odd polynomial maps of the disk on the cylinders' gap with the other cylinder's quartic term"
+gap = "X^2/2 + mu*Y^2/2 + Y^4/24"
+particular = "X^4/24 + mu*Y^4/24 + Y^6/720 - dbar*(X^2 + Y^2)/4"
+powers = [1, 3, 5, 7]
+rho_min = 0.5
+trace_start_a = 2.6
+seeds_exact = true
+"""
+
+UNEVEN = """\
+kind = "conformal"
+name = "uneven"
+title = "odd polynomial maps of the disk on the cylinders' gap with quartic terms of both, X^4/24 + Y^4/48"
+gap = "X^2/2 + mu*Y^2/2 + X^4/24 + Y^4/48"
+particular = "X^4/24 + mu*Y^4/24 + X^6/720 + Y^6/1440 - dbar*(X^2 + Y^2)/4"
+powers = [1, 3, 5, 7]
 rho_min = 0.5
 trace_start_a = 2.6
 seeds_exact = true
 """
 
 NEW_FILES = {"derive/families/sparse.toml": SPARSE, "derive/families/quartic.toml": QUARTIC,
-             "derive/families/bumpy.toml": BUMPY}
+             "derive/families/bumpy.toml": BUMPY, "derive/families/across.toml": ACROSS,
+             "derive/families/uneven.toml": UNEVEN}
 
 
 def derive_bin():
@@ -152,6 +180,7 @@ def test_only_the_data_file_is_hand_written_and_every_built_in_file_is_unchanged
               "solver/src/generated/sparse/tables.json", "solver/src/generated/sparse/k3.rs",
               "derive/families/quartic.toml", "solver/src/generated/quartic/tables.json",
               "derive/families/bumpy.toml", "solver/src/generated/bumpy/tables.json",
+              "solver/src/generated/across/tables.json", "solver/src/generated/uneven/k4.rs",
               "docs/derivation.md", "docs/codegen-accuracy.md"):
         assert p in changed, p
     # no built-in family's or model's generated file changed
@@ -223,10 +252,40 @@ def test_the_exact_solver_takes_a_family_gap_no_circle_solves(walked, cli):
         st = doc["state"]
         assert st["gap"] == "bumpy" and st["route"] == "from_cylinders", st
         assert abs(st["force_bar"] - force) < 1e-9, (rho, st["force_bar"])
-        assert [m["model"] for m in doc["models"]] == ["bumpy:1", "bumpy:2", "bumpy:3"]
+        assert [m["model"] for m in doc["models"]] == ["bumpy:1", "bumpy:2", "bumpy:3", "bumpy:4"]
     run = subprocess.run([cli, "exact", "bands", "--rho", "0.8", "--gap", "bumpy"], env=env,
                          capture_output=True, text=True)
     assert run.returncode == 2 and "solves the cylinders' gap (1) alone" in run.stderr, run.stderr
+
+
+def test_members_on_three_gaps_no_circle_solves_approach_their_exact_pull_off(walked, cli):
+    """Issue 73's done-when: on three gaps not radial at ρ = 1 (bumpy,
+    across, uneven; powers 1, 3, 5, 7) the exact load-controlled pull-off
+    answers at ρ = 1, 0.8 and 0.5, and the members' pull-offs at ρ = 1 and
+    0.8 come nearer to it from K = 2 to K = 4, within 1 % at K = 4. At
+    ρ = 1 the across gap is the bumpy gap turned by 90°: the same pull-offs
+    (exact and every member) to 1e-9, through separate derivations and
+    separate walks in the gap."""
+    copy, _ = walked
+    env = dict(os.environ, THINJKR_FAMILIES=str(copy / "solver/src/generated"))
+    at_one = {}
+    for gap in ("bumpy", "across", "uneven"):
+        for rho in ("1", "0.8", "0.5"):
+            doc = cli_json(cli, env, "exact", "pull-off", "--rho", rho, "--gap", gap)
+            exact = doc["state"]["force_bar"]
+            assert doc["state"]["gap"] == gap and exact < 0, (gap, rho, doc["state"])
+            if rho == "0.5":
+                continue
+            members = {m["model"]: m["member"]["force_bar"] for m in doc["models"]
+                       if "member" in m}
+            off = [abs(members[f"{gap}:{k}"] / exact - 1) for k in (2, 3, 4)]
+            print(gap, rho, exact, [f"{e:.4%}" for e in off])
+            assert off[0] >= off[1] >= off[2], (gap, rho, off)
+            assert off[2] <= 0.01, (gap, rho, off)
+            if rho == "1":
+                at_one[gap] = [exact] + [members[f"{gap}:{k}"] for k in (1, 2, 3, 4)]
+    for b, a in zip(at_one["bumpy"], at_one["across"]):
+        assert abs(a - b) <= 1e-9 * abs(b), (at_one["bumpy"], at_one["across"])
 
 
 def test_python_lists_and_solves_with_the_family_without_a_rebuild(walked, cli):

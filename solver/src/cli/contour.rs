@@ -158,7 +158,7 @@ pub(crate) fn show_pull_off(
     };
     outln!(
         "  end point: {what} along the branch traced from a = {} (pseudo-arclength in (c, delta))",
-        m.family().trace_start_a
+        crate::error::short(m.trace_start())
     );
     if !crate::cli::output::explain() {
         return Ok(());

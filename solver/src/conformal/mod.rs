@@ -9,13 +9,16 @@
 //! (`crate::generated::<family>`, listed in `crate::generated::registry`): Π̄ with its derivatives through
 //! [`poly`], the boundary slope, and the map's powers. Solves:
 //! - a state at given δ̄, F̄ or ā: Newton on (∇_c Π̄ = 0, control), started
-//!   from the circle at ρ = 1 (where every member has the circle's state)
-//!   and continued in μ = 1/ρ to the requested ρ; where that ends at a fold
+//!   from the circle at ρ = 1 (where every member has the circle's state;
+//!   on a gap no circle solves, the state nearer (3)₂ of the circle's guess
+//!   polished and the branch traced from `Conformal::trace_start`) and
+//!   continued in μ = 1/ρ to the requested ρ; where that ends at a fold
 //!   in ρ first, bracketed by the states at fixed ā, which reach the pieces
 //!   of the family beyond it (`bracketed_by_sizes`);
 //! - pull-off under load or displacement control: pseudo-arclength
-//!   continuation of the branch in (c, δ̄) from ā = [`Family::trace_start_a`] towards
-//!   smaller contacts, to the first extremum of F̄ (load) or δ̄
+//!   continuation of the branch in (c, δ̄) from ā = `Conformal::trace_start` towards
+//!   smaller contacts (on a gap no circle solves, downhill in F̄ or δ̄),
+//!   to the first extremum of F̄ (load) or δ̄
 //!   (displacement), located by Illinois on the tangent's component;
 //! - zero force: the state at F̄ = 0.
 //!
@@ -147,6 +150,12 @@ struct Decoded {
     slope: Vec<(u16, poly::Decoded)>,
     /// The rows of ∂p̄/∂r at ζ = 1 (Σ of every mode's) on the circle.
     slope_circle_at_zero: poly::Decoded,
+    /// Whether the family's gap at ρ = 1 is a function of X² + Y² (then
+    /// the circle c = (ā, 0, …, 0) is a state there).
+    circle_solves_the_gap: bool,
+    /// ā at which the pull-off's trace starts
+    /// ([`crate::exact::gap::GapAt::trace_start`]).
+    trace_start: f64,
 }
 
 /// Every member's decoded tables, by family (in registry order) and K.
@@ -156,6 +165,15 @@ static DECODED: std::sync::OnceLock<DecodedSlots> = std::sync::OnceLock::new();
 /// The same for the families loaded at run time (numbered in the whole
 /// registry, the built-in ones' slots unused).
 static DECODED_LOADED: std::sync::OnceLock<DecodedSlots> = std::sync::OnceLock::new();
+
+/// The largest scaled residual of ∇_c Π̄ a state may have (Newton's
+/// norm, [`Conformal::newton`]; its solves ask for 1e-13, the traces'
+/// correctors for steps below 1e-12).
+const STATE_RESIDUAL: f64 = 1e-9;
+
+/// A member's state at ρ = 1 with the held system's Jacobian there, where
+/// its solve left one ([`Conformal::circle`]).
+type AtTheCircle = Result<(DVector<f64>, Option<DMatrix<f64>>)>;
 
 /// A state of a `conformal:K` model.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -408,7 +426,13 @@ impl Conformal {
                 }),
                 tables.terms,
             );
+            // the gap at ρ = 1 (a family's gap was checked on loading)
+            let circle = family.unseeded_gap().at(1.0).ok();
             Decoded {
+                circle_solves_the_gap: circle.as_ref().is_none_or(|c| c.is_radial()),
+                trace_start: circle.map_or(family.trace_start_a, |c| {
+                    c.trace_start(Some(family.trace_start_a))
+                }),
                 potential_circle: potential.on_circle(),
                 slope_circle_at_zero: at_zero.on_circle(),
                 potential,
@@ -454,6 +478,14 @@ impl Conformal {
             .doubtful_defects
             .get(self.terms().wrapping_sub(1))
             .map_or(Line::Default, |&v| Line::Measured(v))
+    }
+
+    /// ā at which its pull-off's trace starts: the family's
+    /// `trace_start_a` on a gap the circle solves, else between the
+    /// cylinders' neutral points of modes 2 and 4
+    /// ([`crate::exact::gap::GapAt::trace_start`]).
+    pub(crate) fn trace_start(&self) -> f64 {
+        self.decoded.trace_start
     }
 
     pub(crate) fn terms(&self) -> usize {
@@ -843,6 +875,22 @@ impl Conformal {
                 (v, value)
             })
         };
+        // on a gap no circle solves (issue 73) the circle is a guess: at ā
+        // polished by Newton, at δ̄ or F̄ the crossing of the circles
+        // polished (below); where Newton fails (next to a neutral point of
+        // the circle) the branch traced from the state at the trace's start
+        let traced_from_its_start = || {
+            let a = self.trace_start();
+            let (x, _) = at(a).ok_or_else(|| no_circle(a))?;
+            self.traced_from_its_start(x, control)
+        };
+        if let (false, Hold::Size(a)) = (self.decoded.circle_solves_the_gap, control) {
+            let direct = at(a)
+                .ok_or_else(|| no_circle(a))
+                .and_then(|(x, _)| self.newton_to(&x, 1.0, control, 1e-13))
+                .map(|it| (it.x, Some(it.jacobian)));
+            return self.nearer_to_its_closure(direct, traced_from_its_start);
+        }
         let target = match control {
             Hold::Delta(d) => d,
             Hold::Force(f) => f,
@@ -886,35 +934,120 @@ impl Conformal {
         // located (Brent) and, where it lies below the target, the crossing
         // is bracketed between it and the sample above
         let value_at = |a: f64| at(a).map(|(_, v)| v - target).unwrap_or(f64::INFINITY);
-        let mut samples: Vec<(f64, f64, DVector<f64>)> = Vec::new();
-        let mut a = 16.0;
-        while a > 0.2 {
-            if let Some((v, value)) = at(a) {
-                let f = value - target;
-                if let Some((a0, f0, _)) = samples.last() {
-                    if f0 * f <= 0.0 {
-                        return cross((*a0, *f0), (a, f), v);
+        let scanned = || {
+            let mut samples: Vec<(f64, f64, DVector<f64>)> = Vec::new();
+            let mut a = 16.0;
+            while a > 0.2 {
+                if let Some((v, value)) = at(a) {
+                    let f = value - target;
+                    if let Some((a0, f0, _)) = samples.last() {
+                        if f0 * f <= 0.0 {
+                            return cross((*a0, *f0), (a, f), v);
+                        }
                     }
-                }
-                if let [.., (a2, f2, _), (_, f1, _)] = samples.as_slice() {
-                    if *f1 < *f2 && *f1 < f && *f1 > 0.0 {
-                        let a_min = crate::model::brent_minimum(value_at, a, *a2, 1e-12 * *a2);
-                        let f_min = value_at(a_min);
-                        if f_min <= 0.0 {
-                            if let Some((v_min, _)) = at(a_min) {
-                                return cross((*a2, *f2), (a_min, f_min), v_min);
+                    if let [.., (a2, f2, _), (_, f1, _)] = samples.as_slice() {
+                        if *f1 < *f2 && *f1 < f && *f1 > 0.0 {
+                            let a_min = crate::model::brent_minimum(value_at, a, *a2, 1e-12 * *a2);
+                            let f_min = value_at(a_min);
+                            if f_min <= 0.0 {
+                                if let Some((v_min, _)) = at(a_min) {
+                                    return cross((*a2, *f2), (a_min, f_min), v_min);
+                                }
                             }
                         }
                     }
+                    samples.push((a, f, v));
                 }
-                samples.push((a, f, v));
+                a *= 0.9;
             }
-            a *= 0.9;
+            Err(Error::NoState(format!(
+                "{} has no circular state at that control for rho = 1 (its circles with a from 0.2 to 16 scanned)",
+                self.name()
+            )))
+        };
+        if self.decoded.circle_solves_the_gap {
+            scanned()
+        } else {
+            self.nearer_to_its_closure(scanned(), traced_from_its_start)
         }
-        Err(Error::NoState(format!(
-            "{} has no circular state at that control for rho = 1 (its circles with a from 0.2 to 16 scanned)",
-            self.name()
-        )))
+    }
+
+    /// Of two states at ρ = 1 on a gap no circle solves, the one (2)'s
+    /// boundary condition (3)₂ holds better on (the smaller defect
+    /// max |∂p̄/∂ν − 1|) among those that are contacts: the circle's guess
+    /// polished (`direct`) and the branch traced from the trace's start
+    /// (`traced`, [`Conformal::traced_from_its_start`]). Near a neutral point of
+    /// the circle the member's family splits into arms (each mode's
+    /// imperfect bifurcation), and either may land on an arm far from the
+    /// exact state: on issue 73's bumpy gap bumpy:3 at ā = 2 has states
+    /// with defects 0.018 and 0.062, at ā = 2.3 0.0091 and 0.26.
+    fn nearer_to_its_closure(
+        &self,
+        direct: AtTheCircle,
+        traced: impl FnOnce() -> AtTheCircle,
+    ) -> AtTheCircle {
+        let k = self.terms();
+        let defect = |found: &AtTheCircle| match found {
+            Ok((x, _)) if self.univalence(&x.as_slice()[..k]).is_ok() => self.bc_defect(x, 1.0),
+            _ => f64::INFINITY,
+        };
+        let traced = traced();
+        match (direct, traced) {
+            (Err(first), Err(second)) => Err(Error::NoState(format!(
+                "{}; {}",
+                first.detail(),
+                second.detail()
+            ))),
+            (direct, traced) if defect(&traced) < defect(&direct) => traced,
+            (direct @ Ok(_), _) => direct,
+            (_, traced) => traced,
+        }
+    }
+
+    /// The state at ρ = 1 under `control` on a gap no circle solves (issue
+    /// 73), from `guess`, the circle at ā = `Conformal::trace_start`:
+    /// the state there by Newton, then the branch at ρ = 1 traced from it
+    /// ([`trace::crossings`]): under ā towards that ā, the first
+    /// crossing; under δ̄ or F̄ towards larger ā up to 16, the last
+    /// crossing (the largest contact, as the circle's scan from ā = 16
+    /// down takes), else towards smaller ā, the first. Newton at the
+    /// control polishes the crossing.
+    fn traced_from_its_start(
+        &self,
+        guess: DVector<f64>,
+        control: Hold,
+    ) -> Result<(DVector<f64>, Option<DMatrix<f64>>)> {
+        let k = self.terms();
+        let a0 = self.trace_start();
+        let start = self.newton_to(&guess, 1.0, Hold::Size(a0), 1e-13)?;
+        let quantity = crate::control::Quantity::of(control);
+        let value = control.value();
+        let crossing = match control {
+            Hold::Size(a) if a == a0 => Some(start.x.clone()),
+            Hold::Size(a) => {
+                trace::crossings(self, &start.x, 1.0, (quantity, value), a > a0, 2.0 * a)?
+                    .into_iter()
+                    .next()
+            }
+            _ => {
+                match trace::crossings(self, &start.x, 1.0, (quantity, value), true, 16.0)?.pop() {
+                    Some(x) => Some(x),
+                    None => trace::crossings(self, &start.x, 1.0, (quantity, value), false, 16.0)?
+                        .into_iter()
+                        .next(),
+                }
+            }
+        };
+        let x = crossing.ok_or_else(|| {
+            Error::NoState(format!(
+                "{} has no state at {control} for rho = 1 on the branch through its state at a = {} (traced from a = 0.3 to 16)",
+                self.name(),
+                short(a0)
+            ))
+        })?;
+        debug_assert_eq!(x.len(), k + 1);
+        self.newton_to(&x, 1.0, control, 1e-13)
+            .map(|it| (it.x, Some(it.jacobian)))
     }
 
     /// Continue a state from ρ = 1 to `rho` at fixed control, in steps of
@@ -969,8 +1102,9 @@ impl Conformal {
         })
         .map_err(|rho_now| {
             Error::NoState(format!(
-                "{}: the state at {control} continued from the circle (rho = 1) ends near rho = {:.4}, above the rho = {} asked for (its arm folds in rho there)",
+                "{}: the state at {control} continued from {} (rho = 1) ends near rho = {:.4}, above the rho = {} asked for (its arm folds in rho there)",
                 self.name(),
+                if self.decoded.circle_solves_the_gap { "the circle" } else { "its state there" },
                 rho_now,
                 short(rho)
             ))
@@ -989,7 +1123,7 @@ impl Conformal {
         // a state at ρ < 1 is continued from the circle's: where the circle
         // has none, the message speaks of the ρ asked for
         let (x1, j1) = self.circle(control).map_err(|e| match e {
-            Error::NoState(_) if rho != 1.0 => Error::NoState(format!(
+            Error::NoState(_) if rho != 1.0 && self.decoded.circle_solves_the_gap => Error::NoState(format!(
                 "{} has no state at {control} for rho = {}: its states are continued in rho from the circle (rho = 1), and its circles with a from 0.2 to 16 have none at that control",
                 self.name(),
                 crate::error::short(rho)
@@ -1092,7 +1226,7 @@ impl Conformal {
                 self.name()
             )));
         };
-        let start = self.solve(rho, Hold::Size(self.family.trace_start_a))?;
+        let start = self.solve(rho, Hold::Size(self.trace_start()))?;
         let mut x = DVector::from_vec(start.coefficients.clone());
         x = x.push(start.delta_bar);
         // towards the pull-off first (the forces between it and the start),
@@ -1105,7 +1239,7 @@ impl Conformal {
             Error::NoState(format!(
                 "{}: the arm that carries the pull-off, traced both ways from a = {} at rho = {}, does not cross force = {}",
                 self.name(),
-                self.family.trace_start_a,
+                short(self.trace_start()),
                 short(rho),
                 short(force)
             ))
@@ -1260,7 +1394,10 @@ impl Conformal {
             ));
         }
         let rho = check_rho(self.family, rho)?;
-        if control == FoldCondition::Displacement && rho >= 1.0 {
+        if control == FoldCondition::Displacement
+            && rho >= 1.0
+            && self.decoded.circle_solves_the_gap
+        {
             if let Some(end) = self.displacement_end_of_the_circle() {
                 return end;
             }
@@ -1361,7 +1498,7 @@ impl Conformal {
             "{} has no displacement-controlled pull-off at rho = {}: at {} (a = {}, F = {}) the branch is already unstable under displacement control to {}, modes above the short-wave cutoff {:.3} = 2π h/L (h/L = {}); a contact held at its approach changes shape before, which this contour cannot follow (docs/exact.md, \"The short-wave cutoff\")",
             self.name(),
             short(st.rho),
-            if st.rho >= 1.0 {
+            if st.rho >= 1.0 && self.decoded.circle_solves_the_gap {
                 "the circle's neutral point of cos 2θ, where a contour of cos 2θ alone ends (the circle has no extremum of delta)"
             } else {
                 "its first extremum of delta"
@@ -1374,17 +1511,24 @@ impl Conformal {
         )))
     }
 
-    /// The pull-off traced from the state at ā = [`Family::trace_start_a`]
-    /// continued in ρ from the circle.
+    /// The pull-off traced from the state at ā = `Conformal::trace_start`
+    /// continued in ρ from the circle: towards smaller contacts on a gap
+    /// the circle solves, else downhill in F̄ (δ̄).
     fn pull_off_traced(
         &self,
         rho: f64,
         control: FoldCondition,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
-        let start = self.solve(rho, Hold::Size(self.family.trace_start_a))?;
+        let start = self.solve(rho, Hold::Size(self.trace_start()))?;
         let mut x = DVector::from_vec(start.coefficients.clone());
         x = x.push(start.delta_bar);
-        let (found, folds) = trace::to_extremum(self, &x, rho, control)?;
+        // on a gap no circle solves the start may lie on either side of
+        // the pull-off: downhill in F̄ (δ̄ under displacement control)
+        let (found, folds) = if self.decoded.circle_solves_the_gap {
+            trace::to_extremum(self, &x, rho, control)?
+        } else {
+            trace::to_nearby_extremum(self, &x, rho, control, f64::INFINITY)?
+        };
         Ok((self.state(&found, rho)?, folds))
     }
 
@@ -1400,9 +1544,16 @@ impl Conformal {
         control: FoldCondition,
     ) -> Result<(ConformalState, Vec<Extremum>)> {
         let k = self.terms();
+        // (ρ = 1 too on a gap no circle solves: there the pull-off is no
+        // circle's)
+        let top = if self.decoded.circle_solves_the_gap {
+            1.0
+        } else {
+            1.0 + 1e-9
+        };
         let (rho_now, mut x, mut folds) = (1..)
-            .map(|j| rho + 0.05 * j as f64)
-            .take_while(|r| *r < 1.0)
+            .map(|j| ((rho + 0.05 * j as f64) * 1e9).round() / 1e9)
+            .take_while(|r| *r < top)
             .find_map(|r| {
                 let (st, folds) = self.pull_off_traced(r, control).ok()?;
                 let mut x = DVector::from_vec(st.coefficients);
@@ -1493,6 +1644,19 @@ impl Conformal {
         let (modes, neutral) = self.modes(&motion, &hcc, by_displacement)?;
         let (modes_load, neutral_load) = self.modes(&motion, &h, by_load)?;
         let force = e.grad[k];
+        // a state solves ∇_c Π̄ = 0 (Newton's scaled residual, to well above
+        // the 1e-13 its solves ask for)
+        let residual =
+            DVector::from_fn(k, |i, _| e.grad[i]).norm() / (1.0 + x.rows(0, k).amax().powi(7));
+        if !(residual <= STATE_RESIDUAL) {
+            return Err(Error::NoState(format!(
+                "{}: the contact at rho = {} with a = {} is no state of it (its equations are off by {:.1e}, scaled)",
+                self.name(),
+                short(rho),
+                crate::error::rounded(a),
+                residual
+            )));
+        }
         let bc_defect = self.bc_defect(x, rho);
         let out = ConformalState {
             model: self.name(),
@@ -1855,6 +2019,23 @@ mod tests {
             for i in 0..poly::MAX_UNKNOWNS {
                 prop_assert_eq!(&u.hess[i][..], &t.hess[i][..], "row {}", i);
             }
+        }
+    }
+
+    /// A state is what it claims: unknowns off ∇_c Π̄ = 0 are no state of
+    /// the member (a circle on a gap no circle solves had been returned as
+    /// one at ρ = 1), a solved one is.
+    #[test]
+    fn unknowns_that_miss_the_equations_are_no_state() {
+        let m = Conformal::member("conformal", 3).unwrap();
+        let st = m.solve(0.8, Hold::Force(0.0)).unwrap();
+        let x = DVector::from_iterator(4, st.coefficients.iter().copied().chain([st.delta_bar]));
+        assert!(m.state(&x, 0.8).is_ok());
+        let mut off = x.clone();
+        off[1] += 1e-3;
+        match m.state(&off, 0.8) {
+            Err(Error::NoState(why)) => assert!(why.contains("is no state of it"), "{why}"),
+            other => panic!("{other:?}"),
         }
     }
 

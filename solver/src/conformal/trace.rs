@@ -12,7 +12,7 @@
 //! dδ̄/dσ). Folds in ā passed on the way are reported.
 //!
 //! Owns: [`Extremum`], [`to_extremum`], [`to_nearby_extremum`],
-//! [`to_force_on_the_pull_off_arm`], [`Curve`], [`CurveFold`], [`curve`], [`curve_each`].
+//! [`to_force_on_the_pull_off_arm`], [`crossings`], [`Curve`], [`CurveFold`], [`curve`], [`curve_each`].
 //! May use: `fold`, `control` (the quantity a crossing watches),
 //! the parent module,
 //! `equations` (the family of the one model interface), `continuation`,
@@ -193,6 +193,51 @@ pub(crate) fn to_force_on_the_pull_off_arm(
     Ok(trace.located(EventKind::Crossing).cloned())
 }
 
+/// Every crossing of `quantity` = `value`, located, along the branch
+/// traced from `x0` towards larger ā up to ā = `a_limit` (`larger`), or
+/// towards smaller ā until the contact vanishes (ā < 0.3), in the order
+/// met; the trace ends where the map stops being one-to-one (a crossing
+/// past that is no contact). An error where the step budget ends it.
+pub(crate) fn crossings(
+    m: &Conformal,
+    x0: &DVector<f64>,
+    rho: f64,
+    (quantity, value): (crate::control::Quantity, f64),
+    larger: bool,
+    a_limit: f64,
+) -> Result<Vec<DVector<f64>>> {
+    let family = branch(m, rho, false);
+    let towards = family.a_bar_gradient() * if larger { 1.0 } else { -1.0 };
+    let watch = Watch {
+        size_fold: On::Ignore,
+        displacement_fold: On::Ignore,
+        force_minimum: On::Ignore,
+        bifurcation: On::Ignore,
+        crossing: Some((quantity, value, On::Locate)),
+    };
+    let k = x0.len() - 1;
+    let contact = |u: &DVector<f64>| m.univalence(&u.as_slice()[..k]).is_ok();
+    let trace = continuation::trace(&family, x0.clone(), &towards, ARM, watch, |p| {
+        p.a_bar < 0.3 || p.a_bar > a_limit || !contact(&p.u)
+    })?;
+    if trace.end == End::Budget {
+        let last = &trace.points.last().expect("one point").u;
+        return Err(stuck(
+            m,
+            last,
+            rho,
+            "the step budget ran out before the value was crossed",
+        ));
+    }
+    Ok(trace
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::Crossing)
+        .filter_map(|e| e.at.clone())
+        .filter(|u| contact(u))
+        .collect())
+}
+
 fn stuck(m: &Conformal, x: &DVector<f64>, rho: f64, why: &str) -> Error {
     let k = x.len() - 1;
     let (a, b) = m.semi_axes(&x.as_slice()[..k]);
@@ -343,7 +388,7 @@ fn arm(
 /// The curve of one member at ρ: the arm from δ̄ = `delta_start` downwards
 /// and, where the load-controlled pull-off lies on another arm (each
 /// mode's imperfect bifurcation splits the family for ρ < 1), that arm,
-/// traced both ways from its state at ā = [`super::Family::trace_start_a`]
+/// traced both ways from its state at ā = [`Conformal::trace_start`]
 /// (continued in ρ from the circle); each arm past its folds until its
 /// contour is no longer one-to-one, or back above the contact it started
 /// from. `points` states in all, spaced evenly
@@ -417,10 +462,10 @@ pub(crate) fn curve_each(
         .points
         .iter()
         .zip(&first.beyond)
-        .any(|(p, &b)| !b && p.a_bar <= m.family().trace_start_a);
+        .any(|(p, &b)| !b && p.a_bar <= m.trace_start());
     let mut arms = vec![(first.points, first.beyond)];
     if !(has_pull_off && passes_seed) {
-        match m.solve(rho, super::Hold::Size(m.family().trace_start_a)) {
+        match m.solve(rho, super::Hold::Size(m.trace_start())) {
             Ok(seed) => {
                 let mut x = DVector::from_vec(seed.coefficients.clone());
                 x = x.push(seed.delta_bar);
@@ -439,14 +484,14 @@ pub(crate) fn curve_each(
                 folds.extend(lower.folds);
                 ends.push(format!(
                     "the pull-off arm through a = {}: upwards {}; downwards {}",
-                    m.family().trace_start_a,
+                    crate::error::short(m.trace_start()),
                     upper.end,
                     lower.end
                 ));
             }
             Err(e) => ends.push(format!(
                 "no pull-off arm through a = {}: {e}",
-                m.family().trace_start_a
+                crate::error::short(m.trace_start())
             )),
         }
     }

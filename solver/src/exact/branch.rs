@@ -796,31 +796,11 @@ impl Exact {
         Same::SAME_SIDE.of(&st, po).then_some(st)
     }
 
-    /// ā at which the pull-off's trace starts. On a gap the circle solves:
-    /// the seeding family's `trace_start_a` (2.6 for the cylinders), else
-    /// halfway between the circle's neutral points of modes 4 and 6, where
-    /// the near-elliptic arm that carries the pull-off lies. On a gap no
-    /// circle solves (issue 73), where the state is continued in the gap
-    /// from the cylinders' ([`Exact::continued_in_the_gap`]): halfway between the
-    /// cylinders' neutral points of modes 2 and 4 (ā³ = 4 and 12), whatever
-    /// a family's `trace_start_a` says (it names a place between a circle's
-    /// neutral points, which such a gap has not), and the trace goes
-    /// downhill in F̄ from there. There the cylinders' states continue from
-    /// the circle in ρ (next to a neutral point they fold at once) and, on
-    /// issue 73's bumpy gap, in the gap at every ρ tried (1, 0.9, 0.8,
-    /// 0.7); at 2.6 they fold in the gap above ρ = 0.8.
+    /// ā at which the pull-off's trace starts ([`GapAt::trace_start`],
+    /// given the seeding family's `trace_start_a`).
     pub(crate) fn trace_start(&self) -> f64 {
-        let neutral =
-            |c: &GapAt, m: usize, n: usize| 0.5 * (c.neutral_point(m) + c.neutral_point(n));
-        if !self.circle.is_radial() {
-            return Gap::CYLINDERS
-                .at(1.0)
-                .map_or(f64::NAN, |c| neutral(&c, 2, 4));
-        }
-        if let Some(m) = self.gap().seed {
-            return m.trace_start();
-        }
-        neutral(&self.circle, 4, 6)
+        self.circle
+            .trace_start(self.gap().seed.map(|m| m.trace_start()))
     }
 
     fn trace_until(

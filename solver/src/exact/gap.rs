@@ -464,6 +464,32 @@ impl GapAt {
         a_bar * (self.phi(a_bar, 0.0) - self.phi.disk_mean(a_bar))
     }
 
+    /// ā at which a pull-off's trace on this gap starts (this at ρ = 1),
+    /// the one rule of the exact solver and of a family's members (issue
+    /// 73). On a gap the circle solves: `given` (a family's
+    /// `trace_start_a`: 2.6 for the cylinders), else halfway between the
+    /// circle's neutral points of modes 4 and 6, where the near-elliptic
+    /// arm that carries the pull-off lies. On a gap no circle solves:
+    /// halfway between the cylinders' neutral points of modes 2 and 4
+    /// (ā³ = 4 and 12), whatever `given` says (it names a place between a
+    /// circle's neutral points, which such a gap has not), and the trace
+    /// goes downhill in F̄ from there (the pull-off may lie on either side).
+    /// There the cylinders' states continue from the circle in ρ (next to
+    /// a neutral point they fold at once), and a state on such a gap is
+    /// continued from them in the gap (the exact solver) or from its
+    /// circle's guess at ρ = 1 (a member); at 2.6, next to the neutral
+    /// point of mode 4, the bumpy gap's states fold in ρ at once.
+    pub(crate) fn trace_start(&self, given: Option<f64>) -> f64 {
+        let neutral =
+            |c: &GapAt, m: usize, n: usize| 0.5 * (c.neutral_point(m) + c.neutral_point(n));
+        if !self.is_radial() {
+            return Gap::CYLINDERS
+                .at(1.0)
+                .map_or(f64::NAN, |c| neutral(&c, 2, 4));
+        }
+        given.unwrap_or_else(|| neutral(self, 4, 6))
+    }
+
     /// The circle's neutral point of mode n: the root of
     /// ā(φ̄(ā, 0) − ⟨φ̄⟩) = n − 1 (ā³ = 4(n − 1) for the cylinders), by
     /// bisection; NaN where there is none below ā = 1e6.
@@ -516,6 +542,35 @@ pub(crate) static BUMPY: [Term; 5] = [
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The one rule of where a pull-off's trace starts: a family's
+    /// `trace_start_a` on a gap the circle solves, else halfway between its
+    /// circle's neutral points of modes 4 and 6 (ā³ = 12 and 20 for the
+    /// cylinders); on a gap no circle solves, halfway between the
+    /// cylinders' neutral points of modes 2 and 4 (ā³ = 4 and 12) whatever
+    /// the family says.
+    #[test]
+    fn a_trace_starts_between_neutral_points_of_the_circle_the_gap_has() {
+        let cube_root = |v: f64| v.powf(1.0 / 3.0);
+        let cylinders = Gap::CYLINDERS.at(1.0).unwrap();
+        assert_eq!(cylinders.trace_start(Some(2.6)), 2.6);
+        let between_4_and_6 = 0.5 * (cube_root(12.0) + cube_root(20.0));
+        assert!((cylinders.trace_start(None) - between_4_and_6).abs() < 1e-12);
+        let bumpy = Gap {
+            name: "bumpy",
+            particular: &BUMPY,
+            seed: None,
+        }
+        .at(1.0)
+        .unwrap();
+        let between_2_and_4 = 0.5 * (cube_root(4.0) + cube_root(12.0));
+        for given in [Some(2.6), None] {
+            assert!(
+                (bumpy.trace_start(given) - between_2_and_4).abs() < 1e-12,
+                "{given:?}"
+            );
+        }
+    }
 
     fn bumpy() -> Gap {
         Gap {

@@ -212,7 +212,8 @@ pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Ve
         // representation, else continued in the conformal form
         Err(e @ (Error::NoState(_) | Error::Unresolved { .. })) => {
             let why = e.detail();
-            let Some((start, _)) = first_above(rho, |r| pull_off_on(gap, r, &Ladder::conformal()))
+            let Some((start, _)) =
+                first_above(gap, rho, |r| pull_off_on(gap, r, &Ladder::conformal()))
             else {
                 return Err(Error::NoState(format!(
                     "{why}; no pull-off found at any rho above it in steps of 0.1 to continue from"
@@ -615,7 +616,7 @@ fn by_delta_or_force(control: Hold) -> Result<Hold> {
 /// The state at `control` at the first larger ρ where [`at_with`] finds
 /// it ([`first_above`]): the start of the routes from a larger ρ.
 fn state_above(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
-    first_above(rho, |r| at_with(gap, r, control, &Ladder::conformal())).ok_or_else(|| {
+    first_above(gap, rho, |r| at_with(gap, r, control, &Ladder::conformal())).ok_or_else(|| {
         Error::NoState(format!(
             "no state at {control} found at any rho above it in steps of 0.1 to continue from"
         ))
@@ -698,12 +699,17 @@ fn again_within_its_size(
     Ok(st)
 }
 
-/// The first answer of `solve` at ρ + 0.1, ρ + 0.2, … (below 1): the start
-/// of a continuation in ρ down to `rho`.
-fn first_above<T>(rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
+/// The first answer of `solve` at ρ + 0.1, ρ + 0.2, … (below 1, or up to
+/// 1 on a gap no circle solves, whose state at ρ = 1 is no circle's): the
+/// start of a continuation in ρ down to `rho` on `gap`.
+fn first_above<T>(gap: Gap, rho: f64, solve: impl Fn(f64) -> Result<T>) -> Option<T> {
+    let top = match gap.at(1.0) {
+        Ok(circle) if !circle.is_radial() => 1.0 + 1e-9,
+        _ => 1.0,
+    };
     (1..)
         .map(|k| ((rho + 0.1 * k as f64) * 1e6).round() / 1e6)
-        .take_while(|&above| above < 1.0)
+        .take_while(|&above| above < top)
         .find_map(|above| {
             crate::progress::stage(format!(
                 "a state at rho = {} to continue from",
