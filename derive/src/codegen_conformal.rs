@@ -638,7 +638,13 @@ fn registry_output(families: &[Family], exact_gap: &[bool]) -> Result<Output, St
             let module = format_ident!("{}", f.name);
             let rho_min = Literal::f64_unsuffixed(f.rho_min);
             let rho_min_why = &f.rho_min_why;
-            let trace = Literal::f64_unsuffixed(f.trace_start_a);
+            let trace = match f.trace_start_a {
+                Some(a) => {
+                    let a = Literal::f64_unsuffixed(a);
+                    quote! { Some(#a) }
+                }
+                None => quote! { None },
+            };
             let seeds = f.seeds_exact;
             let lines = f.doubtful_defects.iter().map(|v| Literal::f64_unsuffixed(*v));
             let terms = conformal::particular_terms(&f.particular)?;

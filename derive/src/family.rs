@@ -60,7 +60,8 @@ struct Raw {
     rho_min: f64,
     #[serde(default)]
     rho_min_why: String,
-    trace_start_a: f64,
+    #[serde(default)]
+    trace_start_a: Option<f64>,
     #[serde(default)]
     seeds_exact: bool,
     #[serde(default)]
@@ -86,8 +87,12 @@ pub struct Family {
     pub rho_min: f64,
     /// Why a smaller ρ is refused, in one sentence (empty: not said).
     pub rho_min_why: String,
-    /// ā at which the pull-off trace starts.
-    pub trace_start_a: f64,
+    /// ā at which the pull-off trace starts, where the file says: on a gap
+    /// radial at ρ = 1, between two neutral points of its circle (omitted:
+    /// halfway between those of modes 4 and 6); on another gap not used
+    /// (the solver starts between the cylinders' neutral points of modes
+    /// 2 and 4).
+    pub trace_start_a: Option<f64>,
     /// Whether its largest member seeds the exact solver of its gap.
     pub seeds_exact: bool,
     /// For each member K (in order), the boundary defect max |∂p̄/∂ν − 1|
@@ -272,11 +277,8 @@ pub fn parse(text: &str, source: &Path) -> Result<Family, String> {
             "{at}: rho_min_why must be one line of at most {MAX_WHY_CHARS} characters (it is part of an error message)"
         ));
     }
-    if !(raw.trace_start_a > 0.0 && raw.trace_start_a <= 100.0) {
-        return Err(format!(
-            "{at}: trace_start_a = {} must lie in (0, 100]",
-            raw.trace_start_a
-        ));
+    if let Some(a) = raw.trace_start_a.filter(|a| !(*a > 0.0 && *a <= 100.0)) {
+        return Err(format!("{at}: trace_start_a = {a} must lie in (0, 100]"));
     }
     let lines = &raw.doubtful_defects;
     if !lines.is_empty() && lines.len() != raw.powers.len() {

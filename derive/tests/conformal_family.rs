@@ -156,6 +156,20 @@ fn a_bad_family_file_is_refused_naming_the_file_and_the_key() {
     }
 }
 
+/// `trace_start_a` is optional (issue 73): omitted, the solver starts the
+/// trace between the circle's neutral points of modes 4 and 6 (or, on a
+/// gap no circle solves, the cylinders' of modes 2 and 4); given, it is
+/// kept.
+#[test]
+fn trace_start_a_may_be_omitted() {
+    let at = Path::new("derive/families/mine.toml");
+    let given = family::parse(MINE, at).unwrap();
+    assert_eq!(given.trace_start_a, Some(2.6));
+    let omitted = family::parse(&MINE.replace("trace_start_a = 2.6\n", ""), at).unwrap();
+    assert_eq!(omitted.trace_start_a, None);
+    assert_eq!(omitted.powers, given.powers);
+}
+
 #[test]
 fn two_families_of_one_name_or_two_seeds_of_one_gap_are_refused() {
     let dir = std::env::temp_dir().join(format!("thinjkr-families-{}", std::process::id()));

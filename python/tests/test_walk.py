@@ -63,9 +63,9 @@ seeds_exact = true
 """
 
 # issue 73: a family on a gap that is not radial at ρ = 1 (a cylinder's own
-# gap to fourth order, x⁴/8r³ in the units (17)); its trace_start_a, still
-# required by the file's format, is not used by the exact solver on such a
-# gap (docs/exact.md, "A gap no circle solves")
+# gap to fourth order, x⁴/8r³ in the units (17)); such a gap has no circle
+# whose neutral points a trace_start_a would name, and the file omits it
+# (docs/exact.md, "A gap no circle solves")
 BUMPY = """\
 kind = "conformal"
 name = "bumpy"
@@ -74,7 +74,6 @@ gap = "X^2/2 + mu*Y^2/2 + X^4/24"
 particular = "X^4/24 + mu*Y^4/24 + X^6/720 - dbar*(X^2 + Y^2)/4"
 powers = [1, 3, 5, 7]
 rho_min = 0.5
-trace_start_a = 2.6
 seeds_exact = true
 """
 
@@ -89,7 +88,6 @@ gap = "X^2/2 + mu*Y^2/2 + Y^4/24"
 particular = "X^4/24 + mu*Y^4/24 + Y^6/720 - dbar*(X^2 + Y^2)/4"
 powers = [1, 3, 5, 7]
 rho_min = 0.5
-trace_start_a = 2.6
 seeds_exact = true
 """
 
@@ -101,7 +99,6 @@ gap = "X^2/2 + mu*Y^2/2 + X^4/24 + Y^4/48"
 particular = "X^4/24 + mu*Y^4/24 + X^6/720 + Y^6/1440 - dbar*(X^2 + Y^2)/4"
 powers = [1, 3, 5, 7]
 rho_min = 0.5
-trace_start_a = 2.6
 seeds_exact = true
 """
 

@@ -113,6 +113,38 @@ fn a_family_loaded_at_run_time_solves_as_the_compiled_one() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// A family whose file omits `trace_start_a` (issue 73) starts its
+/// pull-off's trace halfway between its circle's neutral points of modes
+/// 4 and 6 (ā = 2.50 on the cylinders' gap, not conformal.toml's 2.6) and
+/// finds the same pull-off on the same arm.
+#[test]
+fn a_family_without_a_trace_start_finds_the_same_pull_off() {
+    let dir = folder("nostart", "nostart", &builtin_tables());
+    let path = dir.join("registry.json");
+    let mut registry: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let entry = registry["families"][0].as_object_mut().unwrap();
+    assert!(entry.remove("trace_start_a").is_some());
+    std::fs::write(&path, registry.to_string()).unwrap();
+    seal(&dir);
+    for rho in ["1", "0.8", "0.5"] {
+        let run = |m: &str| {
+            let (ok, out, err) = thinjkr(&dir, &["pull-off", "--rho", rho, "--model", m, "--json"]);
+            assert!(ok, "{m} at {rho}: {err}");
+            state(&out)
+        };
+        let (a, b) = (run("nostart:4"), run("conformal:4"));
+        for key in ["a_bar", "s", "force_bar"] {
+            let (x, y) = (a[key].as_f64().unwrap(), b[key].as_f64().unwrap());
+            assert!(
+                (x - y).abs() <= 1e-8 * y.abs(),
+                "rho = {rho}, {key}: {x} against {y}"
+            );
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn a_family_file_the_generator_would_not_write_is_left_out_with_its_reason() {
     let good = builtin_tables();

@@ -58,12 +58,16 @@ pub struct Family {
     /// Why a smaller ρ is refused, in one sentence (empty where its data
     /// file does not say).
     pub rho_min_why: &'static str,
-    /// ā at which the pull-off trace starts: between the neutral points of
-    /// the circle's modes 4 and 6 of its gap, so that the trace follows the
-    /// near-elliptic arm that carries the pull-off. Each mode's imperfect
-    /// bifurcation splits the family for ρ < 1 (docs/exact.md), and an arm
-    /// traced from a larger contact folds back before reaching it.
-    pub trace_start_a: f64,
+    /// ā at which the pull-off trace starts, where its data file says: on a
+    /// gap radial at ρ = 1, between the neutral points of the circle's
+    /// modes 4 and 6 of its gap, so that the trace follows the
+    /// near-elliptic arm that carries the pull-off (each mode's imperfect
+    /// bifurcation splits the family for ρ < 1, docs/exact.md, and an arm
+    /// traced from a larger contact folds back before reaching it);
+    /// omitted, halfway between them. On a gap no circle solves it is not
+    /// used: the trace starts between the cylinders' neutral points of
+    /// modes 2 and 4 (the one rule, `crate::exact::gap::GapAt::trace_start`).
+    pub trace_start_a: Option<f64>,
     /// Whether its gap is the one the exact solver solves (then its
     /// members are measured against the exact solution).
     pub on_exact_gap: bool,

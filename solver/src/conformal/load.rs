@@ -139,7 +139,8 @@ struct Entry {
     rho_min: f64,
     #[serde(default)]
     rho_min_why: String,
-    trace_start_a: f64,
+    #[serde(default)]
+    trace_start_a: Option<f64>,
     on_exact_gap: bool,
     #[serde(default)]
     seeds_exact: bool,
@@ -301,7 +302,7 @@ fn family(dir: &Path, e: Entry, spent: &mut Spent) -> Result<&'static Family, St
     // written so that a NaN is out of range too
     #[allow(clippy::nonminimal_bool)]
     let out_of_range = !(e.rho_min > 0.0 && e.rho_min <= 1.0)
-        || !(e.trace_start_a > 0.0 && e.trace_start_a <= 100.0);
+        || e.trace_start_a.is_some_and(|a| !(a > 0.0 && a <= 100.0));
     if out_of_range {
         return Err("rho_min or trace_start_a out of range".into());
     }

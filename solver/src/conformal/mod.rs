@@ -430,9 +430,7 @@ impl Conformal {
             let circle = family.unseeded_gap().at(1.0).ok();
             Decoded {
                 circle_solves_the_gap: circle.as_ref().is_none_or(|c| c.is_radial()),
-                trace_start: circle.map_or(family.trace_start_a, |c| {
-                    c.trace_start(Some(family.trace_start_a))
-                }),
+                trace_start: circle.map_or(f64::NAN, |c| c.trace_start(family.trace_start_a)),
                 potential_circle: potential.on_circle(),
                 slope_circle_at_zero: at_zero.on_circle(),
                 potential,

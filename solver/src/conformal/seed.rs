@@ -36,7 +36,7 @@ impl Seed for Conformal {
     fn name(&self) -> String {
         Conformal::name(self)
     }
-    fn trace_start(&self) -> f64 {
+    fn trace_start(&self) -> Option<f64> {
         self.family().trace_start_a
     }
     fn state(&self, rho: f64, hold: Hold) -> crate::Result<Guess> {

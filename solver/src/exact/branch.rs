@@ -800,7 +800,7 @@ impl Exact {
     /// given the seeding family's `trace_start_a`).
     pub(crate) fn trace_start(&self) -> f64 {
         self.circle
-            .trace_start(self.gap().seed.map(|m| m.trace_start()))
+            .trace_start(self.gap().seed.and_then(|m| m.trace_start()))
     }
 
     fn trace_until(

@@ -26,9 +26,10 @@ pub(crate) struct Guess {
 pub(crate) trait Seed: Send + Sync + std::fmt::Debug {
     /// The model's name, for messages and the band map.
     fn name(&self) -> String;
-    /// ā at which the pull-off's trace from the circle starts (between the
-    /// circle's neutral points of modes 4 and 6 of the gap).
-    fn trace_start(&self) -> f64;
+    /// ā at which the pull-off's trace from the circle starts, where the
+    /// model's family says (between the circle's neutral points of modes 4
+    /// and 6 of the gap; `crate::exact::gap::GapAt::trace_start`).
+    fn trace_start(&self) -> Option<f64>;
     /// The model's state at `rho` under `hold`, or why it has none.
     fn state(&self, rho: f64, hold: Hold) -> crate::Result<Guess>;
     /// The model's load-controlled pull-off at `rho`, where it has one.

@@ -14,7 +14,7 @@ pub static CONTOUR_FAMILIES: [crate::ansatz::Family; 1] = [
         source: "derive/families/conformal.toml",
         rho_min: 0.3,
         rho_min_why: "its members' arms fold in rho or their states miss (3)2 by up to 0.76",
-        trace_start_a: 2.6,
+        trace_start_a: Some(2.6),
         on_exact_gap: true,
         seeds_exact: true,
         doubtful_defects: &[
