@@ -1267,6 +1267,9 @@ impl Exact {
                 }
             }
         }
+        // on a gap no circle solves (issue 73) the family is traced to the
+        // control from the state continued in the gap at the trace's start
+        let radial = self.circle.is_radial();
         let a_circle = circle_a_bar(self.circle(), control);
         if let (Hold::Force(v), true) = (control, a_circle.is_nan()) {
             return Err(Error::NoState(format!(
@@ -1295,9 +1298,14 @@ impl Exact {
         // a start whose arm folds before the value is reached is retried
         // once from the far side of the fold (0.3 beyond it in ā)
         let mut a_start = a_circle;
+        let (through, how) = if radial {
+            ("the circle's", "rho")
+        } else {
+            ("the cylinders' state at", "the gap")
+        };
         let mut ends = Vec::new();
         let st = loop {
-            let start = self.from_circle(a_start)?;
+            let start = self.continued_in_the_gap(a_start)?;
             let here = control.excess(start.a_bar, start.delta_bar, start.force_bar);
             // on the near-elliptical arms above the pull-off δ̄ and F̄ grow with ā
             let direction = if here < 0.0 { 1.0 } else { -1.0 };
@@ -1323,15 +1331,15 @@ impl Exact {
                 _ => None,
             })) {
                 (Some(a_bar), _) => format!(
-                    "the arm through the circle's a_bar = {a_start:.6} continued in rho (contour {:.1e} a off the ellipse there) folds at a_bar = {a_bar:.6} (an imperfect bifurcation: beyond it the contour turns undulated)",
+                    "the arm through {through} a_bar = {a_start:.6} continued in {how} (contour {:.1e} a off the ellipse there) folds at a_bar = {a_bar:.6} (an imperfect bifurcation: beyond it the contour turns undulated)",
                     start.deviation_from_ellipse
                 ),
                 (None, Some(force)) => format!(
-                    "the arm through the circle's a_bar = {a_start:.6} continued in rho (contour {:.1e} a off the ellipse there) reaches its load-controlled pull-off, F = {force:.6}, first",
+                    "the arm through {through} a_bar = {a_start:.6} continued in {how} (contour {:.1e} a off the ellipse there) reaches its load-controlled pull-off, F = {force:.6}, first",
                     start.deviation_from_ellipse
                 ),
                 _ => format!(
-                    "the trace from the circle's a_bar = {a_start:.6} ended at a_bar = {:.6}",
+                    "the trace from {through} a_bar = {a_start:.6} ended at a_bar = {:.6}",
                     branch.points.last().map(|p| p.state.a_bar).unwrap_or(f64::NAN)
                 ),
             };

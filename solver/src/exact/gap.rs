@@ -580,6 +580,48 @@ mod tests {
         }
     }
 
+    /// Issue 73: the exact zero-force state on a gap no circle solves,
+    /// with no model to start from (the test's gap has no seed): at ρ = 1
+    /// the cylinders' state at the circle's ā for that force continued in
+    /// the gap and traced to it (route `from_cylinders`), at 0.8 continued
+    /// in ρ from there; held to the states the command line finds from the
+    /// loaded bumpy:4 at the same force (route `from_model`, a second route:
+    /// `thinjkr exact zero-force --rho R --gap bumpy`), to 1e-9. At F̄ = −2
+    /// and −3 the walk in the gap at the circle's ā folds in t (t = 0.19 and
+    /// 0.36 at ρ = 1) and the route ends with that error, which the other
+    /// routes follow.
+    #[test]
+    fn the_exact_zero_force_on_a_gap_no_circle_solves_by_two_routes() {
+        for (rho, a_bar, delta_bar, route) in [
+            (
+                1.0,
+                2.5437099245,
+                1.3616289228,
+                crate::exact::Route::FromCylinders,
+            ),
+            (
+                0.8,
+                2.5375140763,
+                1.4126230628,
+                crate::exact::Route::ContinuedInRho,
+            ),
+        ] {
+            let st = crate::exact::resolve::at_resolved_on(
+                bumpy(),
+                rho,
+                crate::control::Hold::Force(0.0),
+            )
+            .unwrap();
+            assert_eq!(st.route, route, "{rho}");
+            assert!((st.a_bar - a_bar).abs() < 1e-9, "{rho}: {}", st.a_bar);
+            assert!(
+                (st.delta_bar - delta_bar).abs() < 1e-9,
+                "{rho}: {}",
+                st.delta_bar
+            );
+        }
+    }
+
     /// Issue 73: the exact pull-off on a gap no circle solves (the bumpy
     /// gap, φ̄ = X²/2 + μY²/2 + X⁴/24) at ρ = 1 and 0.8, reached from the
     /// cylinders' state continued in the gap itself and traced downhill in

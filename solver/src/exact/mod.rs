@@ -1488,7 +1488,13 @@ impl Exact {
             bc_error,
             truncation: self.truncation,
             stability: stability::ExactStability::default(),
-            route: Route::FromCircle,
+            // the route of the family traced from the start this gap has
+            // (the callers name another where they took one)
+            route: if self.circle.is_radial() {
+                Route::FromCircle
+            } else {
+                Route::FromCylinders
+            },
             shape: None,
             coatings: None,
             warnings: Vec::new(),
