@@ -21,7 +21,8 @@ Runs one symbolica process (the generator) and nothing else at the same time.
 In the slow tier (.ci/slow; about 100 s, most of it the generation): CI keeps
 the Rust side's sample of the same route, a family of one's own derived,
 checked and generated (derive/tests/conformal_family.rs) and family files
-loaded at run time (solver/tests/families.rs).
+loaded at run time (solver/tests/families.rs), and the walk's sample on a gap
+no circle solves (test_walk_gap.py: bumpy with powers 1, 3, 5).
 """
 
 import json
