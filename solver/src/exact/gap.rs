@@ -23,7 +23,8 @@
 //! F̄ = π(ā⁶ − 24ā³)/96 and ā³ = 4(n − 1).
 //!
 //! Owns: [`Gap`], [`Term`], [`GapAt`], [`Hessian`]. May use: `error`, `exact` (the
-//! test's solve on the circle), `model` (the test's Brent minimum).
+//! test's solve on the circle), `model` (the test's Brent minimum), `control`
+//! (the tests' controls).
 
 use crate::error::{Error, Result};
 
