@@ -136,15 +136,21 @@ def snapshot(root):
             for p in root.rglob("*") if p.is_file()}
 
 
-@pytest.fixture(scope="module")
-def walked(tmp_path_factory):
-    copy = tmp_path_factory.mktemp("walk") / "thinjkr"
+def copy_of_the_repository(copy):
+    """The repository's files as a clean clone would have them, copied to
+    `copy`; returns `copy`."""
     for rel in tracked_files():
         src = ROOT / rel
         if src.is_file():
             dst = copy / rel
             dst.parent.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(src, dst)
+    return copy
+
+
+@pytest.fixture(scope="module")
+def walked(tmp_path_factory):
+    copy = copy_of_the_repository(tmp_path_factory.mktemp("walk") / "thinjkr")
     before = snapshot(copy)
     for rel, text in NEW_FILES.items():
         (copy / rel).write_text(text)

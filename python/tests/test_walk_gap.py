@@ -21,20 +21,12 @@ import subprocess
 
 import pytest
 
-from test_walk import BUMPY, cli_json, derive_bin, snapshot, tracked_files, ROOT
-
-import shutil
+from test_walk import BUMPY, cli_json, copy_of_the_repository, derive_bin, snapshot
 
 
 @pytest.fixture(scope="module")
 def walked_bumpy(tmp_path_factory):
-    copy = tmp_path_factory.mktemp("walk-gap") / "thinjkr"
-    for rel in tracked_files():
-        src = ROOT / rel
-        if src.is_file():
-            dst = copy / rel
-            dst.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(src, dst)
+    copy = copy_of_the_repository(tmp_path_factory.mktemp("walk-gap") / "thinjkr")
     before = snapshot(copy / "solver/src/generated")
     three = BUMPY.replace("powers = [1, 3, 5, 7]", "powers = [1, 3, 5]")
     assert three != BUMPY and "trace_start_a" not in three

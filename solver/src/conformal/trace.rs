@@ -181,16 +181,28 @@ pub(crate) fn to_force_on_the_pull_off_arm(
     let trace = continuation::trace(&family, x0.clone(), &towards, ARM, watch, |p| {
         p.a_bar < 0.3 || p.a_bar > 2.0 * a0
     })?;
-    if trace.end == End::Budget {
-        let last = &trace.points.last().expect("one point").u;
-        return Err(stuck(
-            m,
-            last,
-            rho,
-            "the step budget ran out before the force was crossed",
-        ));
-    }
+    let trace = within_budget(m, rho, trace, "the force")?;
     Ok(trace.located(EventKind::Crossing).cloned())
+}
+
+/// `trace`, or, where the step budget ended it, the error that says where
+/// it stopped before `what` was crossed.
+fn within_budget(
+    m: &Conformal,
+    rho: f64,
+    trace: continuation::Trace<Dyn>,
+    what: &str,
+) -> Result<continuation::Trace<Dyn>> {
+    if trace.end != End::Budget {
+        return Ok(trace);
+    }
+    let last = &trace.points.last().expect("one point").u;
+    Err(stuck(
+        m,
+        last,
+        rho,
+        &format!("the step budget ran out before {what} was crossed"),
+    ))
 }
 
 /// Every crossing of `quantity` = `value`, located, along the branch
@@ -220,16 +232,7 @@ pub(crate) fn crossings(
     let trace = continuation::trace(&family, x0.clone(), &towards, ARM, watch, |p| {
         p.a_bar < 0.3 || p.a_bar > a_limit || !contact(&p.u)
     })?;
-    if trace.end == End::Budget {
-        let last = &trace.points.last().expect("one point").u;
-        return Err(stuck(
-            m,
-            last,
-            rho,
-            "the step budget ran out before the value was crossed",
-        ));
-    }
-    Ok(trace
+    Ok(within_budget(m, rho, trace, "the value")?
         .events
         .iter()
         .filter(|e| e.kind == EventKind::Crossing)
