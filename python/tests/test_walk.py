@@ -243,6 +243,21 @@ def test_the_command_line_lists_and_solves_with_the_family_without_a_rebuild(wal
     assert run.returncode != 0 and "[0.5, 1] for sparse:K" in run.stderr, run.stderr
 
 
+# the bumpy gap's exact pull-offs that solver/src/exact/gap.rs holds without
+# the family (the minimum of F̄(ā) by Brent's method, a second route), by ρ
+BUMPY_PULL_OFFS = (("1", -4.0799495862), ("0.8", -3.6247387220))
+
+
+def bumpy_exact_pull_off(cli, env, rho, force):
+    """`exact pull-off --gap bumpy` at `rho` through the loaded family: held
+    to `force` to 1e-9, reached by the walk in the gap; its document."""
+    doc = cli_json(cli, env, "exact", "pull-off", "--rho", rho, "--gap", "bumpy")
+    st = doc["state"]
+    assert st["gap"] == "bumpy" and st["route"] == "from_cylinders", st
+    assert abs(st["force_bar"] - force) < 1e-9, (rho, st["force_bar"])
+    return doc
+
+
 def test_the_exact_solver_takes_a_family_gap_no_circle_solves(walked, cli):
     """Issue 73, item 2: `exact pull-off --gap bumpy` solves the bumpy gap,
     reached by the walk in the gap from the cylinders' (the pull-offs
@@ -251,11 +266,8 @@ def test_the_exact_solver_takes_a_family_gap_no_circle_solves(walked, cli):
     alone refuse it with status 2."""
     copy, _ = walked
     env = dict(os.environ, THINJKR_FAMILIES=str(copy / "solver/src/generated"))
-    for rho, force in (("1", -4.0799495862), ("0.8", -3.6247387220)):
-        doc = cli_json(cli, env, "exact", "pull-off", "--rho", rho, "--gap", "bumpy")
-        st = doc["state"]
-        assert st["gap"] == "bumpy" and st["route"] == "from_cylinders", st
-        assert abs(st["force_bar"] - force) < 1e-9, (rho, st["force_bar"])
+    for rho, force in BUMPY_PULL_OFFS:
+        doc = bumpy_exact_pull_off(cli, env, rho, force)
         assert [m["model"] for m in doc["models"]] == ["bumpy:1", "bumpy:2", "bumpy:3", "bumpy:4"]
     run = subprocess.run([cli, "exact", "bands", "--rho", "0.8", "--gap", "bumpy"], env=env,
                          capture_output=True, text=True)

@@ -21,7 +21,8 @@ import subprocess
 
 import pytest
 
-from test_walk import BUMPY, cli_json, copy_of_the_repository, derive_bin, snapshot
+from test_walk import (BUMPY, BUMPY_PULL_OFFS, bumpy_exact_pull_off, copy_of_the_repository,
+                       derive_bin, snapshot)
 
 
 @pytest.fixture(scope="module")
@@ -45,11 +46,8 @@ def walked_bumpy(tmp_path_factory):
 
 def test_the_exact_pull_off_of_a_loaded_gap_no_circle_solves(walked_bumpy, cli):
     env = dict(os.environ, THINJKR_FAMILIES=str(walked_bumpy / "solver/src/generated"))
-    for rho, force in (("1", -4.0799495862), ("0.8", -3.6247387220)):
-        doc = cli_json(cli, env, "exact", "pull-off", "--rho", rho, "--gap", "bumpy")
-        st = doc["state"]
-        assert st["gap"] == "bumpy" and st["route"] == "from_cylinders", st
-        assert abs(st["force_bar"] - force) < 1e-9, (rho, st["force_bar"])
+    for rho, force in BUMPY_PULL_OFFS:
+        doc = bumpy_exact_pull_off(cli, env, rho, force)
         members = {m["model"]: m["member"]["force_bar"] for m in doc["models"] if "member" in m}
         assert sorted(members) == ["bumpy:1", "bumpy:2", "bumpy:3"], doc["models"]
         off = [abs(members[f"bumpy:{k}"] / force - 1) for k in (2, 3)]
