@@ -8,8 +8,11 @@ compiled, symbolica least of all) derives, checks and generates it; the
 already built command line, pointed at the copy by THINJKR_FAMILIES, gives
 the exact pull-off of that gap at ρ = 1 and 0.8. Each must be the one
 solver/src/exact/gap.rs holds without the family (the minimum of F̄(ā) by
-Brent's method over states at fixed ā, a second route, to 1e-9), and the
-family's members stand beside it, nearer it from K = 2 to 3.
+Brent's method over states at fixed ā, to 1e-9) and agree to 1e-8 with
+the pull-off's second route, Newton from the own contour of the family's
+largest member (bumpy:3) at its pull-off (`exact pull-off
+--from-model-contour`); the family's members stand beside it, nearer it
+from K = 2 to 3.
 
 The slow tier's walk (test_walk.py) does the same with powers 1, 3, 5, 7 on
 three such gaps, and more. Runs one symbolica process (the generator) and

@@ -862,3 +862,36 @@ fn exact_commands_take_a_gap_by_name() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("only --model exact"), "{err}");
 }
+
+/// Issue 73, item 5: `exact pull-off --from-model-contour`, the pull-off's
+/// second route, answers with its route named in JSON and the same force
+/// as the default route at ρ = 1 (the circle: F̄ = −3π/2, to 1e-9); it
+/// climbs its own truncations, so `--modes` and `--unloading` beside it
+/// are usage errors (status 2). Held on the gaps no circle solves by the
+/// walk (python/tests/test_walk_gap.py, test_walk.py).
+#[test]
+fn the_pull_offs_second_route_is_asked_for_by_a_flag() {
+    let (ok, out, err) = thinjkr(&[
+        "exact",
+        "pull-off",
+        "--rho",
+        "1",
+        "--from-model-contour",
+        "--json",
+    ]);
+    assert!(ok, "{err}");
+    let st = serde_json::from_str::<serde_json::Value>(&out).unwrap()["state"].clone();
+    assert_eq!(st["route"], "from_model_contour");
+    let force = st["force_bar"].as_f64().unwrap();
+    assert!((force + 1.5 * std::f64::consts::PI).abs() < 1e-9, "{force}");
+    for other in [["--modes", "12"].as_slice(), ["--unloading"].as_slice()] {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_thinjkr"))
+            .args(["exact", "pull-off", "--rho", "1", "--from-model-contour"])
+            .args(other)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{other:?}: {err}");
+        assert!(err.contains("cannot be used with"), "{err}");
+    }
+}

@@ -182,6 +182,13 @@ pub(crate) enum ExactCommand {
         /// Prints every line, as --explain does.
         #[arg(long)]
         unloading: bool,
+        /// The pull-off by its second route, which checks the first: Newton from the own contour of the largest
+        /// member of the family that seeds the gap's exact solver (conformal:8 on the cylinders'), at that
+        /// member's pull-off, then the least force along that arm, with the arclength representation's modes
+        /// raised until the boundary error is below 1e-9 (no walk in the gap or in ρ; the route
+        /// `from_model_contour`).
+        #[arg(long, conflicts_with_all = ["unloading", "modes", "points"])]
+        from_model_contour: bool,
         #[command(flatten)]
         gap: GapChoice,
         /// Print JSON.
@@ -345,9 +352,17 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
             rho,
             discretisation,
             unloading,
+            from_model_contour,
             gap,
             json,
-        } => pull_off(rho, &discretisation, unloading, &gap, json),
+        } => pull_off(
+            rho,
+            &discretisation,
+            unloading,
+            from_model_contour,
+            &gap,
+            json,
+        ),
         ExactCommand::Solve {
             rho,
             delta,
@@ -1179,6 +1194,7 @@ pub(crate) fn pull_off(
     rho: f64,
     d: &Discretisation,
     unloading: bool,
+    from_model_contour: bool,
     gap: &GapChoice,
     json: bool,
 ) -> Result<()> {
@@ -1191,7 +1207,14 @@ pub(crate) fn pull_off(
     }
     let spin = crate::cli::output::Spinner::start("locating the exact pull-off");
     let tries = d.asked()?;
-    let (po, events) = crate::conformal::exact_pull_off_on_gap(gap.name(), rho, tries.as_deref())?;
+    let (po, events) = if from_model_contour {
+        (
+            crate::conformal::exact_pull_off_from_model_contour(gap.name(), rho)?,
+            Vec::new(),
+        )
+    } else {
+        crate::conformal::exact_pull_off_on_gap(gap.name(), rho, tries.as_deref())?
+    };
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
     // beside it: the ellipse models on the cylinders' gap, the family's

@@ -722,6 +722,7 @@ fn pull_off_command(
             rho,
             &exact_command::Discretisation::default(),
             false,
+            false,
             gap,
             j,
         );

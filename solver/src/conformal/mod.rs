@@ -40,6 +40,8 @@ mod seed;
 pub use crate::ansatz::{poly, Family, Tables};
 pub(crate) use seed::exact_gap;
 #[cfg(feature = "cli")]
+pub(crate) use seed::exact_pull_off_from_model_contour;
+#[cfg(feature = "cli")]
 pub(crate) use seed::gap_named;
 #[cfg(feature = "figures")]
 pub(crate) use seed::seeding_family;

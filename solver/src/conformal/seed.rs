@@ -47,6 +47,24 @@ impl Seed for Conformal {
             .ok()
             .map(|(st, _)| guess(&st))
     }
+    #[cfg(any(feature = "cli", test))]
+    fn pull_off_contour(&self, rho: f64) -> Option<(Guess, crate::exact::Contour)> {
+        let (st, _) = Conformal::pull_off(self, rho, FoldCondition::Load).ok()?;
+        let powers = self.tables.powers;
+        let mut contour = crate::exact::Contour {
+            a: 0.0,
+            b: Vec::new(),
+            c: vec![0.0; usize::from(powers.iter().max()?.saturating_sub(1) / 2)],
+        };
+        for (&p, &c) in powers.iter().zip(&st.coefficients) {
+            match p {
+                1 => contour.a = c,
+                // odd p ≥ 3: e^{(2j+3)iθ}
+                _ => contour.c[usize::from((p - 3) / 2)] = c,
+            }
+        }
+        Some((guess(&st), contour))
+    }
 }
 
 /// Each family's seed (its largest member, where it seeds the exact solver
@@ -188,6 +206,24 @@ pub fn exact_pull_off_on_gap(
     }
 }
 
+/// The exact load-controlled pull-off at `rho` on the gap named `gap` by
+/// its second route (issue 73), which checks the first: Newton from the
+/// contour of the largest member of the family that seeds the gap's exact
+/// solver, at that member's pull-off, then the least force along that arm
+/// (route `from_model_contour`; no walk in the gap or in ρ). A usage
+/// error where no family seeds the gap.
+#[cfg(any(feature = "cli", test))]
+pub(crate) fn exact_pull_off_from_model_contour(
+    gap: &str,
+    rho: f64,
+) -> crate::Result<crate::exact::ExactState> {
+    let (gap, family) = gap_named(gap)?;
+    if let Some(f) = family {
+        own_gap_rho(rho, f)?;
+    }
+    crate::exact::branch::pull_off_from_contour(gap, rho)
+}
+
 /// The exact state at `control` and `rho` on the gap named `gap`
 /// (`cylinders` or a contour family's name), with the default escalation of truncations (`tries`
 /// `None`) or those given.
@@ -209,5 +245,40 @@ pub fn exact_state_on_gap(
             control,
             &crate::exact::ladder::Ladder::of(t.to_vec()),
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// Issue 73: the pull-off's second route (`exact pull-off
+    /// --from-model-contour`): Newton from conformal:8's own contour just
+    /// above its pull-off, then the least force along that arm (the secant
+    /// on dF̄/dā = 0, no walk in ρ), in the arclength representation, finds
+    /// the pull-off the default route reaches (traced from just above
+    /// conformal:8's pull-off from an ellipse), to 1e-9 in F̄ and 1e-6 in ā
+    /// (F̄ is flat at its minimum), at ρ = 1, 0.8 and 0.5.
+    #[test]
+    fn the_second_route_from_the_seeds_contour_finds_the_same_pull_off() {
+        for rho in [1.0, 0.8, 0.5] {
+            let second = super::exact_pull_off_from_model_contour("cylinders", rho).unwrap();
+            let (first, _) = crate::exact::pull_off_resolved(rho).unwrap();
+            assert_eq!(
+                serde_json::to_value(second.route).unwrap(),
+                "from_model_contour"
+            );
+            assert!(second.bc_error < 1e-9, "{rho}: {}", second.bc_error);
+            assert!(
+                (second.force_bar - first.force_bar).abs() < 1e-9 * first.force_bar.abs(),
+                "{rho}: {} against {}",
+                second.force_bar,
+                first.force_bar
+            );
+            assert!(
+                (second.a_bar - first.a_bar).abs() < 1e-6,
+                "{rho}: {} against {}",
+                second.a_bar,
+                first.a_bar
+            );
+        }
     }
 }

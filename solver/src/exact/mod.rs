@@ -713,6 +713,11 @@ pub enum Route {
     /// Newton at the control from a nearby exact state the caller gave
     /// (a sweep's previous point, `registry::Choice::state_near`).
     FromNeighbour,
+    /// The pull-off's second route (issue 73): Newton from the seeding
+    /// model's own contour at its pull-off, then the minimum of F̄ over ā
+    /// along that arm (`branch::pull_off_from_contour`; `exact pull-off
+    /// --from-model-contour`).
+    FromModelContour,
 }
 
 impl Route {
@@ -726,6 +731,9 @@ impl Route {
             Route::FromScreen => format!(
                 "Newton at the control from {seed}'s state where its states at fixed a cross it"
             ),
+            Route::FromModelContour => format!(
+                "Newton from {seed}'s own contour at its pull-off, then the least force along that arm (no walk in the gap or in rho)"
+            ),
             other => other.to_string(),
         }
     }
@@ -736,9 +744,10 @@ impl std::fmt::Display for Route {
     /// the seeding model of another).
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {
-            Route::FromModel | Route::AboveModelPullOff | Route::FromScreen => {
-                return f.write_str(&self.words("conformal:8"))
-            }
+            Route::FromModel
+            | Route::AboveModelPullOff
+            | Route::FromScreen
+            | Route::FromModelContour => return f.write_str(&self.words("conformal:8")),
             Route::FromCircle => "continued in rho from the circle at rho = 1",
             Route::FromCylinders => {
                 "continued in the gap from the cylinders' state at the same rho and a (continued in rho from their circle)"

@@ -5,7 +5,8 @@
 //! ([`Guess`]) and never names. Without a seed the solver starts from the
 //! circle (continued in ρ), where the gap allows it.
 //!
-//! Owns: [`Seed`], [`Guess`]. May use: `control`, `error`.
+//! Owns: [`Seed`], [`Guess`]. May use: `control`, `error`, its parent
+//! `exact` (`Contour`).
 
 use crate::control::Hold;
 
@@ -34,4 +35,11 @@ pub(crate) trait Seed: Send + Sync + std::fmt::Debug {
     fn state(&self, rho: f64, hold: Hold) -> crate::Result<Guess>;
     /// The model's load-controlled pull-off at `rho`, where it has one.
     fn pull_off(&self, rho: f64) -> Option<Guess>;
+    /// The same pull-off with the model's own contour, the boundary of its
+    /// map of the disk z = Σ c_p e^{ipθ} (odd p) as a [`super::Contour`]: A the
+    /// coefficient of p = 1, the c_j those of p = 2j + 3 (the arclength
+    /// representation's positive powers, which hold the map as it is). The
+    /// start of the pull-off's second route (`branch::pull_off_from_contour`).
+    #[cfg(any(feature = "cli", test))]
+    fn pull_off_contour(&self, rho: f64) -> Option<(Guess, super::Contour)>;
 }
