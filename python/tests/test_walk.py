@@ -1,14 +1,19 @@
-"""The guide's walk "Adding a family of your own", for real.
+"""The guide's walk "Adding a family of your own", for real, with the
+commands the guide prints.
 
-A copy of the repository gets two new data files and nothing else:
+A copy of the repository gets new data files and nothing else:
 derive/families/sparse.toml (a contour family on the quadratic gap whose map
-skips ζ⁵: powers 1, 3, 7) and derive/families/quartic.toml (a family on
-another gap, φ̄ = (X² + μY²)²/8, which seeds the exact solver of that gap);
-`thinjkr-derive generate --root COPY` derives, checks and generates both; the
-test lists every path that changed and fails on any hand-written Rust or
-Python among them or any built-in file changed; then the already built
-command line and Python package, pointed at the copy's generated folder by
-THINJKR_FAMILIES (no rebuild), list the families, solve with them, and
+skips ζ⁵: powers 1, 3, 7), derive/families/quartic.toml (a family on
+another gap, φ̄ = (X² + μY²)²/8, which seeds the exact solver of that gap)
+and three families on gaps no circle solves (bumpy, across, uneven; issue
+73); the guide's step 2, `cargo run --release -p thinjkr-derive -- generate`
+run in the copy, derives, checks and generates them, compiling the
+generator from the copy's sources and no symbolica (the slow tier built it
+in release before); the test lists every path that changed and fails on any
+hand-written Rust or Python among them or any built-in file changed; then
+the already built command line and Python package, pointed at the copy's
+generated folder by THINJKR_FAMILIES (no rebuild; the guide's step 3 as it
+prints it), list the families, solve with them, and
 `thinjkr accuracy --rho 1,0.8` has sparse's column beside conformal:K and a table of
 quartic:K against the exact solution of the quartic gap. sparse:2 has the
 map of conformal:2 and so the same Π̄: their states must agree to round-off,
@@ -18,17 +23,20 @@ axisymmetric closed form (docs/exact.md, "The gap as data"):
 δ̄ = ā⁴/24 − 2/ā, F̄ = π(ā⁸ − 96ā³)/384.
 
 Runs one symbolica process (the generator) and nothing else at the same time.
-In the slow tier (.ci/slow; about 100 s, most of it the generation): CI keeps
+In the slow tier (.ci/slow; a few minutes, most of it the generator's
+release build from the copy and the generation): CI keeps
 the Rust side's sample of the same route, a family of one's own derived,
 checked and generated (derive/tests/conformal_family.rs) and family files
 loaded at run time (solver/tests/families.rs), and the walk's sample on a gap
-no circle solves (test_walk_gap.py: bumpy with powers 1, 3, 5).
+no circle solves (test_walk_gap.py: bumpy with powers 1, 3, 5, through the
+built generator).
 """
 
 import json
 import math
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -148,16 +156,39 @@ def copy_of_the_repository(copy):
     return copy
 
 
+def guide_command(step):
+    """The command docs/guide.md's walk ("Adding a family of your own")
+    prints at its numbered step beginning `step` (the first in backquotes)."""
+    guide = (ROOT / "docs/guide.md").read_text()
+    found = re.search(r"^" + re.escape(step) + r"[^`]*`([^`]+)`", guide, re.M)
+    assert found, f"docs/guide.md's walk has no step {step!r}"
+    return found.group(1)
+
+
 @pytest.fixture(scope="module")
 def walked(tmp_path_factory):
+    """The guide's walk in a copy, with the command it prints: `cargo run
+    --release -p thinjkr-derive -- generate`, run in the copy's derive/
+    folder ("anywhere inside the checkout"), with the build cache of this
+    checkout (CARGO_TARGET_DIR, else its target/): the generator is
+    compiled from the copy's sources, symbolica is not (the slow tier
+    builds the generator in release first, as a user's first run of that
+    command does once)."""
     copy = copy_of_the_repository(tmp_path_factory.mktemp("walk") / "thinjkr")
     before = snapshot(copy)
     for rel, text in NEW_FILES.items():
         (copy / rel).write_text(text)
+    generate = guide_command("2. Generate:")
+    assert generate == "cargo run --release -p thinjkr-derive -- generate", generate
     env = dict(os.environ, SYMBOLICA_HIDE_BANNER="1")
-    run = subprocess.run([derive_bin(), "generate", "--root", str(copy)], env=env,
-                         capture_output=True, text=True, timeout=900)
+    env.setdefault("CARGO_TARGET_DIR", str(ROOT / "target"))
+    run = subprocess.run(["bash", "-c", generate], cwd=copy / "derive", env=env,
+                         capture_output=True, text=True, timeout=1800)
     assert run.returncode == 0, run.stderr
+    assert "Compiling thinjkr-derive" in run.stderr, run.stderr
+    assert "Compiling symbolica" not in run.stderr, (
+        "the guide's command compiled symbolica: build the generator in release first "
+        "(cargo build --release -p thinjkr-derive, as .ci/slow does)")
     after = snapshot(copy)
     changed = sorted(p for p in set(before) | set(after) if before.get(p) != after.get(p))
     return copy, changed
@@ -210,6 +241,14 @@ def test_the_command_line_lists_and_solves_with_the_family_without_a_rebuild(wal
     copy, _ = walked
     env = dict(os.environ, THINJKR_FAMILIES=str(copy / "solver/src/generated"))
     models = {m["name"]: m for m in cli_json(cli, env, "models")["models"]}
+    # the guide's own command, in the copy, with this build's command line
+    listing = guide_command("3. Use it without a rebuild:")
+    assert listing == "THINJKR_FAMILIES=solver/src/generated thinjkr models", listing
+    path = dict(os.environ, PATH=f"{pathlib.Path(cli).parent}{os.pathsep}{os.environ['PATH']}")
+    run = subprocess.run(["bash", "-c", listing], cwd=copy, env=path, capture_output=True,
+                         text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    assert all(f"sparse:{k}" in run.stdout for k in (1, 2, 3)), run.stdout
     for k in (1, 2, 3):
         assert models[f"sparse:{k}"]["family"] == "sparse"
         assert models[f"sparse:{k}"]["unknowns"] == k + 1
