@@ -160,13 +160,15 @@ pub(crate) fn model_pull_off(gap: Gap, rho: f64) -> Option<Guess> {
 
 /// The load-controlled pull-off on `gap` at `rho` by a second route, which
 /// checks the first (issue 73): Newton from the seeding model's own
-/// contour at its pull-off's ā and δ̄ (`Seed::pull_off_contour`; the
-/// arclength representation holds a member's map as it is), then the
-/// minimum of F̄ over ā along that arm by the secant on dF̄/dā = 0
-/// ([`Exact::force_minimum_in_size_from`]), else (a fold in ā near it) by
-/// the trace downhill in F̄ from that start
-/// ([`Exact::force_minimum_nearest`]): no walk in the gap or in ρ. The arclength ladder is climbed until the minimum's boundary
-/// error is below [`super::CONVERGED`]. An ellipse through the model's ā
+/// contour at its pull-off (`Seed::pull_off_contour`; the arclength
+/// representation holds a member's map as it is), scaled to ā
+/// [`ABOVE_MODEL_PULL_OFF`] larger as the route from its ellipse starts,
+/// then the minimum of F̄ over ā along that arm by the secant on
+/// dF̄/dā = 0 ([`Exact::force_minimum_in_size_from`]), else (a fold in ā
+/// near it) by the trace downhill in F̄ from that start
+/// ([`Exact::force_minimum_nearest`]): no walk in the gap or in ρ. The
+/// arclength ladder is climbed until the minimum's boundary error is
+/// below [`super::CONVERGED`]. An ellipse through the model's ā
 /// and b̄ is no such start: on the bumpy gap (φ̄ = X²/2 + μY²/2 + X⁴/24)
 /// at ρ = 1 Newton from it lands on a neighbouring arm, whose minimum is
 /// F̄ = −4.1106 at ā = 1.974 against the walk's −4.0799 at 2.0485, which
