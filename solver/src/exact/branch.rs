@@ -189,21 +189,18 @@ pub(crate) fn pull_off_from_contour(gap: Gap, rho: f64) -> Result<ExactState> {
             crate::error::rounded(rho)
         ))
     })?;
-    // just above the model's pull-off, as the route from its ellipse
-    // starts (next to a fold in ā Newton at fixed ā is ill-conditioned):
-    // the contour scaled, δ̄ shifted by the circle's change
-    let a = po.a_bar + ABOVE_MODEL_PULL_OFF;
-    let scale = a / po.a_bar;
-    let start = super::Contour {
-        a: contour.a * scale,
-        b: contour.b.iter().map(|b| b * scale).collect(),
-        c: contour.c.iter().map(|c| c * scale).collect(),
-    };
     let mut ladder = super::ladder::Ladder::arclength();
     let mut why = None;
     while let Some(t) = ladder.rung() {
         let ex = Exact::on(gap, rho, t)?;
-        let delta = po.delta_bar + ex.circle_delta(a) - ex.circle_delta(po.a_bar);
+        // just above the model's pull-off, as the route from its ellipse
+        // starts: the contour scaled to that size
+        let (a, scale, delta) = ex.just_above(&po);
+        let start = super::Contour {
+            a: contour.a * scale,
+            b: contour.b.iter().map(|b| b * scale).collect(),
+            c: contour.c.iter().map(|c| c * scale).collect(),
+        };
         let found = ex
             .solve(a, &start.in_arclength(t.modes), delta)
             .and_then(|st| {
@@ -872,14 +869,21 @@ impl Exact {
     /// `None` where the model has no pull-off or the start does not
     /// converge there; the trace then starts from the circle's route.
     fn above_model_pull_off(&self, po: &Guess) -> Option<ExactState> {
-        let a = po.a_bar + ABOVE_MODEL_PULL_OFF;
-        let scale = a / po.a_bar;
+        let (a, scale, delta) = self.just_above(po);
         let ellipse = super::Contour::ellipse(a, po.b_bar * scale, self.truncation.modes);
-        // δ̄ ≈ the circle's (ā²/4 − 2/ā for the cylinders) shifted by the
-        // model's offset
-        let delta = po.delta_bar + self.circle_delta(a) - self.circle_delta(po.a_bar);
         let st = self.solve(a, &ellipse, delta).ok()?;
         Same::SAME_SIDE.of(&st, po).then_some(st)
+    }
+
+    /// Where a start near a model's pull-off `po` is put, for both routes
+    /// from it: ā [`ABOVE_MODEL_PULL_OFF`] above its ā (next to a fold in ā
+    /// Newton at fixed ā is ill-conditioned), the factor that scales the
+    /// model's contour to that size, and δ̄ ≈ the circle's (ā²/4 − 2/ā for
+    /// the cylinders) shifted by the model's offset.
+    fn just_above(&self, po: &Guess) -> (f64, f64, f64) {
+        let a = po.a_bar + ABOVE_MODEL_PULL_OFF;
+        let delta = po.delta_bar + self.circle_delta(a) - self.circle_delta(po.a_bar);
+        (a, a / po.a_bar, delta)
     }
 
     /// ā at which the pull-off's trace starts ([`GapAt::trace_start`],
