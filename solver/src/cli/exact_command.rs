@@ -158,6 +158,49 @@ fn members_of(family: &'static crate::conformal::Family) -> Vec<crate::conformal
         .collect()
 }
 
+/// Beside an exact answer: the ellipse models on the cylinders' gap
+/// (`family` none), else the family's members on its own gap, each
+/// answered by `ellipse` or `member`: its name, [ā, s, δ̄, F̄] or its
+/// error, and its answer for the JSON.
+#[allow(clippy::type_complexity)]
+fn models_beside(
+    family: Option<&'static crate::conformal::Family>,
+    ellipse: impl Fn(ModelId) -> Result<crate::contact::State>,
+    member: impl Fn(&crate::conformal::Conformal) -> Result<crate::conformal::ConformalState>,
+) -> Vec<(String, Result<[f64; 4]>, ModelAnswer)> {
+    let values = |a: f64, s: f64, delta: f64, force: f64| [a, s, delta, force];
+    match family {
+        None => ModelId::ALL
+            .iter()
+            .map(|&m| {
+                let r = ellipse(m);
+                let v = r
+                    .as_ref()
+                    .map(|p| values(p.a_bar, p.s, p.delta_bar, p.force_bar));
+                (
+                    m.name().to_string(),
+                    v.map_err(Clone::clone),
+                    ModelAnswer::new(m.name(), &r),
+                )
+            })
+            .collect(),
+        Some(f) => members_of(f)
+            .iter()
+            .map(|m| {
+                let r = member(m);
+                let v = r
+                    .as_ref()
+                    .map(|p| values(p.a_bar, p.s, p.delta_bar, p.force_bar));
+                (
+                    m.name(),
+                    v.map_err(Clone::clone),
+                    ModelAnswer::member(&m.name(), &r),
+                )
+            })
+            .collect(),
+    }
+}
+
 /// `thinjkr exact …`.
 #[derive(Subcommand, Clone, Debug)]
 pub(crate) enum ExactCommand {
@@ -1217,36 +1260,20 @@ pub(crate) fn pull_off(
     };
     let po = d.judged(po)?;
     let mut passed = Passed::from_exact(&events);
-    // beside it: the ellipse models on the cylinders' gap, the family's
-    // members on its own (name, force, a and s or the error, the answer)
-    let models: Vec<(String, Result<[f64; 3]>, ModelAnswer)> = match family {
-        None => ModelId::ALL
-            .iter()
-            .map(|&m| {
-                let r = Contact::with_model(m, rho)
-                    .and_then(|c| c.pull_off_load())
-                    .map(|p| p.state);
-                let fas = r
-                    .as_ref()
-                    .map(|s| [s.force_bar, s.a_bar, s.s])
-                    .map_err(Clone::clone);
-                (m.name().to_string(), fas, ModelAnswer::new(m.name(), &r))
-            })
-            .collect(),
-        Some(f) => members_of(f)
-            .iter()
-            .map(|m| {
-                let r = m
-                    .pull_off(rho, crate::fold::FoldCondition::Load)
-                    .map(|(s, _)| s);
-                let fas = r
-                    .as_ref()
-                    .map(|s| [s.force_bar, s.a_bar, s.s])
-                    .map_err(Clone::clone);
-                (m.name(), fas, ModelAnswer::member(&m.name(), &r))
-            })
-            .collect(),
-    };
+    // beside it: the ellipse models' pull-offs on the cylinders' gap, the
+    // family's members' on its own
+    let models = models_beside(
+        family,
+        |m| {
+            Contact::with_model(m, rho)
+                .and_then(|c| c.pull_off_load())
+                .map(|p| p.state)
+        },
+        |m| {
+            m.pull_off(rho, crate::fold::FoldCondition::Load)
+                .map(|(s, _)| s)
+        },
+    );
     drop(spin);
     // the paths from the state both begin from (at F = 10, else the
     // largest stable load on the pull-off's piece), found once: minutes
@@ -1293,19 +1320,7 @@ pub(crate) fn pull_off(
             outln!("  on the way: {words}")
         }
     }
-    let which = if po.rho < crate::exact::stored::STORED_FROM_RHO
-        && matches!(
-            po.route,
-            crate::exact::Route::ContinuedInRho | crate::exact::Route::BetweenStored
-        ) {
-        format!(
-            "the minimum of F on the piece that carries the pull-off at rho = {}, followed in rho from there (started from the stored pull-offs: between three of one truncation from their interpolation, else from the one nearest above; docs/exact.md, \"The stored pull-offs\")",
-            crate::exact::stored::STORED_FROM_RHO
-        )
-    } else {
-        "the first minimum of F on the near-elliptic arm traced towards smaller a from its start (docs/exact.md, \"Which family\")".to_string()
-    };
-    outln!("  which pull-off: {which}");
+    outln!("  which pull-off: {}", which_pull_off(&po));
     outln!("  reached by unloading: {}", reached_words(&po, unloading));
     if unloading {
         // the lines so far reach a reader through a pipe before the paths'
@@ -1320,9 +1335,36 @@ pub(crate) fn pull_off(
             _ => {}
         }
     }
-    for (m, r, _) in &models {
+    show_models_beside_pull_off(&po, &models)
+}
+
+/// Which pull-off `po` is, in words: the minimum followed in ρ from the
+/// stored pull-offs, or the first minimum on the near-elliptic arm.
+fn which_pull_off(po: &ExactState) -> String {
+    if po.rho < crate::exact::stored::STORED_FROM_RHO
+        && matches!(
+            po.route,
+            crate::exact::Route::ContinuedInRho | crate::exact::Route::BetweenStored
+        )
+    {
+        format!(
+            "the minimum of F on the piece that carries the pull-off at rho = {}, followed in rho from there (started from the stored pull-offs: between three of one truncation from their interpolation, else from the one nearest above; docs/exact.md, \"The stored pull-offs\")",
+            crate::exact::stored::STORED_FROM_RHO
+        )
+    } else {
+        "the first minimum of F on the near-elliptic arm traced towards smaller a from its start (docs/exact.md, \"Which family\")".to_string()
+    }
+}
+
+/// The models' pull-offs beside the exact one `po`, each with its relative
+/// errors, or its error.
+fn show_models_beside_pull_off(
+    po: &ExactState,
+    models: &[(String, Result<[f64; 4]>, ModelAnswer)],
+) -> Result<()> {
+    for (m, r, _) in models {
         match r {
-            Ok([force, a, s]) => outln!(
+            Ok([a, s, _, force]) => outln!(
                 "  model {m}: force = {:.6} ({:+.3} %), a = {:.6} ({:+.3} %), s = {:.6} ({:+.3} %)",
                 force,
                 100.0 * (force / po.force_bar - 1.0),
@@ -1429,32 +1471,11 @@ pub(crate) fn state(
     let st = d.judged(st)?;
     // beside it: the ellipse models on the cylinders' gap (their state at
     // the control as a batch solves it), the family's members on its own
-    // (name; a, s, delta, force or the error; the answer)
-    let model_states: Vec<(String, Result<[f64; 4]>, ModelAnswer)> = match family {
-        None => ModelId::ALL
-            .iter()
-            .map(|&m| {
-                let r = Contact::with_model(m, rho)
-                    .and_then(|c| crate::batch::Solves::solve(&m, &c, control));
-                let v = r
-                    .as_ref()
-                    .map(|p| [p.a_bar, p.s, p.delta_bar, p.force_bar])
-                    .map_err(Clone::clone);
-                (m.name().to_string(), v, ModelAnswer::new(m.name(), &r))
-            })
-            .collect(),
-        Some(f) => members_of(f)
-            .iter()
-            .map(|m| {
-                let r = m.solve(rho, control);
-                let v = r
-                    .as_ref()
-                    .map(|p| [p.a_bar, p.s, p.delta_bar, p.force_bar])
-                    .map_err(Clone::clone);
-                (m.name(), v, ModelAnswer::member(&m.name(), &r))
-            })
-            .collect(),
-    };
+    let model_states = models_beside(
+        family,
+        |m| Contact::with_model(m, rho).and_then(|c| crate::batch::Solves::solve(&m, &c, control)),
+        |m| m.solve(rho, control),
+    );
     drop(spin);
     if json {
         let doc = Document::State {

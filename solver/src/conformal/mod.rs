@@ -831,50 +831,7 @@ impl Conformal {
     /// ∂Π̄/∂c₁ = 0 solved for δ̄ (a quadratic: Π̄ is quadratic in δ̄), on the
     /// adhesive root (tensile edge, ∂p̄/∂ν = +1), then Newton on the control.
     fn circle(&self, control: Hold) -> Result<(DVector<f64>, Option<DMatrix<f64>>)> {
-        let k = self.terms();
-        // the circle's state at ā with its control value
-        let at = |a: f64| -> Option<(DVector<f64>, f64)> {
-            let x = |d: f64| {
-                let mut v = DVector::zeros(k + 1);
-                v[0] = a;
-                v[k] = d;
-                v
-            };
-            // Π̄ = P₀ + P₁δ̄ + P₂δ̄² with Pᵢ functions of c, from the rows
-            // that matter on the circle: ∂Π̄/∂c₁ = r₀ + q₁δ̄ + q₂δ̄² and
-            // F̄ = ∂Π̄/∂δ̄ = P₁ + 2P₂δ̄
-            let circle = &self.decoded.potential_circle;
-            let eval = |v: &DVector<f64>, order| {
-                poly::evaluate(circle, &v.as_slice()[..k], v[k], 1.0, order)
-            };
-            let e0 = eval(&x(0.0), 2);
-            let (r0, q1) = (e0.grad[0], e0.hess[0][k]);
-            let (p1, two_p2) = (e0.grad[k], e0.hess[k][k]);
-            let q2 = eval(&x(1.0), 1).grad[0] - r0 - q1;
-            let disc = q1 * q1 - 4.0 * q2 * r0;
-            if q2 == 0.0 || disc < 0.0 {
-                return None;
-            }
-            [
-                (-q1 - disc.sqrt()) / (2.0 * q2),
-                (-q1 + disc.sqrt()) / (2.0 * q2),
-            ]
-            .into_iter()
-            .map(x)
-            .find(|v| {
-                // the boundary slope at θ = 0 (w′(1) > 0 on the circle)
-                let c = &v.as_slice()[..k];
-                poly::evaluate(&self.decoded.slope_circle_at_zero, c, v[k], 1.0, 0).value > 0.0
-            })
-            .map(|v| {
-                let value = match control {
-                    Hold::Delta(_) => v[k],
-                    Hold::Force(_) => p1 + two_p2 * v[k],
-                    Hold::Size(_) => v[0],
-                };
-                (v, value)
-            })
-        };
+        let at = |a: f64| self.circle_at(a, control);
         // on a gap no circle solves (issue 73) the circle is a guess: at ā
         // polished by Newton, at δ̄ or F̄ the crossing of the circles
         // polished (below); where Newton fails (next to a neutral point of
@@ -896,6 +853,68 @@ impl Conformal {
             Hold::Force(f) => f,
             Hold::Size(a) => return at(a).map(|(x, _)| (x, None)).ok_or_else(|| no_circle(a)),
         };
+        if self.decoded.circle_solves_the_gap {
+            self.circle_crossing(control, target)
+        } else {
+            self.nearer_to_its_closure(self.circle_crossing(control, target), traced_from_its_start)
+        }
+    }
+
+    /// The circle's state at ā under `control` (c = (ā, 0, …, 0), δ̄ on
+    /// the adhesive root of ∂Π̄/∂c₁ = 0) with its control value; `None`
+    /// where that quadratic has no adhesive root.
+    fn circle_at(&self, a: f64, control: Hold) -> Option<(DVector<f64>, f64)> {
+        let k = self.terms();
+        let x = |d: f64| {
+            let mut v = DVector::zeros(k + 1);
+            v[0] = a;
+            v[k] = d;
+            v
+        };
+        // Π̄ = P₀ + P₁δ̄ + P₂δ̄² with Pᵢ functions of c, from the rows
+        // that matter on the circle: ∂Π̄/∂c₁ = r₀ + q₁δ̄ + q₂δ̄² and
+        // F̄ = ∂Π̄/∂δ̄ = P₁ + 2P₂δ̄
+        let circle = &self.decoded.potential_circle;
+        let eval =
+            |v: &DVector<f64>, order| poly::evaluate(circle, &v.as_slice()[..k], v[k], 1.0, order);
+        let e0 = eval(&x(0.0), 2);
+        let (r0, q1) = (e0.grad[0], e0.hess[0][k]);
+        let (p1, two_p2) = (e0.grad[k], e0.hess[k][k]);
+        let q2 = eval(&x(1.0), 1).grad[0] - r0 - q1;
+        let disc = q1 * q1 - 4.0 * q2 * r0;
+        if q2 == 0.0 || disc < 0.0 {
+            return None;
+        }
+        [
+            (-q1 - disc.sqrt()) / (2.0 * q2),
+            (-q1 + disc.sqrt()) / (2.0 * q2),
+        ]
+        .into_iter()
+        .map(x)
+        .find(|v| {
+            // the boundary slope at θ = 0 (w′(1) > 0 on the circle)
+            let c = &v.as_slice()[..k];
+            poly::evaluate(&self.decoded.slope_circle_at_zero, c, v[k], 1.0, 0).value > 0.0
+        })
+        .map(|v| {
+            let value = match control {
+                Hold::Delta(_) => v[k],
+                Hold::Force(_) => p1 + two_p2 * v[k],
+                Hold::Size(_) => v[0],
+            };
+            (v, value)
+        })
+    }
+
+    /// The circle's state at ρ = 1 where the value of `control` is
+    /// `target`: the first crossing of the circle's explicit branch scanned
+    /// from large ā down, polished by Newton in every unknown.
+    fn circle_crossing(
+        &self,
+        control: Hold,
+        target: f64,
+    ) -> Result<(DVector<f64>, Option<DMatrix<f64>>)> {
+        let at = |a: f64| self.circle_at(a, control);
         // the crossing of the circle's explicit branch in [a_lo, a_hi]
         // (values of opposite signs there) by the Illinois method to
         // round-off (cheap: the circle's rows), then Newton in every unknown
@@ -965,11 +984,7 @@ impl Conformal {
                 self.name()
             )))
         };
-        if self.decoded.circle_solves_the_gap {
-            scanned()
-        } else {
-            self.nearer_to_its_closure(scanned(), traced_from_its_start)
-        }
+        scanned()
     }
 
     /// Of two states at ρ = 1 on a gap no circle solves, the one (2)'s
