@@ -525,3 +525,142 @@ fn the_ranking_finds_what_breaks_it() {
         vec![("high.rs".to_string(), "X".to_string())]
     );
 }
+
+/// The longest a hand-written function may be (issue 69), in lines from its
+/// `fn` to its closing brace: a longer one is split into steps that say
+/// what they do.
+const LONGEST_FUNCTION: usize = 120;
+
+/// The hand-written functions of `text` (the file's test module and its
+/// test-only files left out by the caller) longer than `longest` lines:
+/// (first line, name, lines). A function's body ends at the first line
+/// that is its indentation and `}` (as rustfmt writes it).
+fn long_functions(text: &str, longest: usize) -> Vec<(usize, String, usize)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let trimmed = line.trim_start();
+        let mut rest = trimmed;
+        for prefix in [
+            "pub(crate) ",
+            "pub(super) ",
+            "pub ",
+            "const ",
+            "async ",
+            "unsafe ",
+        ] {
+            rest = rest.strip_prefix(prefix).unwrap_or(rest);
+        }
+        let Some(signature) = rest.strip_prefix("fn ") else {
+            continue;
+        };
+        let name: String = signature
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        let indent = &line[..line.len() - trimmed.len()];
+        // the body's opening line, or none for a declaration (`;`)
+        let Some(open) = (i..lines.len()).find(|&j| {
+            let l = lines[j].trim_end();
+            l.ends_with('{') || l.ends_with(';') || (j == i && l.ends_with('}'))
+        }) else {
+            continue;
+        };
+        if lines[open].trim_end().ends_with(';') || lines[open].trim_end().ends_with('}') {
+            continue;
+        }
+        let close = format!("{indent}}}");
+        let Some(end) = (open + 1..lines.len()).find(|&k| lines[k].trim_end() == close) else {
+            continue;
+        };
+        if end - i + 1 > longest {
+            out.push((i + 1, name, end - i + 1));
+        }
+    }
+    out
+}
+
+/// The files of `files` (paths under src/) that a `#[cfg(test)] mod x;`
+/// declares: test-only files.
+fn test_only_files(files: &[(String, String)]) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    for (rel, text) in files {
+        let lines: Vec<&str> = text.lines().collect();
+        for pair in lines.windows(2) {
+            let Some(name) = pair[1]
+                .trim()
+                .strip_prefix("mod ")
+                .and_then(|m| m.strip_suffix(';'))
+            else {
+                continue;
+            };
+            if pair[0].trim() != "#[cfg(test)]" {
+                continue;
+            }
+            let dir = match rel.rsplit_once('/') {
+                Some((d, f)) if f == "mod.rs" || f == "lib.rs" || f == "main.rs" => format!("{d}/"),
+                Some((d, f)) => format!("{d}/{}/", f.trim_end_matches(".rs")),
+                None if rel == "lib.rs" || rel == "main.rs" => String::new(),
+                None => format!("{}/", rel.trim_end_matches(".rs")),
+            };
+            out.insert(format!("{dir}{name}.rs"));
+            out.insert(format!("{dir}{name}/mod.rs"));
+        }
+    }
+    out
+}
+
+#[test]
+fn no_hand_written_function_is_over_120_lines() {
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut long = Vec::new();
+    for (crate_dir, root) in [
+        ("solver", manifest.join("src")),
+        ("derive", manifest.join("../derive/src")),
+    ] {
+        let files: Vec<(String, String)> = tree(&root)
+            .into_iter()
+            .filter(|(rel, _)| !rel.starts_with("generated/"))
+            .collect();
+        let test_only = test_only_files(&files);
+        for (rel, text) in &files {
+            if test_only.contains(rel) {
+                continue;
+            }
+            let before_tests = text.split("\n#[cfg(test)]\nmod ").next().unwrap_or(text);
+            for (line, name, lines) in long_functions(before_tests, LONGEST_FUNCTION) {
+                long.push(format!(
+                    "{crate_dir}/src/{rel}:{line} {name}: {lines} lines"
+                ));
+            }
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "hand-written functions over {LONGEST_FUNCTION} lines (split them into named steps):\n  {}",
+        long.join("\n  ")
+    );
+}
+
+#[test]
+fn the_length_check_finds_a_long_function_and_passes_a_short_one() {
+    let body = |n: usize| {
+        (0..n)
+            .map(|k| format!("    let x{k} = {k};\n"))
+            .collect::<String>()
+    };
+    let text = format!(
+        "pub(crate) fn long(\n    a: u8,\n) -> u8 {{\n{}    a\n}}\n\nfn short() {{\n{}}}\n\ntrait T {{\n    fn declared(&self);\n}}\n",
+        body(130),
+        body(10)
+    );
+    let found = long_functions(&text, LONGEST_FUNCTION);
+    assert_eq!(found, vec![(1, "long".to_string(), 135)]);
+    let files = vec![(
+        "layer/grid/mod.rs".to_string(),
+        "#[cfg(test)]\nmod tables;\nmod plane;\n".to_string(),
+    )];
+    let test_only = test_only_files(&files);
+    assert!(test_only.contains("layer/grid/tables.rs"));
+    assert!(!test_only.contains("layer/grid/plane.rs"));
+}
