@@ -17,7 +17,7 @@
 //! Owns: `Sheet`, `SheetState`, `Work`, `Rung`, `Target`. May use: `layer` (the pair), `error`,
 //! `quadrature`, `newton` (the stop request, between rungs), and its own
 //! `kernel`, `law`, `gmres`, `bessel0`, `edge`, `bench`, `plane` (the
-//! answer the model layer gives).
+//! answer the model layer gives), `stability` (a state's least eigenvalues).
 
 #[cfg(feature = "bench-internals")]
 pub(crate) mod bench;
@@ -27,6 +27,7 @@ mod gmres;
 mod kernel;
 mod law;
 pub(crate) mod plane;
+pub(crate) mod stability;
 
 use super::Layers;
 use crate::error::{rounded, Error, Result};
@@ -671,9 +672,7 @@ pub(crate) fn ladder(
     for &(eps, cells_per_zone) in rungs {
         crate::newton::check_stop()?;
         let t = std::time::Instant::now();
-        let zone = eps * a;
-        let range = (zone / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
-        let dx = zone / cells_per_zone;
+        let (range, dx) = scales(layers, eps, cells_per_zone);
         let mut width = match &last {
             None => 1.9 * a,
             Some((s, st)) => {
@@ -739,6 +738,23 @@ pub(crate) fn ladder(
         last = Some((sheet, st));
     }
     Ok(out)
+}
+
+/// The law's range and the cells' side of a rung: a process zone ε of the
+/// size scale a, ℓ = 4βe²ρ₀² (about E*Δγ/σ²max), `cells_per_zone` cells
+/// across it.
+fn scales(layers: &Layers, eps: f64, cells_per_zone: f64) -> (f64, f64) {
+    let zone = eps * layers.radius_guess();
+    let range = (zone / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
+    (range, zone / cells_per_zone)
+}
+
+impl Rung {
+    /// The grid this rung's state was solved on, for `layers` at `rho`.
+    pub(crate) fn sheet(&self, layers: &Layers, rho: f64) -> Sheet {
+        let (range, dx) = scales(layers, self.eps, self.cells_per_zone);
+        Sheet::new(layers, rho, self.n, dx, range)
+    }
 }
 
 /// Where a ladder's first pull-off search starts, in δ̄ over the size
