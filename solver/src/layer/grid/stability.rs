@@ -250,6 +250,7 @@ const RING: usize = 64;
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::{coarse, rungs_of};
     use super::*;
     use crate::layer::Layers;
 
@@ -259,12 +260,8 @@ mod tests {
     /// the orders n ≥ 1 come in equal pairs (cos nθ and sin nθ).
     #[test]
     fn the_least_eigenvalues_are_those_of_the_whole_newton_matrix() {
-        let layers = Layers::equal(1.0, 0.5).unwrap();
-        let a = layers.radius_guess();
         let n = 20;
-        let dx = 2.0 * 1.4 * a / n as f64;
-        let range = (0.3 * a / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
-        let sheet = Sheet::new(&layers, 1.0, n, dx, range);
+        let (sheet, a) = coarse(1.0, 1.0, n);
         let state = sheet.cold_state(0.1 * a * a).unwrap();
         let cells = n * n;
         let dp: Vec<f64> = state.gap.iter().map(|&g| sheet.law.pressure(g).1).collect();
@@ -319,12 +316,7 @@ mod tests {
     #[test]
     fn the_least_eigenvalue_vanishes_at_the_fold_in_the_approach() {
         use super::super::Sheet as S;
-        let layers = Layers::equal(1.0, 0.5).unwrap();
-        let a = layers.radius_guess();
-        let n = 40;
-        let dx = 2.0 * 1.4 * a / n as f64;
-        let range = (0.3 * a / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
-        let sheet = Sheet::new(&layers, 1.0, n, dx, range);
+        let (sheet, a) = coarse(1.0, 1.0, 40);
         let mut st = sheet.cold_state(0.0).unwrap();
         // down in δ̄ in steps halved where Newton fails or lands off the
         // branch (the force jumps: below the fold Newton can find the
@@ -385,23 +377,21 @@ mod tests {
     /// The least eigenvalues along the path of a contact unloaded under
     /// displacement control, on each rung's grid: from a loaded state down
     /// through the pull-off under load control towards the one under
-    /// displacement control. THINJKR_STAB_THIN (h/L, default 0.73),
-    /// THINJKR_STAB_RHO (default 1), THINJKR_STAB_RUNGS (default
-    /// 0.2:4,0.1:4,0.05:4).
+    /// displacement control (THINJKR_STAB_DOWN=0: not below the pull-off
+    /// under load control). THINJKR_STAB_THIN (h/L, default 0.73),
+    /// THINJKR_STAB_RHO (default 1), THINJKR_STAB_RUNGS (default 0.2:4),
+    /// THINJKR_STAB_COUNT and THINJKR_STAB_KRYLOV (the eigenvalues asked
+    /// and Arnoldi's steps, default 4 and 100), THINJKR_STAB_UP and
+    /// THINJKR_STAB_UPS (the loaded states, default 4 at every 0.1 a²),
+    /// THINJKR_STAB_KEEP (below the pull-off, every how many states; 4).
     #[test]
-    #[ignore = "exploration: the least eigenvalues along the unloading path (minutes)"]
+    #[ignore = "exploration: the least eigenvalues along the unloading path (a minute as it stands; the slow tier runs it)"]
     fn explore_path() {
         use super::super::{pull_off_ladder, Sheet as S};
         let var = |k: &str, d: &str| std::env::var(k).unwrap_or(d.into());
         let thin: f64 = var("THINJKR_STAB_THIN", "0.73").parse().unwrap();
         let rho: f64 = var("THINJKR_STAB_RHO", "1").parse().unwrap();
-        let rungs: Vec<(f64, f64)> = var("THINJKR_STAB_RUNGS", "0.2:4,0.1:4,0.05:4")
-            .split(',')
-            .map(|x| {
-                let (e, n) = x.split_once(':').unwrap();
-                (e.parse().unwrap(), n.parse().unwrap())
-            })
-            .collect();
+        let rungs = rungs_of(&var("THINJKR_STAB_RUNGS", "0.2:4"));
         let layers = Layers::equal(thin, 0.5).unwrap();
         let a = layers.radius_guess();
         let ladder = pull_off_ladder(&layers, rho, &rungs, &mut |_| {}).unwrap();
@@ -426,7 +416,8 @@ mod tests {
                 path.push(prev.clone());
             }
             let (mut prev, mut h, mut k) = (po.clone(), 0.02 * a * a, 0);
-            while h > 1e-5 * a * a && k < 2000 {
+            let down = var("THINJKR_STAB_DOWN", "1") != "0";
+            while down && h > 1e-5 * a * a && k < 2000 {
                 let d = prev.delta_bar - h;
                 match sheet.state(d, &S::predict(&prev, d)) {
                     // (not a jump off the branch: below its fold Newton can

@@ -1,12 +1,13 @@
-//! The slow tier's hold on docs/thickness.md's grid and edge tables: every
+//! The slow tier's hold on docs/thickness.md's grid, edge and stability tables: every
 //! row computed again and compared digit for digit as printed (issue 71's
 //! tables were typed in from the explorations' output; these tests keep
-//! them the code's). About 23 minutes; `.ci/slow` runs them.
+//! them the code's). About 33 minutes; `.ci/slow` runs them.
 //!
 //! Owns: nothing. May use: `layer` (the pair and its axisymmetric
 //! reference), `exact` ((2)'s exact pull-off), the grid's
-//! `pull_off_ladder`, `jkr_limit`, `edge` and `plane` (the model layer's
-//! answer in the plane), `control` (the hold of a state at a force).
+//! `pull_off_ladder`, `jkr_limit`, `edge`, `plane` (the model layer's
+//! answer in the plane) and `stability` (the least eigenvalues on the
+//! unloading path), `control` (the hold of a state at a force).
 
 use super::edge::{stiffness_minimum, LineContact};
 use super::{jkr_limit, pull_off_ladder};
@@ -374,6 +375,82 @@ fn the_edge_table_of_the_docs_is_the_solver_s() {
                 lambda,
                 &mut bad,
             );
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "docs/thickness.md differs:\n{}",
+        bad.join("\n")
+    );
+}
+
+/// The header of docs/thickness.md's table of the least eigenvalues on
+/// the unloading path.
+const STABILITY_HEADER: &str =
+    "| θ | ρ | h/L | ε | cells | loaded F̄ | its least λ | n | pull-off F̄ | its least λ | n |";
+
+#[test]
+#[ignore = "slow tier (.ci/slow): the least eigenvalues on the unloading path of docs/thickness.md, about 10 minutes"]
+fn the_stability_table_of_the_docs_is_the_solver_s() {
+    use super::stability::least_modes;
+    let doc = doc();
+    let mut bad = Vec::new();
+    let rows = table(&doc, STABILITY_HEADER);
+    assert!(!rows.is_empty());
+    // one ladder ε = 0.2, 0.1 for each pair of coatings and ρ
+    let mut done: Vec<(String, String)> = Vec::new();
+    for row in &rows {
+        let key = (row[1].clone(), row[2].clone());
+        if done.contains(&key) {
+            continue;
+        }
+        done.push(key);
+        let rho = rho_of(&row[1]);
+        let thin: f64 = row[2].parse().expect("h/L");
+        let layers = Layers::equal(thin, 0.5).unwrap();
+        let a = layers.radius_guess();
+        let ladder = pull_off_ladder(&layers, rho, &[(0.2, 4.0), (0.1, 4.0)], &mut |_| {}).unwrap();
+        for rung in &ladder {
+            let Some(row) = rows
+                .iter()
+                .find(|r| r[1] == row[1] && r[2] == row[2] && r[3].parse::<f64>() == Ok(rung.eps))
+            else {
+                continue;
+            };
+            let at = format!("{} at eps {}", row[0], rung.eps);
+            let sheet = rung.sheet(&layers, rho);
+            let po = sheet.state(rung.state.delta_bar, &rung.state.gap).unwrap();
+            // the path: the pull-off and four loaded states above it
+            let mut path = vec![po.clone()];
+            for k in 1..=4 {
+                let d = po.delta_bar + 0.1 * k as f64 * a * a;
+                let next = sheet
+                    .state(d, &super::Sheet::predict(path.last().unwrap(), d))
+                    .unwrap();
+                path.push(next);
+            }
+            let least: Vec<_> = path
+                .iter()
+                .map(|s| least_modes(&sheet, s, 2, 120).unwrap().remove(0))
+                .collect();
+            if least.iter().any(|m| m.eigenvalue <= 0.0) {
+                bad.push(format!("{at}: a state on the path is unstable: {least:?}"));
+            }
+            if row[4] != rung.n.to_string() {
+                bad.push(format!("{at}: cells {} against {}", rung.n, row[4]));
+            }
+            for (state, mode, cells) in [(&path[4], &least[4], 5), (&path[0], &least[0], 8)] {
+                check(&format!("{at}: F"), state.force_bar, &row[cells], &mut bad);
+                check(
+                    &format!("{at}: lambda"),
+                    mode.eigenvalue,
+                    &row[cells + 1],
+                    &mut bad,
+                );
+                if row[cells + 2] != mode.n.to_string() {
+                    bad.push(format!("{at}: n {} against {}", mode.n, row[cells + 2]));
+                }
+            }
         }
     }
     assert!(

@@ -8,8 +8,29 @@
 use super::*;
 use crate::layer::{Layers, Route};
 
-/// The half width of the grid of the slope's test, in size scales.
+/// The half width of the tests' coarse grids, in size scales.
 const WIDTH: f64 = 1.4;
+
+/// The rungs of a ladder as the explorations read them, `ε:cells,…`.
+pub(super) fn rungs_of(text: &str) -> Vec<(f64, f64)> {
+    text.split(',')
+        .map(|x| {
+            let (e, n) = x.split_once(':').expect("eps:cells");
+            (e.parse().expect("eps"), n.parse().expect("cells"))
+        })
+        .collect()
+}
+
+/// A coarse grid of the tests: equal incompressible coatings of thinness
+/// `thin` at `rho` on n × n cells over [`WIDTH`] size scales each side, a
+/// process zone of 0.3 size scales; with the size scale a.
+pub(super) fn coarse(thin: f64, rho: f64, n: usize) -> (Sheet, f64) {
+    let layers = Layers::equal(thin, 0.5).unwrap();
+    let a = layers.radius_guess();
+    let dx = 2.0 * WIDTH * a / n as f64;
+    let range = (0.3 * a / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
+    (Sheet::new(&layers, rho, n, dx, range), a)
+}
 
 #[test]
 #[ignore = "exploration: prints the grid solver's pull-offs on a ladder of grids"]
@@ -20,14 +41,7 @@ fn explore_ladder() {
     let rho: f64 = std::env::var("THINJKR_GRID_RHO")
         .map(|v| v.parse().unwrap())
         .unwrap_or(1.0);
-    let rungs: Vec<(f64, f64)> = std::env::var("THINJKR_GRID_RUNGS")
-        .unwrap_or("0.2:4,0.2:8".into())
-        .split(',')
-        .map(|x| {
-            let (e, n) = x.split_once(':').unwrap();
-            (e.parse().unwrap(), n.parse().unwrap())
-        })
-        .collect();
+    let rungs = rungs_of(&std::env::var("THINJKR_GRID_RUNGS").unwrap_or("0.2:4,0.2:8".into()));
     let layers = Layers::equal(thin, 0.5).unwrap();
     let reference = layers.pull_off(Route::Griffith).unwrap().load.force_bar;
     pull_off_ladder(&layers, rho, &rungs, &mut |r| {
@@ -58,12 +72,9 @@ fn the_force_slope_is_the_derivative_of_the_force() {
     // δ̄ ± η (error of order η², about 1e-9 here); two coatings as thick
     // as the contact is wide and thinner ones at ρ = 0.6
     for (thin, rho) in [(1.0, 1.0), (0.4, 0.6)] {
-        let layers = Layers::equal(thin, 0.5).unwrap();
-        let a = layers.radius_guess();
         let n = 40;
-        let dx = 2.0 * WIDTH * a / n as f64;
-        let range = (0.3 * a / (4.0 * layers.beta() * std::f64::consts::E.powi(2))).sqrt();
-        let s = Sheet::new(&layers, rho, n, dx, range);
+        let (s, a) = coarse(thin, rho, n);
+        let range = s.law.range;
         let delta = 0.25 * a * a;
         let mid = s.cold_state(delta).unwrap();
         let eta = 1e-4 * a * a;
