@@ -110,14 +110,27 @@ pub(crate) fn least_modes(
     }
     let steps = basis.len().min(m);
     let hm = h.view((0, 0), (steps, steps)).into_owned();
-    // the Ritz values of J⁻¹, largest in size first (J's nearest zero)
-    let mut ritz: Vec<f64> = hm
-        .complex_eigenvalues()
+    // the Ritz values of J⁻¹, largest in size first (J's nearest zero); J's
+    // eigenvalues are real, so a complex one among the first `count` is one
+    // not yet converged, and none after it may be reported as the least
+    let mut all: Vec<nalgebra::Complex<f64>> = hm.complex_eigenvalues().iter().copied().collect();
+    all.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
+    if let Some(z) = all
         .iter()
-        .filter(|z| z.im.abs() <= 1e-8 * z.re.abs().max(1e-300))
-        .map(|z| z.re)
-        .collect();
-    ritz.sort_by(|a, b| b.abs().total_cmp(&a.abs()));
+        .take(count)
+        .find(|z| z.im.abs() > 1e-8 * z.norm())
+    {
+        return Err(Error::Unresolved {
+            what: format!(
+                "the grid state's least eigenvalues at delta_bar = {}: a complex Ritz value among them after {steps} Arnoldi steps (1/lambda = {} with imaginary part {}), not converged",
+                rounded(state.delta_bar),
+                rounded(z.re),
+                rounded(z.im)
+            ),
+            residual: z.im.abs() / z.norm(),
+        });
+    }
+    let ritz: Vec<f64> = all.iter().map(|z| z.re).collect();
     let mut modes: Vec<Mode> = Vec::new();
     for theta in ritz {
         if modes.len() == count {
