@@ -1007,9 +1007,8 @@ impl Exact {
     /// from them: [`Exact::keeping_the_speed_of_grooved`]), else θ
     /// proportional to arclength. (A trace from a grooved pull-off in the
     /// plain gauge fails at its first step.)
-    #[cfg(feature = "cli")]
     pub(crate) fn of_state(st: &ExactState) -> Result<Exact> {
-        Exact::of_state_with(st, st.truncation)
+        Ok(Exact::on(st.gap, st.rho, st.truncation)?.keeping_the_speed_of_grooved(&st.contour))
     }
 
     /// [`Exact::of_state`] with another truncation (a finer or coarser

@@ -26,12 +26,20 @@
 //! gives the pull-off under load control in the plane, [`PlaneState`]
 //! (issue 71).
 //!
+//! Coatings thin against the contact, below the grid's reach, are taken at
+//! first order in h/L at any ρ by `thin`: (2)'s exact pull-off with the
+//! layer's edge as a line tension.
+//!
 //! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`], `Controlled`. May use:
-//! `control` (what a state is held at), `error`, `quadrature` (Gauss–Legendre), `generated` (the layer's kernel), `model` (Brent's minimum).
+//! `control` (what a state is held at), `error`, `quadrature` (Gauss–Legendre), `generated` (the layer's kernel), `model` (Brent's minimum),
+//! `exact` (the exact solution of (2), in `thin`).
 
 mod bessel;
 mod energy;
 mod galerkin;
+// the first order in h/L at any ρ (issue 71): where the grid does not reach
+#[allow(dead_code)]
+pub(crate) mod thin;
 // the grid solver of issue 71: its pull-off in the plane answers through
 // the model layer (`grid::plane`); the straight edge's undulations are
 // tested here

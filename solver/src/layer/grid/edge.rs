@@ -388,6 +388,40 @@ mod tests {
         }
     }
 
+    /// The line contact on thin coatings is (2)'s, δ̄ = ā²/6 − 1/ā and
+    /// F̄ = 2ā³δ̄/3 − ā⁵/15 per unit length, at the half width ā + b̄: its
+    /// edges lie b̄ inside (2)'s, the shift of `layer::thin::edge_shift` from
+    /// the kernel's Wiener–Hopf factorisation. Measured at ā = 2 on
+    /// h/L = 0.04, 0.02 and 0.01, extrapolated in h/L; a straight edge has
+    /// no curvature, so the line tension leaves Griffith's condition alone.
+    #[test]
+    fn the_straight_edge_lies_the_wiener_hopf_shift_inside_equation_2_s() {
+        let a = 2.0f64;
+        let delta0 = a * a / 6.0 - 1.0 / a;
+        let delta_slope = a / 3.0 + 1.0 / (a * a);
+        let force_slope = 2.0 * (delta_slope * a.powi(3) / 3.0 + delta0 * a * a) - a.powi(4) / 3.0;
+        let force0 = 2.0 * a.powi(3) * delta0 / 3.0 - a.powi(5) / 15.0;
+        let mut by_delta = Vec::new();
+        let mut by_force = Vec::new();
+        for (thin, modes) in [(0.04, 120), (0.02, 200), (0.01, 300)] {
+            let layers = Layers::equal(thin, 0.5).unwrap();
+            let st = LineContact::new(&layers, modes).state(a).unwrap();
+            assert!(st.tail < 1e-11, "h/L {thin}: tail {}", st.tail);
+            by_delta.push((st.delta_bar - delta0) / (thin * delta_slope));
+            by_force.push((st.force_bar - force0) / (thin * force_slope));
+        }
+        // the quadratic in h/L through the three, at 0
+        let limit = |s: &[f64]| (4.0 * (2.0 * s[2] - s[1]) - (2.0 * s[1] - s[0])) / 3.0;
+        let shift = crate::layer::thin::edge_shift(&Layers::equal(1.0, 0.5).unwrap()).unwrap();
+        for (what, s) in [("delta", &by_delta), ("force", &by_force)] {
+            let l = limit(s);
+            assert!(
+                (l / shift - 1.0).abs() < 5e-5,
+                "{what}: {s:?} -> {l} against {shift}"
+            );
+        }
+    }
+
     /// A number from the environment, or `default`.
     fn var(name: &str, default: f64) -> f64 {
         std::env::var(name)
