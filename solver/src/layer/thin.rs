@@ -21,7 +21,7 @@
 //! incompressible coatings of thickness h). Only incompressible coatings
 //! have (2) as their thin limit; the shift of others is refused.
 //!
-//! Owns: `edge_shift`, `FirstOrder`, `first_order_pull_off`. May use:
+//! Owns: `edge_shift`, `FirstOrder`, `first_order_pull_off`, `first_order_at`. May use:
 //! `layer` (the pair's compliance), `exact` (the exact pull-off of (2) and
 //! its linearisation), `control`, `quadrature`, `error`.
 
@@ -113,14 +113,29 @@ pub(crate) struct FirstOrder {
 /// ∂p̄/∂ν = 1 − κ̄/2 per unit b̄ at fixed ā (at the pull-off, a minimum of
 /// F̄, the same as at fixed δ̄ or along any parameter of the branch).
 pub(crate) fn first_order_pull_off(layers: &Layers, rho: f64) -> Result<FirstOrder> {
-    let shift = edge_shift(layers)?;
     let (thin_limit, _) = pull_off_resolved(rho)?;
+    first_order_at(layers, thin_limit)
+}
+
+/// [`first_order_pull_off`] at (2)'s exact pull-off `thin_limit`, found
+/// already.
+pub(crate) fn first_order_at(layers: &Layers, thin_limit: ExactState) -> Result<FirstOrder> {
+    let shift = edge_shift(layers)?;
     let force_per_shift = force_per_shift(&thin_limit)?;
     Ok(FirstOrder {
         thin_limit,
         force_per_shift,
         shift,
     })
+}
+
+impl FirstOrder {
+    /// The factor on the coatings' thicknesses at which (2)'s pull-off is
+    /// off the layer's by `error` at first order, (2)'s relative error
+    /// −F̄₍₂₎/F̄ − 1 (for equal coatings of thinness 1, the h/L).
+    pub(crate) fn thickness_factor_for_error(&self, error: f64) -> f64 {
+        -self.thin_limit.force_bar * error / ((1.0 + error) * self.shift * self.force_per_shift)
+    }
 }
 
 /// The exact problem of a state, as it was solved (its points crowded into

@@ -481,7 +481,7 @@ pub(crate) fn first_order_row(rho: f64) -> crate::error::Result<Vec<String>> {
     let first = crate::layer::thin::first_order_pull_off(&layers, rho)?;
     let (f2, half) = (first.thin_limit.force_bar, first.force_per_shift);
     let per_h = half * first.shift;
-    let off = |e: f64| -f2 * e / ((1.0 + e) * per_h);
+    let off = |e: f64| first.thickness_factor_for_error(e);
     let theta = 2.0 * rho.sqrt().atan().to_degrees();
     Ok(vec![
         if (theta - theta.round()).abs() < 1e-9 {
