@@ -551,7 +551,17 @@ fn in_the_plane(
     thin: &mut PhysicalAnswer,
 ) -> crate::Result<Option<PhysicalAnswer>> {
     let sc = cyl.scales()?;
-    let layers = layers_of(cyl, &sc)?;
+    // coatings the layer does not take (thinner than h/L = 0.001, thicker
+    // than 10⁴): (2)'s answer stands, and says so, as at ρ = 1
+    let layers = match layers_of(cyl, &sc) {
+        Ok(layers) => layers,
+        Err(e) => {
+            thin.warnings.push(format!(
+                "the layer of finite thickness has no answer to measure (2) against: {e}"
+            ));
+            return Ok(None);
+        }
+    };
     // coatings thinner than the grid reaches, where the first order in h/L
     // holds at this ρ: it judges (2)
     if layers.thinnest() < crate::layer::grid::plane::REACH.0

@@ -573,6 +573,16 @@ fn physical_judges_thin_coatings_by_the_first_order_in_h_over_l() {
     // h = 10 nm, h/L = 0.0058: (2) within 0.5 % at first order, no warning
     let thin = thinjkr::registry::physical(None, &at(1e-8), None, None).unwrap();
     assert_eq!(off(&thin), None, "{:?}", thin.warnings);
+    // h = 0.1 nm, h/L = 0.00058: thinner than the layer takes; (2)
+    // answers and says that nothing measures it (an error before)
+    let thinnest = thinjkr::registry::physical(None, &at(1e-10), None, None).unwrap();
+    assert!(
+        thinnest.warnings.iter().any(|w| w.starts_with(
+            "the layer of finite thickness has no answer to measure (2) against: parameter h1/L"
+        )),
+        "{:?}",
+        thinnest.warnings
+    );
     // h = 10 µm, h/L = 0.18: beyond the first order's reach (a correction
     // of 7.7 %) and the grid's; ρ = 1's ratio as before
     let thick = thinjkr::registry::physical(None, &at(1e-5), None, None).unwrap();
