@@ -569,12 +569,17 @@ fn render_conformal(rows: &[Row]) -> String {
 /// (`layer::thin`).
 #[cfg(feature = "cli")]
 fn render_layer(rows: &[Row]) -> String {
-    let mut o = String::from(
+    // b/h of equal incompressible coatings (a quadrature; it fails only for
+    // compressible ones)
+    let shift = crate::layer::Layers::equal(1.0, 0.5)
+        .and_then(|l| crate::layer::thin::edge_shift(&l))
+        .map_or_else(|e| format!("(not computed: {e})"), |b| format!("{b:.6}"));
+    let mut o = format!(
         "\n## (2) against the layer of finite thickness\n\n\
          Every row above measures a model against the exact solution of the thin-layer equation (2); the \
          coatings' finite thickness measures (2) itself ([thickness.md](thickness.md)). For coatings thin \
          against the contact the layer's pull-off is (2)'s exact pull-off moved at first order in h/L: \
-         the layer's edge acts on (2) as a line tension Δγ·b, b = 1.459081 h for two equal incompressible \
+         the layer's edge acts on (2) as a line tension Δγ·b, b = {shift} h for two equal incompressible \
          coatings of thickness h, and the pull-off force moves by ½b̄ dP̄/dδ̄ (P̄ the contour's perimeter \
          along (2)'s branch; thickness.md, \"Thin coatings: the first order in h/L\"). Per row: (2)'s \
          pull-off, ½dP̄/dδ̄ there, dF̄/d(h/L), its share of −F̄ ((2)'s relative error per unit h/L), and \
@@ -603,18 +608,15 @@ pub(crate) fn render_layer_row(r: &Row) -> Option<String> {
             let first = crate::layer::Layers::equal(1.0, 0.5)
                 .and_then(|l| crate::layer::thin::first_order_at(&l, st.clone()));
             match first {
-                Ok(f) => {
-                    let per_h = f.force_per_shift * f.shift;
-                    format!(
-                        "{:.6} | {:.6} | {:.5} | {:.4} | {:.5} | {:.4}",
-                        st.force_bar,
-                        f.force_per_shift,
-                        per_h,
-                        -per_h / st.force_bar,
-                        f.thickness_factor_for_error(0.01),
-                        f.thickness_factor_for_error(0.05)
-                    )
-                }
+                Ok(f) => format!(
+                    "{:.6} | {:.6} | {:.5} | {:.4} | {:.5} | {:.4}",
+                    st.force_bar,
+                    f.force_per_shift,
+                    f.force_moved(),
+                    f.share(),
+                    f.thickness_factor_for_error(0.01),
+                    f.thickness_factor_for_error(0.05)
+                ),
                 Err(e) => format!(
                     "{:.6} | {} | — | — | — | —",
                     st.force_bar,

@@ -518,12 +518,11 @@ fn judged_by_first_order(
         return false;
     };
     let f2 = first.thin_limit.force_bar;
-    let moved = first.shift * first.force_per_shift;
-    let correction = (moved / f2).abs();
+    let correction = first.share().abs();
     if correction > FIRST_ORDER_REACH {
         return false;
     }
-    let layered = f2 + moved;
+    let layered = f2 + first.force_moved();
     let error = (f2 / layered - 1.0).abs();
     if error > THIN_LAYER_TOLERANCE {
         // first: it is about the answer's force itself

@@ -82,7 +82,7 @@ pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
     let c = (f2 - f1) / (3.0 * k0 * k0);
     let a = f1 - c * k0 * k0;
     let mut sum = a * k0 + c * k0.powi(3) / 3.0;
-    // [k₀, K] in ln k̄, panels of a tenth of a decade's natural log
+    // [k₀, K] in ln k̄, panels 0.25 wide
     let top = TOP / thin;
     let (lo, hi) = (k0.ln(), top.ln());
     let panels = ((hi - lo) / 0.25).ceil() as usize;
@@ -130,24 +130,30 @@ pub(crate) fn first_order_at(layers: &Layers, thin_limit: ExactState) -> Result<
 }
 
 impl FirstOrder {
+    /// The pull-off force's move at first order, b̄·½dP̄/dδ̄ (for equal
+    /// coatings of thinness 1, dF̄/d(h/L)).
+    pub(crate) fn force_moved(&self) -> f64 {
+        self.shift * self.force_per_shift
+    }
+
+    /// [`FirstOrder::force_moved`] as a share of −F̄₍₂₎: (2)'s relative
+    /// error at first order.
+    pub(crate) fn share(&self) -> f64 {
+        -self.force_moved() / self.thin_limit.force_bar
+    }
+
     /// The factor on the coatings' thicknesses at which (2)'s pull-off is
     /// off the layer's by `error` at first order, (2)'s relative error
     /// −F̄₍₂₎/F̄ − 1 (for equal coatings of thinness 1, the h/L).
     pub(crate) fn thickness_factor_for_error(&self, error: f64) -> f64 {
-        -self.thin_limit.force_bar * error / ((1.0 + error) * self.shift * self.force_per_shift)
+        error / ((1.0 + error) * self.share())
     }
-}
-
-/// The exact problem of a state, as it was solved (its points crowded into
-/// a narrow groove where it has one).
-fn problem_of(st: &ExactState) -> Result<Exact> {
-    Exact::of_state(st)
 }
 
 /// ∂F̄/∂b̄ at fixed ā of (2)'s state `st` under ∂p̄/∂ν = 1 − b̄κ̄/2: one
 /// solve with the Jacobian of its discrete equations.
 pub(crate) fn force_per_shift(st: &ExactState) -> Result<f64> {
-    let ex = problem_of(st)?;
+    let ex = Exact::of_state(st)?;
     let u = ex.unknowns(st);
     let singular = || Error::Unresolved {
         what: format!(

@@ -489,7 +489,6 @@ pub(crate) fn first_order_row(rho: f64) -> crate::error::Result<Vec<String>> {
     let layers = Layers::equal(1.0, 0.5)?;
     let first = crate::layer::thin::first_order_pull_off(&layers, rho)?;
     let (f2, half) = (first.thin_limit.force_bar, first.force_per_shift);
-    let per_h = half * first.shift;
     let off = |e: f64| first.thickness_factor_for_error(e);
     let theta = 2.0 * rho.sqrt().atan().to_degrees();
     Ok(vec![
@@ -501,8 +500,8 @@ pub(crate) fn first_order_row(rho: f64) -> crate::error::Result<Vec<String>> {
         format!("{rho:.6}"),
         format!("{f2:.7}"),
         format!("{half:.7}"),
-        format!("{per_h:.6}"),
-        format!("{:.4}", -per_h / f2),
+        format!("{:.6}", first.force_moved()),
+        format!("{:.4}", first.share()),
         format!("{:.5}", off(0.01)),
         format!("{:.4}", off(0.05)),
     ])
@@ -510,13 +509,20 @@ pub(crate) fn first_order_row(rho: f64) -> crate::error::Result<Vec<String>> {
 
 /// docs/thickness.md's first-order table, every row computed again: ρ
 /// from θ where θ is a whole number of degrees (the ten-angle table's
-/// angles, equal cylinders), else as printed.
+/// angles, equal cylinders), else as printed; and the shift b/h its prose
+/// gives.
 #[test]
 fn the_first_order_table_of_the_docs_is_the_solver_s() {
     let doc = doc();
     let rows = table(&doc, FIRST_ORDER_HEADER);
     assert_eq!(rows.len(), 12, "{rows:?}");
     let mut bad = Vec::new();
+    // the prose's shift, b/h of equal incompressible coatings
+    let shift = crate::layer::thin::edge_shift(&Layers::equal(1.0, 0.5).unwrap()).unwrap();
+    let printed = format!("b/h = {shift:.7}");
+    if !doc.contains(&printed) {
+        bad.push(format!("no {printed} in the prose"));
+    }
     for row in rows {
         let theta = row[0].trim_end_matches('°');
         let rho = if theta.contains('.') {
