@@ -244,6 +244,7 @@ pub fn exact_state_on_gap(
             rho,
             control,
             &crate::exact::ladder::Ladder::of(t.to_vec()),
+            &mut |_| {},
         ),
     }
 }

@@ -71,9 +71,7 @@ pub(crate) use ladder::MAX_ESCALATED_MODES;
 use nalgebra::{Complex, DMatrix, DVector};
 #[cfg(feature = "cli")]
 pub(crate) use resolve::pull_off_followed_in_arclength_visiting;
-pub use resolve::{
-    at_resolved, at_searched, default_tries, pull_off_resolved, pull_off_with, CONVERGED,
-};
+pub use resolve::{at_resolved, at_searched, default_tries, pull_off_resolved, CONVERGED};
 pub(crate) use resolve::{
     at_resolved_on, at_resolved_searching, pull_off_on, pull_off_resolved_on, resolved,
     searched_on, RESOLVED,

@@ -7,6 +7,10 @@
 //! (the contour, the fields, the equations, one truncation's Newton) is the
 //! parent's.
 //!
+//! The routes and their order are two tables, [`STATE_ROUTES`] and
+//! [`PULL_OFF_ROUTES`], run by one loop ([`run`]); what every route
+//! missed is one typed error ([`Misses`]).
+//!
 //! Owns: [`CONVERGED`], [`RESOLVED`], [`default_tries`], [`resolved`],
 //! [`pull_off_resolved`], [`at_resolved`], [`at_searched`],
 //! [`continued_in_rho`]. May use: its parent `exact`, `control`, `error`, `progress` (the
@@ -199,43 +203,14 @@ pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     pull_off_resolved_on(Gap::cylinders(), rho)
 }
 
-/// [`pull_off_resolved`] on `gap`.
+/// [`pull_off_resolved`] on `gap`: below ρ = 0.3 on the cylinders' gap
+/// from the stored pull-offs (the same pull-off as the follow from ρ = 0.3
+/// reaches, sooner), else by the routes of [`PULL_OFF_ROUTES`].
 pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
-    // below ρ = 0.3 on the cylinders' gap: from the stored pull-offs (the
-    // same pull-off as the follow from ρ = 0.3 reaches, sooner)
     if let Some(followed) = super::stored::pull_off(gap, rho) {
         return followed.map(|st| (st, Vec::new()));
     }
-    match pull_off_on(gap, rho, &Ladder::conformal()) {
-        // not found, or not resolved by the conformal form's escalation:
-        // followed in ρ from the pull-off at a larger ρ in the arclength
-        // representation, else continued in the conformal form
-        Err(e @ (Error::NoState(_) | Error::Unresolved { .. })) => {
-            let why = e.detail();
-            let Some((start, _)) =
-                first_above(gap, rho, |r| pull_off_on(gap, r, &Ladder::conformal()))
-            else {
-                return Err(Error::NoState(format!(
-                    "{why}; no pull-off found at any rho above it in steps of 0.1 to continue from"
-                )));
-            };
-            pull_off_followed_in_arclength(&start, rho)
-                .map(|st| (st, Vec::new()))
-                .or_else(|arclength| {
-                    // (the arclength follow, the deepest route, said first)
-                    pull_off_continued_in_rho(&start, rho).map_err(|conformal| {
-                        let what = format!("{}; {why}; {}", arclength.detail(), conformal.detail());
-                        match arclength {
-                            Error::StopsInRho { reached, .. } => {
-                                Error::StopsInRho { reached, what }
-                            }
-                            _ => Error::NoState(what),
-                        }
-                    })
-                })
-        }
-        other => other,
-    }
+    run(&PULL_OFF_ROUTES, &Asked::new(gap, rho, None))
 }
 
 /// The pull-off at `rho`, continued in ρ from `start`, the converged
@@ -248,15 +223,7 @@ pub(crate) fn pull_off_continued_in_rho(
     start: &ExactState,
     rho: f64,
 ) -> Result<(ExactState, Vec<branch::Event>)> {
-    pull_off_continued_in_rho_along(start, rho, &Ladder::conformal())
-}
-
-/// [`pull_off_continued_in_rho`] climbing `ladder`.
-pub(crate) fn pull_off_continued_in_rho_along(
-    start: &ExactState,
-    rho: f64,
-    ladder: &Ladder,
-) -> Result<(ExactState, Vec<branch::Event>)> {
+    let ladder = &Ladder::conformal();
     let mut at = (start.clone(), Vec::new());
     let walked = walk_down(
         &mut at,
@@ -289,12 +256,8 @@ pub(crate) fn pull_off_continued_in_rho_along(
     Ok(at)
 }
 
-/// [`pull_off_resolved`] with the truncations `tries`.
-pub fn pull_off_with(rho: f64, tries: &[Truncation]) -> Result<(ExactState, Vec<branch::Event>)> {
-    pull_off_on(Gap::cylinders(), rho, &Ladder::of(tries.to_vec()))
-}
-
-/// [`pull_off_with`] on `gap`.
+/// The load-controlled pull-off at `rho` on `gap`, climbing `ladder`
+/// ([`resolved`]).
 pub(crate) fn pull_off_on(
     gap: Gap,
     rho: f64,
@@ -338,123 +301,283 @@ pub(crate) fn at_resolved_searching(gap: Gap, rho: f64, control: Hold) -> Result
     if let Some(below) = super::stored::below_the_floor(gap, rho, &asked) {
         return Err(below);
     }
-    crate::progress::stage(format!("the seed's state at {control} and its family"));
-    // the escalation's best state, where it resolves one without converging
-    let mut best: Option<ExactState> = None;
-    let mut keep_best = |st: &ExactState| {
-        if best.as_ref().is_none_or(|b| st.bc_error < b.bc_error) {
-            best = Some(st.clone());
+    run(&STATE_ROUTES, &Asked::new(gap, rho, Some(control)))
+}
+
+/// A route to an answer (issue 69: the routes and their order are data,
+/// [`STATE_ROUTES`] and [`PULL_OFF_ROUTES`]): the first miss it takes,
+/// the words that name it where every route misses, and the route itself,
+/// which answers or misses with a typed error.
+type Strategy<T> = (Takes, &'static str, fn(&Asked) -> Result<T>);
+
+/// Which first miss a route after the first answers.
+#[derive(Clone, Copy)]
+enum Takes {
+    /// None: it is the first route.
+    First,
+    /// The first found no state, or its Newton or trace did not converge.
+    NothingFound,
+    /// The first resolved the state ([`RESOLVED`]) but did not converge it.
+    NearlyResolved,
+    /// The first found no pull-off, or did not resolve it.
+    NoPullOff,
+}
+
+impl Takes {
+    fn first(self, e: &Error) -> bool {
+        match self {
+            Takes::First => false,
+            Takes::NothingFound => matches!(e, Error::NoState(_) | Error::NoConvergence { .. }),
+            Takes::NearlyResolved => {
+                matches!(e, Error::Unresolved { residual, .. } if *residual <= RESOLVED)
+            }
+            Takes::NoPullOff => matches!(e, Error::NoState(_) | Error::Unresolved { .. }),
         }
-    };
-    match searched_visiting(gap, rho, control, &Ladder::conformal(), &mut keep_best) {
-        // not reached, and not in a band: from the state at a larger ρ
-        // (a value in a band, Error::InBand, is answered as it is)
-        // (a fold in ρ of the family continued from a larger ρ is said
-        // first, as what decides)
-        // (a search whose Newton or trace did not converge found no state
-        // either: the same routes follow)
-        Err(e @ (Error::NoState(_) | Error::NoConvergence { .. })) => {
-            let why = e.detail();
-            state_above(gap, rho, control)
-                .and_then(|start| {
-                    from_larger_rho(&start, rho, control).or_else(|more| match more {
-                        Error::PastRhoFold { fold, from, what } => {
-                            past_the_fold(&start, fold, from, what, rho, control)
-                        }
-                        more => Err(more),
-                    })
-                })
-                .or_else(|more| {
-                    crate::progress::stage("the seed's screen for every near-elliptic state");
-                    screened(gap, rho, control).map_err(|last| match more {
-                        Error::PastRhoFold { fold, from, what } => Error::PastRhoFold {
-                            fold,
-                            from,
-                            what: format!("{what}; {why}; {}", last.detail()),
-                        },
-                        more => {
-                            Error::NoState(format!("{why}; {}; {}", more.detail(), last.detail()))
-                        }
-                    })
-                })
+    }
+
+    /// The error where the routes that take `first` miss too, with the
+    /// words of every miss: not resolved where the first came near,
+    /// else no state.
+    fn all_missed(self, first: &Error, what: String) -> Error {
+        match (self, first) {
+            (Takes::NearlyResolved, Error::Unresolved { residual, .. }) => Error::Unresolved {
+                what,
+                residual: *residual,
+            },
+            _ => Error::NoState(what),
         }
-        // the conformal form's escalation came near but not to
-        // [`CONVERGED`] (at F̄ = 10 for 0.33 ≤ ρ ≤ 0.335, 1.5e-9 to 1.6e-8
-        // with its last rung): the same state solved again in the
-        // arclength representation
-        Err(e @ Error::Unresolved { residual, .. }) if residual <= RESOLVED => {
-            again_in_arclength(gap, rho, control, best).map_err(|more| Error::Unresolved {
-                what: format!(
-                    "{}; solved again in the arclength representation: {}",
-                    e.detail(),
-                    more.detail()
-                ),
-                residual,
-            })
-        }
-        other => other,
     }
 }
 
-/// The state at `control` at `rho` that the conformal form's escalation
-/// resolves ([`RESOLVED`]) but does not converge (its best, `best`), solved again by Newton at
-/// the control in the arclength representation from its contour, the
-/// modes escalated ([`resolved`], [`Ladder::arclength`] from as many modes);
-/// each finer state is accepted only within 1e-3 in ā of the conformal
-/// one (the same state, not a neighbour).
-fn again_in_arclength(
+/// The routes to a state at a control, in the order tried. The first is
+/// the seed's state at the control and its family with the conformal
+/// ladder ([`searched_on`]). Where it comes near but not to
+/// [`CONVERGED`] (at F̄ = 10 for 0.33 ≤ ρ ≤ 0.335, 1.5e-9 to 1.6e-8 with
+/// its last rung), the same state solved again in the arclength
+/// representation. Where it finds none (nor its Newton or trace
+/// converges), and the control lies in no band ([`Error::InBand`] is
+/// answered as it is): continued in ρ from the state at a larger ρ, and
+/// below a fold in ρ met on the way; then every near-elliptic state the
+/// seed's screen finds.
+const STATE_ROUTES: [Strategy<ExactState>; 4] = [
+    (Takes::First, "", seed_s_family),
+    (
+        Takes::NearlyResolved,
+        "solved again in the arclength representation",
+        again_in_arclength,
+    ),
+    (Takes::NothingFound, "", from_larger_rho),
+    (Takes::NothingFound, "", screened),
+];
+
+/// The routes to the load-controlled pull-off, in the order tried (below
+/// ρ = 0.3 on the cylinders' gap the stored pull-offs answer before
+/// them, [`pull_off_resolved_on`]): the conformal ladder's
+/// ([`pull_off_on`]); where that finds none or does not resolve it,
+/// followed in ρ from the pull-off at a larger ρ in the arclength
+/// representation ([`pull_off_followed_in_arclength`]), else continued in
+/// the conformal form ([`pull_off_continued_in_rho`]).
+const PULL_OFF_ROUTES: [Strategy<(ExactState, Vec<branch::Event>)>; 3] = [
+    (Takes::First, "", |asked| {
+        pull_off_on(asked.gap, asked.rho, &Ladder::conformal())
+    }),
+    (Takes::NoPullOff, "", |asked| {
+        pull_off_followed_in_arclength(&asked.above()?, asked.rho).map(|st| (st, Vec::new()))
+    }),
+    (Takes::NoPullOff, "", |asked| {
+        pull_off_continued_in_rho(&asked.above()?, asked.rho)
+    }),
+];
+
+/// What the routes are asked: the gap, ρ and the control of a state
+/// (`None`: the pull-off), and what a route leaves for the next: the
+/// escalation's best state, where it resolves one without converging, and
+/// the start at a larger ρ, found once for every route that needs it.
+struct Asked {
     gap: Gap,
     rho: f64,
-    control: Hold,
-    best: Option<ExactState>,
-) -> Result<ExactState> {
-    let near = best.ok_or_else(|| {
+    control: Option<Hold>,
+    best: std::cell::RefCell<Option<ExactState>>,
+    above: std::cell::OnceCell<Result<ExactState>>,
+}
+
+impl Asked {
+    fn new(gap: Gap, rho: f64, control: Option<Hold>) -> Asked {
+        Asked {
+            gap,
+            rho,
+            control,
+            best: Default::default(),
+            above: Default::default(),
+        }
+    }
+
+    /// The control of the state asked for.
+    fn control(&self) -> Result<Hold> {
+        self.control
+            .ok_or_else(|| Error::Usage("a state is asked at a control".into()))
+    }
+
+    /// The state at the control (or the pull-off) at the first larger ρ
+    /// where the conformal ladder finds it ([`first_above`]): the start of
+    /// the routes from a larger ρ, searched once.
+    fn above(&self) -> Result<ExactState> {
+        let (gap, rho) = (self.gap, self.rho);
+        self.above
+            .get_or_init(|| match self.control {
+                None => first_above(gap, rho, |r| pull_off_on(gap, r, &Ladder::conformal()))
+                    .map(|(st, _)| st)
+                    .ok_or_else(|| {
+                        Error::NoState(
+                            "no pull-off found at any rho above it in steps of 0.1 to continue from"
+                                .into(),
+                        )
+                    }),
+                Some(control) => {
+                    first_above(gap, rho, |r| {
+                        at_with(gap, r, control, &Ladder::conformal(), &mut |_| {})
+                    })
+                        .ok_or_else(|| {
+                            Error::NoState(format!(
+                                "no state at {control} found at any rho above it in steps of 0.1 to continue from"
+                            ))
+                        })
+                }
+            })
+            .clone()
+    }
+}
+
+/// `routes` in their order for `asked`: each after the first only where
+/// it takes the first's miss; the first answer, else one error of every
+/// miss ([`Misses::error`]).
+fn run<T>(routes: &[Strategy<T>], asked: &Asked) -> Result<T> {
+    let mut misses = Misses::default();
+    for (takes, words, route) in routes {
+        if misses.0.first().is_some_and(|(_, e)| !takes.first(e)) {
+            continue;
+        }
+        match route(asked) {
+            Ok(answer) => return Ok(answer),
+            Err(e) => misses.push(words, e),
+        }
+    }
+    Err(misses.error(routes.iter().map(|r| r.0)))
+}
+
+/// The misses of the routes to an answer, in the order tried, each with
+/// its route's words.
+#[derive(Default)]
+struct Misses(Vec<(&'static str, Error)>);
+
+impl Misses {
+    /// A miss, unless the same was said already (two routes from the same
+    /// missing start).
+    fn push(&mut self, words: &'static str, e: Error) {
+        if !self.0.iter().any(|(_, said)| *said == e) {
+            self.0.push((words, e));
+        }
+    }
+
+    /// One error for every miss: the only one as it is; else the last fold
+    /// in ρ or stop in ρ met on the way (the furthest the routes got)
+    /// decides the kind (a table reads where the family stops from it) and
+    /// is said first, the rest in order;
+    /// else the kind the routes that took the first miss give
+    /// ([`Takes::all_missed`]).
+    fn error(self, mut routes: impl Iterator<Item = Takes>) -> Error {
+        let mut misses = self.0;
+        if misses.len() == 1 {
+            return misses.remove(0).1;
+        }
+        let deciding =
+            |e: &Error| matches!(e, Error::PastRhoFold { .. } | Error::StopsInRho { .. });
+        let first = misses[0].1.clone();
+        if let Some(k) = misses.iter().rposition(|(_, e)| deciding(e)) {
+            let decides = misses.remove(k);
+            misses.insert(0, decides);
+        }
+        let what = misses
+            .iter()
+            .map(|(words, e)| match *words {
+                "" => e.detail(),
+                words => format!("{words}: {}", e.detail()),
+            })
+            .collect::<Vec<_>>()
+            .join("; ");
+        match misses.remove(0).1 {
+            Error::PastRhoFold { fold, from, .. } => Error::PastRhoFold { fold, from, what },
+            Error::StopsInRho { reached, .. } => Error::StopsInRho { reached, what },
+            _ => match routes.find(|t| t.first(&first)) {
+                Some(takes) => takes.all_missed(&first, what),
+                None => Error::NoState(what),
+            },
+        }
+    }
+}
+
+/// The first route to a state: the seed's state at the control and its
+/// family, the conformal ladder climbed ([`searched_on`]), keeping
+/// the best state it resolves without converging.
+fn seed_s_family(asked: &Asked) -> Result<ExactState> {
+    let control = asked.control()?;
+    crate::progress::stage(format!("the seed's state at {control} and its family"));
+    let mut keep_best = |st: &ExactState| {
+        let mut best = asked.best.borrow_mut();
+        if best.as_ref().is_none_or(|b| st.bc_error < b.bc_error) {
+            *best = Some(st.clone());
+        }
+    };
+    searched_on(
+        asked.gap,
+        asked.rho,
+        control,
+        &Ladder::conformal(),
+        &mut keep_best,
+    )
+}
+
+/// The state at the control that the conformal form's escalation
+/// resolves ([`RESOLVED`]) but does not converge (its best), solved again
+/// by Newton at the control in the arclength representation from its
+/// contour, the modes escalated ([`resolved`], [`Ladder::arclength`] from
+/// as many modes); each finer state is accepted only within 1e-3 in ā of
+/// the conformal one (the same state, not a neighbour).
+fn again_in_arclength(asked: &Asked) -> Result<ExactState> {
+    let control = asked.control()?;
+    let near = asked.best.borrow().clone().ok_or_else(|| {
         Error::NoState("the conformal form's escalation resolves no state to start from".into())
     })?;
     let ladder = Ladder::arclength().from_modes(near.truncation.modes);
     let of = format!("the state of {} modes", near.truncation.modes);
-    resolved(gap, rho, &ladder, |ex| {
+    resolved(asked.gap, asked.rho, &ladder, |ex| {
         again_within_its_size(ex, control, &near, &of, near.route)
     })
 }
 
-/// Below the fold in ρ (at `fold`, `from` and `what` its error's) of the
-/// family at `control` continued from `start`: the state at the tenth
-/// under the fold continued in ρ ([`below_the_fold`]), else on the arm of
-/// a larger contact from `start`, which the fold does not bind
+/// Below the fold in ρ at `fold` (`met`, its error) of the family at
+/// `control` continued from `start`: the state at the tenth under the fold
+/// continued in ρ ([`below_the_fold`]), else on the arm of a larger
+/// contact from `start`, which the fold does not bind
 /// ([`from_larger_contact`]). Where both fail, the error of the furthest
-/// fold met, with the routes before it.
+/// fold met, with the routes before it ([`Misses::error`]).
 fn past_the_fold(
     start: &ExactState,
     fold: f64,
-    from: f64,
-    what: String,
+    met: Error,
     rho: f64,
     control: Hold,
 ) -> Result<ExactState> {
-    let chained = match below_the_fold(start.gap, fold, rho, control) {
+    let mut misses = Misses::default();
+    misses.push("", met);
+    match below_the_fold(start.gap, fold, rho, control) {
         Ok(st) => return Ok(st),
-        Err(chained) => chained,
-    };
-    from_larger_contact(start, rho, control).map_err(|none| {
-        let what = format!("{what}; {}", none.detail());
-        match chained {
-            Some(Error::PastRhoFold {
-                fold: further,
-                from: stone,
-                what: how,
-            }) => Error::PastRhoFold {
-                fold: further,
-                from: stone,
-                what: format!("{how}; before that, {what}"),
-            },
-            Some(other) => Error::PastRhoFold {
-                fold,
-                from,
-                what: format!("{what}; {}", other.detail()),
-            },
-            None => Error::PastRhoFold { fold, from, what },
-        }
+        Err(Some(e)) => misses.push("", e),
+        Err(None) => {}
+    }
+    from_larger_contact(start, rho, control).map_err(|e| {
+        misses.push("", e);
+        misses.error(std::iter::empty())
     })
 }
 
@@ -534,13 +657,15 @@ fn below_the_fold(
 /// tenth (0.3 → 0.2 → 0.1 → 0.0 at most).
 const RUNGS: usize = 4;
 
-/// The last route to a state at `control`: every near-elliptic state the
+/// The last route to a state at the control: every near-elliptic state the
 /// seed's screen finds at that value ([`bands::states_at_on`], the search
 /// of `thinjkr exact solve --all`, ā from 1 to the larger of 4 and 1.2
 /// times the circle's ā), where no route before it finds one. Of several,
 /// the one nearest an ellipse among those where the seed's states cross
 /// the control (else past a fold).
-fn screened(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
+fn screened(asked: &Asked) -> Result<ExactState> {
+    let (gap, rho, control) = (asked.gap, asked.rho, asked.control()?);
+    crate::progress::stage("the seed's screen for every near-elliptic state");
     let a_circle = branch::circle_a_bar(&gap.at(1.0)?, control);
     let to = if a_circle.is_finite() {
         (1.2 * a_circle).max(4.0)
@@ -570,22 +695,18 @@ fn screened(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
 /// there either, and the control lies in a band, the error says so
 /// (`bands::past_folds_or_band`).
 pub fn at_searched(rho: f64, control: Hold, tries: &[Truncation]) -> Result<ExactState> {
-    searched_on(Gap::cylinders(), rho, control, &Ladder::of(tries.to_vec()))
+    searched_on(
+        Gap::cylinders(),
+        rho,
+        control,
+        &Ladder::of(tries.to_vec()),
+        &mut |_| {},
+    )
 }
 
-/// [`at_searched`] on `gap`.
+/// [`at_searched`] on `gap` climbing `ladder`, handing every state the
+/// escalation resolves on the way to `visit` ([`at_with`]).
 pub(crate) fn searched_on(
-    gap: Gap,
-    rho: f64,
-    control: Hold,
-    ladder: &Ladder,
-) -> Result<ExactState> {
-    searched_visiting(gap, rho, control, ladder, &mut |_| {})
-}
-
-/// [`searched_on`], handing every state the escalation resolves on the
-/// way to `visit` ([`at_with_visiting`]).
-fn searched_visiting(
     gap: Gap,
     rho: f64,
     control: Hold,
@@ -593,7 +714,7 @@ fn searched_visiting(
     visit: &mut dyn FnMut(&ExactState),
 ) -> Result<ExactState> {
     by_delta_or_force(control)?;
-    at_with_visiting(gap, rho, control, ladder, visit).or_else(|e| {
+    at_with(gap, rho, control, ladder, visit).or_else(|e| {
         let circle_a = branch::circle_a_bar(&gap.at(1.0)?, control);
         bands::past_folds_or_band(gap, rho, control, circle_a, ladder, e)
     })
@@ -613,39 +734,34 @@ fn by_delta_or_force(control: Hold) -> Result<Hold> {
     }
 }
 
-/// The state at `control` at the first larger ρ where [`at_with`] finds
-/// it ([`first_above`]): the start of the routes from a larger ρ.
-fn state_above(gap: Gap, rho: f64, control: Hold) -> Result<ExactState> {
-    first_above(gap, rho, |r| at_with(gap, r, control, &Ladder::conformal())).ok_or_else(|| {
-        Error::NoState(format!(
-            "no state at {control} found at any rho above it in steps of 0.1 to continue from"
-        ))
-    })
-}
-
-/// The state at `control` at `rho` continued in ρ from `start`, the state
-/// at a larger ρ ([`state_above`]; [`continued_in_rho`]), and where the
-/// conformal form's series stops resolving the family, again in the
-/// arclength representation; a fold in ρ on the way ends it
-/// ([`Error::PastRhoFold`]).
-fn from_larger_rho(start: &ExactState, rho: f64, control: Hold) -> Result<ExactState> {
-    continued_in_rho(start, rho, control).or_else(|conformal| match conformal {
+/// The state at the control continued in ρ from the state at a larger ρ
+/// ([`Asked::above`]; [`continued_in_rho`]), and where the conformal
+/// form's series stops resolving the family, again in the arclength
+/// representation; below a fold in ρ met on the way
+/// ([`Error::PastRhoFold`]), by the routes past it ([`past_the_fold`]).
+fn from_larger_rho(asked: &Asked) -> Result<ExactState> {
+    let (rho, control, start) = (asked.rho, asked.control()?, asked.above()?);
+    let continued = continued_in_rho(&start, rho, control).or_else(|conformal| match conformal {
         Error::PastRhoFold { .. } => Err(conformal),
         // where the conformal form's series no longer resolves the family:
         // again from the start, in the arclength representation
-        _ => {
-            continued_in_rho_along(start, rho, control, &Ladder::arclength()).map_err(|arclength| {
-                match arclength {
-                    Error::PastRhoFold { .. } => arclength,
-                    _ => Error::NoState(format!(
-                        "{}; in the arclength representation: {}",
-                        conformal.detail(),
-                        arclength.detail()
-                    )),
-                }
-            })
+        _ => continued_in_rho_along(&start, rho, control, &Ladder::arclength()).map_err(
+            |arclength| match arclength {
+                Error::PastRhoFold { .. } => arclength,
+                _ => Error::NoState(format!(
+                    "{}; in the arclength representation: {}",
+                    conformal.detail(),
+                    arclength.detail()
+                )),
+            },
+        ),
+    });
+    match continued {
+        Err(met @ Error::PastRhoFold { fold, .. }) => {
+            past_the_fold(&start, fold, met, rho, control)
         }
-    })
+        other => other,
+    }
 }
 
 /// The state at `control` at `rho` on the arm of a larger contact
@@ -890,16 +1006,11 @@ fn converged_only_to(start: &ExactState, st: &ExactState, control: Hold, why: &s
     ))
 }
 
-/// The exact state at `control` climbing `ladder`
-/// ([`resolved`]), each after the first started from the state the one
-/// before found (resolved or not).
-pub(crate) fn at_with(gap: Gap, rho: f64, control: Hold, ladder: &Ladder) -> Result<ExactState> {
-    at_with_visiting(gap, rho, control, ladder, &mut |_| {})
-}
-
-/// [`at_with`], handing every state a truncation resolves ([`RESOLVED`])
-/// on the way to `visit`, converged or not.
-fn at_with_visiting(
+/// The exact state at `control` climbing `ladder` ([`resolved`]), each
+/// after the first started from the state the one before found (resolved
+/// or not), handing every state a truncation resolves ([`RESOLVED`]) on
+/// the way to `visit`, converged or not.
+pub(crate) fn at_with(
     gap: Gap,
     rho: f64,
     control: Hold,
@@ -1060,6 +1171,75 @@ pub(crate) fn assert_same_with_modes(st: &ExactState, control: Hold, modes: &[us
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The routes run in the table's order, each after the first only
+    /// where it takes the first's miss (issue 69's route table), and where
+    /// every one misses the error is typed by the furthest fold in ρ met,
+    /// said first, with every other miss once, in order; no solver runs.
+    #[test]
+    fn the_route_table_runs_its_routes_in_order_and_types_their_misses() {
+        let asked = Asked::new(Gap::cylinders(), 0.5, Some(Hold::Force(0.0)));
+        let no = |w: &str| Error::NoState(w.into());
+        let fold = |f: f64, w: &str| Error::PastRhoFold {
+            fold: f,
+            from: 0.4,
+            what: w.into(),
+        };
+        // found nothing: not the arclength route; the fold decides
+        let routes: [Strategy<u32>; 4] = [
+            (Takes::First, "", |_| Err(Error::NoState("a".into()))),
+            (Takes::NearlyResolved, "again", |_| Ok(1)),
+            (Takes::NothingFound, "", |_| {
+                Err(Error::PastRhoFold {
+                    fold: 0.3,
+                    from: 0.4,
+                    what: "c".into(),
+                })
+            }),
+            (Takes::NothingFound, "", |_| Err(Error::NoState("d".into()))),
+        ];
+        assert_eq!(run(&routes, &asked), Err(fold(0.3, "c; a; d")));
+        // came near: only the arclength route, and not resolved with its words
+        let routes: [Strategy<u32>; 3] = [
+            (Takes::First, "", |_| {
+                Err(Error::Unresolved {
+                    what: "a".into(),
+                    residual: 1e-8,
+                })
+            }),
+            (Takes::NearlyResolved, "again", |_| {
+                Err(Error::NoState("b".into()))
+            }),
+            (Takes::NothingFound, "", |_| Ok(2)),
+        ];
+        let unresolved = Error::Unresolved {
+            what: "a; again: b".into(),
+            residual: 1e-8,
+        };
+        assert_eq!(run(&routes, &asked), Err(unresolved));
+        // a miss no route takes is the answer as it is; a route's answer ends the run
+        let routes: [Strategy<u32>; 2] = [
+            (Takes::First, "", |_| Err(Error::InBand("in a band".into()))),
+            (Takes::NothingFound, "", |_| Ok(3)),
+        ];
+        assert_eq!(run(&routes, &asked), Err(Error::InBand("in a band".into())));
+        let routes: [Strategy<u32>; 3] = [
+            (Takes::First, "", |_| Err(Error::NoState("a".into()))),
+            (Takes::NothingFound, "", |_| Ok(4)),
+            (Takes::NothingFound, "", |_| Ok(5)),
+        ];
+        assert_eq!(run(&routes, &asked), Ok(4));
+        // the same miss twice is said once; of two folds, the last met decides
+        let mut misses = Misses::default();
+        misses.push("", fold(0.36, "first fold"));
+        misses.push("", no("x"));
+        misses.push("", fold(0.17, "further fold"));
+        misses.push("", no("x"));
+        assert_eq!(
+            misses.error(std::iter::empty()),
+            fold(0.17, "further fold; first fold; x")
+        );
+    }
 
     /// Which states lie above the pull-off on its own piece of the family
     /// (docs/exact.md, "Above the pull-off on its own piece"): at ρ = 0.2,

@@ -290,6 +290,7 @@ mod tests {
             0.4,
             Hold::Force(0.0),
             &Ladder::conformal(),
+            &mut |_| {},
         )
         .unwrap();
         let last = continued_in_rho_along(

@@ -280,7 +280,14 @@ mod tests {
     #[test]
     fn the_force_10_family_turns_back_in_rho() {
         let control = Hold::Force(10.0);
-        let start = at_with(Gap::cylinders(), 0.4, control, &Ladder::conformal()).unwrap();
+        let start = at_with(
+            Gap::cylinders(),
+            0.4,
+            control,
+            &Ladder::conformal(),
+            &mut |_| {},
+        )
+        .unwrap();
         let ladder = Ladder::of([48, 64, 96].map(Truncation::in_arclength).to_vec());
         let last = continued_in_rho_along(&start, 0.3235, control, &ladder).unwrap();
         match follow(&last, 0.3, control).unwrap() {
