@@ -13,7 +13,7 @@
 //! largest distance, tabulated in r at h/100 and read by cubic
 //! interpolation.
 //!
-//! Owns: `Kernel`. May use: `layer` (the pair's Φ and β), `quadrature`,
+//! Owns: `Kernel`, `BaseShare`. May use: `layer` (the pair's Φ and β), `quadrature`,
 //! `layer::grid::bessel0`.
 
 use super::super::Layers;
@@ -62,14 +62,14 @@ pub(crate) fn love(x: f64, y: f64, d: f64) -> f64 {
 }
 
 /// c(r), the base's share of the compliance in the plane, on
-/// r = 0, dr, 2dr, … up to `r_max`.
-struct BaseShare {
+/// r = 0, dr, 2dr, … up to `r_max` (the grid's, and `layer::sharp`'s).
+pub(crate) struct BaseShare {
     dr: f64,
     c: Vec<f64>,
 }
 
 impl BaseShare {
-    fn new(layers: &Layers, r_max: f64) -> BaseShare {
+    pub(crate) fn new(layers: &Layers, r_max: f64) -> BaseShare {
         let [a, b] = layers.coatings();
         let (h_min, h_max) = (a.thinness.min(b.thinness), a.thinness.max(b.thinness));
         // Φ < 1e-17 beyond k̄h = 25
@@ -96,7 +96,7 @@ impl BaseShare {
 
     /// Cubic interpolation in the table (c is even in r: the points below
     /// zero mirror those above).
-    fn at(&self, r: f64) -> f64 {
+    pub(crate) fn at(&self, r: f64) -> f64 {
         let t = r / self.dr;
         let i = (t.floor() as usize).min(self.c.len() - 3);
         let u = t - i as f64;

@@ -24,7 +24,7 @@ pub(crate) mod bench;
 mod bessel0;
 mod edge;
 mod gmres;
-mod kernel;
+pub(crate) mod kernel;
 mod law;
 pub(crate) mod plane;
 pub(crate) mod stability;
