@@ -7,12 +7,11 @@
 //! the edge; the base share of coatings of finite thickness and the free
 //! contour come next.
 //!
-//! The domain is Ω = {s z(θ) : 0 ≤ s < 1}, z(θ) its edge, a closed curve
-//! about the centre. The pressure is p̄ = q(s, θ)/√(1 − s²), the edge's square root
+//! The domain is Ω = {s z(θ) : 0 ≤ s < 1}, z(θ) = f(θ)(a cos θ, b sin θ)
+//! its edge, f = 1 + Σ d_m cos 2mθ ([`Domain`]). The pressure is p̄ = q(s, θ)/√(1 − s²), the edge's square root
 //! built in, with q = Σ c_nm s^2m P_n(2s² − 1) cos 2mθ: even in X and in Y,
-//! regular at the centre. On an ellipse, z = (a cos θ, b sin θ),
-//! s² = X²/a² + Y²/b², and Galin's theorem makes a quadratic gap's
-//! pressure exactly q of degree 2.
+//! regular at the centre. On an ellipse (f = 1) s² = X²/a² + Y²/b², and
+//! Galin's theorem makes a quadratic gap's pressure exactly q of degree 2.
 //!
 //! The displacement of the half-space pair in the units (17) is
 //! w̄ = (1/2πβ) ∫ p̄(x′)/|x − x′| dA′ (β = E*/2 there). About each point it
@@ -31,7 +30,8 @@
 //! integral over the contact is a product rule in (α, θ), s = sin α
 //! ([`Sources`]).
 //!
-//! Owns: `Domain`, `Bilateral`, `Sources`. May use: the parent (`layer`:
+//! Owns: `Domain`, `Bilateral`, `Sources`, `Resolution`, `SharpState`,
+//! `at_approach`, `pull_off`. May use: `model` (Brent's minimum), `newton` (the stop request), the parent (`layer`:
 //! the coatings, and `grid::kernel`'s table of the base share),
 //! `quadrature` (Gauss–Legendre), `error`.
 
@@ -42,34 +42,58 @@ use crate::quadrature::GaussLegendre;
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::PI;
 
-/// A doubly symmetric convex domain by its edge z(θ), a closed curve
-/// about the centre, and the map x = s z(θ) of the unit disk onto it.
+/// A doubly symmetric convex domain by its edge z(θ) = f(θ)(a cos θ,
+/// b sin θ), f = 1 + Σ d_m cos 2mθ (m ≥ 0), and the map x = s z(θ) of the
+/// unit disk onto it: the points of one θ lie on one ray from the centre,
+/// θ = atan2(Y/b, X/a), and s² = (X²/a² + Y²/b²)/f(θ)². With no d it is
+/// the ellipse with semi-axes `a` (along X) and `b`.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) enum Domain {
-    /// The ellipse with semi-axes `a` (along X) and `b`: z = (a cos θ,
-    /// b sin θ), s² = X²/a² + Y²/b².
-    Ellipse { a: f64, b: f64 },
+pub(crate) struct Domain {
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+    pub(crate) d: Vec<f64>,
 }
 
 impl Domain {
+    /// The ellipse with semi-axes `a` and `b`.
+    pub(crate) fn ellipse(a: f64, b: f64) -> Domain {
+        Domain {
+            a,
+            b,
+            d: Vec::new(),
+        }
+    }
+
+    /// f(θ) and f′(θ).
+    fn stretch(&self, theta: f64) -> (f64, f64) {
+        let mut f = 1.0;
+        let mut df = 0.0;
+        for (m, &dm) in self.d.iter().enumerate() {
+            let k = 2.0 * m as f64;
+            let (sn, cs) = (k * theta).sin_cos();
+            f += dm * cs;
+            df -= k * dm * sn;
+        }
+        (f, df)
+    }
+
     /// z(θ) and z′(θ).
     pub(crate) fn edge(&self, theta: f64) -> ([f64; 2], [f64; 2]) {
-        match *self {
-            Domain::Ellipse { a, b } => {
-                let (sn, cs) = theta.sin_cos();
-                ([a * cs, b * sn], [-a * sn, b * cs])
-            }
-        }
+        let (sn, cs) = theta.sin_cos();
+        let (f, df) = self.stretch(theta);
+        let (ex, ey) = (self.a * cs, self.b * sn);
+        (
+            [f * ex, f * ey],
+            [df * ex - f * self.a * sn, df * ey + f * self.b * cs],
+        )
     }
 
     /// s² and θ of the point (x, y).
     fn s2_theta(&self, x: f64, y: f64) -> (f64, f64) {
-        match *self {
-            Domain::Ellipse { a, b } => {
-                let (xi, eta) = (x / a, y / b);
-                (xi * xi + eta * eta, eta.atan2(xi))
-            }
-        }
+        let (xi, eta) = (x / self.a, y / self.b);
+        let theta = eta.atan2(xi);
+        let f = self.stretch(theta).0;
+        ((xi * xi + eta * eta) / (f * f), theta)
     }
 
     /// The edge's normal reach z × z′ / |z′| at θ: the distance from the
@@ -113,9 +137,7 @@ impl Domain {
     }
 
     fn largest_radius(&self) -> f64 {
-        match *self {
-            Domain::Ellipse { a, b } => a.max(b),
-        }
+        self.a.max(self.b) * (1.0 + self.d.iter().map(|d| d.abs()).sum::<f64>())
     }
 }
 
@@ -346,6 +368,197 @@ impl Bilateral {
     }
 }
 
+/// The resolution of a state: the basis (`radial` × `angular`), the lines
+/// through each node (`rays`, `along`), the base share's sources, and the
+/// edge's modes d_0 … d_{shape − 1}, with as many angles of Griffith's
+/// condition from θ = 0 to π/2.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Resolution {
+    pub(crate) radial: usize,
+    pub(crate) angular: usize,
+    pub(crate) along: usize,
+    pub(crate) rays: usize,
+    pub(crate) sources: Sources,
+    pub(crate) shape: usize,
+}
+
+/// A state with a sharp edge at ρ: its domain, approach δ̄, force F̄ and
+/// the largest departure from Griffith's condition over the edge, |K/√(2β)
+/// − 1| at 64 points of the quarter.
+#[derive(Clone, Debug)]
+pub(crate) struct SharpState {
+    pub(crate) domain: Domain,
+    pub(crate) delta_bar: f64,
+    pub(crate) force_bar: f64,
+    pub(crate) griffith_error: f64,
+}
+
+impl SharpState {
+    /// The half-widths ā = z(0) and b̄ = |z(π/2)|.
+    pub(crate) fn half_widths(&self) -> (f64, f64) {
+        (self.domain.edge(0.0).0[0], self.domain.edge(0.5 * PI).0[1])
+    }
+}
+
+/// The pressure's coefficients on `domain` at approach `delta` with the
+/// gap (X² + Y²/ρ)/2 of (1), and the solver that gave them.
+fn pressure(
+    layers: &Layers,
+    rho: f64,
+    delta: f64,
+    domain: &Domain,
+    res: Resolution,
+) -> Result<(Bilateral, DVector<f64>)> {
+    // a near-elliptic edge: f between ½ and 2
+    let f = (0..=64).map(|k| domain.stretch(0.5 * PI * k as f64 / 64.0).0);
+    if f.clone().fold(f64::INFINITY, f64::min) < 0.5 || f.fold(0.0, f64::max) > 2.0 {
+        return Err(Error::NoState(
+            "the sharp edge left the near-elliptic shape (f outside [1/2, 2])".into(),
+        ));
+    }
+    let solver = Bilateral::on_layers(
+        domain.clone(),
+        layers,
+        res.sources,
+        res.radial,
+        res.angular,
+        res.along,
+        res.rays,
+    )?;
+    let c = solver.solve(|x, y| delta - 0.5 * (x * x + y * y / rho))?;
+    Ok((solver, c))
+}
+
+/// The angles of Griffith's condition: `n` from 0 to π/2.
+fn griffith_angles(n: usize) -> Vec<f64> {
+    match n {
+        1 => vec![0.0],
+        _ => (0..n)
+            .map(|l| 0.5 * PI * l as f64 / (n - 1) as f64)
+            .collect(),
+    }
+}
+
+/// The state at approach `delta` on the coatings `layers` at `rho`: the
+/// edge's modes d_m (about `guess`'s a and b) such that K = √(2β) at the
+/// Griffith angles, by Newton's method with the Jacobian by forward
+/// differences, from `guess`'s modes. An error where it does not converge
+/// to 1e-10 in 20 steps.
+pub(crate) fn at_approach(
+    layers: &Layers,
+    rho: f64,
+    delta: f64,
+    guess: &Domain,
+    res: Resolution,
+) -> Result<SharpState> {
+    let target = (2.0 * layers.beta()).sqrt();
+    let angles = griffith_angles(res.shape);
+    let residual = |d: &DVector<f64>| -> Result<DVector<f64>> {
+        let domain = Domain {
+            a: guess.a,
+            b: guess.b,
+            d: d.iter().copied().collect(),
+        };
+        let (solver, c) = pressure(layers, rho, delta, &domain, res)?;
+        Ok(DVector::from_iterator(
+            angles.len(),
+            angles
+                .iter()
+                .map(|&t| solver.intensity(&c, t) / target - 1.0),
+        ))
+    };
+    let mut d = DVector::from_iterator(
+        res.shape,
+        (0..res.shape).map(|m| guess.d.get(m).copied().unwrap_or(0.0)),
+    );
+    let mut r = residual(&d)?;
+    for _ in 0..20 {
+        crate::newton::check_stop()?;
+        if r.amax() <= 1e-10 {
+            let domain = Domain {
+                a: guess.a,
+                b: guess.b,
+                d: d.iter().copied().collect(),
+            };
+            return state_on(layers, rho, delta, domain, res);
+        }
+        let mut jac = DMatrix::zeros(res.shape, res.shape);
+        for k in 0..res.shape {
+            let h = 1e-7;
+            let mut moved = d.clone();
+            moved[k] += h;
+            jac.set_column(k, &((residual(&moved)? - &r) / h));
+        }
+        let step = jac
+            .lu()
+            .solve(&r)
+            .ok_or_else(|| Error::NoState("the sharp edge's Griffith system is singular".into()))?;
+        d -= step;
+        r = residual(&d)?;
+    }
+    Err(Error::NoState(format!(
+        "the sharp edge at delta = {} did not meet Griffith's condition in 20 Newton steps (off by {:.1e})",
+        crate::error::rounded(delta),
+        r.amax()
+    )))
+}
+
+/// The pull-off under load control at `rho`: the least force along the
+/// branch, over the approach by Brent's method in [`lo`, `hi`] to 1e-7,
+/// each state by [`at_approach`] from the last one's edge (from `guess`
+/// first). An error where the least force lies at an end of the bracket
+/// or its state does not meet Griffith's condition.
+pub(crate) fn pull_off(
+    layers: &Layers,
+    rho: f64,
+    guess: &Domain,
+    (lo, hi): (f64, f64),
+    res: Resolution,
+) -> Result<SharpState> {
+    let last = std::cell::RefCell::new(guess.clone());
+    let force = |delta: f64| -> f64 {
+        let from = last.borrow().clone();
+        match at_approach(layers, rho, delta, &from, res) {
+            Ok(st) => {
+                *last.borrow_mut() = st.domain.clone();
+                st.force_bar
+            }
+            Err(_) => f64::INFINITY,
+        }
+    };
+    let best = crate::model::brent_minimum(force, lo, hi, 1e-7);
+    if (best - lo).abs() < 1e-5 * (hi - lo) || (hi - best).abs() < 1e-5 * (hi - lo) {
+        return Err(Error::NoState(format!(
+            "the sharp edge's least force over delta in [{}, {}] lies at an end",
+            crate::error::rounded(lo),
+            crate::error::rounded(hi)
+        )));
+    }
+    let from = last.borrow().clone();
+    at_approach(layers, rho, best, &from, res)
+}
+
+/// The state on `domain` at `delta`: its force and Griffith's error.
+fn state_on(
+    layers: &Layers,
+    rho: f64,
+    delta: f64,
+    domain: Domain,
+    res: Resolution,
+) -> Result<SharpState> {
+    let target = (2.0 * layers.beta()).sqrt();
+    let (solver, c) = pressure(layers, rho, delta, &domain, res)?;
+    let griffith_error = (0..=64)
+        .map(|k| (solver.intensity(&c, 0.5 * PI * k as f64 / 64.0) / target - 1.0).abs())
+        .fold(0.0, f64::max);
+    Ok(SharpState {
+        force_bar: solver.force(&c, 2 * res.radial),
+        domain,
+        delta_bar: delta,
+        griffith_error,
+    })
+}
+
 /// How finely the base share's integral over the contact is taken: in
 /// (α, θ) with s = sin α, where dA/√(1 − s²) = sin α (z × z′) dα dθ and the
 /// integrand is smooth; `panels` Gauss–Legendre panels of 8 points in α
@@ -435,7 +648,7 @@ mod tests {
     fn the_flat_punch_displaces_the_half_space_uniformly() {
         for (a, b) in [(1.3, 1.3), (2.0, 1.0)] {
             let beta = 0.7;
-            let solver = Bilateral::new(Domain::Ellipse { a, b }, beta, 2, 1, 32, 256).unwrap();
+            let solver = Bilateral::new(Domain::ellipse(a, b), beta, 2, 1, 32, 256).unwrap();
             let exact = b * elliptic_k(b / a) / beta;
             for (x, y) in [
                 (0.0, 0.0),
@@ -460,7 +673,7 @@ mod tests {
     #[test]
     fn hertz_and_jkr_on_a_circle() {
         let (a, beta, delta) = (1.7, 0.9, 2.2);
-        let solver = Bilateral::new(Domain::Ellipse { a, b: a }, beta, 4, 3, 24, 128).unwrap();
+        let solver = Bilateral::new(Domain::ellipse(a, a), beta, 4, 3, 24, 128).unwrap();
         let c = solver.solve(|x, y| delta - 0.5 * (x * x + y * y)).unwrap();
         let p0 = 4.0 * a * beta / PI;
         let big_p0 = 2.0 * beta * (delta - a * a) / (PI * a);
@@ -482,7 +695,7 @@ mod tests {
         assert!((k + big_p0 * (PI * a).sqrt()).abs() < 1e-9, "{k}");
         // JKR: the approach that meets Griffith's condition at this a
         let griffith = |a: f64| {
-            let s = Bilateral::new(Domain::Ellipse { a, b: a }, beta, 3, 1, 24, 96).unwrap();
+            let s = Bilateral::new(Domain::ellipse(a, a), beta, 3, 1, 24, 96).unwrap();
             let one = s.solve(|_, _| 1.0).unwrap();
             let gap = s.solve(|x, y| 0.5 * (x * x + y * y)).unwrap();
             // K(δ̄) = δ̄ K(1) − K(gap) = √(2β)
@@ -501,7 +714,7 @@ mod tests {
     #[test]
     fn a_quadratic_gap_on_an_ellipse_is_galin_s() {
         let (a, b, rho, beta, delta) = (2.0, 1.2, 0.5, 1.1, 3.0);
-        let solver = Bilateral::new(Domain::Ellipse { a, b }, beta, 5, 4, 32, 256).unwrap();
+        let solver = Bilateral::new(Domain::ellipse(a, b), beta, 5, 4, 32, 256).unwrap();
         let target = |x: f64, y: f64| delta - 0.5 * (x * x + y * y / rho);
         let c = solver.solve(target).unwrap();
         let scale = c.amax();
@@ -588,23 +801,125 @@ mod tests {
         }
     }
 
-    /// The state at radius `a` on a circle with Griffith's condition.
-    fn circle_state(layers: &Layers, a: f64, radial: usize, sources: Sources) -> (f64, f64) {
-        let solver = Bilateral::on_layers(
-            Domain::Ellipse { a, b: a },
-            layers,
-            sources,
-            radial,
-            1,
-            32,
-            64,
+    /// The free edge at ρ = 1: from a circle 5 % too large, at the
+    /// axisymmetric layer's approach for ā = 1.1 (h/L = 1), Newton on the
+    /// edge's modes (three of them, Griffith's condition at θ = 0, π/4 and
+    /// π/2) returns the circle of radius 1.1 (its other modes below 1e-9)
+    /// and the reference's force within 1e-9 (measured: 3 steps, 4e-11).
+    #[test]
+    fn the_free_edge_at_rho_1_finds_the_axisymmetric_layer_s_circle() {
+        let layers = Layers::equal(1.0, 0.5).unwrap();
+        let reference = layers
+            .at_radius(1.1, super::super::Route::Griffith)
+            .unwrap();
+        let res = Resolution {
+            radial: 16,
+            angular: 3,
+            along: 32,
+            rays: 64,
+            sources: Sources {
+                panels: 16,
+                angles: 64,
+            },
+            shape: 3,
+        };
+        let st = at_approach(
+            &layers,
+            1.0,
+            reference.delta_bar,
+            &Domain::ellipse(1.15, 1.15),
+            res,
         )
         .unwrap();
+        let (a, b) = st.half_widths();
+        assert!((a - 1.1).abs() < 1e-9 && (b - 1.1).abs() < 1e-9, "{a}, {b}");
+        assert!(
+            st.domain.d[1..].iter().all(|d| d.abs() < 1e-9),
+            "{:?}",
+            st.domain.d
+        );
+        assert!(
+            (st.force_bar / reference.force_bar - 1.0).abs() < 1e-9,
+            "{} against {}",
+            st.force_bar,
+            reference.force_bar
+        );
+        assert!(st.griffith_error < 1e-9, "{:.1e}", st.griffith_error);
+    }
+
+    /// The state at radius `a` on a circle with Griffith's condition.
+    fn circle_state(layers: &Layers, a: f64, radial: usize, sources: Sources) -> (f64, f64) {
+        let solver =
+            Bilateral::on_layers(Domain::ellipse(a, a), layers, sources, radial, 1, 32, 64)
+                .unwrap();
         let one = solver.solve(|_, _| 1.0).unwrap();
         let gap = solver.solve(|x, y| 0.5 * (x * x + y * y)).unwrap();
         let beta = layers.beta();
         let delta =
             ((2.0 * beta).sqrt() + solver.intensity(&gap, 0.0)) / solver.intensity(&one, 0.0);
         (delta, solver.force(&(one * delta - gap), 24))
+    }
+
+    /// The free edge's pull-off at ρ = `THINJKR_SHARP_RHO` (0.8) and h/L =
+    /// `THINJKR_SHARP_THIN` (1) against the resolution (run it in release:
+    /// `cargo test --release -p thinjkr --lib explore_the_free_edge_pull_off
+    /// -- --ignored --nocapture`).
+    #[test]
+    #[ignore = "exploration: prints the free edge's pull-offs"]
+    fn explore_the_free_edge_pull_off() {
+        let var = |k: &str, d: f64| {
+            std::env::var(k)
+                .ok()
+                .and_then(|v| v.parse().ok())
+                .unwrap_or(d)
+        };
+        let (rho, h) = (
+            var("THINJKR_SHARP_RHO", 0.8),
+            var("THINJKR_SHARP_THIN", 1.0),
+        );
+        let layers = Layers::equal(h, 0.5).unwrap();
+        let circle = layers.pull_off(super::super::Route::Griffith).unwrap().load;
+        // the circle's pull-off, the aspect of (2)'s about ρ^0.45
+        let s = rho.powf(0.45);
+        let mut guess = Domain::ellipse(circle.a_bar / s.sqrt(), circle.a_bar * s.sqrt());
+        let d = circle.delta_bar;
+        let bracket = (d - 0.5 * d.abs() - 0.05, d + 0.5 * d.abs() + 0.05);
+        println!(
+            "rho {rho} h/L {h}: circle's pull-off {:.8} at delta {:.6}",
+            circle.force_bar, d
+        );
+        for (radial, angular, shape, panels, angles) in [
+            (12, 3, 3, 8, 32),
+            (16, 4, 4, 16, 64),
+            (20, 5, 5, 16, 64),
+            (24, 6, 6, 24, 96),
+            (32, 8, 8, 32, 128),
+        ] {
+            let res = Resolution {
+                radial,
+                angular,
+                along: 32,
+                rays: 64,
+                sources: Sources { panels, angles },
+                shape,
+            };
+            let t = std::time::Instant::now();
+            match pull_off(&layers, rho, &guess, bracket, res) {
+                Ok(st) => {
+                    println!(
+                        "  {radial}/{angular}/{shape}/{panels}/{angles}: F {:.8} delta {:.6} half-widths {:.6} {:.6} griffith {:.1e} d {:?} {:.1} s",
+                        st.force_bar,
+                        st.delta_bar,
+                        st.half_widths().0,
+                        st.half_widths().1,
+                        st.griffith_error,
+                        st.domain.d,
+                        t.elapsed().as_secs_f64()
+                    );
+                    guess = st.domain;
+                }
+                Err(e) => println!("  {radial}/{angular}/{shape}: {e}"),
+            }
+        }
     }
 }
