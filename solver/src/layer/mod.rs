@@ -26,6 +26,10 @@
 //! gives the pull-off under load control in the plane, [`PlaneState`]
 //! (issue 71).
 //!
+//! The sharp edge in the plane (`sharp`, under construction) keeps JKR's
+//! edge sharp where the grid's cohesive zone cannot be made small against
+//! h: it reproduces this module's states at ρ = 1.
+//!
 //! Coatings thin against the contact, below the grid's reach, are taken at
 //! first order in h/L at any ρ by `thin`: (2)'s exact pull-off with the
 //! layer's edge as a line tension.
