@@ -504,10 +504,12 @@ pub(crate) fn at_approach(
 }
 
 /// The pull-off under load control at `rho`: the least force along the
-/// branch, over the approach by Brent's method in [`lo`, `hi`] to 1e-7,
-/// each state by [`at_approach`] from the last one's edge (from `guess`
-/// first). An error where the least force lies at an end of the bracket
-/// or its state does not meet Griffith's condition.
+/// branch over the approach. A walk down in δ̄ from `hi` towards `lo` in
+/// sixteenths of the bracket, each state by [`at_approach`] from the last
+/// one's edge (from `guess` first), until the force rises again; then
+/// Brent's method to 1e-7 between the least state's neighbours, each state
+/// from the least one's edge. An error where a state of the walk is not
+/// found, or the least force lies at an end of the bracket.
 pub(crate) fn pull_off(
     layers: &Layers,
     rho: f64,
@@ -515,27 +517,37 @@ pub(crate) fn pull_off(
     (lo, hi): (f64, f64),
     res: Resolution,
 ) -> Result<SharpState> {
-    let last = std::cell::RefCell::new(guess.clone());
-    let force = |delta: f64| -> f64 {
-        let from = last.borrow().clone();
-        match at_approach(layers, rho, delta, &from, res) {
-            Ok(st) => {
-                *last.borrow_mut() = st.domain.clone();
-                st.force_bar
-            }
-            Err(_) => f64::INFINITY,
+    const STEPS: usize = 16;
+    let step = (hi - lo) / STEPS as f64;
+    let mut walk: Vec<SharpState> = Vec::new();
+    let mut from = guess.clone();
+    for k in 0..=STEPS {
+        let st = at_approach(layers, rho, hi - k as f64 * step, &from, res)?;
+        from = st.domain.clone();
+        walk.push(st);
+        let n = walk.len();
+        if n >= 3 && walk[n - 1].force_bar > walk[n - 2].force_bar {
+            break;
         }
-    };
-    let best = crate::model::brent_minimum(force, lo, hi, 1e-7);
-    if (best - lo).abs() < 1e-5 * (hi - lo) || (hi - best).abs() < 1e-5 * (hi - lo) {
+    }
+    let least = (0..walk.len())
+        .min_by(|&i, &j| walk[i].force_bar.total_cmp(&walk[j].force_bar))
+        .unwrap_or(0);
+    if least == 0 || least + 1 == walk.len() {
         return Err(Error::NoState(format!(
             "the sharp edge's least force over delta in [{}, {}] lies at an end",
             crate::error::rounded(lo),
             crate::error::rounded(hi)
         )));
     }
-    let from = last.borrow().clone();
-    at_approach(layers, rho, best, &from, res)
+    let near = walk[least].domain.clone();
+    let force = |delta: f64| match at_approach(layers, rho, delta, &near, res) {
+        Ok(st) => st.force_bar,
+        Err(_) => f64::INFINITY,
+    };
+    let (below, above) = (walk[least + 1].delta_bar, walk[least - 1].delta_bar);
+    let best = crate::model::brent_minimum(force, below, above, 1e-7);
+    at_approach(layers, rho, best, &near, res)
 }
 
 /// The state on `domain` at `delta`: its force and Griffith's error.
@@ -847,6 +859,47 @@ mod tests {
         assert!(st.griffith_error < 1e-9, "{:.1e}", st.griffith_error);
     }
 
+    /// The free edge's pull-off at ρ = 1 (one mode of the edge, Griffith's
+    /// condition at θ = 0) is the axisymmetric layer's pull-off under load
+    /// control: force within 1e-8, approach within 1e-5 (the least force is
+    /// flat in the approach), at h/L = 1.
+    #[test]
+    fn the_free_edge_s_pull_off_at_rho_1_is_the_axisymmetric_layer_s() {
+        let layers = Layers::equal(1.0, 0.5).unwrap();
+        let reference = layers.pull_off(super::super::Route::Griffith).unwrap().load;
+        let res = Resolution {
+            radial: 12,
+            angular: 1,
+            along: 32,
+            rays: 64,
+            sources: Sources {
+                panels: 8,
+                angles: 32,
+            },
+            shape: 1,
+        };
+        let d = reference.delta_bar;
+        let st = pull_off(
+            &layers,
+            1.0,
+            &Domain::ellipse(1.0, 1.0),
+            (d - 0.1, d + 0.1),
+            res,
+        )
+        .unwrap();
+        assert!(
+            (st.force_bar / reference.force_bar - 1.0).abs() < 1e-8,
+            "{} against {}",
+            st.force_bar,
+            reference.force_bar
+        );
+        assert!(
+            (st.delta_bar - d).abs() < 1e-5,
+            "{} against {d}",
+            st.delta_bar
+        );
+    }
+
     /// The state at radius `a` on a circle with Griffith's condition.
     fn circle_state(layers: &Layers, a: f64, radial: usize, sources: Sources) -> (f64, f64) {
         let solver =
@@ -861,9 +914,10 @@ mod tests {
     }
 
     /// The free edge's pull-off at ρ = `THINJKR_SHARP_RHO` (0.8) and h/L =
-    /// `THINJKR_SHARP_THIN` (1) against the resolution (run it in release:
-    /// `cargo test --release -p thinjkr --lib explore_the_free_edge_pull_off
-    /// -- --ignored --nocapture`).
+    /// `THINJKR_SHARP_THIN` (1) against the resolution, with
+    /// `THINJKR_SHARP_LADDER=1` (run it in release: `cargo test --release -p
+    /// thinjkr --lib explore_the_free_edge_pull_off -- --ignored
+    /// --nocapture`); without it the coarsest resolution alone.
     #[test]
     #[ignore = "exploration: prints the free edge's pull-offs"]
     fn explore_the_free_edge_pull_off() {
@@ -888,13 +942,20 @@ mod tests {
             "rho {rho} h/L {h}: circle's pull-off {:.8} at delta {:.6}",
             circle.force_bar, d
         );
-        for (radial, angular, shape, panels, angles) in [
+        // the coarsest alone unless THINJKR_SHARP_LADDER is set (the slow
+        // tier runs every exploration)
+        let ladder = [
             (12, 3, 3, 8, 32),
             (16, 4, 4, 16, 64),
             (20, 5, 5, 16, 64),
             (24, 6, 6, 24, 96),
             (32, 8, 8, 32, 128),
-        ] {
+        ];
+        let rungs = match std::env::var_os("THINJKR_SHARP_LADDER") {
+            Some(_) => ladder.len(),
+            None => 1,
+        };
+        for &(radial, angular, shape, panels, angles) in &ladder[..rungs] {
             let res = Resolution {
                 radial,
                 angular,
