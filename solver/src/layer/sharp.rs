@@ -104,36 +104,12 @@ impl Domain {
     }
 
     /// How far the ray from (x, y) inside the domain at angle `phi` runs
-    /// before it leaves it: the root of s² − 1 along it, by the Illinois
-    /// method on a bracket (the domain is convex, so the ray leaves it
-    /// once).
-    fn exit(&self, x: f64, y: f64, phi: f64) -> f64 {
+    /// before it leaves it: where s² reaches 1 along it (the layer's root
+    /// finder; the domain is convex, so the ray leaves it once).
+    fn exit(&self, x: f64, y: f64, phi: f64) -> Result<f64> {
         let (e_y, e_x) = phi.sin_cos();
-        let g = |r: f64| self.s2_theta(x + r * e_x, y + r * e_y).0 - 1.0;
-        let (mut lo, mut hi) = (0.0, 2.0 * self.largest_radius() + x.hypot(y));
-        let (mut g_lo, mut g_hi) = (g(lo), g(hi));
-        let mut side = 0;
-        for _ in 0..200 {
-            let r = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-            let v = g(r);
-            if v == 0.0 || (hi - lo) <= 1e-15 * hi {
-                return r;
-            }
-            if v < 0.0 {
-                (lo, g_lo) = (r, v);
-                if side == -1 {
-                    g_hi *= 0.5;
-                }
-                side = -1;
-            } else {
-                (hi, g_hi) = (r, v);
-                if side == 1 {
-                    g_lo *= 0.5;
-                }
-                side = 1;
-            }
-        }
-        0.5 * (lo + hi)
+        let s2 = |r: f64| Ok(self.s2_theta(x + r * e_x, y + r * e_y).0);
+        super::root(s2, 0.5 * self.a.min(self.b), 1.0, "edge along a ray")
     }
 
     fn largest_radius(&self) -> f64 {
@@ -252,7 +228,7 @@ impl Bilateral {
         let n = radial * angular;
         let mut m = DMatrix::zeros(n, n);
         for (i, &(x, y)) in nodes.iter().enumerate() {
-            let row = b.displacement_of_basis(x, y);
+            let row = b.displacement_of_basis(x, y)?;
             m.row_mut(i).copy_from(&row.transpose());
         }
         if let Some(base) = &b.base {
@@ -289,7 +265,7 @@ impl Bilateral {
     /// from −ϱ₋ to ϱ₊, on which p̄ has the edge's square root at both ends:
     /// t = c + h cos ψ takes both away (Gauss–Chebyshev, the midpoint rule
     /// in ψ, `along` points), and the trapezoidal rule in φ (`rays` / 2).
-    pub(crate) fn displacement_of_basis(&self, x: f64, y: f64) -> DVector<f64> {
+    pub(crate) fn displacement_of_basis(&self, x: f64, y: f64) -> Result<DVector<f64>> {
         let n = self.radial * self.angular;
         let mut w = DVector::zeros(n);
         let mut q = vec![0.0; n];
@@ -301,8 +277,8 @@ impl Bilateral {
             let phi = (k as f64 + 0.5) * d_phi;
             let (e_y, e_x) = phi.sin_cos();
             let (ahead, behind) = (
-                self.domain.exit(x, y, phi),
-                self.domain.exit(x, y, phi + PI),
+                self.domain.exit(x, y, phi)?,
+                self.domain.exit(x, y, phi + PI)?,
             );
             let (mid, half) = (0.5 * (ahead - behind), 0.5 * (ahead + behind));
             for i in 0..points {
@@ -316,7 +292,7 @@ impl Bilateral {
                 }
             }
         }
-        w * (d_phi / (2.0 * PI * self.beta))
+        Ok(w * (d_phi / (2.0 * PI * self.beta)))
     }
 
     /// The coefficients of q for the displacement `target` (a function of
@@ -673,7 +649,7 @@ mod tests {
                 (0.9 * a, 0.0),
                 (0.5 * a, 0.8 * b),
             ] {
-                let w = solver.displacement_of_basis(x, y)[0];
+                let w = solver.displacement_of_basis(x, y).unwrap()[0];
                 assert!(
                     (w / exact - 1.0).abs() < 1e-9,
                     "a = {a}, b = {b} at ({x}, {y}): {w} against {exact}"
@@ -745,7 +721,7 @@ mod tests {
             }
         }
         for (x, y) in [(0.1, 0.1), (1.5, 0.3), (0.4, 1.0), (1.9, 0.05)] {
-            let w = solver.displacement_of_basis(x, y).dot(&c);
+            let w = solver.displacement_of_basis(x, y).unwrap().dot(&c);
             assert!(
                 (w - target(x, y)).abs() < 1e-8 * delta,
                 "({x}, {y}): {w} against {}",
