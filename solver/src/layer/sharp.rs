@@ -170,27 +170,22 @@ impl Bilateral {
         Bilateral::with_base(domain, beta, None, radial, angular, along, rays)
     }
 
-    /// [`Bilateral::new`] for the coatings `layers` (their β), the base
-    /// share's integral over `sources` ([`Sources`]).
-    #[allow(clippy::too_many_arguments)]
+    /// [`Bilateral::new`] for the coatings `layers` (their β) at the
+    /// resolution `res` (its basis, lines and the base share's sources).
     pub(crate) fn on_layers(
         domain: Domain,
         layers: &Layers,
-        sources: Sources,
-        radial: usize,
-        angular: usize,
-        along: usize,
-        rays: usize,
+        res: &Resolution,
     ) -> Result<Bilateral> {
-        let base = Base::new(&domain, layers, sources);
+        let base = Base::new(&domain, layers, res.sources);
         Bilateral::with_base(
             domain,
             layers.beta(),
             Some(base),
-            radial,
-            angular,
-            along,
-            rays,
+            res.radial,
+            res.angular,
+            res.along,
+            res.rays,
         )
     }
 
@@ -392,15 +387,7 @@ fn pressure(
             "the sharp edge left the near-elliptic shape (f outside [1/2, 2])".into(),
         ));
     }
-    let solver = Bilateral::on_layers(
-        domain.clone(),
-        layers,
-        res.sources,
-        res.radial,
-        res.angular,
-        res.along,
-        res.rays,
-    )?;
+    let solver = Bilateral::on_layers(domain.clone(), layers, &res)?;
     let c = solver.solve(|x, y| delta - 0.5 * (x * x + y * y / rho))?;
     Ok((solver, c))
 }
@@ -883,9 +870,15 @@ mod tests {
 
     /// The state at radius `a` on a circle with Griffith's condition.
     fn circle_state(layers: &Layers, a: f64, radial: usize, sources: Sources) -> (f64, f64) {
-        let solver =
-            Bilateral::on_layers(Domain::ellipse(a, a), layers, sources, radial, 1, 32, 64)
-                .unwrap();
+        let res = Resolution {
+            radial,
+            angular: 1,
+            along: 32,
+            rays: 64,
+            sources,
+            shape: 1,
+        };
+        let solver = Bilateral::on_layers(Domain::ellipse(a, a), layers, &res).unwrap();
         let one = solver.solve(|_, _| 1.0).unwrap();
         let gap = solver.solve(|x, y| 0.5 * (x * x + y * y)).unwrap();
         let beta = layers.beta();
