@@ -38,7 +38,7 @@
 //! the ray of elliptic angle θ ([`Sources`]).
 //!
 //! Owns: `Domain`, `Bilateral`, `Sources`, `Resolution`, `SharpState`,
-//! `at_approach`, `pull_off`. May use: `model` (Brent's minimum), `newton` (the stop request), the parent (`layer`:
+//! `Contact` (a state at an approach, the pull-off). May use: `model` (Brent's minimum), `newton` (the stop request), the parent (`layer`:
 //! the coatings, and `grid::kernel`'s table of the base share),
 //! `quadrature` (Gauss–Legendre), `error`.
 
@@ -47,6 +47,7 @@ use super::Layers;
 use crate::error::{Error, Result};
 use crate::quadrature::GaussLegendre;
 use nalgebra::{DMatrix, DVector};
+use rayon::prelude::*;
 use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -339,7 +340,7 @@ impl Bilateral {
         res: &Resolution,
     ) -> Result<Bilateral> {
         let largest = domain.checked()?;
-        let base = Base::new(&domain, layers, res.sources, largest)?;
+        let base = Base::new(&domain, BaseShare::new(layers, 2.05 * largest), res.sources)?;
         Bilateral::with_base(
             domain,
             layers.beta(),
@@ -392,8 +393,11 @@ impl Bilateral {
         };
         let n = b.unknowns();
         let mut m = DMatrix::zeros(nodes.len(), n);
-        for (i, &(x, y)) in nodes.iter().enumerate() {
-            let row = b.displacement_of_basis(x, y)?;
+        let rows: Vec<DVector<f64>> = nodes
+            .par_iter()
+            .map(|&(x, y)| b.displacement_of_basis(x, y))
+            .collect::<Result<_>>()?;
+        for (i, row) in rows.iter().enumerate() {
             m.row_mut(i).copy_from(&row.transpose());
         }
         if let Some(base) = &b.base {
@@ -556,19 +560,241 @@ pub(crate) struct SharpState {
     pub(crate) b_bar: f64,
 }
 
-/// The pressure's coefficients on `domain` at approach `delta` with the
-/// gap (X² + Y²/ρ)/2 of (1), and the solver that gave them.
-fn pressure(
-    layers: &Layers,
+/// A sharp-edge problem: the coatings at ρ with the gap (X² + Y²/ρ)/2 of
+/// (1), at one resolution, and the base share's table, built once for
+/// domains that reach no farther than `reach` from the centre.
+pub(crate) struct Contact<'a> {
+    layers: &'a Layers,
     rho: f64,
-    delta: f64,
-    domain: &Domain,
     res: Resolution,
-) -> Result<(Bilateral, DVector<f64>)> {
-    domain.checked()?;
-    let solver = Bilateral::on_layers(domain.clone(), layers, &res)?;
-    let c = solver.solve(|x, y| delta - 0.5 * (x * x + y * y / rho))?;
-    Ok((solver, c))
+    share: BaseShare,
+    reach: f64,
+}
+
+/// How near Griffith's condition, |K/√(2β) − 1| at its angles, a state is
+/// taken: the residual's round-off is near 1e-12.
+const GRIFFITH_TOLERANCE: f64 = 1e-10;
+
+/// Newton's steps for one state, counting each Jacobian by differences as
+/// one.
+const NEWTON_STEPS: usize = 20;
+
+impl<'a> Contact<'a> {
+    /// The problem of `layers` at `rho` and resolution `res` for domains
+    /// about `guess`: its table reaches 1.5 times `guess`'s edge.
+    pub(crate) fn new(
+        layers: &'a Layers,
+        rho: f64,
+        res: Resolution,
+        guess: &Domain,
+    ) -> Result<Contact<'a>> {
+        let reach = 1.5 * guess.checked()?;
+        Ok(Contact {
+            layers,
+            rho,
+            res,
+            share: BaseShare::new(layers, 2.05 * reach),
+            reach,
+        })
+    }
+
+    /// The pressure's coefficients on `domain` at approach `delta`, and
+    /// the solver that gave them.
+    fn pressure(&self, delta: f64, domain: &Domain) -> Result<(Bilateral, DVector<f64>)> {
+        let largest = domain.checked()?;
+        if largest > self.reach {
+            return Err(Error::NoState(
+                "the sharp edge grew beyond the reach of its base share's table".into(),
+            ));
+        }
+        let base = Base::new(domain, self.share.clone(), self.res.sources)?;
+        let res = &self.res;
+        let solver = Bilateral::with_base(
+            domain.clone(),
+            self.layers.beta(),
+            Some(base),
+            res.radial,
+            res.angular,
+            res.along,
+            res.rays,
+        )?;
+        let rho = self.rho;
+        let c = solver.solve(|x, y| delta - 0.5 * (x * x + y * y / rho))?;
+        Ok((solver, c))
+    }
+
+    /// K/√(2β) − 1 at the Griffith angles on `domain` at `delta`.
+    fn griffith(&self, delta: f64, domain: &Domain) -> Result<DVector<f64>> {
+        let target = (2.0 * self.layers.beta()).sqrt();
+        let (solver, c) = self.pressure(delta, domain)?;
+        griffith_angles(self.res.shape)
+            .iter()
+            .map(|&t| Ok(solver.intensity(&c, t)? / target - 1.0))
+            .collect::<Result<Vec<f64>>>()
+            .map(DVector::from_vec)
+    }
+
+    /// The state at approach `delta`: the edge's modes e_m (about
+    /// `guess`'s a and b, from its modes) such that K = √(2β) at the
+    /// Griffith angles, by Newton's method with Broyden's updates of the
+    /// Jacobian, which starts from `jacobian` where given (the last
+    /// state's) and is taken by forward differences where not, or where a
+    /// step does not halve the residual; with a fresh Jacobian the step is
+    /// halved until the residual falls. An error where it does not
+    /// converge to [`GRIFFITH_TOLERANCE`] in [`NEWTON_STEPS`].
+    fn edge_at(
+        &self,
+        delta: f64,
+        guess: &Domain,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        let shape = self.res.shape;
+        let domain = |e: &DVector<f64>| Domain {
+            a: guess.a,
+            b: guess.b,
+            modes: e.iter().copied().collect(),
+        };
+        let mut e = DVector::from_iterator(
+            shape,
+            (0..shape).map(|m| guess.modes.get(m).copied().unwrap_or(0.0)),
+        );
+        let mut r = self.griffith(delta, &domain(&e))?;
+        for _ in 0..NEWTON_STEPS {
+            crate::newton::check_stop()?;
+            if r.amax() <= GRIFFITH_TOLERANCE {
+                return self.state_on(delta, domain(&e));
+            }
+            let (jac, fresh) = match jacobian.take() {
+                Some(j) => (j, false),
+                None => {
+                    let mut j = DMatrix::zeros(shape, shape);
+                    for k in 0..shape {
+                        let h = 1e-7;
+                        let mut moved = e.clone();
+                        moved[k] += h;
+                        j.set_column(k, &((self.griffith(delta, &domain(&moved))? - &r) / h));
+                    }
+                    (j, true)
+                }
+            };
+            let step = jac.clone().lu().solve(&r).ok_or_else(|| {
+                Error::NoState("the sharp edge's Griffith system is singular".into())
+            })?;
+            // the step, halved (with a fresh Jacobian) until the residual
+            // falls; an edge that leaves the near-elliptic shape counts as
+            // no fall
+            let mut lambda = 1.0;
+            let (moved, next) = loop {
+                let moved = &e - &step * lambda;
+                let next = self
+                    .griffith(delta, &domain(&moved))
+                    .ok()
+                    .filter(|n| n.amax() < r.amax());
+                match next {
+                    Some(next) => break (moved, next),
+                    None if fresh && lambda > 1.0 / 64.0 => lambda *= 0.5,
+                    None => break (e.clone(), r.clone()),
+                }
+            };
+            if !fresh && next.amax() > 0.5 * r.amax() {
+                // a stale Jacobian: take it again by differences, from here
+                *jacobian = None;
+                (e, r) = (moved, next);
+                continue;
+            }
+            if fresh && lambda <= 1.0 / 64.0 && next.amax() >= r.amax() {
+                break;
+            }
+            // Broyden: J += ((r′ − r) − J s) sᵀ / sᵀs, s = −λ step the move
+            let s = -&step * lambda;
+            let update = (&next - &r - &jac * &s) * s.transpose() / s.norm_squared();
+            *jacobian = Some(jac + update);
+            (e, r) = (moved, next);
+        }
+        Err(Error::NoState(format!(
+            "the sharp edge at delta = {} did not meet Griffith's condition in {NEWTON_STEPS} Newton steps (off by {:.1e})",
+            crate::error::rounded(delta),
+            r.amax()
+        )))
+    }
+
+    /// The state at approach `delta` from `guess`'s edge ([`Contact::edge_at`]).
+    pub(crate) fn at_approach(&self, delta: f64, guess: &Domain) -> Result<SharpState> {
+        self.edge_at(delta, guess, &mut None)
+    }
+
+    /// The pull-off under load control: the least force along the branch
+    /// over the approach. A walk down in δ̄ from `hi` towards `lo` in
+    /// sixteenths of the bracket, each state from the last two states' edges
+    /// extrapolated (from `guess` first) and the last Jacobian, until the force rises again; then
+    /// Brent's method to 1e-7 between the least state's neighbours, each
+    /// state from the least one's edge. An error where a state of the walk
+    /// is not found, or the least force lies at an end of the bracket.
+    pub(crate) fn pull_off(&self, guess: &Domain, (lo, hi): (f64, f64)) -> Result<SharpState> {
+        const STEPS: usize = 16;
+        let step = (hi - lo) / STEPS as f64;
+        let mut walk: Vec<SharpState> = Vec::new();
+        let mut jacobian = None;
+        let mut from = guess.clone();
+        for k in 0..=STEPS {
+            let st = self.edge_at(hi - k as f64 * step, &from, &mut jacobian)?;
+            // the next edge's modes extrapolated from the last two states'
+            from = st.domain.clone();
+            if let Some(last) = walk.last() {
+                for (e, (now, before)) in from
+                    .modes
+                    .iter_mut()
+                    .zip(st.domain.modes.iter().zip(&last.domain.modes))
+                {
+                    *e = 2.0 * now - before;
+                }
+            }
+            walk.push(st);
+            let n = walk.len();
+            if n >= 3 && walk[n - 1].force_bar > walk[n - 2].force_bar {
+                break;
+            }
+        }
+        let least = (0..walk.len())
+            .min_by(|&i, &j| walk[i].force_bar.total_cmp(&walk[j].force_bar))
+            .unwrap_or(0);
+        if least == 0 || least + 1 == walk.len() {
+            return Err(Error::NoState(format!(
+                "the sharp edge's least force over delta in [{}, {}] lies at an end",
+                crate::error::rounded(lo),
+                crate::error::rounded(hi)
+            )));
+        }
+        let near = walk[least].domain.clone();
+        let jacobian = std::cell::RefCell::new(jacobian);
+        let force = |delta: f64| match self.edge_at(delta, &near, &mut jacobian.borrow_mut()) {
+            Ok(st) => st.force_bar,
+            Err(_) => f64::INFINITY,
+        };
+        let (below, above) = (walk[least + 1].delta_bar, walk[least - 1].delta_bar);
+        let best = crate::model::brent_minimum(force, below, above, 1e-7);
+        let mut jacobian = jacobian.into_inner();
+        self.edge_at(best, &near, &mut jacobian)
+    }
+
+    /// The state on `domain` at `delta`: its force and Griffith's error.
+    fn state_on(&self, delta: f64, domain: Domain) -> Result<SharpState> {
+        let target = (2.0 * self.layers.beta()).sqrt();
+        let (solver, c) = self.pressure(delta, &domain)?;
+        let mut griffith_error: f64 = 0.0;
+        for k in 0..=64 {
+            let k = solver.intensity(&c, 0.5 * PI * k as f64 / 64.0)?;
+            griffith_error = griffith_error.max((k / target - 1.0).abs());
+        }
+        Ok(SharpState {
+            a_bar: domain.edge(0.0)?[0],
+            b_bar: domain.edge(0.5 * PI)?[1],
+            force_bar: solver.force(&c, 2 * self.res.radial)?,
+            domain,
+            delta_bar: delta,
+            griffith_error,
+        })
+    }
 }
 
 /// The angles of Griffith's condition: `n` from 0 to π/2.
@@ -579,146 +805,6 @@ fn griffith_angles(n: usize) -> Vec<f64> {
             .map(|l| 0.5 * PI * l as f64 / (n - 1) as f64)
             .collect(),
     }
-}
-
-/// How near Griffith's condition, |K/√(2β) − 1| at its angles, a state is
-/// taken: the collocation's own floor is near 1e-10 on the finer
-/// resolutions (the base share's table is read to about 1e-8 of itself).
-const GRIFFITH_TOLERANCE: f64 = 1e-10;
-
-/// The state at approach `delta` on the coatings `layers` at `rho`: the
-/// edge's modes e_m (about `guess`'s a and b) such that K = √(2β) at the
-/// Griffith angles, by Newton's method with the Jacobian by forward
-/// differences, from `guess`'s modes. An error where it does not converge
-/// to [`GRIFFITH_TOLERANCE`] in 20 steps.
-pub(crate) fn at_approach(
-    layers: &Layers,
-    rho: f64,
-    delta: f64,
-    guess: &Domain,
-    res: Resolution,
-) -> Result<SharpState> {
-    let target = (2.0 * layers.beta()).sqrt();
-    let angles = griffith_angles(res.shape);
-    let residual = |d: &DVector<f64>| -> Result<DVector<f64>> {
-        let domain = Domain {
-            a: guess.a,
-            b: guess.b,
-            modes: d.iter().copied().collect(),
-        };
-        let (solver, c) = pressure(layers, rho, delta, &domain, res)?;
-        angles
-            .iter()
-            .map(|&t| Ok(solver.intensity(&c, t)? / target - 1.0))
-            .collect::<Result<Vec<f64>>>()
-            .map(DVector::from_vec)
-    };
-    let mut d = DVector::from_iterator(
-        res.shape,
-        (0..res.shape).map(|m| guess.modes.get(m).copied().unwrap_or(0.0)),
-    );
-    let mut r = residual(&d)?;
-    for _ in 0..20 {
-        crate::newton::check_stop()?;
-        if r.amax() <= GRIFFITH_TOLERANCE {
-            let domain = Domain {
-                a: guess.a,
-                b: guess.b,
-                modes: d.iter().copied().collect(),
-            };
-            return state_on(layers, rho, delta, domain, res);
-        }
-        let mut jac = DMatrix::zeros(res.shape, res.shape);
-        for k in 0..res.shape {
-            let h = 1e-7;
-            let mut moved = d.clone();
-            moved[k] += h;
-            jac.set_column(k, &((residual(&moved)? - &r) / h));
-        }
-        let step = jac
-            .lu()
-            .solve(&r)
-            .ok_or_else(|| Error::NoState("the sharp edge's Griffith system is singular".into()))?;
-        d -= step;
-        r = residual(&d)?;
-    }
-    Err(Error::NoState(format!(
-        "the sharp edge at delta = {} did not meet Griffith's condition in 20 Newton steps (off by {:.1e})",
-        crate::error::rounded(delta),
-        r.amax()
-    )))
-}
-
-/// The pull-off under load control at `rho`: the least force along the
-/// branch over the approach. A walk down in δ̄ from `hi` towards `lo` in
-/// sixteenths of the bracket, each state by [`at_approach`] from the last
-/// one's edge (from `guess` first), until the force rises again; then
-/// Brent's method to 1e-7 between the least state's neighbours, each state
-/// from the least one's edge. An error where a state of the walk is not
-/// found, or the least force lies at an end of the bracket.
-pub(crate) fn pull_off(
-    layers: &Layers,
-    rho: f64,
-    guess: &Domain,
-    (lo, hi): (f64, f64),
-    res: Resolution,
-) -> Result<SharpState> {
-    const STEPS: usize = 16;
-    let step = (hi - lo) / STEPS as f64;
-    let mut walk: Vec<SharpState> = Vec::new();
-    let mut from = guess.clone();
-    for k in 0..=STEPS {
-        let st = at_approach(layers, rho, hi - k as f64 * step, &from, res)?;
-        from = st.domain.clone();
-        walk.push(st);
-        let n = walk.len();
-        if n >= 3 && walk[n - 1].force_bar > walk[n - 2].force_bar {
-            break;
-        }
-    }
-    let least = (0..walk.len())
-        .min_by(|&i, &j| walk[i].force_bar.total_cmp(&walk[j].force_bar))
-        .unwrap_or(0);
-    if least == 0 || least + 1 == walk.len() {
-        return Err(Error::NoState(format!(
-            "the sharp edge's least force over delta in [{}, {}] lies at an end",
-            crate::error::rounded(lo),
-            crate::error::rounded(hi)
-        )));
-    }
-    let near = walk[least].domain.clone();
-    let force = |delta: f64| match at_approach(layers, rho, delta, &near, res) {
-        Ok(st) => st.force_bar,
-        Err(_) => f64::INFINITY,
-    };
-    let (below, above) = (walk[least + 1].delta_bar, walk[least - 1].delta_bar);
-    let best = crate::model::brent_minimum(force, below, above, 1e-7);
-    at_approach(layers, rho, best, &near, res)
-}
-
-/// The state on `domain` at `delta`: its force and Griffith's error.
-fn state_on(
-    layers: &Layers,
-    rho: f64,
-    delta: f64,
-    domain: Domain,
-    res: Resolution,
-) -> Result<SharpState> {
-    let target = (2.0 * layers.beta()).sqrt();
-    let (solver, c) = pressure(layers, rho, delta, &domain, res)?;
-    let mut griffith_error: f64 = 0.0;
-    for k in 0..=64 {
-        let k = solver.intensity(&c, 0.5 * PI * k as f64 / 64.0)?;
-        griffith_error = griffith_error.max((k / target - 1.0).abs());
-    }
-    Ok(SharpState {
-        a_bar: domain.edge(0.0)?[0],
-        b_bar: domain.edge(0.5 * PI)?[1],
-        force_bar: solver.force(&c, 2 * res.radial)?,
-        domain,
-        delta_bar: delta,
-        griffith_error,
-    })
 }
 
 /// How finely the base share's integral over the contact is taken: in
@@ -742,10 +828,9 @@ struct Base {
 }
 
 impl Base {
-    /// The base share on `domain`, whose edge reaches `largest` from the
-    /// centre.
-    fn new(domain: &Domain, layers: &Layers, sources: Sources, largest: f64) -> Result<Base> {
-        let share = BaseShare::new(layers, 2.05 * largest);
+    /// The base share on `domain` from the table `share`, which reaches
+    /// twice the edge's distance from the centre.
+    fn new(domain: &Domain, share: BaseShare, sources: Sources) -> Result<Base> {
         let rule = GaussLegendre::new(8).composite(0.0, 0.5 * PI, sources.panels.max(1));
         let d_theta = 2.0 * PI / (4 * sources.angles) as f64;
         let mut points = Vec::with_capacity(rule.len() * sources.angles);
@@ -776,16 +861,18 @@ impl Base {
                 values[(k, j)] = w * q[j];
             }
         }
-        let mut kernel = DMatrix::zeros(targets.len(), self.sources.len());
-        for (i, &(x, y)) in targets.iter().enumerate() {
-            for (k, &([sx, sy], ..)) in self.sources.iter().enumerate() {
-                kernel[(i, k)] = self.share.at((x - sx).hypot(y - sy))
-                    + self.share.at((x + sx).hypot(y - sy))
-                    + self.share.at((x - sx).hypot(y + sy))
-                    + self.share.at((x + sx).hypot(y + sy));
-            }
-        }
-        kernel * values
+        let rows: Vec<f64> = targets
+            .par_iter()
+            .flat_map_iter(|&(x, y)| {
+                self.sources.iter().map(move |&([sx, sy], _)| {
+                    self.share.at((x - sx).hypot(y - sy))
+                        + self.share.at((x + sx).hypot(y - sy))
+                        + self.share.at((x - sx).hypot(y + sy))
+                        + self.share.at((x + sx).hypot(y + sy))
+                })
+            })
+            .collect();
+        DMatrix::from_row_slice(targets.len(), self.sources.len(), &rows) * values
     }
 }
 
@@ -995,14 +1082,11 @@ mod tests {
             },
             shape: 3,
         };
-        let st = at_approach(
-            &layers,
-            1.0,
-            reference.delta_bar,
-            &Domain::ellipse(1.15, 1.15),
-            res,
-        )
-        .unwrap();
+        let guess = Domain::ellipse(1.15, 1.15);
+        let st = Contact::new(&layers, 1.0, res, &guess)
+            .unwrap()
+            .at_approach(reference.delta_bar, &guess)
+            .unwrap();
         let (a, b) = (st.a_bar, st.b_bar);
         assert!((a - 1.1).abs() < 1e-9 && (b - 1.1).abs() < 1e-9, "{a}, {b}");
         assert!(
@@ -1019,45 +1103,52 @@ mod tests {
         assert!(st.griffith_error < 1e-9, "{:.1e}", st.griffith_error);
     }
 
-    /// The free edge's pull-off at ρ = 1 (one mode of the edge, Griffith's
-    /// condition at θ = 0) is the axisymmetric layer's pull-off under load
-    /// control: force within 1e-8, approach within 1e-5 (the least force is
-    /// flat in the approach), at h/L = 1.
+    /// The free edge's pull-off at ρ = 1 is the axisymmetric layer's
+    /// pull-off under load control at h/L = 0.2, 1 and 10 (issue 71's
+    /// done-when asks 1e-3), found in the plane: from an ellipse of aspect
+    /// 0.8 with three modes of the edge, which must come back to the circle.
+    /// The bracket of the walk in δ̄ is the reference's δ̄ ± ā²/5.
     #[test]
     fn the_free_edge_s_pull_off_at_rho_1_is_the_axisymmetric_layer_s() {
-        let layers = Layers::equal(1.0, 0.5).unwrap();
-        let reference = layers.pull_off(super::super::Route::Griffith).unwrap().load;
-        let res = Resolution {
-            radial: 12,
-            angular: 1,
-            along: 32,
-            rays: 64,
-            sources: Sources {
-                panels: 8,
-                angles: 32,
-            },
-            shape: 1,
-        };
-        let d = reference.delta_bar;
-        let st = pull_off(
-            &layers,
-            1.0,
-            &Domain::ellipse(1.0, 1.0),
-            (d - 0.1, d + 0.1),
-            res,
-        )
-        .unwrap();
-        assert!(
-            (st.force_bar / reference.force_bar - 1.0).abs() < 1e-8,
-            "{} against {}",
-            st.force_bar,
-            reference.force_bar
-        );
-        assert!(
-            (st.delta_bar - d).abs() < 1e-5,
-            "{} against {d}",
-            st.delta_bar
-        );
+        // the thinner coatings need more radial functions (the base share
+        // varies on the scale of h near the edge): at h/L = 0.2, 16 of them
+        // leave 5e-5 (24 leave 1e-7, in 23 s)
+        for (h, radial, panels, angles, within) in [
+            (0.2, 16, 16, 64, 1e-4),
+            (1.0, 12, 16, 64, 1e-6),
+            (10.0, 12, 8, 32, 1e-6),
+        ] {
+            let layers = Layers::equal(h, 0.5).unwrap();
+            let reference = layers.pull_off(super::super::Route::Griffith).unwrap().load;
+            let res = Resolution {
+                radial,
+                angular: 3,
+                along: 32,
+                rays: 64,
+                sources: Sources { panels, angles },
+                shape: 3,
+            };
+            let (a, d) = (reference.a_bar, reference.delta_bar);
+            let guess = Domain::ellipse(1.1 * a, 0.88 * a);
+            let t = std::time::Instant::now();
+            let st = Contact::new(&layers, 1.0, res, &guess)
+                .unwrap()
+                .pull_off(&guess, (d - 0.2 * a * a, d + 0.2 * a * a))
+                .unwrap();
+            let force = st.force_bar / reference.force_bar - 1.0;
+            let (ea, eb) = (st.a_bar / a - 1.0, st.b_bar / a - 1.0);
+            println!(
+                "h/L = {h}: force {:.10} ({force:+.1e}), half-widths ({ea:+.1e}, {eb:+.1e}), delta {:+.1e}, {:.1} s",
+                st.force_bar,
+                st.delta_bar - d,
+                t.elapsed().as_secs_f64()
+            );
+            assert!(force.abs() < within, "h/L = {h}: force off by {force:.1e}");
+            assert!(
+                ea.abs() < 1e-4 && eb.abs() < 1e-4,
+                "h/L = {h}: {ea:.1e}, {eb:.1e}"
+            );
+        }
     }
 
     /// The state at radius `a` on a circle with Griffith's condition.
@@ -1131,7 +1222,9 @@ mod tests {
                 shape,
             };
             let t = std::time::Instant::now();
-            match pull_off(&layers, rho, &guess, bracket, res) {
+            match Contact::new(&layers, rho, res, &guess)
+                .and_then(|contact| contact.pull_off(&guess, bracket))
+            {
                 Ok(st) => {
                     println!(
                         "  {radial}/{angular}/{shape}/{panels}/{angles}: F {:.8} delta {:.6} half-widths {:.6} {:.6} griffith {:.1e} d {:?} {:.1} s",

@@ -63,6 +63,7 @@ pub(crate) fn love(x: f64, y: f64, d: f64) -> f64 {
 
 /// c(r), the base's share of the compliance in the plane, on
 /// r = 0, dr, 2dr, … up to `r_max` (the grid's, and `layer::sharp`'s).
+#[derive(Clone)]
 pub(crate) struct BaseShare {
     dr: f64,
     c: Vec<f64>,
