@@ -725,18 +725,22 @@ impl<'a> Contact<'a> {
 
     /// The pull-off under load control: the least force along the branch
     /// over the approach. A walk down in δ̄ from `hi` towards `lo` in
-    /// sixteenths of the bracket, each state from the last two states' edges
-    /// extrapolated (from `guess` first) and the last Jacobian, until the force rises again; then
-    /// Brent's method to 1e-7 between the least state's neighbours, each
-    /// state from the least one's edge. An error where a state of the walk
-    /// is not found, or the least force lies at an end of the bracket.
-    pub(crate) fn pull_off(&self, guess: &Domain, (lo, hi): (f64, f64)) -> Result<SharpState> {
-        const STEPS: usize = 16;
-        let step = (hi - lo) / STEPS as f64;
+    /// `steps` equal steps, each state from the last two states' edges
+    /// extrapolated (from `guess` first) and the last Jacobian, until the
+    /// force rises again; then [`Contact::least_near`] about the least
+    /// state and its neighbours. An error where a state of the walk is not
+    /// found, or the least force lies at an end of the bracket.
+    pub(crate) fn pull_off(
+        &self,
+        guess: &Domain,
+        (lo, hi): (f64, f64),
+        steps: usize,
+    ) -> Result<SharpState> {
+        let step = (hi - lo) / steps as f64;
         let mut walk: Vec<SharpState> = Vec::new();
         let mut jacobian = None;
         let mut from = guess.clone();
-        for k in 0..=STEPS {
+        for k in 0..=steps {
             let st = self.edge_at(hi - k as f64 * step, &from, &mut jacobian)?;
             // the next edge's modes extrapolated from the last two states'
             from = st.domain.clone();
@@ -765,16 +769,50 @@ impl<'a> Contact<'a> {
                 crate::error::rounded(hi)
             )));
         }
-        let near = walk[least].domain.clone();
-        let jacobian = std::cell::RefCell::new(jacobian);
-        let force = |delta: f64| match self.edge_at(delta, &near, &mut jacobian.borrow_mut()) {
-            Ok(st) => st.force_bar,
-            Err(_) => f64::INFINITY,
-        };
-        let (below, above) = (walk[least + 1].delta_bar, walk[least - 1].delta_bar);
-        let best = crate::model::brent_minimum(force, below, above, 1e-7);
-        let mut jacobian = jacobian.into_inner();
-        self.edge_at(best, &near, &mut jacobian)
+        let three = walk.drain(least - 1..=least + 1).collect();
+        self.least_near(three, &mut jacobian)
+    }
+
+    /// The least force near three states, the middle one the least, by
+    /// successive parabolic interpolation in δ̄: a state at the vertex of
+    /// the parabola through the three (from the least one's edge), then the
+    /// least of the four with its neighbours, until the vertex is within
+    /// 1e-7 of the least state's δ̄ (there F̄ is within about F̄″ 1e-14 of
+    /// its minimum). An error where the vertex leaves the three's span (the
+    /// force not convex there) or 12 steps do not settle it.
+    fn least_near(
+        &self,
+        mut three: Vec<SharpState>,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        for _ in 0..12 {
+            three.sort_by(|p, q| p.delta_bar.total_cmp(&q.delta_bar));
+            let [(x1, f1), (x2, f2), (x3, f3)] =
+                [0, 1, 2].map(|i| (three[i].delta_bar, three[i].force_bar));
+            let num = (x2 - x1).powi(2) * (f2 - f3) - (x2 - x3).powi(2) * (f2 - f1);
+            let den = (x2 - x1) * (f2 - f3) - (x2 - x3) * (f2 - f1);
+            let vertex = x2 - 0.5 * num / den;
+            if !(vertex > x1 && vertex < x3) || f2 > f1.min(f3) {
+                return Err(Error::NoState(format!(
+                    "the sharp edge's force is not convex in delta near {}",
+                    crate::error::rounded(x2)
+                )));
+            }
+            if (vertex - x2).abs() < 1e-7 {
+                return Ok(three.swap_remove(1));
+            }
+            let st = self.edge_at(vertex, &three[1].domain, jacobian)?;
+            three.push(st);
+            three.sort_by(|p, q| p.delta_bar.total_cmp(&q.delta_bar));
+            let least = (0..4)
+                .min_by(|&i, &j| three[i].force_bar.total_cmp(&three[j].force_bar))
+                .unwrap_or(1)
+                .clamp(1, 2);
+            three = three.drain(least - 1..=least + 1).collect();
+        }
+        Err(Error::NoState(
+            "the sharp edge's least force did not settle in 12 parabolic steps".into(),
+        ))
     }
 
     /// The state on `domain` at `delta`: its force and Griffith's error.
@@ -1133,7 +1171,7 @@ mod tests {
             let t = std::time::Instant::now();
             let st = Contact::new(&layers, 1.0, res, &guess)
                 .unwrap()
-                .pull_off(&guess, (d - 0.2 * a * a, d + 0.2 * a * a))
+                .pull_off(&guess, (d - 0.2 * a * a, d + 0.2 * a * a), 16)
                 .unwrap();
             let force = st.force_bar / reference.force_bar - 1.0;
             let (ea, eb) = (st.a_bar / a - 1.0, st.b_bar / a - 1.0);
@@ -1177,13 +1215,18 @@ mod tests {
         };
         let coarse = Contact::new(&layers, rho, rung(12, 3, 8, 32), &guess)
             .unwrap()
-            .pull_off(&guess, (d - 0.5 * d.abs() - 0.05, d + 0.5 * d.abs() + 0.05))
+            .pull_off(
+                &guess,
+                (d - 0.5 * d.abs() - 0.05, d + 0.5 * d.abs() + 0.05),
+                16,
+            )
             .unwrap();
         let fine = Contact::new(&layers, rho, rung(16, 4, 16, 64), &coarse.domain)
             .unwrap()
             .pull_off(
                 &coarse.domain,
-                (coarse.delta_bar - 0.04, coarse.delta_bar + 0.04),
+                (coarse.delta_bar - 0.01, coarse.delta_bar + 0.01),
+                4,
             )
             .unwrap();
         let apart = (coarse.force_bar / fine.force_bar - 1.0).abs();
@@ -1200,6 +1243,87 @@ mod tests {
             "{} against the grid's {grid}",
             fine.force_bar
         );
+    }
+
+    /// The free edge's pull-off across ρ and h/L on three rungs (12 × 3,
+    /// 16 × 4 and 20 × 5 functions, as many edge modes as angular orders;
+    /// each rung from the last one's pull-off), a markdown row each: run in
+    /// release with `--ignored --nocapture`; THINJKR_SHARP_THINS and
+    /// THINJKR_SHARP_RHOS (comma-separated) choose the rows.
+    #[test]
+    #[ignore = "exploration: prints the free edge's pull-offs across rho"]
+    fn explore_the_free_edge_across_rho() {
+        let list = |k: &str, d: &[f64]| -> Vec<f64> {
+            std::env::var(k)
+                .ok()
+                .map(|v| v.split(',').filter_map(|x| x.trim().parse().ok()).collect())
+                .unwrap_or_else(|| d.to_vec())
+        };
+        let thins = list("THINJKR_SHARP_THINS", &[0.2, 0.3, 0.5, 0.73, 1.0]);
+        let rhos = list("THINJKR_SHARP_RHOS", &[0.8, 0.5, 1.0 / 3.0, 0.2, 0.0717968]);
+        println!(
+            "| h/L | rho | F 12x3 | F 16x4 | F 20x5 | 16 vs 20 | delta | a | b | griffith | s |"
+        );
+        for &h in &thins {
+            let layers = Layers::equal(h, 0.5).unwrap();
+            let circle = layers.pull_off(super::super::Route::Griffith).unwrap().load;
+            for &rho in &rhos {
+                let t = std::time::Instant::now();
+                let stretch = rho.powf(0.45).sqrt();
+                let mut guess = Domain::ellipse(circle.a_bar / stretch, circle.a_bar * stretch);
+                let d = circle.delta_bar;
+                let mut bracket = (d - 0.5 * d.abs() - 0.05, d + 0.5 * d.abs() + 0.05);
+                let mut steps = 16;
+                let mut forces = Vec::new();
+                let mut last = None;
+                for (radial, angular, panels, angles) in
+                    [(12, 3, 8, 32), (16, 4, 16, 64), (20, 5, 16, 64)]
+                {
+                    let res = Resolution {
+                        radial,
+                        angular,
+                        along: 32,
+                        rays: 64,
+                        sources: Sources { panels, angles },
+                        shape: angular,
+                    };
+                    match Contact::new(&layers, rho, res, &guess)
+                        .and_then(|c| c.pull_off(&guess, bracket, steps))
+                    {
+                        Ok(st) => {
+                            forces.push(format!("{:.8}", st.force_bar));
+                            bracket = (st.delta_bar - 0.01, st.delta_bar + 0.01);
+                            steps = 4;
+                            guess = st.domain.clone();
+                            last = Some(st);
+                        }
+                        Err(e) => {
+                            forces.push(format!("({e})"));
+                            break;
+                        }
+                    }
+                }
+                let apart = match (forces.get(1), forces.get(2)) {
+                    (Some(a), Some(b)) => match (a.parse::<f64>(), b.parse::<f64>()) {
+                        (Ok(a), Ok(b)) => format!("{:.1e}", (a / b - 1.0).abs()),
+                        _ => "-".into(),
+                    },
+                    _ => "-".into(),
+                };
+                let tail = match last {
+                    Some(st) => format!(
+                        "{:.6} | {:.6} | {:.6} | {:.1e}",
+                        st.delta_bar, st.a_bar, st.b_bar, st.griffith_error
+                    ),
+                    None => "- | - | - | -".into(),
+                };
+                println!(
+                    "| {h} | {rho:.6} | {} | {apart} | {tail} | {:.1} |",
+                    forces.join(" | "),
+                    t.elapsed().as_secs_f64()
+                );
+            }
+        }
     }
 
     /// The state at radius `a` on a circle with Griffith's condition.
@@ -1267,6 +1391,7 @@ mod tests {
         // the lines through each node: THINJKR_SHARP_LINES = twice the
         // default 32 points along each of 32 lines
         let lines = var("THINJKR_SHARP_LINES", 1.0) as usize;
+        let mut steps = 16;
         for &(radial, angular, shape, panels, angles) in &ladder[..rungs] {
             let res = Resolution {
                 radial,
@@ -1278,7 +1403,7 @@ mod tests {
             };
             let t = std::time::Instant::now();
             match Contact::new(&layers, rho, res, &guess)
-                .and_then(|contact| contact.pull_off(&guess, bracket))
+                .and_then(|contact| contact.pull_off(&guess, bracket, steps))
             {
                 Ok(st) => {
                     println!(
@@ -1292,7 +1417,8 @@ mod tests {
                         t.elapsed().as_secs_f64()
                     );
                     // the next rung walks from just above this pull-off
-                    bracket = (st.delta_bar - 0.04, st.delta_bar + 0.04);
+                    bracket = (st.delta_bar - 0.01, st.delta_bar + 0.01);
+                    steps = 4;
                     guess = st.domain;
                 }
                 Err(e) => println!("  {radial}/{angular}/{shape}: {e}"),
