@@ -6,4 +6,4 @@
 //! May use: `layer`.
 
 pub use crate::layer::grid::bench::{GridProduct, GridPullOff, SphereOnHalfSpace, SphereState};
-pub use crate::layer::sharp::SharpPullOff;
+pub use crate::layer::sharp_bench::SharpPullOff;

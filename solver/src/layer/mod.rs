@@ -49,6 +49,8 @@ pub(crate) mod thin;
 // layer
 #[allow(dead_code)]
 pub(crate) mod sharp;
+#[cfg(feature = "bench-internals")]
+pub mod sharp_bench;
 // the grid solver of issue 71: its pull-off in the plane answers through
 // the model layer (`grid::plane`); the straight edge's undulations are
 // tested here

@@ -38,8 +38,7 @@
 //! the ray of elliptic angle θ ([`Sources`]).
 //!
 //! Owns: `Domain`, `Bilateral`, `Sources`, `Resolution`, `SharpState`,
-//! `Contact` (a state at an approach, the pull-off), `pull_off_ladder`,
-//! `SharpPullOff` (the benches' hook). May use: `model` (Brent's minimum), `newton` (the stop request), the parent (`layer`:
+//! `Contact` (a state at an approach, the pull-off), `pull_off_ladder`. May use: `model` (Brent's minimum), `newton` (the stop request), the parent (`layer`:
 //! the coatings, and `grid::kernel`'s table of the base share),
 //! `quadrature` (Gauss–Legendre), `error`.
 
@@ -897,36 +896,6 @@ pub(crate) fn pull_off_ladder(
         found.push(st);
     }
     Ok(found)
-}
-
-/// The sharp edge's pull-off for the criterion benches (built only with
-/// the `bench-internals` feature): two equal incompressible coatings of
-/// thinness `thinness` at `rho`, on the rungs 12 × 3 and then 16 × 4.
-#[cfg(feature = "bench-internals")]
-pub struct SharpPullOff {
-    layers: Layers,
-    rho: f64,
-}
-
-#[cfg(feature = "bench-internals")]
-impl SharpPullOff {
-    /// The coatings of thinness `thinness` at `rho`.
-    pub fn new(thinness: f64, rho: f64) -> Result<SharpPullOff> {
-        Ok(SharpPullOff {
-            layers: Layers::equal(thinness, 0.5)?,
-            rho,
-        })
-    }
-
-    /// The pull-off's force on the finer rung.
-    pub fn run(&self) -> Result<f64> {
-        let rungs = [
-            Resolution::rung(12, 3, 8, 32),
-            Resolution::rung(16, 4, 16, 64),
-        ];
-        let ladder = pull_off_ladder(&self.layers, self.rho, &rungs, |_, _| {})?;
-        Ok(ladder[1].force_bar)
-    }
 }
 
 /// How finely the base share's integral over the contact is taken: in
