@@ -217,6 +217,41 @@ impl Domain {
         super::root(level, 0.5 * self.a.min(self.b), 1.0, "edge along a ray")
     }
 
+    /// The same edge in the coordinates of the ellipse (`a`, `b`) with
+    /// `count` modes: the modes fitted in the least squares to Φ′ = 1 at 64
+    /// points of the edge's quarter (Φ′ is linear in them). Between rungs
+    /// the half-widths become the ellipse's, so that the modes stay small
+    /// where the contact moves far from its first guess.
+    pub(crate) fn rebased(&self, a: f64, b: f64, count: usize) -> Result<Domain> {
+        let count = count.max(1);
+        let points = 64;
+        let mut m = DMatrix::zeros(points, count);
+        let mut rhs = DVector::zeros(points);
+        for k in 0..points {
+            let theta = 0.5 * PI * (k as f64 + 0.5) / points as f64;
+            let [x, y] = self.edge(theta)?;
+            let (xi, eta) = (x / a, y / b);
+            let r2 = xi * xi + eta * eta;
+            let w2 = Complex64::new(xi * xi - eta * eta, 2.0 * xi * eta);
+            m[(k, 0)] = r2;
+            let mut power = Complex64::new(1.0, 0.0);
+            for j in 1..count {
+                power *= w2;
+                m[(k, j)] = power.re;
+            }
+            rhs[k] = 1.0 - r2;
+        }
+        let modes = m
+            .svd(true, true)
+            .solve(&rhs, 1e-12)
+            .map_err(|_| Error::NoState("the sharp edge could not be rebased".into()))?;
+        Ok(Domain {
+            a,
+            b,
+            modes: modes.iter().copied().collect(),
+        })
+    }
+
     /// Whether the domain is what the solver assumes, checked at 65 angles
     /// of the quarter: Φ rises along every ray to the edge (P′ > 0 at 16
     /// points), the edge's radius r is between ½ and 2 (near the ellipse
@@ -241,7 +276,7 @@ impl Domain {
             let l = self.level(r * cs, r * sn);
             let [px, py] = l.d;
             let curvature = l.dd[2] * px * px - 2.0 * l.dd[1] * px * py + l.dd[0] * py * py;
-            if !rises || !(0.5..=2.0).contains(&r) || curvature <= 0.0 {
+            if !rises || !(0.2..=5.0).contains(&r) || curvature <= 0.0 {
                 return Err(Error::NoState(
                     "the sharp edge left the convex near-elliptic shape".into(),
                 ));
@@ -572,8 +607,15 @@ pub(crate) struct Contact<'a> {
 }
 
 /// How near Griffith's condition, |K/√(2β) − 1| at its angles, a state is
-/// taken: the residual's round-off is near 1e-12.
+/// taken: the residual's round-off is near 1e-12 on near-circular
+/// contacts.
 const GRIFFITH_TOLERANCE: f64 = 1e-10;
+
+/// Where no Newton step lowers the residual any more, below this it is
+/// taken as the residual's round-off and the state is accepted (on an
+/// elongated contact, aspect 0.25 at ρ = 0.07, it stalled at 1e-9 to
+/// 2e-8; the force moves by about as much).
+const GRIFFITH_FLOOR: f64 = 1e-7;
 
 /// Newton's steps for one state, counting each Jacobian by differences as
 /// one.
@@ -641,7 +683,8 @@ impl<'a> Contact<'a> {
     /// state's) and is taken by forward differences where not, or where a
     /// step does not halve the residual; with a fresh Jacobian the step is
     /// halved until the residual falls. An error where it does not
-    /// converge to [`GRIFFITH_TOLERANCE`] in [`NEWTON_STEPS`].
+    /// converge to [`GRIFFITH_TOLERANCE`] in [`NEWTON_STEPS`] (or stall
+    /// below [`GRIFFITH_FLOOR`]).
     fn edge_at(
         &self,
         delta: f64,
@@ -686,10 +729,8 @@ impl<'a> Contact<'a> {
             let mut lambda = 1.0;
             let (moved, next) = loop {
                 let moved = &e - &step * lambda;
-                let next = self
-                    .griffith(delta, &domain(&moved))
-                    .ok()
-                    .filter(|n| n.amax() < r.amax());
+                let tried = self.griffith(delta, &domain(&moved));
+                let next = tried.ok().filter(|n| n.amax() < r.amax());
                 match next {
                     Some(next) => break (moved, next),
                     None if fresh && lambda > 1.0 / 64.0 => lambda *= 0.5,
@@ -703,6 +744,11 @@ impl<'a> Contact<'a> {
                 continue;
             }
             if fresh && lambda <= 1.0 / 64.0 && next.amax() >= r.amax() {
+                // no step lowers it: the residual's own round-off, where it
+                // is below the floor
+                if r.amax() <= GRIFFITH_FLOOR {
+                    return self.state_on(delta, domain(&e));
+                }
                 break;
             }
             // Broyden: J += ((r′ − r) − J s) sᵀ / sᵀs, s = −λ step the move
@@ -728,7 +774,8 @@ impl<'a> Contact<'a> {
     /// `steps` equal steps (and on past `lo`, up to twice the bracket more,
     /// while the force still falls), each state from the last two states'
     /// edges extrapolated (from `guess` first) and the last Jacobian, until
-    /// the force rises again; then [`Contact::least_near`] about the least
+    /// the force rises again (and where the first state is the least, on
+    /// up from `hi` as far); then [`Contact::least_near`] about the least
     /// state and its neighbours. An error where a state of the walk is not
     /// found, or the least force lies at an end of the bracket.
     pub(crate) fn pull_off(
@@ -761,9 +808,20 @@ impl<'a> Contact<'a> {
                 break;
             }
         }
-        let least = (0..walk.len())
-            .min_by(|&i, &j| walk[i].force_bar.total_cmp(&walk[j].force_bar))
-            .unwrap_or(0);
+        let least_of = |walk: &[SharpState]| {
+            (0..walk.len())
+                .min_by(|&i, &j| walk[i].force_bar.total_cmp(&walk[j].force_bar))
+                .unwrap_or(0)
+        };
+        // the least at the top: on up from `hi` while the force falls
+        let mut k = 0;
+        while least_of(&walk) == 0 && k < 3 * steps {
+            k += 1;
+            let from = walk[0].domain.clone();
+            let st = self.edge_at(hi + k as f64 * step, &from, &mut jacobian)?;
+            walk.insert(0, st);
+        }
+        let least = least_of(&walk);
         if least == 0 || least + 1 == walk.len() {
             return Err(Error::NoState(format!(
                 "the sharp edge's least force over delta in [{}, {}] lies at an end",
@@ -874,8 +932,9 @@ impl Resolution {
 /// `rungs`, coarsest first, `visit` seeing each when found. The first from
 /// the ellipse of the axisymmetric pull-off's radius (the same coatings at
 /// ρ = 1) stretched to the aspect ρ^0.45 (about (2)'s), walked down over
-/// its δ̄ ± (|δ̄|/2 + 0.05) in 16 steps; each next from the last one's edge,
-/// over its δ̄ ± 0.01 in 4. An error where a rung has none.
+/// its δ̄ ± (|δ̄|/2 + 0.05) in 16 steps; each next from the last one's edge
+/// ([`Domain::rebased`] on its half-widths), over its δ̄ ± 0.01 in 4. An
+/// error where a rung has none.
 pub(crate) fn pull_off_ladder(
     layers: &Layers,
     rho: f64,
@@ -892,7 +951,9 @@ pub(crate) fn pull_off_ladder(
         let st = Contact::new(layers, rho, *res, &guess)?.pull_off(&guess, bracket, steps)?;
         visit(res, &st);
         (bracket, steps) = ((st.delta_bar - 0.01, st.delta_bar + 0.01), 4);
-        guess = st.domain.clone();
+        guess = st
+            .domain
+            .rebased(st.a_bar, st.b_bar, st.domain.modes.len())?;
         found.push(st);
     }
     Ok(found)
@@ -1423,11 +1484,15 @@ mod tests {
         // the lines through each node: THINJKR_SHARP_LINES = 2, twice the
         // default 32 points along each of 32 lines
         let lines = var("THINJKR_SHARP_LINES", 1.0) as usize;
+        // THINJKR_SHARP_WIDER = k: k more angular orders than edge modes
+        let wider = var("THINJKR_SHARP_WIDER", 0.0) as usize;
         let rungs: Vec<Resolution> = ladder[..rungs]
             .iter()
             .map(|r| Resolution {
                 along: r.along * lines,
                 rays: r.rays * lines,
+                angular: r.angular + wider,
+                radial: r.radial.max(r.angular + wider),
                 ..*r
             })
             .collect();
