@@ -1339,7 +1339,7 @@ mod tests {
     /// At θ = 60° with the guide's coatings (equal cylinders, ρ = 1/3,
     /// h/L = 0.5785) the free edge's pull-off on 12 × 3 and 16 × 4
     /// functions agrees within 2e-3 (measured 1.5e-3; 16 × 4 against 32 × 8,
-    /// twice the resolution, 2.8e-5 in the exploration), Griffith's
+    /// twice the resolution, 1.6e-5 in the exploration), Griffith's
     /// condition holds between the angles within 1e-3 on the finer (1.5e-4),
     /// and the grid solver's pull-off, −1.835787 with its bound 0.24 %
     /// (docs/thickness.md, "At 60°, against twice the resolution"), is
