@@ -1364,6 +1364,115 @@ mod tests {
         two_rungs_meet_the_grid(0.5785474, 1.0 / 3.0, (2e-3, 1e-3), (-1.835787, 0.0024));
     }
 
+    /// `value` as `printed` in docs/thickness.md, to half a unit of its
+    /// last printed digit: "−" for minus, "%" (a hundredth), bold marks,
+    /// e-notation, and "< x" (below x).
+    fn as_printed(value: f64, printed: &str) -> bool {
+        let p = printed.replace('−', "-").replace("**", "");
+        let p = p.trim();
+        let (p, value) = match p.strip_suffix('%') {
+            Some(p) => (p.trim(), 100.0 * value),
+            None => (p, value),
+        };
+        if let Some(bound) = p.strip_prefix('<') {
+            return value.abs() < bound.trim().parse::<f64>().expect("a number");
+        }
+        let number: f64 = p.parse().expect("a number");
+        let (mantissa, exponent) = match p.split_once('e') {
+            Some((m, e)) => (m, e.parse::<i32>().expect("an exponent")),
+            None => (p, 0),
+        };
+        let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+        (value - number).abs() <= 0.5 * 10f64.powi(exponent - decimals) * (1.0 + 1e-9)
+    }
+
+    /// docs/thickness.md's two tables of the sharp edge, every number of
+    /// the sharp edge computed again and compared at its printed precision
+    /// (they were typed in from the explorations' output): the ladders at
+    /// ρ = 0.8 and 60° (the times are not held), and the table against the
+    /// grid (the sharp edge's pull-off, its last two rungs' difference, and
+    /// the grid's departure from it).
+    #[test]
+    #[ignore = "slow tier (.ci/slow): the sharp edge's tables of docs/thickness.md, about 5 minutes"]
+    fn the_sharp_edge_tables_of_the_docs_are_the_solver_s() {
+        use super::super::grid::tables::{doc, table};
+        let doc = doc();
+        let mut bad = Vec::new();
+        let mut check = |what: String, value: f64, printed: &str| {
+            if !as_printed(value, printed) {
+                bad.push(format!("{what}: computed {value}, printed {printed}"));
+            }
+        };
+        let ladder = [
+            Resolution::rung(12, 3, 8, 32),
+            Resolution::rung(16, 4, 16, 64),
+            Resolution::rung(20, 5, 16, 64),
+            Resolution::rung(24, 6, 24, 96),
+            Resolution::rung(32, 8, 32, 128),
+        ];
+        let rows = table(
+            &doc,
+            "| rung (functions, edge modes) | F̄ at ρ = 0.8, h/L = 1 | time | F̄ at ρ = 1/3, h/L = 0.5785 (60°) | time |",
+        );
+        assert_eq!(rows.len(), ladder.len());
+        for (column, h, rho) in [(1, 1.0, 0.8), (3, 0.5785474, 1.0 / 3.0)] {
+            let layers = Layers::equal(h, 0.5).unwrap();
+            let found = pull_off_ladder(&layers, rho, &ladder, |_, _| {}).unwrap();
+            for (row, st) in rows.iter().zip(&found) {
+                check(
+                    format!("{} at rho {rho}", row[0]),
+                    st.force_bar,
+                    &row[column],
+                );
+            }
+        }
+        let rows = table(
+            &doc,
+            "| h/L | ρ | F̄, 20 × 5 | 16 × 4 against 20 × 5 | the grid's F̄ (bound) | grid against sharp |",
+        );
+        assert!(rows.len() >= 10, "{} rows", rows.len());
+        for row in &rows {
+            let h = match row[0].as_str() {
+                "0.5785" => 0.5785474,
+                t => t.parse().unwrap(),
+            };
+            let rho = match row[1].split_whitespace().next().unwrap() {
+                "1/3" => 1.0 / 3.0,
+                r => r.parse().unwrap(),
+            };
+            let layers = Layers::equal(h, 0.5).unwrap();
+            let found = pull_off_ladder(&layers, rho, &ladder[..3], |_, _| {}).unwrap();
+            let (fine, finest) = (found[1].force_bar, found[2].force_bar);
+            let what = format!("h/L {h}, rho {rho}");
+            check(what.clone(), finest, &row[2]);
+            check(what.clone(), (fine / finest - 1.0).abs(), &row[3]);
+            if let Some(grid) = row[4]
+                .split_whitespace()
+                .next()
+                .filter(|g| !g.starts_with('('))
+            {
+                let grid: f64 = grid.replace('−', "-").parse().unwrap();
+                check(what, grid / finest - 1.0, &row[5]);
+            }
+        }
+        assert!(
+            bad.is_empty(),
+            "docs/thickness.md differs:\n{}",
+            bad.join("\n")
+        );
+    }
+
+    #[test]
+    fn a_number_is_read_as_printed() {
+        assert!(as_printed(-2.538882851, "−2.53888285"));
+        assert!(!as_printed(-2.53888296, "−2.53888285"));
+        assert!(as_printed(-0.00147, "**−0.147 %**"));
+        assert!(as_printed(3.94e-7, "3.9e-7"));
+        assert!(!as_printed(4.0e-7, "3.9e-7"));
+        assert!(as_printed(3e-10, "< 1e-9"));
+        assert!(!as_printed(2e-9, "< 1e-9"));
+    }
+
     /// The free edge's pull-off across ρ and h/L on three rungs (12 × 3,
     /// 16 × 4 and 20 × 5 functions, as many edge modes as angular orders;
     /// each rung from the last one's pull-off), a markdown row each: run in
@@ -1388,6 +1497,7 @@ mod tests {
             for &rho in &rhos {
                 let t = std::time::Instant::now();
                 let mut forces = Vec::new();
+                let mut values = Vec::new();
                 let mut last = None;
                 let rungs = [
                     Resolution::rung(12, 3, 8, 32),
@@ -1396,16 +1506,14 @@ mod tests {
                 ];
                 let ladder = pull_off_ladder(&layers, rho, &rungs, |_, st| {
                     forces.push(format!("{:.8}", st.force_bar));
+                    values.push(st.force_bar);
                     last = Some(st.clone());
                 });
                 if let Err(e) = ladder {
                     forces.push(format!("({e})"));
                 }
-                let apart = match (forces.get(1), forces.get(2)) {
-                    (Some(a), Some(b)) => match (a.parse::<f64>(), b.parse::<f64>()) {
-                        (Ok(a), Ok(b)) => format!("{:.1e}", (a / b - 1.0).abs()),
-                        _ => "-".into(),
-                    },
+                let apart = match (values.get(1), values.get(2)) {
+                    (Some(a), Some(b)) => format!("{:.1e}", (a / b - 1.0).abs()),
                     _ => "-".into(),
                 };
                 let tail = match last {

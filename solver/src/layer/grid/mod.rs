@@ -782,6 +782,6 @@ pub(crate) fn jkr_limit(points: [(f64, f64); 3]) -> Result<f64> {
 }
 
 #[cfg(test)]
-mod tables;
+pub(crate) mod tables;
 #[cfg(test)]
 mod tests;

@@ -16,13 +16,13 @@ use crate::exact::pull_off_resolved;
 use crate::layer::{Layers, Route};
 
 /// docs/thickness.md.
-fn doc() -> String {
+pub(crate) fn doc() -> String {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/thickness.md");
     std::fs::read_to_string(path).expect("docs/thickness.md")
 }
 
 /// The rows (cells trimmed) of the table whose header line is `header`.
-fn table(doc: &str, header: &str) -> Vec<Vec<String>> {
+pub(crate) fn table(doc: &str, header: &str) -> Vec<Vec<String>> {
     let mut lines = doc.lines().skip_while(|l| l.trim() != header);
     assert!(lines.next().is_some(), "no table headed {header}");
     lines
