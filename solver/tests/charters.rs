@@ -585,14 +585,15 @@ fn long_functions(text: &str, longest: usize) -> Vec<(usize, String, usize)> {
 }
 
 /// The files of `files` (paths under src/) that a `#[cfg(test)] mod x;`
-/// declares: test-only files.
+/// (or `pub(crate) mod x;`) declares: test-only files.
 fn test_only_files(files: &[(String, String)]) -> BTreeSet<String> {
     let mut out = BTreeSet::new();
     for (rel, text) in files {
         let lines: Vec<&str> = text.lines().collect();
         for pair in lines.windows(2) {
-            let Some(name) = pair[1]
-                .trim()
+            let declared = pair[1].trim();
+            let declared = declared.strip_prefix("pub(crate) ").unwrap_or(declared);
+            let Some(name) = declared
                 .strip_prefix("mod ")
                 .and_then(|m| m.strip_suffix(';'))
             else {
