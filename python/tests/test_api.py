@@ -424,8 +424,8 @@ def test_physical_takes_a_model_and_warns_as_the_command_line(cli):
 def test_physical_without_a_model_is_the_command_lines_default(cli):
     """Issue 32 item 5: physical() without a model asks the table of
     defaults, as the command line without --model does: at theta = 60 deg
-    (rho = 1/3) with coatings the grid solver does not reach (h = 20 um,
-    h/L = 0.12) the exact pull-off, with its reason, max beside it (the two
+    (rho = 1/3) with coatings the layer in the plane does not reach (h =
+    20 um, h/L = 0.12) the exact pull-off, with its reason, max beside it (the two
     differ by 9 %) and how far (2) is off the layer at rho = 1 (issue 71);
     the same numbers and words as the command line."""
     import warnings
@@ -449,16 +449,19 @@ def test_physical_without_a_model_is_the_command_lines_default(cli):
 
 
 def test_physical_without_a_model_answers_with_the_layer_in_the_plane(cli):
-    """Issue 71: below 90 degrees, where the grid solver reaches the
+    """Issue 71: below 90 degrees, where the layer in the plane reaches the
     coatings (h/L = 0.58 at 60 degrees), physical() without a model answers
-    the pull-off with the layer in the plane: its force's bound, its ladder
-    of four rungs, and (2)'s exact pull-off beside it, tens of per cent
-    off. (The command line's answer is held to the library's in Rust.)"""
+    the pull-off with it: by the sharp edge, its force within 1e-3 (the
+    issue's done-when) on a ladder of three rungs, and (2)'s exact pull-off
+    beside it, tens of per cent off; its repr says how far to trust it.
+    (The command line's answer is held to the library's in Rust.)"""
     contact = dict(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6, work_of_adhesion=0.05)
     st = thinjkr.physical(**contact)
     assert st.model == "layer" and st.state.model == "layer"
     assert st.chosen_because.startswith("no model named: at rho < 1 the layer of finite thickness")
-    assert 0 < st.state.force_error <= 0.02 and len(st.state.rungs) == 4
+    assert st.state.method == "sharp_edge" and len(st.state.rungs) == 3
+    assert 0 < st.state.force_error <= 1e-3
+    assert "force_error=" in repr(st.state) and "method='sharp_edge'" in repr(st.state)
     assert st.force < 0 and st.state.force_bar < 0
     t = st.thin_layer
     assert t.model == "exact" and t.relative_error > 0.2

@@ -5,7 +5,8 @@
 //! 1024, h/L = 1; and the pull-off at ρ = 1, h/L = 1 on the first rungs of
 //! the docs' ladder (ε = 0.2 and 0.1, four cells across the zone); and
 //! the sharp edge's pull-off (`layer::sharp`) at θ = 60° with the guide's
-//! coatings (ρ = 1/3, h/L = 0.5785), on the rungs 12 × 3 and 16 × 4.
+//! coatings (ρ = 1/3, h/L = 0.5785), on the rungs 12 × 3, 16 × 4 and
+//! 20 × 5, as the model layer answers it.
 //!
 //! `cargo bench -p thinjkr --bench grid --features bench-internals`
 
@@ -35,7 +36,7 @@ fn benches(c: &mut Criterion) {
     let mut g = c.benchmark_group("sharp pull-off");
     g.sample_size(10);
     let sharp = SharpPullOff::new(0.5785474, 1.0 / 3.0).expect("coatings in range");
-    g.bench_function("rho = 1/3, h/L = 0.5785, 12 x 3 then 16 x 4", |b| {
+    g.bench_function("rho = 1/3, h/L = 0.5785, 12 x 3 to 20 x 5", |b| {
         b.iter(|| black_box(sharp.run().expect("a pull-off")))
     });
     g.finish();

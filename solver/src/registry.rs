@@ -540,8 +540,8 @@ fn judged_by_first_order(
 /// The pull-off of the contact `cyl` at ρ < 1 by the layer in the plane
 /// when no model is named, where (2)'s answer `thin` (by the table's
 /// `row`) is more than [`THIN_LAYER_TOLERANCE`] off it: the layer's answer
-/// with (2)'s beside it. Where the grid solver does not reach these
-/// coatings (`layer::grid::plane::REACH`), `None`, and `thin` gains a
+/// with (2)'s beside it. Where the layer in the plane does not reach these
+/// coatings (`layer::plane::PULL_OFF_REACH`), `None`, and `thin` gains a
 /// warning, with the best estimate from [`ESTIMATE_FROM_RHO`] up: (2)'s
 /// pull-off times the ratio of the axisymmetric layer's to (2)'s at ρ = 1.
 fn in_the_plane(
@@ -563,7 +563,7 @@ fn in_the_plane(
     };
     // coatings thinner than the grid reaches, where the first order in h/L
     // holds at this ρ: it judges (2)
-    if layers.thinnest() < crate::layer::grid::plane::REACH.0
+    if layers.thinnest() < crate::layer::plane::PULL_OFF_REACH.0
         && judged_by_first_order(&layers, &sc, thin)
     {
         return Ok(None);
@@ -585,7 +585,7 @@ fn in_the_plane(
         return Ok(None);
     }
     let (.., force) = thin.state.size_and_load();
-    let reach = crate::layer::grid::plane::REACH;
+    let reach = crate::layer::plane::PULL_OFF_REACH;
     // where the layer in the plane has no answer: (2)'s, with the estimate
     // where the ratio's change with ρ is measured
     let mut estimate = |why: String| {
@@ -607,9 +607,9 @@ fn in_the_plane(
         ));
         Ok(None)
     };
-    if let Some(h) = crate::layer::grid::plane::beyond_reach(&layers) {
+    if let Some(h) = crate::layer::plane::beyond_reach(&layers) {
         return estimate(format!(
-            "the grid solver reaches coatings with h/L from {} to {} only, and these have h/L = {}",
+            "the layer's pull-off in the plane is measured for coatings with h/L from {} to {} only, and these have h/L = {}",
             crate::error::short(reach.0),
             crate::error::short(reach.1),
             crate::error::short(h)
@@ -619,11 +619,11 @@ fn in_the_plane(
         Ok(layered) => layered,
         // (a stop the caller asked for stops the answer too)
         Err(e) if crate::newton::stop_requested() => return Err(e),
-        Err(e) => return estimate(format!("the grid solver has no answer: {e}")),
+        Err(e) => return estimate(format!("the layer in the plane has no answer: {e}")),
     };
     let error = thin_layer_error(&thin.state, &layered.state, None, None);
     layered.chosen_because = Some(format!(
-        "no model named: at rho < 1 the layer of finite thickness answers the pull-off in the plane where the grid solver reaches the coatings (h/L from {} to {}) and the thin-layer equation (2) is more than {} % off it (here {} %; (2)'s answer, by {}, is beside it)",
+        "no model named: at rho < 1 the layer of finite thickness answers the pull-off in the plane where it reaches the coatings (h/L from {} to {}) and the thin-layer equation (2) is more than {} % off it (here {} %; (2)'s answer, by {}, is beside it)",
         crate::error::short(reach.0),
         crate::error::short(reach.1),
         THIN_LAYER_TOLERANCE * 100.0,
@@ -943,9 +943,9 @@ impl Choice {
             Choice::Exact => vec![AnyState::Exact(Box::new(
                 crate::exact::at_resolved(rho, hold)?.judged(Cutoff::default()),
             ))],
-            // at ρ < 1 the grid solver's state in the plane
+            // at ρ < 1 the layer's state in the plane (`layer::plane`)
             Choice::Layer(layers) if rho != 1.0 => vec![AnyState::LayerPlane(Box::new(
-                crate::layer::grid::plane::state(&layers, rho, Some(hold))?,
+                crate::layer::plane::state(&layers, rho, Some(hold))?,
             ))],
             Choice::Layer(layers) => vec![AnyState::Layer(
                 layers.state(hold, crate::layer::Route::Griffith)?,
@@ -1094,18 +1094,18 @@ impl Choice {
                     why: "only the load-controlled pull-off of the exact family is located",
                 })
             }
-            // at ρ < 1 the grid solver's pull-off in the plane, under
+            // at ρ < 1 the layer's pull-off in the plane, under
             // load control
             Choice::Layer(layers) if rho != 1.0 => {
                 if !load {
                     return Err(crate::Error::Unavailable {
                         model: LAYER,
                         what: "pull-off under displacement control at rho < 1".into(),
-                        why: "the grid solver locates the pull-off under load control only; at rho = 1 the axisymmetric layer gives both",
+                        why: "the layer in the plane locates the pull-off under load control only; at rho = 1 the axisymmetric layer gives both",
                     });
                 }
                 PullOffAnswer {
-                    state: AnyState::LayerPlane(Box::new(crate::layer::grid::plane::pull_off(
+                    state: AnyState::LayerPlane(Box::new(crate::layer::plane::pull_off(
                         &layers, rho,
                     )?)),
                     control,

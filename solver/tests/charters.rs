@@ -194,13 +194,15 @@ fn every_module_uses_only_what_its_charter_names() {
 /// the crate-private grid solver), then 225 for the exact solver on a gap
 /// named by the user (issue 73: `conformal::exact_pull_off_on_gap` and
 /// `exact_state_on_gap`, which the command line's and Python's `--gap`
-/// call; the re-export of the two is the third). The benches' hooks
+/// call; the re-export of the two is the third), then 226 for `layer::Method`
+/// (issue 71: whether a state in the plane is the sharp edge's or the
+/// grid's, which `PlaneState` now says). The benches' hooks
 /// (`bench_internals` and the module it re-exports, built only with the
 /// `bench-internals` feature, hidden from the docs) are not a user's API and
 /// are not counted.
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 225;
+    const MAX_PUBLIC_ITEMS: usize = 226;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);

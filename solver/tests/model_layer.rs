@@ -236,25 +236,26 @@ fn solve_at_a_force_says_how_many_other_states_have_it() {
 /// layer at ρ = 1. A named model is answered as
 /// before, without a reason.
 #[test]
-#[ignore = "slow tier (.ci/slow): about 5 minutes (four pull-offs in the plane); CI runs three of the ten angles below"]
+#[ignore = "slow tier (.ci/slow): about 2 minutes (five pull-offs in the plane); CI runs three of the ten angles below"]
 fn physical_without_a_model_answers_from_the_table_of_defaults() {
     defaults_at(&TEN_ANGLES);
 }
 
 /// The row of docs/thickness.md's table of `physical`'s default by angle
-/// (the layer in the plane) for `theta` degrees.
-fn thickness_row(theta: f64) -> String {
+/// (the layer in the plane) for `theta` degrees, if it has one: the angles
+/// where the layer answers.
+fn thickness_row(theta: f64) -> Option<String> {
     let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/thickness.md"))
         .unwrap();
-    let anchor = "| θ | ρ | h/L | layer's pull-off | its bound | (2)'s | (2)'s error |";
+    let anchor = "| θ | ρ | h/L | layer's pull-off | its relative bound | (2)'s | (2)'s error |";
     let from = doc
         .find(anchor)
         .expect("the table of angles in docs/thickness.md");
     doc[from..]
         .lines()
+        .take_while(|l| l.starts_with('|'))
         .find(|l| l.starts_with(&format!("| {theta}° |")))
-        .unwrap_or_else(|| panic!("no row of {theta}° in docs/thickness.md"))
-        .to_string()
+        .map(str::to_string)
 }
 
 /// The crossing angles of docs/exact-record.md's table, in degrees, in its order.
@@ -308,11 +309,12 @@ fn defaults_at(angles: &[f64]) {
         let expected = if rho >= 0.4 { "conformal:8" } else { "exact" };
         // the layer of finite thickness answers by default where (2) is
         // more than 0.5 % off: at ρ = 1 (issue 70), and at ρ < 1 in the
-        // plane where the grid solver reaches the coatings, h/L from 0.5
-        // (issue 71: here from 50° up); the table's model's answer is
-        // beside it, and is the table's row below
+        // plane where it resolves the pull-off (issue 71: the angles of
+        // docs/thickness.md's table); the table's model's answer is beside
+        // it, and is the table's row below
         let h_over_l: f64 = thinness[k].parse().unwrap();
-        let layered = theta == 90.0 || h_over_l >= 0.5;
+        let row = thickness_row(theta);
+        let layered = theta == 90.0 || row.is_some();
         let answer = if layered {
             assert_eq!(
                 default.model, "layer",
@@ -321,9 +323,10 @@ fn defaults_at(angles: &[f64]) {
             );
             let t = default.thin_layer.as_ref().expect("(2) beside the layer");
             assert_eq!(t.model, expected, "theta {theta}");
-            // (2) overstates the pull-off by tens of per cent
+            // (2) overstates the pull-off: by tens of per cent from 50° up,
+            // by 4.7 % at 40° (the table's rows below hold the digits)
             assert!(
-                t.relative_error > 0.2,
+                t.relative_error > if theta > 45.0 { 0.2 } else { 0.02 },
                 "theta {theta}: {}",
                 t.relative_error
             );
@@ -342,15 +345,15 @@ fn defaults_at(angles: &[f64]) {
                 );
                 // docs/thickness.md's row of this angle, as printed
                 let computed = format!(
-                    "| {theta}° | {:.4} | {:.3} | {:.4e} N | {:.2} % | {:.4e} N | {:+.1} % |",
+                    "| {theta}° | {:.4} | {:.3} | {:.4e} N | {:.1e} | {:.4e} N | {:+.1} % |",
                     rho,
                     h_over_l,
                     default.si.force,
-                    100.0 * p.force_error,
+                    p.force_error,
                     t.si.force,
                     100.0 * t.relative_error
                 );
-                assert_eq!(thickness_row(theta), computed, "docs/thickness.md's row");
+                assert_eq!(row.as_deref(), Some(&*computed), "docs/thickness.md's row");
             }
             let named = thinjkr::registry::physical(
                 Some(thinjkr::registry::parse(expected).unwrap()),
@@ -374,15 +377,21 @@ fn defaults_at(angles: &[f64]) {
                 "{why}"
             );
             // and how far (2) is off the layer at ρ = 1 for these
-            // coatings, which the grid solver does not reach at this ρ
-            // (below ρ = 0.2 without an estimate)
+            // coatings, which the layer in the plane does not resolve at
+            // this ρ (thinner than its reach, or its ladders have no
+            // answer; below ρ = 0.2 without an estimate)
             let off = default
                 .warnings
                 .iter()
                 .find(|w| w.starts_with("(2) is "))
                 .unwrap_or_else(|| panic!("theta {theta}: {:?}", default.warnings));
+            let why = if h_over_l < 0.3 {
+                "the layer's pull-off in the plane is measured for coatings with h/L from 0.3 to 10 only"
+            } else {
+                "the layer in the plane has no answer"
+            };
             assert!(
-                off.contains("the grid solver reaches coatings with h/L from 0.5 to 10 only")
+                off.contains(why)
                     && off.contains(if rho >= 0.2 {
                         "best estimate of the pull-off force"
                     } else {
@@ -584,11 +593,13 @@ fn physical_judges_thin_coatings_by_the_first_order_in_h_over_l() {
         thinnest.warnings
     );
     // h = 10 µm, h/L = 0.18: beyond the first order's reach (a correction
-    // of 7.7 %) and the grid's; ρ = 1's ratio as before
+    // of 7.7 %) and the plane's; ρ = 1's ratio as before
     let thick = thinjkr::registry::physical(None, &at(1e-5), None, None).unwrap();
     let warning = off(&thick).expect("a warning that (2) is off");
     assert!(
-        warning.contains("the grid solver reaches coatings with h/L from 0.5 to 10 only"),
+        warning.contains(
+            "the layer's pull-off in the plane is measured for coatings with h/L from 0.3 to 10 only"
+        ),
         "{warning}"
     );
 }

@@ -17,8 +17,8 @@ import numpy as _np
 _FIRST = ("model", "rho", "a_bar", "b_bar", "s", "delta_bar", "force_bar")
 # how a state is checked, by model: the boundary condition's error (the
 # ellipse's models, exact), the closure's defect (conformal:K), the Legendre
-# tail (layer)
-_CHECKS = ("bc_error", "bc_defect", "tail")
+# tail (layer), the bound on the force's relative error (layer in the plane)
+_CHECKS = ("bc_error", "bc_defect", "tail", "force_error")
 
 
 def _plain(v: Any) -> Any:
@@ -147,7 +147,7 @@ class State:
         head = [shown(k) for k in _FIRST + ("control",) if k in f]
         lines = [f"{type(self).__name__}({', '.join(head)})"]
         trust = [f"{k}={f[k]:.1e}" for k in _CHECKS if isinstance(f.get(k), float)]
-        trust += [shown(k) for k in ("route", "stability_load", "stability_displacement") if f.get(k) is not None]
+        trust += [shown(k) for k in ("route", "method", "stability_load", "stability_displacement") if f.get(k) is not None]
         if trust:
             lines.append("  " + ", ".join(trust))
         warnings = [w for w in f.get("warnings") or [] if isinstance(w, str)]

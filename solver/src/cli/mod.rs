@@ -381,17 +381,31 @@ fn show_layer_plane(label: &str, st: &crate::layer::PlaneState) -> crate::Result
     if output::explain() {
         outln!("  {}", st.coatings_are);
         for r in &st.rungs {
+            let rung = match (r.eps, r.cells, r.functions) {
+                (Some(eps), Some(cells), _) => format!(
+                    "process zone {} of the contact, {cells} cells per side",
+                    crate::error::short(eps)
+                ),
+                (.., Some([radial, angular])) => {
+                    format!("{radial} x {angular} functions, {angular} edge modes")
+                }
+                _ => "a rung".into(),
+            };
             outln!(
-                "  process zone {} of the contact, {} cells per side: force = {}, a = {}, b = {}, delta = {}",
-                crate::error::short(r.eps),
-                r.cells,
+                "  {rung}: force = {}, a = {}, b = {}, delta = {}",
                 output::num(r.force_bar),
                 output::num(r.a_bar),
                 output::num(r.b_bar),
                 output::num(r.delta_bar)
             );
         }
-        if st.held != crate::layer::Held::Force {
+        if let Some(g) = st.griffith_error {
+            outln!(
+                "  the finest edge departs from Griffith's condition by at most {:.1e}",
+                g
+            );
+        }
+        if st.held != crate::layer::Held::Force && st.method == crate::layer::Method::Grid {
             outln!(
                 "  the JKR limit through the three coarsest: force = {}",
                 output::num(st.force_bar_coarse)

@@ -22,13 +22,12 @@
 //! elastic energy instead (∂Ū/∂ā = πā at fixed δ̄) and is held against the
 //! first in the tests.
 //!
-//! At ρ < 1 the contact is not axisymmetric: the grid solver (`grid`)
-//! gives the pull-off under load control in the plane, [`PlaneState`]
-//! (issue 71).
-//!
-//! The sharp edge in the plane (`sharp`, under construction) keeps JKR's
-//! edge sharp where the grid's cohesive zone cannot be made small against
-//! h: it reproduces this module's states at ρ = 1.
+//! At ρ < 1 the contact is not axisymmetric: `plane` gives the pull-off
+//! under load control in the plane, [`PlaneState`] (issue 71), by the
+//! sharp edge (`sharp`: JKR's edge kept sharp, the contact's outline
+//! solved for; it reproduces this module's states at ρ = 1) where its
+//! ladder converges, else by the grid solver (`grid`: a cohesive law
+//! shrunk toward JKR's edge), which also gives the state at a force.
 //!
 //! Coatings thin against the contact, below the grid's reach, are taken at
 //! first order in h/L at any ρ by `thin`: (2)'s exact pull-off with the
@@ -44,19 +43,20 @@ mod galerkin;
 // the first order in h/L at any ρ (issue 71): where the grid does not reach
 #[allow(dead_code)]
 pub(crate) mod thin;
-// the sharp edge at ρ < 1 (issue 71, under construction): the free edge
-// and its pull-off, held by its tests, not yet answered through the model
-// layer
-#[allow(dead_code)]
+// the sharp edge at ρ < 1 (issue 71): the free edge and its pull-off,
+// which `plane` answers with
 pub(crate) mod sharp;
 #[cfg(feature = "bench-internals")]
 pub mod sharp_bench;
-// the grid solver of issue 71: its pull-off in the plane answers through
-// the model layer (`grid::plane`); the straight edge's undulations are
-// tested here
+// the grid solver of issue 71: its states in the plane answer through
+// the model layer (`plane`); the straight edge's undulations are tested
+// here
 #[allow(dead_code)]
 pub(crate) mod grid;
-pub use grid::plane::{Held, PlaneRung, PlaneState};
+// the model layer's answer in the plane: the sharp edge's pull-off, else
+// the grid's
+pub(crate) mod plane;
+pub use plane::{Held, Method, PlaneRung, PlaneState};
 
 use crate::control::Hold;
 use crate::error::{check_range, rounded, short, Error, Result};

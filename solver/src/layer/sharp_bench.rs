@@ -1,17 +1,18 @@
 //! The sharp edge's hook for the criterion benches (issue 71, item 5),
-//! built only with the `bench-internals` feature: the pull-off of
-//! `layer::sharp` on its first two rungs.
+//! built only with the `bench-internals` feature: the pull-off the model
+//! layer answers with in the plane, the sharp edge's ladder and its bound
+//! (`layer::plane::by_sharp_edge`).
 //!
-//! Owns: `SharpPullOff`. May use: `layer` (the pair) and its `sharp`,
+//! Owns: `SharpPullOff`. May use: `layer` (the pair) and its `plane`,
 //! `error`.
 
-use super::sharp::{pull_off_ladder, Resolution};
+use super::plane::by_sharp_edge::pull_off;
 use super::Layers;
 use crate::error::Result;
 
 /// The sharp edge's pull-off for the criterion benches (built only with
 /// the `bench-internals` feature): two equal incompressible coatings of
-/// thinness `thinness` at `rho`, on the rungs 12 × 3 and then 16 × 4.
+/// thinness `thinness` at `rho`, on the rungs 12 × 3, 16 × 4 and 20 × 5.
 pub struct SharpPullOff {
     layers: Layers,
     rho: f64,
@@ -26,13 +27,8 @@ impl SharpPullOff {
         })
     }
 
-    /// The pull-off's force on the finer rung.
+    /// The pull-off's force, the finest rung's.
     pub fn run(&self) -> Result<f64> {
-        let rungs = [
-            Resolution::rung(12, 3, 8, 32),
-            Resolution::rung(16, 4, 16, 64),
-        ];
-        let ladder = pull_off_ladder(&self.layers, self.rho, &rungs, |_, _| {})?;
-        Ok(ladder[1].force_bar)
+        Ok(pull_off(&self.layers, self.rho)?.force_bar)
     }
 }

@@ -16,8 +16,8 @@
 //!
 //! Owns: `Sheet`, `SheetState`, `Work`, `Rung`, `Target`. May use: `layer` (the pair), `error`,
 //! `quadrature`, `newton` (the stop request, between rungs), and its own
-//! `kernel`, `law`, `gmres`, `bessel0`, `edge`, `bench`, `plane` (the
-//! answer the model layer gives), `stability` (a state's least eigenvalues).
+//! `kernel`, `law`, `gmres`, `bessel0`, `edge`, `bench`, `stability` (a
+//! state's least eigenvalues).
 
 #[cfg(feature = "bench-internals")]
 pub(crate) mod bench;
@@ -26,7 +26,6 @@ mod edge;
 mod gmres;
 pub(crate) mod kernel;
 mod law;
-pub(crate) mod plane;
 pub(crate) mod stability;
 
 use super::Layers;

@@ -6,7 +6,7 @@
 //!
 //! Owns: nothing. May use: `layer` (the pair and its axisymmetric
 //! reference, `thin`'s first order in h/L), `exact` ((2)'s exact pull-off), the grid's
-//! `pull_off_ladder`, `jkr_limit`, `edge`, `plane` (the model layer's
+//! `pull_off_ladder`, `jkr_limit`, `edge`, `plane::by_grid` (the grid's
 //! answer in the plane) and `stability` (the least eigenvalues on the
 //! unloading path), `control` (the hold of a state at a force), `error`.
 
@@ -170,7 +170,7 @@ fn rho_of(printed: &str) -> f64 {
 #[test]
 #[ignore = "slow tier (.ci/slow): the layer in the plane behind docs/thickness.md, about 18 minutes"]
 fn the_plane_tables_of_the_docs_are_the_model_layer_s() {
-    // the answer the model layer gives at ρ < 1 (`plane::pull_off`), its
+    // the grid's answer at ρ < 1 (`plane::by_grid::pull_off`), its
     // bounds measured against the axisymmetric reference at ρ = 1, and
     // across ρ against (2)'s exact pull-off
     let doc = doc();
@@ -182,7 +182,7 @@ fn the_plane_tables_of_the_docs_are_the_model_layer_s() {
         let thin: f64 = row[0].parse().unwrap();
         let layers = Layers::equal(thin, 0.5).unwrap();
         let reference = layers.pull_off(Route::Griffith).unwrap().load;
-        let p = super::plane::pull_off(&layers, 1.0).unwrap();
+        let p = crate::layer::plane::by_grid::pull_off(&layers, 1.0).unwrap();
         let at = format!("h/L {thin} at rho = 1");
         // (the row as the docs print it: `--nocapture` shows it)
         println!(
@@ -239,7 +239,7 @@ fn the_plane_tables_of_the_docs_are_the_model_layer_s() {
         let force = if row[1] == "0" { 0.0 } else { -pull };
         let hold = crate::control::Hold::Force(force);
         let reference = layers.state(hold, Route::Griffith).unwrap();
-        let p = super::plane::state(&layers, 1.0, Some(hold)).unwrap();
+        let p = crate::layer::plane::by_grid::state(&layers, 1.0, Some(hold)).unwrap();
         let at = format!("h/L {thin} at rho = 1, force {}", row[1]);
         println!(
             "| {thin} | {} | {:.4} | {:+.5} | {:.5} | {:+.3} % | {:.2} % |",
@@ -281,7 +281,7 @@ fn the_plane_tables_of_the_docs_are_the_model_layer_s() {
         let layers = Layers::equal(thin, 0.5).unwrap();
         let at_circle = layers.pull_off(Route::Griffith).unwrap().load.force_bar / circle;
         let at = format!("h/L {thin}, rho {}", row[1]);
-        let p = match super::plane::pull_off(&layers, rho) {
+        let p = match crate::layer::plane::by_grid::pull_off(&layers, rho) {
             Ok(p) => p,
             Err(e) => {
                 bad.push(format!("{at}: {e}"));

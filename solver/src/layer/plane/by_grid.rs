@@ -1,12 +1,12 @@
-//! The layer's answer in the plane (issue 71): a state of two coatings at
-//! any ρ (its pull-off under load control, or the state at a force), from
-//! the grid solver's ladder of process zones and its JKR limit, with how
+//! The grid solver's answer in the plane (issue 71): a state of two
+//! coatings at any ρ (its pull-off under load control, or the state at a
+//! force), from its ladder of process zones and its JKR limit, with how
 //! far to trust it. A state at an approach is refused: the force's limit
 //! there missed the reference by more than its bound (at h/L = 0.5).
 //!
 //! The ladder is [`LADDER`]: process zones ε = 0.2, 0.1, 0.05 and 0.025 of
 //! the size scale, four cells across each. Where the force is not held it
-//! is the JKR limit ([`super::jkr_limit`]) through the three finest rungs;
+//! is the JKR limit (`grid::jkr_limit`) through the three finest rungs;
 //! the limit through the three coarsest is its check. Their difference,
 //! doubled, is the stated bound on the force's relative error: for the
 //! pull-off at ρ = 1, against the axisymmetric reference, it held at
@@ -20,21 +20,21 @@
 //! rung before; the spread, 3.2e-3, holds it, and at h/L = 10, 0.73 and 0.5
 //! too), and the size's at least 0.5 % ([`SIZE_FLOOR`]: at a held force
 //! the half width is biased by up to 0.3 % more than its spread shows). An
-//! answer whose force bound exceeds [`WORST_FORCE_ERROR`] is
+//! answer whose force bound exceeds `plane::WORST_FORCE_ERROR` is
 //! refused (at ρ = 0.0196 with h/L = 0.73 the two limits differ by 3.2 %);
 //! coatings outside [`REACH`] are refused before any ladder (at h/L = 0.3,
 //! ρ = 1, the rung ε = 0.05 is still 5 % off).
 //!
-//! Owns: [`PlaneState`], [`PlaneRung`], [`Held`], [`state`], [`LADDER`],
-//! [`WORST_FORCE_ERROR`], [`REACH`], [`beyond_reach`]. May use: its parent `grid` (the ladder
-//! and its limit), `layer` (the pair), `control` (the hold), `error`,
-//! `progress` (the rung a spinner shows), `newton` (the stop request).
+//! Owns: [`state`], [`pull_off`], [`LADDER`], [`REACH`]. May use: its
+//! parent `plane` (the state it gives), `grid` (the ladder and its limit),
+//! `layer` (the pair), `control` (the hold), `error`, `progress` (the rung
+//! a spinner shows), `newton` (the stop request).
 
-use super::{jkr_limit, ladder, Rung, Target};
+use super::{two_digits, Held, Method, PlaneRung, PlaneState, WARN_FORCE_ERROR, WORST_FORCE_ERROR};
 use crate::control::Hold;
 use crate::error::{rounded, short, Error, Result};
-use crate::layer::{Coating, Layers};
-use serde::Serialize;
+use crate::layer::grid::{jkr_limit, ladder, Rung, Target};
+use crate::layer::Layers;
 
 /// The ladder of (process zone ε, cells across it) of [`pull_off`].
 pub(crate) const LADDER: [(f64, f64); 4] = [(0.2, 4.0), (0.1, 4.0), (0.05, 4.0), (0.025, 4.0)];
@@ -42,9 +42,6 @@ pub(crate) const LADDER: [(f64, f64); 4] = [(0.2, 4.0), (0.1, 4.0), (0.05, 4.0),
 /// The bound on the force's relative error, over the relative difference
 /// of the two three-rung limits (see the module).
 const BOUND_OVER_DIFFERENCE: f64 = 2.0;
-
-/// The largest bound on the force's relative error an answer may have.
-pub(crate) const WORST_FORCE_ERROR: f64 = 0.02;
 
 /// The coatings the ladder is measured to resolve, h/L of each: from
 /// 0.5 (the bound 7.3e-3 at ρ = 1) to 10. At h/L = 0.3 the finest rung
@@ -58,131 +55,6 @@ pub(crate) const REACH: (f64, f64) = (0.5, 10.0);
 /// 0.5: +0.30 % at zero force, the rungs within 0.2 % of each other; the
 /// ladder does not close it).
 const SIZE_FLOOR: f64 = 0.005;
-
-/// The bound above which an answer carries a warning: within 1 % or
-/// worse, the force is too rough to tell coatings apart by.
-const WARN_FORCE_ERROR: f64 = 0.01;
-
-/// One rung of the ladder: its process zone, grid and state.
-#[derive(Clone, Debug, Serialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct PlaneRung {
-    /// The process zone ε, a fraction of the size scale.
-    pub eps: f64,
-    /// Cells per side of the grid.
-    pub cells: usize,
-    /// The force F̄ with this cohesive law.
-    pub force_bar: f64,
-    /// Its approach δ̄.
-    pub delta_bar: f64,
-    /// Its half width along X (where the gap reaches the law's range).
-    pub a_bar: f64,
-    /// Its half width along Y.
-    pub b_bar: f64,
-}
-
-/// What a state of the layer in the plane is held at.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum Held {
-    /// The pull-off under load control: the least force on the branch a
-    /// loaded contact follows under displacement control.
-    PullOff,
-    /// An approach δ̄, on the branch stable under displacement control.
-    Delta,
-    /// A force F̄, on the branch stable under load control.
-    Force,
-}
-
-/// A state of the layer at any ρ, by the grid solver (see the module).
-#[derive(Clone, Debug, Serialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-pub struct PlaneState {
-    /// Radii ratio ρ.
-    pub rho: f64,
-    /// What the state is held at.
-    pub held: Held,
-    /// The force F̄: the held one, else the JKR limit through the three
-    /// finest rungs.
-    pub force_bar: f64,
-    /// The bound on F̄'s relative error: twice the relative difference of
-    /// the two three-rung limits (at an approach relative to the force unit
-    /// where |F̄| is below 1; 0 where F̄ is held).
-    pub force_error: f64,
-    /// The JKR limit through the three coarsest rungs (the check; the held
-    /// force where it is held).
-    pub force_bar_coarse: f64,
-    /// Half width along X, the finest rung's.
-    pub a_bar: f64,
-    /// Half width along Y, the finest rung's.
-    pub b_bar: f64,
-    /// Aspect ratio b̄/ā.
-    pub s: f64,
-    /// Approach δ̄: the held one, else the finest rung's.
-    pub delta_bar: f64,
-    /// The bound on ā's and b̄'s relative error: their spread over the
-    /// three finest rungs, relative, the larger, and at least 0.5 % (the
-    /// half width's bias at a held force, which the spread does not show).
-    pub size_error: f64,
-    /// The bound on δ̄'s error: its spread over the three finest rungs (0
-    /// where δ̄ is held).
-    pub delta_error: f64,
-    /// The ladder's rungs, coarsest first.
-    pub rungs: Vec<PlaneRung>,
-    /// The two coatings.
-    pub coatings: [Coating; 2],
-    /// What the coatings are and how the answer is found, in words every
-    /// output gives.
-    pub coatings_are: &'static str,
-    /// Why the answer is doubtful, in the words every front end shows
-    /// (empty when it is not).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub warnings: Vec<String>,
-}
-
-/// [`PlaneState::coatings_are`].
-pub(crate) const IN_THE_PLANE: &str = "coatings of finite thickness in the plane, by the grid solver: a cohesive law shrunk toward JKR's sharp edge on a ladder of process zones, the force extrapolated to its limit (docs/thickness.md); G' is read as each coating's isotropic shear modulus G";
-
-impl PlaneState {
-    /// How far to trust it, in a line: the bounds and where they come from.
-    pub(crate) fn trust_words(&self) -> String {
-        let mut within = vec![format!(
-            "size within {} %",
-            two_digits(100.0 * self.size_error)
-        )];
-        if self.held != Held::Force {
-            within.insert(
-                0,
-                format!("force within {} %", two_digits(100.0 * self.force_error)),
-            );
-        }
-        if self.held != Held::Delta {
-            within.push(format!("delta within {}", two_digits(self.delta_error)));
-        }
-        let how = if self.held == Held::Force {
-            "the finest of"
-        } else {
-            "the force the JKR limit, the rest the finest, of"
-        };
-        format!(
-            "{}: {how} {} states with cohesive process zones from {} to {} of the contact",
-            within.join(", "),
-            self.rungs.len(),
-            short(self.rungs[0].eps),
-            short(self.rungs[self.rungs.len() - 1].eps)
-        )
-    }
-}
-
-/// A bound for a person: two significant digits.
-fn two_digits(x: f64) -> String {
-    if !(x.is_finite() && x > 0.0) {
-        return short(x);
-    }
-    let decimals = (1.0 - x.log10().floor()).max(0.0) as usize;
-    format!("{x:.decimals$}")
-}
 
 /// The pull-off under load control of `layers` at `rho` ∈ (0, 1]: [`state`]
 /// with no hold.
@@ -221,33 +93,28 @@ pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<Pla
     state_of(layers, rho, target)
 }
 
-/// The thinness of the coating of `layers` outside [`REACH`] (the
-/// thinner one first), if any: where the ladder is not measured to
-/// resolve the layer.
-pub(crate) fn beyond_reach(layers: &Layers) -> Option<f64> {
-    if layers.thinnest() < REACH.0 {
-        Some(layers.thinnest())
-    } else if layers.thickest() > REACH.1 {
-        Some(layers.thickest())
-    } else {
-        None
+/// An error naming the coating of `layers` outside [`REACH`], if any.
+fn within_reach(layers: &Layers) -> Result<()> {
+    for value in [layers.thinnest(), layers.thickest()] {
+        if !(REACH.0..=REACH.1).contains(&value) {
+            return Err(Error::Unsupported {
+                name: "h/L",
+                value,
+                supported: format!(
+                    "{} to {} for each coating at rho < 1: the grid solver's ladder is measured to resolve the layer there (docs/thickness.md); at rho = 1 the axisymmetric layer takes 0.001 to 10000",
+                    short(REACH.0),
+                    short(REACH.1)
+                )
+                .into(),
+            });
+        }
     }
+    Ok(())
 }
 
 /// [`state`] for the ladder's `target`.
 fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
-    if let Some(value) = beyond_reach(layers) {
-        return Err(Error::Unsupported {
-            name: "h/L",
-            value,
-            supported: format!(
-                "{} to {} for each coating at rho < 1: the grid solver's ladder is measured to resolve the layer there (docs/thickness.md); at rho = 1 the axisymmetric layer takes 0.001 to 10000",
-                short(REACH.0),
-                short(REACH.1)
-            )
-            .into(),
-        });
-    }
+    within_reach(layers)?;
     let held = match target {
         Target::PullOff => Held::PullOff,
         Target::Delta(_) => Held::Delta,
@@ -283,8 +150,9 @@ fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
         .iter()
         .map(|r| {
             Ok(PlaneRung {
-                eps: r.eps,
-                cells: r.n,
+                eps: Some(r.eps),
+                cells: Some(r.n),
+                functions: None,
                 force_bar: r.state.force_bar,
                 delta_bar: r.state.delta_bar,
                 a_bar: half_width(r, r.state.half_widths.0, "X")?,
@@ -332,6 +200,7 @@ fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
     Ok(PlaneState {
         rho,
         held,
+        method: Method::Grid,
         force_bar: fine,
         force_error,
         force_bar_coarse: coarse,
@@ -345,8 +214,9 @@ fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
         } else {
             spread(|r| r.delta_bar)
         },
+        griffith_error: None,
         coatings: layers.coatings(),
-        coatings_are: IN_THE_PLANE,
+        coatings_are: super::ON_THE_GRID,
         warnings,
         rungs: plane,
     })
@@ -365,7 +235,7 @@ fn half_width(r: &Rung, w: Option<f64>, axis: &str) -> Result<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::layer::Route;
+    use crate::layer::{Coating, Route};
 
     /// `p`'s half widths and approach each within the bound it states of
     /// the axisymmetric `reference` at ρ = 1.
