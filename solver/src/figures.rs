@@ -14,7 +14,8 @@
 //! `model` (every ellipse model beside it), `conformal` (its arms and
 //! convergence), `slender` (its pull-off beside the models'), `layer` (the
 //! pull-off against the coatings' thickness), `studies` (the reach map's
-//! lines, with the feature `cli`), `error`.
+//! lines, with the feature `cli`), `report` (the thickness map's points,
+//! with the feature `cli`), `error`.
 
 use crate::contact::Contact;
 use crate::error::{Error, Result};
@@ -1136,10 +1137,85 @@ fn conformal_convergence_figure(po: &[crate::accuracy::ReferenceState]) -> Figur
     }
 }
 
+/// The map of (2)'s pull-off error against the coatings' thinness, one
+/// line per crossing angle (`thinjkr thickness-map --figure`,
+/// docs/figures/thickness_map.svg), from the map's `points`: the layer's
+/// pull-offs that were found, and a dashed zero.
+#[cfg(feature = "cli")]
+pub(crate) fn thickness_map(points: &[crate::report::ThicknessPoint]) -> Result<String> {
+    use crate::report::ThicknessAnswer;
+    const COLORS: [RGBColor; 7] = [
+        RED,
+        ORANGE,
+        GREEN,
+        RGBColor(20, 160, 170),
+        BLUE,
+        RGBColor(120, 60, 170),
+        GREY,
+    ];
+    let mut series = Vec::new();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (k, row) in points
+        .chunk_by(|p, q| p.theta_deg == q.theta_deg)
+        .enumerate()
+    {
+        let line: Vec<(f64, f64)> = row
+            .iter()
+            .filter_map(|p| match p.layer {
+                ThicknessAnswer::Found { error_2, .. } => {
+                    Some((p.thinness.log10(), 100.0 * error_2))
+                }
+                ThicknessAnswer::None { .. } => None,
+            })
+            .collect();
+        for p in row {
+            lo = lo.min(p.thinness.log10());
+            hi = hi.max(p.thinness.log10());
+        }
+        if !line.is_empty() {
+            series.push(solid(
+                &format!("θ = {}°", crate::error::short(row[0].theta_deg)),
+                line,
+                COLORS[k % COLORS.len()],
+            ));
+        }
+    }
+    series.push(dashed("(2) exact", vec![(lo, 0.0), (hi, 0.0)], GREY));
+    render(&Figure {
+        file: "thickness_map.svg",
+        title: "(2)'s pull-off error against the layer of finite thickness (ν = ½)".into(),
+        x_label: "log₁₀ h/L",
+        y_label: "(2)'s error −F₍₂₎/F − 1 [%]",
+        series,
+        shade: Vec::new(),
+        shade_label: "",
+        equal: false,
+    })
+}
+
 /// Every figure as (file name, SVG text).
 pub fn all() -> Result<Vec<(&'static str, String)>> {
     figures()?
         .iter()
         .map(|f| Ok((f.file, render(f)?)))
         .collect()
+}
+
+#[cfg(all(test, feature = "cli"))]
+mod tests {
+    /// docs/figures/thickness_map.svg is the map drawn from the committed
+    /// points (the slow tier computes both again).
+    #[test]
+    fn the_thickness_map_s_figure_is_the_committed_points() {
+        let points = crate::studies::thickness_map::committed();
+        let figure = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../docs/figures/thickness_map.svg"
+        ))
+        .unwrap();
+        assert!(
+            figure == super::thickness_map(&points).unwrap(),
+            "docs/figures/thickness_map.svg is stale: `thinjkr thickness-map --json --figure docs/figures/thickness_map.svg > docs/data/thickness_map.jsonl`"
+        );
+    }
 }

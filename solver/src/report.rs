@@ -347,6 +347,54 @@ pub(crate) enum Reached {
 }
 
 #[cfg(feature = "cli")]
+/// One point of the map of (2)'s pull-off error against the coatings'
+/// thinness and the crossing angle (`thickness-map --json`; issue 71):
+/// equal incompressible coatings on equal cylinders.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub(crate) struct ThicknessPoint {
+    /// The crossing angle θ in degrees.
+    pub theta_deg: f64,
+    /// Radii ratio ρ = tan²(θ/2).
+    pub rho: f64,
+    /// Each coating's thinness h/L.
+    pub thinness: f64,
+    /// (2)'s exact pull-off F̄₍₂₎ at ρ (the units (17), the same at every
+    /// thinness).
+    pub force_bar_2: f64,
+    /// The layer's pull-off: its force, the bound on its relative error,
+    /// how it was found and (2)'s relative error −F̄₍₂₎/F̄ − 1; or why it
+    /// has none.
+    pub layer: ThicknessAnswer,
+}
+
+#[cfg(feature = "cli")]
+/// The layer's pull-off at one point of the thickness map, or why it has
+/// none.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub(crate) enum ThicknessAnswer {
+    /// The layer's pull-off under load control.
+    Found {
+        /// Its force F̄ (the units (17)).
+        force_bar: f64,
+        /// The bound on F̄'s relative error it states.
+        force_error: f64,
+        /// How it was found: `axisymmetric` (ρ = 1), `sharp_edge` or `grid`.
+        method: String,
+        /// (2)'s relative error, F̄₍₂₎/F̄ − 1 (positive where (2)
+        /// overstates the pull-off).
+        error_2: f64,
+    },
+    /// No pull-off: why, in words.
+    None {
+        /// Why.
+        why: String,
+    },
+}
+
+#[cfg(feature = "cli")]
 /// One size's reach.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -721,6 +769,12 @@ pub(crate) enum Document {
     Reach {
         /// The size and how its path in ρ ended.
         reach: SizeReach,
+    },
+    #[cfg(feature = "cli")]
+    /// One point of the thickness map (`thickness-map --json`).
+    Thickness {
+        /// The point.
+        thickness: ThicknessPoint,
     },
     #[cfg(feature = "cli")]
     /// A window of the reach at one ρ settled by the family at that ρ

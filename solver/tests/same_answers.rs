@@ -34,7 +34,7 @@ const NUMBERS: [&str; 11] = [
     "a",
     "force",
 ];
-const WORDS: [&str; 4] = ["route", "control", "model", "basis"];
+const WORDS: [&str; 5] = ["route", "control", "model", "basis", "method"];
 
 /// What a command gave: its exit status, its error's kind, and the
 /// compared values by their path in the JSON (or the CSV's row and

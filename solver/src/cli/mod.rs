@@ -10,7 +10,9 @@
 //! May use: `generated` (`ModelId`), `accuracy`, `control`, `crate::registry`, `crate::report`, `crate::units`,
 //! `crate::contact`, `crate::model`, `crate::conformal`, `crate::exact`,
 //! `crate::batch`, `crate::curve`, `crate::fold`, `crate::figures`,
-//! `crate::limits`, `crate::error`, `crate::layer` (a layer state), its own modules.
+//! `crate::limits`, `crate::error`, `crate::layer` (a layer state),
+//! `crate::studies` (the thickness map), `crate::progress` (its points as
+//! they come), its own modules.
 
 use crate::report::{AnyState, Document, ErrorBody};
 use crate::units::Cylinders;
@@ -224,6 +226,25 @@ enum Command {
         #[arg(long)]
         out: std::path::PathBuf,
     },
+    /// The map of the thin-layer equation (2)'s pull-off error against the layer of finite thickness, by crossing angle and coating thinness (equal incompressible coatings on equal cylinders; docs/thickness.md; seconds to a minute a point).
+    #[command(
+        name = "thickness-map",
+        after_help = "Example:\n  thinjkr thickness-map --theta-deg 60,90 --thinness 0.5,1 --json"
+    )]
+    ThicknessMap {
+        /// Crossing angles θ in degrees, in (0, 90] (repeat the flag or separate by commas; default 30, 40, …, 90).
+        #[arg(long = "theta-deg", value_delimiter = ',', allow_hyphen_values = true)]
+        theta_deg: Vec<f64>,
+        /// Each coating's thinness h/L (repeat or separate by commas; default 0.3, 0.5, 0.73, 1, 2, 5, 10).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        thinness: Vec<f64>,
+        /// Print JSON, one point a line.
+        #[arg(long)]
+        json: bool,
+        /// Also draw the map (SVG, one line per angle) into this file (docs/figures/thickness_map.svg).
+        #[arg(long)]
+        figure: Option<std::path::PathBuf>,
+    },
     /// Physical inputs (SI units), from flags or a TOML file with the same keys.
     #[command(
         after_help = "Example:\n  thinjkr physical --r1 0.01 --r2 0.01 --theta-deg 60 --h1 1e-4 --h2 1e-4 --g1 1e6 --g2 1e6 --work-of-adhesion 0.05 --force 0"
@@ -352,6 +373,65 @@ fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
         stable(st.delta_slope, st.delta_bar)
     );
     outln!("  {}", st.coatings_are);
+    Ok(())
+}
+
+/// `thinjkr thickness-map`: the map's points as JSON lines, or its table
+/// under a line that says what it is.
+fn thickness_map(
+    thetas: Vec<f64>,
+    thins: Vec<f64>,
+    json: bool,
+    figure: Option<&std::path::Path>,
+) -> crate::Result<()> {
+    use crate::studies::thickness_map::{map, markdown, THETAS, THINS};
+    let thetas = if thetas.is_empty() {
+        THETAS.to_vec()
+    } else {
+        thetas
+    };
+    let thins = if thins.is_empty() {
+        THINS.to_vec()
+    } else {
+        thins
+    };
+    if let Some(path) = figure {
+        files::check_file(path)?;
+    }
+    let spin = output::Spinner::start("the layer's pull-off at each point");
+    let (mut done, count) = (0, thetas.len() * thins.len());
+    let points = map(&thetas, &thins, |p| {
+        done += 1;
+        crate::progress::stage(format!(
+            "point {done} of {count} (theta = {} degrees, h/L = {}) done",
+            crate::error::short(p.theta_deg),
+            crate::error::short(p.thinness)
+        ));
+    })?;
+    drop(spin);
+    if let Some(path) = figure {
+        files::write_whole(path, crate::figures::thickness_map(&points)?.as_bytes())?;
+    }
+    if json {
+        for p in points {
+            outln!(
+                "{}",
+                crate::report::Document::Thickness { thickness: p }.to_json()
+            );
+        }
+        return Ok(());
+    }
+    outln!("the thin-layer equation (2)'s pull-off error -F2/F - 1 against the layer of finite thickness (F its pull-off: s by the sharp edge, g by the grid, at 90 degrees the axisymmetric layer), equal incompressible coatings on equal cylinders:");
+    outln!("{}", markdown(&points)?.trim_end());
+    for p in &points {
+        if let crate::report::ThicknessAnswer::None { why } = &p.layer {
+            outln!(
+                "  theta = {} degrees, h/L = {}: no pull-off of the layer ({why})",
+                crate::error::short(p.theta_deg),
+                crate::error::short(p.thinness)
+            );
+        }
+    }
     Ok(())
 }
 
@@ -520,6 +600,12 @@ fn run(cli: Cli) -> crate::Result<u8> {
         Some(Command::Schema) => outln!("{}", crate::report::schema().trim_end()),
         Some(Command::Completions { shell }) => completions_command(shell)?,
         Some(Command::Manpage) => out!("{}", manpage()),
+        Some(Command::ThicknessMap {
+            theta_deg,
+            thinness,
+            json,
+            figure,
+        }) => thickness_map(theta_deg, thinness, json, figure.as_deref())?,
         Some(Command::Figures { out }) => {
             files::check_folder(&out)?;
             let drawn = crate::figures::all()?;
