@@ -447,8 +447,9 @@ def physical(
     as the command line's warnings. ``nu1``, ``nu2`` are the coatings'
     Poisson's ratios in [0, 0.5], which the layer of finite thickness reads
     (model ``layer``; without a model it answers wherever (2) is more than
-    0.5 % off, at ρ = 1 and, for the pull-off, at ρ < 1 where the grid
-    solver reaches the coatings (h/L from 0.5 to 10), with (2)'s answer
+    0.5 % off, at ρ = 1 and, for the pull-off, at ρ < 1 where the layer
+    in the plane reaches the coatings (h/L from 0.3 to 10: the sharp edge,
+    else the grid solver), with (2)'s answer
     under ``thin_layer``: its ``model``, ``state``, ``si`` and
     ``relative_error``)."""
     answer = _physical(dict(r1=r1, r2=r2, theta_deg=theta_deg, h1=h1, h2=h2, g1=g1, g2=g2,

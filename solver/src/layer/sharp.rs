@@ -1562,7 +1562,8 @@ mod tests {
     /// `THINJKR_SHARP_THIN` (1) against the resolution, with
     /// `THINJKR_SHARP_LADDER=1` (`=40`: and 40 × 10 functions; and `THINJKR_SHARP_LINES=2`: twice the
     /// points and lines through each node; `THINJKR_SHARP_SOURCES=2`: twice
-    /// the base share's sources) (run it in release: `cargo test --release -p
+    /// the base share's sources; `THINJKR_SHARP_RUNGS=24x4/16/64,…`: these
+    /// rungs, radial x angular / panels / angles) (run it in release: `cargo test --release -p
     /// thinjkr --lib explore_the_free_edge_pull_off -- --ignored
     /// --nocapture`); without it the coarsest resolution alone.
     #[test]
@@ -1588,6 +1589,20 @@ mod tests {
             Resolution::rung(24, 6, 24, 96),
             Resolution::rung(32, 8, 32, 128),
         ];
+        // THINJKR_SHARP_RUNGS = "radialxangular/panels/angles,…": these
+        // rungs instead (e.g. 24x4/16/64,32x4/24/96)
+        if let Ok(list) = std::env::var("THINJKR_SHARP_RUNGS") {
+            ladder = list
+                .split(',')
+                .map(|r| {
+                    let n: Vec<usize> = r
+                        .split(['x', '/'])
+                        .map(|x| x.trim().parse().expect("radialxangular/panels/angles"))
+                        .collect();
+                    Resolution::rung(n[0], n[1], n[2], n[3])
+                })
+                .collect();
+        }
         // THINJKR_SHARP_LADDER = 1: those five; = 40: a sixth, 40 × 10
         let rungs = match std::env::var("THINJKR_SHARP_LADDER").as_deref() {
             Ok("40") => {
