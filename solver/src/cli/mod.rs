@@ -399,7 +399,7 @@ fn thickness_map(
         files::check_file(path)?;
     }
     let spin = output::Spinner::start("the layer's pull-off at each point");
-    let (mut done, count) = (0, thetas.len() * thins.len());
+    let (mut done, count) = (0, thetas.len().saturating_mul(thins.len()));
     let points = map(&thetas, &thins, |p| {
         done += 1;
         crate::progress::stage(format!(

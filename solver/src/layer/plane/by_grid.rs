@@ -95,21 +95,11 @@ pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<Pla
 
 /// An error naming the coating of `layers` outside [`REACH`], if any.
 fn within_reach(layers: &Layers) -> Result<()> {
-    for value in [layers.thinnest(), layers.thickest()] {
-        if !(REACH.0..=REACH.1).contains(&value) {
-            return Err(Error::Unsupported {
-                name: "h/L",
-                value,
-                supported: format!(
-                    "{} to {} for each coating at rho < 1: the grid solver's ladder is measured to resolve the layer there (docs/thickness.md); at rho = 1 the axisymmetric layer takes 0.001 to 10000",
-                    short(REACH.0),
-                    short(REACH.1)
-                )
-                .into(),
-            });
-        }
-    }
-    Ok(())
+    super::within(
+        layers,
+        REACH,
+        " at rho < 1: the grid solver's ladder is measured to resolve the layer there (docs/thickness.md); at rho = 1 the axisymmetric layer takes 0.001 to 10000",
+    )
 }
 
 /// [`state`] for the ladder's `target`.

@@ -86,20 +86,11 @@ const DELTA_FLOOR: f64 = 1e-4;
 /// to within `plane::WORST_FORCE_ERROR`.
 pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-    for h in [layers.thinnest(), layers.thickest()] {
-        if !(REACH.0..=REACH.1).contains(&h) {
-            return Err(Error::Unsupported {
-                name: "h/L",
-                value: h,
-                supported: format!(
-                    "{} to {} for each coating: the sharp edge's ladder is measured there (docs/thickness.md)",
-                    short(REACH.0),
-                    short(REACH.1)
-                )
-                .into(),
-            });
-        }
-    }
+    super::within(
+        layers,
+        REACH,
+        ": the sharp edge's ladder is measured there (docs/thickness.md)",
+    )?;
     let rungs: Vec<Resolution> = RUNGS
         .iter()
         .map(|&((radial, angular), (panels, angles))| {

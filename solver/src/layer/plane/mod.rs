@@ -240,11 +240,35 @@ pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<Pla
 /// (the thinner one first), if any: where no pull-off in the plane is
 /// measured.
 pub(crate) fn beyond_reach(layers: &Layers) -> Option<f64> {
-    if layers.thinnest() < PULL_OFF_REACH.0 {
+    outside(layers, PULL_OFF_REACH)
+}
+
+/// The thinness of the coating of `layers` outside `(lo, hi)` (the
+/// thinner one first), if any.
+fn outside(layers: &Layers, (lo, hi): (f64, f64)) -> Option<f64> {
+    if layers.thinnest() < lo {
         Some(layers.thinnest())
-    } else if layers.thickest() > PULL_OFF_REACH.1 {
+    } else if layers.thickest() > hi {
         Some(layers.thickest())
     } else {
         None
+    }
+}
+
+/// An error naming the coating of `layers` outside a method's `reach`, if
+/// any, with `why` it is that (after the range, in the error's words).
+fn within(layers: &Layers, reach: (f64, f64), why: &str) -> Result<()> {
+    match outside(layers, reach) {
+        None => Ok(()),
+        Some(value) => Err(crate::error::Error::Unsupported {
+            name: "h/L",
+            value,
+            supported: format!(
+                "{} to {} for each coating{why}",
+                short(reach.0),
+                short(reach.1)
+            )
+            .into(),
+        }),
     }
 }
