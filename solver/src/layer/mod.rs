@@ -43,6 +43,9 @@ mod galerkin;
 // the first order in h/L at any ρ (issue 71): where the grid does not reach
 #[allow(dead_code)]
 pub(crate) mod thin;
+// (2) with the edge's line tension kept whole, the first order's model
+#[allow(dead_code)]
+pub(crate) mod line_tension;
 // the sharp edge at ρ < 1 (issue 71): the free edge and its pull-off,
 // which `plane` answers with
 pub(crate) mod sharp;

@@ -194,7 +194,7 @@ pub(crate) fn force_per_shift(st: &ExactState) -> Result<f64> {
 }
 
 /// The curvature of `c` at θ (positive where convex).
-fn curvature(c: &Contour, theta: f64) -> f64 {
+pub(crate) fn curvature(c: &Contour, theta: f64) -> f64 {
     let [_, d1, d2] = c.at(theta);
     (d2 * d1.conj()).im / d1.norm().powi(3)
 }
