@@ -431,19 +431,23 @@ mod tests {
     /// At ρ = 0.8 the layer's approach to (2) is the line tension's, to
     /// third order in h/L with the circle's coefficient: at h/L = 0.2 the
     /// sharp edge's pull-off less the line tension's is the circle's
-    /// difference within 2 % (about 25 s).
+    /// difference within 5 % (0.1 % measured; from h/L = 0.07 to 0.3 within
+    /// 4.3 %, docs/thickness.md; about 25 s).
     #[test]
     fn at_rho_0_8_the_layer_is_the_line_tension_with_the_circle_s_third_order() {
         let ratio = beyond_at_rho_0_8_over_the_circle_s(0.2);
-        assert!((ratio - 1.0).abs() < 0.02, "ratio {ratio}");
+        assert!((ratio - 1.0).abs() < 0.05, "ratio {ratio}");
     }
 
-    /// As above at h/L = 0.1, where the difference is 4e-3 (about 40 s).
+    /// As above at h/L = 0.1 and 0.15, where the difference is 4e-3 and
+    /// 1.4e-2 (0.1 % and 2.3 % off the circle's, measured).
     #[test]
-    #[ignore = "slow tier (.ci/slow): the sharp edge at rho = 0.8 and h/L = 0.1, about 40 s"]
-    fn at_rho_0_8_and_h_0_1_the_layer_is_the_line_tension_with_the_circle_s_third_order() {
-        let ratio = beyond_at_rho_0_8_over_the_circle_s(0.1);
-        assert!((ratio - 1.0).abs() < 0.02, "ratio {ratio}");
+    #[ignore = "slow tier (.ci/slow): the sharp edge at rho = 0.8 and h/L = 0.1 and 0.15, about 80 s"]
+    fn at_rho_0_8_and_thinner_the_layer_is_the_line_tension_with_the_circle_s_third_order() {
+        for h in [0.1, 0.15] {
+            let ratio = beyond_at_rho_0_8_over_the_circle_s(h);
+            assert!((ratio - 1.0).abs() < 0.05, "h/L {h}: ratio {ratio}");
+        }
     }
 
     /// The line tension's pull-off against the sharp edge's: at each ρ of
@@ -483,10 +487,11 @@ mod tests {
                 st.delta_bar,
                 force_per_shift(&st).unwrap()
             );
-            let exacts = [
-                Exact::of_state(&st).unwrap(),
-                Exact::of_state_with(&st, finer).unwrap(),
-            ];
+            // THINJKR_TENSION_FINER = 0: the state's truncation alone
+            let mut exacts = vec![Exact::of_state(&st).unwrap()];
+            if std::env::var("THINJKR_TENSION_FINER").as_deref() != Ok("0") {
+                exacts.push(Exact::of_state_with(&st, finer).unwrap());
+            }
             for h in list("THINJKR_TENSION_THINS", "0.1") {
                 let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
                 // THINJKR_TENSION_STEP: the line tension's step (0.02)
