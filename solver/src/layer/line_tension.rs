@@ -61,6 +61,9 @@ pub(crate) struct LineTension {
     pub(crate) half_widths: (f64, f64),
     /// The largest departure of the equations from zero at the state.
     pub(crate) residual: f64,
+    /// The true contact line, b̄ inside the contour, at 64 points of its
+    /// first quadrant.
+    pub(crate) contact_line: Vec<[f64; 2]>,
 }
 
 /// The equations at held δ̄ under the line tension `shift`.
@@ -294,7 +297,17 @@ pub(crate) fn pull_off_with_line_tension(
         .map(|r| r.amax())
         .unwrap_or(f64::INFINITY);
         let c = exact.contour_of(&v);
+        // inward along the normal: the contour runs anticlockwise, so its
+        // outward normal is −i z′/|z′|
+        let contact_line = (0..64)
+            .map(|k| {
+                let [z, dz, _] = c.at(0.5 * std::f64::consts::PI * (k as f64 + 0.5) / 64.0);
+                let inner = z - b * (-dz * nalgebra::Complex::i()) / dz.norm();
+                [inner.re, inner.im]
+            })
+            .collect();
         found = Some(LineTension {
+            contact_line,
             shift: b,
             force_bar: f,
             delta_bar: d,
@@ -450,6 +463,110 @@ mod tests {
         }
     }
 
+    /// The sharp edge's pull-off started from the line tension's contact
+    /// line and approach (its first rung walks δ̄ over ±0.03 about the line
+    /// tension's in 6 steps, or THINJKR_SEED_WALK): at THINJKR_TENSION_RHOS (default 0.5) and
+    /// THINJKR_TENSION_THINS (0.15) on THINJKR_SHARP_RUNGS (default
+    /// 16x6/16/64,20x8/16/64), with the line tension's pull-off and the
+    /// circle's difference beside it (`cargo test --release -p thinjkr
+    /// --lib explore_the_sharp_edge_from_the_line_tension -- --ignored
+    /// --nocapture`).
+    #[test]
+    #[ignore = "exploration: prints the sharp edge's pull-offs from the line tension's"]
+    fn explore_the_sharp_edge_from_the_line_tension() {
+        use crate::layer::sharp::{pull_off_ladder_from, Domain, Resolution};
+        use crate::layer::thin::edge_shift;
+        use crate::layer::Layers;
+        let list = |k: &str, d: &str| -> Vec<String> {
+            std::env::var(k)
+                .unwrap_or_else(|_| d.into())
+                .split(',')
+                .map(|v| v.trim().to_string())
+                .collect()
+        };
+        let rungs: Vec<Resolution> = list("THINJKR_SHARP_RUNGS", "16x6/16/64,20x8/16/64")
+            .iter()
+            .map(|r| {
+                let n: Vec<usize> = r.split(['x', '/']).map(|x| x.parse().unwrap()).collect();
+                Resolution::rung(n[0], n[1], n[2], n[3])
+            })
+            .collect();
+        // THINJKR_SEED_WALK = "below,above,steps" about the line tension's δ̄
+        let seed: Vec<f64> = list("THINJKR_SEED_WALK", "0.03,0.03,6")
+            .iter()
+            .map(|v| v.parse().unwrap())
+            .collect();
+        let (below, above, walk) = (seed[0], seed[1], seed[2] as usize);
+        let (circle, _) = pull_off_resolved(1.0).unwrap();
+        let on_circle = Exact::of_state(&circle).unwrap();
+        for rho in list("THINJKR_TENSION_RHOS", "0.5") {
+            let rho: f64 = rho.parse().unwrap();
+            let (st, _) = pull_off_resolved(rho).unwrap();
+            let ex = Exact::of_state(&st).unwrap();
+            for h in list("THINJKR_TENSION_THINS", "0.15") {
+                let h: f64 = h.parse().unwrap();
+                let layers = Layers::equal(h, 0.5).unwrap();
+                let b = edge_shift(&layers).unwrap();
+                let steps = ((b / 0.005).ceil() as usize).max(1);
+                let t = match pull_off_with_line_tension(&ex, &st, b, steps) {
+                    Ok(t) => t,
+                    Err(e) => {
+                        println!("rho {rho} h/L {h}: the line tension: {e}");
+                        continue;
+                    }
+                };
+                let (a, bb) = (t.half_widths.0 - b, t.half_widths.1 - b);
+                // the contact line's least turning between neighbouring
+                // points (negative: not convex)
+                let least_turn = t
+                    .contact_line
+                    .windows(3)
+                    .map(|w| {
+                        let (u, v) = (
+                            [w[1][0] - w[0][0], w[1][1] - w[0][1]],
+                            [w[2][0] - w[1][0], w[2][1] - w[1][1]],
+                        );
+                        (u[0] * v[1] - u[1] * v[0]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]))
+                    })
+                    .fold(f64::MAX, f64::min);
+                println!("  the contact line's least turning {least_turn:.2e}");
+                let guess = Domain::through(&t.contact_line, a, bb, rungs[0].shape).unwrap();
+                let circle_beyond = beyond_the_line_tension(&on_circle, &circle, h);
+                println!(
+                    "rho {rho} h/L {h}: the line tension {:.9} at delta {:.6}, half-widths {a:.6} {bb:.6}; the circle's difference {circle_beyond:.3e}",
+                    t.force_bar, t.delta_bar
+                );
+                let time = std::time::Instant::now();
+                let ladder = pull_off_ladder_from(
+                    &layers,
+                    rho,
+                    &rungs,
+                    guess,
+                    ((t.delta_bar - below, t.delta_bar + above), walk),
+                    0.05 * a * a,
+                    |res, s| {
+                        println!(
+                            "  {}x{}: F {:.8} delta {:.6} half-widths {:.6} {:.6} griffith {:.1e}; less the line tension {:.3e}, over the circle's {:.3} ({:.1} s)",
+                            res.radial,
+                            res.angular,
+                            s.force_bar,
+                            s.delta_bar,
+                            s.a_bar,
+                            s.b_bar,
+                            s.griffith_error,
+                            s.force_bar - t.force_bar,
+                            (s.force_bar - t.force_bar) / circle_beyond,
+                            time.elapsed().as_secs_f64()
+                        )
+                    },
+                );
+                if let Err(e) = ladder {
+                    println!("  {e}");
+                }
+            }
+        }
+    }
+
     /// The line tension's pull-off against the sharp edge's: at each ρ of
     /// THINJKR_TENSION_RHOS (default 0.8) and h/L of THINJKR_TENSION_THINS
     /// (default 0.1), on (2)'s pull-off's truncation and on one with 1.5
@@ -490,7 +607,11 @@ mod tests {
             // THINJKR_TENSION_FINER = 0: the state's truncation alone
             let mut exacts = vec![Exact::of_state(&st).unwrap()];
             if std::env::var("THINJKR_TENSION_FINER").as_deref() != Ok("0") {
-                exacts.push(Exact::of_state_with(&st, finer).unwrap());
+                exacts.push(
+                    Exact::on(st.gap, st.rho, finer)
+                        .unwrap()
+                        .keeping_the_speed_of_grooved(&st.contour),
+                );
             }
             for h in list("THINJKR_TENSION_THINS", "0.1") {
                 let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();

@@ -218,18 +218,27 @@ impl Domain {
     }
 
     /// The same edge in the coordinates of the ellipse (`a`, `b`) with
-    /// `count` modes: the modes fitted in the least squares to Φ′ = 1 at 64
-    /// points of the edge's quarter (Φ′ is linear in them). Between rungs
-    /// the half-widths become the ellipse's, so that the modes stay small
-    /// where the contact moves far from its first guess.
+    /// `count` modes ([`Domain::through`] 64 points of the edge's
+    /// quarter). Between rungs the half-widths become the ellipse's, so
+    /// that the modes stay small where the contact moves far from its first
+    /// guess.
     pub(crate) fn rebased(&self, a: f64, b: f64, count: usize) -> Result<Domain> {
-        let count = count.max(1);
         let points = 64;
-        let mut m = DMatrix::zeros(points, count);
-        let mut rhs = DVector::zeros(points);
-        for k in 0..points {
-            let theta = 0.5 * PI * (k as f64 + 0.5) / points as f64;
-            let [x, y] = self.edge(theta)?;
+        let edge = (0..points)
+            .map(|k| self.edge(0.5 * PI * (k as f64 + 0.5) / points as f64))
+            .collect::<Result<Vec<_>>>()?;
+        Domain::through(&edge, a, b, count)
+    }
+
+    /// The domain in the coordinates of the ellipse (`a`, `b`) with `count`
+    /// modes whose edge passes nearest `points` (an outline's first
+    /// quadrant): the modes fitted in the least squares to Φ = 1 there (Φ
+    /// is linear in them).
+    pub(crate) fn through(points: &[[f64; 2]], a: f64, b: f64, count: usize) -> Result<Domain> {
+        let count = count.max(1);
+        let mut m = DMatrix::zeros(points.len(), count);
+        let mut rhs = DVector::zeros(points.len());
+        for (k, &[x, y]) in points.iter().enumerate() {
             let (xi, eta) = (x / a, y / b);
             let r2 = xi * xi + eta * eta;
             let w2 = Complex64::new(xi * xi - eta * eta, 2.0 * xi * eta);
@@ -945,14 +954,30 @@ pub(crate) fn pull_off_ladder(
     layers: &Layers,
     rho: f64,
     rungs: &[Resolution],
-    mut visit: impl FnMut(&Resolution, &SharpState),
+    visit: impl FnMut(&Resolution, &SharpState),
 ) -> Result<Vec<SharpState>> {
     let circle = layers.pull_off(super::Route::Griffith)?.load;
     let stretch = rho.powf(0.45).sqrt();
-    let mut guess = Domain::ellipse(circle.a_bar / stretch, circle.a_bar * stretch);
+    let guess = Domain::ellipse(circle.a_bar / stretch, circle.a_bar * stretch);
     // (the approach's scale is the contact's area: at h/L = 10 ā = 0.1)
     let (d, wide) = (circle.delta_bar, 0.05 * circle.a_bar.powi(2).min(1.0));
-    let (mut bracket, mut steps) = ((d - 0.5 * d.abs() - wide, d + 0.5 * d.abs() + wide), 16);
+    let bracket = (d - 0.5 * d.abs() - wide, d + 0.5 * d.abs() + wide);
+    pull_off_ladder_from(layers, rho, rungs, guess, (bracket, 16), wide, visit)
+}
+
+/// [`pull_off_ladder`] from the edge `guess`, the first rung walking over
+/// `first` (its bracket in δ̄ and steps), the finer ones over ±0.2 `wide`
+/// about the last one's pull-off in 4 steps.
+pub(crate) fn pull_off_ladder_from(
+    layers: &Layers,
+    rho: f64,
+    rungs: &[Resolution],
+    mut guess: Domain,
+    ((lo, hi), steps): ((f64, f64), usize),
+    wide: f64,
+    mut visit: impl FnMut(&Resolution, &SharpState),
+) -> Result<Vec<SharpState>> {
+    let (mut bracket, mut steps) = ((lo, hi), steps);
     let mut found = Vec::with_capacity(rungs.len());
     for res in rungs {
         let st = Contact::new(layers, rho, *res, &guess)?.pull_off(&guess, bracket, steps)?;
