@@ -1310,13 +1310,31 @@ impl Exact {
         u: DVector<f64>,
         first: Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
     ) -> Result<DVector<f64>> {
+        let rho = crate::error::rounded(self.rho);
+        self.chord_on(&Held { exact: self, held }, u, first, |delta| {
+            format!("exact solution at rho = {rho}, {held} (delta_bar = {delta})")
+        })
+    }
+
+    /// The shared chord iteration ([`crate::newton::chord`]) on `system`,
+    /// equations in this problem's unknowns, from `u` and `first` (as
+    /// [`Exact::newton_from`]), to the exact solver's residual; where it
+    /// stops, the error at the last iterate's contour, `what` naming the
+    /// equations at its approach (rounded).
+    pub(crate) fn chord_on(
+        &self,
+        system: &impl crate::newton::ChordSystem,
+        u: DVector<f64>,
+        first: Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
+        what: impl Fn(String) -> String,
+    ) -> Result<DVector<f64>> {
         let id = self.unknown_count() - 1;
         let config = crate::newton::ChordConfig {
             floor: 1e-13,
             tolerance: RESIDUAL_TOLERANCE,
             max_iterations: 60,
         };
-        crate::newton::chord(&Held { exact: self, held }, u, first, &config).map_err(|stop| {
+        crate::newton::chord(system, u, first, &config).map_err(|stop| {
             // where it stopped: the contour of the last iterate
             let c = self.contour_of(&stop.u);
             Error::NoConvergence {
@@ -1324,12 +1342,7 @@ impl Exact {
                 a_bar: c.a_bar(),
                 s: c.b_bar() / c.a_bar(),
                 residual: stop.residual,
-                context: format!(
-                    "exact solution at rho = {}, {held} (delta_bar = {}): {}",
-                    crate::error::rounded(self.rho),
-                    crate::error::rounded(stop.u[id]),
-                    stop.why
-                ),
+                context: format!("{}: {}", what(crate::error::rounded(stop.u[id])), stop.why),
             }
         })
     }

@@ -33,13 +33,10 @@ use super::thin::curvature;
 use crate::error::{rounded, Error, Result};
 use crate::exact::linear::Linear;
 use crate::exact::{Exact, ExactState};
-use crate::newton::{chord, ChordConfig, ChordSystem};
+use crate::newton::ChordSystem;
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 use std::cell::RefCell;
 
-/// The residual at which a state of this model is taken as converged (the
-/// exact solver's).
-const TOLERANCE: f64 = 1e-11;
 /// The relative step of the curvature's differences.
 const STEP: f64 = 1e-7;
 /// The first bracket's half-width in δ̄ about the guess.
@@ -171,26 +168,12 @@ fn state_at(
     let mut start = from.clone();
     let id = start.len() - 1;
     start[id] = delta_bar;
-    let config = ChordConfig {
-        floor: 1e-13,
-        tolerance: TOLERANCE,
-        max_iterations: 60,
-    };
-    let u = chord(&system, start, None, &config).map_err(|stop| {
-        let c = exact.contour_of(&stop.u);
-        Error::NoConvergence {
-            iterations: stop.iterations,
-            a_bar: c.a_bar(),
-            s: c.b_bar() / c.a_bar(),
-            residual: stop.residual,
-            context: format!(
-                "(2) with the edge's line tension {} at rho = {}, delta_bar = {}: {}",
-                rounded(shift),
-                rounded(rho),
-                rounded(delta_bar),
-                stop.why
-            ),
-        }
+    let u = exact.chord_on(&system, start, None, |delta| {
+        format!(
+            "(2) with the edge's line tension {} at rho = {}, delta_bar = {delta}",
+            rounded(shift),
+            rounded(rho)
+        )
     })?;
     let lin = system.scaled(&u, false).ok_or_else(|| {
         Error::NoState(format!(
@@ -463,6 +446,19 @@ mod tests {
         }
     }
 
+    /// The comma-separated values of the environment variable `key`, else
+    /// of `default` (the explorations' lists).
+    fn env_list<T: std::str::FromStr>(key: &str, default: &str) -> Vec<T>
+    where
+        T::Err: std::fmt::Debug,
+    {
+        std::env::var(key)
+            .unwrap_or_else(|_| default.into())
+            .split(',')
+            .map(|v| v.trim().parse().unwrap())
+            .collect()
+    }
+
     /// The sharp edge's pull-off started from the line tension's contact
     /// line and approach (its first rung walks δ̄ over ±0.03 about the line
     /// tension's in 6 steps, or THINJKR_SEED_WALK): at THINJKR_TENSION_RHOS (default 0.5) and
@@ -477,13 +473,7 @@ mod tests {
         use crate::layer::sharp::{pull_off_ladder_from, Domain, Resolution};
         use crate::layer::thin::edge_shift;
         use crate::layer::Layers;
-        let list = |k: &str, d: &str| -> Vec<String> {
-            std::env::var(k)
-                .unwrap_or_else(|_| d.into())
-                .split(',')
-                .map(|v| v.trim().to_string())
-                .collect()
-        };
+        let list = env_list::<String>;
         let rungs: Vec<Resolution> = list("THINJKR_SHARP_RUNGS", "16x6/16/64,20x8/16/64")
             .iter()
             .map(|r| {
@@ -578,13 +568,7 @@ mod tests {
         use crate::exact::Truncation;
         use crate::layer::thin::edge_shift;
         use crate::layer::Layers;
-        let list = |k: &str, d: &str| -> Vec<f64> {
-            std::env::var(k)
-                .unwrap_or_else(|_| d.into())
-                .split(',')
-                .map(|v| v.trim().parse().unwrap())
-                .collect()
-        };
+        let list = env_list::<f64>;
         for rho in list("THINJKR_TENSION_RHOS", "0.8") {
             let (st, _) = pull_off_resolved(rho).unwrap();
             let t = st.truncation;
