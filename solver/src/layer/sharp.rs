@@ -991,6 +991,147 @@ pub(crate) fn pull_off_ladder_from(
     Ok(found)
 }
 
+/// The state at force `force` on the branch stable under load control
+/// (above the pull-off in δ̄) on each of `rungs`. On the first rung: its
+/// pull-off (the walk of [`pull_off_ladder`]), then a walk up in δ̄ from
+/// it, from a fifth of the walk's scale, until the force passes `force`;
+/// on each finer one, from the last one's edge rebased: a state at the
+/// last one's δ̄, then a walk from a fiftieth of that scale towards the
+/// force until it is passed; the walks' steps grow 1.5 times (halved where
+/// Newton's method finds no state). On each, the Illinois method in δ̄ to within
+/// 1e-10 of the force. An error where `force` is below the first rung's
+/// pull-off (no state under load control there) or a state is not found.
+pub(crate) fn force_ladder(
+    layers: &Layers,
+    rho: f64,
+    rungs: &[Resolution],
+    force: f64,
+    mut visit: impl FnMut(&Resolution, &SharpState),
+) -> Result<Vec<SharpState>> {
+    let circle = layers.pull_off(super::Route::Griffith)?.load;
+    let stretch = rho.powf(0.45).sqrt();
+    let mut guess = Domain::ellipse(circle.a_bar / stretch, circle.a_bar * stretch);
+    let (d, wide) = (circle.delta_bar, 0.05 * circle.a_bar.powi(2).min(1.0));
+    let bracket = (d - 0.5 * d.abs() - wide, d + 0.5 * d.abs() + wide);
+    let mut found: Vec<SharpState> = Vec::with_capacity(rungs.len());
+    for res in rungs {
+        let contact = Contact::new(layers, rho, *res, &guess)?;
+        let mut jacobian = None;
+        let (mut lo, mut step) = match found.last() {
+            None => {
+                let p = contact.pull_off(&guess, bracket, 16)?;
+                if force < p.force_bar {
+                    return Err(Error::NoState(format!(
+                        "no state at force {} under load control: the layer's pull-off in the plane is near {}",
+                        crate::error::short(force),
+                        crate::error::short(p.force_bar)
+                    )));
+                }
+                (p, 0.2 * wide)
+            }
+            Some(last) => {
+                let at = contact.edge_at(last.delta_bar, &guess, &mut jacobian)?;
+                let towards = if at.force_bar < force { 1.0 } else { -1.0 };
+                (at, towards * 0.02 * wide)
+            }
+        };
+        // on past the force
+        let mut hi = None;
+        for _ in 0..60 {
+            // a step too long for Newton's method halved (up to 6 times)
+            let mut tries = 0;
+            let st = loop {
+                match contact.edge_at(lo.delta_bar + step, &lo.domain, &mut jacobian) {
+                    Ok(st) => break st,
+                    Err(_) if tries < 6 && !crate::newton::stop_requested() => {
+                        tries += 1;
+                        step *= 0.5;
+                        jacobian = None;
+                    }
+                    Err(e) => return Err(e),
+                }
+            };
+            if (st.force_bar - force) * (lo.force_bar - force) <= 0.0 {
+                hi = Some(st);
+                break;
+            }
+            lo = st;
+            step *= 1.5;
+        }
+        let hi = hi.ok_or_else(|| {
+            Error::NoState(format!(
+                "the sharp edge's force did not pass {} in 60 steps in delta",
+                crate::error::short(force)
+            ))
+        })?;
+        let st = contact.at_force(lo, hi, force, &mut jacobian)?;
+        visit(res, &st);
+        guess = st
+            .domain
+            .rebased(st.a_bar, st.b_bar, st.domain.modes.len())?;
+        found.push(st);
+    }
+    Ok(found)
+}
+
+impl Contact<'_> {
+    /// The state at force `force` between the states `lo` and `hi`, whose
+    /// forces lie on either side of it: the Illinois method in δ̄, each
+    /// state from the nearer end's edge, to within 1e-10 of the force (of
+    /// 1 where it is smaller) or 1e-12 in δ̄.
+    fn at_force(
+        &self,
+        mut lo: SharpState,
+        mut hi: SharpState,
+        force: f64,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        let tolerance = 1e-10 * force.abs().max(1.0);
+        let (mut g_lo, mut g_hi) = (lo.force_bar - force, hi.force_bar - force);
+        let mut side = 0;
+        for _ in 0..60 {
+            if g_lo.abs() <= tolerance {
+                return Ok(lo);
+            }
+            if g_hi.abs() <= tolerance || (hi.delta_bar - lo.delta_bar).abs() <= 1e-12 {
+                return Ok(hi);
+            }
+            let mut d = (lo.delta_bar * g_hi - hi.delta_bar * g_lo) / (g_hi - g_lo);
+            let (min, max) = (
+                lo.delta_bar.min(hi.delta_bar),
+                lo.delta_bar.max(hi.delta_bar),
+            );
+            if !(d > min && d < max) {
+                d = 0.5 * (lo.delta_bar + hi.delta_bar);
+            }
+            let from = if (d - lo.delta_bar).abs() < (d - hi.delta_bar).abs() {
+                lo.domain.clone()
+            } else {
+                hi.domain.clone()
+            };
+            let st = self.edge_at(d, &from, jacobian)?;
+            let g = st.force_bar - force;
+            if g * g_lo > 0.0 {
+                (lo, g_lo) = (st, g);
+                if side == -1 {
+                    g_hi *= 0.5;
+                }
+                side = -1;
+            } else {
+                (hi, g_hi) = (st, g);
+                if side == 1 {
+                    g_lo *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        Err(Error::NoState(format!(
+            "the sharp edge's state at force {} was not located in 60 steps",
+            crate::error::short(force)
+        )))
+    }
+}
+
 /// How finely the base share's integral over the contact is taken: in
 /// (α, θ) with Φ = sin² α on the ray of angle θ, where dA/√(1 − Φ) =
 /// ab sin α dα dθ / P′(r²) and the integrand is smooth; `panels` Gauss–Legendre panels of 8 points in α

@@ -7,8 +7,9 @@
 //! [`WORST_FORCE_ERROR`]; elsewhere (a rung that finds no state, or rungs
 //! that do not converge, as at θ = 30° with equal cylinders) the grid
 //! solver's (`by_grid`: a cohesive law shrunk toward JKR's edge), where
-//! it reaches the coatings. A state at a force is the grid's; a state at
-//! an approach or a size is refused, with its reason.
+//! it reaches the coatings. A state at a force is found the same way (the
+//! sharp edge's, else the grid's); a state at an approach or a size is
+//! refused, with its reason.
 //!
 //! Owns: [`PlaneState`], [`PlaneRung`], [`Held`], [`Method`], [`state`],
 //! [`pull_off`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
@@ -227,13 +228,33 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
 }
 
 /// The state of `layers` at `rho` ∈ (0, 1] held at `hold` (`None`: the
-/// pull-off under load control, [`pull_off`]); at a force the grid
-/// solver's.
+/// pull-off under load control, [`pull_off`]); at a force the sharp
+/// edge's where it answers, else the grid solver's, as for the pull-off.
 pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<PlaneState> {
-    match hold {
-        None => pull_off(layers, rho),
-        Some(hold) => by_grid::state(layers, rho, Some(hold)),
-    }
+    let force = match hold {
+        None => return pull_off(layers, rho),
+        Some(Hold::Force(f)) if f.is_finite() => f,
+        Some(hold) => return by_grid::state(layers, rho, Some(hold)),
+    };
+    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+    let sharp = match by_sharp_edge::at_force(layers, rho, force) {
+        Ok(state) => return Ok(state),
+        Err(e) if crate::newton::stop_requested() => return Err(e),
+        Err(e) => e,
+    };
+    let mut grid = by_grid::state(layers, rho, hold).map_err(|grid| match sharp {
+        // coatings outside both reaches: the grid's refusal (the wider's)
+        crate::error::Error::Unsupported { .. } => grid,
+        _ => crate::error::Error::NoState(format!(
+            "the layer's state at force {} in the plane at rho = {}: the sharp edge has none ({sharp}), and neither has the grid solver ({grid})",
+            short(force),
+            short(rho)
+        )),
+    })?;
+    grid.warnings.push(format!(
+        "by the grid solver: the sharp edge, which answers where it resolves the contact, has no answer here ({sharp})"
+    ));
+    Ok(grid)
 }
 
 /// The thinness of the coating of `layers` outside [`PULL_OFF_REACH`]
