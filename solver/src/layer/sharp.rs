@@ -991,21 +991,42 @@ pub(crate) fn pull_off_ladder_from(
     Ok(found)
 }
 
-/// The state at force `force` on the branch stable under load control
-/// (above the pull-off in δ̄) on each of `rungs`. On the first rung: its
-/// pull-off (the walk of [`pull_off_ladder`]), then a walk up in δ̄ from
-/// it, from a fifth of the walk's scale, until the force passes `force`;
-/// on each finer one, from the last one's edge rebased: a state at the
-/// last one's δ̄, then a walk from a fiftieth of that scale towards the
-/// force until it is passed; the walks' steps grow 1.5 times (halved where
-/// Newton's method finds no state). On each, the Illinois method in δ̄ to within
-/// 1e-10 of the force. An error where `force` is below the first rung's
-/// pull-off (no state under load control there) or a state is not found.
-pub(crate) fn force_ladder(
+/// What a state of [`held_ladder`] is held at.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum HeldAt {
+    /// A force F̄, on the branch stable under load control (above the
+    /// pull-off in δ̄).
+    Force(f64),
+    /// An approach δ̄, on the branch through the pull-off, stable under
+    /// displacement control.
+    Delta(f64),
+}
+
+impl HeldAt {
+    /// The state's departure from the hold.
+    fn off(self, st: &SharpState) -> f64 {
+        match self {
+            HeldAt::Force(f) => st.force_bar - f,
+            HeldAt::Delta(d) => st.delta_bar - d,
+        }
+    }
+}
+
+/// The state held at `held` on each of `rungs`. On the first rung: its
+/// pull-off (the walk of [`pull_off_ladder`]), then a walk in δ̄ from it
+/// towards the hold, from a fifth of the walk's scale, until the hold is
+/// passed; on each finer one, from the last one's edge rebased, a state
+/// at the last one's δ̄ and, at a force, a walk from a fiftieth of that
+/// scale. The walks' steps grow 1.5 times (halved where Newton's method
+/// finds no state). At a force, the Illinois method in δ̄ to within 1e-10
+/// of it. An error where the force is below the first rung's pull-off (no
+/// state under load control there) or a state is not found (an approach
+/// below the branch's least).
+pub(crate) fn held_ladder(
     layers: &Layers,
     rho: f64,
     rungs: &[Resolution],
-    force: f64,
+    held: HeldAt,
     mut visit: impl FnMut(&Resolution, &SharpState),
 ) -> Result<Vec<SharpState>> {
     let circle = layers.pull_off(super::Route::Griffith)?.load;
@@ -1020,24 +1041,35 @@ pub(crate) fn force_ladder(
         let (mut lo, mut step) = match found.last() {
             None => {
                 let p = contact.pull_off(&guess, bracket, 16)?;
-                if force < p.force_bar {
-                    return Err(Error::NoState(format!(
-                        "no state at force {} under load control: the layer's pull-off in the plane is near {}",
-                        crate::error::short(force),
-                        crate::error::short(p.force_bar)
-                    )));
+                if let HeldAt::Force(f) = held {
+                    if f < p.force_bar {
+                        return Err(Error::NoState(format!(
+                            "no state at force {} under load control: the layer's pull-off in the plane is near {}",
+                            crate::error::short(f),
+                            crate::error::short(p.force_bar)
+                        )));
+                    }
                 }
-                (p, 0.2 * wide)
+                // towards the hold: up in δ̄ at a force (above the pull-off)
+                let towards = match held {
+                    HeldAt::Delta(d) if d < p.delta_bar => -1.0,
+                    _ => 1.0,
+                };
+                (p, towards * 0.2 * wide)
             }
             Some(last) => {
                 let at = contact.edge_at(last.delta_bar, &guess, &mut jacobian)?;
-                let towards = if at.force_bar < force { 1.0 } else { -1.0 };
+                let towards = if held.off(&at) < 0.0 { 1.0 } else { -1.0 };
                 (at, towards * 0.02 * wide)
             }
         };
-        // on past the force
+        // on past the hold (at once where the state is at it)
         let mut hi = None;
         for _ in 0..60 {
+            if held.off(&lo) == 0.0 {
+                hi = Some(lo.clone());
+                break;
+            }
             // a step too long for Newton's method halved (up to 6 times)
             let mut tries = 0;
             let st = loop {
@@ -1048,10 +1080,22 @@ pub(crate) fn force_ladder(
                         step *= 0.5;
                         jacobian = None;
                     }
-                    Err(e) => return Err(e),
+                    Err(e) => {
+                        return Err(match held {
+                            // the walk's end: the branch turns back in δ̄
+                            HeldAt::Delta(d) if !crate::newton::stop_requested() => {
+                                Error::NoState(format!(
+                                    "no state at delta = {}: the branch through the pull-off ends near delta = {}, its least approach (the sharp edge finds no state past it)",
+                                    crate::error::short(d),
+                                    crate::error::short(lo.delta_bar)
+                                ))
+                            }
+                            _ => e,
+                        });
+                    }
                 }
             };
-            if (st.force_bar - force) * (lo.force_bar - force) <= 0.0 {
+            if held.off(&st) * held.off(&lo) <= 0.0 {
                 hi = Some(st);
                 break;
             }
@@ -1059,12 +1103,26 @@ pub(crate) fn force_ladder(
             step *= 1.5;
         }
         let hi = hi.ok_or_else(|| {
+            let what = match held {
+                HeldAt::Force(f) => format!("force {}", crate::error::short(f)),
+                HeldAt::Delta(d) => format!("delta = {}", crate::error::short(d)),
+            };
             Error::NoState(format!(
-                "the sharp edge's force did not pass {} in 60 steps in delta",
-                crate::error::short(force)
+                "the sharp edge did not reach {what} in 60 steps in delta"
             ))
         })?;
-        let st = contact.at_force(lo, hi, force, &mut jacobian)?;
+        let st = match held {
+            HeldAt::Force(f) => contact.at_force(lo, hi, f, &mut jacobian)?,
+            HeldAt::Delta(d) if hi.delta_bar == d => hi,
+            HeldAt::Delta(d) => {
+                let from = if (d - lo.delta_bar).abs() < (d - hi.delta_bar).abs() {
+                    &lo
+                } else {
+                    &hi
+                };
+                contact.edge_at(d, &from.domain.clone(), &mut jacobian)?
+            }
+        };
         visit(res, &st);
         guess = st
             .domain

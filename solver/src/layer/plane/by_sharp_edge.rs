@@ -1,8 +1,10 @@
-//! The sharp edge's pull-off and states at a force in the plane (issue
-//! 71): `layer::sharp`'s ladder [`RUNGS`] of functions of the pressure
-//! (12 × 3, 16 × 4 and 20 × 5, with 3, 4 and 5 modes of the edge), each
-//! rung from the last one's answer. At a force the force is held, and
-//! the ladder's convergence is judged in the approach.
+//! The sharp edge's pull-off and states at a force or an approach in the
+//! plane (issue 71): `layer::sharp`'s ladder [`RUNGS`] of functions of the
+//! pressure (12 × 3, 16 × 4 and 20 × 5, with 3, 4 and 5 modes of the
+//! edge), each rung from the last one's answer. At a force the force is
+//! held, and the ladder's convergence is judged in the approach; at an
+//! approach the force's bound is relative to |F̄| or 1, the smaller
+//! force passing through zero.
 //!
 //! The answer is the finest rung's. The bound on its force's relative
 //! error has two parts (their sum, at least [`FORCE_FLOOR`]):
@@ -32,14 +34,14 @@
 //! exceeds `plane::WORST_FORCE_ERROR`, the answer is an error, and the
 //! parent asks the grid.
 //!
-//! Owns: [`pull_off`], [`at_force`], [`RUNGS`], [`REACH`]. May use: its parent `plane`
+//! Owns: [`pull_off`], [`at_force`], [`at_approach`], [`RUNGS`], [`REACH`]. May use: its parent `plane`
 //! (the state it gives), `sharp` (the ladder), `layer` (the pair),
 //! `error`, `progress` (the rung a spinner shows), `control` (its tests'
 //! holds).
 
 use super::{two_digits, Held, Method, PlaneRung, PlaneState, WARN_FORCE_ERROR, WORST_FORCE_ERROR};
 use crate::error::{short, Error, Result};
-use crate::layer::sharp::{force_ladder, pull_off_ladder, Resolution, SharpState};
+use crate::layer::sharp::{held_ladder, pull_off_ladder, HeldAt, Resolution, SharpState};
 use crate::layer::Layers;
 
 /// The ladder: (radial, angular) functions of the pressure, with as many
@@ -99,8 +101,21 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
 /// [`pull_off`]'s, or where `force` is below the pull-off.
 pub(crate) fn at_force(layers: &Layers, rho: f64, force: f64) -> Result<PlaneState> {
     let rungs = checked_rungs(layers, rho)?;
-    let states = force_ladder(layers, rho, &rungs, force, progress())?;
+    let states = held_ladder(layers, rho, &rungs, HeldAt::Force(force), progress())?;
     answer(layers, rho, &rungs, &states, Held::Force)
+}
+
+/// The state of `layers` at `rho` at approach `delta` on the branch
+/// through the pull-off, stable under displacement control, by the sharp
+/// edge's [`RUNGS`] (`sharp::held_ladder`): the force's bound as the
+/// pull-off's, relative to |F̄| or 1 where the force is smaller (it passes
+/// through zero), the size's and the approach's their spread (see the
+/// module); an error as [`pull_off`]'s, or where `delta` is below the
+/// branch's least approach.
+pub(crate) fn at_approach(layers: &Layers, rho: f64, delta: f64) -> Result<PlaneState> {
+    let rungs = checked_rungs(layers, rho)?;
+    let states = held_ladder(layers, rho, &rungs, HeldAt::Delta(delta), progress())?;
+    answer(layers, rho, &rungs, &states, Held::Delta)
 }
 
 /// [`RUNGS`] as resolutions, where `rho` and the coatings are within
@@ -146,16 +161,19 @@ fn answer(
     let (before, middle, fine) = (&states[n - 3], &states[n - 2], &states[n - 1]);
     // the ladder's convergence in the force, or in the approach where the
     // force is held (its error then none)
+    // (at an approach relative to the force unit where the force is
+    // smaller: it passes through zero)
+    let scale = match held {
+        Held::Delta => fine.force_bar.abs().max(1.0),
+        _ => fine.force_bar.abs(),
+    };
     let (of, floor): (fn(&SharpState) -> f64, f64) = match held {
         Held::Force => (|s| s.delta_bar, DELTA_FLOOR),
-        _ => (
-            |s| s.force_bar,
-            FORCE_FLOOR * fine.force_bar.abs() / BOUND_OVER_DIFFERENCE,
-        ),
+        _ => (|s| s.force_bar, FORCE_FLOOR * scale / BOUND_OVER_DIFFERENCE),
     };
     let last_step = (of(fine) - of(middle)).abs();
     let step_before = (of(middle) - of(before)).abs();
-    let ladder = BOUND_OVER_DIFFERENCE * last_step / fine.force_bar.abs();
+    let ladder = BOUND_OVER_DIFFERENCE * last_step / scale;
     let force_error = match held {
         Held::Force => 0.0,
         _ => (ladder + EDGE_FACTOR * fine.griffith_error).max(FORCE_FLOOR),
@@ -167,7 +185,11 @@ fn answer(
                 format!("state at force {}", short(fine.force_bar)),
                 "approaches",
             ),
-            _ => ("pull-off".to_string(), "forces"),
+            Held::Delta => (
+                format!("state at delta = {}", short(fine.delta_bar)),
+                "forces",
+            ),
+            Held::PullOff => ("pull-off".to_string(), "forces"),
         };
         return Err(Error::Unresolved {
             what: format!(
@@ -404,6 +426,44 @@ mod tests {
             match at_force(&layers, 1.0, 1.1 * pull.force_bar) {
                 Err(Error::NoState(why)) => assert!(why.contains("pull-off"), "{why}"),
                 other => panic!("h/L {thin}: {other:?}"),
+            }
+        }
+    }
+
+    /// At ρ = 1 a state at an approach (above the pull-off's, and between
+    /// the branch's least and the pull-off's) lies within the bounds it
+    /// states of the axisymmetric layer's state at that approach.
+    #[test]
+    fn at_rho_1_a_state_at_an_approach_is_within_its_bounds_of_the_axisymmetric_reference() {
+        use crate::control::Hold;
+        for thin in [0.3, 1.0] {
+            let layers = Layers::equal(thin, 0.5).unwrap();
+            let pull = layers.pull_off(crate::layer::Route::Griffith).unwrap();
+            let (at_pull, least) = (pull.load.delta_bar, pull.displacement.delta_bar);
+            for delta in [at_pull + 0.5, 0.5 * (at_pull + least)] {
+                let reference = layers
+                    .state(Hold::Delta(delta), crate::layer::Route::Griffith)
+                    .unwrap();
+                let p = at_approach(&layers, 1.0, delta).unwrap();
+                assert_eq!((p.held, p.method), (Held::Delta, Method::SharpEdge));
+                let rel = |x: f64| (x / reference.a_bar - 1.0).abs();
+                let (a, b) = (rel(p.a_bar), rel(p.b_bar));
+                let force =
+                    (p.force_bar - reference.force_bar).abs() / reference.force_bar.abs().max(1.0);
+                println!(
+                    "h/L {thin}, delta {delta:.4}: force {force:.1e} (bound {:.1e}), a {a:.1e} b {b:.1e} (bound {:.1e})",
+                    p.force_error, p.size_error
+                );
+                assert!(
+                    force <= p.force_error,
+                    "h/L {thin}, delta {delta}: {force:.1e}"
+                );
+                assert!(
+                    a.max(b) <= p.size_error,
+                    "h/L {thin}, delta {delta}: {a:.1e}, {b:.1e}"
+                );
+                assert_eq!(p.delta_bar, delta);
+                assert!(p.warnings.is_empty(), "{:?}", p.warnings);
             }
         }
     }

@@ -8,8 +8,8 @@
 //! that do not converge, as at θ = 30° with equal cylinders) the grid
 //! solver's (`by_grid`: a cohesive law shrunk toward JKR's edge), where
 //! it reaches the coatings. A state at a force is found the same way (the
-//! sharp edge's, else the grid's); a state at an approach or a size is
-//! refused, with its reason.
+//! sharp edge's, else the grid's), a state at an approach by the sharp
+//! edge alone; a state at a size is refused, with its reason.
 //!
 //! Owns: [`PlaneState`], [`PlaneRung`], [`Held`], [`Method`], [`state`],
 //! [`pull_off`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
@@ -229,14 +229,18 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
 
 /// The state of `layers` at `rho` ∈ (0, 1] held at `hold` (`None`: the
 /// pull-off under load control, [`pull_off`]); at a force the sharp
-/// edge's where it answers, else the grid solver's, as for the pull-off.
+/// edge's where it answers, else the grid solver's, as for the pull-off;
+/// at an approach the sharp edge's (its error where it has none).
 pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<PlaneState> {
+    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     let force = match hold {
         None => return pull_off(layers, rho),
         Some(Hold::Force(f)) if f.is_finite() => f,
+        // the sharp edge's alone: the grid's force at a held approach has
+        // no bound it can state (`by_grid`)
+        Some(Hold::Delta(d)) if d.is_finite() => return by_sharp_edge::at_approach(layers, rho, d),
         Some(hold) => return by_grid::state(layers, rho, Some(hold)),
     };
-    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     let sharp = match by_sharp_edge::at_force(layers, rho, force) {
         Ok(state) => return Ok(state),
         Err(e) if crate::newton::stop_requested() => return Err(e),
