@@ -447,44 +447,67 @@ pub(crate) fn root(
             }
         }
     }
-    // Illinois: regula falsi, halving the weight of an end kept twice
-    // (bisection where round-off puts the new point on an end)
+    match illinois(g, (lo, f_lo), (hi, f_hi), |lo, hi| (hi - lo).abs() <= 1e-14 * hi.abs(), 0.0, 200)? {
+        Ok(a) => Ok(a),
+        Err((lo, hi)) => Err(Error::Unresolved {
+            what: format!(
+                "the layer's {what} reaches {} somewhere between a_bar = {} and {}, not located to 1e-14 in 200 steps",
+                short(target),
+                rounded(lo.min(hi)),
+                rounded(lo.max(hi))
+            ),
+            residual: (hi - lo).abs() / hi.abs(),
+        }),
+    }
+}
+
+/// The Illinois method (regula falsi, halving the weight of an end kept
+/// twice; bisection where round-off puts the new point on an end) on `g`
+/// between `lo` and `hi`, where it takes the values `g_lo` and `g_hi` of
+/// opposite signs: the end nearer zero once `settled(lo, hi)`, a point
+/// where |g| ≤ `tolerance`; else, after `steps` steps, the last bracket
+/// (as the inner error).
+pub(crate) fn illinois(
+    mut g: impl FnMut(f64) -> Result<f64>,
+    (mut lo, mut g_lo): (f64, f64),
+    (mut hi, mut g_hi): (f64, f64),
+    settled: impl Fn(f64, f64) -> bool,
+    tolerance: f64,
+    steps: usize,
+) -> Result<std::result::Result<f64, (f64, f64)>> {
     let mut side = 0;
-    for _ in 0..200 {
-        if (hi - lo).abs() <= 1e-14 * hi.abs() {
-            return Ok(if f_lo.abs() < f_hi.abs() { lo } else { hi });
+    for _ in 0..steps {
+        if settled(lo, hi) {
+            return Ok(Ok(if g_lo.abs() < g_hi.abs() { lo } else { hi }));
         }
-        let mut a = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        for (x, gx) in [(lo, g_lo), (hi, g_hi)] {
+            if gx.abs() <= tolerance {
+                return Ok(Ok(x));
+            }
+        }
+        let mut a = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
         if !(a > lo.min(hi) && a < lo.max(hi)) {
             a = 0.5 * (lo + hi);
         }
-        let f_a = g(a)?;
-        if f_a == 0.0 {
-            return Ok(a);
+        let g_a = g(a)?;
+        if g_a.abs() <= tolerance {
+            return Ok(Ok(a));
         }
-        if f_a < 0.0 {
-            (lo, f_lo) = (a, f_a);
+        if g_a * g_lo > 0.0 {
+            (lo, g_lo) = (a, g_a);
             if side == -1 {
-                f_hi *= 0.5;
+                g_hi *= 0.5;
             }
             side = -1;
         } else {
-            (hi, f_hi) = (a, f_a);
+            (hi, g_hi) = (a, g_a);
             if side == 1 {
-                f_lo *= 0.5;
+                g_lo *= 0.5;
             }
             side = 1;
         }
     }
-    Err(Error::Unresolved {
-        what: format!(
-            "the layer's {what} reaches {} somewhere between a_bar = {} and {}, not located to 1e-14 in 200 steps",
-            short(target),
-            rounded(lo.min(hi)),
-            rounded(lo.max(hi))
-        ),
-        residual: (hi - lo).abs() / hi.abs(),
-    })
+    Ok(Err((lo, hi)))
 }
 
 /// The contact radius of the minimum of `f` along the branch: bracketed

@@ -1139,54 +1139,49 @@ impl Contact<'_> {
     /// 1 where it is smaller) or 1e-12 in δ̄.
     fn at_force(
         &self,
-        mut lo: SharpState,
-        mut hi: SharpState,
+        lo: SharpState,
+        hi: SharpState,
         force: f64,
         jacobian: &mut Option<DMatrix<f64>>,
     ) -> Result<SharpState> {
-        let tolerance = 1e-10 * force.abs().max(1.0);
-        let (mut g_lo, mut g_hi) = (lo.force_bar - force, hi.force_bar - force);
-        let mut side = 0;
-        for _ in 0..60 {
-            if g_lo.abs() <= tolerance {
-                return Ok(lo);
-            }
-            if g_hi.abs() <= tolerance || (hi.delta_bar - lo.delta_bar).abs() <= 1e-12 {
-                return Ok(hi);
-            }
-            let mut d = (lo.delta_bar * g_hi - hi.delta_bar * g_lo) / (g_hi - g_lo);
-            let (min, max) = (
-                lo.delta_bar.min(hi.delta_bar),
-                lo.delta_bar.max(hi.delta_bar),
-            );
-            if !(d > min && d < max) {
-                d = 0.5 * (lo.delta_bar + hi.delta_bar);
-            }
-            let from = if (d - lo.delta_bar).abs() < (d - hi.delta_bar).abs() {
-                lo.domain.clone()
-            } else {
-                hi.domain.clone()
-            };
-            let st = self.edge_at(d, &from, jacobian)?;
-            let g = st.force_bar - force;
-            if g * g_lo > 0.0 {
-                (lo, g_lo) = (st, g);
-                if side == -1 {
-                    g_hi *= 0.5;
-                }
-                side = -1;
-            } else {
-                (hi, g_hi) = (st, g);
-                if side == 1 {
-                    g_lo *= 0.5;
-                }
-                side = 1;
-            }
-        }
-        Err(Error::NoState(format!(
-            "the sharp edge's state at force {} was not located in 60 steps",
-            crate::error::short(force)
-        )))
+        let (ends, mut tried) = (
+            [
+                (lo.delta_bar, lo.force_bar - force),
+                (hi.delta_bar, hi.force_bar - force),
+            ],
+            vec![lo, hi],
+        );
+        let found = super::illinois(
+            |d| {
+                // from the nearest state's edge (`tried` holds the two ends)
+                let nearest = tried
+                    .iter()
+                    .min_by(|p, q| (p.delta_bar - d).abs().total_cmp(&(q.delta_bar - d).abs()))
+                    .map(|s| s.domain.clone())
+                    .ok_or_else(|| {
+                        Error::NoState("the sharp edge has no state to start from".into())
+                    })?;
+                let st = self.edge_at(d, &nearest, jacobian)?;
+                let g = st.force_bar - force;
+                tried.push(st);
+                Ok(g)
+            },
+            ends[0],
+            ends[1],
+            |lo, hi| (hi - lo).abs() <= 1e-12,
+            1e-10 * force.abs().max(1.0),
+            60,
+        )?;
+        let d = found.map_err(|_| {
+            Error::NoState(format!(
+                "the sharp edge's state at force {} was not located in 60 steps",
+                crate::error::short(force)
+            ))
+        })?;
+        // (the method answers an approach it tried)
+        tried.into_iter().find(|s| s.delta_bar == d).ok_or_else(|| {
+            Error::NoState("the sharp edge's state at the force was not kept".into())
+        })
     }
 }
 
