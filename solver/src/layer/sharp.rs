@@ -38,9 +38,12 @@
 //! the ray of elliptic angle θ ([`Sources`]).
 //!
 //! Owns: `Domain`, `Bilateral`, `Sources`, `Resolution`, `SharpState`,
-//! `Contact` (a state at an approach, the pull-off), `pull_off_ladder`. May use: `model` (Brent's minimum), `newton` (the stop request), the parent (`layer`:
-//! the coatings, and `grid::kernel`'s table of the base share),
-//! `quadrature` (Gauss–Legendre), `error`.
+//! `Contact` (a state at an approach, the pull-off), `pull_off_ladder`,
+//! `pull_off_ladder_from`, `HeldAt` and `held_ladder` (a state at a force
+//! or an approach). May use: `model` (Brent's minimum), `newton` (the stop
+//! request), the parent (`layer`: the coatings, `grid::kernel`'s table of
+//! the base share, and the Illinois method), `quadrature` (Gauss–Legendre),
+//! `error`.
 
 use super::grid::kernel::BaseShare;
 use super::Layers;
