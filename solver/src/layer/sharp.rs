@@ -959,13 +959,21 @@ pub(crate) fn pull_off_ladder(
     rungs: &[Resolution],
     visit: impl FnMut(&Resolution, &SharpState),
 ) -> Result<Vec<SharpState>> {
+    let (guess, bracket, wide) = circle_start(layers, rho)?;
+    pull_off_ladder_from(layers, rho, rungs, guess, (bracket, 16), wide, visit)
+}
+
+/// Where the ladders start at `rho`: the axisymmetric layer's pull-off
+/// stretched to an ellipse of aspect ρ^0.45, a bracket in δ̄ about its
+/// approach, and the walk's scale in δ̄ (the contact's area: at h/L = 10
+/// ā = 0.1).
+fn circle_start(layers: &Layers, rho: f64) -> Result<(Domain, (f64, f64), f64)> {
     let circle = layers.pull_off(super::Route::Griffith)?.load;
     let stretch = rho.powf(0.45).sqrt();
     let guess = Domain::ellipse(circle.a_bar / stretch, circle.a_bar * stretch);
-    // (the approach's scale is the contact's area: at h/L = 10 ā = 0.1)
     let (d, wide) = (circle.delta_bar, 0.05 * circle.a_bar.powi(2).min(1.0));
     let bracket = (d - 0.5 * d.abs() - wide, d + 0.5 * d.abs() + wide);
-    pull_off_ladder_from(layers, rho, rungs, guess, (bracket, 16), wide, visit)
+    Ok((guess, bracket, wide))
 }
 
 /// [`pull_off_ladder`] from the edge `guess`, the first rung walking over
@@ -1032,11 +1040,7 @@ pub(crate) fn held_ladder(
     held: HeldAt,
     mut visit: impl FnMut(&Resolution, &SharpState),
 ) -> Result<Vec<SharpState>> {
-    let circle = layers.pull_off(super::Route::Griffith)?.load;
-    let stretch = rho.powf(0.45).sqrt();
-    let mut guess = Domain::ellipse(circle.a_bar / stretch, circle.a_bar * stretch);
-    let (d, wide) = (circle.delta_bar, 0.05 * circle.a_bar.powi(2).min(1.0));
-    let bracket = (d - 0.5 * d.abs() - wide, d + 0.5 * d.abs() + wide);
+    let (mut guess, bracket, wide) = circle_start(layers, rho)?;
     let mut found: Vec<SharpState> = Vec::with_capacity(rungs.len());
     for res in rungs {
         let contact = Contact::new(layers, rho, *res, &guess)?;
@@ -1123,7 +1127,7 @@ pub(crate) fn held_ladder(
                 } else {
                     &hi
                 };
-                contact.edge_at(d, &from.domain.clone(), &mut jacobian)?
+                contact.edge_at(d, &from.domain, &mut jacobian)?
             }
         };
         visit(res, &st);

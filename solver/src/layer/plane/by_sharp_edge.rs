@@ -96,7 +96,7 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
 
 /// The state of `layers` at `rho` at force `force` on the branch stable
 /// under load control, by the sharp edge's [`RUNGS`]
-/// (`sharp::force_ladder`): the force held, the bounds on the size and the
+/// (`sharp::held_ladder`): the force held, the bounds on the size and the
 /// approach their spread over the rungs (see the module); an error as
 /// [`pull_off`]'s, or where `force` is below the pull-off.
 pub(crate) fn at_force(layers: &Layers, rho: f64, force: f64) -> Result<PlaneState> {
@@ -159,10 +159,10 @@ fn answer(
 ) -> Result<PlaneState> {
     let n = states.len();
     let (before, middle, fine) = (&states[n - 3], &states[n - 2], &states[n - 1]);
-    // the ladder's convergence in the force, or in the approach where the
-    // force is held (its error then none)
-    // (at an approach relative to the force unit where the force is
-    // smaller: it passes through zero)
+    // the ladder's convergence in the force, relative to the force (at an
+    // approach to the force unit where the force is smaller: it passes
+    // through zero), or in the approach where the force is held (its
+    // error then none)
     let scale = match held {
         Held::Delta => fine.force_bar.abs().max(1.0),
         _ => fine.force_bar.abs(),
