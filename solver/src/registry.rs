@@ -1104,23 +1104,16 @@ impl Choice {
             }
             // at ρ < 1 the layer's pull-off in the plane, under
             // load control
-            Choice::Layer(layers) if rho != 1.0 => {
-                if !load {
-                    return Err(crate::Error::Unavailable {
-                        model: LAYER,
-                        what: "pull-off under displacement control at rho < 1".into(),
-                        why: "the layer in the plane locates the pull-off under load control only; at rho = 1 the axisymmetric layer gives both",
-                    });
-                }
-                PullOffAnswer {
-                    state: AnyState::LayerPlane(Box::new(crate::layer::plane::pull_off(
-                        &layers, rho,
-                    )?)),
-                    control,
-                    basis: None,
-                    passed: Vec::new(),
-                }
-            }
+            Choice::Layer(layers) if rho != 1.0 => PullOffAnswer {
+                state: AnyState::LayerPlane(Box::new(if load {
+                    crate::layer::plane::pull_off(&layers, rho)?
+                } else {
+                    crate::layer::plane::pull_off_displacement(&layers, rho)?
+                })),
+                control,
+                basis: None,
+                passed: Vec::new(),
+            },
             Choice::Layer(layers) => {
                 let p = layers.pull_off(crate::layer::Route::Griffith)?;
                 PullOffAnswer {

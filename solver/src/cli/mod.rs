@@ -448,11 +448,7 @@ fn show_layer_plane(label: &str, st: &crate::layer::PlaneState) -> crate::Result
         output::num(st.delta_bar),
         crate::error::short(st.coatings[0].thinness),
         crate::error::short(st.coatings[0].nu),
-        match st.held {
-            crate::layer::Held::PullOff => "load control: neutral (a pull-off)",
-            crate::layer::Held::Delta => "on the branch stable under displacement control",
-            crate::layer::Held::Force => "on the branch stable under load control",
-        }
+        plane_held_words(st)
     );
     outln!("  {}", st.trust_words());
     for w in &st.warnings {
@@ -493,6 +489,27 @@ fn show_layer_plane(label: &str, st: &crate::layer::PlaneState) -> crate::Result
         }
     }
     Ok(())
+}
+
+/// What a state of the layer in the plane is held at and its stability
+/// on the branch, in words.
+fn plane_held_words(st: &crate::layer::PlaneState) -> String {
+    use crate::layer::Held;
+    let stable = |slope: f64| if slope > 0.0 { "stable" } else { "unstable" };
+    match (st.held, st.slopes) {
+        (Held::PullOff, _) => "load control: neutral (a pull-off)".into(),
+        (Held::DisplacementPullOff, _) => {
+            "load control: unstable, displacement control: neutral (a pull-off)".into()
+        }
+        (Held::Delta, _) => "on the branch stable under displacement control".into(),
+        (Held::Force, _) => "on the branch stable under load control".into(),
+        (Held::Size, Some([force, delta])) => format!(
+            "load control: {}, displacement control: {}",
+            stable(force),
+            stable(delta)
+        ),
+        (Held::Size, None) => "at a held size".into(),
+    }
 }
 
 /// A slender state in a line: its centre's half-width instead of a size

@@ -694,13 +694,7 @@ impl<'a> Contact<'a> {
 
     /// The state at approach `delta`: the edge's modes e_m (about
     /// `guess`'s a and b, from its modes) such that K = √(2β) at the
-    /// Griffith angles, by Newton's method with Broyden's updates of the
-    /// Jacobian, which starts from `jacobian` where given (the last
-    /// state's) and is taken by forward differences where not, or where a
-    /// step does not halve the residual; with a fresh Jacobian the step is
-    /// halved until the residual falls. An error where it does not
-    /// converge to [`GRIFFITH_TOLERANCE`] in [`NEWTON_STEPS`] (or stall
-    /// below [`GRIFFITH_FLOOR`]).
+    /// Griffith angles, by [`Contact::griffith_newton`].
     fn edge_at(
         &self,
         delta: f64,
@@ -708,30 +702,103 @@ impl<'a> Contact<'a> {
         jacobian: &mut Option<DMatrix<f64>>,
     ) -> Result<SharpState> {
         let shape = self.res.shape;
-        let domain = |e: &DVector<f64>| Domain {
-            a: guess.a,
-            b: guess.b,
-            modes: e.iter().copied().collect(),
+        let domain = |e: &DVector<f64>| {
+            Ok((
+                delta,
+                Domain {
+                    a: guess.a,
+                    b: guess.b,
+                    modes: e.iter().copied().collect(),
+                },
+            ))
         };
-        let mut e = DVector::from_iterator(
+        let e = DVector::from_iterator(
             shape,
             (0..shape).map(|m| guess.modes.get(m).copied().unwrap_or(0.0)),
         );
-        let mut r = self.griffith(delta, &domain(&e))?;
+        let what = format!("at delta = {}", crate::error::rounded(delta));
+        self.griffith_newton(e, &domain, jacobian, &what)
+    }
+
+    /// The state of half-width `a_bar` along X: the approach δ̄ and the
+    /// edge's modes e₁, e₂, … (about `guess`'s a and b, from its modes and
+    /// from approach `delta`) such that K = √(2β) at the Griffith angles,
+    /// e₀ set by the half-width (Φ = 1 at X = ā on the axis: (1 + e₀) t +
+    /// Σ_{m≥1} e_m t^m = 1, t = (ā/a)²), by [`Contact::griffith_newton`].
+    /// Regular through the fold of the branch in δ̄ (the pull-off under
+    /// displacement control), where a state at a held approach is not.
+    fn size_at(
+        &self,
+        a_bar: f64,
+        delta: f64,
+        guess: &Domain,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        let shape = self.res.shape;
+        let t = (a_bar / guess.a).powi(2);
+        // v = (δ̄, e₁, …, e_{shape−1})
+        let domain = |v: &DVector<f64>| {
+            let higher: f64 = (1..shape).map(|m| v[m] * t.powi(m as i32)).sum();
+            let mut modes = vec![(1.0 - higher) / t - 1.0];
+            modes.extend(v.iter().skip(1));
+            Ok((
+                v[0],
+                Domain {
+                    a: guess.a,
+                    b: guess.b,
+                    modes,
+                },
+            ))
+        };
+        let v = DVector::from_iterator(
+            shape,
+            std::iter::once(delta)
+                .chain((1..shape).map(|m| guess.modes.get(m).copied().unwrap_or(0.0))),
+        );
+        let what = format!("of size a = {}", crate::error::rounded(a_bar));
+        self.griffith_newton(v, &domain, jacobian, &what)
+    }
+
+    /// The state whose unknowns `v` make its approach and domain through
+    /// `make`, such that K = √(2β) at the Griffith angles, by Newton's
+    /// method with Broyden's updates of the Jacobian, which starts from
+    /// `jacobian` where given (the last state's) and is taken by forward
+    /// differences where not, or where a step does not halve the residual;
+    /// with a fresh Jacobian the step is halved until the residual falls.
+    /// An error, naming the state by `what`, where it does not converge to
+    /// [`GRIFFITH_TOLERANCE`] in [`NEWTON_STEPS`] (or stall below
+    /// [`GRIFFITH_FLOOR`]).
+    fn griffith_newton(
+        &self,
+        mut v: DVector<f64>,
+        make: &dyn Fn(&DVector<f64>) -> Result<(f64, Domain)>,
+        jacobian: &mut Option<DMatrix<f64>>,
+        what: &str,
+    ) -> Result<SharpState> {
+        let n = v.len();
+        let residual = |v: &DVector<f64>| -> Result<DVector<f64>> {
+            let (delta, domain) = make(v)?;
+            self.griffith(delta, &domain)
+        };
+        let finish = |v: &DVector<f64>| -> Result<SharpState> {
+            let (delta, domain) = make(v)?;
+            self.state_on(delta, domain)
+        };
+        let mut r = residual(&v)?;
         for _ in 0..NEWTON_STEPS {
             crate::newton::check_stop()?;
             if r.amax() <= GRIFFITH_TOLERANCE {
-                return self.state_on(delta, domain(&e));
+                return finish(&v);
             }
             let (jac, fresh) = match jacobian.take() {
                 Some(j) => (j, false),
                 None => {
-                    let mut j = DMatrix::zeros(shape, shape);
-                    for k in 0..shape {
+                    let mut j = DMatrix::zeros(n, n);
+                    for k in 0..n {
                         let h = 1e-7;
-                        let mut moved = e.clone();
+                        let mut moved = v.clone();
                         moved[k] += h;
-                        j.set_column(k, &((self.griffith(delta, &domain(&moved))? - &r) / h));
+                        j.set_column(k, &((residual(&moved)? - &r) / h));
                     }
                     (j, true)
                 }
@@ -744,26 +811,26 @@ impl<'a> Contact<'a> {
             // no fall
             let mut lambda = 1.0;
             let (moved, next) = loop {
-                let moved = &e - &step * lambda;
-                let tried = self.griffith(delta, &domain(&moved));
+                let moved = &v - &step * lambda;
+                let tried = residual(&moved);
                 let next = tried.ok().filter(|n| n.amax() < r.amax());
                 match next {
                     Some(next) => break (moved, next),
                     None if fresh && lambda > 1.0 / 64.0 => lambda *= 0.5,
-                    None => break (e.clone(), r.clone()),
+                    None => break (v.clone(), r.clone()),
                 }
             };
             if !fresh && next.amax() > 0.5 * r.amax() {
                 // a stale Jacobian: take it again by differences, from here
                 *jacobian = None;
-                (e, r) = (moved, next);
+                (v, r) = (moved, next);
                 continue;
             }
             if fresh && lambda <= 1.0 / 64.0 && next.amax() >= r.amax() {
                 // no step lowers it: the residual's own round-off, where it
                 // is below the floor
                 if r.amax() <= GRIFFITH_FLOOR {
-                    return self.state_on(delta, domain(&e));
+                    return finish(&v);
                 }
                 break;
             }
@@ -771,11 +838,10 @@ impl<'a> Contact<'a> {
             let s = -&step * lambda;
             let update = (&next - &r - &jac * &s) * s.transpose() / s.norm_squared();
             *jacobian = Some(jac + update);
-            (e, r) = (moved, next);
+            (v, r) = (moved, next);
         }
         Err(Error::NoState(format!(
-            "the sharp edge at delta = {} did not meet Griffith's condition in {NEWTON_STEPS} Newton steps (off by {:.1e})",
-            crate::error::rounded(delta),
+            "the sharp edge {what} did not meet Griffith's condition in {NEWTON_STEPS} Newton steps (off by {:.1e})",
             r.amax()
         )))
     }
@@ -1011,28 +1077,44 @@ pub(crate) enum HeldAt {
     /// An approach δ̄, on the branch through the pull-off, stable under
     /// displacement control.
     Delta(f64),
+    /// A half-width ā along X, anywhere on the branch from large loads
+    /// (beyond its pull-offs too).
+    Size(f64),
+    /// The least approach on the branch: the pull-off under displacement
+    /// control.
+    LeastApproach,
 }
 
 impl HeldAt {
-    /// The state's departure from the hold.
+    /// The state's departure from a hold in δ̄ (a force or an approach).
     fn off(self, st: &SharpState) -> f64 {
         match self {
             HeldAt::Force(f) => st.force_bar - f,
             HeldAt::Delta(d) => st.delta_bar - d,
+            HeldAt::Size(a) => st.a_bar - a,
+            HeldAt::LeastApproach => 0.0,
         }
     }
 }
 
 /// The state held at `held` on each of `rungs`. On the first rung: its
-/// pull-off (the walk of [`pull_off_ladder`]), then a walk in δ̄ from it
-/// towards the hold, from a fifth of the walk's scale, until the hold is
-/// passed; on each finer one, from the last one's edge rebased, a state
-/// at the last one's δ̄ and, at a force, a walk from a fiftieth of that
-/// scale. The walks' steps grow 1.5 times (halved where Newton's method
-/// finds no state). At a force, the Illinois method in δ̄ to within 1e-10
-/// of it. An error where the force is below the first rung's pull-off (no
-/// state under load control there) or a state is not found (an approach
-/// below the branch's least).
+/// pull-off under load control (the walk of [`pull_off_ladder`]), then
+/// from it
+/// - at a force or an approach, a walk in δ̄ towards the hold, from a
+///   fifth of the walk's scale, until the hold is passed; at a force the
+///   Illinois method in δ̄ to within 1e-10 of it;
+/// - at a size, a walk in ā to it ([`Contact::walk_in_size`]);
+/// - at the least approach, a walk down in ā until δ̄ rises, then the
+///   root of dδ̄/dā ([`Contact::least_approach`]).
+///
+/// On each finer rung, from the last one's edge rebased: a state at the
+/// last one's δ̄ and, at a force, a walk from a fiftieth of that scale; a
+/// state at the last one's ā (at a size, the answer; at the least
+/// approach, the start of the same walk from a hundredth of ā). The walks'
+/// steps grow 1.5 times (halved where Newton's method finds no state). An
+/// error where the force is below the first rung's pull-off (no state
+/// under load control there) or a state is not found (an approach below
+/// the branch's least).
 pub(crate) fn held_ladder(
     layers: &Layers,
     rho: f64,
@@ -1043,11 +1125,83 @@ pub(crate) fn held_ladder(
     let (mut guess, bracket, wide) = circle_start(layers, rho)?;
     let mut found: Vec<SharpState> = Vec::with_capacity(rungs.len());
     for res in rungs {
-        let contact = Contact::new(layers, rho, *res, &guess)?;
+        // a table that reaches a larger size asked for
+        let reach = match held {
+            HeldAt::Size(a) if a > guess.a => Domain::ellipse(a, guess.b * a / guess.a),
+            _ => guess.clone(),
+        };
+        let contact = Contact::new(layers, rho, *res, &reach)?;
         let mut jacobian = None;
-        let (mut lo, mut step) = match found.last() {
+        let st = match held {
+            HeldAt::Force(_) | HeldAt::Delta(_) => {
+                contact.held_in_delta(held, found.last(), &guess, bracket, wide, &mut jacobian)?
+            }
+            HeldAt::Size(_) | HeldAt::LeastApproach => {
+                contact.held_in_size(held, found.last(), &guess, bracket, &mut jacobian)?
+            }
+        };
+        visit(res, &st);
+        guess = st
+            .domain
+            .rebased(st.a_bar, st.b_bar, st.domain.modes.len())?;
+        found.push(st);
+    }
+    Ok(found)
+}
+
+/// `st`'s edge for the next state of a walk in ā: rebased on its
+/// half-widths ([`Domain::rebased`], the Jacobian then taken afresh) where
+/// they have moved by more than a fifth from its ellipse's, so that its
+/// modes stay small.
+fn based(st: &SharpState, jacobian: &mut Option<DMatrix<f64>>) -> Result<Domain> {
+    let d = &st.domain;
+    if (0.8..=1.25).contains(&(st.a_bar / d.a)) && (0.8..=1.25).contains(&(st.b_bar / d.b)) {
+        return Ok(d.clone());
+    }
+    *jacobian = None;
+    d.rebased(st.a_bar, st.b_bar, d.modes.len())
+}
+
+/// The slopes dF̄/dā and dδ̄/dā along the branch at `st`, a state of
+/// size on `res`: central differences over 1e-4 ā, each state from `st`'s
+/// edge. The contact is stable under load control where the first is
+/// positive, under displacement control where the second is (the branch's
+/// own direction; its undulations are the kernel's stability's).
+pub(crate) fn slopes_in_size(
+    layers: &Layers,
+    rho: f64,
+    res: Resolution,
+    st: &SharpState,
+) -> Result<[f64; 2]> {
+    let contact = Contact::new(layers, rho, res, &st.domain)?;
+    let h = 1e-4 * st.a_bar;
+    let mut jacobian = None;
+    let [below, above] =
+        [-h, h].map(|d| contact.size_at(st.a_bar + d, st.delta_bar, &st.domain, &mut jacobian));
+    let (below, above) = (below?, above?);
+    Ok([
+        (above.force_bar - below.force_bar) / (2.0 * h),
+        (above.delta_bar - below.delta_bar) / (2.0 * h),
+    ])
+}
+
+impl Contact<'_> {
+    /// One rung of [`held_ladder`] at a force or an approach: from the
+    /// last rung's state (`None`: from the pull-off in `bracket`), on
+    /// `guess`'s edge, the walk in δ̄.
+    fn held_in_delta(
+        &self,
+        held: HeldAt,
+        last: Option<&SharpState>,
+        guess: &Domain,
+        bracket: (f64, f64),
+        wide: f64,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        let contact = self;
+        let (mut lo, mut step) = match last {
             None => {
-                let p = contact.pull_off(&guess, bracket, 16)?;
+                let p = contact.pull_off(guess, bracket, 16)?;
                 if let HeldAt::Force(f) = held {
                     if f < p.force_bar {
                         return Err(Error::NoState(format!(
@@ -1065,7 +1219,7 @@ pub(crate) fn held_ladder(
                 (p, towards * 0.2 * wide)
             }
             Some(last) => {
-                let at = contact.edge_at(last.delta_bar, &guess, &mut jacobian)?;
+                let at = contact.edge_at(last.delta_bar, guess, jacobian)?;
                 let towards = if held.off(&at) < 0.0 { 1.0 } else { -1.0 };
                 (at, towards * 0.02 * wide)
             }
@@ -1080,12 +1234,12 @@ pub(crate) fn held_ladder(
             // a step too long for Newton's method halved (up to 6 times)
             let mut tries = 0;
             let st = loop {
-                match contact.edge_at(lo.delta_bar + step, &lo.domain, &mut jacobian) {
+                match contact.edge_at(lo.delta_bar + step, &lo.domain, jacobian) {
                     Ok(st) => break st,
                     Err(_) if tries < 6 && !crate::newton::stop_requested() => {
                         tries += 1;
                         step *= 0.5;
-                        jacobian = None;
+                        *jacobian = None;
                     }
                     Err(e) => {
                         return Err(match held {
@@ -1113,30 +1267,211 @@ pub(crate) fn held_ladder(
             let what = match held {
                 HeldAt::Force(f) => format!("force {}", crate::error::short(f)),
                 HeldAt::Delta(d) => format!("delta = {}", crate::error::short(d)),
+                HeldAt::Size(a) => format!("a = {}", crate::error::short(a)),
+                HeldAt::LeastApproach => "the least approach".into(),
             };
             Error::NoState(format!(
                 "the sharp edge did not reach {what} in 60 steps in delta"
             ))
         })?;
-        let st = match held {
-            HeldAt::Force(f) => contact.at_force(lo, hi, f, &mut jacobian)?,
+        Ok(match held {
+            HeldAt::Force(f) => contact.at_force(lo, hi, f, jacobian)?,
             HeldAt::Delta(d) if hi.delta_bar == d => hi,
+            HeldAt::Size(_) | HeldAt::LeastApproach => {
+                return Err(Error::Usage(
+                    "a size is held by the walk in a, not in delta".into(),
+                ))
+            }
             HeldAt::Delta(d) => {
                 let from = if (d - lo.delta_bar).abs() < (d - hi.delta_bar).abs() {
                     &lo
                 } else {
                     &hi
                 };
-                contact.edge_at(d, &from.domain, &mut jacobian)?
+                contact.edge_at(d, &from.domain, jacobian)?
             }
-        };
-        visit(res, &st);
-        guess = st
-            .domain
-            .rebased(st.a_bar, st.b_bar, st.domain.modes.len())?;
-        found.push(st);
+        })
     }
-    Ok(found)
+
+    /// One rung of [`held_ladder`] at a size or the least approach: from
+    /// the last rung's state (`None`: from the pull-off in `bracket`), on
+    /// `guess`'s edge, the walk in ā.
+    fn held_in_size(
+        &self,
+        held: HeldAt,
+        last: Option<&SharpState>,
+        guess: &Domain,
+        bracket: (f64, f64),
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        let (start, step) = match last {
+            None => {
+                let p = self.pull_off(guess, bracket, 16)?;
+                let step = 0.05 * p.a_bar;
+                (p, step)
+            }
+            Some(last) => (
+                self.size_at(last.a_bar, last.delta_bar, guess, jacobian)?,
+                0.01 * last.a_bar,
+            ),
+        };
+        match held {
+            HeldAt::Size(a) => self.walk_in_size(start, a, step, jacobian),
+            _ => self.least_approach(start, step, jacobian),
+        }
+    }
+
+    /// The state of size `a` from `start`, walking in ā from a step of
+    /// `step`, growing 1.5 times after each step taken and halved (up to 6
+    /// times in a row) where Newton's method finds no state, each state
+    /// from the last one's edge and the approach extrapolated from the last
+    /// two. An error where a step halved 6 times finds none, or 200 steps
+    /// do not reach `a`.
+    fn walk_in_size(
+        &self,
+        start: SharpState,
+        a: f64,
+        step: f64,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        let (mut last, mut before): (SharpState, Option<SharpState>) = (start, None);
+        let mut step = step.abs();
+        let mut halved = 0;
+        for _ in 0..200 {
+            let gap = a - last.a_bar;
+            // (the edge's half-width is found to its root's round-off)
+            if gap.abs() <= 1e-12 * a {
+                return Ok(last);
+            }
+            let to = if gap.abs() <= step {
+                a
+            } else {
+                last.a_bar + step * gap.signum()
+            };
+            let delta = match &before {
+                Some(b) if b.a_bar != last.a_bar => {
+                    last.delta_bar
+                        + (last.delta_bar - b.delta_bar) / (last.a_bar - b.a_bar)
+                            * (to - last.a_bar)
+                }
+                _ => last.delta_bar,
+            };
+            match self.size_at(to, delta, &based(&last, jacobian)?, jacobian) {
+                Ok(st) => {
+                    before = Some(std::mem::replace(&mut last, st));
+                    step *= 1.5;
+                    halved = 0;
+                }
+                Err(_) if halved < 6 && !crate::newton::stop_requested() => {
+                    halved += 1;
+                    step *= 0.5;
+                    *jacobian = None;
+                }
+                Err(e) if crate::newton::stop_requested() => return Err(e),
+                Err(e) => {
+                    return Err(Error::NoState(format!(
+                        "the sharp edge found no state of size a = {} on the walk in a towards {}: the last found is at a = {} ({e})",
+                        crate::error::short(to),
+                        crate::error::short(a),
+                        crate::error::short(last.a_bar)
+                    )))
+                }
+            }
+        }
+        Err(Error::NoState(format!(
+            "the sharp edge did not reach a = {} in 200 steps in a",
+            crate::error::short(a)
+        )))
+    }
+
+    /// The least approach on the branch near `start`: a walk in ā from
+    /// it, steps of `step` (down in ā first, the other way where δ̄ rises
+    /// at once), until δ̄ rises again; then the root of dδ̄/dā between the
+    /// least state's neighbours by the Illinois method, to 1e-9 of ā or of
+    /// a slope of 1e-9, the slope a central difference over 1e-4 ā (its
+    /// root is located to about δ̄'s round-off over that step, where the
+    /// least of δ̄ itself is flat: its square root), and the state there.
+    /// Each state from the nearest one's edge. An error where a state is
+    /// not found, the slope does not change sign between the neighbours,
+    /// or 40 steps find no least.
+    fn least_approach(
+        &self,
+        start: SharpState,
+        step: f64,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<SharpState> {
+        let mut walk = vec![start];
+        let mut step = -step.abs();
+        for _ in 0..40 {
+            let n = walk.len();
+            let last = &walk[n - 1];
+            let delta = match n {
+                1 => last.delta_bar,
+                _ => 2.0 * last.delta_bar - walk[n - 2].delta_bar,
+            };
+            let st = self.size_at(last.a_bar + step, delta, &based(last, jacobian)?, jacobian)?;
+            walk.push(st);
+            let n = walk.len();
+            if walk[n - 1].delta_bar <= walk[n - 2].delta_bar {
+                continue;
+            }
+            if n == 2 {
+                // rising at once: the least lies the other way
+                walk.reverse();
+                step = -step;
+                continue;
+            }
+            let (a_lo, a_hi) = {
+                let (p, q) = (walk[n - 3].a_bar, walk[n - 1].a_bar);
+                (p.min(q), p.max(q))
+            };
+            let h = 1e-4 * walk[n - 2].a_bar;
+            let nearest = |tried: &[SharpState], a: f64| {
+                tried
+                    .iter()
+                    .min_by(|p, q| (p.a_bar - a).abs().total_cmp(&(q.a_bar - a).abs()))
+                    .cloned()
+                    .ok_or_else(|| {
+                        Error::NoState("the sharp edge has no state to start from".into())
+                    })
+            };
+            let mut slope = |a: f64| -> Result<f64> {
+                let from = nearest(&walk, a)?;
+                let edge = based(&from, jacobian)?;
+                let below = self.size_at(a - h, from.delta_bar, &edge, jacobian)?;
+                let above = self.size_at(a + h, below.delta_bar, &edge, jacobian)?;
+                let g = (above.delta_bar - below.delta_bar) / (above.a_bar - below.a_bar);
+                walk.push(below);
+                walk.push(above);
+                Ok(g)
+            };
+            let (g_lo, g_hi) = (slope(a_lo)?, slope(a_hi)?);
+            if !(g_lo < 0.0 && g_hi > 0.0) {
+                return Err(Error::NoState(format!(
+                    "the sharp edge's approach is not convex in a between {} and {}",
+                    crate::error::rounded(a_lo),
+                    crate::error::rounded(a_hi)
+                )));
+            }
+            let root = super::illinois(
+                &mut slope,
+                (a_lo, g_lo),
+                (a_hi, g_hi),
+                |lo, hi| (hi - lo).abs() <= 1e-9 * a_hi,
+                1e-9,
+                60,
+            )?
+            .map_err(|_| {
+                Error::NoState("the sharp edge's least approach was not located in 60 steps".into())
+            })?;
+            let from = nearest(&walk, root)?;
+            let edge = based(&from, jacobian)?;
+            return self.size_at(root, from.delta_bar, &edge, jacobian);
+        }
+        Err(Error::NoState(
+            "the sharp edge found no least approach within 40 steps in a".into(),
+        ))
+    }
 }
 
 impl Contact<'_> {

@@ -163,6 +163,8 @@ fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
         Held::PullOff => "pull-off".to_string(),
         Held::Delta => format!("state at delta = {}", short(last.delta_bar)),
         Held::Force => format!("state at force = {}", short(fine)),
+        // (the grid holds neither)
+        Held::Size | Held::DisplacementPullOff => "state".to_string(),
     };
     if !(force_error <= WORST_FORCE_ERROR) {
         return Err(Error::Unresolved {
@@ -205,6 +207,7 @@ fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
             spread(|r| r.delta_bar)
         },
         griffith_error: None,
+        slopes: None,
         coatings: layers.coatings(),
         coatings_are: super::ON_THE_GRID,
         warnings,

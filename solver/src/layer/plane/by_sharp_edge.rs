@@ -41,7 +41,9 @@
 
 use super::{two_digits, Held, Method, PlaneRung, PlaneState, WARN_FORCE_ERROR, WORST_FORCE_ERROR};
 use crate::error::{short, Error, Result};
-use crate::layer::sharp::{held_ladder, pull_off_ladder, HeldAt, Resolution, SharpState};
+use crate::layer::sharp::{
+    held_ladder, pull_off_ladder, slopes_in_size, HeldAt, Resolution, SharpState,
+};
 use crate::layer::Layers;
 
 /// The ladder: (radial, angular) functions of the pressure, with as many
@@ -91,7 +93,7 @@ const DELTA_FLOOR: f64 = 1e-4;
 pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
     let rungs = checked_rungs(layers, rho)?;
     let states = pull_off_ladder(layers, rho, &rungs, progress())?;
-    answer(layers, rho, &rungs, &states, Held::PullOff)
+    answer(layers, rho, &rungs, &states, Held::PullOff, None)
 }
 
 /// The state of `layers` at `rho` at force `force` on the branch stable
@@ -102,7 +104,7 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
 pub(crate) fn at_force(layers: &Layers, rho: f64, force: f64) -> Result<PlaneState> {
     let rungs = checked_rungs(layers, rho)?;
     let states = held_ladder(layers, rho, &rungs, HeldAt::Force(force), progress())?;
-    answer(layers, rho, &rungs, &states, Held::Force)
+    answer(layers, rho, &rungs, &states, Held::Force, None)
 }
 
 /// The state of `layers` at `rho` at approach `delta` on the branch
@@ -115,7 +117,56 @@ pub(crate) fn at_force(layers: &Layers, rho: f64, force: f64) -> Result<PlaneSta
 pub(crate) fn at_approach(layers: &Layers, rho: f64, delta: f64) -> Result<PlaneState> {
     let rungs = checked_rungs(layers, rho)?;
     let states = held_ladder(layers, rho, &rungs, HeldAt::Delta(delta), progress())?;
-    answer(layers, rho, &rungs, &states, Held::Delta)
+    answer(layers, rho, &rungs, &states, Held::Delta, None)
+}
+
+/// The state of `layers` at `rho` of half-width `a_bar` along X, on the
+/// branch from large loads (beyond its pull-offs too), by the sharp
+/// edge's [`RUNGS`] (`sharp::held_ladder`, the walk in ā): the bounds as
+/// at an approach, the size's that of b̄, with the slopes along the branch
+/// that say its stability under each control (`sharp::slopes_in_size`);
+/// an error as [`pull_off`]'s.
+pub(crate) fn at_size(layers: &Layers, rho: f64, a_bar: f64) -> Result<PlaneState> {
+    crate::error::check_range("a", a_bar, a_bar > 0.0 && a_bar <= 10.0, "(0, 10]")?;
+    let rungs = checked_rungs(layers, rho)?;
+    let states = held_ladder(layers, rho, &rungs, HeldAt::Size(a_bar), progress())?;
+    let slopes = finest_slopes(layers, rho, &rungs, &states)?;
+    answer(layers, rho, &rungs, &states, Held::Size, Some(slopes))
+}
+
+/// The pull-off under displacement control of `layers` at `rho`: the
+/// least approach on the branch, by the sharp edge's [`RUNGS`]
+/// (`sharp::held_ladder`, the walk in ā and the root of dδ̄/dā);
+/// the bounds as at an approach, the force's with |dF̄/dā| times ā's
+/// bound added (the force moves with where the least is found: at ρ = 1,
+/// h/L = 1 ā is 1.5e-6 from the axisymmetric one's, F̄ 1.1e-6); an error
+/// as [`pull_off`]'s.
+pub(crate) fn pull_off_displacement(layers: &Layers, rho: f64) -> Result<PlaneState> {
+    let rungs = checked_rungs(layers, rho)?;
+    let states = held_ladder(layers, rho, &rungs, HeldAt::LeastApproach, progress())?;
+    let slopes = finest_slopes(layers, rho, &rungs, &states)?;
+    answer(
+        layers,
+        rho,
+        &rungs,
+        &states,
+        Held::DisplacementPullOff,
+        Some(slopes),
+    )
+}
+
+/// The slopes along the branch at the finest rung's state
+/// (`sharp::slopes_in_size`).
+fn finest_slopes(
+    layers: &Layers,
+    rho: f64,
+    rungs: &[Resolution],
+    states: &[SharpState],
+) -> Result<[f64; 2]> {
+    match (rungs.last(), states.last()) {
+        (Some(res), Some(fine)) => slopes_in_size(layers, rho, *res, fine),
+        _ => Err(Error::NoState("the sharp edge's ladder has no rung".into())),
+    }
 }
 
 /// [`RUNGS`] as resolutions, where `rho` and the coatings are within
@@ -156,6 +207,7 @@ fn answer(
     rungs: &[Resolution],
     states: &[SharpState],
     held: Held,
+    slopes: Option<[f64; 2]>,
 ) -> Result<PlaneState> {
     let n = states.len();
     let (before, middle, fine) = (&states[n - 3], &states[n - 2], &states[n - 1]);
@@ -164,8 +216,8 @@ fn answer(
     // through zero), or in the approach where the force is held (its
     // error then none)
     let scale = match held {
-        Held::Delta => fine.force_bar.abs().max(1.0),
-        _ => fine.force_bar.abs(),
+        Held::PullOff | Held::Force => fine.force_bar.abs(),
+        Held::Delta | Held::Size | Held::DisplacementPullOff => fine.force_bar.abs().max(1.0),
     };
     let (of, floor): (fn(&SharpState) -> f64, f64) = match held {
         Held::Force => (|s| s.delta_bar, DELTA_FLOOR),
@@ -174,44 +226,6 @@ fn answer(
     let last_step = (of(fine) - of(middle)).abs();
     let step_before = (of(middle) - of(before)).abs();
     let ladder = BOUND_OVER_DIFFERENCE * last_step / scale;
-    let force_error = match held {
-        Held::Force => 0.0,
-        _ => (ladder + EDGE_FACTOR * fine.griffith_error).max(FORCE_FLOOR),
-    };
-    let converging = last_step <= CONTRACTION * step_before || last_step <= floor;
-    if !(converging && force_error <= WORST_FORCE_ERROR) {
-        let (what, which) = match held {
-            Held::Force => (
-                format!("state at force {}", short(fine.force_bar)),
-                "approaches",
-            ),
-            Held::Delta => (
-                format!("state at delta = {}", short(fine.delta_bar)),
-                "forces",
-            ),
-            Held::PullOff => ("pull-off".to_string(), "forces"),
-        };
-        return Err(Error::Unresolved {
-            what: format!(
-                "the sharp edge's {what} in the plane at rho = {}, h/L = {}: its rungs' {which} {} {}, so it is not resolved",
-                short(rho),
-                short(layers.thinnest()),
-                [before, middle, fine]
-                    .map(|s| format!("{:.5}", of(s)))
-                    .join(", "),
-                if converging {
-                    format!(
-                        "leave it within {} % only, not the {} % an answer needs",
-                        two_digits(100.0 * force_error),
-                        short(100.0 * WORST_FORCE_ERROR)
-                    )
-                } else {
-                    "do not converge (the last step is more than half the one before)".into()
-                }
-            ),
-            residual: force_error,
-        });
-    }
     let spread = |of: fn(&SharpState) -> f64| {
         let values = states[n - 3..].iter().map(of);
         values.clone().fold(f64::MIN, f64::max) - values.fold(f64::MAX, f64::min)
@@ -219,6 +233,31 @@ fn answer(
     let size_error = (spread(|s| s.a_bar) / fine.a_bar)
         .max(spread(|s| s.b_bar) / fine.b_bar)
         .max(SIZE_FLOOR);
+    // at the least approach the force also moves with where the least is
+    // found: |dF̄/dā| times ā's bound
+    let located = match (held, slopes) {
+        (Held::DisplacementPullOff, Some([force, _])) => {
+            force.abs() * size_error * fine.a_bar / scale
+        }
+        _ => 0.0,
+    };
+    let force_error = match held {
+        Held::Force => 0.0,
+        _ => (ladder + EDGE_FACTOR * fine.griffith_error).max(FORCE_FLOOR) + located,
+    };
+    let converging = last_step <= CONTRACTION * step_before || last_step <= floor;
+    if !(converging && force_error <= WORST_FORCE_ERROR) {
+        let values = [before, middle, fine].map(|s| format!("{:.5}", of(s)));
+        return Err(not_resolved(
+            layers,
+            rho,
+            held,
+            fine,
+            &values,
+            converging,
+            force_error,
+        ));
+    }
     let mut warnings = Vec::new();
     if force_error > WARN_FORCE_ERROR {
         warnings.push(format!(
@@ -255,10 +294,56 @@ fn answer(
             })
             .collect(),
         griffith_error: Some(fine.griffith_error),
+        slopes,
         coatings: layers.coatings(),
         coatings_are: super::WITH_A_SHARP_EDGE,
         warnings,
     })
+}
+
+/// The error of a ladder that does not resolve its state: what it was
+/// held at, its rungs' `values` (of the force, or of the approach at a
+/// held force) and why they do not answer.
+fn not_resolved(
+    layers: &Layers,
+    rho: f64,
+    held: Held,
+    fine: &SharpState,
+    values: &[String; 3],
+    converging: bool,
+    force_error: f64,
+) -> Error {
+    let (what, which) = match held {
+        Held::Force => (
+            format!("state at force {}", short(fine.force_bar)),
+            "approaches",
+        ),
+        Held::Delta => (
+            format!("state at delta = {}", short(fine.delta_bar)),
+            "forces",
+        ),
+        Held::PullOff => ("pull-off".to_string(), "forces"),
+        Held::Size => (format!("state at a = {}", short(fine.a_bar)), "forces"),
+        Held::DisplacementPullOff => ("pull-off under displacement control".to_string(), "forces"),
+    };
+    Error::Unresolved {
+        what: format!(
+            "the sharp edge's {what} in the plane at rho = {}, h/L = {}: its rungs' {which} {} {}, so it is not resolved",
+            short(rho),
+            short(layers.thinnest()),
+            values.join(", "),
+            if converging {
+                format!(
+                    "leave it within {} % only, not the {} % an answer needs",
+                    two_digits(100.0 * force_error),
+                    short(100.0 * WORST_FORCE_ERROR)
+                )
+            } else {
+                "do not converge (the last step is more than half the one before)".into()
+            }
+        ),
+        residual: force_error,
+    }
 }
 
 #[cfg(test)]
@@ -296,7 +381,7 @@ mod tests {
             state(-1.84002854, 1e-3),
             state(-1.83999987, 2e-3),
         ];
-        let p = answer(&layers, 1.0 / 3.0, &rungs(), &states, Held::PullOff).unwrap();
+        let p = answer(&layers, 1.0 / 3.0, &rungs(), &states, Held::PullOff, None).unwrap();
         assert_eq!((p.method, p.held), (Method::SharpEdge, Held::PullOff));
         assert_eq!(p.force_bar, -1.83999987);
         assert_eq!(p.force_bar_coarse, -1.84002854);
@@ -317,7 +402,7 @@ mod tests {
         // converged to round-off, Griffith's condition met: the floors
         let mut flat = [state(-2.5, 0.0), state(-2.5, 0.0), state(-2.5, 0.0)];
         flat[2].griffith_error = 1e-9;
-        let p = answer(&layers, 0.8, &rungs(), &flat, Held::PullOff).unwrap();
+        let p = answer(&layers, 0.8, &rungs(), &flat, Held::PullOff, None).unwrap();
         assert_eq!(
             (p.force_error, p.size_error, p.delta_error),
             (FORCE_FLOOR, SIZE_FLOOR, DELTA_FLOOR)
@@ -337,7 +422,7 @@ mod tests {
         // a contracting ladder whose bound is above 2 %
         let rough = [state(-0.60, 0.0), state(-0.70, 0.0), state(-0.69, 0.0)];
         for (states, words) in [(wandering, "do not converge"), (rough, "within 2.9 % only")] {
-            match answer(&layers, 0.0717968, &rungs(), &states, Held::PullOff) {
+            match answer(&layers, 0.0717968, &rungs(), &states, Held::PullOff, None) {
                 Err(Error::Unresolved { what, .. }) => {
                     assert!(what.contains(words), "{what}")
                 }
@@ -348,7 +433,7 @@ mod tests {
         // by 1.5 %: within 3 % only
         let mut loose = [state(-0.69, 0.0), state(-0.70, 0.0), state(-0.70, 0.0)];
         loose[2].griffith_error = 0.015;
-        match answer(&layers, 0.0717968, &rungs(), &loose, Held::PullOff) {
+        match answer(&layers, 0.0717968, &rungs(), &loose, Held::PullOff, None) {
             Err(Error::Unresolved { what, .. }) => {
                 assert!(what.contains("within 3.0 % only"), "{what}")
             }
@@ -356,7 +441,7 @@ mod tests {
         }
         // between 1 % and 2 %: an answer with a warning
         let warned = [state(-0.60, 0.0), state(-0.70, 0.0), state(-0.694, 0.0)];
-        let p = answer(&layers, 0.0717968, &rungs(), &warned, Held::PullOff).unwrap();
+        let p = answer(&layers, 0.0717968, &rungs(), &warned, Held::PullOff, None).unwrap();
         assert!((p.force_error - 0.012 / 0.694 - 2e-4).abs() < 1e-12);
         assert_eq!(p.warnings.len(), 1, "{:?}", p.warnings);
     }
@@ -465,6 +550,82 @@ mod tests {
                 assert_eq!(p.delta_bar, delta);
                 assert!(p.warnings.is_empty(), "{:?}", p.warnings);
             }
+        }
+    }
+
+    /// At ρ = 1 a state at a size (above the pull-off's, between the two
+    /// pull-offs' and below the displacement-controlled one's) lies within
+    /// the bounds it states of the axisymmetric layer's state of that size,
+    /// with its slopes along the branch of the same signs; and the pull-off
+    /// under displacement control within its bounds of the axisymmetric
+    /// one's.
+    #[test]
+    fn at_rho_1_a_state_at_a_size_and_the_least_approach_are_the_axisymmetric_layer_s() {
+        use crate::control::Hold;
+        for thin in [0.3, 1.0] {
+            let layers = Layers::equal(thin, 0.5).unwrap();
+            let pull = layers.pull_off(crate::layer::Route::Griffith).unwrap();
+            let (load, least) = (pull.load.a_bar, pull.displacement.a_bar);
+            for a in [1.5 * load, 0.5 * (load + least), 0.7 * least] {
+                let reference = layers
+                    .state(Hold::Size(a), crate::layer::Route::Griffith)
+                    .unwrap();
+                let p = at_size(&layers, 1.0, a).unwrap();
+                assert_eq!((p.held, p.method), (Held::Size, Method::SharpEdge));
+                let force =
+                    (p.force_bar - reference.force_bar).abs() / reference.force_bar.abs().max(1.0);
+                let (b, delta) = (
+                    (p.b_bar / a - 1.0).abs(),
+                    (p.delta_bar - reference.delta_bar).abs(),
+                );
+                let [df, dd] = p.slopes.unwrap();
+                println!(
+                    "h/L {thin}, a {a:.4}: force {force:.1e} (bound {:.1e}), b {b:.1e} (bound {:.1e}), delta {delta:.1e} (bound {:.1e}); slopes {df:.4} {dd:.4} against {:.4} {:.4}",
+                    p.force_error, p.size_error, p.delta_error, reference.force_slope, reference.delta_slope
+                );
+                assert!(force <= p.force_error, "h/L {thin}, a {a}: {force:.1e}");
+                assert!(b <= p.size_error, "h/L {thin}, a {a}: {b:.1e}");
+                assert!(delta <= p.delta_error, "h/L {thin}, a {a}: {delta:.1e}");
+                assert!((p.a_bar / a - 1.0).abs() <= 1e-12, "{} {a}", p.a_bar);
+                assert_eq!(
+                    (df > 0.0, dd > 0.0),
+                    (reference.force_slope > 0.0, reference.delta_slope > 0.0),
+                    "h/L {thin}, a {a}"
+                );
+                assert!(
+                    (df / reference.force_slope - 1.0).abs() < 1e-3,
+                    "{df} {}",
+                    reference.force_slope
+                );
+                assert!(
+                    (dd / reference.delta_slope - 1.0).abs() < 1e-3,
+                    "{dd} {}",
+                    reference.delta_slope
+                );
+                assert!(p.warnings.is_empty(), "{:?}", p.warnings);
+            }
+            let p = pull_off_displacement(&layers, 1.0).unwrap();
+            let reference = &pull.displacement;
+            assert_eq!(
+                (p.held, p.method),
+                (Held::DisplacementPullOff, Method::SharpEdge)
+            );
+            let force =
+                (p.force_bar - reference.force_bar).abs() / reference.force_bar.abs().max(1.0);
+            let (a, delta) = (
+                (p.a_bar / reference.a_bar - 1.0).abs(),
+                (p.delta_bar - reference.delta_bar).abs(),
+            );
+            println!(
+                "h/L {thin}, least approach: force {force:.1e} (bound {:.1e}), a {a:.1e} (bound {:.1e}), delta {delta:.1e} (bound {:.1e})",
+                p.force_error, p.size_error, p.delta_error
+            );
+            let [df, dd] = p.slopes.unwrap();
+            println!("  slopes there {df:.4} {dd:.1e}");
+            assert!(df < 0.0 && dd.abs() < 1e-3 * df.abs(), "{df} {dd}");
+            assert!(force <= p.force_error, "h/L {thin}: {force:.1e}");
+            assert!(a <= p.size_error, "h/L {thin}: {a:.1e}");
+            assert!(delta <= p.delta_error, "h/L {thin}: {delta:.1e}");
         }
     }
 

@@ -8,11 +8,11 @@
 //! that do not converge, as at θ = 30° with equal cylinders) the grid
 //! solver's (`by_grid`: a cohesive law shrunk toward JKR's edge), where
 //! it reaches the coatings. A state at a force is found the same way (the
-//! sharp edge's, else the grid's), a state at an approach by the sharp
-//! edge alone; a state at a size is refused, with its reason.
+//! sharp edge's, else the grid's); a state at an approach or a size and
+//! the pull-off under displacement control by the sharp edge alone.
 //!
 //! Owns: [`PlaneState`], [`PlaneRung`], [`Held`], [`Method`], [`state`],
-//! [`pull_off`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
+//! [`pull_off`], [`pull_off_displacement`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
 //! [`beyond_reach`]. May use: its own `by_grid` and `by_sharp_edge`, and
 //! through them `layer` (the pair, `grid`, `sharp`), `control` (the hold),
 //! `error`, `progress` (the rung a spinner shows), `newton` (the stop
@@ -78,6 +78,11 @@ pub enum Held {
     Delta,
     /// A force F̄, on the branch stable under load control.
     Force,
+    /// A half-width ā along X, anywhere on the branch from large loads.
+    Size,
+    /// The pull-off under displacement control: the least approach on
+    /// the branch.
+    DisplacementPullOff,
 }
 
 /// How a state in the plane is found.
@@ -138,6 +143,13 @@ pub struct PlaneState {
     /// from Griffith's condition, |K/√(2β) − 1| at 65 points of the quarter.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub griffith_error: Option<f64>,
+    /// At a held size and at the pull-off under displacement control, the
+    /// slopes dF̄/dā and dδ̄/dā along the branch on the finest rung
+    /// (central differences over 1e-4 ā): the contact is stable under load
+    /// control where the first is positive, under displacement control
+    /// where the second is (near zero at that pull-off).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slopes: Option<[f64; 2]>,
     /// The two coatings.
     pub coatings: [Coating; 2],
     /// What the coatings are and how the answer is found, in words every
@@ -227,10 +239,19 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
     Ok(grid)
 }
 
+/// The pull-off under displacement control of `layers` at `rho` ∈ (0, 1]:
+/// the least approach on the branch, the sharp edge's (its error where it
+/// has none; the grid locates no such pull-off).
+pub(crate) fn pull_off_displacement(layers: &Layers, rho: f64) -> Result<PlaneState> {
+    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+    by_sharp_edge::pull_off_displacement(layers, rho)
+}
+
 /// The state of `layers` at `rho` ∈ (0, 1] held at `hold` (`None`: the
 /// pull-off under load control, [`pull_off`]); at a force the sharp
 /// edge's where it answers, else the grid solver's, as for the pull-off;
-/// at an approach the sharp edge's (its error where it has none).
+/// at an approach or a size the sharp edge's (its error where it has
+/// none).
 pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<PlaneState> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     let force = match hold {
@@ -239,6 +260,8 @@ pub(crate) fn state(layers: &Layers, rho: f64, hold: Option<Hold>) -> Result<Pla
         // the sharp edge's alone: the grid's force at a held approach has
         // no bound it can state (`by_grid`)
         Some(Hold::Delta(d)) if d.is_finite() => return by_sharp_edge::at_approach(layers, rho, d),
+        // the sharp edge's alone: the grid holds no size
+        Some(Hold::Size(a)) if a.is_finite() => return by_sharp_edge::at_size(layers, rho, a),
         Some(hold) => return by_grid::state(layers, rho, Some(hold)),
     };
     let sharp = match by_sharp_edge::at_force(layers, rho, force) {
