@@ -1198,6 +1198,8 @@ impl Contact<'_> {
         wide: f64,
         jacobian: &mut Option<DMatrix<f64>>,
     ) -> Result<SharpState> {
+        // the table rebuilt wider where the walk nears its reach
+        let mut grown: Option<Contact> = None;
         let contact = self;
         let (mut lo, mut step) = match last {
             None => {
@@ -1234,7 +1236,14 @@ impl Contact<'_> {
             // a step too long for Newton's method halved (up to 6 times)
             let mut tries = 0;
             let st = loop {
-                match contact.edge_at(lo.delta_bar + step, &lo.domain, jacobian) {
+                if 1.2 * lo.a_bar.max(lo.b_bar) > grown.as_ref().unwrap_or(self).reach {
+                    let wider = Domain::ellipse(2.0 * lo.a_bar, 2.0 * lo.b_bar);
+                    grown = Some(Contact::new(self.layers, self.rho, self.res, &wider)?);
+                    *jacobian = None;
+                }
+                let contact = grown.as_ref().unwrap_or(self);
+                let edge = based(&lo, jacobian)?;
+                match contact.edge_at(lo.delta_bar + step, &edge, jacobian) {
                     Ok(st) => break st,
                     Err(_) if tries < 6 && !crate::newton::stop_requested() => {
                         tries += 1;
@@ -1243,10 +1252,18 @@ impl Contact<'_> {
                     }
                     Err(e) => {
                         return Err(match held {
-                            // the walk's end: the branch turns back in δ̄
-                            HeldAt::Delta(d) if !crate::newton::stop_requested() => {
+                            // the walk's end going down: the branch turns
+                            // back in δ̄
+                            HeldAt::Delta(d) if step < 0.0 && !crate::newton::stop_requested() => {
                                 Error::NoState(format!(
                                     "no state at delta = {}: the branch through the pull-off ends near delta = {}, its least approach (the sharp edge finds no state past it)",
+                                    crate::error::short(d),
+                                    crate::error::short(lo.delta_bar)
+                                ))
+                            }
+                            HeldAt::Delta(d) if !crate::newton::stop_requested() => {
+                                Error::NoState(format!(
+                                    "no state at delta = {}: the sharp edge's walk up in delta from the pull-off found none past delta = {} ({e})",
                                     crate::error::short(d),
                                     crate::error::short(lo.delta_bar)
                                 ))
@@ -1274,6 +1291,7 @@ impl Contact<'_> {
                 "the sharp edge did not reach {what} in 60 steps in delta"
             ))
         })?;
+        let contact = grown.as_ref().unwrap_or(self);
         Ok(match held {
             HeldAt::Force(f) => contact.at_force(lo, hi, f, jacobian)?,
             HeldAt::Delta(d) if hi.delta_bar == d => hi,

@@ -487,7 +487,9 @@ mod tests {
         for thin in [0.3, 1.0] {
             let layers = Layers::equal(thin, 0.5).unwrap();
             let pull = layers.pull_off(crate::layer::Route::Griffith).unwrap().load;
-            for force in [0.5 * pull.force_bar, 1.0] {
+            // (F̄ = 100: a contact over twice the pull-off's, past the
+            // reach of the first table, which the walk widens)
+            for force in [0.5 * pull.force_bar, 1.0, 100.0] {
                 let reference = layers
                     .state(Hold::Force(force), crate::layer::Route::Griffith)
                     .unwrap();
