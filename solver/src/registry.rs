@@ -1253,13 +1253,7 @@ impl Choice {
                     why: "use `thinjkr exact solve` at the loads wanted",
                 })
             }
-            Choice::Layer(_) => {
-                return Err(crate::Error::Unavailable {
-                    model: LAYER,
-                    what: "curve command".into(),
-                    why: "its curve is not traced yet; use `thinjkr solve --model layer` at the approaches or forces wanted",
-                })
-            }
+            Choice::Layer(layers) => layer_curve(&layers, rho, points, delta_start, each)?,
             Choice::Slender(m) => {
                 return Err(crate::Error::Unavailable {
                     model: m.name(),
@@ -1269,6 +1263,74 @@ impl Choice {
             }
         })
     }
+}
+
+/// The layer's curve: `points` states of sizes evenly spaced from the
+/// state at δ̄ = `delta_start` down to 3 % of its size (as the circle's
+/// curve of a model of the ellipse), each handed to `each` as it is found,
+/// and both pull-offs as its folds; at ρ = 1 the axisymmetric layer's, at
+/// ρ < 1 the sharp edge's (one walk in ā on each rung of its ladder).
+fn layer_curve(
+    layers: &crate::layer::Layers,
+    rho: f64,
+    points: usize,
+    delta_start: f64,
+    each: &mut dyn FnMut(CurvePoint) -> crate::Result<()>,
+) -> crate::Result<CurveEnd> {
+    use crate::curve::FoldKind;
+    use crate::layer::{plane, Route};
+    use crate::report::{AnyFold, AnyState};
+    crate::error::check_range(
+        "points",
+        points as f64,
+        (2..=crate::curve::MAX_POINTS).contains(&points),
+        "2 ..= 100000",
+    )?;
+    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+    let sizes = |a_start: f64| {
+        (0..points).map(move |k| a_start * (1.0 - 0.97 * k as f64 / (points - 1) as f64))
+    };
+    let point = |state: AnyState| CurvePoint {
+        state,
+        arm: None,
+        beyond_size_fold: false,
+    };
+    let folds = if rho == 1.0 {
+        let start = layers.state(Hold::Delta(delta_start), Route::Griffith)?;
+        for a in sizes(start.a_bar) {
+            each(point(AnyState::Layer(
+                layers.state(Hold::Size(a), Route::Griffith)?,
+            )))?;
+        }
+        let p = layers.pull_off(Route::Griffith)?;
+        vec![
+            (FoldKind::Load, AnyState::Layer(p.load)),
+            (FoldKind::Displacement, AnyState::Layer(p.displacement)),
+        ]
+    } else {
+        let start = plane::state(layers, rho, Some(Hold::Delta(delta_start)))?;
+        let all: Vec<f64> = sizes(start.a_bar).collect();
+        plane::curve(layers, rho, &all, &mut |st| {
+            each(point(AnyState::LayerPlane(Box::new(st))))
+        })?;
+        vec![
+            (
+                FoldKind::Load,
+                AnyState::LayerPlane(Box::new(plane::pull_off(layers, rho)?)),
+            ),
+            (
+                FoldKind::Displacement,
+                AnyState::LayerPlane(Box::new(plane::pull_off_displacement(layers, rho)?)),
+            ),
+        ]
+    };
+    Ok(CurveEnd {
+        folds: folds
+            .into_iter()
+            .map(|(kind, state)| AnyFold { kind, state })
+            .collect(),
+        end: None,
+    })
 }
 
 /// What a batch of states shares at one ρ, for each kind of model.

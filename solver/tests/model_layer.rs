@@ -603,3 +603,64 @@ fn physical_judges_thin_coatings_by_the_first_order_in_h_over_l() {
         "{warning}"
     );
 }
+
+/// The layer's curve at ρ = 1: the axisymmetric layer's states at sizes
+/// evenly spaced from its state at δ̄ = 20 down to 3 % of that size, with
+/// both pull-offs as its folds; along it the force falls to the
+/// load-controlled pull-off's size and rises past it (so its stability
+/// under load control changes there), and the approach the same at the
+/// displacement-controlled one's.
+#[test]
+fn the_layer_s_curve_at_rho_1_passes_both_pull_offs() {
+    use thinjkr::curve::FoldKind;
+    let layers = thinjkr::layer::Layers::equal(1.0, 0.5).unwrap();
+    let curve = Choice::Layer(layers).curve(1.0, 60, 20.0).unwrap();
+    let states: Vec<_> = curve
+        .states
+        .iter()
+        .map(|s| match s {
+            AnyState::Layer(l) => l.clone(),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(states.len(), 60);
+    assert!((states[0].delta_bar - 20.0).abs() < 1e-9);
+    let a0 = states[0].a_bar;
+    assert!((states[59].a_bar / (0.03 * a0) - 1.0).abs() < 1e-12);
+    let fold = |kind: FoldKind| match curve.folds.iter().find(|f| f.kind == kind) {
+        Some(thinjkr::report::AnyFold {
+            state: AnyState::Layer(l),
+            ..
+        }) => l.clone(),
+        other => panic!("{kind:?}: {other:?}"),
+    };
+    let (load, displacement) = (fold(FoldKind::Load), fold(FoldKind::Displacement));
+    assert!(displacement.a_bar < load.a_bar);
+    for pair in states.windows(2) {
+        let (before, after) = (&pair[0], &pair[1]);
+        // down in ā: each falls while ā is above its pull-off's size and
+        // rises below it (a pair on either side says nothing)
+        let force: fn(&thinjkr::layer::LayerState) -> f64 = |s| s.force_bar;
+        let delta: fn(&thinjkr::layer::LayerState) -> f64 = |s| s.delta_bar;
+        for (of, at) in [(force, load.a_bar), (delta, displacement.a_bar)] {
+            if after.a_bar >= at {
+                assert!(
+                    of(after) < of(before),
+                    "a {} to {}",
+                    before.a_bar,
+                    after.a_bar
+                );
+            } else if before.a_bar <= at {
+                assert!(
+                    of(after) > of(before),
+                    "a {} to {}",
+                    before.a_bar,
+                    after.a_bar
+                );
+            }
+        }
+    }
+    for st in &states {
+        assert!(st.force_bar >= load.force_bar && st.delta_bar >= displacement.delta_bar);
+    }
+}

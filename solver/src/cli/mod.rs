@@ -198,6 +198,12 @@ enum Command {
         rho: f64,
         #[arg(long, default_value = "max", value_parser = parse_model, help = crate::registry::help(false, "; exact gives states, not curves (use exact solve)"))]
         model: ModelChoice,
+        /// With --model layer: the coatings' thinness h/L (two equal coatings; default 0.1).
+        #[arg(long, allow_hyphen_values = true)]
+        thinness: Option<f64>,
+        /// With --model layer: the coatings' Poisson's ratio in [0, 0.5] (default 0.5, incompressible).
+        #[arg(long, allow_hyphen_values = true)]
+        nu: Option<f64>,
         /// Number of points, 2 ..= 100000.
         #[arg(long, default_value_t = 100)]
         points: usize,
@@ -610,9 +616,11 @@ fn run(cli: Cli) -> crate::Result<u8> {
         Some(Command::Curve {
             rho,
             model,
+            thinness,
+            nu,
             points,
             format,
-        }) => curve_command(model, rho, points, format)?,
+        }) => curve_command(model.with_coatings(thinness, nu)?, rho, points, format)?,
         Some(Command::Models { json }) => models_command(json)?,
         Some(Command::Schema) => outln!("{}", crate::report::schema().trim_end()),
         Some(Command::Completions { shell }) => completions_command(shell)?,
@@ -1508,8 +1516,14 @@ fn curve_row(p: &crate::registry::CurvePoint) -> String {
             "layer".into(),
             (Some(l.delta_slope > 0.0), Some(l.force_slope > 0.0)),
         ),
-        // (a pull-off alone, not on a curve: its stability is not judged)
-        AnyState::LayerPlane(_) => ("layer".into(), (None, None)),
+        // (on a curve its slopes along the branch judge it)
+        AnyState::LayerPlane(l) => (
+            "layer".into(),
+            match l.slopes {
+                Some([force, delta]) => (Some(delta > 0.0), Some(force > 0.0)),
+                None => (None, None),
+            },
+        ),
     };
     format!(
         "{name},{},{},{},{},{},{},{},{},{}",

@@ -1163,26 +1163,67 @@ fn based(st: &SharpState, jacobian: &mut Option<DMatrix<f64>>) -> Result<Domain>
 }
 
 /// The slopes dF̄/dā and dδ̄/dā along the branch at `st`, a state of
-/// size on `res`: central differences over 1e-4 ā, each state from `st`'s
-/// edge. The contact is stable under load control where the first is
-/// positive, under displacement control where the second is (the branch's
-/// own direction; its undulations are the kernel's stability's).
+/// size on `res` ([`Contact::slopes_at`]).
 pub(crate) fn slopes_in_size(
     layers: &Layers,
     rho: f64,
     res: Resolution,
     st: &SharpState,
 ) -> Result<[f64; 2]> {
-    let contact = Contact::new(layers, rho, res, &st.domain)?;
-    let h = 1e-4 * st.a_bar;
-    let mut jacobian = None;
-    let [below, above] =
-        [-h, h].map(|d| contact.size_at(st.a_bar + d, st.delta_bar, &st.domain, &mut jacobian));
-    let (below, above) = (below?, above?);
-    Ok([
-        (above.force_bar - below.force_bar) / (2.0 * h),
-        (above.delta_bar - below.delta_bar) / (2.0 * h),
-    ])
+    Contact::new(layers, rho, res, &st.domain)?.slopes_at(st, &mut None)
+}
+
+/// The states of each of `sizes` (in order, from the largest down) on
+/// each of `rungs`, handed to `each` a size at a time with the slopes on
+/// the finest rung ([`Contact::slopes_at`]): the first size as
+/// [`held_ladder`]'s state at a size, then on each rung one walk in ā
+/// ([`Contact::walk_in_size`]) from its last state, so that nothing of the
+/// size of `sizes` is kept. An error where a rung finds no state (where
+/// its walk stopped) or `each` fails.
+pub(crate) fn size_walk(
+    layers: &Layers,
+    rho: f64,
+    rungs: &[Resolution],
+    sizes: &[f64],
+    each: &mut dyn FnMut(&[SharpState], [f64; 2]) -> Result<()>,
+) -> Result<()> {
+    let (Some(&first), Some(finest)) = (sizes.first(), rungs.len().checked_sub(1)) else {
+        return Ok(());
+    };
+    let (mut guess, bracket, _) = circle_start(layers, rho)?;
+    // one table on each rung that reaches the largest size
+    let top = sizes.iter().copied().fold(first, f64::max).max(guess.a);
+    let reach = Domain::ellipse(top, guess.b * top / guess.a);
+    let contacts = rungs
+        .iter()
+        .map(|res| Contact::new(layers, rho, *res, &reach))
+        .collect::<Result<Vec<_>>>()?;
+    let mut jacobians: Vec<Option<DMatrix<f64>>> = vec![None; rungs.len()];
+    let mut states: Vec<SharpState> = Vec::with_capacity(rungs.len());
+    for (contact, jacobian) in contacts.iter().zip(&mut jacobians) {
+        let st = contact.held_in_size(
+            HeldAt::Size(first),
+            states.last(),
+            &guess,
+            bracket,
+            jacobian,
+        )?;
+        guess = st
+            .domain
+            .rebased(st.a_bar, st.b_bar, st.domain.modes.len())?;
+        states.push(st);
+    }
+    for (k, &a) in sizes.iter().enumerate() {
+        if k > 0 {
+            let step = (a - sizes[k - 1]).abs();
+            for ((contact, jacobian), st) in contacts.iter().zip(&mut jacobians).zip(&mut states) {
+                *st = contact.walk_in_size(st.clone(), a, step, jacobian)?;
+            }
+        }
+        let slopes = contacts[finest].slopes_at(&states[finest], &mut jacobians[finest])?;
+        each(&states, slopes)?;
+    }
+    Ok(())
 }
 
 impl Contact<'_> {
@@ -1250,27 +1291,7 @@ impl Contact<'_> {
                         step *= 0.5;
                         *jacobian = None;
                     }
-                    Err(e) => {
-                        return Err(match held {
-                            // the walk's end going down: the branch turns
-                            // back in δ̄
-                            HeldAt::Delta(d) if step < 0.0 && !crate::newton::stop_requested() => {
-                                Error::NoState(format!(
-                                    "no state at delta = {}: the branch through the pull-off ends near delta = {}, its least approach (the sharp edge finds no state past it)",
-                                    crate::error::short(d),
-                                    crate::error::short(lo.delta_bar)
-                                ))
-                            }
-                            HeldAt::Delta(d) if !crate::newton::stop_requested() => {
-                                Error::NoState(format!(
-                                    "no state at delta = {}: the sharp edge's walk up in delta from the pull-off found none past delta = {} ({e})",
-                                    crate::error::short(d),
-                                    crate::error::short(lo.delta_bar)
-                                ))
-                            }
-                            _ => e,
-                        });
-                    }
+                    Err(e) => return Err(walk_end(held, step, &lo, e)),
                 }
             };
             if held.off(&st) * held.off(&lo) <= 0.0 {
@@ -1337,6 +1358,23 @@ impl Contact<'_> {
             HeldAt::Size(a) => self.walk_in_size(start, a, step, jacobian),
             _ => self.least_approach(start, step, jacobian),
         }
+    }
+
+    /// The slopes dF̄/dā and dδ̄/dā along the branch at `st`, a state of
+    /// size: central differences over 1e-4 ā, each state from `st`'s
+    /// edge. The contact is stable under load control where the first is
+    /// positive, under displacement control where the second is (the
+    /// branch's own direction; its undulations are the kernel's
+    /// stability's).
+    fn slopes_at(&self, st: &SharpState, jacobian: &mut Option<DMatrix<f64>>) -> Result<[f64; 2]> {
+        let h = 1e-4 * st.a_bar;
+        let below = self.size_at(st.a_bar - h, st.delta_bar, &st.domain, jacobian)?;
+        let above = self.size_at(st.a_bar + h, st.delta_bar, &st.domain, jacobian)?;
+        let da = above.a_bar - below.a_bar;
+        Ok([
+            (above.force_bar - below.force_bar) / da,
+            (above.delta_bar - below.delta_bar) / da,
+        ])
     }
 
     /// The state of size `a` from `start`, walking in ā from a step of
@@ -1490,6 +1528,31 @@ impl Contact<'_> {
             "the sharp edge found no least approach within 40 steps in a".into(),
         ))
     }
+}
+
+/// The error where the walk in δ̄ of a hold at `held` finds no state past
+/// `lo` (its step `step`): going down at an approach, the branch's least
+/// approach; going up, what stopped it.
+fn walk_end(held: HeldAt, step: f64, lo: &SharpState, e: Error) -> Error {
+    match held {
+                            // the walk's end going down: the branch turns
+                            // back in δ̄
+                            HeldAt::Delta(d) if step < 0.0 && !crate::newton::stop_requested() => {
+                                Error::NoState(format!(
+                                    "no state at delta = {}: the branch through the pull-off ends near delta = {}, its least approach (the sharp edge finds no state past it)",
+                                    crate::error::short(d),
+                                    crate::error::short(lo.delta_bar)
+                                ))
+                            }
+                            HeldAt::Delta(d) if !crate::newton::stop_requested() => {
+                                Error::NoState(format!(
+                                    "no state at delta = {}: the sharp edge's walk up in delta from the pull-off found none past delta = {} ({e})",
+                                    crate::error::short(d),
+                                    crate::error::short(lo.delta_bar)
+                                ))
+                            }
+                            _ => e,
+                        }
 }
 
 impl Contact<'_> {

@@ -34,7 +34,8 @@
 //! exceeds `plane::WORST_FORCE_ERROR`, the answer is an error, and the
 //! parent asks the grid.
 //!
-//! Owns: [`pull_off`], [`at_force`], [`at_approach`], [`RUNGS`], [`REACH`]. May use: its parent `plane`
+//! Owns: [`pull_off`], [`pull_off_displacement`], [`at_force`], [`at_approach`], [`at_size`],
+//! [`curve`], [`RUNGS`], [`REACH`]. May use: its parent `plane`
 //! (the state it gives), `sharp` (the ladder), `layer` (the pair),
 //! `error`, `progress` (the rung a spinner shows), `control` (its tests'
 //! holds).
@@ -42,7 +43,7 @@
 use super::{two_digits, Held, Method, PlaneRung, PlaneState, WARN_FORCE_ERROR, WORST_FORCE_ERROR};
 use crate::error::{short, Error, Result};
 use crate::layer::sharp::{
-    held_ladder, pull_off_ladder, slopes_in_size, HeldAt, Resolution, SharpState,
+    held_ladder, pull_off_ladder, size_walk, slopes_in_size, HeldAt, Resolution, SharpState,
 };
 use crate::layer::Layers;
 
@@ -167,6 +168,30 @@ fn finest_slopes(
         (Some(res), Some(fine)) => slopes_in_size(layers, rho, *res, fine),
         _ => Err(Error::NoState("the sharp edge's ladder has no rung".into())),
     }
+}
+
+/// The states of `layers` at `rho` of each of `sizes` (in order, from the
+/// largest down), handed to `each` as they are found: [`at_size`]'s
+/// answers, by one walk in ā on each rung (`sharp::size_walk`). An error
+/// as [`pull_off`]'s, where a state is not resolved, or where `each`
+/// fails.
+pub(crate) fn curve(
+    layers: &Layers,
+    rho: f64,
+    sizes: &[f64],
+    each: &mut dyn FnMut(PlaneState) -> Result<()>,
+) -> Result<()> {
+    let rungs = checked_rungs(layers, rho)?;
+    size_walk(layers, rho, &rungs, sizes, &mut |states, slopes| {
+        each(answer(
+            layers,
+            rho,
+            &rungs,
+            states,
+            Held::Size,
+            Some(slopes),
+        )?)
+    })
 }
 
 /// [`RUNGS`] as resolutions, where `rho` and the coatings are within
@@ -629,6 +654,46 @@ mod tests {
             assert!(a <= p.size_error, "h/L {thin}: {a:.1e}");
             assert!(delta <= p.delta_error, "h/L {thin}: {delta:.1e}");
         }
+    }
+
+    /// At ρ = 0.8 the walk over sizes (one walk in ā on each rung, the
+    /// curve's) gives a size's state within the stated bounds of the
+    /// ladder found at that size alone (its own walk from the pull-off),
+    /// with the same slopes, and each state's stability under each control
+    /// from them.
+    #[test]
+    fn at_rho_0_8_the_walk_over_sizes_gives_each_size_s_state() {
+        let layers = Layers::equal(1.0, 0.5).unwrap();
+        let mut walked = Vec::new();
+        curve(&layers, 0.8, &[1.5, 1.0, 0.3], &mut |st| {
+            walked.push(st);
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(walked.len(), 3);
+        let alone = at_size(&layers, 0.8, 1.0).unwrap();
+        let on = &walked[1];
+        let force = (on.force_bar - alone.force_bar).abs() / alone.force_bar.abs().max(1.0);
+        let (b, delta) = (
+            (on.b_bar / alone.b_bar - 1.0).abs(),
+            (on.delta_bar - alone.delta_bar).abs(),
+        );
+        let ([df, dd], [df0, dd0]) = (on.slopes.unwrap(), alone.slopes.unwrap());
+        println!(
+            "force {force:.1e} (bound {:.1e}), b {b:.1e} (bound {:.1e}), delta {delta:.1e} (bound {:.1e}); slopes {df:.6} {dd:.6} against {df0:.6} {dd0:.6}",
+            on.force_error, on.size_error, on.delta_error
+        );
+        assert!(force <= on.force_error.max(alone.force_error));
+        assert!(b <= on.size_error.max(alone.size_error));
+        assert!(delta <= on.delta_error.max(alone.delta_error));
+        assert!((df / df0 - 1.0).abs() < 1e-4 && (dd / dd0 - 1.0).abs() < 1e-4);
+        // 1.5 and 1.0 lie above the pull-off's size (1.0648), 0.3 between
+        // the two pull-offs' (the least approach's is 0.2591)
+        let stable: Vec<(bool, bool)> = walked
+            .iter()
+            .map(|s| s.slopes.map(|[f, d]| (f > 0.0, d > 0.0)).unwrap())
+            .collect();
+        assert_eq!(stable, [(true, true), (false, true), (false, true)]);
     }
 
     /// At ρ = 0.8 and h/L = 1 the sharp edge's state at F̄ = 2 and the

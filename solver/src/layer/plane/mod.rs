@@ -12,7 +12,7 @@
 //! the pull-off under displacement control by the sharp edge alone.
 //!
 //! Owns: [`PlaneState`], [`PlaneRung`], [`Held`], [`Method`], [`state`],
-//! [`pull_off`], [`pull_off_displacement`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
+//! [`pull_off`], [`pull_off_displacement`], [`curve`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
 //! [`beyond_reach`]. May use: its own `by_grid` and `by_sharp_edge`, and
 //! through them `layer` (the pair, `grid`, `sharp`), `control` (the hold),
 //! `error`, `progress` (the rung a spinner shows), `newton` (the stop
@@ -245,6 +245,19 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
 pub(crate) fn pull_off_displacement(layers: &Layers, rho: f64) -> Result<PlaneState> {
     crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
     by_sharp_edge::pull_off_displacement(layers, rho)
+}
+
+/// The states of `layers` at `rho` ∈ (0, 1) of each of `sizes` (from the
+/// largest down), handed to `each` as they are found: the sharp edge's
+/// (its error where it has none).
+pub(crate) fn curve(
+    layers: &Layers,
+    rho: f64,
+    sizes: &[f64],
+    each: &mut dyn FnMut(PlaneState) -> Result<()>,
+) -> Result<()> {
+    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
+    by_sharp_edge::curve(layers, rho, sizes, each)
 }
 
 /// The state of `layers` at `rho` ∈ (0, 1] held at `hold` (`None`: the
