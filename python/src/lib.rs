@@ -116,6 +116,16 @@ fn choice(name: &str) -> PyResult<Choice> {
     thinjkr::registry::parse(name).map_err(usage)
 }
 
+/// The model named `name`, for the model layer with two equal coatings of
+/// thinness h/L `thinness` and Poisson's ratio `nu` (their defaults where
+/// not given; a usage error for another model given either).
+fn coated(name: &str, thinness: Option<f64>, nu: Option<f64>) -> PyResult<Choice> {
+    choice(name)?.with_coatings(thinness, nu).map_err(|e| match e {
+        Error::Usage(why) => usage(why),
+        other => raw(other),
+    })
+}
+
 fn json<T: serde::Serialize>(v: &T) -> String {
     serde_json::to_string(v).expect("the solver's types serialise")
 }
@@ -199,8 +209,17 @@ where
 
 /// The state of `model` at `rho` with `control` = `value`, as JSON.
 #[pyfunction]
-fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> PyResult<String> {
-    let m = choice(model)?;
+#[pyo3(signature = (model, rho, control, value, thinness=None, nu=None))]
+fn solve(
+    py: Python<'_>,
+    model: &str,
+    rho: f64,
+    control: &str,
+    value: f64,
+    thinness: Option<f64>,
+    nu: Option<f64>,
+) -> PyResult<String> {
+    let m = coated(model, thinness, nu)?;
     check_control(control)?;
     let control = control.to_string();
     detached(py, move || solve_one(m, rho, &control, value))?.map_err(raw)
@@ -210,8 +229,17 @@ fn solve(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> Py
 /// [`solve`] gives first, as a JSON array (the model layer's
 /// `Choice::states`, what `thinjkr solve --all` lists).
 #[pyfunction]
-fn states(py: Python<'_>, model: &str, rho: f64, control: &str, value: f64) -> PyResult<String> {
-    let m = choice(model)?;
+#[pyo3(signature = (model, rho, control, value, thinness=None, nu=None))]
+fn states(
+    py: Python<'_>,
+    model: &str,
+    rho: f64,
+    control: &str,
+    value: f64,
+    thinness: Option<f64>,
+    nu: Option<f64>,
+) -> PyResult<String> {
+    let m = coated(model, thinness, nu)?;
     check_control(control)?;
     let control = control.to_string();
     detached(py, move || -> thinjkr::Result<String> {
@@ -308,6 +336,7 @@ fn chunk_rows(
 /// of the points whose state is doubtful (as the command line prints them;
 /// only those, so that a million sound states cost no strings).
 #[pyfunction]
+#[pyo3(signature = (model, rho, control, value, thinness=None, nu=None))]
 #[allow(clippy::type_complexity)]
 fn solve_many<'py>(
     py: Python<'py>,
@@ -315,13 +344,15 @@ fn solve_many<'py>(
     rho: PyReadonlyArray1<'py, f64>,
     control: &str,
     value: PyReadonlyArray1<'py, f64>,
+    thinness: Option<f64>,
+    nu: Option<f64>,
 ) -> PyResult<(
     Bound<'py, PyDict>,
     Vec<Option<(String, String)>>,
     Vec<(usize, String)>,
     Vec<(usize, String)>,
 )> {
-    let m = choice(model)?;
+    let m = coated(model, thinness, nu)?;
     check_control(control)?;
     let rho = rho.as_slice()?.to_vec();
     let value = value.as_slice()?.to_vec();
@@ -396,8 +427,16 @@ fn solve_many<'py>(
 /// The pull-off under `control` ("load" or "displacement"), as JSON: the
 /// state and what ends the branch there.
 #[pyfunction]
-fn pull_off(py: Python<'_>, model: &str, rho: f64, control: &str) -> PyResult<String> {
-    let m = choice(model)?;
+#[pyo3(signature = (model, rho, control, thinness=None, nu=None))]
+fn pull_off(
+    py: Python<'_>,
+    model: &str,
+    rho: f64,
+    control: &str,
+    thinness: Option<f64>,
+    nu: Option<f64>,
+) -> PyResult<String> {
+    let m = coated(model, thinness, nu)?;
     let load = match control {
         "load" => true,
         "displacement" => false,
@@ -513,18 +552,21 @@ fn exact_contour<'py>(
     Ok((x.into_pyarray(py), y.into_pyarray(py)))
 }
 
-/// The curve of an approximate model at `rho` from δ̄ = `delta_start`
-/// past pull-off: JSON of its states and folds (for `conformal:K` also
-/// each state's arm and how the arms end).
+/// The curve of a model at `rho` from δ̄ = `delta_start` past pull-off:
+/// JSON of its states and folds (for `conformal:K` also each state's arm
+/// and how the arms end).
 #[pyfunction]
+#[pyo3(signature = (model, rho, points, delta_start, thinness=None, nu=None))]
 fn curve(
     py: Python<'_>,
     model: &str,
     rho: f64,
     points: usize,
     delta_start: f64,
+    thinness: Option<f64>,
+    nu: Option<f64>,
 ) -> PyResult<String> {
-    let m = choice(model)?;
+    let m = coated(model, thinness, nu)?;
     detached(py, move || -> thinjkr::Result<String> {
         let cv = m.curve(rho, points, delta_start)?;
         Ok(json(&match cv.arms {

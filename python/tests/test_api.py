@@ -549,3 +549,39 @@ def test_the_ellipse_models_flags_are_warnings_as_on_the_command_line(cli):
     rows = subprocess.run([cli, "batch"], input="rho,control,value\n0.5,force,0\n0.9,force,0\n",
                           capture_output=True, text=True).stdout.splitlines()
     assert rows[1].endswith('"rho < 0.8: outside the paper\'s stated range"') and rows[2].endswith(",")
+
+
+def test_the_layer_takes_its_coatings_and_answers_every_verb():
+    # at rho = 1 the axisymmetric layer (instant): the coatings reach it
+    thick = thinjkr.pull_off(1.0, model="layer", thinness=1.0)
+    thin = thinjkr.pull_off(1.0, model="layer", thinness=0.3)
+    assert thick.force_bar != thin.force_bar
+    softer = thinjkr.pull_off(1.0, model="layer", thinness=1.0, nu=0.45)
+    assert softer.force_bar != thick.force_bar
+    # under displacement control the pull-off is the smaller contact
+    least = thinjkr.pull_off(1.0, model="layer", thinness=1.0, control="displacement")
+    assert least.a_bar < thick.a_bar and least.delta_bar < thick.delta_bar
+    # the curve passes both pull-offs, and a state at one of its sizes is
+    # the curve's
+    c = thinjkr.curve(1.0, model="layer", thinness=1.0, points=20)
+    assert len(c) == 20 and [k for k, _ in c.folds] == ["load", "displacement"]
+    assert c.folds[0][1].force_bar == pytest.approx(thick.force_bar, rel=1e-12)
+    assert not c.beyond_size_fold.any()
+    s = thinjkr.solve(1.0, a=float(c.a_bar[5]), model="layer", thinness=1.0)
+    assert s.force_bar == pytest.approx(c.force_bar[5], rel=1e-12)
+    assert thinjkr.zero_force(1.0, model="layer", thinness=1.0).force_bar == pytest.approx(0.0, abs=1e-9)
+    # coatings are one number for the call, and for the layer only
+    with pytest.raises(thinjkr.InvalidInput, match="one number"):
+        thinjkr.solve(1.0, force=1.0, model="layer", thinness=[0.3, 1.0])
+    with pytest.raises(thinjkr.InvalidInput, match="for the model layer"):
+        thinjkr.solve(0.8, force=1.0, model="max", nu=0.45)
+
+
+def test_the_layer_in_the_plane_answers_a_size_with_its_slopes():
+    # rho = 0.8, h/L = 1 (5 s): between the two pull-offs' sizes (1.0648 and
+    # 0.2591), so unstable under load control and stable under displacement
+    s = thinjkr.solve(0.8, a=1.0, model="layer", thinness=1.0).to_dict()
+    assert (s["held"], s["method"]) == ("size", "sharp_edge")
+    assert s["a_bar"] == pytest.approx(1.0, rel=1e-12)
+    force_slope, delta_slope = s["slopes"]
+    assert force_slope < 0.0 < delta_slope

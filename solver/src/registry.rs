@@ -53,21 +53,17 @@ const LAYER_TITLE: &str = "coatings of finite thickness at rho = 1 (three-dimens
 
 impl Choice {
     /// The layer model for two equal coatings of thinness h/L and Poisson's
-    /// ratio ν; any other model as it is, where neither is given (a usage
-    /// error names the flags another model does not take).
-    #[cfg(feature = "cli")]
-    pub(crate) fn with_coatings(
-        self,
-        thinness: Option<f64>,
-        nu: Option<f64>,
-    ) -> crate::Result<Choice> {
+    /// ratio ν (h/L 0.1 and ν = ½ where not given); any other model as it
+    /// is, where neither is given (a usage error names what another model
+    /// does not take).
+    pub fn with_coatings(self, thinness: Option<f64>, nu: Option<f64>) -> crate::Result<Choice> {
         match self {
             Choice::Layer(_) => Ok(Choice::Layer(crate::layer::Layers::equal(
                 thinness.unwrap_or(Cutoff::default().thinness),
                 nu.unwrap_or(0.5),
             )?)),
             other if nu.is_some() || thinness.is_some() => Err(crate::Error::Usage(format!(
-                "--thinness and --nu are for --model layer (model {} solves the thin-layer equation (2) of incompressible coatings)",
+                "the coatings' thinness and nu are for the model layer (model {} solves the thin-layer equation (2) of incompressible coatings)",
                 other.name()
             ))),
             other => Ok(other),

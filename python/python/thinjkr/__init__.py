@@ -187,6 +187,20 @@ def _whole(name: str, value, lo: int, hi: int) -> int:
                        f"a whole number {lo} ..= {hi}", kind="out_of_range")
 
 
+def _coatings(thinness, nu) -> Tuple[Optional[float], Optional[float]]:
+    """The layer's coatings as given (None: the default): each one number,
+    shared by every point of the call."""
+    def one(name, value):
+        if value is None:
+            return None
+        value = _number(name, value)
+        if _np.ndim(value) > 0:
+            raise InvalidInput(f"parameter {name} must be one number (the coatings of the whole call)",
+                               kind="usage")
+        return value
+    return one("thinness", thinness), one("nu", nu)
+
+
 def _control(delta, force, a) -> Tuple[str, Any]:
     given = [(k, v) for k, v in (("delta", delta), ("force", force), ("a", a)) if v is not None]
     if len(given) != 1:
@@ -197,10 +211,13 @@ def _control(delta, force, a) -> Tuple[str, Any]:
     return given[0]
 
 
-def solve(rho, *, delta=None, force=None, a=None, model: str = "max", all: bool = False):
+def solve(rho, *, delta=None, force=None, a=None, model: str = "max", all: bool = False,
+          thinness=None, nu=None):
     """The state at radii ratio ``rho`` with exactly one control: approach
     ``delta`` (δ̄), force ``force`` (F̄, the stable state on the branch down
     to pull-off) or contact size ``a`` (ā, the state before the size fold).
+    With ``model="layer"``, ``thinness`` (h/L, default 0.1) and ``nu``
+    (Poisson's ratio, default 0.5) are the two equal coatings'.
 
     Scalars give a :class:`State`. When ``rho`` or the control is an array
     (broadcast together), the answer is a :class:`States` of arrays of
@@ -215,15 +232,16 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max", all: bool 
     """
     control, value = _control(delta, force, a)
     rho, value = _number("rho", rho), _number(control, value)
+    thinness, nu = _coatings(thinness, nu)
     if all:
         if _np.ndim(rho) != 0 or _np.ndim(value) != 0:
             raise InvalidInput("all=True takes a scalar rho and control (a list of states per point)")
-        ds = _json.loads(_call(_thinjkr.states, model, rho, control, value))
+        ds = _json.loads(_call(_thinjkr.states, model, rho, control, value, thinness, nu))
         for d in ds:
             _warn(d)
         return [_state_from(d, model) for d in ds]
     if _np.ndim(rho) == 0 and _np.ndim(value) == 0:
-        d = _json.loads(_call(_thinjkr.solve, model, rho, control, value))
+        d = _json.loads(_call(_thinjkr.solve, model, rho, control, value, thinness, nu))
         _warn(d)
         return _state_from(d, model)
     r, v = _np.broadcast_arrays(_np.asarray(rho, dtype=float), _np.asarray(value, dtype=float))
@@ -234,6 +252,8 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max", all: bool 
         _np.ascontiguousarray(r.ravel()),
         control,
         _np.ascontiguousarray(v.ravel()),
+        thinness,
+        nu,
     )
     arrays = {k: _np.asarray(x).reshape(shape) for k, x in cols.items()}
     warning = _np.full(r.size, "", dtype=object)
@@ -250,9 +270,10 @@ def solve(rho, *, delta=None, force=None, a=None, model: str = "max", all: bool 
     return States(model=model, rho=r.copy(), arrays=arrays, error=msgs, error_kind=kinds)
 
 
-def zero_force(rho, *, model: str = "max") -> State:
-    """The zero-force state (the paper's Section 5)."""
-    return solve(rho, force=0.0, model=model)
+def zero_force(rho, *, model: str = "max", thinness=None, nu=None) -> State:
+    """The zero-force state (the paper's Section 5); ``thinness`` and ``nu``
+    as for :func:`solve`."""
+    return solve(rho, force=0.0, model=model, thinness=thinness, nu=nu)
 
 
 def _many(rho: _np.ndarray, model: str, one, value: Optional[_np.ndarray] = None) -> States:
@@ -297,19 +318,21 @@ class PullOff(State):
     ends the branch there) and ``basis_words``."""
 
 
-def pull_off(rho, *, model: str = "max", control: str = "load"):
+def pull_off(rho, *, model: str = "max", control: str = "load", thinness=None, nu=None):
     """The pull-off under load control (the minimum of F̄ along the branch,
     the paper's Section 6) or under displacement control (the end of the
-    branch in δ̄).
+    branch in δ̄); ``thinness`` and ``nu`` as for :func:`solve`.
 
     A scalar ``rho`` gives a :class:`PullOff`. An array gives a
     :class:`States` of that shape (point by point, so that Ctrl-C stops it
     between points); a point without a pull-off is NaN with its reason in
     ``States.error``, as in :func:`solve`."""
     rho = _number("rho", rho)
+    thinness, nu = _coatings(thinness, nu)
     if _np.ndim(rho) > 0:
-        return _many(rho, model, lambda r: pull_off(r, model=model, control=control))
-    d = _json.loads(_call(_thinjkr.pull_off, model, rho, control))
+        return _many(rho, model, lambda r: pull_off(r, model=model, control=control,
+                                                    thinness=thinness, nu=nu))
+    d = _json.loads(_call(_thinjkr.pull_off, model, rho, control, thinness, nu))
     _warn(d["state"])
     st = _state_from(d["state"], model)
     fields = st.to_dict()
@@ -329,7 +352,9 @@ class Curve:
     contour for ``conformal:K``. ``arm`` is 0 along one branch; a
     ``conformal:K`` curve for ρ < 1 may have a second arm (1), the one that
     carries the load-controlled pull-off, and ``end`` says how each arm
-    ended (None for the models of the ellipse)."""
+    ended (None for the models of the ellipse). A field a model's states
+    lack is NaN (the axisymmetric layer's, at ρ = 1, carry no ``b_bar``,
+    ``s`` or ``bc_error``)."""
 
     def __init__(
         self,
@@ -342,13 +367,18 @@ class Curve:
         self.states = states
         self.folds = folds
         self.end = end
+        # (a field a model's states lack is NaN: the axisymmetric layer's,
+        # circles, carry no b_bar or s)
         for k in ("a_bar", "b_bar", "s", "delta_bar", "force_bar"):
-            setattr(self, k, _np.array([getattr(st, k) for st in states], dtype=float))
+            setattr(self, k, _np.array([st.to_dict().get(k, _np.nan) for st in states], dtype=float))
+        # (the layer's states have neither: NaN, and no size fold)
         self.bc_error = _np.array(
-            [st.bc_error if "bc_error" in st.keys() else st.bc_defect for st in states], dtype=float
+            [st.bc_error if "bc_error" in st.keys()
+             else st.bc_defect if "bc_defect" in st.keys() else _np.nan for st in states],
+            dtype=float,
         )
         if beyond_size_fold is None:
-            beyond_size_fold = [st.beyond_size_fold for st in states]
+            beyond_size_fold = [st.to_dict().get("beyond_size_fold", False) for st in states]
         self.beyond_size_fold = _np.array(beyond_size_fold, dtype=bool)
         self.arm = _np.array(arm if arm is not None else [0] * len(states), dtype=int)
 
@@ -376,27 +406,33 @@ class Curve:
         return f"Curve({len(self.states)} states, folds: {[k for k, _ in self.folds]})"
 
 
-def curve(rho, *, model: str = "max", points: int = 200, delta_start: float = 20.0):
+def curve(rho, *, model: str = "max", points: int = 200, delta_start: float = 20.0,
+          thinness=None, nu=None):
     """The curve of a model of the ellipse or of ``conformal:K`` at ``rho``
     from δ̄ = ``delta_start`` past pull-off and its folds, ``points`` states
-    evenly spaced in arclength (the paper's Figs. 6–8).
+    evenly spaced in arclength (the paper's Figs. 6–8). For ``model="layer"``
+    (``thinness`` and ``nu`` as for :func:`solve`) the states are evenly
+    spaced in size from δ̄ = ``delta_start`` down to 3 % of it, both
+    pull-offs its folds (at ρ < 1 seconds a point).
 
     A scalar ``rho`` gives a :class:`Curve`; an array (or list) of ρ gives
     a list of curves, one per ρ in the array's order (flattened), since
     curves differ in length. A ρ without a curve raises, as for a scalar."""
     points = _whole("points", points, 2, _thinjkr.MAX_CURVE_POINTS)
     rho = _number("rho", rho)
+    thinness, nu = _coatings(thinness, nu)
     delta_start = _number("delta_start", delta_start)
     if _np.ndim(delta_start) > 0:
         raise InvalidInput("parameter delta_start must be one number (the curves of an array of rho "
                            "share their start)", kind="usage")
     if _np.ndim(rho) > 0:
-        return [_curve(float(r), model, points, delta_start) for r in _np.asarray(rho).ravel()]
-    return _curve(rho, model, points, delta_start)
+        return [_curve(float(r), model, points, delta_start, thinness, nu)
+                for r in _np.asarray(rho).ravel()]
+    return _curve(rho, model, points, delta_start, thinness, nu)
 
 
-def _curve(rho: float, model: str, points: int, delta_start: float) -> Curve:
-    d = _json.loads(_call(_thinjkr.curve, model, rho, points, delta_start))
+def _curve(rho: float, model: str, points: int, delta_start: float, thinness=None, nu=None) -> Curve:
+    d = _json.loads(_call(_thinjkr.curve, model, rho, points, delta_start, thinness, nu))
     states = [_state_from(s) for s in d["states"]]
     folds = [(f["kind"], _state_from(f["state"])) for f in d["folds"]]
     # one warning for the call: how many states carry warnings and the
