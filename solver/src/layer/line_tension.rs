@@ -395,6 +395,111 @@ mod tests {
         }
     }
 
+    /// docs/thickness.md's numbers of the line tension ("The approach to
+    /// (2) at ρ < 1"), each computed again and compared at its printed
+    /// precision (they were typed in from `explore_the_line_tension`): on
+    /// the circle the axisymmetric layer less the line tension and that
+    /// over (h/L)³ at ten thicknesses; at ρ = 0.8 the line tension's
+    /// pull-off, its slope (F̄ − F̄₍₂₎)/(h/L) and the circle's difference
+    /// (the sharp edge's columns are not held here); at ρ = 0.5 its
+    /// pull-offs in the text.
+    #[test]
+    fn the_line_tension_numbers_of_the_docs_are_the_solver_s() {
+        use crate::layer::as_printed;
+        use crate::layer::thin::edge_shift;
+        use crate::layer::Layers;
+        let docs = include_str!("../../../docs/thickness.md");
+        let lines: Vec<&str> = docs.lines().collect();
+        let cells = |line: &str| -> Vec<String> {
+            line.split('|')
+                .map(|c| c.trim().to_string())
+                .filter(|c| !c.is_empty())
+                .collect()
+        };
+        let mut wrong = Vec::new();
+        let mut check = |what: String, value: f64, printed: &str| {
+            if !as_printed(value, printed) {
+                wrong.push(format!("{what}: {value:.9} printed {printed}"));
+            }
+        };
+        let (circle, _) = pull_off_resolved(1.0).unwrap();
+        let on_circle = Exact::of_state(&circle).unwrap();
+        // on the circle: the header of thicknesses two lines above
+        let at = lines
+            .iter()
+            .position(|l| l.starts_with("| F̄, layer − line tension |"))
+            .expect("the circle's table");
+        let (thins, beyond, cubed) = (cells(lines[at - 2]), cells(lines[at]), cells(lines[at + 1]));
+        for k in 1..thins.len() {
+            let h: f64 = thins[k].parse().unwrap();
+            let d = beyond_the_line_tension(&on_circle, &circle, h);
+            check(format!("circle h/L {h}"), d, &beyond[k]);
+            check(
+                format!("circle h/L {h} over (h/L)^3"),
+                d / h.powi(3),
+                &cubed[k],
+            );
+        }
+        // ρ = 0.8: h/L, the sharp edge, the line tension, its slope, …,
+        // on the circle
+        let (st, _) = pull_off_resolved(0.8).unwrap();
+        let ex = Exact::of_state(&st).unwrap();
+        let head = lines
+            .iter()
+            .position(|l| l.starts_with("| h/L | F̄, sharp edge | F̄, line tension |"))
+            .expect("the table at rho = 0.8");
+        for line in lines[head + 2..].iter().take_while(|l| l.starts_with('|')) {
+            let row = cells(line);
+            let h: f64 = row[0].parse().unwrap();
+            let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
+            let steps = ((b / 0.02).ceil() as usize).max(1);
+            let f = pull_off_with_line_tension(&ex, &st, b, steps)
+                .unwrap()
+                .force_bar;
+            check(format!("rho 0.8 h/L {h}"), f, &row[2]);
+            check(
+                format!("rho 0.8 h/L {h} slope"),
+                (f - st.force_bar) / h,
+                &row[3],
+            );
+            let d = beyond_the_line_tension(&on_circle, &circle, h);
+            check(format!("rho 0.8 h/L {h} on the circle"), d, &row[5]);
+        }
+        // ρ = 0.5, in the text: "F̄ = a, b, … at h/L = x, y, … (its slope"
+        let text = docs.split_whitespace().collect::<Vec<_>>().join(" ");
+        let from = text
+            .split("**At ρ = 0.5** the line tension's pull-off is F̄ = ")
+            .nth(1)
+            .expect("the line tension at rho = 0.5");
+        let (values, rest) = from.split_once(" at h/L = ").unwrap();
+        let (thins, rest) = rest.split_once(" (its slope").unwrap();
+        let (last, _) = rest
+            .split_once(", and ")
+            .and_then(|(_, r)| r.split_once(". Beyond"))
+            .unwrap();
+        let (last_value, last_thin) = last.split_once(" at ").unwrap();
+        let last_thin = last_thin.split_whitespace().next().unwrap();
+        let mut pairs: Vec<(String, String)> = values
+            .split(", ")
+            .zip(thins.split(", "))
+            .map(|(v, h)| (v.to_string(), h.to_string()))
+            .collect();
+        pairs.push((last_value.to_string(), last_thin.to_string()));
+        assert_eq!(pairs.len(), 9, "{pairs:?}");
+        let (st, _) = pull_off_resolved(0.5).unwrap();
+        let ex = Exact::of_state(&st).unwrap();
+        for (printed, h) in &pairs {
+            let h: f64 = h.parse().unwrap();
+            let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
+            let steps = ((b / 0.02).ceil() as usize).max(1);
+            let f = pull_off_with_line_tension(&ex, &st, b, steps)
+                .unwrap()
+                .force_bar;
+            check(format!("rho 0.5 h/L {h}"), f, printed);
+        }
+        assert!(wrong.is_empty(), "{wrong:#?}");
+    }
+
     /// At ρ = 0.8 the sharp edge's pull-off (the layer in the plane, on the
     /// rungs 16 × 4, 24 × 6 and 32 × 6) minus the line tension's, over the
     /// circle's difference (the axisymmetric layer's minus the line

@@ -2013,28 +2013,6 @@ mod tests {
         two_rungs_meet_the_grid(0.5785474, 1.0 / 3.0, (2e-3, 1e-3), (-1.835787, 0.0024));
     }
 
-    /// `value` as `printed` in docs/thickness.md, to half a unit of its
-    /// last printed digit: "−" for minus, "%" (a hundredth), bold marks,
-    /// e-notation, and "< x" (below x).
-    fn as_printed(value: f64, printed: &str) -> bool {
-        let p = printed.replace('−', "-").replace("**", "");
-        let p = p.trim();
-        let (p, value) = match p.strip_suffix('%') {
-            Some(p) => (p.trim(), 100.0 * value),
-            None => (p, value),
-        };
-        if let Some(bound) = p.strip_prefix('<') {
-            return value.abs() < bound.trim().parse::<f64>().expect("a number");
-        }
-        let number: f64 = p.parse().expect("a number");
-        let (mantissa, exponent) = match p.split_once('e') {
-            Some((m, e)) => (m, e.parse::<i32>().expect("an exponent")),
-            None => (p, 0),
-        };
-        let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
-        (value - number).abs() <= 0.5 * 10f64.powi(exponent - decimals) * (1.0 + 1e-9)
-    }
-
     /// docs/thickness.md's two tables of the sharp edge, every number of
     /// the sharp edge computed again and compared at its printed precision
     /// (they were typed in from the explorations' output): the ladders at
@@ -2048,7 +2026,7 @@ mod tests {
         let doc = doc();
         let mut bad = Vec::new();
         let mut check = |what: String, value: f64, printed: &str| {
-            if !as_printed(value, printed) {
+            if !crate::layer::as_printed(value, printed) {
                 bad.push(format!("{what}: computed {value}, printed {printed}"));
             }
         };
@@ -2113,13 +2091,13 @@ mod tests {
 
     #[test]
     fn a_number_is_read_as_printed() {
-        assert!(as_printed(-2.538882851, "−2.53888285"));
-        assert!(!as_printed(-2.53888296, "−2.53888285"));
-        assert!(as_printed(-0.00147, "**−0.147 %**"));
-        assert!(as_printed(3.94e-7, "3.9e-7"));
-        assert!(!as_printed(4.0e-7, "3.9e-7"));
-        assert!(as_printed(3e-10, "< 1e-9"));
-        assert!(!as_printed(2e-9, "< 1e-9"));
+        assert!(crate::layer::as_printed(-2.538882851, "−2.53888285"));
+        assert!(!crate::layer::as_printed(-2.53888296, "−2.53888285"));
+        assert!(crate::layer::as_printed(-0.00147, "**−0.147 %**"));
+        assert!(crate::layer::as_printed(3.94e-7, "3.9e-7"));
+        assert!(!crate::layer::as_printed(4.0e-7, "3.9e-7"));
+        assert!(crate::layer::as_printed(3e-10, "< 1e-9"));
+        assert!(!crate::layer::as_printed(2e-9, "< 1e-9"));
     }
 
     /// The free edge's pull-off across ρ and h/L on three rungs (12 × 3,
