@@ -4,8 +4,9 @@
 //! (issue 71): the bilateral problem (the pressure on a given domain at a
 //! given approach) on the half-space or on the coatings, its force and
 //! its stress-intensity factor along the edge, the free edge at an
-//! approach (Griffith's condition) and the pull-off under load control,
-//! which the model layer answers with (`plane::by_sharp_edge`).
+//! approach or of a size (Griffith's condition), both pull-offs and the
+//! walk over sizes of a curve, which the model layer answers with
+//! (`plane::by_sharp_edge`).
 //!
 //! The domain is the level set Φ < 1 of a polynomial,
 //! Φ = (1 + e₀)(ξ² + η²) + Σ_{m≥1} e_m Re (ξ + iη)^2m, ξ = X/a, η = Y/b
@@ -39,8 +40,9 @@
 //!
 //! Owns: `Domain`, `Bilateral`, `Sources`, `Resolution`, `SharpState`,
 //! `Contact` (a state at an approach, the pull-off), `pull_off_ladder`,
-//! `pull_off_ladder_from`, `HeldAt` and `held_ladder` (a state at a force
-//! or an approach). May use: `model` (Brent's minimum), `newton` (the stop
+//! `pull_off_ladder_from`, `HeldAt` and `held_ladder` (a state at a force,
+//! an approach or a size, the least approach), `slopes_in_size`,
+//! `size_walk` (a curve's states). May use: `model` (Brent's minimum), `newton` (the stop
 //! request), the parent (`layer`: the coatings, `grid::kernel`'s table of
 //! the base share, and the Illinois method), `quadrature` (Gauss–Legendre),
 //! `error`.
@@ -1216,6 +1218,9 @@ pub(crate) fn size_walk(
     for (k, &a) in sizes.iter().enumerate() {
         if k > 0 {
             let step = (a - sizes[k - 1]).abs();
+            // (one rung after another: side by side on two cores the 30-point
+            // curve at rho = 0.8 took 101 s against about 104, the rungs'
+            // own quadratures already using both)
             for ((contact, jacobian), st) in contacts.iter().zip(&mut jacobians).zip(&mut states) {
                 *st = contact.walk_in_size(st.clone(), a, step, jacobian)?;
             }

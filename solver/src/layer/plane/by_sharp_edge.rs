@@ -1,10 +1,10 @@
-//! The sharp edge's pull-off and states at a force or an approach in the
-//! plane (issue 71): `layer::sharp`'s ladder [`RUNGS`] of functions of the
-//! pressure (12 × 3, 16 × 4 and 20 × 5, with 3, 4 and 5 modes of the
-//! edge), each rung from the last one's answer. At a force the force is
-//! held, and the ladder's convergence is judged in the approach; at an
-//! approach the force's bound is relative to |F̄| or 1, the smaller
-//! force passing through zero.
+//! The sharp edge's pull-offs, states at a force, an approach or a size,
+//! and curve in the plane (issue 71): `layer::sharp`'s ladder [`RUNGS`] of
+//! functions of the pressure (12 × 3, 16 × 4 and 20 × 5, with 3, 4 and 5
+//! modes of the edge), each rung from the last one's answer. At a force
+//! the force is held, and the ladder's convergence is judged in the
+//! approach; at an approach, a size or the least approach the force's
+//! bound is relative to |F̄| or 1, the smaller force passing through zero.
 //!
 //! The answer is the finest rung's. The bound on its force's relative
 //! error has two parts (their sum, at least [`FORCE_FLOOR`]):
