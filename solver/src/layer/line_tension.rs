@@ -360,14 +360,10 @@ mod tests {
     /// line tension's at the shift of equal incompressible coatings of
     /// thinness `h`.
     fn beyond_the_line_tension(ex: &Exact, st: &ExactState, h: f64) -> f64 {
-        use crate::layer::thin::edge_shift;
         use crate::layer::{Layers, Route};
         let layers = Layers::equal(h, 0.5).unwrap();
-        let b = edge_shift(&layers).unwrap();
-        let steps = ((b / 0.02).ceil() as usize).max(1);
-        let tension = pull_off_with_line_tension(ex, st, b, steps).unwrap();
         let layer = layers.pull_off_under(Route::Griffith, true).unwrap();
-        layer.force_bar - tension.force_bar
+        layer.force_bar - tension_at(ex, st, h)
     }
 
     /// On the circle the line tension kept whole is the layer to second
@@ -395,6 +391,17 @@ mod tests {
         }
     }
 
+    /// The line tension's pull-off from (2)'s `st` for equal
+    /// incompressible coatings of thinness `h` (b̄ raised in steps of 0.02).
+    fn tension_at(ex: &Exact, st: &ExactState, h: f64) -> f64 {
+        use crate::layer::thin::edge_shift;
+        let b = edge_shift(&crate::layer::Layers::equal(h, 0.5).unwrap()).unwrap();
+        let steps = ((b / 0.02).ceil() as usize).max(1);
+        pull_off_with_line_tension(ex, st, b, steps)
+            .unwrap()
+            .force_bar
+    }
+
     /// docs/thickness.md's numbers of the line tension ("The approach to
     /// (2) at ρ < 1"), each computed again and compared at its printed
     /// precision (they were typed in from `explore_the_line_tension`): on
@@ -406,8 +413,6 @@ mod tests {
     #[test]
     fn the_line_tension_numbers_of_the_docs_are_the_solver_s() {
         use crate::layer::as_printed;
-        use crate::layer::thin::edge_shift;
-        use crate::layer::Layers;
         let docs = include_str!("../../../docs/thickness.md");
         let lines: Vec<&str> = docs.lines().collect();
         let cells = |line: &str| -> Vec<String> {
@@ -451,11 +456,7 @@ mod tests {
         for line in lines[head + 2..].iter().take_while(|l| l.starts_with('|')) {
             let row = cells(line);
             let h: f64 = row[0].parse().unwrap();
-            let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
-            let steps = ((b / 0.02).ceil() as usize).max(1);
-            let f = pull_off_with_line_tension(&ex, &st, b, steps)
-                .unwrap()
-                .force_bar;
+            let f = tension_at(&ex, &st, h);
             check(format!("rho 0.8 h/L {h}"), f, &row[2]);
             check(
                 format!("rho 0.8 h/L {h} slope"),
@@ -490,11 +491,7 @@ mod tests {
         let ex = Exact::of_state(&st).unwrap();
         for (printed, h) in &pairs {
             let h: f64 = h.parse().unwrap();
-            let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
-            let steps = ((b / 0.02).ceil() as usize).max(1);
-            let f = pull_off_with_line_tension(&ex, &st, b, steps)
-                .unwrap()
-                .force_bar;
+            let f = tension_at(&ex, &st, h);
             check(format!("rho 0.5 h/L {h}"), f, printed);
         }
         assert!(wrong.is_empty(), "{wrong:#?}");
