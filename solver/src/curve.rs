@@ -18,7 +18,8 @@
 //! the states are handed out one at a time (`trace_each`), so a curve's
 //! memory does not grow with its points.
 //!
-//! Owns: [`Curve`], [`Fold`], [`trace`], `trace_each`, `TRACED_FOR`. May use: `generated` (`ModelId`), `contact`, `equations`,
+//! Owns: [`Curve`], [`Fold`], [`trace`], `trace_each`, `TRACED_FOR`,
+//! `check_points`, `circle_sizes`. May use: `generated` (`ModelId`), `contact`, `equations`,
 //! `fold`, `continuation`, `error`, `model` (its tests: the residuals a state solves).
 
 use crate::contact::{Contact, State};
@@ -104,12 +105,7 @@ pub(crate) fn trace_each(
     delta_start: f64,
     each: &mut dyn FnMut(State) -> Result<()>,
 ) -> Result<Vec<Fold>> {
-    check_range(
-        "points",
-        points as f64,
-        (2..=MAX_POINTS).contains(&points),
-        "2 ..= 100000",
-    )?;
+    check_points(points)?;
     let rho = contact.rho();
     // (with a margin for the rounding of a typed 0.999999999)
     if rho < 1.0 && 1.0 - rho < 0.999 * CURVE_NEAR_CIRCLE {
@@ -264,11 +260,29 @@ fn circle_each(
         kind: FoldKind::Load,
         state: contact.pull_off_load()?.state,
     }];
-    for k in 0..points {
-        let a = a_start * (1.0 - 0.97 * k as f64 / (points - 1) as f64);
+    for a in circle_sizes(a_start, points) {
         each(contact.at_contact_size(a)?[0])?;
     }
     Ok(folds)
+}
+
+/// The number of a curve's states, checked: 2 ..= [`MAX_POINTS`].
+pub(crate) fn check_points(points: usize) -> Result<()> {
+    check_range(
+        "points",
+        points as f64,
+        (2..=MAX_POINTS).contains(&points),
+        "2 ..= 100000",
+    )
+    .map(|_| ())
+}
+
+/// The sizes of a curve along a branch with one parameter (the circle's,
+/// at ρ = 1): `points` of them, evenly spaced from `a_start` down to 3 % of
+/// it.
+pub(crate) fn circle_sizes(a_start: f64, points: usize) -> impl Iterator<Item = f64> {
+    let last = points.saturating_sub(1).max(1) as f64;
+    (0..points).map(move |k| a_start * (1.0 - 0.97 * k as f64 / last))
 }
 
 /// The trace's settings for a curve of `points` states: the trace is at

@@ -1276,16 +1276,9 @@ fn layer_curve(
     use crate::curve::FoldKind;
     use crate::layer::{plane, Route};
     use crate::report::{AnyFold, AnyState};
-    crate::error::check_range(
-        "points",
-        points as f64,
-        (2..=crate::curve::MAX_POINTS).contains(&points),
-        "2 ..= 100000",
-    )?;
-    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-    let sizes = |a_start: f64| {
-        (0..points).map(move |k| a_start * (1.0 - 0.97 * k as f64 / (points - 1) as f64))
-    };
+    // (ρ is checked by the layer at ρ < 1)
+    crate::curve::check_points(points)?;
+    let sizes = |a_start: f64| crate::curve::circle_sizes(a_start, points);
     let point = |state: AnyState| CurvePoint {
         state,
         arm: None,

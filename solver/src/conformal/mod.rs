@@ -1613,12 +1613,7 @@ impl Conformal {
     /// ρ and the points of a curve, checked (ρ as the family accepts it).
     fn curve_rho(&self, rho: f64, points: usize) -> Result<f64> {
         let rho = check_rho(self.family, rho)?;
-        check_range(
-            "points",
-            points as f64,
-            (2..=crate::curve::MAX_POINTS).contains(&points),
-            "2 ..= 100000",
-        )?;
+        crate::curve::check_points(points)?;
         Ok(rho)
     }
 

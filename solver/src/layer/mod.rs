@@ -557,6 +557,29 @@ pub(crate) fn minimum(f: impl Fn(f64) -> Result<f64>, guess: f64, what: &str) ->
     }
 }
 
+/// `value` as `printed` in docs/thickness.md, to half a unit of its
+/// last printed digit: "−" for minus, "%" (a hundredth), bold marks,
+/// e-notation, and "< x" (below x).
+#[cfg(test)]
+pub(crate) fn as_printed(value: f64, printed: &str) -> bool {
+    let p = printed.replace('−', "-").replace("**", "");
+    let p = p.trim();
+    let (p, value) = match p.strip_suffix('%') {
+        Some(p) => (p.trim(), 100.0 * value),
+        None => (p, value),
+    };
+    if let Some(bound) = p.strip_prefix('<') {
+        return value.abs() < bound.trim().parse::<f64>().expect("a number");
+    }
+    let number: f64 = p.parse().expect("a number");
+    let (mantissa, exponent) = match p.split_once('e') {
+        Some((m, e)) => (m, e.parse::<i32>().expect("an exponent")),
+        None => (p, 0),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+    (value - number).abs() <= 0.5 * 10f64.powi(exponent - decimals) * (1.0 + 1e-9)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -600,27 +623,4 @@ mod tests {
             );
         }
     }
-}
-
-/// `value` as `printed` in docs/thickness.md, to half a unit of its
-/// last printed digit: "−" for minus, "%" (a hundredth), bold marks,
-/// e-notation, and "< x" (below x).
-#[cfg(test)]
-pub(crate) fn as_printed(value: f64, printed: &str) -> bool {
-    let p = printed.replace('−', "-").replace("**", "");
-    let p = p.trim();
-    let (p, value) = match p.strip_suffix('%') {
-        Some(p) => (p.trim(), 100.0 * value),
-        None => (p, value),
-    };
-    if let Some(bound) = p.strip_prefix('<') {
-        return value.abs() < bound.trim().parse::<f64>().expect("a number");
-    }
-    let number: f64 = p.parse().expect("a number");
-    let (mantissa, exponent) = match p.split_once('e') {
-        Some((m, e)) => (m, e.parse::<i32>().expect("an exponent")),
-        None => (p, 0),
-    };
-    let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
-    (value - number).abs() <= 0.5 * 10f64.powi(exponent - decimals) * (1.0 + 1e-9)
 }

@@ -624,6 +624,14 @@ pub(crate) struct Contact<'a> {
     reach: f64,
 }
 
+/// How a state's unknowns make its approach and domain
+/// ([`Contact::griffith_newton`]).
+type Unknowns<'a> = dyn Fn(&DVector<f64>) -> Result<(f64, Domain)> + 'a;
+
+/// What [`size_walk`] hands on at each size: the rungs' states and the
+/// finest one's slopes.
+type EachSize<'a> = dyn FnMut(&[SharpState], [f64; 2]) -> Result<()> + 'a;
+
 /// How near Griffith's condition, |K/√(2β) − 1| at its angles, a state is
 /// taken: the residual's round-off is near 1e-12 on near-circular
 /// contacts.
@@ -773,7 +781,7 @@ impl<'a> Contact<'a> {
     fn griffith_newton(
         &self,
         mut v: DVector<f64>,
-        make: &dyn Fn(&DVector<f64>) -> Result<(f64, Domain)>,
+        make: &Unknowns<'_>,
         jacobian: &mut Option<DMatrix<f64>>,
         what: &str,
     ) -> Result<SharpState> {
@@ -1087,14 +1095,19 @@ pub(crate) enum HeldAt {
     LeastApproach,
 }
 
-impl HeldAt {
-    /// The state's departure from a hold in δ̄ (a force or an approach).
+/// A hold the walk in δ̄ reaches: a force or an approach.
+#[derive(Clone, Copy)]
+enum InDelta {
+    Force(f64),
+    Delta(f64),
+}
+
+impl InDelta {
+    /// The state's departure from the hold.
     fn off(self, st: &SharpState) -> f64 {
         match self {
-            HeldAt::Force(f) => st.force_bar - f,
-            HeldAt::Delta(d) => st.delta_bar - d,
-            HeldAt::Size(a) => st.a_bar - a,
-            HeldAt::LeastApproach => 0.0,
+            InDelta::Force(f) => st.force_bar - f,
+            InDelta::Delta(d) => st.delta_bar - d,
         }
     }
 }
@@ -1134,13 +1147,16 @@ pub(crate) fn held_ladder(
         };
         let contact = Contact::new(layers, rho, *res, &reach)?;
         let mut jacobian = None;
+        let (last, jacobian) = (found.last(), &mut jacobian);
         let st = match held {
-            HeldAt::Force(_) | HeldAt::Delta(_) => {
-                contact.held_in_delta(held, found.last(), &guess, bracket, wide, &mut jacobian)?
+            HeldAt::Force(f) => {
+                contact.held_in_delta(InDelta::Force(f), last, &guess, bracket, wide, jacobian)?
             }
-            HeldAt::Size(_) | HeldAt::LeastApproach => {
-                contact.held_in_size(held, found.last(), &guess, bracket, &mut jacobian)?
+            HeldAt::Delta(d) => {
+                contact.held_in_delta(InDelta::Delta(d), last, &guess, bracket, wide, jacobian)?
             }
+            HeldAt::Size(a) => contact.held_in_size(Some(a), last, &guess, bracket, jacobian)?,
+            HeldAt::LeastApproach => contact.held_in_size(None, last, &guess, bracket, jacobian)?,
         };
         visit(res, &st);
         guess = st
@@ -1187,7 +1203,7 @@ pub(crate) fn size_walk(
     rho: f64,
     rungs: &[Resolution],
     sizes: &[f64],
-    each: &mut dyn FnMut(&[SharpState], [f64; 2]) -> Result<()>,
+    each: &mut EachSize<'_>,
 ) -> Result<()> {
     let (Some(&first), Some(finest)) = (sizes.first(), rungs.len().checked_sub(1)) else {
         return Ok(());
@@ -1203,13 +1219,7 @@ pub(crate) fn size_walk(
     let mut jacobians: Vec<Option<DMatrix<f64>>> = vec![None; rungs.len()];
     let mut states: Vec<SharpState> = Vec::with_capacity(rungs.len());
     for (contact, jacobian) in contacts.iter().zip(&mut jacobians) {
-        let st = contact.held_in_size(
-            HeldAt::Size(first),
-            states.last(),
-            &guess,
-            bracket,
-            jacobian,
-        )?;
+        let st = contact.held_in_size(Some(first), states.last(), &guess, bracket, jacobian)?;
         guess = st
             .domain
             .rebased(st.a_bar, st.b_bar, st.domain.modes.len())?;
@@ -1237,7 +1247,7 @@ impl Contact<'_> {
     /// `guess`'s edge, the walk in δ̄.
     fn held_in_delta(
         &self,
-        held: HeldAt,
+        held: InDelta,
         last: Option<&SharpState>,
         guess: &Domain,
         bracket: (f64, f64),
@@ -1246,11 +1256,10 @@ impl Contact<'_> {
     ) -> Result<SharpState> {
         // the table rebuilt wider where the walk nears its reach
         let mut grown: Option<Contact> = None;
-        let contact = self;
         let (mut lo, mut step) = match last {
             None => {
-                let p = contact.pull_off(guess, bracket, 16)?;
-                if let HeldAt::Force(f) = held {
+                let p = self.pull_off(guess, bracket, 16)?;
+                if let InDelta::Force(f) = held {
                     if f < p.force_bar {
                         return Err(Error::NoState(format!(
                             "no state at force {} under load control: the layer's pull-off in the plane is near {}",
@@ -1261,13 +1270,13 @@ impl Contact<'_> {
                 }
                 // towards the hold: up in δ̄ at a force (above the pull-off)
                 let towards = match held {
-                    HeldAt::Delta(d) if d < p.delta_bar => -1.0,
+                    InDelta::Delta(d) if d < p.delta_bar => -1.0,
                     _ => 1.0,
                 };
                 (p, towards * 0.2 * wide)
             }
             Some(last) => {
-                let at = contact.edge_at(last.delta_bar, guess, jacobian)?;
+                let at = self.edge_at(last.delta_bar, guess, jacobian)?;
                 let towards = if held.off(&at) < 0.0 { 1.0 } else { -1.0 };
                 (at, towards * 0.02 * wide)
             }
@@ -1308,10 +1317,8 @@ impl Contact<'_> {
         }
         let hi = hi.ok_or_else(|| {
             let what = match held {
-                HeldAt::Force(f) => format!("force {}", crate::error::short(f)),
-                HeldAt::Delta(d) => format!("delta = {}", crate::error::short(d)),
-                HeldAt::Size(a) => format!("a = {}", crate::error::short(a)),
-                HeldAt::LeastApproach => "the least approach".into(),
+                InDelta::Force(f) => format!("force {}", crate::error::short(f)),
+                InDelta::Delta(d) => format!("delta = {}", crate::error::short(d)),
             };
             Error::NoState(format!(
                 "the sharp edge did not reach {what} in 60 steps in delta"
@@ -1319,14 +1326,9 @@ impl Contact<'_> {
         })?;
         let contact = grown.as_ref().unwrap_or(self);
         Ok(match held {
-            HeldAt::Force(f) => contact.at_force(lo, hi, f, jacobian)?,
-            HeldAt::Delta(d) if hi.delta_bar == d => hi,
-            HeldAt::Size(_) | HeldAt::LeastApproach => {
-                return Err(Error::Usage(
-                    "a size is held by the walk in a, not in delta".into(),
-                ))
-            }
-            HeldAt::Delta(d) => {
+            InDelta::Force(f) => contact.at_force(lo, hi, f, jacobian)?,
+            InDelta::Delta(d) if hi.delta_bar == d => hi,
+            InDelta::Delta(d) => {
                 let from = if (d - lo.delta_bar).abs() < (d - hi.delta_bar).abs() {
                     &lo
                 } else {
@@ -1337,12 +1339,12 @@ impl Contact<'_> {
         })
     }
 
-    /// One rung of [`held_ladder`] at a size or the least approach: from
-    /// the last rung's state (`None`: from the pull-off in `bracket`), on
-    /// `guess`'s edge, the walk in ā.
+    /// One rung of [`held_ladder`] at the size `size` (`None`: the least
+    /// approach): from the last rung's state (`None`: from the pull-off in
+    /// `bracket`), on `guess`'s edge, the walk in ā.
     fn held_in_size(
         &self,
-        held: HeldAt,
+        size: Option<f64>,
         last: Option<&SharpState>,
         guess: &Domain,
         bracket: (f64, f64),
@@ -1359,9 +1361,9 @@ impl Contact<'_> {
                 0.01 * last.a_bar,
             ),
         };
-        match held {
-            HeldAt::Size(a) => self.walk_in_size(start, a, step, jacobian),
-            _ => self.least_approach(start, step, jacobian),
+        match size {
+            Some(a) => self.walk_in_size(start, a, step, jacobian),
+            None => self.least_approach(start, step, jacobian),
         }
     }
 
@@ -1372,14 +1374,29 @@ impl Contact<'_> {
     /// branch's own direction; its undulations are the kernel's
     /// stability's).
     fn slopes_at(&self, st: &SharpState, jacobian: &mut Option<DMatrix<f64>>) -> Result<[f64; 2]> {
-        let h = 1e-4 * st.a_bar;
-        let below = self.size_at(st.a_bar - h, st.delta_bar, &st.domain, jacobian)?;
-        let above = self.size_at(st.a_bar + h, st.delta_bar, &st.domain, jacobian)?;
+        let (slopes, _) = self.across(st.a_bar, 1e-4 * st.a_bar, st, &st.domain, jacobian)?;
+        Ok(slopes)
+    }
+
+    /// The states of size `a` − `h` and `a` + `h` on `edge`, the first from
+    /// `near`'s approach and the second from the first's, and the slopes
+    /// dF̄/dā and dδ̄/dā between them.
+    fn across(
+        &self,
+        a: f64,
+        h: f64,
+        near: &SharpState,
+        edge: &Domain,
+        jacobian: &mut Option<DMatrix<f64>>,
+    ) -> Result<([f64; 2], [SharpState; 2])> {
+        let below = self.size_at(a - h, near.delta_bar, edge, jacobian)?;
+        let above = self.size_at(a + h, below.delta_bar, edge, jacobian)?;
         let da = above.a_bar - below.a_bar;
-        Ok([
+        let slopes = [
             (above.force_bar - below.force_bar) / da,
             (above.delta_bar - below.delta_bar) / da,
-        ])
+        ];
+        Ok((slopes, [below, above]))
     }
 
     /// The state of size `a` from `start`, walking in ā from a step of
@@ -1499,12 +1516,9 @@ impl Contact<'_> {
             let mut slope = |a: f64| -> Result<f64> {
                 let from = nearest(&walk, a)?;
                 let edge = based(&from, jacobian)?;
-                let below = self.size_at(a - h, from.delta_bar, &edge, jacobian)?;
-                let above = self.size_at(a + h, below.delta_bar, &edge, jacobian)?;
-                let g = (above.delta_bar - below.delta_bar) / (above.a_bar - below.a_bar);
-                walk.push(below);
-                walk.push(above);
-                Ok(g)
+                let ([_, in_delta], pair) = self.across(a, h, &from, &edge, jacobian)?;
+                walk.extend(pair);
+                Ok(in_delta)
             };
             let (g_lo, g_hi) = (slope(a_lo)?, slope(a_hi)?);
             if !(g_lo < 0.0 && g_hi > 0.0) {
@@ -1537,27 +1551,23 @@ impl Contact<'_> {
 
 /// The error where the walk in δ̄ of a hold at `held` finds no state past
 /// `lo` (its step `step`): going down at an approach, the branch's least
-/// approach; going up, what stopped it.
-fn walk_end(held: HeldAt, step: f64, lo: &SharpState, e: Error) -> Error {
-    match held {
-                            // the walk's end going down: the branch turns
-                            // back in δ̄
-                            HeldAt::Delta(d) if step < 0.0 && !crate::newton::stop_requested() => {
-                                Error::NoState(format!(
-                                    "no state at delta = {}: the branch through the pull-off ends near delta = {}, its least approach (the sharp edge finds no state past it)",
-                                    crate::error::short(d),
-                                    crate::error::short(lo.delta_bar)
-                                ))
-                            }
-                            HeldAt::Delta(d) if !crate::newton::stop_requested() => {
-                                Error::NoState(format!(
-                                    "no state at delta = {}: the sharp edge's walk up in delta from the pull-off found none past delta = {} ({e})",
-                                    crate::error::short(d),
-                                    crate::error::short(lo.delta_bar)
-                                ))
-                            }
-                            _ => e,
-                        }
+/// approach; going up, what stopped it; at a force, or where a stop was
+/// asked for, `e` itself.
+fn walk_end(held: InDelta, step: f64, lo: &SharpState, e: Error) -> Error {
+    let (InDelta::Delta(d), false) = (held, crate::newton::stop_requested()) else {
+        return e;
+    };
+    let (d, at) = (crate::error::short(d), crate::error::short(lo.delta_bar));
+    Error::NoState(if step < 0.0 {
+        // the walk's end going down: the branch turns back in δ̄
+        format!(
+            "no state at delta = {d}: the branch through the pull-off ends near delta = {at}, its least approach (the sharp edge finds no state past it)"
+        )
+    } else {
+        format!(
+            "no state at delta = {d}: the sharp edge's walk up in delta from the pull-off found none past delta = {at} ({e})"
+        )
+    })
 }
 
 impl Contact<'_> {

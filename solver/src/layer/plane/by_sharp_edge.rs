@@ -139,9 +139,9 @@ pub(crate) fn at_size(layers: &Layers, rho: f64, a_bar: f64) -> Result<PlaneStat
 /// least approach on the branch, by the sharp edge's [`RUNGS`]
 /// (`sharp::held_ladder`, the walk in ā and the root of dδ̄/dā);
 /// the bounds as at an approach, the force's with |dF̄/dā| times ā's
-/// bound added (the force moves with where the least is found: at ρ = 1,
-/// h/L = 1 ā is 1.5e-6 from the axisymmetric one's, F̄ 1.1e-6); an error
-/// as [`pull_off`]'s.
+/// bound added (the force moves with where the least is found; against
+/// the axisymmetric layer at ρ = 1, docs/thickness.md's table held by
+/// this module's test); an error as [`pull_off`]'s.
 pub(crate) fn pull_off_displacement(layers: &Layers, rho: f64) -> Result<PlaneState> {
     let rungs = checked_rungs(layers, rho)?;
     let states = held_ladder(layers, rho, &rungs, HeldAt::LeastApproach, progress())?;
@@ -585,10 +585,15 @@ mod tests {
     /// the bounds it states of the axisymmetric layer's state of that size,
     /// with its slopes along the branch of the same signs; and the pull-off
     /// under displacement control within its bounds of the axisymmetric
-    /// one's.
+    /// one's. docs/thickness.md's two tables of these are its rows, at
+    /// their printed precision.
     #[test]
     fn at_rho_1_a_state_at_a_size_and_the_least_approach_are_the_axisymmetric_layer_s() {
         use crate::control::Hold;
+        // docs/thickness.md's two tables: h/L, ā, F̄, b̄ and δ̄ apart, the
+        // slopes and the reference's; h/L, F̄, ā and δ̄ apart, dF̄/dā and
+        // the reference's
+        let (mut sizes, mut least_rows): (Vec<Vec<f64>>, Vec<Vec<f64>>) = (Vec::new(), Vec::new());
         for thin in [0.3, 1.0] {
             let layers = Layers::equal(thin, 0.5).unwrap();
             let pull = layers.pull_off(crate::layer::Route::Griffith).unwrap();
@@ -630,6 +635,8 @@ mod tests {
                     reference.delta_slope
                 );
                 assert!(p.warnings.is_empty(), "{:?}", p.warnings);
+                let (rf, rd) = (reference.force_slope, reference.delta_slope);
+                sizes.push(vec![thin, a, force, b, delta, df, dd, rf, rd]);
             }
             let p = pull_off_displacement(&layers, 1.0).unwrap();
             let reference = &pull.displacement;
@@ -653,6 +660,39 @@ mod tests {
             assert!(force <= p.force_error, "h/L {thin}: {force:.1e}");
             assert!(a <= p.size_error, "h/L {thin}: {a:.1e}");
             assert!(delta <= p.delta_error, "h/L {thin}: {delta:.1e}");
+            least_rows.push(vec![thin, force, a, delta, df, reference.force_slope]);
+        }
+        let docs = include_str!("../../../../docs/thickness.md");
+        for (header, rows) in [
+            ("| h/L | ā | F̄ apart (rel.) | b̄ apart (rel.) |", &sizes),
+            (
+                "| h/L | F̄ apart (rel.) | ā apart (rel.) | δ̄ apart |",
+                &least_rows,
+            ),
+        ] {
+            let printed: Vec<Vec<String>> = docs
+                .lines()
+                .skip_while(|l| !l.starts_with(header))
+                .skip(2)
+                .take_while(|l| l.starts_with('|'))
+                .map(|l| {
+                    l.split(['|', ','])
+                        .map(str::trim)
+                        .filter(|c| !c.is_empty())
+                        .map(String::from)
+                        .collect()
+                })
+                .collect();
+            assert_eq!(printed.len(), rows.len(), "{header}");
+            for (row, cells) in rows.iter().zip(&printed) {
+                assert_eq!(row.len(), cells.len(), "{header}: {cells:?}");
+                for (value, cell) in row.iter().zip(cells) {
+                    assert!(
+                        crate::layer::as_printed(*value, cell),
+                        "{header}: {value:.3e} printed {cell} ({cells:?})"
+                    );
+                }
+            }
         }
     }
 

@@ -12,14 +12,19 @@
 //! the pull-off under displacement control by the sharp edge alone.
 //!
 //! Owns: [`PlaneState`], [`PlaneRung`], [`Held`], [`Method`], [`state`],
-//! [`pull_off`], [`pull_off_displacement`], [`curve`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
-//! [`beyond_reach`]. May use: its own `by_grid` and `by_sharp_edge`, and
+//! [`pull_off`], [`WORST_FORCE_ERROR`], [`PULL_OFF_REACH`],
+//! [`beyond_reach`]; it passes on `by_sharp_edge`'s `pull_off_displacement`
+//! and `curve`. May use: its own `by_grid` and `by_sharp_edge`, and
 //! through them `layer` (the pair, `grid`, `sharp`), `control` (the hold),
 //! `error`, `progress` (the rung a spinner shows), `newton` (the stop
 //! request).
 
 pub(crate) mod by_grid;
 pub(crate) mod by_sharp_edge;
+
+// the sharp edge's alone (the grid locates no pull-off under displacement
+// control and holds no size)
+pub(crate) use by_sharp_edge::{curve, pull_off_displacement};
 
 use crate::control::Hold;
 use crate::error::{short, Result};
@@ -237,27 +242,6 @@ pub(crate) fn pull_off(layers: &Layers, rho: f64) -> Result<PlaneState> {
         "by the grid solver: the sharp edge, which answers where it resolves the contact, has no answer here ({sharp})"
     ));
     Ok(grid)
-}
-
-/// The pull-off under displacement control of `layers` at `rho` ∈ (0, 1]:
-/// the least approach on the branch, the sharp edge's (its error where it
-/// has none; the grid locates no such pull-off).
-pub(crate) fn pull_off_displacement(layers: &Layers, rho: f64) -> Result<PlaneState> {
-    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-    by_sharp_edge::pull_off_displacement(layers, rho)
-}
-
-/// The states of `layers` at `rho` ∈ (0, 1) of each of `sizes` (from the
-/// largest down), handed to `each` as they are found: the sharp edge's
-/// (its error where it has none).
-pub(crate) fn curve(
-    layers: &Layers,
-    rho: f64,
-    sizes: &[f64],
-    each: &mut dyn FnMut(PlaneState) -> Result<()>,
-) -> Result<()> {
-    crate::error::check_range("rho", rho, rho > 0.0 && rho <= 1.0, "(0, 1]")?;
-    by_sharp_edge::curve(layers, rho, sizes, each)
 }
 
 /// The state of `layers` at `rho` ∈ (0, 1] held at `hold` (`None`: the
