@@ -1281,7 +1281,10 @@ impl Contact<'_> {
                 (at, towards * 0.02 * wide)
             }
         };
-        // on past the hold (at once where the state is at it)
+        // on past the hold (at once where the state is at it); where Newton's
+        // method has halved the step below a millionth of the first, the
+        // walk is creeping up to the branch's end in δ̄ (a fold), and stops
+        let least_step = 1e-6 * step.abs();
         let mut hi = None;
         for _ in 0..60 {
             if held.off(&lo) == 0.0 {
@@ -1300,7 +1303,11 @@ impl Contact<'_> {
                 let edge = based(&lo, jacobian)?;
                 match contact.edge_at(lo.delta_bar + step, &edge, jacobian) {
                     Ok(st) => break st,
-                    Err(_) if tries < 6 && !crate::newton::stop_requested() => {
+                    Err(_)
+                        if tries < 6
+                            && step.abs() > least_step
+                            && !crate::newton::stop_requested() =>
+                    {
                         tries += 1;
                         step *= 0.5;
                         *jacobian = None;

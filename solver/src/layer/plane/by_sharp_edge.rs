@@ -580,6 +580,20 @@ mod tests {
         }
     }
 
+    /// Below the branch's least approach there is no state, and the error
+    /// says where the branch ends: at ρ = 0.8, h/L = 1 the walk down in δ̄
+    /// creeps up to the fold (each step from a rebased edge converging a
+    /// little nearer) unless it stops where its step has shrunk a
+    /// millionth; it then ran out of its 60 steps instead (about 10 s).
+    #[test]
+    fn below_the_least_approach_the_error_says_where_the_branch_ends() {
+        let layers = Layers::equal(1.0, 0.5).unwrap();
+        match at_approach(&layers, 0.8, -3.0) {
+            Err(Error::NoState(why)) => assert!(why.contains("its least approach"), "{why}"),
+            other => panic!("{other:?}"),
+        }
+    }
+
     /// At ρ = 1 a state at a size (above the pull-off's, between the two
     /// pull-offs' and below the displacement-controlled one's) lies within
     /// the bounds it states of the axisymmetric layer's state of that size,
