@@ -561,6 +561,9 @@ def test_the_layer_takes_its_coatings_and_answers_every_verb():
     # under displacement control the pull-off is the smaller contact
     least = thinjkr.pull_off(1.0, model="layer", thinness=1.0, control="displacement")
     assert least.a_bar < thick.a_bar and least.delta_bar < thick.delta_bar
+    # each neutral under its own control, as the command line says
+    assert (thick.stability_load, thick.stability_displacement) == ("neutral", "stable")
+    assert (least.stability_load, least.stability_displacement) == ("unstable", "neutral")
     # the curve passes both pull-offs, and a state at one of its sizes is
     # the curve's
     c = thinjkr.curve(1.0, model="layer", thinness=1.0, points=20)
@@ -580,8 +583,12 @@ def test_the_layer_takes_its_coatings_and_answers_every_verb():
 def test_the_layer_in_the_plane_answers_a_size_with_its_slopes():
     # rho = 0.8, h/L = 1 (5 s): between the two pull-offs' sizes (1.0648 and
     # 0.2591), so unstable under load control and stable under displacement
-    s = thinjkr.solve(0.8, a=1.0, model="layer", thinness=1.0).to_dict()
+    st = thinjkr.solve(0.8, a=1.0, model="layer", thinness=1.0)
+    s = st.to_dict()
     assert (s["held"], s["method"]) == ("size", "sharp_edge")
     assert s["a_bar"] == pytest.approx(1.0, rel=1e-12)
     force_slope, delta_slope = s["slopes"]
     assert force_slope < 0.0 < delta_slope
+    # the verdicts the command line prints, in the repr's second line
+    assert (s["stability_load"], s["stability_displacement"]) == ("unstable", "stable")
+    assert "stability_load='unstable', stability_displacement='stable'" in repr(st).splitlines()[1]

@@ -75,6 +75,12 @@ def _state_from(d: Dict[str, Any], model: Optional[str] = None) -> State:
     if isinstance(d.get("contour"), dict):
         x, y = _call(_thinjkr.exact_contour, _json.dumps(d["contour"]), 256)
         fields["x"], fields["y"] = _np.asarray(x), _np.asarray(y)
+    # the layer's states: their verdict on the branch under each control,
+    # the words the command line prints (None where it judges none)
+    verdicts = fields.pop("verdicts", None)
+    if isinstance(verdicts, dict):
+        for control in ("load", "displacement"):
+            fields[f"stability_{control}"] = verdicts.get(control)
     stab = fields.pop("stability", None)
     if isinstance(stab, dict) and "displacement" in stab and "load" in stab:
         if isinstance(stab["displacement"], list):  # an exact state: unstable modes

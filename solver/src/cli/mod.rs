@@ -357,26 +357,14 @@ fn stability(st: &State) -> String {
 /// coatings and its stability under each control (from the slopes along
 /// its branch), then what its coatings are.
 fn show_layer(label: &str, st: &crate::layer::LayerState) -> crate::Result<()> {
-    // a pull-off is neutral under its control: its slope is zero to the
-    // solution's round-off (1e-9 of the scale ā/F̄ or ā/δ̄ at h/L = 0.01)
-    let stable = |slope: f64, of: f64| {
-        if slope.abs() <= 1e-7 * of.abs().max(1.0) / st.a_bar {
-            "neutral (a pull-off)"
-        } else if slope > 0.0 {
-            "stable"
-        } else {
-            "unstable"
-        }
-    };
     outln!(
-        "{label}: model layer, a = {}, delta = {}, force = {} [h/L = {}, nu = {}; load control: {}, displacement control: {}]",
+        "{label}: model layer, a = {}, delta = {}, force = {} [h/L = {}, nu = {}; {}]",
         output::num(st.a_bar),
         output::num(st.delta_bar),
         output::num(st.force_bar),
         crate::error::short(st.coatings[0].thinness),
         crate::error::short(st.coatings[0].nu),
-        stable(st.force_slope, st.force_bar),
-        stable(st.delta_slope, st.delta_bar)
+        st.verdicts.words()
     );
     outln!("  {}", st.coatings_are);
     Ok(())
@@ -454,7 +442,7 @@ fn show_layer_plane(label: &str, st: &crate::layer::PlaneState) -> crate::Result
         output::num(st.delta_bar),
         crate::error::short(st.coatings[0].thinness),
         crate::error::short(st.coatings[0].nu),
-        plane_held_words(st)
+        st.verdicts.words()
     );
     outln!("  {}", st.trust_words());
     for w in &st.warnings {
@@ -495,27 +483,6 @@ fn show_layer_plane(label: &str, st: &crate::layer::PlaneState) -> crate::Result
         }
     }
     Ok(())
-}
-
-/// What a state of the layer in the plane is held at and its stability
-/// on the branch, in words.
-fn plane_held_words(st: &crate::layer::PlaneState) -> String {
-    use crate::layer::Held;
-    let stable = |slope: f64| if slope > 0.0 { "stable" } else { "unstable" };
-    match (st.held, st.slopes) {
-        (Held::PullOff, _) => "load control: neutral (a pull-off)".into(),
-        (Held::DisplacementPullOff, _) => {
-            "load control: unstable, displacement control: neutral (a pull-off)".into()
-        }
-        (Held::Delta, _) => "on the branch stable under displacement control".into(),
-        (Held::Force, _) => "on the branch stable under load control".into(),
-        (Held::Size, Some([force, delta])) => format!(
-            "load control: {}, displacement control: {}",
-            stable(force),
-            stable(delta)
-        ),
-        (Held::Size, None) => "at a held size".into(),
-    }
 }
 
 /// A slender state in a line: its centre's half-width instead of a size

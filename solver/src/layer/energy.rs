@@ -75,5 +75,9 @@ pub(crate) fn by_energy(layers: &Layers, a_bar: f64) -> Result<LayerState> {
         tail: s.tail(),
         coatings: layers.coatings(),
         coatings_are: super::COATINGS_ARE,
+        verdicts: super::Verdicts {
+            load: None,
+            displacement: None,
+        },
     })
 }

@@ -35,7 +35,7 @@
 //! whole, not linearised: the layer to third order in h/L at ρ = 1 and
 //! 0.8.
 //!
-//! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`], `Controlled`. May use:
+//! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`], [`Verdicts`], `Controlled`. May use:
 //! `control` (what a state is held at), `error`, `quadrature` (Gauss–Legendre), `generated` (the layer's kernel), `model` (Brent's minimum),
 //! `exact` (the exact solution of (2), in `thin`).
 
@@ -141,6 +141,78 @@ pub struct LayerState {
     /// What the coatings are, in words every output of the layer gives:
     /// isotropic, the paper's out-of-plane G′ read as their shear modulus.
     pub coatings_are: &'static str,
+    /// Its stability on the branch under each control, from the slopes.
+    pub verdicts: Verdicts,
+}
+
+/// A state's stability on its branch under one control: from the sign of
+/// its slope along the branch (dF̄/dā under load control, dδ̄/dā under
+/// displacement control); neutral where that slope is zero, at the
+/// pull-off under that control.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// The slope is positive.
+    Stable,
+    /// The slope is zero: a pull-off under this control.
+    Neutral,
+    /// The slope is negative.
+    Unstable,
+}
+
+impl Verdict {
+    /// The verdict of a slope along the branch, neutral within `zero` of
+    /// 0; none where the slope is not known (NaN).
+    pub(crate) fn of_slope(slope: f64, zero: f64) -> Option<Verdict> {
+        if slope.is_nan() {
+            None
+        } else if slope.abs() <= zero {
+            Some(Verdict::Neutral)
+        } else if slope > 0.0 {
+            Some(Verdict::Stable)
+        } else {
+            Some(Verdict::Unstable)
+        }
+    }
+
+    /// In the words every front end shows.
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))]
+    pub(crate) fn words(self) -> &'static str {
+        match self {
+            Verdict::Stable => "stable",
+            Verdict::Neutral => "neutral (a pull-off)",
+            Verdict::Unstable => "unstable",
+        }
+    }
+}
+
+/// A state's stability on its branch under each control (`None` where it
+/// is not judged).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Verdicts {
+    /// Under load control.
+    pub load: Option<Verdict>,
+    /// Under displacement control.
+    pub displacement: Option<Verdict>,
+}
+
+impl Verdicts {
+    /// In words, the controls judged only: "load control: stable,
+    /// displacement control: neutral (a pull-off)".
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))]
+    pub(crate) fn words(&self) -> String {
+        let judged: Vec<String> = [("load", self.load), ("displacement", self.displacement)]
+            .into_iter()
+            .filter_map(|(control, v)| v.map(|v| format!("{control} control: {}", v.words())))
+            .collect();
+        if judged.is_empty() {
+            "stability not judged".into()
+        } else {
+            judged.join(", ")
+        }
+    }
 }
 
 /// [`LayerState::coatings_are`].
@@ -321,16 +393,24 @@ impl Layers {
             }
             None => (f64::NAN, f64::NAN),
         };
+        let force_bar = 4.0 * (delta_bar * i1 - i2);
+        // a pull-off is neutral under its control: its slope is zero to the
+        // solution's round-off (1e-9 of the scale ā/F̄ or ā/δ̄ at h/L = 0.01)
+        let zero = |of: f64| 1e-7 * of.abs().max(1.0) / a;
         LayerState {
             a_bar: a,
             delta_bar,
-            force_bar: 4.0 * (delta_bar * i1 - i2),
+            force_bar,
             force_slope,
             delta_slope,
             modes: s.g1.len(),
             tail: s.tail(),
             coatings: self.coatings,
             coatings_are: COATINGS_ARE,
+            verdicts: Verdicts {
+                load: Verdict::of_slope(force_slope, zero(force_bar)),
+                displacement: Verdict::of_slope(delta_slope, zero(delta_bar)),
+            },
         }
     }
 
@@ -583,6 +663,37 @@ pub(crate) fn as_printed(value: f64, printed: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The verdicts every front end shows (issue 71): each pull-off is
+    /// neutral under its own control and the other control's verdict is
+    /// its slope's sign; a state between the two pull-offs is unstable
+    /// under load control and stable under displacement control, one
+    /// above both stable under both, one below the least approach
+    /// unstable under both: the signs of its slopes.
+    #[test]
+    fn pull_offs_are_neutral_under_their_control_and_states_take_their_slopes_signs() {
+        use Verdict::{Neutral, Stable, Unstable};
+        let layers = Layers::equal(1.0, 0.5).unwrap();
+        let po = layers.pull_off(Route::Griffith).unwrap();
+        let judged = |v: Verdicts| (v.load.unwrap(), v.displacement.unwrap());
+        assert_eq!(judged(po.load.verdicts), (Neutral, Stable));
+        assert_eq!(judged(po.displacement.verdicts), (Unstable, Neutral));
+        let (least, most) = (po.displacement.a_bar, po.load.a_bar);
+        for (a, expected) in [
+            (1.5 * most, (Stable, Stable)),
+            (0.5 * (least + most), (Unstable, Stable)),
+            (0.7 * least, (Unstable, Unstable)),
+        ] {
+            let st = layers.at_radius(a, Route::Griffith).unwrap();
+            assert_eq!(judged(st.verdicts), expected, "at a = {a}: {st:?}");
+            assert_eq!(st.force_slope > 0.0, expected.0 == Stable);
+            assert_eq!(st.delta_slope > 0.0, expected.1 == Stable);
+        }
+        // the energy route gives no slopes, and judges nothing
+        let st = layers.at_radius(most, Route::Energy).unwrap();
+        assert_eq!((st.verdicts.load, st.verdicts.displacement), (None, None));
+        assert_eq!(st.verdicts.words(), "stability not judged");
+    }
 
     /// The state at a contact radius moves by less than 1e-10 (relative)
     /// when the quadrature's panels are halved and the modes raised by half,

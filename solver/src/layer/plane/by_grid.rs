@@ -208,6 +208,7 @@ fn state_of(layers: &Layers, rho: f64, target: Target) -> Result<PlaneState> {
         },
         griffith_error: None,
         slopes: None,
+        verdicts: held.verdicts(None),
         coatings: layers.coatings(),
         coatings_are: super::ON_THE_GRID,
         warnings,

@@ -320,6 +320,7 @@ fn answer(
             .collect(),
         griffith_error: Some(fine.griffith_error),
         slopes,
+        verdicts: held.verdicts(slopes),
         coatings: layers.coatings(),
         coatings_are: super::WITH_A_SHARP_EDGE,
         warnings,
@@ -649,6 +650,8 @@ mod tests {
                     reference.delta_slope
                 );
                 assert!(p.warnings.is_empty(), "{:?}", p.warnings);
+                // the verdicts every front end shows are the reference's
+                assert_eq!(p.verdicts, reference.verdicts, "h/L {thin}, a {a}");
                 let (rf, rd) = (reference.force_slope, reference.delta_slope);
                 sizes.push(vec![thin, a, force, b, delta, df, dd, rf, rd]);
             }
@@ -671,6 +674,7 @@ mod tests {
             let [df, dd] = p.slopes.unwrap();
             println!("  slopes there {df:.4} {dd:.1e}");
             assert!(df < 0.0 && dd.abs() < 1e-3 * df.abs(), "{df} {dd}");
+            assert_eq!(p.verdicts, reference.verdicts, "h/L {thin}");
             assert!(force <= p.force_error, "h/L {thin}: {force:.1e}");
             assert!(a <= p.size_error, "h/L {thin}: {a:.1e}");
             assert!(delta <= p.delta_error, "h/L {thin}: {delta:.1e}");

@@ -28,7 +28,7 @@ pub(crate) use by_sharp_edge::{curve, pull_off_displacement};
 
 use crate::control::Hold;
 use crate::error::{short, Result};
-use crate::layer::{Coating, Layers};
+use crate::layer::{Coating, Layers, Verdict, Verdicts};
 use serde::Serialize;
 
 /// The largest bound on the force's relative error an answer may have.
@@ -88,6 +88,28 @@ pub enum Held {
     /// The pull-off under displacement control: the least approach on
     /// the branch.
     DisplacementPullOff,
+}
+
+impl Held {
+    /// The stability on its branch of a state so held: a pull-off is
+    /// neutral under its own control (and the one under displacement
+    /// control unstable under load control), a state at an approach or a
+    /// force lies on the branch stable under that control, and a state at a
+    /// size is judged by its slopes dF̄/dā and dδ̄/dā, where it has them.
+    pub(crate) fn verdicts(self, slopes: Option<[f64; 2]>) -> Verdicts {
+        use Verdict::{Neutral, Stable, Unstable};
+        let (load, displacement) = match (self, slopes) {
+            (Held::PullOff, _) => (Some(Neutral), None),
+            (Held::DisplacementPullOff, _) => (Some(Unstable), Some(Neutral)),
+            (Held::Delta, _) => (None, Some(Stable)),
+            (Held::Force, _) => (Some(Stable), None),
+            (Held::Size, Some([force, delta])) => {
+                (Verdict::of_slope(force, 0.0), Verdict::of_slope(delta, 0.0))
+            }
+            (Held::Size, None) => (None, None),
+        };
+        Verdicts { load, displacement }
+    }
 }
 
 /// How a state in the plane is found.
@@ -155,6 +177,9 @@ pub struct PlaneState {
     /// where the second is (near zero at that pull-off).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub slopes: Option<[f64; 2]>,
+    /// Its stability on the branch under each control: what it is held at
+    /// says it, or at a size its slopes do (`Held::verdicts`).
+    pub verdicts: Verdicts,
     /// The two coatings.
     pub coatings: [Coating; 2],
     /// What the coatings are and how the answer is found, in words every
