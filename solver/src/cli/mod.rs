@@ -1455,6 +1455,15 @@ fn curve_command(model: ModelChoice, rho: f64, points: usize, format: Format) ->
 /// How a curve's JSON opens: its states first ([`Document::Curve`]).
 const CURVE_JSON_HEAD: &str = "{\"states\":[";
 
+/// A layer state's verdicts as the curve's stable flags under
+/// displacement and load control: no unstable direction (stable, or
+/// neutral at a pull-off), as the other models' flags say.
+fn settled(v: crate::layer::Verdicts) -> (Option<bool>, Option<bool>) {
+    let no_unstable =
+        |v: Option<crate::layer::Verdict>| v.map(|v| v != crate::layer::Verdict::Unstable);
+    (no_unstable(v.displacement), no_unstable(v.load))
+}
+
 /// One line of `thinjkr curve`'s CSV: the numbers as a batch row has them
 /// (bc_error: (14) for the ellipse, max |dp/dnu - 1| on the contour
 /// otherwise), the state's stability and its warning.
@@ -1479,18 +1488,8 @@ fn curve_row(p: &crate::registry::CurvePoint) -> String {
             sl.model.to_string(),
             (Some(sl.stable_displacement), Some(sl.stable_load)),
         ),
-        AnyState::Layer(l) => (
-            "layer".into(),
-            (Some(l.delta_slope > 0.0), Some(l.force_slope > 0.0)),
-        ),
-        // (on a curve its slopes along the branch judge it)
-        AnyState::LayerPlane(l) => (
-            "layer".into(),
-            match l.slopes {
-                Some([force, delta]) => (Some(delta > 0.0), Some(force > 0.0)),
-                None => (None, None),
-            },
-        ),
+        AnyState::Layer(l) => ("layer".into(), settled(l.verdicts)),
+        AnyState::LayerPlane(l) => ("layer".into(), settled(l.verdicts)),
     };
     format!(
         "{name},{},{},{},{},{},{},{},{},{}",
