@@ -541,6 +541,46 @@ fn judged_by_first_order(
     true
 }
 
+/// Whether the line tension kept whole judges (2)'s pull-off `thin` for
+/// `layers` thinner than the layer in the plane reaches, from
+/// `line_tension::ESTIMATE_FROM_RHO` up: (2)'s answer stands, with a
+/// warning and the layer's estimated pull-off
+/// (`line_tension::pull_off_estimate`) where (2) is more than
+/// [`THIN_LAYER_TOLERANCE`] off it. False below that ρ, for compressible
+/// coatings (no edge's shift) and where the line tension has no pull-off,
+/// where the first order in h/L judges.
+fn judged_by_line_tension(
+    layers: &crate::layer::Layers,
+    sc: &crate::units::Scales,
+    thin: &mut PhysicalAnswer,
+) -> bool {
+    use crate::layer::line_tension::{estimated_at, pull_off_estimate};
+    if !estimated_at(sc.rho) {
+        return false;
+    }
+    let Ok((exact, _)) = crate::exact::pull_off_resolved(sc.rho) else {
+        return false;
+    };
+    let Ok(estimate) = pull_off_estimate(layers, &exact) else {
+        return false;
+    };
+    let error = (exact.force_bar / estimate.force_bar - 1.0).abs();
+    if error > THIN_LAYER_TOLERANCE {
+        // first: it is about the answer's force itself
+        thin.warnings.insert(0, format!(
+            "(2) is {} % off the layer of finite thickness at rho = {} for these coatings (h/L = {}, thinner than the layer in the plane reaches); best estimate of the pull-off force: {} N, within {} %: (2) with the coatings' edge as a line tension kept whole, {} N, plus the layer's departure from that on the circle, {} N (of third order in h/L), which at rho = 0.8 the layer in the plane met within 4.3 % of it for h/L = 0.07 to 0.3 (docs/thickness.md, \"The approach to (2) at rho < 1\")",
+            crate::error::short(100.0 * error),
+            crate::error::rounded(sc.rho),
+            crate::error::short(layers.thinnest()),
+            crate::error::short(estimate.force_bar * sc.force),
+            crate::error::short(100.0 * estimate.bound / estimate.force_bar.abs()),
+            crate::error::short(estimate.tension * sc.force),
+            crate::error::short(estimate.circle_difference * sc.force),
+        ));
+    }
+    true
+}
+
 /// The pull-off of the contact `cyl` at ρ < 1 by the layer in the plane
 /// when no model is named, where (2)'s answer `thin` (by the table's
 /// `row`) is more than [`THIN_LAYER_TOLERANCE`] off it: the layer's answer
@@ -568,7 +608,7 @@ fn in_the_plane(
     // coatings thinner than the grid reaches, where the first order in h/L
     // holds at this ρ: it judges (2)
     if layers.thinnest() < crate::layer::plane::PULL_OFF_REACH.0
-        && judged_by_first_order(&layers, &sc, thin)
+        && (judged_by_line_tension(&layers, &sc, thin) || judged_by_first_order(&layers, &sc, thin))
     {
         return Ok(None);
     }

@@ -604,6 +604,84 @@ fn physical_judges_thin_coatings_by_the_first_order_in_h_over_l() {
     );
 }
 
+/// Coatings thinner than the layer in the plane reaches, from ρ = 0.8 up
+/// (θ from 83.6°): the line tension kept whole plus the circle's
+/// difference from the layer judges (2), and its estimate is within the
+/// bound it states of the sharp edge's pull-off at ρ = 0.8, h/L = 0.2
+/// (−3.67331472 on the rungs 32 × 6 and finer, docs/thickness.md, "The
+/// approach to (2) at ρ < 1": another route, held there to the line
+/// tension by a lib test); below ρ = 0.8 the ratio of ρ = 1 estimates as
+/// before.
+#[test]
+fn physical_estimates_thin_coatings_near_ninety_degrees_by_the_line_tension() {
+    use thinjkr::units::Cylinders;
+    let theta_deg = 2.0 * 0.8f64.sqrt().atan().to_degrees();
+    let at = |theta_deg: f64, h: f64| Cylinders {
+        r1: 0.01,
+        r2: 0.01,
+        theta_deg,
+        h1: h,
+        h2: h,
+        g1: 1e6,
+        g2: 1e6,
+        work_of_adhesion: 0.05,
+        nu1: 0.5,
+        nu2: 0.5,
+    };
+    // h/L grows as √h (L as √h, m as 1/h³): the h of h/L = 0.2
+    let h0 = 1e-5;
+    let sc0 = at(theta_deg, h0).scales().unwrap();
+    let h = h0 * (0.2 / (h0 / sc0.length)).powi(2);
+    let cyl = at(theta_deg, h);
+    let sc = cyl.scales().unwrap();
+    assert!(
+        (h / sc.length / 0.2 - 1.0).abs() < 1e-9 && (sc.rho / 0.8 - 1.0).abs() < 1e-12,
+        "h/L {}, rho {}",
+        h / sc.length,
+        sc.rho
+    );
+    let answer = thinjkr::registry::physical(None, &cyl, None, None).unwrap();
+    let warning = answer
+        .warnings
+        .first()
+        .filter(|w| w.starts_with("(2) is "))
+        .unwrap_or_else(|| panic!("{:?}", answer.warnings));
+    assert!(warning.contains("a line tension kept whole"), "{warning}");
+    let number = |after: &str| -> f64 {
+        warning
+            .split(after)
+            .nth(1)
+            .and_then(|r| r.split([' ', ',']).next())
+            .unwrap_or_else(|| panic!("{after} in {warning}"))
+            .parse()
+            .unwrap()
+    };
+    let estimate = number("best estimate of the pull-off force: ") / sc.force;
+    let within = number("N, within ") / 100.0;
+    let sharp_edge = -3.67331472;
+    assert!(
+        (estimate / sharp_edge - 1.0).abs() <= within,
+        "{estimate} against {sharp_edge}, within {within}: {warning}"
+    );
+    // and (2)'s error beside it is the one against that estimate
+    let (.., force_bar) = answer.state.size_and_load();
+    let off = number("(2) is ") / 100.0;
+    assert!(
+        (off / (force_bar / estimate - 1.0).abs() - 1.0).abs() < 1e-4,
+        "{off} {force_bar} {estimate}"
+    );
+    // just below ρ = 0.8 the ratio of ρ = 1, as before
+    let below = thinjkr::registry::physical(None, &at(theta_deg - 0.1, h), None, None).unwrap();
+    assert!(
+        below
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("(2) is ") && w.contains("the layer's ratio to it at rho = 1")),
+        "{:?}",
+        below.warnings
+    );
+}
+
 /// The layer's curve at ρ = 1: the axisymmetric layer's states at sizes
 /// evenly spaced from its state at δ̄ = 20 down to 3 % of that size, with
 /// both pull-offs as its folds; along it the force falls to the
