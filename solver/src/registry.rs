@@ -568,10 +568,10 @@ fn judged_by_line_tension(
     if error > THIN_LAYER_TOLERANCE {
         // first: it is about the answer's force itself
         thin.warnings.insert(0, format!(
-            "(2) is {} % off the layer of finite thickness at rho = {} for these coatings (h/L = {}, thinner than the layer in the plane reaches); best estimate of the pull-off force: {} N, within {} %: (2) with the coatings' edge as a line tension kept whole, {} N, plus the layer's departure from that on the circle, {} N (of third order in h/L), which the layer in the plane met within 4.3 % of it from rho = 0.65 to 0.9 where both answer, for h/L = 0.07 to 0.3 (docs/thickness.md, \"The approach to (2) at rho < 1\")",
+            "(2) is {} % off the layer of finite thickness at rho = {} for these coatings (h/L = {}, thinner than the layer in the plane reaches); best estimate of the pull-off force: {} N, within {} %: (2) with the coatings' edge as a line tension kept whole, {} N, plus the layer's departure from that on the circle, {} N (of third order in h/L), which the layer in the plane met within 4.3 % of it from rho = 0.65 to 0.9 where both answer, for equal coatings with h/L = 0.07 to 0.3 (docs/thickness.md, \"The approach to (2) at rho < 1\")",
             crate::error::short(100.0 * error),
             crate::error::rounded(sc.rho),
-            crate::error::short(layers.thinnest()),
+            thinnesses(layers),
             crate::error::short(estimate.force_bar * sc.force),
             crate::error::short(100.0 * estimate.bound / estimate.force_bar.abs()),
             crate::error::short(estimate.tension * sc.force),
@@ -579,6 +579,17 @@ fn judged_by_line_tension(
         ));
     }
     true
+}
+
+/// Each coating's thinness h/L, once where they are equal: "0.2", or
+/// "0.06 and 0.19".
+fn thinnesses(layers: &crate::layer::Layers) -> String {
+    let [first, second] = layers.coatings().map(|c| crate::error::short(c.thinness));
+    if first == second {
+        first
+    } else {
+        format!("{first} and {second}")
+    }
 }
 
 /// The pull-off of the contact `cyl` at ρ < 1 by the layer in the plane
