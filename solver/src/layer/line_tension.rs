@@ -655,7 +655,7 @@ mod tests {
     /// sharp edge within `pull_off_estimate`'s bound, which `physical`
     /// uses from ρ = 0.65 up.
     #[test]
-    #[ignore = "slow tier (.ci/slow): the sharp edge at rho = 0.9, 0.7 and 0.65, about 3 minutes"]
+    #[ignore = "slow tier (.ci/slow): the sharp edge at rho = 0.9, 0.7 and 0.65, about 5 minutes"]
     fn from_rho_0_65_the_layer_is_the_line_tension_with_the_circle_s_third_order() {
         for (rho, h) in [
             (0.9, 0.1),
