@@ -16,6 +16,24 @@ fn json<T: serde::Serialize>(v: &T) -> String {
     serde_json::to_string(v).unwrap()
 }
 
+/// The examples' cylinders (r₁ = r₂ = 10 mm, crossed at `theta_deg`)
+/// with equal incompressible coatings `h` thick (G′ = 1 MPa, Δγ = 0.05
+/// J/m²).
+fn coated(theta_deg: f64, h: f64) -> thinjkr::units::Cylinders {
+    thinjkr::units::Cylinders {
+        r1: 0.01,
+        r2: 0.01,
+        theta_deg,
+        h1: h,
+        h2: h,
+        g1: 1e6,
+        g2: 1e6,
+        work_of_adhesion: 0.05,
+        nu1: 0.5,
+        nu2: 0.5,
+    }
+}
+
 #[test]
 fn each_kind_answers_through_the_layer_as_through_its_own_api() {
     let rho = 0.8;
@@ -274,19 +292,7 @@ fn physical_without_a_model_answers_from_the_table_of_defaults_at_three_angles()
 /// [`TEN_ANGLES`]) against docs/exact-record.md's ten-angle table, then a state at
 /// a force and a named model.
 fn defaults_at(angles: &[f64]) {
-    use thinjkr::units::Cylinders;
-    let at = |theta_deg: f64| Cylinders {
-        r1: 0.01,
-        r2: 0.01,
-        theta_deg,
-        h1: 1e-4,
-        h2: 1e-4,
-        g1: 1e6,
-        g2: 1e6,
-        work_of_adhesion: 0.05,
-        nu1: 0.5,
-        nu2: 0.5,
-    };
+    let at = |theta_deg: f64| coated(theta_deg, 1e-4);
     // docs/exact-record.md's table of these angles: h/L and the answer's critical
     // thinness under load ("stable" where a conformal:8 state is)
     let (thinness, critical, unresolved, coatings) = (
@@ -537,19 +543,7 @@ fn defaults_at(angles: &[f64]) {
 /// 60°: (2)'s relative error per unit h/L there, 0.4216.
 #[test]
 fn physical_judges_thin_coatings_by_the_first_order_in_h_over_l() {
-    use thinjkr::units::Cylinders;
-    let at = |h: f64| Cylinders {
-        r1: 0.01,
-        r2: 0.01,
-        theta_deg: 60.0,
-        h1: h,
-        h2: h,
-        g1: 1e6,
-        g2: 1e6,
-        work_of_adhesion: 0.05,
-        nu1: 0.5,
-        nu2: 0.5,
-    };
+    let at = |h: f64| coated(60.0, h);
     let off = |a: &thinjkr::registry::PhysicalAnswer| {
         a.warnings
             .iter()
@@ -614,20 +608,8 @@ fn physical_judges_thin_coatings_by_the_first_order_in_h_over_l() {
 /// before.
 #[test]
 fn physical_estimates_thin_coatings_near_ninety_degrees_by_the_line_tension() {
-    use thinjkr::units::Cylinders;
     let theta_deg = 2.0 * 0.8f64.sqrt().atan().to_degrees();
-    let at = |theta_deg: f64, h: f64| Cylinders {
-        r1: 0.01,
-        r2: 0.01,
-        theta_deg,
-        h1: h,
-        h2: h,
-        g1: 1e6,
-        g2: 1e6,
-        work_of_adhesion: 0.05,
-        nu1: 0.5,
-        nu2: 0.5,
-    };
+    let at = coated;
     // h/L grows as √h (L as √h, m as 1/h³): the h of h/L = 0.2
     let h0 = 1e-5;
     let sc0 = at(theta_deg, h0).scales().unwrap();
