@@ -617,6 +617,7 @@ fn physical(
             "chosen_because": answer.chosen_because,
             "paper_model": answer.paper_model,
             "thin_layer": answer.thin_layer,
+            "layer_estimate": answer.layer_estimate,
         });
         if let thinjkr::report::AnyState::Ellipse(st) = &answer.state {
             let p0 = st.p0 * answer.scales.pressure;

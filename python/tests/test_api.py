@@ -446,6 +446,8 @@ def test_physical_without_a_model_is_the_command_lines_default(cli):
     assert abs(st.paper_model.force_bar / st.state.force_bar - 1) > 0.01
     assert st.warnings == d["warnings"]
     assert any(w.startswith("(2) is ") and "best estimate of the pull-off force" in w for w in st.warnings)
+    # the estimate as data too, the command line's: at 60 deg rho = 1's ratio
+    assert st.layer_estimate == d["layer_estimate"] and st.layer_estimate["by"] == "ratio"
 
 
 def test_physical_without_a_model_answers_with_the_layer_in_the_plane(cli):

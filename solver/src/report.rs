@@ -45,6 +45,39 @@ pub struct ThinLayer {
     pub relative_error: f64,
 }
 
+/// Where (2) answers `physical` for coatings the layer of finite thickness
+/// does not answer at this ρ: the best estimate of the layer's pull-off
+/// force, the same numbers as the warning that gives it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct LayerEstimate {
+    /// The estimate of the layer's pull-off force [N].
+    pub force: f64,
+    /// Its bound, relative to it; `None` where none is measured for these
+    /// coatings.
+    pub within: Option<f64>,
+    /// How it is made.
+    pub by: EstimateBy,
+    /// (2)'s pull-off force's relative error against it (for `ratio`, at
+    /// ρ = 1).
+    pub thin_layer_error: f64,
+}
+
+/// How a [`LayerEstimate`] is made (docs/thickness.md, "`physical` by
+/// default").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum EstimateBy {
+    /// (2) with the coatings' edge as a line tension kept whole, plus the
+    /// layer's departure from that on the circle (from ρ = 0.65 up).
+    LineTension,
+    /// The layer's pull-off at first order in h/L.
+    FirstOrder,
+    /// (2)'s pull-off times the layer's ratio to it at ρ = 1.
+    Ratio,
+}
+
 /// A state of any model: of the ellipse, of the contour family, or exact.
 #[derive(Clone, Debug, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -725,6 +758,10 @@ pub(crate) enum Document {
         /// the thin-layer equation (2)'s answer and its relative error.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         thin_layer: Option<ThinLayer>,
+        /// Where (2) answered coatings the layer does not answer at this
+        /// ρ: the best estimate of the layer's pull-off force.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        layer_estimate: Option<LayerEstimate>,
     },
     /// One state (`solve`, `zero-force`, `exact solve`), with the models
     /// of the ellipse at the same control beside an exact one.

@@ -199,13 +199,15 @@ fn every_module_uses_only_what_its_charter_names() {
 /// grid's, which `PlaneState` now says), then 228 for `layer::Verdict`
 /// and `layer::Verdicts` (issue 71: a layer state's stability on its
 /// branch under each control, which its JSON, the command line and
-/// Python's repr now share). The benches' hooks
+/// Python's repr now share), then 230 for `report::LayerEstimate` and
+/// `EstimateBy` (issue 71: `physical`'s best estimate of the layer's
+/// pull-off as data, beside the warning that says it). The benches' hooks
 /// (`bench_internals` and the module it re-exports, built only with the
 /// `bench-internals` feature, hidden from the docs) are not a user's API and
 /// are not counted.
 #[test]
 fn the_public_api_stays_small() {
-    const MAX_PUBLIC_ITEMS: usize = 228;
+    const MAX_PUBLIC_ITEMS: usize = 230;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&root, &mut files);

@@ -528,7 +528,11 @@ class Physical(State):
     ``delta`` (m), ``force`` (N), ``p0`` (Pa), ``h_over_a``, the
     dimensionless ``state`` and the ``warnings`` in words; where the layer
     of finite thickness answered by default, ``thin_layer`` (None
-    otherwise)."""
+    otherwise); where (2) answered coatings the layer does not answer at
+    this angle, ``layer_estimate``: the best estimate of the layer's
+    pull-off, a dict of ``force`` (N), ``within`` (relative, None where
+    not measured), ``by`` ("line_tension", "first_order" or "ratio") and
+    ``thin_layer_error`` (None otherwise)."""
 
 
 #: The most points a :func:`study` takes (its grid is built before any is

@@ -1188,6 +1188,7 @@ fn physical(
         chosen_because,
         paper_model,
         thin_layer,
+        layer_estimate,
     } = crate::registry::physical(model, cyl, force, delta)?;
     let (a_bar, b_bar, delta_bar, force_bar) = state.size_and_load();
     if json || output::explain() {
@@ -1205,6 +1206,7 @@ fn physical(
             chosen_because,
             paper_model,
             thin_layer,
+            layer_estimate,
         };
         outln!("{}", doc.to_json());
         return Ok(());
