@@ -51,7 +51,7 @@ pub struct ThinLayer {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct LayerEstimate {
-    /// The estimate of the layer's pull-off force [N].
+    /// The estimate of the layer's pull-off force, in newtons.
     pub force: f64,
     /// Its bound, relative to it; `None` where none is measured for these
     /// coatings.
