@@ -494,6 +494,10 @@ pub fn physical(
 /// (docs/thickness.md, "The layer in the plane"), and failed at ρ = 0.072.
 const ESTIMATE_FROM_RHO: f64 = 0.2;
 
+/// How far that ratio changed with ρ, relative, where it was measured
+/// (h/L from 0.5 to 1, ρ from 1 down to [`ESTIMATE_FROM_RHO`]): 4 %.
+const RATIO_CHANGE: f64 = 0.04;
+
 /// The largest correction to (2)'s pull-off force, relative, at which
 /// `physical` judges thin coatings at ρ < 1 by the first order in h/L
 /// (`layer::thin`): 5 %.
@@ -575,10 +579,11 @@ fn judged_by_line_tension(
         return false;
     };
     let error = (exact.force_bar / estimate.force_bar - 1.0).abs();
+    let within = estimate.bound / estimate.force_bar.abs();
     if error > THIN_LAYER_TOLERANCE {
         thin.layer_estimate = Some(crate::report::LayerEstimate {
             force: estimate.force_bar * sc.force,
-            within: Some(estimate.bound / estimate.force_bar.abs()),
+            within: Some(within),
             by: crate::report::EstimateBy::LineTension,
             thin_layer_error: error,
         });
@@ -589,7 +594,7 @@ fn judged_by_line_tension(
             crate::error::rounded(sc.rho),
             thinnesses(layers),
             crate::error::short(estimate.force_bar * sc.force),
-            crate::error::short(100.0 * estimate.bound / estimate.force_bar.abs()),
+            crate::error::short(100.0 * within),
             crate::error::short(estimate.tension * sc.force),
             crate::error::short(estimate.circle_difference * sc.force),
         ));
@@ -665,14 +670,15 @@ fn in_the_plane(
             let measured = layers.thinnest() >= 0.5 && layers.thickest() <= 1.0;
             thin.layer_estimate = Some(crate::report::LayerEstimate {
                 force: force * ratio * sc.force,
-                within: measured.then_some(0.04),
+                within: measured.then_some(RATIO_CHANGE),
                 by: crate::report::EstimateBy::Ratio,
                 thin_layer_error: (1.0 / ratio - 1.0).abs(),
             });
             format!(
-                "best estimate of the pull-off force: {} N, (2)'s times the layer's ratio to it at rho = 1, {}, which changed with rho by at most 4 % for h/L = 0.5 to 1 from rho = 1 down to {} (not measured for thinner coatings; docs/thickness.md)",
+                "best estimate of the pull-off force: {} N, (2)'s times the layer's ratio to it at rho = 1, {}, which changed with rho by at most {} % for h/L = 0.5 to 1 from rho = 1 down to {} (not measured for thinner coatings; docs/thickness.md)",
                 crate::error::short(force * ratio * sc.force),
                 crate::error::short(ratio),
+                100.0 * RATIO_CHANGE,
                 ESTIMATE_FROM_RHO
             )
         } else {

@@ -657,18 +657,30 @@ mod tests {
     #[test]
     #[ignore = "slow tier (.ci/slow): the sharp edge at rho = 0.9, 0.7 and 0.65, about 5 minutes"]
     fn from_rho_0_65_the_layer_is_the_line_tension_with_the_circle_s_third_order() {
-        for (rho, h) in [
-            (0.9, 0.1),
-            (0.9, 0.2),
-            (0.7, 0.2),
-            (0.7, 0.3),
-            (0.65, 0.2),
-            (0.65, 0.3),
+        // docs/thickness.md's ratios ("The same difference at other ρ"),
+        // held at their printed precision
+        let docs = include_str!("../../../docs/thickness.md");
+        let paragraph = docs
+            .split("**The same difference at other ρ.**")
+            .nth(1)
+            .and_then(|rest| rest.split("\n\n").next())
+            .expect("the paragraph");
+        for (rho, h, printed) in [
+            (0.9, 0.1, "1.0004"),
+            (0.9, 0.2, "0.9986"),
+            (0.7, 0.2, "1.0013"),
+            (0.7, 0.3, "0.9949"),
+            (0.65, 0.2, "1.0024"),
+            (0.65, 0.3, "0.9964"),
         ] {
             let ratio = beyond_over_the_circle_s(rho, h);
             assert!(
                 (ratio - 1.0).abs() < 0.05,
                 "rho {rho}, h/L {h}: ratio {ratio}"
+            );
+            assert!(
+                paragraph.contains(printed) && crate::layer::as_printed(ratio, printed),
+                "rho {rho}, h/L {h}: ratio {ratio:.6}, printed {printed}"
             );
         }
     }
