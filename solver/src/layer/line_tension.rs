@@ -922,4 +922,301 @@ mod tests {
             }
         }
     }
+
+    /// (2) with the line tension `shift` as a family in (u): the exact
+    /// solver's equations with Griffith's condition the line tension's,
+    /// followed by arclength (`continuation`).
+    struct Tensioned<'a>(Held<'a>);
+
+    impl crate::continuation::Family<Dyn> for Tensioned<'_> {
+        fn linearise(&self, u: &DVector<f64>) -> Option<crate::continuation::Linear<Dyn>> {
+            let lin = self.0.scaled(u, true)?;
+            let ex = self.0.exact;
+            let n = u.len();
+            let mut r = DVector::zeros(n);
+            r.rows_mut(0, n - 1)
+                .copy_from(&ex.family_residuals(&lin.dn, u));
+            let mut j = DMatrix::zeros(n, n);
+            j.rows_mut(0, n - 1).copy_from(&ex.mode_jacobian(&lin, u));
+            Some(crate::continuation::Linear {
+                r,
+                j,
+                force: lin.force,
+                force_grad: lin.d_force.clone(),
+            })
+        }
+        fn converged(&self, u: &DVector<f64>, r: &DVector<f64>) -> bool {
+            r.rows(0, u.len() - 1).amax() < crate::exact::RESIDUAL_TOLERANCE
+        }
+        fn a_bar_gradient(&self) -> DVector<f64> {
+            let n = self.0.exact.unknown_count();
+            let mut g = DVector::from_element(n, 1.0);
+            g[n - 1] = 0.0;
+            g
+        }
+        fn delta_bar_gradient(&self) -> DVector<f64> {
+            let n = self.0.exact.unknown_count();
+            let mut g = DVector::zeros(n);
+            g[n - 1] = 1.0;
+            g
+        }
+        fn stuck(&self, u: &DVector<f64>, why: &str) -> Error {
+            Error::NoState(format!(
+                "the line tension {} traced: {why} at delta_bar = {}",
+                rounded(self.0.shift),
+                rounded(u[u.len() - 1])
+            ))
+        }
+    }
+
+    /// The line tension's pull-off followed by arclength: b̄ raised in
+    /// steps of THINJKR_TENSION_STEP (0.02), at each the state at the last
+    /// minimum's δ̄ by Newton, then the family traced downhill in F̄ to its
+    /// force minimum, past any fold in δ̄ or ā (`cargo test --release -p
+    /// thinjkr --lib explore_the_line_tension_by_arclength -- --ignored
+    /// --nocapture`).
+    #[test]
+    #[ignore = "exploration: prints the line tension's pull-offs traced by arclength"]
+    fn explore_the_line_tension_by_arclength() {
+        use crate::continuation::{trace, EventKind, On, Settings, Watch};
+        use crate::layer::thin::edge_shift;
+        use crate::layer::Layers;
+        let list = env_list::<f64>;
+        let step = list("THINJKR_TENSION_STEP", "0.02")[0];
+        for rho in list("THINJKR_TENSION_RHOS", "0.5") {
+            let (st, _) = pull_off_resolved(rho).unwrap();
+            let ex = Exact::of_state(&st).unwrap();
+            println!(
+                "rho {rho}: (2) {:.9} at a {:.6} delta {:.6}, {} modes",
+                st.force_bar, st.a_bar, st.delta_bar, st.truncation.modes
+            );
+            for h in list("THINJKR_TENSION_THINS", "0.15") {
+                let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
+                println!(" h/L {h}: b {b:.6}");
+                let mut u = ex.unknowns(&st);
+                let time = std::time::Instant::now();
+                let (mut done, mut db) = (0.0_f64, step);
+                while done < b {
+                    let bk = (done + db).min(b);
+                    let delta = u[u.len() - 1];
+                    let start = match state_at(&ex, rho, bk, delta, &u) {
+                        Ok((v, _)) => v,
+                        Err(e) if db > 1e-4 => {
+                            println!(
+                                "  b {bk:.4}: Newton at delta {delta:.6} fails; step {:.1e}",
+                                db / 2.0
+                            );
+                            let _ = e;
+                            db /= 2.0;
+                            continue;
+                        }
+                        Err(e) => {
+                            println!("  b {bk:.4}: Newton at delta {delta:.6}: {e}");
+                            break;
+                        }
+                    };
+                    done = bk;
+                    let family = Tensioned(Held {
+                        exact: &ex,
+                        delta_bar: delta,
+                        shift: bk,
+                    });
+                    let lin = crate::continuation::Family::linearise(&family, &start).unwrap();
+                    let towards = -lin.force_grad.clone();
+                    let settings = Settings {
+                        step: 0.005,
+                        min_step: 1e-7,
+                        max_step: 0.02,
+                        turn: 0.95,
+                        max_steps: 400,
+                        ..Settings::default()
+                    };
+                    let watch = Watch {
+                        size_fold: On::Note,
+                        displacement_fold: On::Note,
+                        force_minimum: On::Stop,
+                        bifurcation: On::Note,
+                        crossing: None,
+                    };
+                    match trace(&family, start, &towards, settings, watch, |_| false) {
+                        Ok(tr) => {
+                            let events: Vec<String> = tr
+                                .events
+                                .iter()
+                                .map(|e| {
+                                    let p = &tr.points[e.between[0]];
+                                    format!(
+                                        "{:?} near a {:.5} delta {:.5} F {:.7}",
+                                        e.kind, p.a_bar, p.delta_bar, p.force
+                                    )
+                                })
+                                .collect();
+                            let Some(m) = tr.located(EventKind::ForceMinimum) else {
+                                println!(
+                                    "  b {bk:.4}: no minimum in {} points, ended {:?}; {events:?}",
+                                    tr.points.len(),
+                                    tr.end
+                                );
+                                break;
+                            };
+                            u = m.clone();
+                            let lin = family.0.scaled(&u, false).unwrap();
+                            let c = ex.contour_of(&u);
+                            println!(
+                                "  b {bk:.4}: F {:.9} a {:.6} b {:.6} delta {:.6} in {} points; {events:?} ({:.1} s)",
+                                lin.force,
+                                c.a_bar(),
+                                c.b_bar(),
+                                u[u.len() - 1],
+                                tr.points.len(),
+                                time.elapsed().as_secs_f64()
+                            );
+                        }
+                        Err(e) => {
+                            println!("  b {bk:.4}: {e}");
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// The line tension's pull-off as the first force minimum of its
+    /// family traced down in ā from a large contact: (2)'s family traced
+    /// up from its pull-off to ā = THINJKR_TENSION_FROM_A (2.65; at ρ = 0.5 the piece folds at 2.676), b̄ raised
+    /// there at held δ̄ in steps of 0.02, then the family at b̄ traced
+    /// down in ā to its first force minimum (`cargo test --release -p
+    /// thinjkr --lib explore_the_line_tension_from_a_large_contact --
+    /// --ignored --nocapture`).
+    #[test]
+    #[ignore = "exploration: prints the line tension's pull-offs traced down from a large contact"]
+    fn explore_the_line_tension_from_a_large_contact() {
+        use crate::continuation::{trace, EventKind, Family, On, Settings, Watch};
+        use crate::control::Quantity;
+        use crate::layer::thin::edge_shift;
+        use crate::layer::Layers;
+        let list = env_list::<f64>;
+        let from_a = list("THINJKR_TENSION_FROM_A", "2.65")[0];
+        let settings = Settings {
+            step: 0.005,
+            min_step: 1e-7,
+            max_step: 0.02,
+            turn: 0.95,
+            max_steps: 2000,
+            ..Settings::default()
+        };
+        let events = |tr: &crate::continuation::Trace<Dyn>| -> Vec<String> {
+            tr.events
+                .iter()
+                .map(|e| {
+                    let p = &tr.points[e.between[0]];
+                    format!(
+                        "{:?} near a {:.5} delta {:.5} F {:.7}",
+                        e.kind, p.a_bar, p.delta_bar, p.force
+                    )
+                })
+                .collect()
+        };
+        for rho in list("THINJKR_TENSION_RHOS", "0.5") {
+            let (st, _) = pull_off_resolved(rho).unwrap();
+            let ex = Exact::of_state(&st).unwrap();
+            let plain = Tensioned(Held {
+                exact: &ex,
+                delta_bar: 0.0,
+                shift: 0.0,
+            });
+            let up = trace(
+                &plain,
+                ex.unknowns(&st),
+                &plain.a_bar_gradient(),
+                settings,
+                Watch {
+                    crossing: Some((Quantity::ABar, from_a, On::Stop)),
+                    ..Watch::default()
+                },
+                |_| false,
+            )
+            .unwrap();
+            let Some(large) = up.located(EventKind::Crossing).cloned() else {
+                let last = up.points.last().unwrap();
+                println!(
+                    "rho {rho}: no crossing of a {from_a}; ended {:?} at a {:.5} delta {:.5} after {} points; {:?}",
+                    up.end,
+                    last.a_bar,
+                    last.delta_bar,
+                    up.points.len(),
+                    events(&up)
+                );
+                continue;
+            };
+            println!(
+                "rho {rho}: (2) {:.9} at a {:.6}; traced up to a {from_a} at delta {:.6} ({:?})",
+                st.force_bar,
+                st.a_bar,
+                large[large.len() - 1],
+                events(&up)
+            );
+            for h in list("THINJKR_TENSION_THINS", "0.15") {
+                let time = std::time::Instant::now();
+                let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
+                let steps = ((b / 0.02).ceil() as usize).max(1);
+                let mut u = large.clone();
+                let delta = u[u.len() - 1];
+                let mut ok = true;
+                for k in 1..=steps {
+                    match state_at(&ex, rho, b * k as f64 / steps as f64, delta, &u) {
+                        Ok((v, _)) => u = v,
+                        Err(e) => {
+                            println!("  h/L {h}: raising b at a large contact: {e}");
+                            ok = false;
+                            break;
+                        }
+                    }
+                }
+                if !ok {
+                    continue;
+                }
+                let family = Tensioned(Held {
+                    exact: &ex,
+                    delta_bar: delta,
+                    shift: b,
+                });
+                let down = -family.a_bar_gradient();
+                let watch = Watch {
+                    size_fold: On::Note,
+                    displacement_fold: On::Note,
+                    force_minimum: On::Stop,
+                    bifurcation: On::Note,
+                    crossing: None,
+                };
+                match trace(&family, u, &down, settings, watch, |_| false) {
+                    Ok(tr) => match tr.located(EventKind::ForceMinimum) {
+                        Some(m) => {
+                            let lin = family.0.scaled(m, false).unwrap();
+                            let c = ex.contour_of(m);
+                            println!(
+                                "  h/L {h} b {b:.6}: F {:.9} a {:.6} b {:.6} delta {:.6}, slope {:.4}, {} points; {:?} ({:.1} s)",
+                                lin.force,
+                                c.a_bar(),
+                                c.b_bar(),
+                                m[m.len() - 1],
+                                (lin.force - st.force_bar) / h,
+                                tr.points.len(),
+                                events(&tr),
+                                time.elapsed().as_secs_f64()
+                            );
+                        }
+                        None => println!(
+                            "  h/L {h}: no minimum, ended {:?} at a {:.5}; {:?}",
+                            tr.end,
+                            tr.points.last().unwrap().a_bar,
+                            events(&tr)
+                        ),
+                    },
+                    Err(e) => println!("  h/L {h}: {e}"),
+                }
+            }
+        }
+    }
 }
