@@ -639,10 +639,14 @@ fn in_the_plane(
     };
     // coatings thinner than the grid reaches, where the first order in h/L
     // holds at this ρ: it judges (2)
-    if layers.thinnest() < crate::layer::plane::PULL_OFF_REACH.0
-        && (judged_by_line_tension(&layers, &sc, thin) || judged_by_first_order(&layers, &sc, thin))
-    {
-        return Ok(None);
+    if layers.thinnest() < crate::layer::plane::PULL_OFF_REACH.0 {
+        let judged = judged_by_line_tension(&layers, &sc, thin);
+        // a stop asked for during the line tension ends the answer there,
+        // not in the next estimate
+        crate::newton::check_stop()?;
+        if judged || judged_by_first_order(&layers, &sc, thin) {
+            return Ok(None);
+        }
     }
     // (2)'s pull-off at ρ = 1 is the circle's, −3π/2 (docs/derivation.md)
     let circle = -1.5 * std::f64::consts::PI;
@@ -1522,6 +1526,39 @@ impl From<&crate::report::AnyState> for crate::batch::Row {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A stop asked for while the line tension estimates the layer for
+    /// thin coatings at ρ < 1 ends `physical` with the stop, rather than
+    /// passing on to the next estimate (which answered, by the ratio, with
+    /// the flag already set).
+    #[test]
+    fn a_stop_during_the_line_tension_ends_the_answer() {
+        let theta_deg = 2.0 * 0.8f64.sqrt().atan().to_degrees();
+        let coated = |h: f64| crate::units::Cylinders {
+            r1: 0.01,
+            r2: 0.01,
+            theta_deg,
+            h1: h,
+            h2: h,
+            g1: 1e6,
+            g2: 1e6,
+            work_of_adhesion: 0.05,
+            nu1: 0.5,
+            nu2: 0.5,
+        };
+        // h/L grows as √h: the h of h/L = 0.2
+        let h0 = 1e-5;
+        let h = h0 * (0.2 / (h0 / coated(h0).scales().unwrap().length)).powi(2);
+        let cyl = coated(h);
+        let row = default_row(Question::PullOff, cyl.scales().unwrap().rho);
+        let mut thin = parse(row.model)
+            .unwrap()
+            .physical(&cyl, None, None)
+            .unwrap();
+        let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(true));
+        let stopped = crate::newton::stoppable(&flag, || in_the_plane(&cyl, row, &mut thin));
+        assert!(stopped.is_err(), "answered: {:?}", thin.warnings);
+    }
 
     /// Issue 73, item 4: one order of models. The list an unknown model's
     /// error gives names every model `thinjkr models` lists (`layer` was
