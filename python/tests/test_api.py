@@ -467,6 +467,12 @@ def test_physical_without_a_model_answers_with_the_layer_in_the_plane(cli):
     assert st.force < 0 and st.state.force_bar < 0
     t = st.thin_layer
     assert t.model == "exact" and t.relative_error > 0.2
+    # the repr: the layer's force first, then how far to trust it, then
+    # (2)'s beside it
+    lines = repr(st).splitlines()
+    assert lines[0].startswith(f"Physical(model='layer', force={st.force:.6g} N")
+    assert "force_error=" in lines[1] and "method='sharp_edge'" in lines[1]
+    assert lines[2] == f"  (2): model='exact', force={t.si['force']:.6g} N, {100 * t.relative_error:.3g} % off"
     assert abs(st.force) < abs(t.si["force"])
 
 
@@ -594,3 +600,29 @@ def test_the_layer_in_the_plane_answers_a_size_with_its_slopes():
     # the verdicts the command line prints, in the repr's second line
     assert (s["stability_load"], s["stability_displacement"]) == ("unstable", "stable")
     assert "stability_load='unstable', stability_displacement='stable'" in repr(st).splitlines()[1]
+
+
+def test_physical_leads_with_the_layer_s_estimate_where_it_is_nearer_than_2(cli):
+    """Issue 71: thin coatings near 90 degrees (83.63 deg, h = 15 um, h/L =
+    0.27), which the layer in the plane does not reach: (2) answers, and the
+    layer's pull-off estimated by the line tension, within 0.21 % where (2)
+    is 19.7 % off, leads the repr as it leads the command line's text; the
+    estimate is the command line's JSON's."""
+    import warnings
+
+    contact = dict(r1=0.01, r2=0.01, theta_deg=83.63, h1=1.5e-5, h2=1.5e-5, g1=1e6, g2=1e6, work_of_adhesion=0.05)
+    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "83.63", "--h1", "1.5e-5", "--h2", "1.5e-5",
+            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
+        st = thinjkr.physical(**contact)
+    d = run_json(cli, *args)
+    e = st.layer_estimate
+    assert e == d["layer_estimate"]
+    assert e["by"] == "line_tension" and e["leads"] is True and e["within"] < e["thin_layer_error"]
+    lines = repr(st).splitlines()
+    assert lines[0] == (f"Physical(force={e['force']:.6g} N: the layer of finite thickness's pull-off, "
+                        f"estimated within {100 * e['within']:.2g} % by line_tension)"), lines[0]
+    assert lines[1] == f"  (2): model='conformal:8', force={st.force:.6g} N, {100 * e['thin_layer_error']:.3g} % off"
+    assert lines[2].startswith("  warning: (2) is ")
+

@@ -537,12 +537,12 @@ fn judged_by_first_order(
     let layered = f2 + first.force_moved();
     let error = (f2 / layered - 1.0).abs();
     if error > THIN_LAYER_TOLERANCE {
-        thin.layer_estimate = Some(crate::report::LayerEstimate {
-            force: layered * sc.force,
-            within: Some(FIRST_ORDER_ERROR * correction),
-            by: crate::report::EstimateBy::FirstOrder,
-            thin_layer_error: error,
-        });
+        thin.layer_estimate = Some(crate::report::LayerEstimate::new(
+            layered * sc.force,
+            Some(FIRST_ORDER_ERROR * correction),
+            crate::report::EstimateBy::FirstOrder,
+            error,
+        ));
         // first: it is about the answer's force itself
         thin.warnings.insert(0, format!(
             "(2) is {:.2} % off the layer of finite thickness at rho = {} for these coatings, at first order in h/L (the coatings' edge acts as a line tension; docs/thickness.md, \"Thin coatings\"); best estimate of the pull-off force: {} N, the layer's at first order, within about {:.2} % only (half the first order's correction: at rho < 1 its second order is not computed, and where the layer in the plane measured it, at rho = 0.8 for h/L = 0.05 to 0.3 and at rho = 0.5 for 0.2, the first order was off by 0.14 to 0.5 of its correction)",
@@ -581,12 +581,12 @@ fn judged_by_line_tension(
     let error = (exact.force_bar / estimate.force_bar - 1.0).abs();
     let within = estimate.bound / estimate.force_bar.abs();
     if error > THIN_LAYER_TOLERANCE {
-        thin.layer_estimate = Some(crate::report::LayerEstimate {
-            force: estimate.force_bar * sc.force,
-            within: Some(within),
-            by: crate::report::EstimateBy::LineTension,
-            thin_layer_error: error,
-        });
+        thin.layer_estimate = Some(crate::report::LayerEstimate::new(
+            estimate.force_bar * sc.force,
+            Some(within),
+            crate::report::EstimateBy::LineTension,
+            error,
+        ));
         // first: it is about the answer's force itself
         thin.warnings.insert(0, format!(
             "(2) is {} % off the layer of finite thickness at rho = {} for these coatings (h/L = {}, thinner than the layer in the plane reaches); best estimate of the pull-off force: {} N, within {} %: (2) with the coatings' edge as a line tension kept whole, {} N, plus the layer's departure from that on the circle, {} N (of third order in h/L), which the layer in the plane met within 4.3 % of it from rho = 0.65 to 0.9 where both answer, for equal coatings with h/L = 0.07 to 0.3 (docs/thickness.md, \"The approach to (2) at rho < 1\")",
@@ -672,12 +672,12 @@ fn in_the_plane(
         let best = if sc.rho >= ESTIMATE_FROM_RHO {
             // the ratio's change with ρ is measured for h/L from 0.5 to 1
             let measured = layers.thinnest() >= 0.5 && layers.thickest() <= 1.0;
-            thin.layer_estimate = Some(crate::report::LayerEstimate {
-                force: force * ratio * sc.force,
-                within: measured.then_some(RATIO_CHANGE),
-                by: crate::report::EstimateBy::Ratio,
-                thin_layer_error: (1.0 / ratio - 1.0).abs(),
-            });
+            thin.layer_estimate = Some(crate::report::LayerEstimate::new(
+                force * ratio * sc.force,
+                measured.then_some(RATIO_CHANGE),
+                crate::report::EstimateBy::Ratio,
+                (1.0 / ratio - 1.0).abs(),
+            ));
             format!(
                 "best estimate of the pull-off force: {} N, (2)'s times the layer's ratio to it at rho = 1, {}, which changed with rho by at most {} % for h/L = 0.5 to 1 from rho = 1 down to {} (not measured for thinner coatings; docs/thickness.md)",
                 crate::error::short(force * ratio * sc.force),

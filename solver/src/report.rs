@@ -61,6 +61,30 @@ pub struct LayerEstimate {
     /// (2)'s pull-off force's relative error against it (for `ratio`, at
     /// ρ = 1).
     pub thin_layer_error: f64,
+    /// Whether it is the answer a person reads first: its bound is measured
+    /// and below (2)'s error, so it is nearer the layer than (2) is
+    /// (the command line's first line and Python's repr lead with it).
+    pub leads: bool,
+}
+
+impl LayerEstimate {
+    /// The estimate `force` (N) made `by`, within `within` (relative;
+    /// `None` where not measured), against which (2) is `thin_layer_error`
+    /// off; it leads where its bound is below that error.
+    pub(crate) fn new(
+        force: f64,
+        within: Option<f64>,
+        by: EstimateBy,
+        thin_layer_error: f64,
+    ) -> LayerEstimate {
+        LayerEstimate {
+            force,
+            within,
+            by,
+            thin_layer_error,
+            leads: within.is_some_and(|w| w < thin_layer_error),
+        }
+    }
 }
 
 /// How a [`LayerEstimate`] is made (docs/thickness.md, "`physical` by
@@ -76,6 +100,19 @@ pub enum EstimateBy {
     FirstOrder,
     /// (2)'s pull-off times the layer's ratio to it at ρ = 1.
     Ratio,
+}
+
+impl EstimateBy {
+    /// How the estimate is made, in a few words (the warning that gives
+    /// it says more).
+    #[cfg(feature = "cli")]
+    pub(crate) fn words(self) -> &'static str {
+        match self {
+            EstimateBy::LineTension => "the coatings' edge as a line tension kept whole",
+            EstimateBy::FirstOrder => "the first order in h/L",
+            EstimateBy::Ratio => "(2)'s ratio to the layer at rho = 1",
+        }
+    }
 }
 
 /// A state of any model: of the ellipse, of the contour family, or exact.

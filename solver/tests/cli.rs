@@ -895,3 +895,86 @@ fn the_pull_offs_second_route_is_asked_for_by_a_flag() {
         assert!(err.contains("cannot be used with"), "{err}");
     }
 }
+
+/// Thin coatings at ρ = 0.8 (h/L = 0.2): the layer's pull-off estimated by
+/// the line tension is nearer the layer than (2)'s answer, so `physical`'s
+/// first line is that estimate, with its bound and how it is made, the
+/// JSON's numbers at the printed precision; the next line is (2)'s answer
+/// with its error against it.
+#[test]
+fn physical_leads_with_the_layer_s_estimate_where_it_is_nearer_than_2() {
+    // h/L grows as √h (L as √h): the h of h/L = 0.2 from h/L at 10 µm
+    let theta = 2.0 * 0.8f64.sqrt().atan().to_degrees();
+    let args = |h: f64| -> Vec<String> {
+        let mut a: Vec<String> = [
+            "physical",
+            "--r1",
+            "0.01",
+            "--r2",
+            "0.01",
+            "--g1",
+            "1e6",
+            "--g2",
+            "1e6",
+            "--work-of-adhesion",
+            "0.05",
+            "--theta-deg",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        a.push(format!("{theta}"));
+        for key in ["--h1", "--h2"] {
+            a.push(key.into());
+            a.push(format!("{h:e}"));
+        }
+        a
+    };
+    let run = |a: &[String], json: bool| {
+        let mut a: Vec<&str> = a.iter().map(String::as_str).collect();
+        if json {
+            a.push("--json");
+        }
+        let (ok, out, err) = thinjkr(&a);
+        assert!(ok, "{err}");
+        out
+    };
+    let doc = |h: f64| -> serde_json::Value { serde_json::from_str(&run(&args(h), true)).unwrap() };
+    let h0 = 1e-5;
+    let thinness0 = h0 / doc(h0)["scales"]["length"].as_f64().unwrap();
+    let h = h0 * (0.2 / thinness0).powi(2);
+    let d = doc(h);
+    let est = &d["layer_estimate"];
+    assert_eq!(est["by"], "line_tension", "{d}");
+    assert_eq!(est["leads"], true, "{d}");
+    let text = run(&args(h), false);
+    let mut lines = text.lines();
+    let first = lines.next().unwrap();
+    let expected = format!(
+        "physical: pull-off force = {:.6e} N (the layer of finite thickness, estimated within ",
+        est["force"].as_f64().unwrap()
+    );
+    let rest = first
+        .strip_prefix(&expected)
+        .unwrap_or_else(|| panic!("{first}\nnot {expected}"));
+    // the bound, to its six significant digits, and how it is made
+    let (within, how) = rest.split_once(" % by ").expect("the bound");
+    let bound = 100.0 * est["within"].as_f64().unwrap();
+    assert!(
+        (within.parse::<f64>().unwrap() / bound - 1.0).abs() < 1e-5,
+        "{within} against {bound}"
+    );
+    assert!(
+        how.starts_with("the coatings' edge as a line tension kept whole), rho = 0.8"),
+        "{how}"
+    );
+    let second = lines.next().unwrap();
+    assert!(
+        second.starts_with("  the thin-layer equation (2) (")
+            && second.contains(&format!(
+                "force = {:.6e} N",
+                d["si"]["force"].as_f64().unwrap()
+            )),
+        "{second}"
+    );
+}

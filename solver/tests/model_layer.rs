@@ -632,6 +632,8 @@ fn physical_estimates_thin_coatings_near_ninety_degrees_by_the_line_tension() {
     // the same numbers as data: the estimate, its bound, (2)'s error
     let est = answer.layer_estimate.expect("the layer's estimate");
     assert_eq!(est.by, thinjkr::report::EstimateBy::LineTension);
+    // its bound is below (2)'s error: the front ends give it first
+    assert!(est.leads, "{est:?}");
     let (estimate, within) = (est.force / sc.force, est.within.expect("a bound"));
     let sharp_edge = -3.67331472;
     assert!(
@@ -673,8 +675,8 @@ fn physical_estimates_thin_coatings_near_ninety_degrees_by_the_line_tension() {
     // (h/L = 0.2: the ratio's change with ρ is not measured for it)
     let ratio = below.layer_estimate.expect("the ratio's estimate");
     assert_eq!(
-        (ratio.by, ratio.within),
-        (thinjkr::report::EstimateBy::Ratio, None)
+        (ratio.by, ratio.within, ratio.leads),
+        (thinjkr::report::EstimateBy::Ratio, None, false)
     );
     assert!(
         below

@@ -532,7 +532,36 @@ class Physical(State):
     this angle, ``layer_estimate``: the best estimate of the layer's
     pull-off, a dict of ``force`` (N), ``within`` (relative, None where
     not measured), ``by`` ("line_tension", "first_order" or "ratio") and
-    ``thin_layer_error`` (None otherwise)."""
+    ``thin_layer_error`` and ``leads`` (None otherwise)."""
+
+    def __repr__(self) -> str:
+        """The answer on the first line: the force in N with the model that
+        gave it, or, where the layer's estimate is nearer the layer than (2)
+        (``layer_estimate["leads"]``), that estimate with its bound; next
+        how far to trust the state, and (2)'s answer with its error where the
+        layer measured it; then the first warning, as the command line
+        prints them."""
+        f = self._fields
+        estimate = f.get("layer_estimate")
+        thin = f.get("thin_layer")
+        if isinstance(estimate, dict) and estimate.get("leads"):
+            lines = [f"Physical(force={estimate['force']:.6g} N: the layer of finite thickness's pull-off, "
+                     f"estimated within {100 * estimate['within']:.2g} % by {estimate['by']})",
+                     f"  (2): model={f['model']!r}, force={f['force']:.6g} N, "
+                     f"{100 * estimate['thin_layer_error']:.3g} % off"]
+        else:
+            lines = [f"Physical(model={f['model']!r}, force={f['force']:.6g} N, a={f['a']:.6g} m, "
+                     f"delta={f['delta']:.6g} m)"]
+            trust = repr(f["state"]).split("\n")[1:2]
+            lines += [t for t in trust if not t.startswith("  warning: ")]
+            if isinstance(thin, State):
+                lines.append(f"  (2): model={thin.model!r}, force={thin.si['force']:.6g} N, "
+                             f"{100 * thin.relative_error:.3g} % off")
+        warnings = [w for w in f.get("warnings") or [] if isinstance(w, str)]
+        if warnings:
+            more = f" ({len(warnings) - 1} more: .warnings)" if len(warnings) > 1 else ""
+            lines.append(f"  warning: {warnings[0]}{more}")
+        return "\n".join(lines)
 
 
 #: The most points a :func:`study` takes (its grid is built before any is

@@ -1211,15 +1211,31 @@ fn physical(
         outln!("{}", doc.to_json());
         return Ok(());
     }
-    outln!(
-        "physical: model {model_name}, rho = {}, a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, h/a = {:.4}",
-        output::num(sc.rho),
-        si.a,
-        si.b,
-        si.delta,
-        si.force,
-        si.h_over_a
-    );
+    // where the layer's estimate is nearer it than (2) is, the estimate
+    // first and (2)'s answer beside it
+    let leading = layer_estimate.filter(|e| e.leads);
+    if let Some(e) = &leading {
+        outln!("{}", estimate_line(e, sc.rho));
+    }
+    match leading {
+        Some(e) if !output::explain() => outln!(
+            "  the thin-layer equation (2) ({model_name}): a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, {} % off",
+            si.a,
+            si.b,
+            si.delta,
+            si.force,
+            crate::error::short(100.0 * e.thin_layer_error)
+        ),
+        _ => outln!(
+            "physical: model {model_name}, rho = {}, a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, h/a = {:.4}",
+            output::num(sc.rho),
+            si.a,
+            si.b,
+            si.delta,
+            si.force,
+            si.h_over_a
+        ),
+    }
     if !output::explain() {
         return physical_brief(&state, thin_layer.as_ref(), &warnings);
     }
@@ -1280,6 +1296,18 @@ fn thin_layer_line(t: &crate::report::ThinLayer) -> String {
         t.si.delta,
         t.si.force,
         crate::error::short(100.0 * t.relative_error)
+    )
+}
+
+/// `physical`'s first line where the layer's estimate `e` leads: the
+/// pull-off force, its bound and how it is made.
+fn estimate_line(e: &crate::report::LayerEstimate, rho: f64) -> String {
+    format!(
+        "physical: pull-off force = {:.6e} N (the layer of finite thickness, estimated within {} % by {}), rho = {}",
+        e.force,
+        crate::error::short(100.0 * e.within.unwrap_or(f64::NAN)),
+        e.by.words(),
+        output::num(rho)
     )
 }
 

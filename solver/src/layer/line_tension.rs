@@ -28,7 +28,8 @@
 //! axisymmetric layer's pull-off), `layer::thin` (the curvature, the
 //! edge's shift), `exact` (the exact solver's equations, its chord
 //! iteration and its pull-off of (2)), `newton` (the chord system),
-//! `model` (Brent's minimum), `error`.
+//! `model` (Brent's minimum), `error`, `continuation` and `control` (its explorations'
+//! traces by arclength).
 
 use super::thin::{curvature, edge_shift};
 use super::Layers;
