@@ -1220,4 +1220,131 @@ mod tests {
             }
         }
     }
+
+    /// The sharp edge's pull-off walked down in h/L at THINJKR_TENSION_RHOS
+    /// (default 0.5): from THINJKR_WALK_FROM (0.2), where the ladder
+    /// finds it from the circle, down to THINJKR_WALK_TO (0.1) in steps of
+    /// THINJKR_WALK_STEP (0.01, halved where a step finds none), each from
+    /// the last one's edge and approach on the first rung of
+    /// THINJKR_SHARP_RUNGS (default 16x6/16/64,24x6/16/64,32x6/24/96), the
+    /// whole ladder at the end and wherever THINJKR_WALK_LADDER_AT lists
+    /// (e.g. 0.15,0.12); with the line tension's pull-off there (steps of
+    /// 0.01 in b̄) and the circle's difference (`cargo test --release -p
+    /// thinjkr --lib explore_the_sharp_edge_walked_in_thickness --
+    /// --ignored --nocapture`).
+    #[test]
+    #[ignore = "exploration: prints the sharp edge's pull-offs walked down in h/L"]
+    fn explore_the_sharp_edge_walked_in_thickness() {
+        use crate::layer::sharp::{pull_off_ladder, pull_off_ladder_from, Resolution};
+        use crate::layer::thin::edge_shift;
+        use crate::layer::Layers;
+        let rungs: Vec<Resolution> =
+            env_list::<String>("THINJKR_SHARP_RUNGS", "16x6/16/64,24x6/16/64,32x6/24/96")
+                .iter()
+                .map(|r| {
+                    let n: Vec<usize> = r.split(['x', '/']).map(|x| x.parse().unwrap()).collect();
+                    Resolution::rung(n[0], n[1], n[2], n[3])
+                })
+                .collect();
+        let list = env_list::<f64>;
+        let (from, to) = (
+            list("THINJKR_WALK_FROM", "0.2")[0],
+            list("THINJKR_WALK_TO", "0.1")[0],
+        );
+        let mut step = list("THINJKR_WALK_STEP", "0.01")[0];
+        let ladder_at = list("THINJKR_WALK_LADDER_AT", "0");
+        let (circle, _) = pull_off_resolved(1.0).unwrap();
+        let on_circle = Exact::of_state(&circle).unwrap();
+        for rho in list("THINJKR_TENSION_RHOS", "0.5") {
+            let (st, _) = pull_off_resolved(rho).unwrap();
+            let ex = Exact::of_state(&st).unwrap();
+            let time = std::time::Instant::now();
+            let report = |h: f64, states: &[crate::layer::sharp::SharpState]| {
+                let b = edge_shift(&Layers::equal(h, 0.5).unwrap()).unwrap();
+                let steps = ((b / 0.01).ceil() as usize).max(1);
+                let tension = pull_off_with_line_tension(&ex, &st, b, steps).map(|t| t.force_bar);
+                let circle_beyond = beyond_the_line_tension(&on_circle, &circle, h);
+                for s in states {
+                    let against = match &tension {
+                        Ok(t) => format!(
+                            "less the line tension {:.3e}, over the circle's {:.4}",
+                            s.force_bar - t,
+                            (s.force_bar - t) / circle_beyond
+                        ),
+                        Err(e) => format!("the line tension: {e}"),
+                    };
+                    println!(
+                        "  h/L {h:.4}: F {:.8} delta {:.6} half-widths {:.6} {:.6} griffith {:.1e}; slope {:.4}; {against} ({:.0} s)",
+                        s.force_bar,
+                        s.delta_bar,
+                        s.a_bar,
+                        s.b_bar,
+                        s.griffith_error,
+                        (s.force_bar - st.force_bar) / h,
+                        time.elapsed().as_secs_f64()
+                    );
+                }
+            };
+            let first = Layers::equal(from, 0.5).unwrap();
+            let start = pull_off_ladder(&first, rho, &rungs[..1], |_, _| {}).unwrap();
+            let mut last = start[0].clone();
+            report(from, &start);
+            let mut h = from;
+            while h > to + 1e-12 {
+                let next = (h - step).max(to);
+                let layers = Layers::equal(next, 0.5).unwrap();
+                let guess = last
+                    .domain
+                    .rebased(last.a_bar, last.b_bar, last.domain.modes.len())
+                    .unwrap();
+                let d = last.delta_bar;
+                let wide = 0.05 * last.a_bar.powi(2).min(1.0);
+                match pull_off_ladder_from(
+                    &layers,
+                    rho,
+                    &rungs[..1],
+                    guess,
+                    ((d - 0.02, d + 0.02), 6),
+                    wide,
+                    |_, _| {},
+                ) {
+                    Ok(found) => {
+                        last = found[0].clone();
+                        h = next;
+                        let whole = (h - to).abs() < 1e-12
+                            || ladder_at.iter().any(|x| (x - h).abs() < 1e-9);
+                        if whole {
+                            let guess = last
+                                .domain
+                                .rebased(last.a_bar, last.b_bar, last.domain.modes.len())
+                                .unwrap();
+                            let d = last.delta_bar;
+                            match pull_off_ladder_from(
+                                &layers,
+                                rho,
+                                &rungs,
+                                guess,
+                                ((d - 0.01, d + 0.01), 4),
+                                wide,
+                                |_, _| {},
+                            ) {
+                                Ok(all) => report(h, &all),
+                                Err(e) => println!("  h/L {h:.4}: the ladder: {e}"),
+                            }
+                        } else {
+                            report(h, &found);
+                        }
+                    }
+                    Err(e) if step > 1e-3 => {
+                        println!("  h/L {next:.4}: {e}; step {:.4}", step / 2.0);
+                        step /= 2.0;
+                    }
+                    Err(e) => {
+                        println!("  h/L {next:.4}: {e}; the walk stops");
+                        break;
+                    }
+                }
+            }
+        }
+    }
 }
