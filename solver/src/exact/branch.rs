@@ -674,8 +674,10 @@ impl Exact {
         slope.is_finite().then_some(SlopeInSize { slope, du, lu })
     }
 
-    /// The minimum of F̄ over ā on the arm through `start`, a converged
-    /// state of this truncation, with ā as the family's parameter: the
+    /// The minimum of F̄ over ā on the arm through `start`, the unknowns
+    /// of a converged state of this truncation (no fine-grid check of the
+    /// start: only the minimum is checked, as [`Exact::state`] checks every
+    /// state it returns), with ā as the family's parameter: the
     /// secant method on dF̄/dā = 0 ([`Exact::force_slope_in_size`]), each
     /// state solved at its ā from the tangent's prediction, the first step
     /// 0.01 downhill, steps at most 0.05, ā within 0.3 of `start`'s. A
@@ -684,15 +686,6 @@ impl Exact {
     /// between, or no minimum near), for the caller's trace to take over
     /// ([`Exact::force_minimum_nearest`]). Far cheaper than the trace: a
     /// handful of states at fixed ā, each one or two Newton steps.
-    #[cfg(any(feature = "cli", test))]
-    pub(crate) fn force_minimum_in_size(&self, start: &ExactState) -> Result<ExactState> {
-        self.force_minimum_in_size_from(self.unknowns(start))
-    }
-
-    /// [`Exact::force_minimum_in_size`] from the unknowns `start` of a
-    /// converged state of this truncation (no fine-grid check of the start:
-    /// only the minimum is checked, as [`Exact::state`] checks every state
-    /// it returns).
     pub(crate) fn force_minimum_in_size_from(&self, start: DVector<f64>) -> Result<ExactState> {
         self.force_minimum_in_size_stepping(start, FirstStep::Downhill(0.01))
     }

@@ -801,11 +801,11 @@ pub struct Exact {
     /// cos 2kθ_i on the grid (row k = 0..N, column i), divided by the
     /// number of points: the imposed modes of ∂p̄/∂ν − 1 as the mean of
     /// their product with it.
-    cos_modes: DMatrix<f64>,
+    pub(crate) cos_modes: DMatrix<f64>,
     /// The arclength representation's gauge weight w at the grid points:
     /// the gauge rows are the modes of w|z′|², so |z′| ∝ w^(−1/2). None
     /// for w = 1, θ proportional to arclength ([`Exact::keeping_the_speed_of`]).
-    gauge_weight: Option<DVector<f64>>,
+    pub(crate) gauge_weight: Option<DVector<f64>>,
     /// Whether [`Exact::state`] computes the stability of the states it
     /// returns (not while [`resolved`] escalates the truncation).
     with_stability: bool,
@@ -1009,13 +1009,6 @@ impl Exact {
         Ok(Exact::on(st.gap, st.rho, st.truncation)?.keeping_the_speed_of_grooved(&st.contour))
     }
 
-    /// [`Exact::of_state`] with another truncation (a finer or coarser
-    /// rung for the same state).
-    #[cfg(feature = "cli")]
-    pub(crate) fn of_state_with(st: &ExactState, truncation: Truncation) -> Result<Exact> {
-        Ok(Exact::on(st.gap, st.rho, truncation)?.keeping_the_speed_of_grooved(&st.contour))
-    }
-
     /// [`Exact::keeping_the_speed_of`] `c` where `c` has a narrow groove
     /// (its points then crowded into it by the follow,
     /// [`Contour::crowded_at_groove`]); else the same problem (θ
@@ -1084,34 +1077,6 @@ impl Exact {
         jac.columns_mut(0, nu - 1)
             .copy_from(&(self.cos_modes.rows(1, np) * d));
         jac
-    }
-
-    /// Σ_j λ_j ∂²G_j/∂u_k∂u_l for the arclength representation's rows
-    /// G_j ([`Exact::gauge_rows`]) in the coefficients (coefficients ×
-    /// coefficients): the rows are quadratic in them, |z′|² with
-    /// z′ = Σ_l u_l i m_l e_l, so ∂²|z′(θ_i)|²/∂u_k∂u_l =
-    /// 2 m_k m_l Re(ē_k e_l)(θ_i), summed with the weights
-    /// Σ_j λ_j cos 2jθ_i (the rows' modes) and the gauge weight. With λ the
-    /// gauge's multipliers it is what the curvature of the gauge adds to a
-    /// Hessian in the coefficients that move on it (`studies::descent`).
-    #[cfg(feature = "cli")]
-    pub(crate) fn gauge_curvature(&self, lambda: &DVector<f64>) -> DMatrix<f64> {
-        let np = self.truncation.arclength;
-        let m = self.truncation.coefficients();
-        let n = self.grid.len();
-        if np == 0 {
-            return DMatrix::zeros(m, m);
-        }
-        let mut weights = self.cos_modes.rows(1, np).transpose() * lambda;
-        if let Some(w) = &self.gauge_weight {
-            weights.component_mul_assign(w);
-        }
-        let mult = &self.grid.multipliers;
-        let basis = &self.grid.basis;
-        let re = DMatrix::from_fn(n, m, |i, k| mult[k] * basis[k][i].re);
-        let im = DMatrix::from_fn(n, m, |i, k| mult[k] * basis[k][i].im);
-        let weighted = |e: &DMatrix<f64>| DMatrix::from_fn(n, m, |i, k| weights[i] * e[(i, k)]);
-        (weighted(&re).transpose() * &re + weighted(&im).transpose() * &im) * 2.0
     }
 
     /// The cosine modes k = 0..N of ∂p̄/∂ν − 1 from ∂p̄/∂ν at the grid

@@ -1036,7 +1036,7 @@ pub(crate) fn at_with(
 /// fails down to 0.00125): Newton at the previous pull-off's ā, else at
 /// its δ̄ (both regular there, where fixed F̄ is singular); then the
 /// minimum of F̄ over ā by the secant method on dF̄/dā
-/// ([`Exact::force_minimum_in_size`]), or, where ā is no parameter there (a
+/// ([`Exact::force_minimum_in_size_from`]), or, where ā is no parameter there (a
 /// fold in ā near, as at ρ ≈ 0.3), the arm traced from that state towards
 /// the previous pull-off's ā to its first force minimum, the other way
 /// only where that finds none ([`Exact::force_minimum_nearest`]). A step is taken when its pull-off's
@@ -1522,7 +1522,7 @@ mod tests {
     /// The two ways to the force minimum of one step of the follow in ρ
     /// give the same pull-off: from the pull-off at ρ = 0.3, solved at
     /// ρ = 0.25 at its ā (48 modes of each sign), the secant method on
-    /// dF̄/dā ([`Exact::force_minimum_in_size`]) and the arm traced to its
+    /// dF̄/dā ([`Exact::force_minimum_in_size_from`]) and the arm traced to its
     /// first force minimum ([`Exact::force_minimum_nearest`]) agree to
     /// 1e-11 relative in F̄ and 1e-8 in ā (measured: 1.2e-14 and 6.3e-14),
     /// and the secant's is a minimum: F̄ is larger at ā ± 0.01.
@@ -1535,7 +1535,7 @@ mod tests {
         let s0 = ex
             .solve_at(Hold::Size(start.a_bar), &start.contour, start.delta_bar)
             .unwrap();
-        let secant = ex.force_minimum_in_size(&s0).unwrap();
+        let secant = ex.force_minimum_in_size_from(ex.unknowns(&s0)).unwrap();
         let traced = ex.force_minimum_nearest(&s0, start.a_bar).unwrap();
         assert!(
             (secant.force_bar / traced.force_bar - 1.0).abs() <= 1e-11,

@@ -19,7 +19,7 @@
 //! enough that the shape is resolved, thick enough that every unstable
 //! mode is shorter than the cutoff.
 //!
-//! Owns: [`ShortWaves`], [`short_waves`], [`without_short_waves`],
+//! Owns: [`ShortWaves`], [`short_waves`],
 //! [`Coatings`], [`Thinnesses`], [`no_thinness_words`], [`size_unstable`].
 //! May use: `exact` (the contour, the stability's modes), `cutoff`.
 
@@ -35,7 +35,7 @@ use nalgebra::Complex;
 pub(crate) const VISIBLE: f64 = 1e-2;
 
 /// Points along the contour the spectrum is read from.
-const POINTS: usize = 4096;
+pub(crate) const POINTS: usize = 4096;
 
 /// A range of the thinness h/L, from `from` (0: no lower bound) up to
 /// `to` (not included; null: no upper bound).
@@ -228,45 +228,6 @@ pub(crate) fn short_waves(contour: &Contour, cutoff: Cutoff) -> ShortWaves {
     short_waves_at(&|t| contour.point_at(t), cutoff)
 }
 
-/// `contour` with the undulations shorter than `cutoff`'s wavelength taken
-/// off: its coefficients of those modes (b_j and c_j of the mode 2j + 2,
-/// its lobes' number) set to those of its ellipse (the ellipse through its
-/// extremes, in the same representation), its longer modes kept: the shape
-/// of a coating that holds those undulations flat, to the mixing of modes
-/// between the coefficients and the radial departure that [`short_waves`]
-/// measures (a tenth or less of the short part is left).
-#[cfg(any(feature = "cli", test))]
-pub(crate) fn without_short_waves(contour: &Contour, cutoff: Cutoff) -> Contour {
-    let h = 2.0 * std::f64::consts::PI / POINTS as f64;
-    let z: Vec<Complex<f64>> = (0..POINTS)
-        .map(|k| contour.point_at(h * k as f64))
-        .collect();
-    let perimeter: f64 = (0..POINTS)
-        .map(|k| (z[(k + 1) % POINTS] - z[k]).norm())
-        .sum();
-    let modes = contour.b.len();
-    // (beyond the modes held, none is short: capped before the cast, so a
-    // cutoff far below the contour's scale cannot overflow it)
-    let first_short = (perimeter / cutoff.wavelength)
-        .floor()
-        .min(2.0 * modes as f64 + 2.0) as usize
-        + 1;
-    let ellipse = Contour::ellipse(contour.a_bar(), contour.b_bar(), modes);
-    let ellipse = if contour.c.is_empty() {
-        ellipse
-    } else {
-        ellipse.in_arclength(modes)
-    };
-    let mut out = contour.clone();
-    for j in (0..modes).filter(|j| 2 * j + 2 >= first_short) {
-        out.b[j] = ellipse.b.get(j).copied().unwrap_or(0.0);
-        if let Some(c) = out.c.get_mut(j) {
-            *c = ellipse.c.get(j).copied().unwrap_or(0.0);
-        }
-    }
-    out
-}
-
 /// [`short_waves`] of a doubly symmetric contour given by [`POINTS`]
 /// points at equal steps of any parameter, counter-clockwise from the X
 /// axis (the Y axis at a quarter of them), as a `conformal:K` map gives.
@@ -365,43 +326,6 @@ fn short_waves_of(z: &[Complex<f64>], cutoff: Cutoff) -> ShortWaves {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// An ellipse (ā = 3, b̄ = 2.4) undulated by cos 4θ and cos 10θ in the
-    /// arclength representation: with the cutoff of h/L = 0.5 (3.14; the
-    /// perimeter about 17, so the modes from n = 6 on are short) taking the
-    /// short undulations off leaves less than a tenth of them, where the
-    /// undulated contour had more than 1 % of ā, and keeps the longer
-    /// coefficients; in the conformal-map form the same holds.
-    #[test]
-    fn taking_the_short_waves_off_keeps_the_long_ones() {
-        let cutoff = Cutoff::for_thinness(0.5).unwrap();
-        for arclength in [true, false] {
-            let ellipse = Contour::ellipse(3.0, 2.4, 24);
-            let mut c = if arclength {
-                ellipse.in_arclength(24)
-            } else {
-                ellipse
-            };
-            c.b[1] += 0.02;
-            c.b[4] += 0.06;
-            let before = short_waves(&c, cutoff);
-            assert!(before.unresolved, "{before:?}");
-            assert_eq!(before.mode, Some(10));
-            let smooth = without_short_waves(&c, cutoff);
-            let after = short_waves(&smooth, cutoff);
-            // (the radial departure of the long modes' coefficients has a
-            // little of the short modes too: 0.09 % of ā here, 0.13 % in
-            // the conformal-map form's θ)
-            assert!(
-                !after.unresolved && after.amplitude < 0.1 * before.amplitude,
-                "{arclength}: {} {}",
-                before.amplitude,
-                after.amplitude
-            );
-            assert_eq!(smooth.b[..2], c.b[..2]);
-            assert_eq!(smooth.a, c.a);
-        }
-    }
 
     /// docs/exact-record.md's table "The shape's unresolved part": every cell is
     /// the exact pull-off's unresolved part at that ρ and h/L, to its

@@ -191,7 +191,7 @@ impl Descent<'_> {
         let lambda = gc
             .lu()
             .solve(&(-at.gradient.rows(self.shape, self.gauge)))?;
-        Some(self.ex.gauge_curvature(&lambda))
+        Some(gauge_curvature(&self.ex, &lambda))
     }
 
     /// u moved onto the arclength representation's gauge (θ proportional
@@ -522,6 +522,33 @@ fn land(ex: &Exact, p: &Point, force: f64) -> Landing {
         Ok(st) => Landing::Landed(Box::new(st)),
         Err(e) => Landing::NotSettled(format!("Newton at the descent's end failed: {e}")),
     }
+}
+
+/// Σ_j λ_j ∂²G_j/∂u_k∂u_l for the arclength representation's rows
+/// G_j (`Exact::gauge_rows`) in the coefficients (coefficients ×
+/// coefficients): the rows are quadratic in them, |z′|² with
+/// z′ = Σ_l u_l i m_l e_l, so ∂²|z′(θ_i)|²/∂u_k∂u_l =
+/// 2 m_k m_l Re(ē_k e_l)(θ_i), summed with the weights
+/// Σ_j λ_j cos 2jθ_i (the rows' modes) and the gauge weight. With λ the
+/// gauge's multipliers it is what the curvature of the gauge adds to a
+/// Hessian in the coefficients that move on it (here).
+fn gauge_curvature(ex: &Exact, lambda: &DVector<f64>) -> DMatrix<f64> {
+    let np = ex.truncation().arclength;
+    let m = ex.truncation().coefficients();
+    let n = ex.grid.len();
+    if np == 0 {
+        return DMatrix::zeros(m, m);
+    }
+    let mut weights = ex.cos_modes.rows(1, np).transpose() * lambda;
+    if let Some(w) = &ex.gauge_weight {
+        weights.component_mul_assign(w);
+    }
+    let mult = &ex.grid.multipliers;
+    let basis = &ex.grid.basis;
+    let re = DMatrix::from_fn(n, m, |i, k| mult[k] * basis[k][i].re);
+    let im = DMatrix::from_fn(n, m, |i, k| mult[k] * basis[k][i].im);
+    let weighted = |e: &DMatrix<f64>| DMatrix::from_fn(n, m, |i, k| weights[i] * e[(i, k)]);
+    (weighted(&re).transpose() * &re + weighted(&im).transpose() * &im) * 2.0
 }
 
 #[cfg(test)]

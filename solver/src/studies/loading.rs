@@ -16,7 +16,7 @@
 //! not near its start (or whose state the descent leaves) is halved until
 //! the state is lost within 1e-3 (relative to max(1, |F̄|)); where it is
 //! lost is then the minimum of F̄ over ā on its arm, by the secant method
-//! on dF̄/dā (`Exact::force_minimum_in_size`), where there is one that
+//! on dF̄/dā (`Exact::force_minimum_in_size_from`), where there is one that
 //! near (a fold in F̄), else the last state held. From there the contour
 //! descends at a force 1e-4 lower: it lands on another state (a jump, an
 //! event with the force, the state before and the state after) or comes
@@ -34,7 +34,8 @@
 //! not settled from there.
 //!
 //! Owns: [`LoadingPath`], [`Jump`], [`BandPass`], [`PathEnd`],
-//! [`loading_path`], [`loading_path_to_first_band`], [`reported`]. May use: its parent `studies` (`descent`, `start`), `exact`
+//! [`loading_path`], [`loading_path_to_first_band`], [`reported`], the shape
+//! without its short waves (`without_short_waves`). May use: its parent `studies` (`descent`, `start`), `exact`
 //! (the problem, `resolve`, `undulations`, the large load),
 //! `control`, `continuation` (the family's linearisation, for the arm's
 //! tangent), `cutoff`, `error`, `newton` (the stop request), `report`
@@ -46,7 +47,7 @@ use crate::cutoff::Cutoff;
 use crate::error::Result;
 use crate::exact::ladder::Ladder;
 use crate::exact::same::Same;
-use crate::exact::{Exact, ExactState, Truncation, CONVERGED, RESOLVED};
+use crate::exact::{undulations, Contour, Exact, ExactState, Truncation, CONVERGED, RESOLVED};
 
 #[cfg(test)]
 use crate::exact::START_FORCE;
@@ -308,7 +309,7 @@ fn resolved(ex: &mut Exact, st: ExactState) -> std::result::Result<ExactState, S
         .above(ex.truncation());
     for &rung in rungs.rungs() {
         let st = &best.1;
-        let Ok(finer) = Exact::of_state_with(st, rung) else {
+        let Ok(finer) = of_state_with(st, rung) else {
             continue;
         };
         if let Ok(again) = finer.solve_at(Hold::Force(st.force_bar), &st.contour, st.delta_bar) {
@@ -359,7 +360,7 @@ fn where_lost(
     let in_bracket =
         |m: &ExactState| near(held, m) && m.force_bar <= held.force_bar && m.force_bar >= force;
     let fold = ex
-        .force_minimum_in_size(held)
+        .force_minimum_in_size_from(ex.unknowns(held))
         .ok()
         .filter(in_bracket)
         .or_else(|| {
@@ -462,7 +463,7 @@ impl Walk {
         if shape_loss.is_some() {
             if let Some((back, taken, truncation)) = self.before.take() {
                 if truncation != self.ex.truncation() {
-                    match Exact::of_state_with(&back, truncation) {
+                    match of_state_with(&back, truncation) {
                         Ok(e) => self.ex = e,
                         Err(e) => return Some(PathEnd::NotSettled(e.to_string())),
                     }
@@ -700,7 +701,7 @@ impl Walk {
 /// below `held`'s in steps of [`PASS_STEP`] of its ā, at most
 /// [`PASS_STEPS`], by Newton's method at each fixed ā from `held`'s
 /// contour with those undulations taken off
-/// (`undulations::without_short_waves`), scaled to that ā. (At a fixed
+/// ([`without_short_waves`]), scaled to that ā. (At a fixed
 /// force Newton's method from that guess is drawn to the lobed arm beyond
 /// the next piece's fold where the band is wide, at ρ = 0.5 with
 /// h/L = 0.3; at a fixed size the lobes are what the guess lacks.) A state
@@ -712,10 +713,10 @@ impl Walk {
 /// step reaches one.
 fn pass_band(ex: &mut Exact, held: &ExactState, cutoff: Cutoff) -> Option<ExactState> {
     let mut guess = held.clone();
-    guess.contour = crate::exact::undulations::without_short_waves(&held.contour, cutoff);
+    guess.contour = without_short_waves(&held.contour, cutoff);
     // the search's problem, without the states' stability (the state
     // chosen gets it from `ex`)
-    let search = Exact::of_state_with(held, ex.truncation())
+    let search = of_state_with(held, ex.truncation())
         .ok()?
         .deferring_stability();
     // a resolved state beyond at size `a_bar`, by Newton's method
@@ -911,6 +912,50 @@ impl LoadingPath {
     }
 }
 
+/// `contour` with the undulations shorter than `cutoff`'s wavelength taken
+/// off: its coefficients of those modes (b_j and c_j of the mode 2j + 2,
+/// its lobes' number) set to those of its ellipse (the ellipse through its
+/// extremes, in the same representation), its longer modes kept: the shape
+/// of a coating that holds those undulations flat, to the mixing of modes
+/// between the coefficients and the radial departure that `undulations::short_waves`
+/// measures (a tenth or less of the short part is left).
+fn without_short_waves(contour: &Contour, cutoff: Cutoff) -> Contour {
+    let h = 2.0 * std::f64::consts::PI / undulations::POINTS as f64;
+    let z: Vec<nalgebra::Complex<f64>> = (0..undulations::POINTS)
+        .map(|k| contour.point_at(h * k as f64))
+        .collect();
+    let perimeter: f64 = (0..undulations::POINTS)
+        .map(|k| (z[(k + 1) % undulations::POINTS] - z[k]).norm())
+        .sum();
+    let modes = contour.b.len();
+    // (beyond the modes held, none is short: capped before the cast, so a
+    // cutoff far below the contour's scale cannot overflow it)
+    let first_short = (perimeter / cutoff.wavelength)
+        .floor()
+        .min(2.0 * modes as f64 + 2.0) as usize
+        + 1;
+    let ellipse = Contour::ellipse(contour.a_bar(), contour.b_bar(), modes);
+    let ellipse = if contour.c.is_empty() {
+        ellipse
+    } else {
+        ellipse.in_arclength(modes)
+    };
+    let mut out = contour.clone();
+    for j in (0..modes).filter(|j| 2 * j + 2 >= first_short) {
+        out.b[j] = ellipse.b.get(j).copied().unwrap_or(0.0);
+        if let Some(c) = out.c.get_mut(j) {
+            *c = ellipse.c.get(j).copied().unwrap_or(0.0);
+        }
+    }
+    out
+}
+
+/// [`Exact::of_state`] with another truncation (a finer or coarser rung
+/// for the same state).
+fn of_state_with(st: &ExactState, truncation: Truncation) -> Result<Exact> {
+    Ok(Exact::on(st.gap, st.rho, truncation)?.keeping_the_speed_of_grooved(&st.contour))
+}
+
 /// The integration tests' reader of docs/exact-record.md's table rows.
 #[cfg(test)]
 #[path = "../../tests/docs_tables/mod.rs"]
@@ -921,6 +966,43 @@ mod tests {
     use super::super::start::at_large_load as start;
     use super::docs_tables;
     use super::*;
+
+    /// An ellipse (ā = 3, b̄ = 2.4) undulated by cos 4θ and cos 10θ in the
+    /// arclength representation: with the cutoff of h/L = 0.5 (3.14; the
+    /// perimeter about 17, so the modes from n = 6 on are short) taking the
+    /// short undulations off leaves less than a tenth of them, where the
+    /// undulated contour had more than 1 % of ā, and keeps the longer
+    /// coefficients; in the conformal-map form the same holds.
+    #[test]
+    fn taking_the_short_waves_off_keeps_the_long_ones() {
+        let cutoff = Cutoff::for_thinness(0.5).unwrap();
+        for arclength in [true, false] {
+            let ellipse = Contour::ellipse(3.0, 2.4, 24);
+            let mut c = if arclength {
+                ellipse.in_arclength(24)
+            } else {
+                ellipse
+            };
+            c.b[1] += 0.02;
+            c.b[4] += 0.06;
+            let before = crate::exact::undulations::short_waves(&c, cutoff);
+            assert!(before.unresolved, "{before:?}");
+            assert_eq!(before.mode, Some(10));
+            let smooth = without_short_waves(&c, cutoff);
+            let after = crate::exact::undulations::short_waves(&smooth, cutoff);
+            // (the radial departure of the long modes' coefficients has a
+            // little of the short modes too: 0.09 % of ā here, 0.13 % in
+            // the conformal-map form's θ)
+            assert!(
+                !after.unresolved && after.amplitude < 0.1 * before.amplitude,
+                "{arclength}: {} {}",
+                before.amplitude,
+                after.amplitude
+            );
+            assert_eq!(smooth.b[..2], c.b[..2]);
+            assert_eq!(smooth.a, c.a);
+        }
+    }
 
     /// A contour in the conformal-map form and the same contour in the
     /// arclength representation are near (their points lie at different
