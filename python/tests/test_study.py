@@ -22,7 +22,7 @@ GRID = dict(theta_deg=[60, 90], h=[1e-5, 2e-5], force=[None, 0.0, -1.0])
 
 def same(a, b):
     assert len(a) == len(b) == 12
-    for key in ("theta_deg", "h", "load", "force", "a", "b", "delta"):
+    for key in ("theta_deg", "h", "load", "force", "a", "b", "delta", "estimate", "estimate_within"):
         x, y = getattr(a, key), getattr(b, key)
         assert np.array_equal(np.isnan(x), np.isnan(y)) and np.allclose(x[~np.isnan(x)], y[~np.isnan(y)], rtol=1e-12), key
     assert a.model == b.model and a.error == b.error
@@ -51,6 +51,15 @@ def test_a_study_is_every_point_of_its_grid_in_order_none_dropped(serial):
     assert all(e is None for k, e in enumerate(st.error) if k % 3 != 2)
     # at 90 degrees the layer of finite thickness answers the pull-off
     assert st.model[6] == "layer" and st.model[0] == "exact"
+    # the layer's estimate where (2) answers the pull-off (at 60 degrees
+    # the ratio of rho = 1, with no bound for these coatings), NaN elsewhere
+    for k, a in enumerate(st.answers):
+        e = None if a is None else a.layer_estimate
+        if e is None:
+            assert math.isnan(st.estimate[k]) and math.isnan(st.estimate_within[k]), k
+        else:
+            assert st.estimate[k] == e["force"] and math.isnan(st.estimate_within[k]) == (e["within"] is None), k
+    assert [k for k in range(12) if not math.isnan(st.estimate[k])] == [0, 3]
     assert "12 points, 8 answered, 4 without an answer" in repr(st)
 
 

@@ -577,7 +577,11 @@ class Study:
     ``delta`` (m), NaN where the point has none; lists ``model`` (the model
     that answered, None where none did), ``answers`` (each point's
     :class:`Physical`, or None) and ``error`` (why a point has no answer, in
-    words, else None). No point is dropped."""
+    words, else None); where (2) answered coatings the layer does not reach,
+    ``estimate`` holds the best estimate of the layer's pull-off force (N)
+    and ``estimate_within`` its bound, relative (:class:`Physical`'s
+    ``layer_estimate``; NaN where there is none, or no bound is measured).
+    No point is dropped."""
 
     def __init__(self, points, outcomes):
         self.theta_deg = _np.array([p[0] for p in points], dtype=float)
@@ -590,6 +594,13 @@ class Study:
             return _np.array([_np.nan if a is None else getattr(a, key) for a in self.answers], dtype=float)
 
         self.force, self.a, self.b, self.delta = si("force"), si("a"), si("b"), si("delta")
+
+        def estimated(key):
+            values = [None if a is None or a.layer_estimate is None else a.layer_estimate[key]
+                      for a in self.answers]
+            return _np.array([_np.nan if v is None else v for v in values], dtype=float)
+
+        self.estimate, self.estimate_within = estimated("force"), estimated("within")
         self.model = [None if a is None else a.model for a in self.answers]
 
     def __len__(self) -> int:

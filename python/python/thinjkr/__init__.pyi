@@ -153,6 +153,8 @@ class Study:
     a: np.ndarray
     b: np.ndarray
     delta: np.ndarray
+    estimate: np.ndarray
+    estimate_within: np.ndarray
     model: List[Optional[str]]
     answers: List[Optional[Physical]]
     error: List[Optional[str]]
