@@ -446,10 +446,14 @@ pub fn physical(
                 "the layer of finite thickness has no answer to measure (2) against: {e}"
             )),
         }
-    } else if question == Question::PullOff {
-        // at ρ < 1 the layer's pull-off in the plane, where the grid
-        // solver reaches these coatings (it is slow: a ladder of grids)
-        if let Some(layered) = in_the_plane(cyl, row, &mut answer)? {
+    } else {
+        // at ρ < 1 the layer in the plane, where it reaches these coatings
+        // (it is slow: a ladder of rungs)
+        let layered = match question {
+            Question::PullOff => in_the_plane(cyl, row, &mut answer)?,
+            Question::AtControl => at_control_in_the_plane(cyl, row, &mut answer, force, delta)?,
+        };
+        if let Some(layered) = layered {
             return Ok(layered);
         }
     }
@@ -704,15 +708,29 @@ fn in_the_plane(
             crate::error::short(h)
         ));
     }
-    let mut layered = match Choice::Layer(layers).physical(cyl, None, None) {
+    let layered = match Choice::Layer(layers).physical(cyl, None, None) {
         Ok(layered) => layered,
         // (a stop the caller asked for stops the answer too)
         Err(e) if crate::newton::stop_requested() => return Err(e),
         Err(e) => return estimate(format!("the layer in the plane has no answer: {e}")),
     };
     let error = thin_layer_error(&thin.state, &layered.state, None, None);
+    Ok(Some(beside_thin(layered, thin, row, error, "the pull-off")))
+}
+
+/// The layer in the plane's answer `layered`, with (2)'s `thin` (by the
+/// table's `row`) beside it, `error` apart, as the answer at ρ < 1 when no
+/// model is named (`what`: the question it answers, in words).
+fn beside_thin(
+    mut layered: PhysicalAnswer,
+    thin: &PhysicalAnswer,
+    row: &DefaultRow,
+    error: f64,
+    what: &str,
+) -> PhysicalAnswer {
+    let reach = crate::layer::plane::PULL_OFF_REACH;
     layered.chosen_because = Some(format!(
-        "no model named: at rho < 1 the layer of finite thickness answers the pull-off in the plane where it reaches the coatings (h/L from {} to {}) and the thin-layer equation (2) is more than {} % off it (here {} %; (2)'s answer, by {}, is beside it)",
+        "no model named: at rho < 1 the layer of finite thickness answers {what} in the plane where it reaches the coatings (h/L from {} to {}) and the thin-layer equation (2) is more than {} % off it (here {} %; (2)'s answer, by {}, is beside it)",
         crate::error::short(reach.0),
         crate::error::short(reach.1),
         THIN_LAYER_TOLERANCE * 100.0,
@@ -725,7 +743,62 @@ fn in_the_plane(
         si: thin.si,
         relative_error: error,
     });
-    Ok(Some(layered))
+    layered
+}
+
+/// The state at the force `force` (N) or approach `delta` (m) of the
+/// contact `cyl` at ρ < 1 by the layer in the plane when no model is
+/// named, where (2)'s answer `thin` (by the table's `row`) is more than
+/// [`THIN_LAYER_TOLERANCE`] off it on the answered quantities (the size and
+/// the approach at a force, the size and the force at an approach): the
+/// layer's state with (2)'s beside it. Where the layer in the plane does
+/// not reach these coatings, or has no state there (a force below its
+/// pull-off), `None`, and `thin` gains a warning that says so.
+fn at_control_in_the_plane(
+    cyl: &crate::units::Cylinders,
+    row: &DefaultRow,
+    thin: &mut PhysicalAnswer,
+    force: Option<f64>,
+    delta: Option<f64>,
+) -> crate::Result<Option<PhysicalAnswer>> {
+    let sc = cyl.scales()?;
+    let no_answer = |thin: &mut PhysicalAnswer, e: crate::Error| {
+        thin.warnings.push(format!(
+            "the layer of finite thickness has no answer to measure (2) against: {e}"
+        ));
+        Ok(None)
+    };
+    let layers = match layers_of(cyl, &sc) {
+        Ok(layers) => layers,
+        Err(e) => return no_answer(thin, e),
+    };
+    if let Some(h) = crate::layer::plane::beyond_reach(&layers) {
+        let reach = crate::layer::plane::PULL_OFF_REACH;
+        thin.warnings.push(format!(
+            "(2)'s state is not measured against the layer of finite thickness at rho < 1 for these coatings: the layer in the plane reaches h/L from {} to {} only, and these have h/L = {}",
+            crate::error::short(reach.0),
+            crate::error::short(reach.1),
+            crate::error::short(h)
+        ));
+        return Ok(None);
+    }
+    let layered = match Choice::Layer(layers).physical(cyl, force, delta) {
+        Ok(layered) => layered,
+        // (a stop the caller asked for stops the answer too)
+        Err(e) if crate::newton::stop_requested() => return Err(e),
+        Err(e) => return no_answer(thin, e),
+    };
+    let error = thin_layer_error(&thin.state, &layered.state, force, delta);
+    if error <= THIN_LAYER_TOLERANCE {
+        return Ok(None);
+    }
+    Ok(Some(beside_thin(
+        layered,
+        thin,
+        row,
+        error,
+        "a state at a given force or approach",
+    )))
 }
 
 impl Choice {

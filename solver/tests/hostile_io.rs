@@ -38,7 +38,7 @@ fn standard_error_gets_the_care_standard_output_gets() {
     std::fs::write(&contact, CONTACT).unwrap();
     // ρ = 0.31 is outside the paper's range: the answer comes with a warning
     let (status, out, err) = bash(&format!(
-        "\"$0\" physical --file {} --force 0 --explain 2>/dev/full",
+        "\"$0\" physical --file {} --force 0 --model energy --explain 2>/dev/full",
         contact.display()
     ));
     assert_eq!(status, Some(1), "{out}{err}");
