@@ -301,14 +301,22 @@ def test_a_conformal_curve_has_the_pull_off_on_its_second_arm():
 
 
 def test_physical_units():
-    # rho = 1/3 and h/a = 0.19: both warnings of the command line
-    with pytest.warns(thinjkr.ThinJkrWarning):
-        st = thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6,
+    # rho = 1/3, coatings (h/L = 0.18) thinner than the layer in the plane
+    # reaches: the command line's warnings, among them that (2)'s state is
+    # not measured against the layer there
+    with pytest.warns(thinjkr.ThinJkrWarning, match="not measured against the layer"):
+        st = thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e-5, h2=1e-5, g1=1e6, g2=1e6,
                               work_of_adhesion=0.05, force=0.0)
     assert st.a > 0 and st.force == pytest.approx(0.0, abs=1e-12)
     # a state at a force, no model named: the table of defaults' energy
     assert abs(st.state.force_bar) < 1e-9 and st.state.model == "energy" and st.model == "energy"
     assert st.chosen_because.startswith("no model named: energy answers a state at a given force")
+    # ten times thicker (h/L = 0.58), which the layer in the plane reaches:
+    # its state, with energy's beside it (issue 71, item 4)
+    thick = thinjkr.physical(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6,
+                             work_of_adhesion=0.05, force=0.0)
+    assert thick.model == "layer" and thick.thin_layer.model == "energy"
+    assert thick.thin_layer.relative_error > 0.5 and thick.a < thick.thin_layer.si["a"]
 
 
 def test_states_index_iterate_and_export():
