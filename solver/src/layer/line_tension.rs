@@ -710,6 +710,57 @@ mod tests {
             .collect()
     }
 
+    /// THINJKR_SHARP_RUNGS's rungs ("16x6/16/64,…"), else those of
+    /// `default`.
+    fn sharp_rungs(default: &str) -> Vec<crate::layer::sharp::Resolution> {
+        env_list::<String>("THINJKR_SHARP_RUNGS", default)
+            .iter()
+            .map(|r| {
+                let n: Vec<usize> = r.split(['x', '/']).map(|x| x.parse().unwrap()).collect();
+                crate::layer::sharp::Resolution::rung(n[0], n[1], n[2], n[3])
+            })
+            .collect()
+    }
+
+    /// The explorations' traces by arclength: steps from 1e-7 to 0.02 in
+    /// u, at most `max_steps`, to the first force minimum (the folds and
+    /// bifurcations noted).
+    fn to_the_force_minimum(
+        max_steps: usize,
+    ) -> (crate::continuation::Settings, crate::continuation::Watch) {
+        use crate::continuation::{On, Settings, Watch};
+        let settings = Settings {
+            step: 0.005,
+            min_step: 1e-7,
+            max_step: 0.02,
+            turn: 0.95,
+            max_steps,
+            ..Settings::default()
+        };
+        let watch = Watch {
+            size_fold: On::Note,
+            displacement_fold: On::Note,
+            force_minimum: On::Stop,
+            bifurcation: On::Note,
+            crossing: None,
+        };
+        (settings, watch)
+    }
+
+    /// A trace's events in words, each with the point before it.
+    fn events_in_words(tr: &crate::continuation::Trace<Dyn>) -> Vec<String> {
+        tr.events
+            .iter()
+            .map(|e| {
+                let p = &tr.points[e.between[0]];
+                format!(
+                    "{:?} near a {:.5} delta {:.5} F {:.7}",
+                    e.kind, p.a_bar, p.delta_bar, p.force
+                )
+            })
+            .collect()
+    }
+
     /// The sharp edge's pull-off started from the line tension's contact
     /// line and approach (its first rung walks δ̄ over ±0.03 about the line
     /// tension's in 6 steps, or THINJKR_SEED_WALK): at THINJKR_TENSION_RHOS (default 0.5) and
@@ -721,17 +772,11 @@ mod tests {
     #[test]
     #[ignore = "exploration: prints the sharp edge's pull-offs from the line tension's"]
     fn explore_the_sharp_edge_from_the_line_tension() {
-        use crate::layer::sharp::{pull_off_ladder_from, Domain, Resolution};
+        use crate::layer::sharp::{pull_off_ladder_from, Domain};
         use crate::layer::thin::edge_shift;
         use crate::layer::Layers;
         let list = env_list::<String>;
-        let rungs: Vec<Resolution> = list("THINJKR_SHARP_RUNGS", "16x6/16/64,20x8/16/64")
-            .iter()
-            .map(|r| {
-                let n: Vec<usize> = r.split(['x', '/']).map(|x| x.parse().unwrap()).collect();
-                Resolution::rung(n[0], n[1], n[2], n[3])
-            })
-            .collect();
+        let rungs = sharp_rungs("16x6/16/64,20x8/16/64");
         // THINJKR_SEED_WALK = "below,above,steps" about the line tension's δ̄
         let seed: Vec<f64> = list("THINJKR_SEED_WALK", "0.03,0.03,6")
             .iter()
@@ -979,7 +1024,7 @@ mod tests {
     #[test]
     #[ignore = "exploration: prints the line tension's pull-offs traced by arclength"]
     fn explore_the_line_tension_by_arclength() {
-        use crate::continuation::{trace, EventKind, On, Settings, Watch};
+        use crate::continuation::{trace, EventKind};
         use crate::layer::thin::edge_shift;
         use crate::layer::Layers;
         let list = env_list::<f64>;
@@ -1024,34 +1069,10 @@ mod tests {
                     });
                     let lin = crate::continuation::Family::linearise(&family, &start).unwrap();
                     let towards = -lin.force_grad.clone();
-                    let settings = Settings {
-                        step: 0.005,
-                        min_step: 1e-7,
-                        max_step: 0.02,
-                        turn: 0.95,
-                        max_steps: 400,
-                        ..Settings::default()
-                    };
-                    let watch = Watch {
-                        size_fold: On::Note,
-                        displacement_fold: On::Note,
-                        force_minimum: On::Stop,
-                        bifurcation: On::Note,
-                        crossing: None,
-                    };
+                    let (settings, watch) = to_the_force_minimum(400);
                     match trace(&family, start, &towards, settings, watch, |_| false) {
                         Ok(tr) => {
-                            let events: Vec<String> = tr
-                                .events
-                                .iter()
-                                .map(|e| {
-                                    let p = &tr.points[e.between[0]];
-                                    format!(
-                                        "{:?} near a {:.5} delta {:.5} F {:.7}",
-                                        e.kind, p.a_bar, p.delta_bar, p.force
-                                    )
-                                })
-                                .collect();
+                            let events = events_in_words(&tr);
                             let Some(m) = tr.located(EventKind::ForceMinimum) else {
                                 println!(
                                     "  b {bk:.4}: no minimum in {} points, ended {:?}; {events:?}",
@@ -1093,32 +1114,14 @@ mod tests {
     #[test]
     #[ignore = "exploration: prints the line tension's pull-offs traced down from a large contact"]
     fn explore_the_line_tension_from_a_large_contact() {
-        use crate::continuation::{trace, EventKind, Family, On, Settings, Watch};
+        use crate::continuation::{trace, EventKind, Family, On, Watch};
         use crate::control::Quantity;
         use crate::layer::thin::edge_shift;
         use crate::layer::Layers;
         let list = env_list::<f64>;
         let from_a = list("THINJKR_TENSION_FROM_A", "2.65")[0];
-        let settings = Settings {
-            step: 0.005,
-            min_step: 1e-7,
-            max_step: 0.02,
-            turn: 0.95,
-            max_steps: 2000,
-            ..Settings::default()
-        };
-        let events = |tr: &crate::continuation::Trace<Dyn>| -> Vec<String> {
-            tr.events
-                .iter()
-                .map(|e| {
-                    let p = &tr.points[e.between[0]];
-                    format!(
-                        "{:?} near a {:.5} delta {:.5} F {:.7}",
-                        e.kind, p.a_bar, p.delta_bar, p.force
-                    )
-                })
-                .collect()
-        };
+        let (settings, watch) = to_the_force_minimum(2000);
+        let events = events_in_words;
         for rho in list("THINJKR_TENSION_RHOS", "0.5") {
             let (st, _) = pull_off_resolved(rho).unwrap();
             let ex = Exact::of_state(&st).unwrap();
@@ -1184,13 +1187,6 @@ mod tests {
                     shift: b,
                 });
                 let down = -family.a_bar_gradient();
-                let watch = Watch {
-                    size_fold: On::Note,
-                    displacement_fold: On::Note,
-                    force_minimum: On::Stop,
-                    bifurcation: On::Note,
-                    crossing: None,
-                };
                 match trace(&family, u, &down, settings, watch, |_| false) {
                     Ok(tr) => match tr.located(EventKind::ForceMinimum) {
                         Some(m) => {
@@ -1235,17 +1231,10 @@ mod tests {
     #[test]
     #[ignore = "exploration: prints the sharp edge's pull-offs walked down in h/L"]
     fn explore_the_sharp_edge_walked_in_thickness() {
-        use crate::layer::sharp::{pull_off_ladder, pull_off_ladder_from, Resolution};
+        use crate::layer::sharp::{pull_off_ladder, pull_off_ladder_from};
         use crate::layer::thin::edge_shift;
         use crate::layer::Layers;
-        let rungs: Vec<Resolution> =
-            env_list::<String>("THINJKR_SHARP_RUNGS", "16x6/16/64,24x6/16/64,32x6/24/96")
-                .iter()
-                .map(|r| {
-                    let n: Vec<usize> = r.split(['x', '/']).map(|x| x.parse().unwrap()).collect();
-                    Resolution::rung(n[0], n[1], n[2], n[3])
-                })
-                .collect();
+        let rungs = sharp_rungs("16x6/16/64,24x6/16/64,32x6/24/96");
         let list = env_list::<f64>;
         let (from, to) = (
             list("THINJKR_WALK_FROM", "0.2")[0],
