@@ -774,8 +774,32 @@ fn at_control_in_the_plane(
     };
     if let Some(h) = crate::layer::plane::beyond_reach(&layers) {
         let reach = crate::layer::plane::PULL_OFF_REACH;
-        thin.warnings.push(format!(
-            "(2)'s state is not measured against the layer of finite thickness at rho < 1 for these coatings: the layer in the plane reaches h/L from {} to {} only, and these have h/L = {}",
+        // how far (2) is off the layer at ρ = 1 for the same coatings (h/L)
+        // at the same control in the units (17), where both have a state
+        let hold = match (force, delta) {
+            (Some(f), _) => Hold::Force(f / sc.force),
+            (None, d) => Hold::Delta(d.unwrap_or(0.0) / sc.approach),
+        };
+        let on_circle = Choice::Layer(layers)
+            .state(1.0, hold)
+            .and_then(|layer| {
+                let thin_model = parse(default_row(Question::AtControl, 1.0).model)
+                    .map_err(crate::Error::Usage)?;
+                let circle = thin_model.state(1.0, hold)?;
+                Ok(thin_layer_error(&circle, &layer, force, delta))
+            })
+            .map_or_else(
+                |e| format!("at rho = 1 no state of the layer at {hold} (units (17)) to compare: {e}"),
+                |error| {
+                    format!(
+                        "at rho = 1 (2) is {} % off the layer at {hold} (units (17)) for coatings this thin",
+                        crate::error::short(100.0 * error)
+                    )
+                },
+            );
+        // first: it is about the answer itself
+        thin.warnings.insert(0, format!(
+            "(2)'s state is not measured against the layer of finite thickness at rho < 1 for these coatings: the layer in the plane reaches h/L from {} to {} only, and these have h/L = {}; {on_circle}",
             crate::error::short(reach.0),
             crate::error::short(reach.1),
             crate::error::short(h)

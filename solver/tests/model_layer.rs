@@ -789,15 +789,38 @@ fn physical_at_a_force_below_ninety_degrees_answers_with_the_layer_in_the_plane(
         why.contains("answers a state at a given force or approach in the plane"),
         "{why}"
     );
-    let thinner = thinjkr::registry::physical(None, &coated(60.0, 1e-5), Some(0.0), None).unwrap();
+    let thin_cyl = coated(60.0, 1e-5);
+    let thinner = thinjkr::registry::physical(None, &thin_cyl, Some(0.0), None).unwrap();
     assert_eq!(thinner.model, "energy");
     assert!(thinner.thin_layer.is_none());
+    // first, the warning that says so, with (2)'s error at ρ = 1 for the
+    // same h/L at zero force: against (2)'s circle in closed form, ā³ = 24
+    // (F̄ = π(ā⁶ − 24ā³)/96 = 0), δ̄ = ā²/4 − 2/ā, the larger of the
+    // relative errors in ā and δ̄
+    let w = &thinner.warnings[0];
     assert!(
-        thinner
-            .warnings
-            .iter()
-            .any(|w| w.starts_with("(2)'s state is not measured against the layer")),
-        "{:?}",
-        thinner.warnings
+        w.starts_with("(2)'s state is not measured against the layer"),
+        "{w}"
+    );
+    let said: f64 = w
+        .split("at rho = 1 (2) is ")
+        .nth(1)
+        .and_then(|r| r.split(" % off").next())
+        .unwrap_or_else(|| panic!("{w}"))
+        .parse()
+        .unwrap();
+    let thinness = 1e-5 / thin_cyl.scales().unwrap().length;
+    let layers = thinjkr::layer::Layers::equal(thinness, 0.5).unwrap();
+    let layer = Choice::Layer(layers).state(1.0, Hold::Force(0.0)).unwrap();
+    let (a_layer, _, d_layer, _) = layer.size_and_load();
+    let a_circle = 24f64.cbrt();
+    let d_circle = a_circle * a_circle / 4.0 - 2.0 / a_circle;
+    let error = ((a_circle - a_layer) / a_layer)
+        .abs()
+        .max(((d_circle - d_layer) / d_layer).abs());
+    assert!(
+        (said / (100.0 * error) - 1.0).abs() < 1e-4,
+        "{said} % against {} %",
+        100.0 * error
     );
 }
