@@ -789,7 +789,7 @@ fn at_control_in_the_plane(
                 Ok(thin_layer_error(&circle, &layer, force, delta))
             })
             .map_or_else(
-                |e| format!("at rho = 1 no state of the layer at {hold} (units (17)) to compare: {e}"),
+                |e| format!("at rho = 1 there is no pair of states at {hold} (units (17)) to compare: {e}"),
                 |error| {
                     format!(
                         "at rho = 1 (2) is {} % off the layer at {hold} (units (17)) for coatings this thin",
@@ -797,6 +797,8 @@ fn at_control_in_the_plane(
                     )
                 },
             );
+        // (a stop the caller asked for stops the answer too)
+        crate::newton::check_stop()?;
         // first: it is about the answer itself
         thin.warnings.insert(0, format!(
             "(2)'s state is not measured against the layer of finite thickness at rho < 1 for these coatings: the layer in the plane reaches h/L from {} to {} only, and these have h/L = {}; {on_circle}",
