@@ -21,6 +21,16 @@ def run_json(cli, *args):
     return json.loads(out)
 
 
+def examples_contact(theta_deg, h):
+    """The examples' contact (r = 10 mm, G' = 1 MPa, work of adhesion
+    0.05 J/m^2) at the crossing angle theta_deg with both coatings h thick:
+    physical()'s keywords and the command line's arguments."""
+    contact = dict(r1=0.01, r2=0.01, theta_deg=theta_deg, h1=h, h2=h, g1=1e6, g2=1e6, work_of_adhesion=0.05)
+    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", f"{theta_deg}", "--h1", f"{h}", "--h2", f"{h}",
+            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    return contact, args
+
+
 def close(x, y, rel=1e-12):
     return math.isclose(x, y, rel_tol=rel, abs_tol=1e-12)
 
@@ -394,9 +404,7 @@ def test_physical_takes_a_model_and_warns_as_the_command_line(cli):
     import warnings
 
     # theta = 60 degrees: rho = 1/3, below the paper's range, within conformal:K's
-    contact = dict(r1=0.01, r2=0.01, theta_deg=60, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6, work_of_adhesion=0.05)
-    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "60", "--h1", "1e-4", "--h2", "1e-4",
-            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    contact, args = examples_contact(60, 1e-4)
     for model in ["max", "energy", "conformal:8", "exact"]:
         with warnings.catch_warnings(record=True) as w:
             warnings.simplefilter("always")
@@ -438,9 +446,7 @@ def test_physical_without_a_model_is_the_command_lines_default(cli):
     the same numbers and words as the command line."""
     import warnings
 
-    contact = dict(r1=0.01, r2=0.01, theta_deg=60, h1=2e-5, h2=2e-5, g1=1e6, g2=1e6, work_of_adhesion=0.05)
-    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "60", "--h1", "2e-5", "--h2", "2e-5",
-            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    contact, args = examples_contact(60, 2e-5)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
         st = thinjkr.physical(**contact)
@@ -489,9 +495,7 @@ def test_physical_at_ninety_degrees_answers_with_the_layer_and_2_beside_it(cli):
     layer of finite thickness where (2) is more than 0.5 % off, with (2)'s
     answer under thin_layer; the same numbers as the command line, also
     with nu1 = nu2 = 0.45."""
-    contact = dict(r1=0.01, r2=0.01, theta_deg=90, h1=1e-4, h2=1e-4, g1=1e6, g2=1e6, work_of_adhesion=0.05)
-    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "90", "--h1", "1e-4", "--h2", "1e-4",
-            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    contact, args = examples_contact(90, 1e-4)
     for nu, extra in [(0.5, []), (0.45, ["--nu1", "0.45", "--nu2", "0.45"])]:
         st = thinjkr.physical(**contact, nu1=nu, nu2=nu)
         d = run_json(cli, *args, *extra)
@@ -618,9 +622,7 @@ def test_physical_leads_with_the_layer_s_estimate_where_it_is_nearer_than_2(cli)
     estimate is the command line's JSON's."""
     import warnings
 
-    contact = dict(r1=0.01, r2=0.01, theta_deg=83.63, h1=1.5e-5, h2=1.5e-5, g1=1e6, g2=1e6, work_of_adhesion=0.05)
-    args = ["physical", "--r1", "0.01", "--r2", "0.01", "--theta-deg", "83.63", "--h1", "1.5e-5", "--h2", "1.5e-5",
-            "--g1", "1e6", "--g2", "1e6", "--work-of-adhesion", "0.05"]
+    contact, args = examples_contact(83.63, 1.5e-5)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
         st = thinjkr.physical(**contact)
