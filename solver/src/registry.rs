@@ -778,7 +778,12 @@ fn at_control_in_the_plane(
         // at the same control in the units (17), where both have a state
         let hold = match (force, delta) {
             (Some(f), _) => Hold::Force(f / sc.force),
-            (None, d) => Hold::Delta(d.unwrap_or(0.0) / sc.approach),
+            (None, Some(d)) => Hold::Delta(d / sc.approach),
+            (None, None) => {
+                return Err(crate::Error::Usage(
+                    "a state is asked at a force or an approach".into(),
+                ))
+            }
         };
         let on_circle = Choice::Layer(layers)
             .state(1.0, hold)

@@ -68,6 +68,12 @@ pub struct LayerEstimate {
 }
 
 impl LayerEstimate {
+    /// Its bound where it leads, else `None`.
+    #[cfg(feature = "cli")]
+    pub(crate) fn leading_bound(&self) -> Option<f64> {
+        self.within.filter(|_| self.leads)
+    }
+
     /// The estimate `force` (N) made `by`, within `within` (relative;
     /// `None` where not measured), against which (2) is `thin_layer_error`
     /// off; it leads where its bound is below that error.

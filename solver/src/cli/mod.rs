@@ -1213,12 +1213,12 @@ fn physical(
     }
     // where the layer's estimate is nearer it than (2) is, the estimate
     // first and (2)'s answer beside it
-    let leading = layer_estimate.filter(|e| e.leads);
-    if let Some(e) = &leading {
-        outln!("{}", estimate_line(e, sc.rho));
+    let leading = layer_estimate.and_then(|e| e.leading_bound().map(|within| (e, within)));
+    if let Some((e, within)) = &leading {
+        outln!("{}", estimate_line(e, *within, sc.rho));
     }
     match leading {
-        Some(e) if !output::explain() => outln!(
+        Some((e, _)) if !output::explain() => outln!(
             "  the thin-layer equation (2) ({model_name}): a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N, {} % off",
             si.a,
             si.b,
@@ -1299,13 +1299,13 @@ fn thin_layer_line(t: &crate::report::ThinLayer) -> String {
     )
 }
 
-/// `physical`'s first line where the layer's estimate `e` leads: the
-/// pull-off force, its bound and how it is made.
-fn estimate_line(e: &crate::report::LayerEstimate, rho: f64) -> String {
+/// `physical`'s first line where the layer's estimate `e` leads, `within`
+/// its bound: the pull-off force, its bound and how it is made.
+fn estimate_line(e: &crate::report::LayerEstimate, within: f64, rho: f64) -> String {
     format!(
         "physical: pull-off force = {:.6e} N (the layer of finite thickness, estimated within {} % by {}), rho = {}",
         e.force,
-        crate::error::short(100.0 * e.within.unwrap_or(f64::NAN)),
+        crate::error::short(100.0 * within),
         e.by.words(),
         output::num(rho)
     )
