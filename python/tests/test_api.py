@@ -636,3 +636,30 @@ def test_physical_leads_with_the_layer_s_estimate_where_it_is_nearer_than_2(cli)
     assert lines[1] == f"  (2): model='conformal:8', force={st.force:.6g} N, {100 * e['thin_layer_error']:.3g} % off"
     assert lines[2].startswith("  warning: (2) is ")
 
+
+def test_a_state_below_the_plane_s_reach_leads_with_the_line_tension_s_state(cli):
+    """Issue 71: the same coatings at zero force. The layer's state
+    estimated by the line tension at the shifted approach, within 6.0 %
+    where (2) is 19.7 % off, leads the repr with its size, approach and
+    force, and (2)'s state is beside it; the estimate is the command line's
+    JSON's."""
+    import warnings
+
+    contact, args = examples_contact(83.63, 1.5e-5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", thinjkr.ThinJkrWarning)
+        st = thinjkr.physical(**contact, force=0.0)
+    d = run_json(cli, *args, "--force", "0")
+    e = st.layer_estimate
+    assert e == d["layer_estimate"]
+    assert e["by"] == "shifted_line_tension" and e["leads"] is True and e["within"] < e["thin_layer_error"]
+    s = e["state"]
+    assert s["force"] == e["force"] and 0.0 < s["b"] < s["a"]
+    lines = repr(st).splitlines()
+    assert lines[0] == (f"Physical(a={s['a']:.6g} m, delta={s['delta']:.6g} m, force={e['force']:.6g} N: "
+                        f"the layer of finite thickness's state, estimated within {100 * e['within']:.2g} % "
+                        f"by shifted_line_tension)"), lines[0]
+    assert lines[1] == (f"  (2): model={st.model!r}, a={st.a:.6g} m, delta={st.delta:.6g} m, force={st.force:.6g} N, "
+                        f"{100 * e['thin_layer_error']:.3g} % off"), lines[1]
+    assert lines[2].startswith("  warning: (2)'s state is ")
+

@@ -606,6 +606,109 @@ fn judged_by_line_tension(
     true
 }
 
+/// Whether the line tension at the shifted approach judges (2)'s state
+/// `thin` at `hold` (units (17)) for `layers` thinner than the layer in the
+/// plane reaches, from `line_tension::STATE_ESTIMATE_FROM_RHO` up: (2)'s
+/// state stands, with a warning and the layer's estimated state
+/// (`line_tension::state_estimate`) where (2) is more than
+/// [`THIN_LAYER_TOLERANCE`] off it on the answered quantities. Its bound:
+/// `STATE_ESTIMATE_ERROR` times the circle's remainder (the axisymmetric
+/// layer less the estimate at ρ = 1, the same coatings and control).
+/// False below that ρ, for compressible coatings and where either estimate
+/// or the circle's layer has no state.
+fn state_judged_by_line_tension(
+    cyl: &crate::units::Cylinders,
+    layers: &crate::layer::Layers,
+    sc: &crate::units::Scales,
+    hold: Hold,
+    thin: &mut PhysicalAnswer,
+) -> bool {
+    use crate::layer::line_tension::{
+        state_estimate, STATE_DEPARTURE_OVER_CIRCLE, STATE_ESTIMATE_ERROR, STATE_ESTIMATE_FROM_RHO,
+    };
+    if sc.rho < STATE_ESTIMATE_FROM_RHO * (1.0 - 1e-12) || sc.rho >= 1.0 {
+        return false;
+    }
+    let Ok(estimate) = state_estimate(layers, sc.rho, hold) else {
+        return false;
+    };
+    let (Ok(on_circle), Ok(layer)) = (
+        state_estimate(layers, 1.0, hold),
+        layers.state(hold, crate::layer::Route::Griffith),
+    ) else {
+        return false;
+    };
+    // the answered quantities: the size and, at a force, the approach, at
+    // an approach, the force; each with the circle's remainder
+    let at_force = matches!(hold, Hold::Force(_));
+    let (second, second_remainder, second_of) = if at_force {
+        (
+            estimate.delta_bar,
+            layer.delta_bar - on_circle.delta_bar,
+            "delta",
+        )
+    } else {
+        (
+            estimate.force_bar,
+            layer.force_bar - on_circle.force_bar,
+            "force",
+        )
+    };
+    let a_remainder = layer.a_bar - on_circle.half_widths.0;
+    let a = estimate.half_widths.0;
+    // the approach or force relative to itself, or to 1 (units (17)) where
+    // it is smaller: each passes through zero along the branch
+    let scale = second.abs().max(1.0);
+    let within = STATE_ESTIMATE_ERROR
+        * (a_remainder / a)
+            .abs()
+            .max((second_remainder / scale).abs());
+    let (thin_a, _, thin_delta, thin_force) = thin.state.size_and_load();
+    let thin_second = if at_force { thin_delta } else { thin_force };
+    let error = ((thin_a - a) / a)
+        .abs()
+        .max(((thin_second - second) / scale).abs());
+    if !(error > THIN_LAYER_TOLERANCE) {
+        return error.is_finite();
+    }
+    let within = within.is_finite().then_some(within);
+    let mut e = crate::report::LayerEstimate::new(
+        estimate.force_bar * sc.force,
+        within,
+        crate::report::EstimateBy::ShiftedLineTension,
+        error,
+    );
+    let Ok(si) = cyl.si(
+        sc,
+        a,
+        estimate.half_widths.1,
+        estimate.delta_bar,
+        estimate.force_bar,
+    ) else {
+        return false;
+    };
+    e.state = Some(si);
+    thin.layer_estimate = Some(e);
+    // first: it is about the answer's state itself
+    thin.warnings.insert(0, format!(
+        "(2)'s state is {} % off the layer of finite thickness at rho = {} for these coatings (h/L = {}, thinner than the layer in the plane reaches); best estimate of the layer's state: a = {} m, b = {} m, delta = {} m, force = {} N, {}: (2) with the coatings' edge as a line tension kept whole, at the approach moved by the layer's interior by {} m (both of second order in h/L), which the layer in the plane met to third order in h/L, within {} times the circle's departure, at rho = 0.5 to 0.8 where both answer (docs/thickness.md, \"A state at an approach or a force\")",
+        crate::error::short(100.0 * error),
+        crate::error::rounded(sc.rho),
+        thinnesses(layers),
+        crate::error::short(si.a),
+        crate::error::short(si.b),
+        crate::error::short(si.delta),
+        crate::error::short(estimate.force_bar * sc.force),
+        within.map_or("with no bound measured".into(), |w| format!(
+            "within {} % on a and {second_of} (twice the layer's departure from it on the circle)",
+            crate::error::short(100.0 * w)
+        )),
+        crate::error::short(estimate.approach_shift * sc.approach),
+        crate::error::short(STATE_DEPARTURE_OVER_CIRCLE),
+    ));
+    true
+}
+
 /// Each coating's thinness h/L, once where they are equal: "0.2", or
 /// "0.06 and 0.19".
 fn thinnesses(layers: &crate::layer::Layers) -> String {
@@ -774,8 +877,6 @@ fn at_control_in_the_plane(
     };
     if let Some(h) = crate::layer::plane::beyond_reach(&layers) {
         let reach = crate::layer::plane::PULL_OFF_REACH;
-        // how far (2) is off the layer at ρ = 1 for the same coatings (h/L)
-        // at the same control in the units (17), where both have a state
         let hold = match (force, delta) {
             (Some(f), _) => Hold::Force(f / sc.force),
             (None, Some(d)) => Hold::Delta(d / sc.approach),
@@ -785,6 +886,14 @@ fn at_control_in_the_plane(
                 ))
             }
         };
+        let judged = state_judged_by_line_tension(cyl, &layers, &sc, hold, thin);
+        // a stop asked for during the estimate ends the answer there
+        crate::newton::check_stop()?;
+        if judged {
+            return Ok(None);
+        }
+        // how far (2) is off the layer at ρ = 1 for the same coatings (h/L)
+        // at the same control in the units (17), where both have a state
         let on_circle = Choice::Layer(layers)
             .state(1.0, hold)
             .and_then(|layer| {

@@ -47,19 +47,29 @@ pub struct ThinLayer {
 
 /// Where (2) answers `physical` for coatings the layer of finite thickness
 /// does not answer at this ρ: the best estimate of the layer's pull-off
-/// force, the same numbers as the warning that gives it.
+/// force, or of its state at the force or approach asked, the same numbers
+/// as the warning that gives it.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub struct LayerEstimate {
-    /// The estimate of the layer's pull-off force, in newtons.
+    /// The estimate of the layer's pull-off force, in newtons; of a
+    /// state's force where `state` is given (at a force, the force asked).
     pub force: f64,
-    /// Its bound, relative to it; `None` where none is measured for these
-    /// coatings.
+    /// Where the estimate is of a state at a force or an approach: that
+    /// state in SI units (its `force` the same as above); `None` for a
+    /// pull-off.
+    pub state: Option<crate::units::Si>,
+    /// Its bound, relative to it (for a state, the larger on the answered
+    /// quantities: the size and the approach at a force, the size and the
+    /// force at an approach, the approach and the force relative to
+    /// themselves or to 1 in the units (17) where smaller, as they pass
+    /// through zero); `None` where none is measured for these coatings.
     pub within: Option<f64>,
     /// How it is made.
     pub by: EstimateBy,
-    /// (2)'s pull-off force's relative error against it (for `ratio`, at
-    /// ρ = 1).
+    /// (2)'s relative error against it: of the pull-off force (for
+    /// `ratio`, at ρ = 1), or on a state's answered quantities (the
+    /// larger).
     pub thin_layer_error: f64,
     /// Whether it is the answer a person reads first: its bound is measured
     /// and below (2)'s error, so it is nearer the layer than (2) is
@@ -85,6 +95,7 @@ impl LayerEstimate {
     ) -> LayerEstimate {
         LayerEstimate {
             force,
+            state: None,
             within,
             by,
             thin_layer_error,
@@ -102,6 +113,9 @@ pub enum EstimateBy {
     /// (2) with the coatings' edge as a line tension kept whole, plus the
     /// layer's departure from that on the circle (from ρ = 0.65 up).
     LineTension,
+    /// A state: (2) with the coatings' edge as a line tension kept whole,
+    /// at the approach moved by the layer's interior (from ρ = 0.5 up).
+    ShiftedLineTension,
     /// The layer's pull-off at first order in h/L.
     FirstOrder,
     /// (2)'s pull-off times the layer's ratio to it at ρ = 1.
@@ -115,6 +129,9 @@ impl EstimateBy {
     pub(crate) fn words(self) -> &'static str {
         match self {
             EstimateBy::LineTension => "the coatings' edge as a line tension kept whole",
+            EstimateBy::ShiftedLineTension => {
+                "the coatings' edge as a line tension kept whole, at the approach moved by the layer's interior"
+            }
             EstimateBy::FirstOrder => "the first order in h/L",
             EstimateBy::Ratio => "(2)'s ratio to the layer at rho = 1",
         }

@@ -978,3 +978,94 @@ fn physical_leads_with_the_layer_s_estimate_where_it_is_nearer_than_2() {
         "{second}"
     );
 }
+
+/// Below the plane's reach at ρ < 1 (83.63°, ρ = 0.8; h = 15 µm and 5 µm,
+/// h/L = 0.27 and 0.16), a state at zero force leads with the line
+/// tension's state at the shifted approach: the first line is the JSON's
+/// estimate with its bound, the second (2)'s state, and the JSON's error of
+/// (2) is its distance from the estimate on a and delta (the approach
+/// relative to itself or to the approach scale). docs/thickness.md quotes
+/// the two runs' errors and bounds.
+#[test]
+fn physical_at_a_force_below_the_plane_s_reach_leads_with_the_line_tension_s_state() {
+    for (h, error, within) in [("15e-6", 19.7, 6.0), ("5e-6", 10.4, 1.1)] {
+        let args = [
+            "physical",
+            "--r1",
+            "0.01",
+            "--r2",
+            "0.01",
+            "--g1",
+            "1e6",
+            "--g2",
+            "1e6",
+            "--work-of-adhesion",
+            "0.05",
+            "--theta-deg",
+            "83.63",
+            "--h1",
+            h,
+            "--h2",
+            h,
+            "--force",
+            "0",
+        ];
+        let (ok, out, err) = thinjkr(&[&args[..], &["--json"]].concat());
+        assert!(ok, "{err}");
+        let d: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let est = &d["layer_estimate"];
+        assert_eq!(est["by"], "shifted_line_tension", "{d}");
+        assert_eq!(est["leads"], true, "{d}");
+        let state = &est["state"];
+        let num = |v: &serde_json::Value| v.as_f64().unwrap();
+        let (a, b, delta, force) = (
+            num(&state["a"]),
+            num(&state["b"]),
+            num(&state["delta"]),
+            num(&est["force"]),
+        );
+        assert!(b < a && a > 0.0 && b > 0.0, "{state}");
+        // the force asked, to the secant's tolerance
+        assert!(force.abs() < 1e-12 * num(&d["scales"]["force"]), "{force}");
+        // (2)'s error: on a, and on delta relative to itself or to the
+        // approach scale
+        let approach = num(&d["scales"]["approach"]);
+        let on_a = (num(&d["si"]["a"]) / a - 1.0).abs();
+        let on_delta = (num(&d["si"]["delta"]) - delta).abs() / delta.abs().max(approach);
+        let thin_error = num(&est["thin_layer_error"]);
+        assert!(
+            (on_a.max(on_delta) / thin_error - 1.0).abs() < 1e-12,
+            "{on_a} {on_delta} against {thin_error}"
+        );
+        // the numbers docs/thickness.md quotes, to their printed digits
+        assert!((100.0 * thin_error - error).abs() < 0.05, "{thin_error}");
+        assert!((100.0 * num(&est["within"]) - within).abs() < 0.05, "{est}");
+        let (ok, text, err) = thinjkr(&args);
+        assert!(ok, "{err}");
+        let mut lines = text.lines();
+        let first = lines.next().unwrap();
+        let expected = format!(
+            "physical: a = {a:.6e} m, b = {b:.6e} m, delta = {delta:.6e} m, force = {force:.6e} N (the layer of finite thickness, estimated within "
+        );
+        let rest = first
+            .strip_prefix(&expected)
+            .unwrap_or_else(|| panic!("{first}\nnot {expected}"));
+        let (bound, how) = rest.split_once(" % by ").expect("the bound");
+        assert!(
+            (bound.parse::<f64>().unwrap() / (100.0 * num(&est["within"])) - 1.0).abs() < 1e-5,
+            "{bound}"
+        );
+        assert!(
+            how.starts_with(
+                "the coatings' edge as a line tension kept whole, at the approach moved by the layer's interior), rho = 0.8"
+            ),
+            "{how}"
+        );
+        let second = lines.next().unwrap();
+        assert!(
+            second.starts_with("  the thin-layer equation (2) (")
+                && second.contains(&format!("a = {:.6e} m", num(&d["si"]["a"]))),
+            "{second}"
+        );
+    }
+}

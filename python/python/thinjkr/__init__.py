@@ -530,9 +530,12 @@ class Physical(State):
     of finite thickness answered by default, ``thin_layer`` (None
     otherwise); where (2) answered coatings the layer does not answer at
     this angle, ``layer_estimate``: the best estimate of the layer's
-    pull-off, a dict of ``force`` (N), ``within`` (relative, None where
-    not measured), ``by`` ("line_tension", "first_order" or "ratio") and
-    ``thin_layer_error`` and ``leads`` (None otherwise)."""
+    pull-off, or of its state at the force or approach asked, a dict of
+    ``force`` (N), ``state`` (for a state: a dict of ``a``, ``b`` and
+    ``delta`` in m; None for a pull-off), ``within`` (relative, None where
+    not measured), ``by`` ("line_tension", "shifted_line_tension",
+    "first_order" or "ratio") and ``thin_layer_error`` and ``leads`` (None
+    otherwise)."""
 
     def __repr__(self) -> str:
         """The answer on the first line: the force in N with the model that
@@ -545,9 +548,16 @@ class Physical(State):
         estimate = f.get("layer_estimate")
         thin = f.get("thin_layer")
         if isinstance(estimate, dict) and estimate.get("leads"):
-            lines = [f"Physical(force={estimate['force']:.6g} N: the layer of finite thickness's pull-off, "
-                     f"estimated within {100 * estimate['within']:.2g} % by {estimate['by']})",
-                     f"  (2): model={f['model']!r}, force={f['force']:.6g} N, "
+            state = estimate.get("state")
+            if isinstance(state, dict):
+                answer = (f"a={state['a']:.6g} m, delta={state['delta']:.6g} m, force={estimate['force']:.6g} N: "
+                          f"the layer of finite thickness's state")
+                beside = f"a={f['a']:.6g} m, delta={f['delta']:.6g} m, force={f['force']:.6g} N"
+            else:
+                answer = f"force={estimate['force']:.6g} N: the layer of finite thickness's pull-off"
+                beside = f"force={f['force']:.6g} N"
+            lines = [f"Physical({answer}, estimated within {100 * estimate['within']:.2g} % by {estimate['by']})",
+                     f"  (2): model={f['model']!r}, {beside}, "
                      f"{100 * estimate['thin_layer_error']:.3g} % off"]
         else:
             lines = [f"Physical(model={f['model']!r}, force={f['force']:.6g} N, a={f['a']:.6g} m, "
@@ -579,8 +589,9 @@ class Study:
     :class:`Physical`, or None) and ``error`` (why a point has no answer, in
     words, else None); where (2) answered coatings the layer does not reach,
     ``estimate`` holds the best estimate of the layer's pull-off force (N)
-    and ``estimate_within`` its bound, relative (:class:`Physical`'s
-    ``layer_estimate``; NaN where there is none, or no bound is measured).
+    (of the state's force, at a load) and ``estimate_within`` its bound,
+    relative (:class:`Physical`'s ``layer_estimate``; NaN where there is
+    none, or no bound is measured).
     No point is dropped."""
 
     def __init__(self, points, outcomes):

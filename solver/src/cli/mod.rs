@@ -1300,11 +1300,18 @@ fn thin_layer_line(t: &crate::report::ThinLayer) -> String {
 }
 
 /// `physical`'s first line where the layer's estimate `e` leads, `within`
-/// its bound: the pull-off force, its bound and how it is made.
+/// its bound: the pull-off force, or the state, its bound and how it is
+/// made.
 fn estimate_line(e: &crate::report::LayerEstimate, within: f64, rho: f64) -> String {
+    let answer = match &e.state {
+        Some(s) => format!(
+            "a = {:.6e} m, b = {:.6e} m, delta = {:.6e} m, force = {:.6e} N",
+            s.a, s.b, s.delta, e.force
+        ),
+        None => format!("pull-off force = {:.6e} N", e.force),
+    };
     format!(
-        "physical: pull-off force = {:.6e} N (the layer of finite thickness, estimated within {} % by {}), rho = {}",
-        e.force,
+        "physical: {answer} (the layer of finite thickness, estimated within {} % by {}), rho = {}",
         crate::error::short(100.0 * within),
         e.by.words(),
         output::num(rho)

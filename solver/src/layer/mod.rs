@@ -32,8 +32,9 @@
 //! Coatings thin against the contact, below the grid's reach, are taken at
 //! first order in h/L at any ρ by `thin`: (2)'s exact pull-off with the
 //! layer's edge as a line tension. `line_tension` solves that line tension
-//! whole, not linearised: the layer to third order in h/L at ρ = 1 and
-//! 0.8.
+//! whole, not linearised: the layer's pull-off to third order in h/L at
+//! ρ = 1 and 0.8, and with the interior's approach shift its state at a
+//! given approach or force.
 //!
 //! Owns: [`Coating`], [`Layers`], [`Route`], [`LayerState`], [`LayerPullOff`], [`Verdicts`], `Controlled`. May use:
 //! `control` (what a state is held at), `error`, `quadrature` (Gauss–Legendre), `generated` (the layer's kernel), `model` (Brent's minimum),

@@ -21,7 +21,7 @@
 //! incompressible coatings of thickness h). Only incompressible coatings
 //! have (2) as their thin limit; the shift of others is refused.
 //!
-//! Owns: `edge_shift`, `FirstOrder`, `first_order_pull_off`, `first_order_at`. May use:
+//! Owns: `edge_shift`, `approach_shift`, `FirstOrder`, `first_order_pull_off`, `first_order_at`. May use:
 //! `layer` (the pair's compliance), `exact` (the exact pull-off of (2) and
 //! its linearisation), `control`, `quadrature`, `error`.
 
@@ -46,10 +46,18 @@ const TOP: f64 = 40.0;
 /// (2).
 const THIN_LIMIT: f64 = 1e-3;
 
-/// The edge's shift b̄ of `layers` in the units (17): the contact line lies
-/// b̄ inside the contour on which (2)'s solution holds. Only for
-/// incompressible coatings (ν = ½ each).
-pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
+/// The pair's compliance over its thin limit at small k̄: ln(1/N(k̄)) =
+/// ak̄² + ck̄⁴ + … below `k0` = [`BOTTOM`]/h (h the thicker coating),
+/// through its values at `k0` and 2`k0`; with ln(1/N) itself. Only for
+/// incompressible coatings (ν = ½ each), whose thin limit is (2).
+struct LowWaves<F: Fn(f64) -> f64> {
+    log_inverse: F,
+    k0: f64,
+    a: f64,
+    c: f64,
+}
+
+fn low_waves(layers: &Layers) -> Result<LowWaves<impl Fn(f64) -> f64 + '_>> {
     for (c, name) in layers.coatings().iter().zip(["nu1", "nu2"]) {
         if c.nu != 0.5 {
             return Err(Error::OutOfRange {
@@ -61,9 +69,8 @@ pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
     }
     let beta = layers.beta();
     // ln(1/N) at k̄, N = (1 − Φ)/(βk̄³)
-    let log_inverse = |k: f64| -((1.0 - layers.base_share(k)) / (beta * k.powi(3))).ln();
-    let (thick, thin) = (layers.thickest(), layers.thinnest());
-    let k0 = BOTTOM / thick;
+    let log_inverse = move |k: f64| -((1.0 - layers.base_share(k)) / (beta * k.powi(3))).ln();
+    let k0 = BOTTOM / layers.thickest();
     let n0 = (-log_inverse(k0)).exp();
     if (n0 - 1.0).abs() > THIN_LIMIT {
         return Err(Error::Unresolved {
@@ -74,16 +81,35 @@ pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
             residual: (n0 - 1.0).abs(),
         });
     }
-    // [0, k₀]: f = ln(1/N)/k̄² ≈ a + ck̄² through f(k₀) and f(2k₀)
+    // f = ln(1/N)/k̄² ≈ a + ck̄² through f(k₀) and f(2k₀)
     let (f1, f2) = (
         log_inverse(k0) / (k0 * k0),
         log_inverse(2.0 * k0) / (4.0 * k0 * k0),
     );
     let c = (f2 - f1) / (3.0 * k0 * k0);
-    let a = f1 - c * k0 * k0;
+    Ok(LowWaves {
+        log_inverse,
+        k0,
+        a: f1 - c * k0 * k0,
+        c,
+    })
+}
+
+/// The edge's shift b̄ of `layers` in the units (17): the contact line lies
+/// b̄ inside the contour on which (2)'s solution holds. Only for
+/// incompressible coatings (ν = ½ each).
+pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
+    let LowWaves {
+        log_inverse,
+        k0,
+        a,
+        c,
+    } = low_waves(layers)?;
+    let beta = layers.beta();
+    // [0, k₀]: ∫(a + ck̄²)
     let mut sum = a * k0 + c * k0.powi(3) / 3.0;
     // [k₀, K] in ln k̄, panels 0.25 wide
-    let top = TOP / thin;
+    let top = TOP / layers.thinnest();
     let (lo, hi) = (k0.ln(), top.ln());
     let panels = ((hi - lo) / 0.25).ceil() as usize;
     for (t, w) in GaussLegendre::new(16).composite(lo, hi, panels) {
@@ -93,6 +119,18 @@ pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
     // [K, ∞): ∫ ln(βk̄³)/k̄² dk̄ = (ln(βK³) + 3)/K
     sum += ((beta * top.powi(3)).ln() + 3.0) / top;
     Ok(sum / std::f64::consts::PI)
+}
+
+/// The interior's approach shift of `layers` at `rho`, units (17): away
+/// from the edge the layer's contact is (2)'s at the approach δ̄ + Δδ̄.
+/// With N(k̄) = 1 − ak̄² + … the layer's surface displacement is (2)'s
+/// plus a∇̄² of it, and inside the contact (2)'s is δ̄ − φ̄, whose Laplacian
+/// is the gap's, a constant: Δδ̄ = a(1 + 1/ρ)/2, of second order in h/L
+/// (a = 1.800008 (h/L)² for two equal incompressible coatings). It moves
+/// no force minimum (F̄ is stationary in δ̄ there) and no state at a
+/// given force (docs/thickness.md, "A state at an approach or a force").
+pub(crate) fn approach_shift(layers: &Layers, rho: f64) -> Result<f64> {
+    Ok(0.5 * low_waves(layers)?.a * (1.0 + 1.0 / rho))
 }
 
 /// The layer's pull-off at first order in the edge's shift at one ρ.
