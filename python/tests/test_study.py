@@ -22,7 +22,8 @@ GRID = dict(theta_deg=[60, 90], h=[1e-5, 2e-5], force=[None, 0.0, -1.0])
 
 def same(a, b):
     assert len(a) == len(b) == 12
-    for key in ("theta_deg", "h", "load", "force", "a", "b", "delta", "estimate", "estimate_within"):
+    for key in ("theta_deg", "h", "load", "force", "a", "b", "delta", "estimate", "estimate_within", "estimate_a",
+                "estimate_delta"):
         x, y = getattr(a, key), getattr(b, key)
         assert np.array_equal(np.isnan(x), np.isnan(y)) and np.allclose(x[~np.isnan(x)], y[~np.isnan(y)], rtol=1e-12), key
     assert a.model == b.model and a.error == b.error
@@ -61,6 +62,21 @@ def test_a_study_is_every_point_of_its_grid_in_order_none_dropped(serial):
             assert st.estimate[k] == e["force"] and math.isnan(st.estimate_within[k]) == (e["within"] is None), k
     assert [k for k in range(12) if not math.isnan(st.estimate[k])] == [0, 3]
     assert "12 points, 8 answered, 4 without an answer" in repr(st)
+
+
+def test_a_study_at_a_load_carries_the_layer_s_estimated_state():
+    """Near 90 degrees (83.63) with coatings below the plane's reach, a state
+    at zero force is (2)'s with the layer's state estimated beside it: the
+    study's estimate_a and estimate_delta are that estimate's, the pull-off
+    point has none (its estimate is of a force)."""
+    st = thinjkr.study(**CONTACT, theta_deg=[83.63], h=[1.5e-5], force=[None, 0.0])
+    pull_off, at_zero = st.answers
+    e = at_zero.layer_estimate
+    assert e["by"] == "shifted_line_tension"
+    assert st.estimate_a[1] == e["state"]["a"] and st.estimate_delta[1] == e["state"]["delta"]
+    assert st.estimate[1] == e["force"] and st.estimate_within[1] == e["within"]
+    assert pull_off.layer_estimate["state"] is None
+    assert math.isnan(st.estimate_a[0]) and math.isnan(st.estimate_delta[0])
 
 
 def test_a_thread_pool_and_a_process_pool_give_the_same_study(serial):

@@ -591,7 +591,9 @@ class Study:
     ``estimate`` holds the best estimate of the layer's pull-off force (N)
     (of the state's force, at a load) and ``estimate_within`` its bound,
     relative (:class:`Physical`'s ``layer_estimate``; NaN where there is
-    none, or no bound is measured).
+    none, or no bound is measured); at a load, ``estimate_a`` and
+    ``estimate_delta`` hold the estimated state's a and delta (m; NaN
+    where there is none).
     No point is dropped."""
 
     def __init__(self, points, outcomes):
@@ -612,6 +614,13 @@ class Study:
             return _np.array([_np.nan if v is None else v for v in values], dtype=float)
 
         self.estimate, self.estimate_within = estimated("force"), estimated("within")
+
+        def estimated_state(key):
+            states = [None if a is None or a.layer_estimate is None else a.layer_estimate.get("state")
+                      for a in self.answers]
+            return _np.array([_np.nan if s is None else s[key] for s in states], dtype=float)
+
+        self.estimate_a, self.estimate_delta = estimated_state("a"), estimated_state("delta")
         self.model = [None if a is None else a.model for a in self.answers]
 
     def __len__(self) -> int:

@@ -155,6 +155,8 @@ class Study:
     delta: np.ndarray
     estimate: np.ndarray
     estimate_within: np.ndarray
+    estimate_a: np.ndarray
+    estimate_delta: np.ndarray
     model: List[Optional[str]]
     answers: List[Optional[Physical]]
     error: List[Optional[str]]
