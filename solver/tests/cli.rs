@@ -896,6 +896,35 @@ fn the_pull_offs_second_route_is_asked_for_by_a_flag() {
     }
 }
 
+/// `physical`'s arguments for the examples' contact (r = 10 mm, G′ = 1 MPa,
+/// work of adhesion 0.05 J/m²) at the crossing angle `theta` (degrees) with
+/// both coatings `h` (m) thick.
+fn examples_contact(theta: f64, h: &str) -> Vec<String> {
+    let theta = theta.to_string();
+    [
+        "physical",
+        "--r1",
+        "0.01",
+        "--r2",
+        "0.01",
+        "--g1",
+        "1e6",
+        "--g2",
+        "1e6",
+        "--work-of-adhesion",
+        "0.05",
+        "--theta-deg",
+        &theta,
+        "--h1",
+        h,
+        "--h2",
+        h,
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect()
+}
+
 /// Thin coatings at ρ = 0.8 (h/L = 0.2): the layer's pull-off estimated by
 /// the line tension is nearer the layer than (2)'s answer, so `physical`'s
 /// first line is that estimate, with its bound and how it is made, the
@@ -905,31 +934,7 @@ fn the_pull_offs_second_route_is_asked_for_by_a_flag() {
 fn physical_leads_with_the_layer_s_estimate_where_it_is_nearer_than_2() {
     // h/L grows as √h (L as √h): the h of h/L = 0.2 from h/L at 10 µm
     let theta = 2.0 * 0.8f64.sqrt().atan().to_degrees();
-    let args = |h: f64| -> Vec<String> {
-        let mut a: Vec<String> = [
-            "physical",
-            "--r1",
-            "0.01",
-            "--r2",
-            "0.01",
-            "--g1",
-            "1e6",
-            "--g2",
-            "1e6",
-            "--work-of-adhesion",
-            "0.05",
-            "--theta-deg",
-        ]
-        .iter()
-        .map(|s| s.to_string())
-        .collect();
-        a.push(format!("{theta}"));
-        for key in ["--h1", "--h2"] {
-            a.push(key.into());
-            a.push(format!("{h:e}"));
-        }
-        a
-    };
+    let args = |h: f64| examples_contact(theta, &format!("{h:e}"));
     let run = |a: &[String], json: bool| {
         let mut a: Vec<&str> = a.iter().map(String::as_str).collect();
         if json {
@@ -989,27 +994,9 @@ fn physical_leads_with_the_layer_s_estimate_where_it_is_nearer_than_2() {
 #[test]
 fn physical_at_a_force_below_the_plane_s_reach_leads_with_the_line_tension_s_state() {
     for (h, error, within) in [("15e-6", 19.7, 6.0), ("5e-6", 10.4, 1.1)] {
-        let args = [
-            "physical",
-            "--r1",
-            "0.01",
-            "--r2",
-            "0.01",
-            "--g1",
-            "1e6",
-            "--g2",
-            "1e6",
-            "--work-of-adhesion",
-            "0.05",
-            "--theta-deg",
-            "83.63",
-            "--h1",
-            h,
-            "--h2",
-            h,
-            "--force",
-            "0",
-        ];
+        let mut args = examples_contact(83.63, h);
+        args.extend(["--force".to_string(), "0".to_string()]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
         let (ok, out, err) = thinjkr(&[&args[..], &["--json"]].concat());
         assert!(ok, "{err}");
         let d: serde_json::Value = serde_json::from_str(&out).unwrap();

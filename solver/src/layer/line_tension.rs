@@ -671,6 +671,36 @@ mod tests {
         }
     }
 
+    /// A docs table's cells, the empty ones kept (not every h/L answers
+    /// at every ρ).
+    fn cells(line: &str) -> Vec<String> {
+        line.trim()
+            .trim_matches('|')
+            .split('|')
+            .map(|c| c.trim().to_string())
+            .collect()
+    }
+
+    /// The numbers that differ from docs/thickness.md at their printed
+    /// precision (`layer::as_printed`), all named when the test fails.
+    #[derive(Default)]
+    struct Printed {
+        wrong: Vec<String>,
+    }
+
+    impl Printed {
+        fn check(&mut self, what: String, value: f64, printed: &str) {
+            if !crate::layer::as_printed(value, printed) {
+                self.wrong
+                    .push(format!("{what}: {value:.9} printed {printed}"));
+            }
+        }
+
+        fn assert_as_printed(self) {
+            assert!(self.wrong.is_empty(), "{:#?}", self.wrong);
+        }
+    }
+
     /// docs/thickness.md's numbers of the state's estimate on the circle
     /// ("A state at an approach or a force"), each computed again and
     /// compared at its printed precision (typed in from
@@ -683,21 +713,11 @@ mod tests {
     fn the_state_estimate_numbers_of_the_docs_are_the_solver_s() {
         use crate::exact::at_resolved;
         use crate::layer::thin::approach_shift;
-        use crate::layer::{as_printed, Layers, Route};
+        use crate::layer::{Layers, Route};
         let docs = include_str!("../../../docs/thickness.md");
         let text = docs.split_whitespace().collect::<Vec<_>>().join(" ");
-        let cells = |line: &str| -> Vec<String> {
-            line.split('|')
-                .map(|c| c.trim().to_string())
-                .filter(|c| !c.is_empty())
-                .collect()
-        };
-        let mut wrong = Vec::new();
-        let mut check = |what: String, value: f64, printed: &str| {
-            if !as_printed(value, printed) {
-                wrong.push(format!("{what}: {value:.9} printed {printed}"));
-            }
-        };
+        let mut printed = Printed::default();
+        let mut check = |what: String, value: f64, as_in: &str| printed.check(what, value, as_in);
         // the layer less the estimate at `hold`: [F̄ or δ̄, ā]
         let beyond = |h: f64, hold: Hold| -> [f64; 2] {
             let layers = Layers::equal(h, 0.5).unwrap();
@@ -753,7 +773,7 @@ mod tests {
             .split("at δ̄ = 1 the axisymmetric layer's force less the line tension's is ")
             .nth(1)
             .expect("the force's second order without the shift");
-        let printed: Vec<&str> = unshifted
+        let unshifted: Vec<&str> = unshifted
             .split(" at h/L")
             .next()
             .unwrap()
@@ -779,7 +799,7 @@ mod tests {
             check(
                 format!("h/L {h} without the shift"),
                 layer.force_bar - f,
-                printed[k],
+                unshifted[k],
             );
             if k < 2 {
                 let moved = 2.0 * approach_shift(&layers, 1.0).unwrap();
@@ -834,7 +854,7 @@ mod tests {
             check(format!("delta 1.5 h/L {h} F"), d[0] / h.powi(3), forces[k]);
             check(format!("delta 1.5 h/L {h} a"), d[1] / h.powi(3), sizes[k]);
         }
-        assert!(wrong.is_empty(), "{wrong:#?}");
+        printed.assert_as_printed();
     }
 
     /// docs/thickness.md's table of the sharp edge less the state's
@@ -847,16 +867,8 @@ mod tests {
     #[ignore = "slow tier (.ci/slow): the sharp edge at rho = 0.8, 0.65 and 0.5 at an approach and a force, about 7 minutes"]
     fn the_sharp_edge_less_the_state_estimate_is_the_table_s() {
         use crate::layer::sharp::{held_ladder, HeldAt, Resolution};
-        use crate::layer::{as_printed, Layers, Route};
+        use crate::layer::{Layers, Route};
         let docs = include_str!("../../../docs/thickness.md");
-        // (empty cells kept: not every h/L answers at every ρ)
-        let cells = |line: &str| -> Vec<String> {
-            line.trim()
-                .trim_matches('|')
-                .split('|')
-                .map(|c| c.trim().to_string())
-                .collect()
-        };
         let lines: Vec<&str> = docs.lines().collect();
         let head = lines
             .iter()
@@ -867,7 +879,7 @@ mod tests {
             })
             .expect("the table of the state's estimate at rho < 1");
         let thins = [0.1, 0.2, 0.3];
-        let mut wrong = Vec::new();
+        let mut printed = Printed::default();
         let mut largest: f64 = 0.0;
         // (ρ, control) → the departures [F̄ or δ̄, ā] per h/L, and the circle's
         let mut rows = lines[head + 2..]
@@ -924,23 +936,19 @@ mod tests {
                     circle.a_bar - on_circle.half_widths.0,
                 );
                 let cubed = h.powi(3);
-                for (what, value, printed) in [
+                for (what, value, as_in) in [
                     ("first", d / cubed, &first[3 + j]),
                     ("a", da / cubed, &second[3 + j]),
                     ("first over the circle's", d / c, &ratios[k].to_string()),
                     ("a over the circle's", da / ca, &ratios_a[k].to_string()),
                 ] {
-                    if !as_printed(value, printed) {
-                        wrong.push(format!(
-                            "rho {rho} {hold} h/L {h} {what}: {value:.6} printed {printed}"
-                        ));
-                    }
+                    printed.check(format!("rho {rho} {hold} h/L {h} {what}"), value, as_in);
                 }
                 largest = largest.max(d / c).max(da / ca);
                 k += 1;
             }
         }
-        assert!(wrong.is_empty(), "{wrong:#?}");
+        printed.assert_as_printed();
         assert!(
             largest <= STATE_DEPARTURE_OVER_CIRCLE + 0.005,
             "the largest ratio {largest} against {STATE_DEPARTURE_OVER_CIRCLE}"
@@ -1003,21 +1011,10 @@ mod tests {
     /// pull-offs in the text.
     #[test]
     fn the_line_tension_numbers_of_the_docs_are_the_solver_s() {
-        use crate::layer::as_printed;
         let docs = include_str!("../../../docs/thickness.md");
         let lines: Vec<&str> = docs.lines().collect();
-        let cells = |line: &str| -> Vec<String> {
-            line.split('|')
-                .map(|c| c.trim().to_string())
-                .filter(|c| !c.is_empty())
-                .collect()
-        };
-        let mut wrong = Vec::new();
-        let mut check = |what: String, value: f64, printed: &str| {
-            if !as_printed(value, printed) {
-                wrong.push(format!("{what}: {value:.9} printed {printed}"));
-            }
-        };
+        let mut printed = Printed::default();
+        let mut check = |what: String, value: f64, as_in: &str| printed.check(what, value, as_in);
         let (circle, _) = pull_off_resolved(1.0).unwrap();
         let on_circle = Exact::of_state(&circle).unwrap();
         // on the circle: the header of thicknesses two lines above
@@ -1085,7 +1082,7 @@ mod tests {
             let f = tension_at(&ex, &st, h);
             check(format!("rho 0.5 h/L {h}"), f, printed);
         }
-        assert!(wrong.is_empty(), "{wrong:#?}");
+        printed.assert_as_printed();
     }
 
     /// At `rho` the sharp edge's pull-off (the layer in the plane, on the
