@@ -480,6 +480,10 @@ pub(crate) const STATE_DEPARTURE_OVER_CIRCLE: f64 = 1.72;
 /// [`STATE_DEPARTURE_OVER_CIRCLE`] rounded up.
 pub(crate) const STATE_ESTIMATE_ERROR: f64 = 2.0;
 
+/// The most a state of [`state_estimate`] may be off its equations (they
+/// are met to 1e-13 where it was measured).
+const STATE_RESIDUAL: f64 = 1e-9;
+
 /// How many secant steps in δ̄ a state at a force takes at most.
 const SECANT_STEPS: usize = 40;
 
@@ -557,6 +561,16 @@ pub(crate) fn state_estimate(layers: &Layers, rho: f64, hold: Hold) -> Result<Te
     .residuals(&u)
     .map(|r| r.amax())
     .ok_or_else(|| words("its system is singular".into()))?;
+    if !(residual <= STATE_RESIDUAL) {
+        return Err(Error::Unresolved {
+            what: format!(
+                "the line tension's state at rho = {}, {hold}: its equations are {} off zero",
+                rounded(rho),
+                short(residual)
+            ),
+            residual,
+        });
+    }
     let c = exact.contour_of(&u);
     Ok(TensionState {
         force_bar: force,

@@ -122,13 +122,16 @@ pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
 }
 
 /// The interior's approach shift of `layers` at `rho`, units (17): away
-/// from the edge the layer's contact is (2)'s at the approach δ̄ + Δδ̄.
-/// With N(k̄) = 1 − ak̄² + … the layer's surface displacement is (2)'s
-/// plus a∇̄² of it, and inside the contact (2)'s is δ̄ − φ̄, whose Laplacian
-/// is the gap's, a constant: Δδ̄ = a(1 + 1/ρ)/2, of second order in h/L
-/// (a = 1.800008 (h/L)² for two equal incompressible coatings). It moves
-/// no force minimum (F̄ is stationary in δ̄ there) and no state at a
-/// given force (docs/thickness.md, "A state at an approach or a force").
+/// from the edge the layer's contact is (2)'s at the approach δ̄ + Δδ̄,
+/// Δδ̄ = a(1 + 1/ρ)/2 with N(k̄) = 1 − ak̄² + … (a = 1.800008 (h/L)² for
+/// two equal incompressible coatings), of second order in h/L. With that
+/// N the layer's surface displacement is (2)'s plus a∇̄² of it, a constant
+/// inside the contact, whose gap X²/2 + Y²/(2ρ) gives the form 1 + 1/ρ;
+/// the factor ½ is measured (on the circle, and at ρ = 0.8 against the
+/// sharp edge), not derived: that count gives twice it
+/// (docs/thickness.md, "A state at an approach or a force"). It moves no
+/// force minimum (F̄ is stationary in δ̄ there) and no state at a given
+/// force.
 pub(crate) fn approach_shift(layers: &Layers, rho: f64) -> Result<f64> {
     Ok(0.5 * low_waves(layers)?.a * (1.0 + 1.0 / rho))
 }
