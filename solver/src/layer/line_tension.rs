@@ -755,26 +755,15 @@ mod tests {
             let cubed = h.powi(3);
             let at_delta = beyond(h, Hold::Delta(1.0));
             let at_force = beyond(h, Hold::Force(0.0));
-            check(
-                format!("h/L {h} delta 1 F"),
-                at_delta[0] / cubed,
-                &rows[0][k + 1],
-            );
-            check(
-                format!("h/L {h} delta 1 a"),
-                at_delta[1] / cubed,
-                &rows[1][k + 1],
-            );
-            check(
-                format!("h/L {h} force 0 delta"),
-                at_force[0] / cubed,
-                &rows[2][k + 1],
-            );
-            check(
-                format!("h/L {h} force 0 a"),
-                at_force[1] / cubed,
-                &rows[3][k + 1],
-            );
+            let rows_at = [
+                ("delta 1 F", at_delta[0]),
+                ("delta 1 a", at_delta[1]),
+                ("force 0 delta", at_force[0]),
+                ("force 0 a", at_force[1]),
+            ];
+            for (row, (what, value)) in rows_at.into_iter().enumerate() {
+                check(format!("h/L {h} {what}"), value / cubed, &rows[row][k + 1]);
+            }
         }
         // "… at δ̄ = 1 the axisymmetric layer's force less the line
         // tension's is x, y and z at h/L = 0.01, 0.02 and 0.04"; "the shift
