@@ -772,27 +772,27 @@ mod tests {
             let st = at_resolved(1.0, Hold::Delta(delta)).unwrap();
             (Exact::of_state(&st).unwrap(), st)
         };
-        let unshifted = text
-            .split("at δ̄ = 1 the axisymmetric layer's force less the line tension's is ")
-            .nth(1)
-            .expect("the force's second order without the shift");
-        let unshifted: Vec<&str> = unshifted
-            .split(" at h/L")
-            .next()
-            .unwrap()
-            .split([',', ' '])
-            .filter(|w| !w.is_empty() && *w != "and")
-            .collect();
-        let twice = text
-            .split("the shift 2a leaves ")
-            .nth(1)
-            .expect("the force's second order with twice the shift");
-        let printed_twice: Vec<&str> = twice
-            .split(" at h/L")
-            .next()
-            .unwrap()
-            .split(" and ")
-            .collect();
+        // the numbers after `phrase`, up to " at h/L"
+        let values_after = |phrase: &str, what: &str| -> Vec<String> {
+            text.split(phrase)
+                .nth(1)
+                .unwrap_or_else(|| panic!("{what}"))
+                .split(" at h/L")
+                .next()
+                .unwrap()
+                .split([',', ' '])
+                .filter(|w| !w.is_empty() && *w != "and")
+                .map(str::to_string)
+                .collect()
+        };
+        let unshifted = values_after(
+            "at δ̄ = 1 the axisymmetric layer's force less the line tension's is ",
+            "the force's second order without the shift",
+        );
+        let printed_twice = values_after(
+            "the shift 2a leaves ",
+            "the force's second order with twice the shift",
+        );
         for (k, h) in [0.01, 0.02, 0.04].into_iter().enumerate() {
             let layers = Layers::equal(h, 0.5).unwrap();
             let b = edge_shift(&layers).unwrap();
@@ -802,7 +802,7 @@ mod tests {
             check(
                 format!("h/L {h} without the shift"),
                 layer.force_bar - f,
-                unshifted[k],
+                &unshifted[k],
             );
             if k < 2 {
                 let moved = 2.0 * approach_shift(&layers, 1.0).unwrap();
@@ -811,7 +811,7 @@ mod tests {
                 check(
                     format!("h/L {h} twice the shift"),
                     layer.force_bar - f,
-                    printed_twice[k],
+                    &printed_twice[k],
                 );
             }
         }
