@@ -1626,20 +1626,12 @@ mod tests {
                 for h in list("THINJKR_TENSION_THINS", "0.01,0.02,0.04,0.1,0.2,0.3") {
                     let layers = Layers::equal(h, 0.5).unwrap();
                     let b = edge_shift(&layers).unwrap();
-                    let steps = ((b / 0.02).ceil() as usize).max(1);
-                    // N = 1 − a k̄² + …: the interior's approach moves by a(1 + 1/ρ)
-                    let log_inverse =
-                        |k: f64| -((1.0 - layers.base_share(k)) / (layers.beta() * k.powi(3))).ln();
-                    let k0 = 0.01 / h;
-                    let (f1, f2) = (
-                        log_inverse(k0) / (k0 * k0),
-                        log_inverse(2.0 * k0) / (4.0 * k0 * k0),
-                    );
-                    let a_coef = f1 - (f2 - f1) / 3.0;
+                    // N = 1 − a k̄² + …: a is the circle's approach shift
+                    let a_coef = approach_shift(&layers, 1.0).unwrap();
                     // THINJKR_MOVED=plain: a alone, the circle's shift at every ρ
                     let moved = match std::env::var("THINJKR_MOVED").as_deref() {
                         Ok("plain") => a_coef,
-                        Ok(_) => 0.5 * a_coef * (1.0 + 1.0 / rho),
+                        Ok(_) => approach_shift(&layers, rho).unwrap(),
                         Err(_) => 0.0,
                     };
                     println!(
@@ -1647,22 +1639,13 @@ mod tests {
                         a_coef / (h * h)
                     );
                     let delta = delta + moved;
-                    let mut u = ex.unknowns(&st);
-                    let mut force = f64::NAN;
-                    let mut failed = None;
-                    for k in 1..=steps {
-                        match state_at(&ex, rho, b * k as f64 / steps as f64, delta, &u) {
-                            Ok((v, f)) => (u, force) = (v, f),
-                            Err(e) => {
-                                failed = Some(e);
-                                break;
-                            }
+                    let (u, force) = match raised(&ex, &st, b, delta) {
+                        Ok(found) => found,
+                        Err(e) => {
+                            println!("  h/L {h}: {e}");
+                            continue;
                         }
-                    }
-                    if let Some(e) = failed {
-                        println!("  h/L {h}: {e}");
-                        continue;
-                    }
+                    };
                     let c = ex.contour_of(&u);
                     let (a, bb) = (c.a_bar() - b, c.b_bar() - b);
                     let mut line = format!(
