@@ -127,9 +127,11 @@ pub(crate) fn edge_shift(layers: &Layers) -> Result<f64> {
 /// two equal incompressible coatings), of second order in h/L. With that
 /// N the layer's surface displacement is (2)'s plus a∇̄² of it, a constant
 /// inside the contact, whose gap X²/2 + Y²/(2ρ) gives the form 1 + 1/ρ;
-/// the factor ½ is measured (on the circle, and at ρ = 0.8 against the
-/// sharp edge), not derived: that count gives twice it
-/// (docs/thickness.md, "A state at an approach or a force"). It moves no
+/// the factor ½ is the edge's: the even term −ak̄² of ln N is shared
+/// equally by the Wiener–Hopf factors N₊ and N₋, and only 1/N₋ acts on
+/// the load (an argument; measured on the circle, at ρ = 0.8 against the
+/// sharp edge and on the line contact, `layer::grid::edge`;
+/// docs/thickness.md, "Why one half"). It moves no
 /// force minimum (F̄ is stationary in δ̄ there) and no state at a given
 /// force.
 pub(crate) fn approach_shift(layers: &Layers, rho: f64) -> Result<f64> {
