@@ -400,10 +400,15 @@ mod tests {
     /// −0.9046 against −0.9000; from ā = 1.5 to 4 the same extrapolation
     /// through 0.04 and 0.02 spreads from −0.895 to −0.906, so within 1 %;
     /// the interior's count alone would give −a, twice it).
+    /// (2)'s approach of the line contact at half width `a`: ā²/6 − 1/ā.
+    fn line_delta(a: f64) -> f64 {
+        a * a / 6.0 - 1.0 / a
+    }
+
     #[test]
     fn the_straight_edge_lies_the_wiener_hopf_shift_inside_equation_2_s() {
         let a = 2.0f64;
-        let delta0 = a * a / 6.0 - 1.0 / a;
+        let delta0 = line_delta(a);
         let delta_slope = a / 3.0 + 1.0 / (a * a);
         let force_slope = 2.0 * (delta_slope * a.powi(3) / 3.0 + delta0 * a * a) - a.powi(4) / 3.0;
         let force0 = 2.0 * a.powi(3) * delta0 / 3.0 - a.powi(5) / 15.0;
@@ -418,8 +423,7 @@ mod tests {
             assert!(st.tail < 1e-11, "h/L {thin}: tail {}", st.tail);
             by_delta.push((st.delta_bar - delta0) / (thin * delta_slope));
             by_force.push((st.force_bar - force0) / (thin * force_slope));
-            let moved = a + shift * thin;
-            second.push((st.delta_bar - (moved * moved / 6.0 - 1.0 / moved)) / (thin * thin));
+            second.push((st.delta_bar - line_delta(a + shift * thin)) / (thin * thin));
         }
         // the quadratic in h/L through the three, at 0
         let limit = |s: &[f64]| (4.0 * (2.0 * s[2] - s[1]) - (2.0 * s[1] - s[0])) / 3.0;
@@ -464,9 +468,7 @@ mod tests {
             for (thin, modes) in [(0.04, 120), (0.02, 200), (0.01, 300)] {
                 let layers = Layers::equal(thin, 0.5).unwrap();
                 let st = LineContact::new(&layers, modes).state(a).unwrap();
-                let moved = a + b * thin;
-                let delta2 = moved * moved / 6.0 - 1.0 / moved;
-                r.push((st.delta_bar - delta2) / (thin * thin));
+                r.push((st.delta_bar - line_delta(a + b * thin)) / (thin * thin));
             }
             let lin = |x: f64, y: f64| 2.0 * y - x;
             println!(
