@@ -446,6 +446,12 @@ fn a_bar_gradient(n: usize) -> DVector<f64> {
     g
 }
 
+/// The family's n − 1 residuals with a zero row below: the engine's row
+/// of the arclength condition.
+fn padded(r: &DVector<f64>) -> DVector<f64> {
+    r.clone().insert_row(r.len(), 0.0)
+}
+
 /// dF̄/dā along the family at a converged state, du/dā, and the factorised
 /// Jacobian of the equations at fixed ā there
 /// ([`Exact::force_slope_in_size`]).
@@ -471,12 +477,10 @@ impl Family<Dyn> for Exact {
     fn linearise(&self, u: &DVector<f64>) -> Option<Linear<Dyn>> {
         let (r, force, j, g) = linearise(self, u)?;
         let n = u.len();
-        let mut rr = DVector::zeros(n);
-        rr.rows_mut(0, n - 1).copy_from(&r);
         let mut jj = DMatrix::zeros(n, n);
         jj.rows_mut(0, n - 1).copy_from(&j);
         Some(Linear {
-            r: rr,
+            r: padded(&r),
             j: jj,
             force,
             force_grad: g,
@@ -489,10 +493,7 @@ impl Family<Dyn> for Exact {
 
     fn residuals_and_force(&self, u: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
         let (r, force) = self.modes(u)?;
-        let n = u.len();
-        let mut rr = DVector::zeros(n);
-        rr.rows_mut(0, n - 1).copy_from(&r);
-        Some((rr, force))
+        Some((padded(&r), force))
     }
 
     fn converged(&self, u: &DVector<f64>, r: &DVector<f64>) -> bool {
@@ -548,7 +549,7 @@ impl Exact {
         max_step: f64,
         max_points: usize,
     ) -> Result<Branch> {
-        self.trace_until(start, a_min, max_step, max_points, false)
+        self.trace_from(start, -1.0, a_min, f64::INFINITY, max_step, max_points)
     }
 
     /// Trace from `start` with ā first moving in `direction` (+1: growing,
@@ -886,27 +887,6 @@ impl Exact {
             .trace_start(self.gap().seed.and_then(|m| m.trace_start()))
     }
 
-    fn trace_until(
-        &self,
-        start: &ExactState,
-        a_min: f64,
-        max_step: f64,
-        max_points: usize,
-        stop_at_force_minimum: bool,
-    ) -> Result<Branch> {
-        self.trace_general(
-            start,
-            -1.0,
-            a_min,
-            f64::INFINITY,
-            max_step,
-            max_points,
-            stop_at_force_minimum,
-            None,
-        )
-        .map(|(b, _)| b)
-    }
-
     /// Trace from `start` with ā first moving in the direction of
     /// `direction` (±1), between `a_min` and `a_max`; stop at the first
     /// force minimum when asked, or at the first crossing of
@@ -926,8 +906,6 @@ impl Exact {
         stop_at_force_minimum: bool,
         control: Option<Hold>,
     ) -> Result<(Branch, Option<ExactState>)> {
-        let n = self.unknown_count();
-        let towards = a_bar_gradient(n) * direction;
         let settings = trace_settings(max_step, max_points.saturating_sub(1));
         let crossing = control.map(|c| (Quantity::of(c), c.value(), On::Stop));
         let watch = Watch {
@@ -947,10 +925,9 @@ impl Exact {
             bifurcation: On::Note,
             crossing,
         };
-        let trace =
-            continuation::trace(self, self.unknowns(start), &towards, settings, watch, |p| {
-                p.a_bar < a_min || p.a_bar > a_max
-            })?;
+        let trace = self.traced(start, direction, settings, watch, |p| {
+            p.a_bar < a_min || p.a_bar > a_max
+        })?;
         let mut points = Vec::with_capacity(trace.points.len());
         for (k, p) in trace.points.iter().enumerate() {
             let state = if k == 0 {
@@ -1044,26 +1021,19 @@ impl Exact {
             crossing: None,
         };
         let mut unresolved = None;
-        let trace = continuation::trace(
-            self,
-            self.unknowns(start),
-            &(a_bar_gradient(n) * direction),
-            settings,
-            watch,
-            |p| {
-                if within.is_finite() {
-                    if let Some(bc) = self.fine_boundary_error(&p.u).filter(|bc| *bc > within) {
-                        unresolved = Some(SizeFoldEnd::Unresolved {
-                            a_bar: p.a_bar,
-                            force_bar: p.force,
-                            bc_error: bc,
-                        });
-                        return true;
-                    }
+        let trace = self.traced(start, direction, settings, watch, |p| {
+            if within.is_finite() {
+                if let Some(bc) = self.fine_boundary_error(&p.u).filter(|bc| *bc > within) {
+                    unresolved = Some(SizeFoldEnd::Unresolved {
+                        a_bar: p.a_bar,
+                        force_bar: p.force,
+                        bc_error: bc,
+                    });
+                    return true;
                 }
-                (p.a_bar - a_limit) * direction > 0.0
-            },
-        )?;
+            }
+            (p.a_bar - a_limit) * direction > 0.0
+        })?;
         let Some(u) = trace.located(EventKind::SizeFold) else {
             if let Some(end) = unresolved {
                 return Ok(end);
@@ -1125,7 +1095,8 @@ impl Exact {
         };
         let mut past = false;
         let mut why = None;
-        let trace = self.trace_past_fold(start, direction, max_step, watch, |p| {
+        let past_fold = trace_settings(max_step, PAST_FOLD_STEPS);
+        let trace = self.traced(start, direction, past_fold, watch, |p| {
             let returning = p.d_a_bar * direction < 0.0;
             let second_fold = past && !returning;
             past |= returning;
@@ -1169,24 +1140,18 @@ impl Exact {
     }
 
     /// The continuation from `start` with ā first moving in `direction`
-    /// (±1), in steps of at most `max_step`, at most [`PAST_FOLD_STEPS`] of
-    /// them, watching `watch`, until `stop`: the traces through folds in ā.
-    fn trace_past_fold(
+    /// (±1), with `settings`, watching `watch`, until `stop`: every trace
+    /// of the family at one ρ.
+    fn traced(
         &self,
         start: &ExactState,
         direction: f64,
-        max_step: f64,
+        settings: Settings,
         watch: Watch,
         stop: impl FnMut(&continuation::Point<Dyn>) -> bool,
     ) -> Result<continuation::Trace<Dyn>> {
-        continuation::trace(
-            self,
-            self.unknowns(start),
-            &(a_bar_gradient(self.unknown_count()) * direction),
-            trace_settings(max_step, PAST_FOLD_STEPS),
-            watch,
-            stop,
-        )
+        let towards = a_bar_gradient(self.unknown_count()) * direction;
+        continuation::trace(self, self.unknowns(start), &towards, settings, watch, stop)
     }
 
     /// The first state at `control` on the arm through `start`, traced with
@@ -1224,7 +1189,8 @@ impl Exact {
         let mut unresolved = None;
         // the last point within the bound, and ā at the one before it
         let mut before: Option<(DVector<f64>, f64, f64)> = None;
-        let trace = self.trace_past_fold(start, direction, max_step, watch, |p| {
+        let past_fold = trace_settings(max_step, PAST_FOLD_STEPS);
+        let trace = self.traced(start, direction, past_fold, watch, |p| {
             if let Some(bc) = self
                 .fine_boundary_error(&p.u)
                 .filter(|bc| *bc > resolved_within)
