@@ -1,7 +1,7 @@
 //! A state at a given δ̄ or F̄ below the fold in ρ of its family (issue 32):
 //! from the arms of larger contacts. Continued in ρ at the control, the
 //! near-elliptic family turns back (at F̄ = 10 near ρ = 0.3224, at F̄ = 0
-//! near 0.357: [`super::rho_fold`]), but the contact sizes above the
+//! near 0.357: [`super::rho_path`]), but the contact sizes above the
 //! control's state are not bound to that fold: continued in ρ at fixed ā
 //! (regular where the control is not), they reach smaller ρ, on the pieces
 //! of the family between the bands of its contour modes. At the ρ asked

@@ -53,7 +53,6 @@ pub(crate) mod larger_contacts;
 pub(crate) mod linear;
 pub(crate) mod no_state;
 mod resolve;
-pub(crate) mod rho_fold;
 pub(crate) mod rho_path;
 pub(crate) mod rho_walk;
 pub(crate) mod same;

@@ -3,7 +3,7 @@
 //! fine-grid boundary error a state must reach), and the routes to a state
 //! or a pull-off (from the seeding model's state, along the family, past
 //! the folds of a band, continued in ρ from a larger ρ, and where that
-//! stops, whether the family turns back in ρ: `rho_fold`, `rho_path`). The problem itself
+//! stops, whether the family turns back in ρ: `rho_path`). The problem itself
 //! (the contour, the fields, the equations, one truncation's Newton) is the
 //! parent's.
 //!
@@ -906,9 +906,7 @@ pub(crate) fn continued_in_rho_along(
                 ),
             ));
         }
-        Err(Stopped { why: Err(e), .. }) => {
-            return past_newtons_end(&st, start, rho, control, &ladder, &e)
-        }
+        Err(Stopped { why: Err(e), .. }) => return past_newtons_end(&st, start, rho, control, &e),
     }
     st.stability = Exact::on(start.gap, rho, st.truncation)?.stability(&st)?;
     st.route = Route::ContinuedInRho;
@@ -917,43 +915,17 @@ pub(crate) fn continued_in_rho_along(
 
 /// Where Newton failed below `st` (the last converged state of
 /// [`continued_in_rho_along`], continued from `start` towards `rho`) with
-/// `e`: a fold in ρ of the family at the control, located, is an error
-/// that says so; else the path in (u, ρ), which steps around a fold in ā
-/// (a band's edge), reaches `rho` (the answer) or shows a fold in ρ as ρ
-/// turning back; else an error that says down to which ρ the family
-/// converged.
+/// `e`: the path in (u, ρ), which steps around a fold in ā (a band's
+/// edge), reaches `rho` (the answer) or shows a fold in ρ as ρ turning
+/// back, located, an error that says so; else an error that says down to
+/// which ρ the family converged.
 fn past_newtons_end(
     st: &ExactState,
     start: &ExactState,
     rho: f64,
     control: Hold,
-    ladder: &Ladder,
     e: &Error,
 ) -> Result<ExactState> {
-    // a fold in ρ of the family at the control, located, or
-    // Newton stopped for another reason
-    if let Some(fold) = super::rho_fold::rho_fold(st, control, ladder) {
-        if fold.rho > rho {
-            return Err(Error::PastRhoFold {
-                fold: fold.rho,
-                from: start.rho,
-                what: format!(
-                "the near-elliptic family at {control}, continued in rho from rho = {}, turns back at rho = {} (a fold in rho at a_bar = {}, resolved with {} modes{}; two states at rho {} above it, a_bar = {} and {}), so it has no state at rho = {}",
-                crate::error::short(start.rho),
-                crate::error::rounded(fold.rho),
-                crate::error::rounded(fold.a_bar),
-                fold.truncation.modes,
-                if fold.truncation.arclength > 0 { " of each sign" } else { "" },
-                crate::error::rounded(fold.above - fold.rho),
-                crate::error::rounded(fold.beside[0]),
-                crate::error::rounded(fold.beside[1]),
-                crate::error::short(rho)
-            ),
-            });
-        }
-    }
-    // else the path in (u, ρ), which steps around a fold in ā
-    // (a band's edge) and shows a fold in ρ as ρ turning back
     match super::rho_path::follow(st, rho, control) {
         Ok(Followed::Reached(found)) if found.bc_error <= CONVERGED => {
             let mut found = *found;
@@ -961,9 +933,7 @@ fn past_newtons_end(
             found.route = Route::ContinuedInRho;
             return Ok(found);
         }
-        Ok(Followed::TurnedBack {
-            rho: fold, a_bar, ..
-        }) if fold > rho => {
+        Ok(Followed::TurnedBack { fold, a_bar, .. }) if fold > rho => {
             return Err(Error::PastRhoFold {
                 fold,
                 from: start.rho,

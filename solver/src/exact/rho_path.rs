@@ -2,7 +2,8 @@
 //! pseudo-arclength continuation in (u, ρ) together: where the plain
 //! continuation in ρ (Newton at each ρ from the state before) stops because
 //! the family folds in ā close by (a band's edge), the path in (u, ρ) is
-//! regular and steps around it; a fold in ρ itself shows as ρ turning back.
+//! regular and steps around it; a fold in ρ itself shows as ρ turning back,
+//! and is located there.
 //! The equations are the state equations at the control
 //! ([`Exact::equations`]); their derivative in u is the discrete one
 //! ([`Exact::held_jacobian`]), in ρ a central difference (the gap is the
@@ -20,17 +21,15 @@ use nalgebra::{DMatrix, DVector};
 pub(crate) enum Followed {
     /// It reached the ρ asked for: the state there.
     Reached(Box<ExactState>),
-    /// ρ turned back at this smallest ρ of the path's points (a fold in
-    /// ρ), above the ρ asked for, at this ā; `fold`, the smallest ρ of the
-    /// path between its last two points, where dρ/dσ (linear in the
-    /// arclength σ between them) vanishes; the fine-grid boundary error of
-    /// the path's lowest point (`None` where that system is singular).
+    /// ρ turned back (a fold in ρ) above the ρ asked for: `fold`, the
+    /// smallest ρ of the path between its last two points, where dρ/dσ
+    /// (linear in the arclength σ between them) vanishes; ā at the path's
+    /// lowest point, and its fine-grid boundary error (`None` where that
+    /// system is singular).
     TurnedBack {
-        rho: f64,
         a_bar: f64,
-        // read by `studies::reach`, which the command line runs
-        #[cfg_attr(not(feature = "cli"), allow(dead_code))]
         fold: f64,
+        // read by `studies::reach`, which the command line runs
         #[cfg_attr(not(feature = "cli"), allow(dead_code))]
         bc_error: Option<f64>,
     },
@@ -113,23 +112,12 @@ impl Path {
     }
 }
 
-/// The family at `control` followed in ρ from `start` (a converged state of
-/// its truncation at a larger ρ) down to `rho`: pseudo-arclength steps in
-/// (u, ρ) of at most 0.05 (halved where the corrector fails, down to
-/// 1e-5; at most 400). [`Followed::Reached`] with the state at `rho`
-/// (Newton at the control there from the path's last point beyond it);
-/// [`Followed::TurnedBack`] where ρ turns back above `rho`, with the
-/// smallest ρ the path reached. An error where a step fails.
-pub(crate) fn follow(start: &ExactState, rho: f64, control: Hold) -> Result<Followed> {
-    follow_with(start, rho, control, false)
-}
-
-/// The path's step in (shape, ρ) at which [`follow_with`] stops refining a
+/// The path's step in (shape, ρ) at which [`follow`] stops refining a
 /// fold it locates: the fold's ρ is then the path's smallest between its
 /// last two points, off by about this squared times dρ/dσ's slope.
 const FOLD_STEP: f64 = 1e-3;
 
-/// The farthest the corrector of a step of [`follow_with`] locating a fold
+/// The farthest the corrector of a step of [`follow`] locating a fold
 /// may move from the prediction, relative to the step: at ā = 4.18 (128
 /// modes) the correctors of the path from the circle moved at most 0.14
 /// times the step, except one that moved 7.3 times and left the path
@@ -138,20 +126,24 @@ const FOLD_STEP: f64 = 1e-3;
 /// turn back at 0.3218 and 0.3267).
 const FARTHEST_CORRECTION: f64 = 0.25;
 
-/// [`follow`]; with `locate`, where ρ turns back the path steps again from
-/// its point before the turn with an eighth of the step, until the step
-/// is below [`FOLD_STEP`], so that [`Followed::TurnedBack`]'s `fold` is
-/// located, and a step whose corrector moves farther than
+/// The family at `control` followed in ρ from `start` (a converged state of
+/// its truncation at a larger ρ) down to `rho`: pseudo-arclength steps in
+/// (u, ρ) of at most 0.05 (halved where the corrector fails, down to
+/// 1e-5; at most 400). [`Followed::TurnedBack`] where ρ turns back above
+/// `rho`: the path then steps again from its point before the turn with an
+/// eighth of the step, until the step is below [`FOLD_STEP`], so that its
+/// `fold` is located; a step whose corrector moves farther than
 /// [`FARTHEST_CORRECTION`] times the step is halved (below a step of 1e-5
-/// the path stops with an error rather than take it). At ρ = 0.5 and 0.4
-/// the sizes of the band edges that [`super::bands`] located by traces in
-/// ā turn back at ρ within 1e-6 of it (`studies::reach`'s tests).
-pub(crate) fn follow_with(
-    start: &ExactState,
-    rho: f64,
-    control: Hold,
-    locate: bool,
-) -> Result<Followed> {
+/// the path stops with an error rather than take it).
+/// [`Followed::Reached`] with the state at `rho` (Newton at the control
+/// there from the path's last point beyond it). An error where a step
+/// fails. At ρ = 0.5 and 0.4 the sizes of the band edges that
+/// [`super::bands`] located by traces in ā turn back at ρ within 1e-6 of
+/// it (`studies::reach`'s tests); at F̄ = 0 from ρ = 0.3 the fold is the
+/// minimum of ρ over ā along the family to 6 digits, 0.178691 (which a
+/// search of that minimum by successive parabolas, `exact::rho_fold`
+/// until 2026-12-05, gave too).
+pub(crate) fn follow(start: &ExactState, rho: f64, control: Hold) -> Result<Followed> {
     let ex = Exact::on(start.gap, start.rho, start.truncation)?.deferring_stability();
     let u0 = ex.unknowns(start);
     let n = u0.len();
@@ -201,7 +193,7 @@ pub(crate) fn follow_with(
         // a corrector that moved far from the prediction may have jumped to
         // another branch: the step is halved, and below 1e-5 the path
         // stops rather than take the jump
-        if locate && (&next - &vp).norm() > FARTHEST_CORRECTION * ds {
+        if (&next - &vp).norm() > FARTHEST_CORRECTION * ds {
             if ds < 1e-5 {
                 return Err(failed(
                     &v,
@@ -231,7 +223,7 @@ pub(crate) fn follow_with(
         // ρ going up again after it went down: a fold in ρ
         if t[n] < 0.0 && t_next[n] > 0.0 {
             let h = (&next - &v).norm();
-            if locate && h > FOLD_STEP {
+            if h > FOLD_STEP {
                 // again from v, in finer steps that do not grow
                 refining = true;
                 ds = h / 8.0;
@@ -247,7 +239,6 @@ pub(crate) fn follow_with(
             let at = -d0 * h / (d1 - d0);
             let fold = (v[n] + d0 * at + (d1 - d0) * at * at / (2.0 * h)).min(lowest.0);
             return Ok(Followed::TurnedBack {
-                rho: lowest.0,
                 a_bar: lowest.1,
                 fold,
                 bc_error,
@@ -277,6 +268,56 @@ mod tests {
     /// 0.322422: folds of neighbouring arms of an imperfect bifurcation,
     /// docs/exact.md); a second route, Newton at F̄ = 10 and ρ = 0.3215 from
     /// that state (the plain continuation's step), finds no state.
+    /// The near-elliptic family at F̄ = 0, continued in ρ from its state at
+    /// ρ = 0.4 (80 modes) in the arclength representation (48, then 64
+    /// modes of each sign) to ρ = 0.36, turns back at ρ ≈ 0.3574 (an
+    /// independent exploration put it near 0.356; the minimum of ρ over ā
+    /// by successive parabolas, `exact::rho_fold` until 2026-12-05, at
+    /// 0.357419): the path locates the fold there, and at ρ just above it
+    /// Newton at fixed F̄ = 0 started from the path's states on either
+    /// side (at fixed ā) converges to two distinct resolved states
+    /// (boundary error below 1e-9 on the fine grid) that the fold joins.
+    #[test]
+    fn the_zero_force_family_turns_back_in_rho() {
+        let zero = Hold::Force(0.0);
+        let start = at_with(
+            Gap::cylinders(),
+            0.4,
+            zero,
+            &Ladder::conformal(),
+            &mut |_| {},
+        )
+        .unwrap();
+        let ladder = Ladder::of([48, 64].map(Truncation::in_arclength).to_vec());
+        let last = continued_in_rho_along(&start, 0.36, zero, &ladder).unwrap();
+        let Followed::TurnedBack { fold, a_bar, .. } = follow(&last, 0.3, zero).unwrap() else {
+            panic!("the family at zero force reaches rho = 0.3");
+        };
+        assert!((fold - 0.357419).abs() < 1e-6, "the fold at rho = {fold}");
+        let above = fold + 1e-4;
+        // (96 modes of each sign resolve the states there; 64 leave 1e-8)
+        let ex = Exact::on(last.gap, above, Truncation::in_arclength(96)).unwrap();
+        let two: Vec<ExactState> = [a_bar - 0.005, a_bar + 0.005]
+            .iter()
+            .map(|&a| {
+                let at_a = ex.solve_from(a, &last).unwrap();
+                ex.solve_at(zero, &at_a.contour, at_a.delta_bar).unwrap()
+            })
+            .collect();
+        for st in &two {
+            assert!(st.bc_error <= crate::exact::CONVERGED, "{}", st.bc_error);
+            // F̄ on the fine grid; Newton holds it on the coarse one
+            // (measured: 1e-8, the series' resolution at bc 1e-9)
+            assert!(st.force_bar.abs() <= 1e-7, "{}", st.force_bar);
+        }
+        assert!(
+            two[1].a_bar - two[0].a_bar > 1e-3,
+            "{} and {}",
+            two[0].a_bar,
+            two[1].a_bar
+        );
+    }
+
     #[test]
     fn the_force_10_family_turns_back_in_rho() {
         let control = Hold::Force(10.0);
@@ -291,7 +332,7 @@ mod tests {
         let ladder = Ladder::of([48, 64, 96].map(Truncation::in_arclength).to_vec());
         let last = continued_in_rho_along(&start, 0.3235, control, &ladder).unwrap();
         match follow(&last, 0.3, control).unwrap() {
-            Followed::TurnedBack { rho, .. } => {
+            Followed::TurnedBack { fold: rho, .. } => {
                 assert!(rho > 0.3222 && rho < 0.3228, "turned back at rho = {rho}")
             }
             Followed::Reached(st) => panic!("reached rho = 0.3 at a = {}", st.a_bar),

@@ -428,7 +428,7 @@ mod tests {
             .from_circle(3.62)
             .unwrap();
         let Ok(super::super::rho_path::Followed::Reached(st)) =
-            super::super::rho_path::follow_with(&st, 0.3, Hold::Size(3.62), true)
+            super::super::rho_path::follow(&st, 0.3, Hold::Size(3.62))
         else {
             panic!("the size 3.62 reaches rho = 0.3");
         };

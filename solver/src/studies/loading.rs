@@ -1362,7 +1362,7 @@ mod tests {
             .unwrap()
             .unwrap();
         let Ok(crate::exact::rho_path::Followed::Reached(st)) =
-            crate::exact::rho_path::follow_with(&st, 0.3, Hold::Size(3.62), true)
+            crate::exact::rho_path::follow(&st, 0.3, Hold::Size(3.62))
         else {
             panic!("the size 3.62 reaches rho = 0.3");
         };

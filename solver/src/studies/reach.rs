@@ -1,7 +1,7 @@
 //! The reach in ρ of the near-elliptic family at each contact size (issue
 //! 32): the exact state of half-width ā is followed in ρ at that fixed ā
 //! from the circle (at ρ = [`PATHS_START_RHO`]) by the path in (shape, ρ)
-//! ([`crate::exact::rho_path::follow_with`], which steps around the folds in ā
+//! ([`crate::exact::rho_path::follow`], which steps around the folds in ā
 //! close by) until ρ turns back; that fold's ρ, located, is the size's
 //! reach. Below it no state of that size is connected to the circle at
 //! fixed ā. At any ρ the sizes whose reach lies above it are the bands of
@@ -19,7 +19,7 @@
 use crate::control::Hold;
 use crate::error::{rounded, Result};
 use crate::exact::branch::SizeFoldEnd;
-use crate::exact::rho_path::{follow_with, Followed};
+use crate::exact::rho_path::{follow, Followed};
 use crate::exact::{Exact, ExactState, Truncation, CONVERGED};
 pub(crate) use crate::report::{Reached, SizeReach, Window, WindowEnd, WindowPath};
 use rayon::prelude::*;
@@ -81,7 +81,7 @@ pub(crate) fn of_size(a_bar: f64, modes: usize) -> Result<SizeReach> {
         Ok(st) => st,
         Err(why) => return Ok(stopped(why)),
     };
-    Ok(match follow_with(&start, FLOOR, Hold::Size(a_bar), true) {
+    Ok(match follow(&start, FLOOR, Hold::Size(a_bar)) {
         Ok(Followed::TurnedBack { fold, bc_error, .. }) => SizeReach {
             a_bar,
             modes,
@@ -315,7 +315,7 @@ fn settle_one(
         Ok(st) => st,
         Err(why) => return Ok(failed(why)),
     };
-    let state = match follow_with(&start, rho, Hold::Size(a_bar), true) {
+    let state = match follow(&start, rho, Hold::Size(a_bar)) {
         Ok(Followed::Reached(st)) => st,
         Ok(Followed::TurnedBack { fold, .. }) => {
             return Ok(failed(format!(
@@ -854,8 +854,7 @@ mod tests {
         let start = from_the_circle(a_bar, Truncation::in_arclength(MODES))
             .unwrap()
             .unwrap();
-        let Followed::Reached(st) = follow_with(&start, rho, Hold::Size(a_bar), true).unwrap()
-        else {
+        let Followed::Reached(st) = follow(&start, rho, Hold::Size(a_bar)).unwrap() else {
             panic!("the size 3.78 reaches rho = 0.2");
         };
         let ex = Exact::on(st.gap, rho, st.truncation)
