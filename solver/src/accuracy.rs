@@ -406,7 +406,8 @@ fn render_method() -> String {
          `conformal:8`'s pull-off ā + 0.03 (the model misses the exact ā by 1e-5 to 1e-3), or, where that start \
          is not found, from the state at ā = 2.6 continued in ρ from the circle; each truncation after the \
          first starts just above the pull-off of the one before; where neither start finds it, the pull-off is \
-         continued in ρ (steps of at most 0.01) from the pull-off at the first of ρ + 0.1, ρ + 0.2, … found; \
+         followed in ρ in the arclength representation (steps of 0.01, grown to at most 0.02) from the pull-off at \
+         the first of ρ + 0.1, ρ + 0.2, … found; \
          below ρ = 0.3 it is followed in ρ in the arclength representation from the stored pull-offs \
          (interpolated between three of one truncation, route `between_stored`, \"between stored pull-offs\" in the row; else from the one nearest above) (\"N = … in arclength\": the contour's series with modes of both signs and θ proportional to \
          arclength; exact.md, \"The arclength representation\" and \"The stored pull-offs\"). A state at given F̄ is solved by Newton at that \

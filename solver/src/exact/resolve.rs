@@ -197,8 +197,7 @@ pub fn default_tries() -> Vec<Truncation> {
 /// stored pull-offs (`super::stored`); where no start finds
 /// it, followed in ρ from the pull-off at the first of ρ + 0.1, ρ + 0.2, …
 /// that is found, in the arclength representation
-/// (`pull_off_followed_in_arclength`), else in the conformal form
-/// (`pull_off_continued_in_rho`).
+/// (`pull_off_followed_in_arclength`).
 pub fn pull_off_resolved(rho: f64) -> Result<(ExactState, Vec<branch::Event>)> {
     pull_off_resolved_on(Gap::cylinders(), rho)
 }
@@ -211,49 +210,6 @@ pub(crate) fn pull_off_resolved_on(gap: Gap, rho: f64) -> Result<(ExactState, Ve
         return followed.map(|st| (st, Vec::new()));
     }
     run(&PULL_OFF_ROUTES, &Asked::new(gap, rho, None))
-}
-
-/// The pull-off at `rho`, continued in ρ from `start`, the converged
-/// pull-off at a larger ρ: at each step (the steps
-/// [`PULL_OFF`](super::rho_walk::PULL_OFF)) the family is traced from just above the pull-off
-/// before ([`Exact::pull_off_load_near`]) with the truncations escalated
-/// ([`resolved`]). The answer only where it converges; else an error that
-/// says down to which ρ the pull-off was followed, and how it stopped.
-pub(crate) fn pull_off_continued_in_rho(
-    start: &ExactState,
-    rho: f64,
-) -> Result<(ExactState, Vec<branch::Event>)> {
-    let ladder = &Ladder::conformal();
-    let mut at = (start.clone(), Vec::new());
-    let walked = walk_down(
-        &mut at,
-        rho,
-        super::rho_walk::PULL_OFF,
-        |at| at.0.rho,
-        |at, next| {
-            Ok(
-                match resolved(start.gap, next, ladder, |ex| {
-                    ex.pull_off_load_near(None, Some(&at.0))
-                }) {
-                    Ok(found) => Attempt::Took(found),
-                    Err(e) => Attempt::Missed(e),
-                },
-            )
-        },
-    )?;
-    if let Err(Stopped { next, why }) = walked {
-        return Err(Error::NoState(format!(
-            "the pull-off continued in rho from rho = {} converges (boundary error below {:.0e}) down to rho = {} only (its contour {:.1e} a off the ellipse there); at rho = {}: {}",
-            crate::error::short(start.rho),
-            CONVERGED,
-            crate::error::rounded(at.0.rho),
-            at.0.deviation_from_ellipse,
-            crate::error::rounded(next),
-            why.to_string().chars().take(200).collect::<String>()
-        )));
-    }
-    at.0.route = Route::ContinuedInRho;
-    Ok(at)
 }
 
 /// The load-controlled pull-off at `rho` on `gap`, climbing `ladder`
@@ -375,17 +331,13 @@ const STATE_ROUTES: [Strategy<ExactState>; 4] = [
 /// them, [`pull_off_resolved_on`]): the conformal ladder's
 /// ([`pull_off_on`]); where that finds none or does not resolve it,
 /// followed in ρ from the pull-off at a larger ρ in the arclength
-/// representation ([`pull_off_followed_in_arclength`]), else continued in
-/// the conformal form ([`pull_off_continued_in_rho`]).
-const PULL_OFF_ROUTES: [Strategy<(ExactState, Vec<branch::Event>)>; 3] = [
+/// representation ([`pull_off_followed_in_arclength`]).
+const PULL_OFF_ROUTES: [Strategy<(ExactState, Vec<branch::Event>)>; 2] = [
     (Takes::First, "", |asked| {
         pull_off_on(asked.gap, asked.rho, &Ladder::conformal())
     }),
     (Takes::NoPullOff, "", |asked| {
         pull_off_followed_in_arclength(&asked.above()?, asked.rho).map(|st| (st, Vec::new()))
-    }),
-    (Takes::NoPullOff, "", |asked| {
-        pull_off_continued_in_rho(&asked.above()?, asked.rho)
     }),
 ];
 
@@ -1373,25 +1325,26 @@ mod tests {
         is_the_state_above_continued_in_arclength(&direct, &above, control);
     }
 
-    /// The pull-off continued in ρ (the route below the ρ that the starts from
+    /// The pull-off followed in ρ (the route below the ρ that the starts from
     /// `conformal:8` and from the circle reach): from the pull-off at ρ = 0.4,
-    /// continued to ρ = 0.38, it is the pull-off found there directly (another
-    /// start): F̄ agrees to 1e-11, s to 1e-9 and ā (where F̄ is stationary) to
-    /// 1e-8, both converged below 1e-9 (measured: all three to 2e-13).
+    /// followed to ρ = 0.38 in the arclength representation, it is the
+    /// pull-off found there directly (another start, the conformal form):
+    /// F̄ agrees to 1e-11, s to 1e-9 and ā (where F̄ is stationary) to
+    /// 1e-8, both converged below 1e-9.
     #[test]
-    fn continuing_the_pull_off_in_rho_gives_the_pull_off_found_there_directly() {
+    fn following_the_pull_off_in_rho_gives_the_pull_off_found_there_directly() {
         let (start, _) = pull_off_resolved(0.4).unwrap();
-        let (continued, _) = pull_off_continued_in_rho(&start, 0.38).unwrap();
+        let followed = pull_off_followed_in_arclength(&start, 0.38).unwrap();
         let (direct, _) = pull_off_resolved(0.38).unwrap();
-        assert_eq!(continued.route, Route::ContinuedInRho);
+        assert_eq!(followed.route, Route::ContinuedInRho);
         assert_ne!(direct.route, Route::ContinuedInRho);
-        assert!(continued.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
+        assert!(followed.bc_error <= 1e-9 && direct.bc_error <= 1e-9);
         let (df, ds, da) = (
-            (continued.force_bar - direct.force_bar).abs(),
-            (continued.s - direct.s).abs(),
-            (continued.a_bar - direct.a_bar).abs(),
+            (followed.force_bar - direct.force_bar).abs(),
+            (followed.s - direct.s).abs(),
+            (followed.a_bar - direct.a_bar).abs(),
         );
-        eprintln!("pull-off at rho = 0.38, continued against direct: F {df:e}, s {ds:e}, a {da:e}");
+        eprintln!("pull-off at rho = 0.38, followed against direct: F {df:e}, s {ds:e}, a {da:e}");
         assert!(
             df < 1e-11 && ds < 1e-9 && da < 1e-8,
             "F {df:e}, s {ds:e}, a {da:e}"

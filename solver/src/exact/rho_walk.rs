@@ -29,14 +29,6 @@ pub(crate) const IN_THE_GAP: RhoSteps = RhoSteps {
     smallest: 1e-3,
 };
 
-/// The pull-off continued in ρ, traced again at each step
-/// (`resolve::pull_off_continued_in_rho`).
-pub(crate) const PULL_OFF: RhoSteps = RhoSteps {
-    first: 0.01,
-    largest: 0.01,
-    smallest: 0.0025,
-};
-
 /// A state continued in ρ at its control (`resolve::continued_in_rho`).
 pub(crate) const AT_A_CONTROL: RhoSteps = RhoSteps {
     first: 0.01,
