@@ -196,13 +196,8 @@ pub(crate) fn pull_off_from_contour(gap: Gap, rho: f64) -> Result<ExactState> {
         // just above the model's pull-off, as the route from its ellipse
         // starts: the contour scaled to that size
         let (a, scale, delta) = ex.just_above(&po);
-        let start = super::Contour {
-            a: contour.a * scale,
-            b: contour.b.iter().map(|b| b * scale).collect(),
-            c: contour.c.iter().map(|c| c * scale).collect(),
-        };
         let found = ex
-            .solve(a, &start.in_arclength(t.modes), delta)
+            .solve(a, &contour.scaled(scale).in_arclength(t.modes), delta)
             .and_then(|st| {
                 let u = ex.unknowns(&st);
                 ex.force_minimum_in_size_from(u.clone()).or_else(|_| {

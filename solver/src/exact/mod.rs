@@ -177,6 +177,16 @@ impl Contour {
         }
     }
 
+    /// The contour scaled by `factor` (every coefficient times it).
+    pub(crate) fn scaled(&self, factor: f64) -> Contour {
+        let times = |v: &Vec<f64>| v.iter().map(|x| x * factor).collect();
+        Contour {
+            a: self.a * factor,
+            b: times(&self.b),
+            c: times(&self.c),
+        }
+    }
+
     /// The same curve with θ proportional to arclength, as a series of
     /// `modes` modes of each sign (b_j, j < `modes`; c_j, j < `modes` − 1):
     /// the curve is sampled at 32 points a mode, its arclength found by the
@@ -1314,12 +1324,7 @@ impl Exact {
     /// The exact state at half-width `a_bar` from `near`, a converged state
     /// of the same truncation (at this or a nearby ρ or ā), by Newton's method.
     pub fn solve_from(&self, a_bar: f64, near: &ExactState) -> Result<ExactState> {
-        let scale = a_bar / near.a_bar;
-        let guess = Contour {
-            a: near.contour.a * scale,
-            b: near.contour.b.iter().map(|b| b * scale).collect(),
-            c: near.contour.c.iter().map(|c| c * scale).collect(),
-        };
+        let guess = near.contour.scaled(a_bar / near.a_bar);
         // δ̄ ≈ the circle's (ā²/4 − 2/ā for the cylinders) shifted by the
         // neighbour's offset
         let delta = near.delta_bar + self.circle_delta(a_bar) - self.circle_delta(near.a_bar);
