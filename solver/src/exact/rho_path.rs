@@ -268,6 +268,22 @@ mod tests {
     /// 0.322422: folds of neighbouring arms of an imperfect bifurcation,
     /// docs/exact.md); a second route, Newton at F̄ = 10 and ρ = 0.3215 from
     /// that state (the plain continuation's step), finds no state.
+    /// The state at `control` at ρ = 0.4 (the conformal ladder), continued
+    /// in ρ to `to` in the arclength representation with `modes` of each
+    /// sign.
+    fn continued_from_0_4(control: Hold, to: f64, modes: &[usize]) -> ExactState {
+        let start = at_with(
+            Gap::cylinders(),
+            0.4,
+            control,
+            &Ladder::conformal(),
+            &mut |_| {},
+        )
+        .unwrap();
+        let ladder = Ladder::of(modes.iter().map(|&m| Truncation::in_arclength(m)).collect());
+        continued_in_rho_along(&start, to, control, &ladder).unwrap()
+    }
+
     /// The near-elliptic family at F̄ = 0, continued in ρ from its state at
     /// ρ = 0.4 (80 modes) in the arclength representation (48, then 64
     /// modes of each sign) to ρ = 0.36, turns back at ρ ≈ 0.3574 (an
@@ -280,16 +296,7 @@ mod tests {
     #[test]
     fn the_zero_force_family_turns_back_in_rho() {
         let zero = Hold::Force(0.0);
-        let start = at_with(
-            Gap::cylinders(),
-            0.4,
-            zero,
-            &Ladder::conformal(),
-            &mut |_| {},
-        )
-        .unwrap();
-        let ladder = Ladder::of([48, 64].map(Truncation::in_arclength).to_vec());
-        let last = continued_in_rho_along(&start, 0.36, zero, &ladder).unwrap();
+        let last = continued_from_0_4(zero, 0.36, &[48, 64]);
         let Followed::TurnedBack { fold, a_bar, .. } = follow(&last, 0.3, zero).unwrap() else {
             panic!("the family at zero force reaches rho = 0.3");
         };
@@ -321,16 +328,7 @@ mod tests {
     #[test]
     fn the_force_10_family_turns_back_in_rho() {
         let control = Hold::Force(10.0);
-        let start = at_with(
-            Gap::cylinders(),
-            0.4,
-            control,
-            &Ladder::conformal(),
-            &mut |_| {},
-        )
-        .unwrap();
-        let ladder = Ladder::of([48, 64, 96].map(Truncation::in_arclength).to_vec());
-        let last = continued_in_rho_along(&start, 0.3235, control, &ladder).unwrap();
+        let last = continued_from_0_4(control, 0.3235, &[48, 64, 96]);
         match follow(&last, 0.3, control).unwrap() {
             Followed::TurnedBack { fold: rho, .. } => {
                 assert!(rho > 0.3222 && rho < 0.3228, "turned back at rho = {rho}")
