@@ -260,14 +260,6 @@ mod tests {
     use crate::exact::resolve::{at_with, continued_in_rho_along};
     use crate::exact::{Gap, Truncation};
 
-    /// At F̄ = 10 the near-elliptic family continued from ρ = 0.4 (56
-    /// modes, then 48 to 96 of each sign in the arclength representation)
-    /// to ρ = 0.3235 is followed on in (shape, ρ) and turns back between
-    /// ρ = 0.3222 and 0.3228 (measured: 0.322471; from the state at ρ = 0.4
-    /// itself, 0.322687, and the plain continuation's last state is at
-    /// 0.322422: folds of neighbouring arms of an imperfect bifurcation,
-    /// docs/exact.md); a second route, Newton at F̄ = 10 and ρ = 0.3215 from
-    /// that state (the plain continuation's step), finds no state.
     /// The state at `control` at ρ = 0.4 (the conformal ladder), continued
     /// in ρ to `to` in the arclength representation with `modes` of each
     /// sign.
@@ -325,6 +317,16 @@ mod tests {
         );
     }
 
+    /// At F̄ = 10 the near-elliptic family continued from ρ = 0.4 (56
+    /// modes, then 48 to 96 of each sign in the arclength representation)
+    /// to ρ = 0.3235 is followed on in (shape, ρ) and turns back between
+    /// ρ = 0.3222 and 0.3228 (measured: the located fold 0.322343; the
+    /// path's lowest step, which this test read until 2026-12-05, 0.322471;
+    /// from the state at ρ = 0.4 itself, 0.322687, and the plain
+    /// continuation's last state is at
+    /// 0.322422: folds of neighbouring arms of an imperfect bifurcation,
+    /// docs/exact.md); a second route, Newton at F̄ = 10 and ρ = 0.3215 from
+    /// that state (the plain continuation's step), finds no state.
     #[test]
     fn the_force_10_family_turns_back_in_rho() {
         let control = Hold::Force(10.0);
