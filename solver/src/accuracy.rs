@@ -24,12 +24,13 @@
 
 use crate::conformal::{Conformal, ConformalState, Family};
 use crate::control::Hold;
-use crate::exact::bands::{Band, BandEdge, BandMap, PROBE_STEP};
+use crate::exact::bands::{Band, BandEdge, PROBE_STEP};
 use crate::exact::{
     at_resolved_searching, pull_off_resolved, pull_off_resolved_on, Exact, ExactState, Gap,
     Truncation,
 };
 use crate::fold::FoldCondition;
+use crate::report::BandMap;
 use crate::{Contact, Error, ModelId, State};
 
 /// The radii ratios of the table.

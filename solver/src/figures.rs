@@ -653,7 +653,7 @@ fn render(fig: &Figure) -> Result<String> {
 /// (`thinjkr exact reach`) the reach map is.
 #[cfg(feature = "cli")]
 pub fn exact_bands(
-    bands: &[crate::exact::bands::BandMap],
+    bands: &[crate::report::BandMap],
     reach: &str,
     reference: &crate::accuracy::Reference,
 ) -> Result<(&'static str, String)> {
@@ -766,9 +766,7 @@ pub fn exact_bands(
 /// family's F̄ at its sampled sizes (a line through them, broken where a
 /// sample is missing), `conformal:8`'s at every grid point, and each
 /// ellipse model's along its explicit branch.
-pub fn exact_bands_force(
-    bands: &[crate::exact::bands::BandMap],
-) -> Result<Vec<(&'static str, String)>> {
+pub fn exact_bands_force(bands: &[crate::report::BandMap]) -> Result<Vec<(&'static str, String)>> {
     let (lo, hi) = (2.0, 3.2);
     let mut out = Vec::new();
     for m in bands {
@@ -778,7 +776,7 @@ pub fn exact_bands_force(
         let inside = |a: f64| (lo..=hi).contains(&a);
         let mut series = Vec::new();
         // pieces of a sampled curve between missing samples
-        let pieces = |of: &dyn Fn(&crate::exact::bands::CurvePoint) -> Option<f64>| {
+        let pieces = |of: &dyn Fn(&crate::report::CurvePoint) -> Option<f64>| {
             let mut all: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
             for p in m.curve.iter().filter(|p| inside(p.a_bar)) {
                 match of(p) {

@@ -10,7 +10,9 @@
 //! schema`, committed as docs/schema.json).
 //!
 //! Owns: `Document` and its parts, and the shapes of the command line's studies' outcomes (the
-//! reach map's `SizeReach`, its `Window`s, the paths' [`Passed`]). May use: `contact`, `conformal`, `layer` (its state),
+//! reach map's `SizeReach`, its `Window`s, the paths' [`Passed`], the
+//! band map's [`BandMap`]), with [`band_maps_from_json_lines`] and
+//! `documents_of` reading their JSON lines back. May use: `contact`, `conformal`, `layer` (its state),
 //! `exact`, `curve`, `fold`, `units`, `error`, `slender` (its state's
 //! shape, [`SlenderState`], re-exported here).
 
@@ -859,7 +861,7 @@ pub(crate) enum Document {
     /// The band map of the exact family (`exact bands`).
     Bands {
         /// The bands at one ρ.
-        bands: crate::exact::bands::BandMap,
+        bands: BandMap,
     },
     #[cfg(feature = "cli")]
     /// The reach in ρ of one contact size (`exact reach --json`).
@@ -906,4 +908,107 @@ impl Document {
 pub(crate) fn schema() -> String {
     let s = schemars::schema_for!(Document);
     serde_json::to_string_pretty(&s).expect("a schema serialises") + "\n"
+}
+
+/// A gap of the screen that the exact family crosses: no band there.
+#[derive(Clone, Debug, Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Crossed {
+    /// The near-elliptic grid points of the model on either side.
+    pub screened: [f64; 2],
+    /// Why it is no band, in words.
+    pub why: String,
+}
+
+/// A neutral point of the circle, ā³ = 4(n − 1), that the screen passed
+/// without a gap, probed by the exact family in fine steps (`PROBE_STEP`):
+/// a band narrower than the screen's step would show there.
+#[derive(Clone, Debug, Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct Probe {
+    /// The contour mode n.
+    pub n: usize,
+    /// ā of the neutral point, (4(n − 1))^(1/3).
+    pub a_bar: f64,
+    /// "band" where one was found (it is in the map's bands), else why
+    /// there is none or why the probe failed, in words.
+    pub outcome: String,
+}
+
+/// F̄ at one ā of the screen: the model's and the exact family's.
+#[derive(Clone, Debug, Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct CurvePoint {
+    /// ā.
+    pub a_bar: f64,
+    /// F̄ of the screening model's near-elliptic state at this ā (`None`
+    /// where it has none).
+    pub model: Option<f64>,
+    /// F̄ of the exact state at this ā started from the model's (every
+    /// `CURVE_EVERY`th grid point; `None` elsewhere, where the model has
+    /// none, or where no resolved exact state lands near the model's).
+    pub exact: Option<f64>,
+}
+
+/// The band map at one ρ over a range of ā.
+#[derive(Clone, Debug, Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct BandMap {
+    /// ρ.
+    pub rho: f64,
+    /// The ā range screened.
+    pub range: [f64; 2],
+    /// The grid step of the screen.
+    pub step: f64,
+    /// The model that screened.
+    pub screen: String,
+    /// The bands, by increasing ā.
+    pub bands: Vec<crate::exact::bands::Band>,
+    /// The model's gaps that the exact family crosses.
+    pub crossed: Vec<Crossed>,
+    /// The model's gaps the exact family could not settle (no resolved
+    /// exact state beside them, or a trace that failed), with why.
+    pub unsettled: Vec<Crossed>,
+    /// Gaps of the screen at an end of the range (not bracketed, not
+    /// settled).
+    pub open_ends: Vec<[f64; 2]>,
+    /// The neutral points of the circle in the range that the screen
+    /// passed without a gap, each probed by the exact family.
+    #[serde(default)]
+    pub probed: Vec<Probe>,
+    /// F̄(ā) of the model and of the exact family over the screen.
+    pub curve: Vec<CurvePoint>,
+}
+
+/// The band maps of a file of `thinjkr exact bands --json` lines (one
+/// `{"bands": …}` document per line, as docs/data/exact_bands.jsonl).
+pub fn band_maps_from_json_lines(text: &str) -> crate::error::Result<Vec<BandMap>> {
+    documents_of(text, "bands", "band map")
+}
+
+/// The values under `key` of the one-document-per-line JSON `text` (as
+/// `thinjkr exact bands --json` and `exact reach --json` write them);
+/// an error names the first line that is not such a `what` document.
+pub(crate) fn documents_of<T: serde::de::DeserializeOwned>(
+    text: &str,
+    key: &str,
+    what: &str,
+) -> crate::error::Result<Vec<T>> {
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .enumerate()
+        .map(|(k, l)| {
+            serde_json::from_str::<serde_json::Value>(l)
+                .ok()
+                .and_then(|mut v| v.get_mut(key).map(serde_json::Value::take))
+                .ok_or_else(|| format!("no \"{key}\" in it"))
+                .and_then(|v| serde_json::from_value(v).map_err(|e| e.to_string()))
+                .map_err(|e| {
+                    crate::error::Error::NoState(format!(
+                        "line {} is not a {what} document: {e}",
+                        k + 1
+                    ))
+                })
+        })
+        .collect()
 }

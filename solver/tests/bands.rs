@@ -15,7 +15,7 @@ use thinjkr::Error;
 #[test]
 fn the_band_table_in_the_docs_is_the_committed_maps() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let maps = thinjkr::exact::bands::from_json_lines(
+    let maps = thinjkr::report::band_maps_from_json_lines(
         &std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
             .expect("the committed band maps exist"),
     )
@@ -105,7 +105,7 @@ fn a_state_at_a_force_past_the_fold_of_a_band_is_found() {
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/data/exact_bands.jsonl"),
     )
     .expect("the committed band maps exist");
-    let maps = thinjkr::exact::bands::from_json_lines(&text).expect("band map lines");
+    let maps = thinjkr::report::band_maps_from_json_lines(&text).expect("band map lines");
     let map = maps.iter().find(|m| m.rho == 0.6).expect("rho = 0.6 map");
     let band = map
         .bands

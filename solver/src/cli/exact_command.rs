@@ -506,7 +506,7 @@ pub(crate) fn run(c: ExactCommand) -> Result<()> {
 /// near-elliptic state everywhere only where it has no gap of any kind
 /// (a gap crossed, not settled or at an end of the range is listed after
 /// it); `None` when it has a band.
-fn no_band_words(map: &crate::exact::bands::BandMap) -> Option<&'static str> {
+fn no_band_words(map: &crate::report::BandMap) -> Option<&'static str> {
     if !map.bands.is_empty() {
         None
     } else if map.crossed.is_empty() && map.unsettled.is_empty() && map.open_ends.is_empty() {
@@ -1606,7 +1606,7 @@ mod tests {
     /// end over the whole range), and the map had said both.
     #[test]
     fn a_map_without_bands_says_a_state_everywhere_only_without_gaps() {
-        let mut map = crate::exact::bands::BandMap {
+        let mut map = crate::report::BandMap {
             rho: 0.3,
             range: [2.0, 4.0],
             step: 0.01,

@@ -3,22 +3,23 @@
 //! exact state exists, found by the seed's screen and settled by the exact
 //! family's folds, with the circle's neutral points the screen passed
 //! probed, and F̄(ā) of the model and of the exact family over the screen
-//! for the figure. The map's shape, the screen and the settling of one gap
-//! are the engine's (`exact::bands`), which its routes to a state use too.
+//! for the figure. The screen and the settling of one gap are the
+//! engine's (`exact::bands`), which its routes to a state use too; the
+//! map's shape is the command line's output (`report::BandMap`).
 //!
-//! Owns: [`bands`]. May use: `exact` (the screen, the settling, the map's
-//! shape, the escalation), `control` (its tests), `error`, `newton` (the stop flag carried to
+//! Owns: [`bands`]. May use: `exact` (the screen, the settling, the
+//! escalation), `report` (the map's shape), `control` (its tests), `error`, `newton` (the stop flag carried to
 //! rayon's threads), `progress`, rayon.
 
 use crate::error::Result;
 use crate::exact::bands::{
-    beside, gaps, screen, settle, unscreened_neutral_points, BandMap, Crossed, CurvePoint, Gap,
-    Probe, PROBE_STEP, STEP,
+    beside, gaps, screen, settle, unscreened_neutral_points, Gap, PROBE_STEP, STEP,
 };
 use crate::exact::ladder::Ladder;
 use crate::exact::same::Same;
 use crate::exact::seed::Guess;
 use crate::exact::Contour;
+use crate::report::{BandMap, Crossed, CurvePoint, Probe};
 use rayon::prelude::*;
 
 /// The exact family's F̄(ā) is sampled at every this many grid points of
@@ -216,7 +217,7 @@ mod tests {
             std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/data/exact_bands.jsonl"),
         )
         .expect("the committed band maps exist");
-        let committed = crate::exact::bands::from_json_lines(&text).expect("band map lines");
+        let committed = crate::report::band_maps_from_json_lines(&text).expect("band map lines");
         let at = committed
             .iter()
             .find(|m| m.rho == 0.8)

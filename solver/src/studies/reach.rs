@@ -627,7 +627,7 @@ fn path_words(w: &Window, asked: bool) -> String {
 /// The sizes of the lines `thinjkr exact reach --json` writes (one
 /// `{"reach": …}` document per line, as docs/data/exact_reach.jsonl).
 pub(crate) fn from_json_lines(text: &str) -> Result<Vec<SizeReach>> {
-    crate::exact::bands::documents_of(text, "reach", "reach")
+    crate::report::documents_of(text, "reach", "reach")
 }
 
 /// The windows of the lines `thinjkr exact reach --windows-at --json`
@@ -635,7 +635,7 @@ pub(crate) fn from_json_lines(text: &str) -> Result<Vec<SizeReach>> {
 /// docs/data/exact_windows.jsonl; the docs' table is checked against it).
 #[cfg(test)]
 pub(crate) fn windows_from_json_lines(text: &str) -> Result<Vec<Window>> {
-    crate::exact::bands::documents_of(text, "window", "window")
+    crate::report::documents_of(text, "window", "window")
 }
 
 #[cfg(test)]
@@ -661,7 +661,7 @@ mod tests {
     #[test]
     #[ignore = "slow tier (.ci/slow): about 45 s; the reach at rho = 0.2 stays in CI"]
     fn the_band_edges_at_rho_0_5_and_0_4_are_sizes_that_reach_just_that_rho() {
-        let maps = crate::exact::bands::from_json_lines(&committed("exact_bands.jsonl"))
+        let maps = crate::report::band_maps_from_json_lines(&committed("exact_bands.jsonl"))
             .expect("band map lines");
         for (rho, lower_of, upper_of) in [(0.5, 6, 8), (0.4, 4, 8)] {
             let map = maps.iter().find(|m| m.rho == rho).expect("the map");
@@ -712,7 +712,7 @@ mod tests {
     /// tongue in (ā, ρ), which then moved on in ā (docs/exact.md).
     #[test]
     fn the_reach_and_the_band_maps_agree_at_rho_0_9_to_0_4() {
-        let maps = crate::exact::bands::from_json_lines(&committed("exact_bands.jsonl"))
+        let maps = crate::report::band_maps_from_json_lines(&committed("exact_bands.jsonl"))
             .expect("band map lines");
         let map = from_json_lines(&committed("exact_reach.jsonl")).expect("reach lines");
         let circle = crate::exact::Gap::cylinders().at(1.0).unwrap();
@@ -882,7 +882,7 @@ mod tests {
     /// (docs/data/exact_windows.jsonl), to 1e-9 in ā, with the same mode.
     #[test]
     fn every_band_edge_at_rho_0_5_and_0_4_is_a_fold_of_a_settled_window() {
-        let maps = crate::exact::bands::from_json_lines(&committed("exact_bands.jsonl"))
+        let maps = crate::report::band_maps_from_json_lines(&committed("exact_bands.jsonl"))
             .expect("band map lines");
         let windows =
             windows_from_json_lines(&committed("exact_windows.jsonl")).expect("window lines");
