@@ -299,6 +299,7 @@ pub(crate) struct GapAt {
     w1: Poly,
     w0y: Poly,
     w1y: Poly,
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))]
     q: [Poly; 3],
 }
 
@@ -417,7 +418,8 @@ impl GapAt {
     }
 
     /// Q = ∫ P(φ̄ − δ̄) dX at (X, Y): ∫ω P(φ̄ − δ̄) dA = ∮ Q dY, for the
-    /// energy's boundary form (`exact::energy`).
+    /// energy's boundary form (`studies::potential`, the command line's).
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))]
     pub(crate) fn energy_potential(&self, x: f64, y: f64, delta_bar: f64) -> f64 {
         let [q0, q1, q2] = &self.q;
         q0.eval(x, y) + delta_bar * (q1.eval(x, y) + delta_bar * q2.eval(x, y))

@@ -967,6 +967,12 @@ impl Exact {
         self.gap_source
     }
 
+    /// Its gap's polynomials at its ρ (for the descent's potential).
+    #[cfg(feature = "cli")]
+    pub(crate) fn gap_at(&self) -> &GapAt {
+        &self.gap
+    }
+
     /// The approach of the exact circle of radius ā at ρ = 1 on this gap
     /// (ā²/4 − 2/ā for the cylinders): the starting guesses' offset.
     pub(crate) fn circle_delta(&self, a_bar: f64) -> f64 {

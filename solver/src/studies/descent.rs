@@ -4,7 +4,7 @@
 //!
 //! Statics does not say where a jump lands; the rule used here is the
 //! descent of the potential at the held force, V = Π̄ − 2F̄₀δ̄
-//! (`exact::energy`), the quasi-static limit of a contact line whose
+//! (`studies::potential`), the quasi-static limit of a contact line whose
 //! normal speed is proportional to the local excess of the energy release
 //! rate over the work of adhesion: V_n ∝ 1 − (∂p̄/∂ν)² (the steepest
 //! descent of V in the L² norm of the normal motion). The contact ends in
@@ -39,12 +39,12 @@
 //! stalls: it is not settled there, rather than creeping on.
 //!
 //! Owns: [`Landing`], [`descend`]. May use: `exact` (the problem, its
-//! energy and Newton), `control`, `cutoff`, `newton` (the stop request),
+//! energy's Hessian and Newton), `studies::potential` (the potential), `control`, `cutoff`, `newton` (the stop request),
 //! nalgebra.
 
+use super::potential::{at_force, AtForce};
 use crate::control::Hold;
 use crate::cutoff::Cutoff;
-use crate::exact::energy::AtForce;
 use crate::exact::{Exact, ExactState};
 use nalgebra::{DMatrix, DVector};
 
@@ -255,7 +255,7 @@ impl Descent<'_> {
         let mut u = u;
         for _ in 0..30 {
             u = self.on_gauge(u)?;
-            let at = self.ex.at_force(&u, self.force)?;
+            let at = at_force(self.ex, &u, self.force)?;
             let lift = self.lift(&at.u)?;
             let hess = {
                 let h = self.hessian(&at)?;
@@ -643,7 +643,7 @@ mod tests {
             };
             // the gradient in the shape coordinates at u, put on the gauge
             let gradient = |u: DVector<f64>| {
-                let at = ex.at_force(&d.on_gauge(u).unwrap(), 0.0).unwrap();
+                let at = at_force(&ex, &d.on_gauge(u).unwrap(), 0.0).unwrap();
                 d.lift(&at.u).unwrap().transpose() * &at.gradient
             };
             for off in [1e-3, 1e-2, 3e-2] {
@@ -654,7 +654,7 @@ mod tests {
                 let u = d
                     .on_gauge(d.moved(&u0, &d.lift(&u0).unwrap(), &dir))
                     .unwrap();
-                let at = ex.at_force(&u, 0.0).unwrap();
+                let at = at_force(&ex, &u, 0.0).unwrap();
                 let lift = d.lift(&at.u).unwrap();
                 let h = lift.transpose() * d.hessian(&at).unwrap() * &lift;
                 assert!(gradient(at.u.clone()).amax() > 10.0 * off, "off a state");

@@ -1,6 +1,7 @@
 //! The command line's studies of the exact family (issue 32): where the
 //! loading path and the unloading trace begin (`start`), the loading path
-//! with its jump rule (`loading`, `descent`), the unloading trace
+//! with its jump rule (`loading`, `descent`, the potential it lowers:
+//! `potential`), the unloading trace
 //! (`unloading`), the reach in ρ of each contact size with the windows
 //! it leaves (`reach`), the map of where the search finds no state
 //! (`no_state_map`), the stored pull-offs (`stored_pull_offs`) and the
@@ -19,6 +20,7 @@ pub(crate) mod band_map;
 pub(crate) mod descent;
 pub(crate) mod loading;
 pub(crate) mod no_state_map;
+pub(crate) mod potential;
 pub(crate) mod reach;
 pub(crate) mod start;
 pub(crate) mod stored_pull_offs;
