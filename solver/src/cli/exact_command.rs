@@ -1252,7 +1252,7 @@ pub(crate) fn pull_off(
     let tries = d.asked()?;
     let (po, events) = if from_model_contour {
         (
-            crate::conformal::exact_pull_off_from_model_contour(gap.name(), rho)?,
+            crate::studies::model_contour::pull_off_from_model_contour(gap.name(), rho)?,
             Vec::new(),
         )
     } else {

@@ -40,7 +40,7 @@ mod seed;
 pub use crate::ansatz::{poly, Family, Tables};
 pub(crate) use seed::exact_gap;
 #[cfg(feature = "cli")]
-pub(crate) use seed::exact_pull_off_from_model_contour;
+pub(crate) use seed::gap_at_rho;
 #[cfg(feature = "cli")]
 pub(crate) use seed::gap_named;
 #[cfg(feature = "figures")]

@@ -47,7 +47,7 @@ impl Seed for Conformal {
             .ok()
             .map(|(st, _)| guess(&st))
     }
-    #[cfg(any(feature = "cli", test))]
+    #[cfg(feature = "cli")]
     fn pull_off_contour(&self, rho: f64) -> Option<(Guess, crate::exact::Contour)> {
         let (st, _) = Conformal::pull_off(self, rho, FoldCondition::Load).ok()?;
         let powers = self.tables.powers;
@@ -186,6 +186,16 @@ fn own_gap_rho(rho: f64, family: &Family) -> crate::Result<()> {
     Ok(())
 }
 
+/// The gap named `name` ([`gap_named`]) where `rho` is in its range
+/// (a family's own gap: `own_gap_rho`).
+pub(crate) fn gap_at_rho(name: &str, rho: f64) -> crate::Result<Gap> {
+    let (gap, family) = gap_named(name)?;
+    if let Some(f) = family {
+        own_gap_rho(rho, f)?;
+    }
+    Ok(gap)
+}
+
 /// The exact load-controlled pull-off at `rho` on the gap named `gap`
 /// (`cylinders` or a contour family's name), with the default escalation of truncations (`tries`
 /// `None`) or those given.
@@ -194,34 +204,13 @@ pub fn exact_pull_off_on_gap(
     rho: f64,
     tries: Option<&[crate::exact::Truncation]>,
 ) -> crate::Result<(crate::exact::ExactState, Vec<crate::exact::branch::Event>)> {
-    let (gap, family) = gap_named(gap)?;
-    if let Some(f) = family {
-        own_gap_rho(rho, f)?;
-    }
+    let gap = gap_at_rho(gap, rho)?;
     match tries {
         None => crate::exact::pull_off_resolved_on(gap, rho),
         Some(t) => {
             crate::exact::pull_off_on(gap, rho, &crate::exact::ladder::Ladder::of(t.to_vec()))
         }
     }
-}
-
-/// The exact load-controlled pull-off at `rho` on the gap named `gap` by
-/// its second route (issue 73), which checks the first: Newton from the
-/// contour of the largest member of the family that seeds the gap's exact
-/// solver, at that member's pull-off, then the least force along that arm
-/// (route `from_model_contour`; no walk in the gap or in ρ). A usage
-/// error where no family seeds the gap.
-#[cfg(any(feature = "cli", test))]
-pub(crate) fn exact_pull_off_from_model_contour(
-    gap: &str,
-    rho: f64,
-) -> crate::Result<crate::exact::ExactState> {
-    let (gap, family) = gap_named(gap)?;
-    if let Some(f) = family {
-        own_gap_rho(rho, f)?;
-    }
-    crate::exact::branch::pull_off_from_contour(gap, rho)
 }
 
 /// The exact state at `control` and `rho` on the gap named `gap`
@@ -233,10 +222,7 @@ pub fn exact_state_on_gap(
     control: Hold,
     tries: Option<&[crate::exact::Truncation]>,
 ) -> crate::Result<crate::exact::ExactState> {
-    let (gap, family) = gap_named(gap)?;
-    if let Some(f) = family {
-        own_gap_rho(rho, f)?;
-    }
+    let gap = gap_at_rho(gap, rho)?;
     match tries {
         None => crate::exact::at_resolved_on(gap, rho, control),
         Some(t) => crate::exact::searched_on(
@@ -246,40 +232,5 @@ pub fn exact_state_on_gap(
             &crate::exact::ladder::Ladder::of(t.to_vec()),
             &mut |_| {},
         ),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    /// Issue 73: the pull-off's second route (`exact pull-off
-    /// --from-model-contour`): Newton from conformal:8's own contour just
-    /// above its pull-off, then the least force along that arm (the secant
-    /// on dF̄/dā = 0, no walk in ρ), in the arclength representation, finds
-    /// the pull-off the default route reaches (traced from just above
-    /// conformal:8's pull-off from an ellipse), to 1e-9 in F̄ and 1e-6 in ā
-    /// (F̄ is flat at its minimum), at ρ = 1, 0.8 and 0.5.
-    #[test]
-    fn the_second_route_from_the_seeds_contour_finds_the_same_pull_off() {
-        for rho in [1.0, 0.8, 0.5] {
-            let second = super::exact_pull_off_from_model_contour("cylinders", rho).unwrap();
-            let (first, _) = crate::exact::pull_off_resolved(rho).unwrap();
-            assert_eq!(
-                serde_json::to_value(second.route).unwrap(),
-                "from_model_contour"
-            );
-            assert!(second.bc_error < 1e-9, "{rho}: {}", second.bc_error);
-            assert!(
-                (second.force_bar - first.force_bar).abs() < 1e-9 * first.force_bar.abs(),
-                "{rho}: {} against {}",
-                second.force_bar,
-                first.force_bar
-            );
-            assert!(
-                (second.a_bar - first.a_bar).abs() < 1e-6,
-                "{rho}: {} against {}",
-                second.a_bar,
-                first.a_bar
-            );
-        }
     }
 }

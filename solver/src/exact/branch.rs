@@ -158,84 +158,6 @@ pub(crate) fn model_pull_off(gap: Gap, rho: f64) -> Option<Guess> {
     gap.seed?.pull_off(rho)
 }
 
-/// The load-controlled pull-off on `gap` at `rho` by a second route, which
-/// checks the first (issue 73): Newton from the seeding model's own
-/// contour at its pull-off (`Seed::pull_off_contour`; the arclength
-/// representation holds a member's map as it is), scaled to ā
-/// [`ABOVE_MODEL_PULL_OFF`] larger as the route from its ellipse starts,
-/// then the minimum of F̄ over ā along that arm by the secant on
-/// dF̄/dā = 0 ([`Exact::force_minimum_in_size_from`]), else (a fold in ā
-/// near it) by the trace downhill in F̄ from that start
-/// ([`Exact::force_minimum_nearest`]): no walk in the gap or in ρ. The
-/// arclength ladder is climbed until the minimum's boundary error is
-/// below [`super::CONVERGED`]. An ellipse through the model's ā
-/// and b̄ is no such start: on the bumpy gap (φ̄ = X²/2 + μY²/2 + X⁴/24)
-/// at ρ = 1 Newton from it lands on a neighbouring arm, whose minimum is
-/// F̄ = −4.1106 at ā = 1.974 against the walk's −4.0799 at 2.0485, which
-/// this route finds (docs/exact-record.md, "Members on gaps no circle
-/// solves"). Route [`Route::FromModelContour`].
-#[cfg(any(feature = "cli", test))]
-pub(crate) fn pull_off_from_contour(gap: Gap, rho: f64) -> Result<ExactState> {
-    let seed = gap.seed.ok_or_else(|| {
-        Error::Usage(format!(
-            "no family seeds the exact solver of the gap {} (seeds_exact = true in its data file): the pull-off from a model's contour needs one",
-            gap.name
-        ))
-    })?;
-    let (po, contour) = seed.pull_off_contour(rho).ok_or_else(|| {
-        Error::NoState(format!(
-            "{} has no load-controlled pull-off at rho = {} to start the exact one from",
-            seed.name(),
-            crate::error::rounded(rho)
-        ))
-    })?;
-    let mut ladder = super::ladder::Ladder::arclength();
-    let mut why = None;
-    while let Some(t) = ladder.rung() {
-        let ex = Exact::on(gap, rho, t)?;
-        // just above the model's pull-off, as the route from its ellipse
-        // starts: the contour scaled to that size
-        let (a, scale, delta) = ex.just_above(&po);
-        let found = ex
-            .solve(a, &contour.scaled(scale).in_arclength(t.modes), delta)
-            .and_then(|st| {
-                let u = ex.unknowns(&st);
-                ex.force_minimum_in_size_from(u.clone()).or_else(|_| {
-                    // downhill in F̄ from the start, where the secant fails
-                    // (a fold in ā near the minimum)
-                    let slope = ex.force_slope_in_size(&u).map_or(1.0, |s| s.slope);
-                    ex.force_minimum_nearest(&st, st.a_bar - 0.1 * slope.signum())
-                })
-            });
-        match found {
-            Ok(st) if st.bc_error <= super::CONVERGED => {
-                return Ok(ExactState {
-                    route: Route::FromModelContour,
-                    ..st
-                })
-            }
-            Ok(st) => {
-                ladder.saw(t.modes, st.bc_error);
-                why = Some(format!(
-                    "max |dp/dnu - 1| = {:.1e} with {} modes of each sign",
-                    st.bc_error, t.modes
-                ));
-            }
-            Err(e) => why = Some(e.to_string()),
-        }
-        if !ladder.escalate() {
-            break;
-        }
-    }
-    Err(Error::NoState(format!(
-        "exact pull-off at rho = {} from {}'s contour at its pull-off (a = {}): no minimum of the force resolved ({})",
-        crate::error::rounded(rho),
-        seed.name(),
-        crate::error::rounded(po.a_bar),
-        why.unwrap_or_default()
-    )))
-}
-
 /// What happens between two traced points.
 #[derive(Clone, Debug, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -450,8 +372,8 @@ fn padded(r: &DVector<f64>) -> DVector<f64> {
 /// dF̄/dā along the family at a converged state, du/dā, and the factorised
 /// Jacobian of the equations at fixed ā there
 /// ([`Exact::force_slope_in_size`]).
-struct SlopeInSize {
-    slope: f64,
+pub(crate) struct SlopeInSize {
+    pub(crate) slope: f64,
     du: DVector<f64>,
     lu: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
 }
@@ -654,7 +576,7 @@ impl Exact {
     /// the state equations at fixed ā (their Jacobian, the hold's row
     /// first) differentiated in ā. `None` where that Jacobian is singular
     /// (a fold in ā).
-    fn force_slope_in_size(&self, u: &DVector<f64>) -> Option<SlopeInSize> {
+    pub(crate) fn force_slope_in_size(&self, u: &DVector<f64>) -> Option<SlopeInSize> {
         let nu = self.unknown_count();
         let lin = self.linear(u)?;
         let mut jac = DMatrix::zeros(nu, nu);
@@ -869,7 +791,7 @@ impl Exact {
     /// Newton at fixed ā is ill-conditioned), the factor that scales the
     /// model's contour to that size, and δ̄ ≈ the circle's (ā²/4 − 2/ā for
     /// the cylinders) shifted by the model's offset.
-    fn just_above(&self, po: &Guess) -> (f64, f64, f64) {
+    pub(crate) fn just_above(&self, po: &Guess) -> (f64, f64, f64) {
         let a = po.a_bar + ABOVE_MODEL_PULL_OFF;
         let delta = po.delta_bar + self.circle_delta(a) - self.circle_delta(po.a_bar);
         (a, a / po.a_bar, delta)

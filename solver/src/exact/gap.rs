@@ -625,16 +625,6 @@ mod tests {
         }
     }
 
-    /// The pull-off's second route needs a model to start from: on a gap
-    /// no family seeds (the test's bumpy gap has no seed) it is a usage
-    /// error naming the gap, before any solve.
-    #[test]
-    fn the_second_route_on_a_gap_no_family_seeds_is_refused() {
-        let e = crate::exact::branch::pull_off_from_contour(bumpy(), 0.8).unwrap_err();
-        assert!(matches!(e, crate::Error::Usage(_)), "{e:?}");
-        assert!(e.to_string().contains("the gap bumpy"), "{e}");
-    }
-
     /// Issue 73: the exact pull-off on a gap no circle solves (the bumpy
     /// gap, φ̄ = X²/2 + μY²/2 + X⁴/24) at ρ = 1 and 0.8, reached from the
     /// cylinders' state continued in the gap itself and traced downhill in

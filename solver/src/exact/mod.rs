@@ -722,7 +722,7 @@ pub enum Route {
     FromNeighbour,
     /// The pull-off's second route (issue 73): Newton from the seeding
     /// model's own contour at its pull-off, then the minimum of F̄ over ā
-    /// along that arm (`branch::pull_off_from_contour`; `exact pull-off
+    /// along that arm (`studies::model_contour`; `exact pull-off
     /// --from-model-contour`).
     FromModelContour,
 }

@@ -39,7 +39,7 @@ pub(crate) trait Seed: Send + Sync + std::fmt::Debug {
     /// map of the disk z = Σ c_p e^{ipθ} (odd p) as a [`super::Contour`]: A the
     /// coefficient of p = 1, the c_j those of p = 2j + 3 (the arclength
     /// representation's positive powers, which hold the map as it is). The
-    /// start of the pull-off's second route (`branch::pull_off_from_contour`).
-    #[cfg(any(feature = "cli", test))]
+    /// start of the pull-off's second route (`studies::model_contour`).
+    #[cfg(feature = "cli")]
     fn pull_off_contour(&self, rho: f64) -> Option<(Guess, super::Contour)>;
 }

@@ -5,20 +5,23 @@
 //! (`unloading`), the reach in ρ of each contact size with the windows
 //! it leaves (`reach`), the map of where the search finds no state
 //! (`no_state_map`), the stored pull-offs (`stored_pull_offs`) and the
-//! band map (`band_map`); and the map of (2)'s pull-off error against the
+//! band map (`band_map`), the pull-off's second route that checks the first
+//! (`model_contour`); and the map of (2)'s pull-off error against the
 //! coatings' thinness and the crossing angle (`thickness_map`, issue 71).
-//! They answer `thinjkr exact pull-off --unloading`, `thinjkr exact reach`
-//! and `thinjkr thickness-map`, and compile with the feature `cli` only:
+//! They answer `thinjkr exact pull-off --unloading` and
+//! `--from-model-contour`, `thinjkr exact reach`, `exact bands` and
+//! `thinjkr thickness-map`, and compile with the feature `cli` only:
 //! the engines they drive (`exact`, `layer`) need none of them.
 //!
 //! Owns: its submodules. May use: `exact` (the engine), `layer` (the
 //! coatings' pull-offs), `report` (the shapes of their outcomes),
-//! `accuracy` (the ρ of its table), `control`, `continuation`, `cutoff`,
+//! `conformal` (a gap by its name), `accuracy` (the ρ of its table), `control`, `continuation`, `cutoff`,
 //! `error`, `newton`, `progress`.
 
 pub(crate) mod band_map;
 pub(crate) mod descent;
 pub(crate) mod loading;
+pub(crate) mod model_contour;
 pub(crate) mod no_state_map;
 pub(crate) mod potential;
 pub(crate) mod reach;
