@@ -1316,7 +1316,7 @@ pub(crate) fn pull_off(
     }
     show_quality(&po)?;
     for e in &events {
-        if let Some(words) = e.describe() {
+        if let Some(words) = event_words(e) {
             outln!("  on the way: {words}")
         }
     }
@@ -1594,6 +1594,24 @@ fn store_no_state(
         count(|c| matches!(c, Cell::Unsettled { .. }))
     );
     Ok(())
+}
+
+/// An event of the trace in words, for a person (`None` for the force
+/// minimum, which is reported as the pull-off itself).
+fn event_words(event: &crate::exact::branch::Event) -> Option<String> {
+    use crate::exact::branch::Event;
+    match event {
+        Event::SizeFold { a_bar } => {
+            Some(format!("the family turns back in a near a = {a_bar:.6}"))
+        }
+        Event::Bifurcation { between, mode } => Some(format!(
+            "a bifurcation point between a = {:.6} and {:.6} (contour mode {})",
+            between[0],
+            between[1],
+            mode.map_or("not computed".to_string(), |n| format!("n = {n}"))
+        )),
+        Event::ForceMinimum { .. } => None,
+    }
 }
 
 #[cfg(test)]

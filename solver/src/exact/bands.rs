@@ -619,22 +619,6 @@ pub(crate) enum NoBand {
     NoFold { from: f64 },
 }
 
-impl NoBand {
-    /// In words, `passes` saying what the family passed without folding
-    /// ("crosses the gap", "passes the neutral point").
-    #[cfg(feature = "cli")]
-    pub(crate) fn words(self, passes: &str) -> String {
-        match self {
-            NoBand::Overlap { lower, upper } => format!(
-                "the arms' folds overlap (the lower arm folds at a = {lower:.4}, the upper at a = {upper:.4}): near-elliptic states exist at every a between"
-            ),
-            NoBand::NoFold { from } => {
-                format!("the exact family from a = {from:.2} {passes} without folding")
-            }
-        }
-    }
-}
-
 /// Settle one candidate gap between the model's near-elliptic states
 /// `left` and `right`, tracing in steps of at most `step`: the band, or why
 /// there is none.

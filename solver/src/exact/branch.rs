@@ -198,24 +198,6 @@ impl Event {
             _ => None,
         }
     }
-
-    /// The event in words, for a person (`None` for the force minimum,
-    /// which is reported as the pull-off itself).
-    #[cfg(feature = "cli")]
-    pub(crate) fn describe(&self) -> Option<String> {
-        match self {
-            Event::SizeFold { a_bar } => {
-                Some(format!("the family turns back in a near a = {a_bar:.6}"))
-            }
-            Event::Bifurcation { between, mode } => Some(format!(
-                "a bifurcation point between a = {:.6} and {:.6} (contour mode {})",
-                between[0],
-                between[1],
-                mode.map_or("not computed".to_string(), |n| format!("n = {n}"))
-            )),
-            Event::ForceMinimum { .. } => None,
-        }
-    }
 }
 
 /// One traced point.

@@ -13,7 +13,7 @@
 
 use crate::error::Result;
 use crate::exact::bands::{
-    beside, gaps, screen, settle, unscreened_neutral_points, Gap, PROBE_STEP, STEP,
+    beside, gaps, screen, settle, unscreened_neutral_points, Gap, NoBand, PROBE_STEP, STEP,
 };
 use crate::exact::ladder::Ladder;
 use crate::exact::same::Same;
@@ -64,7 +64,7 @@ pub(crate) fn bands(rho: f64, from: f64, to: f64) -> Result<BandMap> {
                     Ok(Ok(band)) => map.bands.push(band),
                     Ok(Err(why)) => map.crossed.push(Crossed {
                         screened,
-                        why: why.words("crosses the gap"),
+                        why: no_band_words(why, "crosses the gap"),
                     }),
                     Err(e) => map.unsettled.push(Crossed {
                         screened,
@@ -110,7 +110,7 @@ fn probe_neutral_points(
                     map.bands.push(band);
                     "band".to_string()
                 }
-                Ok(Err(why)) => why.words("passes the neutral point"),
+                Ok(Err(why)) => no_band_words(why, "passes the neutral point"),
                 Err(e) => format!("not settled: {e}"),
             }
         };
@@ -163,6 +163,19 @@ fn curve(
             })
         })
         .collect()
+}
+
+/// Why a gap holds no band, in words, `passes` saying what the family
+/// passed without folding ("crosses the gap", "passes the neutral point").
+fn no_band_words(why: NoBand, passes: &str) -> String {
+    match why {
+        NoBand::Overlap { lower, upper } => format!(
+            "the arms' folds overlap (the lower arm folds at a = {lower:.4}, the upper at a = {upper:.4}): near-elliptic states exist at every a between"
+        ),
+        NoBand::NoFold { from } => {
+            format!("the exact family from a = {from:.2} {passes} without folding")
+        }
+    }
 }
 
 #[cfg(test)]
