@@ -44,7 +44,7 @@ fn exact_figures_are_fresh() {
     assert_eq!(figs.len(), 5);
     // the band map, from the committed band maps (whose ρ = 0.8 line
     // solver/tests/bands.rs recomputes)
-    let bands = thinjkr::exact::bands::from_json_lines(
+    let bands = thinjkr::report::band_maps_from_json_lines(
         &std::fs::read_to_string(root.join("docs/data/exact_bands.jsonl"))
             .expect("the committed band maps exist"),
     )
