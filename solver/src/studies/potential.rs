@@ -46,7 +46,7 @@ pub(crate) struct AtForce {
 /// boundary integral equation is singular (the tests' closed forms
 /// hold the boundary form with it).
 #[cfg(test)]
-pub(crate) fn energy(ex: &Exact, u: &DVector<f64>) -> Option<f64> {
+fn energy(ex: &Exact, u: &DVector<f64>) -> Option<f64> {
     let delta = u[ex.unknown_count() - 1];
     let c = ex.contour_of(u);
     let f = fields(&c, ex.gap_at(), delta, &ex.grid)?;
